@@ -1,0 +1,38 @@
+# Shared build rules for contain's own targets.
+
+# Warnings as errors on the project's own code only.
+function(contain_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+                                           -Wimplicit-fallthrough -Wno-missing-field-initializers
+                                           -Werror)
+endfunction()
+
+# contain_library(NAME SOURCES a.cpp b.cpp DEPS contain_geometry ...)
+# A static library contain_<NAME> from src/<NAME>/ with the public headers of include/.
+function(contain_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  set(target contain_${name})
+  add_library(${target} STATIC ${ARG_SOURCES})
+  target_include_directories(${target}
+    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>
+    PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_link_libraries(${target} PUBLIC ${ARG_DEPS})
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  contain_warnings(${target})
+endfunction()
+
+# contain_test(NAME SOURCES a_test.cpp ... LIBS contain_inside ...)
+# One GoogleTest executable contain_<NAME>_tests, its tests registered with CTest one by one.
+function(contain_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  set(target contain_${name}_tests)
+  add_executable(${target} ${ARG_SOURCES})
+  target_link_libraries(${target} PRIVATE ${ARG_LIBS} contain_test_support GTest::gtest_main)
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)
+  target_compile_definitions(${target} PRIVATE
+    CONTAIN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    CONTAIN_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  contain_warnings(${target})
+  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
+endfunction()

@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// Balls and discs, closed: a point at distance exactly `radius` is on the boundary.
+
+#include "contain/geometry/vec.h"
+
+namespace contain {
+
+/// A closed ball { p : |p - center| <= radius }.
+struct Sphere {
+  Vec3 center;
+  double radius = 0.0;
+  friend constexpr bool operator==(const Sphere&, const Sphere&) = default;
+};
+
+/// A closed disc { p : |p - center| <= radius } in the plane.
+struct Circle {
+  Vec2 center;
+  double radius = 0.0;
+  friend constexpr bool operator==(const Circle&, const Circle&) = default;
+};
+
+}  // namespace contain

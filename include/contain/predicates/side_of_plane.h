@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// Exact side of a half-space or half-plane given by its coefficients.
+
+#include "contain/geometry/plane.h"
+#include "contain/predicates/sign.h"
+
+namespace contain::predicates {
+
+/// Sign of a p.x + b p.y + c p.z + d, exactly on the given doubles: positive inside the closed
+/// half-space, zero on its plane.
+[[nodiscard]] Sign side_of_plane(const Plane& plane, Vec3 p);
+
+/// Sign of a p.x + b p.y + c, exactly: positive inside the closed half-plane, zero on its line.
+[[nodiscard]] Sign side_of_line(const HalfPlane& half_plane, Vec2 p);
+
+}  // namespace contain::predicates

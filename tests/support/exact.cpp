@@ -1,0 +1,60 @@
+#include "support/exact.h"
+
+namespace contain::test {
+
+QVec2 exact(Vec2 p) { return {mpq_class(p.x), mpq_class(p.y)}; }
+QVec3 exact(Vec3 p) { return {mpq_class(p.x), mpq_class(p.y), mpq_class(p.z)}; }
+
+Sign sign_of(const mpq_class& v) {
+  const int s = sgn(v);
+  return s > 0 ? Sign::positive : (s < 0 ? Sign::negative : Sign::zero);
+}
+
+namespace {
+
+QVec3 sub(const QVec3& a, const QVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+QVec3 cross(const QVec3& a, const QVec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+mpq_class dot(const QVec3& a, const QVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+}  // namespace
+
+Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const QVec2 qa = exact(a), qb = exact(b), qc = exact(c);
+  return sign_of((qb.x - qa.x) * (qc.y - qa.y) - (qb.y - qa.y) * (qc.x - qa.x));
+}
+
+Sign exact_orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const QVec3 qa = exact(a);
+  return sign_of(dot(cross(sub(exact(b), qa), sub(exact(c), qa)), sub(exact(d), qa)));
+}
+
+Sign exact_side_of_plane(const Plane& plane, Vec3 p) {
+  return sign_of(mpq_class(plane.a) * p.x + mpq_class(plane.b) * p.y + mpq_class(plane.c) * p.z +
+                 mpq_class(plane.d));
+}
+
+Sign exact_side_of_line(const HalfPlane& half_plane, Vec2 p) {
+  return sign_of(mpq_class(half_plane.a) * p.x + mpq_class(half_plane.b) * p.y +
+                 mpq_class(half_plane.c));
+}
+
+Sign exact_side_of_sphere(const Sphere& sphere, Vec3 p) {
+  const QVec3 d = sub(exact(p), exact(sphere.center));
+  const mpq_class r(sphere.radius);
+  return sign_of(r * r - dot(d, d));
+}
+
+Sign exact_side_of_circle(const Circle& circle, Vec2 p) {
+  const mpq_class dx = mpq_class(p.x) - circle.center.x, dy = mpq_class(p.y) - circle.center.y;
+  const mpq_class r(circle.radius);
+  return sign_of(r * r - dx * dx - dy * dy);
+}
+
+Sign exact_cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  const QVec3 qa = exact(a), ab = sub(exact(b), qa);
+  return sign_of(dot(cross(ab, sub(exact(p), qa)), cross(ab, sub(exact(c), qa))));
+}
+
+}  // namespace contain::test

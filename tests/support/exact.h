@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// The exact oracle of the tests: every predicate again in GMP rationals, which represent each
+/// double exactly, so the answers here are the true signs on the given doubles.
+
+#include <gmpxx.h>
+
+#include "contain/geometry/plane.h"
+#include "contain/geometry/sphere.h"
+#include "contain/geometry/vec.h"
+#include "contain/predicates/sign.h"
+
+namespace contain::test {
+
+struct QVec2 {
+  mpq_class x, y;
+};
+struct QVec3 {
+  mpq_class x, y, z;
+};
+
+[[nodiscard]] QVec2 exact(Vec2 p);
+[[nodiscard]] QVec3 exact(Vec3 p);
+[[nodiscard]] Sign sign_of(const mpq_class& v);
+
+[[nodiscard]] Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c);
+[[nodiscard]] Sign exact_orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+[[nodiscard]] Sign exact_side_of_plane(const Plane& plane, Vec3 p);
+[[nodiscard]] Sign exact_side_of_line(const HalfPlane& half_plane, Vec2 p);
+[[nodiscard]] Sign exact_side_of_sphere(const Sphere& sphere, Vec3 p);
+[[nodiscard]] Sign exact_side_of_circle(const Circle& circle, Vec2 p);
+[[nodiscard]] Sign exact_cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
+
+}  // namespace contain::test
