@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// Batch work over all cores with std::thread: the library core needs no thread pool library.
+
+#include <algorithm>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace contain {
+
+/// How a batch call spreads its work. `threads == 0` means every hardware thread.
+struct BatchOptions {
+  int threads = 0;
+};
+
+/// The number of threads a batch of `count` items uses: never more than the items (in chunks of
+/// at least `min_chunk`), never fewer than one.
+[[nodiscard]] inline int thread_count(const BatchOptions& options, std::size_t count,
+                                      std::size_t min_chunk = 4096) {
+  int wanted = options.threads > 0 ? options.threads
+                                   : static_cast<int>(std::thread::hardware_concurrency());
+  wanted = std::max(wanted, 1);
+  const std::size_t by_size = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_chunk));
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(wanted), by_size));
+}
+
+/// Calls `body(begin, end)` on disjoint contiguous ranges covering [0, count), on up to
+/// `thread_count` threads. Each range is processed by one thread, so results written per index
+/// are deterministic whatever the thread count. `body` must not throw.
+template <class Body>
+void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
+  const int threads = thread_count(options, count);
+  if (threads <= 1) {
+    body(std::size_t{0}, count);
+    return;
+  }
+  std::vector<std::thread> workers;
+  workers.reserve(static_cast<std::size_t>(threads) - 1);
+  const std::size_t chunk = (count + static_cast<std::size_t>(threads) - 1) /
+                            static_cast<std::size_t>(threads);
+  for (int t = 1; t < threads; ++t) {
+    const std::size_t begin = std::min(count, chunk * static_cast<std::size_t>(t));
+    const std::size_t end = std::min(count, begin + chunk);
+    workers.emplace_back([&body, begin, end] { body(begin, end); });
+  }
+  body(std::size_t{0}, std::min(count, chunk));
+  for (std::thread& w : workers) w.join();
+}
+
+}  // namespace contain
