@@ -1,0 +1,39 @@
+#pragma once
+// Built-in scenes shared by `contain demo`, the tests and the benchmarks: generated, so that no
+// file is needed and every run sees the same geometry (fixed seeds).
+
+#include <cstdint>
+#include <vector>
+
+#include "contain/geometry/box.h"
+#include "contain/geometry/mesh.h"
+#include "contain/geometry/polygon.h"
+#include "contain/geometry/vec.h"
+
+namespace contain::scenes {
+
+/// A concave star-shaped ring of `vertices` points around `center`: radii drawn uniformly from
+/// [inner, outer] (seeded), angles evenly spaced, counter-clockwise. Simple (never
+/// self-intersecting) because it is star-shaped about the center.
+[[nodiscard]] Ring star_ring(int vertices, Vec2 center, double inner, double outer,
+                             std::uint64_t seed);
+
+/// A smooth star: radius 1 + amplitude * sin(lobes * angle), `vertices` points, counter-clockwise.
+[[nodiscard]] Ring flower_ring(int vertices, Vec2 center, double radius, double amplitude,
+                               int lobes);
+
+/// The demo region: a concave flower-shaped shell with two holes (a star and a square), OGC
+/// oriented (shell counter-clockwise, holes clockwise).
+[[nodiscard]] Polygon demo_polygon();
+
+/// `count` points uniform in `box` (seeded).
+[[nodiscard]] std::vector<Vec2> uniform_points(const Box2& box, std::size_t count,
+                                               std::uint64_t seed);
+[[nodiscard]] std::vector<Vec3> uniform_points(const Box3& box, std::size_t count,
+                                               std::uint64_t seed);
+
+/// A closed, outward oriented torus around the z axis: `major` and `minor` radii, `rings` x
+/// `sides` quads split into triangles.
+[[nodiscard]] Mesh torus(double major, double minor, int rings, int sides);
+
+}  // namespace contain::scenes
