@@ -1,0 +1,140 @@
+#include "contain/io/svg.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace contain::io {
+namespace {
+
+std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", v);
+  return buffer;
+}
+
+std::string escape(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string style_attributes(const SvgStyle& style) {
+  return "fill=\"" + style.fill + "\" fill-opacity=\"" + number(style.fill_opacity) +
+         "\" stroke=\"" + style.stroke + "\" stroke-width=\"" + number(style.stroke_width) + "\"";
+}
+
+}  // namespace
+
+SvgCanvas::SvgCanvas(const Box2& world, double width_px) : width_(width_px) {
+  Box2 box = world.empty() ? Box2{{0, 0}, {1, 1}} : world;
+  double dx = box.max.x - box.min.x, dy = box.max.y - box.min.y;
+  const double size = std::max({dx, dy, 1e-300});
+  if (dx <= 0) dx = size;
+  if (dy <= 0) dy = size;
+  const double margin = 0.04 * std::max(dx, dy);
+  world_ = {{box.min.x - margin, box.min.y - margin},
+            {box.min.x + dx + margin, box.min.y + dy + margin}};
+  scale_ = width_ / (world_.max.x - world_.min.x);
+  height_ = (world_.max.y - world_.min.y) * scale_;
+}
+
+Vec2 SvgCanvas::to_pixels(Vec2 world) const {
+  return {(world.x - world_.min.x) * scale_, (world_.max.y - world.y) * scale_};
+}
+
+void SvgCanvas::region(std::span<const Ring> rings, const SvgStyle& style) {
+  std::string d;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 p = to_pixels(ring[i]);
+      d += (i == 0 ? "M" : "L") + number(p.x) + " " + number(p.y) + " ";
+    }
+    if (!ring.empty()) d += "Z ";
+  }
+  body_ += "<path d=\"" + d + "\" fill-rule=\"evenodd\" " + style_attributes(style) + "/>\n";
+}
+
+void SvgCanvas::segments(std::span<const Segment2> segments, const SvgStyle& style) {
+  for (const Segment2& s : segments) {
+    const Vec2 a = to_pixels(s.a), b = to_pixels(s.b);
+    body_ += "<line x1=\"" + number(a.x) + "\" y1=\"" + number(a.y) + "\" x2=\"" + number(b.x) +
+             "\" y2=\"" + number(b.y) + "\" " + style_attributes(style) +
+             " stroke-linecap=\"round\"/>\n";
+  }
+}
+
+void SvgCanvas::points(std::span<const Vec2> points, std::span<const Location> locations,
+                       double radius_px, const LocationColours& colours) {
+  // One group per location keeps the file small and lets boundary dots draw on top.
+  const Location order[] = {Location::outside, Location::inside, Location::boundary};
+  for (Location which : order) {
+    const std::string& colour = which == Location::inside     ? colours.inside
+                                : which == Location::boundary ? colours.boundary
+                                                              : colours.outside;
+    body_ += "<g fill=\"" + colour + "\">\n";
+    for (std::size_t i = 0; i < points.size() && i < locations.size(); ++i) {
+      if (locations[i] != which) continue;
+      const Vec2 p = to_pixels(points[i]);
+      body_ += "<circle cx=\"" + number(p.x) + "\" cy=\"" + number(p.y) + "\" r=\"" +
+               number(which == Location::boundary ? radius_px * 1.8 : radius_px) + "\"/>\n";
+    }
+    body_ += "</g>\n";
+  }
+}
+
+void SvgCanvas::points(std::span<const Vec2> points, std::string_view colour, double radius_px) {
+  body_ += "<g fill=\"" + std::string(colour) + "\">\n";
+  for (const Vec2& world : points) {
+    const Vec2 p = to_pixels(world);
+    body_ += "<circle cx=\"" + number(p.x) + "\" cy=\"" + number(p.y) + "\" r=\"" +
+             number(radius_px) + "\"/>\n";
+  }
+  body_ += "</g>\n";
+}
+
+void SvgCanvas::title(std::string_view text) {
+  title_ = escape(text);
+}
+
+void SvgCanvas::legend(std::string_view colour, std::string_view label) {
+  legend_.emplace_back(std::string(colour), escape(label));
+}
+
+std::string SvgCanvas::str() const {
+  const double header = title_.empty() ? 0.0 : 28.0;
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width_) +
+                    "\" height=\"" + number(height_ + header) + "\" viewBox=\"0 " +
+                    number(-header) + " " + number(width_) + " " + number(height_ + header) +
+                    "\" font-family=\"sans-serif\">\n";
+  out += "<rect x=\"0\" y=\"" + number(-header) +
+         "\" width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  if (!title_.empty()) out += "<text x=\"8\" y=\"-8\" font-size=\"16\">" + title_ + "</text>\n";
+  out += body_;
+  double y = 10.0;
+  for (const auto& [colour, label] : legend_) {
+    const double x = width_ - 150.0;
+    out += "<rect x=\"" + number(x) + "\" y=\"" + number(y) +
+           "\" width=\"12\" height=\"12\" fill=\"" + colour + "\" stroke=\"#333\"/>\n";
+    out += "<text x=\"" + number(x + 18) + "\" y=\"" + number(y + 11) + "\" font-size=\"13\">" +
+           label + "</text>\n";
+    y += 18.0;
+  }
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace contain::io
