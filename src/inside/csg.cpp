@@ -1,0 +1,296 @@
+#include "contain/inside/csg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "contain/predicates/orient3d.h"
+#include "contain/predicates/side_of_plane.h"
+#include "csg_local.h"
+
+namespace contain::inside {
+namespace {
+
+using detail::ExactVec3;
+using detail::LocalConstraint;
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+bool finite(double v) {
+  return std::isfinite(v);
+}
+
+std::string op_name(CsgOp op) {
+  switch (op) {
+    case CsgOp::leaf:
+      return "leaf";
+    case CsgOp::unite:
+      return "union";
+    case CsgOp::intersect:
+      return "intersection";
+    case CsgOp::subtract:
+      return "difference";
+    case CsgOp::complement:
+      return "complement";
+  }
+  return "?";
+}
+
+// Empty string when the leaf is valid, else the reason.
+std::string check_leaf(const CsgLeaf& leaf) {
+  return std::visit(
+      Overloaded{
+          [](const Sphere& s) -> std::string {
+            if (!is_finite(s.center) || !finite(s.radius)) {
+              return "sphere has a NaN or infinite number";
+            }
+            return s.radius < 0 ? "sphere radius is negative" : "";
+          },
+          [](const Box3& b) -> std::string {
+            if (!is_finite(b.min) || !is_finite(b.max)) return "box has a NaN or infinite number";
+            return b.empty() ? "box min exceeds max" : "";
+          },
+          [](const Plane& p) -> std::string {
+            if (!finite(p.a) || !finite(p.b) || !finite(p.c) || !finite(p.d)) {
+              return "halfspace has a NaN or infinite coefficient";
+            }
+            return p.a == 0 && p.b == 0 && p.c == 0 ? "halfspace normal is zero" : "";
+          },
+          [](const ConvexPolyhedron&) -> std::string { return ""; },  // validated when built
+          [](const ImplicitFunction& f) -> std::string {
+            return f ? "" : "implicit leaf holds no function";
+          },
+      },
+      leaf);
+}
+
+Location locate_leaf(const CsgLeaf& leaf, Vec3 p) {
+  return std::visit(Overloaded{
+                        [&](const Sphere& s) { return point_in_sphere(s, p); },
+                        [&](const Box3& b) { return point_in_box(b, p); },
+                        [&](const Plane& h) { return point_in_halfspace(h, p); },
+                        [&](const ConvexPolyhedron& c) { return c.locate(p); },
+                        [&](const ImplicitFunction& f) { return point_in_implicit(f, p); },
+                    },
+                    leaf);
+}
+
+ExactVec3 axis(int k, double s) {
+  return detail::exact(Vec3{k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0});
+}
+
+// Central-difference gradient estimate of an implicit function (documented as approximate).
+LocalConstraint implicit_constraint(const ImplicitFunction& f, Vec3 p) {
+  const double size = std::max({1.0, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  const double step = 1e-6 * size;
+  Vec3 gradient;
+  bool all_nonnegative = true;
+  double* parts[3] = {&gradient.x, &gradient.y, &gradient.z};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 e{k == 0 ? step : 0.0, k == 1 ? step : 0.0, k == 2 ? step : 0.0};
+    const double ahead = f(p + e), behind = f(p - e);
+    all_nonnegative = all_nonnegative && ahead >= 0 && behind >= 0;
+    *parts[k] = ahead - behind;
+  }
+  LocalConstraint c;
+  if (is_finite(gradient)) c.normal = detail::exact(gradient);
+  c.fixed_value = all_nonnegative;  // used when the normal is zero
+  return c;
+}
+
+// The planes through p that bound the leaf near p (p on the leaf's boundary), inward normals.
+// Every present leaf fills exactly the cells on the positive side of all its constraints.
+void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>& out) {
+  std::visit(
+      Overloaded{
+          [&](const Sphere& s) {
+            // Tangent plane with inward normal c − p; |c − p| = r exactly since p is on it. A
+            // ball of radius 0 has no interior: its zero normal with fixed_value false.
+            out.push_back({detail::exact(s.center) - detail::exact(p), true, false});
+          },
+          [&](const Box3& b) {
+            const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
+            const double q[3] = {p.x, p.y, p.z};
+            for (int k = 0; k < 3; ++k) {
+              if (q[k] == lo[k]) out.push_back({axis(k, 1.0), false, false});
+              if (q[k] == hi[k]) out.push_back({axis(k, -1.0), false, false});
+            }
+          },
+          [&](const Plane& h) {
+            out.push_back({detail::exact(h.normal()), false, false});
+          },
+          [&](const ConvexPolyhedron& c) {
+            for (const Plane& h : c.planes()) {
+              if (predicates::side_of_plane(h, p) == Sign::zero) {
+                out.push_back({detail::exact(h.normal()), false, false});
+              }
+            }
+            for (const Triangle3& t : c.faces()) {
+              if (predicates::orient3d(t.a, t.b, t.c, p) == Sign::zero) {
+                const ExactVec3 a = detail::exact(t.a);
+                // Faces are counter-clockwise from outside: (b − a) × (c − a) points out.
+                out.push_back(
+                    {-cross(detail::exact(t.b) - a, detail::exact(t.c) - a), false, false});
+              }
+            }
+          },
+          [&](const ImplicitFunction& f) { out.push_back(implicit_constraint(f, p)); },
+      },
+      leaf);
+}
+
+}  // namespace
+
+Csg Csg::leaf(CsgLeaf solid) {
+  return Csg(CsgOp::leaf, {}, std::make_shared<const CsgLeaf>(std::move(solid)));
+}
+Csg Csg::unite(std::vector<Csg> operands) {
+  return Csg(CsgOp::unite, std::move(operands), {});
+}
+Csg Csg::intersect(std::vector<Csg> operands) {
+  return Csg(CsgOp::intersect, std::move(operands), {});
+}
+Csg Csg::subtract(Csg a, Csg b) {
+  std::vector<Csg> operands;
+  operands.push_back(std::move(a));
+  operands.push_back(std::move(b));
+  return Csg(CsgOp::subtract, std::move(operands), {});
+}
+Csg Csg::complement(Csg a) {
+  std::vector<Csg> operands;
+  operands.push_back(std::move(a));
+  return Csg(CsgOp::complement, std::move(operands), {});
+}
+
+Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
+  CsgSolid solid;
+  // Breadth-first, so that children of a node are contiguous in children_.
+  struct Pending {
+    const Csg* tree;
+    std::string path;
+  };
+  std::vector<Pending> queue{{&tree, ""}};
+  solid.nodes_.push_back({});
+  for (std::size_t at = 0; at < queue.size(); ++at) {
+    const Csg& t = *queue[at].tree;
+    const std::string& path = queue[at].path;
+    Node& node = solid.nodes_[at];
+    node.op = t.op();
+    if (t.op() == CsgOp::leaf) {
+      const std::string problem = check_leaf(t.solid());
+      if (!problem.empty()) {
+        return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + problem};
+      }
+      node.first = static_cast<std::int32_t>(solid.leaves_.size());
+      solid.leaves_.push_back(t.solid());
+      continue;
+    }
+    const std::size_t arity = t.operands().size();
+    if ((t.op() == CsgOp::subtract && arity != 2) || (t.op() == CsgOp::complement && arity != 1)) {
+      return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + op_name(t.op()) +
+                                                 " has " + std::to_string(arity) + " operands"};
+    }
+    node.first = static_cast<std::int32_t>(solid.children_.size());
+    node.count = static_cast<std::int32_t>(arity);
+    for (std::size_t k = 0; k < arity; ++k) {
+      solid.children_.push_back(static_cast<std::int32_t>(queue.size()));
+      queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") + op_name(t.op()) + "[" +
+                                             std::to_string(k) + "]"});
+      solid.nodes_.push_back({});
+    }
+  }
+  return solid;
+}
+
+// Kleene three-valued evaluation: 1 in, -1 out, 0 unknown. With definite leaf values it is the
+// plain boolean evaluation of the tree.
+template <class LeafValue>
+int CsgSolid::evaluate(std::int32_t index, const LeafValue& leaf_value) const {
+  const Node& node = nodes_[static_cast<std::size_t>(index)];
+  const auto child = [&](std::int32_t k) {
+    return evaluate(children_[static_cast<std::size_t>(node.first + k)], leaf_value);
+  };
+  switch (node.op) {
+    case CsgOp::leaf:
+      return leaf_value(node.first);
+    case CsgOp::unite: {
+      int result = -1;
+      for (std::int32_t k = 0; k < node.count; ++k) {
+        const int v = child(k);
+        if (v == 1) return 1;
+        result = std::max(result, v);
+      }
+      return result;
+    }
+    case CsgOp::intersect: {
+      int result = 1;
+      for (std::int32_t k = 0; k < node.count; ++k) {
+        const int v = child(k);
+        if (v == -1) return -1;
+        result = std::min(result, v);
+      }
+      return result;
+    }
+    case CsgOp::subtract: {
+      const int a = child(0);
+      if (a == -1) return -1;
+      return std::min(a, -child(1));
+    }
+    case CsgOp::complement:
+      return -child(0);
+  }
+  return -1;
+}
+
+Location CsgSolid::locate(Vec3 p) const {
+  std::vector<Location> at(leaves_.size());
+  bool any_boundary = false;
+  for (std::size_t i = 0; i < leaves_.size(); ++i) {
+    at[i] = locate_leaf(leaves_[i], p);
+    any_boundary = any_boundary || at[i] == Location::boundary;
+  }
+  const int known = evaluate(0, [&](std::int32_t leaf) {
+    return static_cast<int>(at[static_cast<std::size_t>(leaf)]);  // boundary is 0: unknown
+  });
+  if (known != 0 || !any_boundary) return known > 0 ? Location::inside : Location::outside;
+
+  // p is on the boundary of leaves that matter: analyse its neighbourhood.
+  std::vector<LocalConstraint> constraints;
+  std::vector<std::int32_t> first(leaves_.size() + 1, 0);
+  for (std::size_t i = 0; i < leaves_.size(); ++i) {
+    first[i] = static_cast<std::int32_t>(constraints.size());
+    if (at[i] == Location::boundary) local_constraints(leaves_[i], p, constraints);
+    first[i + 1] = static_cast<std::int32_t>(constraints.size());
+  }
+  const std::function<bool(std::span<const char>)> contains = [&](std::span<const char> positive) {
+    return evaluate(0, [&](std::int32_t leaf) {
+             const auto i = static_cast<std::size_t>(leaf);
+             if (at[i] != Location::boundary) return static_cast<int>(at[i]);
+             for (std::int32_t k = first[i]; k < first[i + 1]; ++k) {
+               if (positive[static_cast<std::size_t>(k)] == 0) return -1;
+             }
+             return 1;
+           }) > 0;
+  };
+  return detail::classify_neighbourhood(constraints, contains);
+}
+
+void CsgSolid::locate(std::span<const Vec3> points, std::span<Location> out,
+                      const BatchOptions& options) const {
+  parallel_for(points.size(), options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      out[i] = locate(points[i]);
+  });
+}
+
+Location point_in_csg(const CsgSolid& solid, Vec3 p) {
+  return solid.locate(p);
+}
+
+}  // namespace contain::inside
