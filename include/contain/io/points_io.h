@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// Point files: one point a line, 2 (2D) or 3 (3D) numbers separated by white space or commas;
+/// blank lines and `#` lines are skipped (the CLI contract, shared/spec/cli.md).
+
+#include <cstdint>
+#include <filesystem>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contain/core/result.h"
+#include "contain/geometry/vec.h"
+
+namespace contain::io {
+
+/// 2D points in file order, and for each the 1-based line it came from (the CLI prints one output
+/// line per point; a caller reporting a per-point problem can name the line).
+struct Points2 {
+  std::vector<Vec2> points;
+  std::vector<std::int64_t> lines;
+};
+
+/// 3D points in file order, and for each its 1-based line.
+struct Points3 {
+  std::vector<Vec3> points;
+  std::vector<std::int64_t> lines;
+};
+
+/// Parses 2D points: every non-skipped line must hold exactly 2 numbers. The syntax, the number
+/// rules and the errors are those of `parse_number_table` (a line with 3 numbers is
+/// ErrorKind::invalid_value: "found 3 numbers on the line, expected 2"). No points (empty text,
+/// only comments) is not an error. Linear time, from_chars speed.
+[[nodiscard]] Result<Points2> parse_points2(std::string_view text, const std::string& source);
+/// Parses 3D points: every non-skipped line must hold exactly 3 numbers.
+[[nodiscard]] Result<Points3> parse_points3(std::string_view text, const std::string& source);
+
+/// Reads 2D points from a file; the path "-" reads standard input ("<stdin>" in errors).
+[[nodiscard]] Result<Points2> read_points2(const std::filesystem::path& path);
+/// Reads 3D points from a file; the path "-" reads standard input ("<stdin>" in errors).
+[[nodiscard]] Result<Points3> read_points3(const std::filesystem::path& path);
+
+/// Reads 2D points from a stream to its end; `source` names it in errors.
+[[nodiscard]] Result<Points2> read_points2(std::istream& in, const std::string& source);
+/// Reads 3D points from a stream to its end; `source` names it in errors.
+[[nodiscard]] Result<Points3> read_points3(std::istream& in, const std::string& source);
+
+}  // namespace contain::io

@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// Reading a 2D region from a file whose extension names its format (the CLI's `--polygon`).
+
+#include <filesystem>
+
+#include "contain/core/result.h"
+#include "contain/geometry/polygon.h"
+
+namespace contain::io {
+
+/// Reads a region: `.wkt` with `read_wkt`, `.geojson` (and `.json`) with `read_geojson`; the
+/// extension is compared case-insensitively. Another extension is ErrorKind::unsupported naming
+/// it; every reader error comes back as is (source = the path, line where one applies).
+[[nodiscard]] Result<MultiPolygon> read_region(const std::filesystem::path& path);
+
+}  // namespace contain::io

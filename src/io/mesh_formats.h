@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// Private: one reader and writer per mesh format, dispatched by mesh_io.cpp.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contain/io/mesh_io.h"
+
+namespace contain::io::detail {
+
+[[nodiscard]] Result<MeshFile> parse_obj(std::string_view text, const std::string& source);
+[[nodiscard]] Result<MeshFile> parse_off(std::string_view text, const std::string& source);
+[[nodiscard]] Result<MeshFile> parse_stl(std::string_view bytes, const std::string& source);
+[[nodiscard]] Result<MeshFile> parse_ply(std::string_view bytes, const std::string& source);
+
+[[nodiscard]] std::string format_obj(const Mesh& mesh);
+[[nodiscard]] std::string format_off(const Mesh& mesh);
+[[nodiscard]] std::string format_stl(const Mesh& mesh, MeshFormat format);
+[[nodiscard]] std::string format_ply(const Mesh& mesh, MeshFormat format);
+
+/// Appends the fan (v0, vi, vi+1) of a face of `corners.size() >= 3` vertices.
+inline void append_fan(std::vector<TriangleIndices>& triangles,
+                       std::span<const std::int32_t> corners) {
+  for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
+    triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  }
+}
+
+/// The finished reader result: rejects a mesh without triangles (ErrorKind::degenerate) and
+/// validates through Mesh::from_arrays (the readers have checked indices and coordinates already,
+/// so a failure there is reported as is).
+[[nodiscard]] Result<MeshFile> finish_mesh(std::vector<Vec3> vertices,
+                                           std::vector<TriangleIndices> triangles, MeshInfo info,
+                                           const std::string& source);
+
+}  // namespace contain::io::detail

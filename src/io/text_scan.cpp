@@ -1,0 +1,151 @@
+#include "io/text_scan.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+namespace contain::io::detail {
+
+std::string source_name(const std::filesystem::path& path) {
+  return path.string();
+}
+
+Result<std::string> read_file(const std::filesystem::path& path) {
+  const std::string source = source_name(path);
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) {
+    return make_error(ErrorKind::io, "cannot open the file: it does not exist", source);
+  }
+  if (std::filesystem::is_directory(status)) {
+    return make_error(ErrorKind::io, "cannot read the file: it is a directory", source);
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    return make_error(ErrorKind::io, std::string("cannot open the file: ") + std::strerror(errno),
+                      source);
+  }
+  return read_stream(in, source);
+}
+
+Result<std::string> read_stream(std::istream& in, const std::string& source) {
+  std::string data;
+  std::array<char, 1 << 16> buffer{};
+  while (in) {
+    in.read(buffer.data(), buffer.size());
+    data.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) return make_error(ErrorKind::io, "reading failed", source);
+  return data;
+}
+
+Status write_file(const std::filesystem::path& path, std::string_view bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    return make_error(ErrorKind::io,
+                      std::string("cannot open the file for writing: ") + std::strerror(errno),
+                      source_name(path));
+  }
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.flush();
+  if (!out) return make_error(ErrorKind::io, "writing failed", source_name(path));
+  return Ok{};
+}
+
+Error make_error(ErrorKind kind, std::string message, const std::string& source,
+                 std::int64_t line) {
+  return Error{kind, std::move(message), source, line};
+}
+
+NumberStatus parse_double(const char*& p, const char* end, double& out) {
+  const char* start = p;
+  // from_chars takes no '+'; accept it only before a digit or a point so "+-1" stays an error.
+  if (start != end && *start == '+' && start + 1 != end &&
+      (std::isdigit(static_cast<unsigned char>(start[1])) || start[1] == '.')) {
+    ++start;
+  }
+  double value = 0.0;
+  auto [ptr, ec] = std::from_chars(start, end, value, std::chars_format::general);
+  if (ec == std::errc::invalid_argument || ptr == start) return NumberStatus::not_a_number;
+  if (ec == std::errc::result_out_of_range) {
+    // libstdc++ reports underflow as out of range too; strtod (correctly rounded in glibc, "C"
+    // decimal point as this token has no other) gives the subnormal or zero, or HUGE_VAL.
+    std::string token(start, ptr);
+    errno = 0;
+    value = std::strtod(token.c_str(), nullptr);
+    p = ptr;
+    if (!std::isfinite(value)) return NumberStatus::not_finite;
+    out = value;
+    return NumberStatus::ok;
+  }
+  p = ptr;
+  if (!std::isfinite(value)) return NumberStatus::not_finite;
+  out = value;
+  return NumberStatus::ok;
+}
+
+bool parse_int64(const char*& p, const char* end, std::int64_t& out) {
+  const char* start = p;
+  if (start != end && *start == '+' && start + 1 != end &&
+      std::isdigit(static_cast<unsigned char>(start[1]))) {
+    ++start;
+  }
+  std::int64_t value = 0;
+  auto [ptr, ec] = std::from_chars(start, end, value);
+  if (ec != std::errc{} || ptr == start) return false;
+  p = ptr;
+  out = value;
+  return true;
+}
+
+void append_double(std::string& out, double value) {
+  std::array<char, 32> buffer{};
+  auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  (void)ec;  // 32 characters always hold the shortest form of a double
+  out.append(buffer.data(), ptr);
+}
+
+std::string quote_token(const char* p, const char* end) {
+  if (p == end) return "the end of the file";
+  if (*p == '\n' || *p == '\r') return "the end of the line";
+  const char* q = p;
+  // A token ends at white space or, past its first character, at punctuation of the formats.
+  while (q != end && !is_space(*q) && q - p < 24 &&
+         (q == p || (*q != ',' && *q != '(' && *q != ')' && *q != ']' && *q != '}'))) {
+    ++q;
+  }
+  if (q == p) q = p + 1;
+  std::string token(p, q);
+  for (char& c : token) {
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  }
+  return "'" + token + "'";
+}
+
+std::int64_t line_of_offset(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  return 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n');
+}
+
+std::string_view skip_bom(std::string_view text) {
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  return text;
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return ext;
+}
+
+}  // namespace contain::io::detail

@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// Private helpers shared by the readers and writers of contain::io: whole-file reading, number
+/// parsing with std::from_chars (correctly rounded, NaN/Inf rejected), shortest round-trip
+/// formatting with std::to_chars, and errors that name the source and line.
+
+#include <cstdint>
+#include <filesystem>
+#include <istream>
+#include <string>
+#include <string_view>
+
+#include "contain/core/result.h"
+
+namespace contain::io::detail {
+
+/// The name of a file in messages: its path as given.
+[[nodiscard]] std::string source_name(const std::filesystem::path& path);
+
+/// The whole content of a file (binary-safe). Errors: ErrorKind::io naming the path (missing,
+/// a directory, unreadable).
+[[nodiscard]] Result<std::string> read_file(const std::filesystem::path& path);
+
+/// The whole content of a stream; ErrorKind::io when the stream fails before its end.
+[[nodiscard]] Result<std::string> read_stream(std::istream& in, const std::string& source);
+
+/// Writes `bytes` to `path`, replacing it; ErrorKind::io when that fails.
+[[nodiscard]] Status write_file(const std::filesystem::path& path, std::string_view bytes);
+
+/// An Error with every field set.
+[[nodiscard]] Error make_error(ErrorKind kind, std::string message, const std::string& source,
+                               std::int64_t line = 0);
+
+/// What `parse_double` found.
+enum class NumberStatus : std::uint8_t {
+  ok,
+  not_a_number,  ///< no number starts here (nothing consumed)
+  not_finite,    ///< "nan", "inf", "infinity" or a value that overflows to infinity
+};
+
+/// Parses one decimal number at `p` (an optional '+' or '-', then std::from_chars' general
+/// format), advancing `p` past it on success and on `not_finite`. Correctly rounded: underflow
+/// gives the correctly rounded subnormal or zero. Does not check what follows the number.
+[[nodiscard]] NumberStatus parse_double(const char*& p, const char* end, double& out);
+
+/// Parses an optionally signed decimal integer at `p`; false (nothing consumed) when none starts
+/// here or it does not fit in int64.
+[[nodiscard]] bool parse_int64(const char*& p, const char* end, std::int64_t& out);
+
+/// Shortest decimal that reads back as exactly `value` (std::to_chars), appended to `out`.
+void append_double(std::string& out, double value);
+
+/// A short quote of the text at `p` for messages: `'abc'`, or "the end of the line/file".
+[[nodiscard]] std::string quote_token(const char* p, const char* end);
+
+/// The 1-based line of byte `offset` in `text`.
+[[nodiscard]] std::int64_t line_of_offset(std::string_view text, std::size_t offset);
+
+/// Drops a UTF-8 byte order mark.
+[[nodiscard]] std::string_view skip_bom(std::string_view text);
+
+/// Lower-case ASCII copy of an extension (".OBJ" -> ".obj").
+[[nodiscard]] std::string lower_extension(const std::filesystem::path& path);
+
+[[nodiscard]] constexpr bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+[[nodiscard]] constexpr bool is_space(char c) {
+  return is_blank(c) || c == '\n';
+}
+
+/// Advances `p` over blanks (not newlines).
+inline void skip_blanks(const char*& p, const char* end) {
+  while (p != end && is_blank(*p))
+    ++p;
+}
+
+}  // namespace contain::io::detail

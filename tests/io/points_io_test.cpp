@@ -1,0 +1,185 @@
+#include "contain/io/points_io.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "contain/io/number_table.h"
+#include "io/temp_file.h"
+
+namespace contain::io {
+namespace {
+
+TEST(PointsIo, Reads2DPointsSeparatedBySpacesOrCommasAndSkipsBlankAndCommentLines) {
+  auto r =
+      parse_points2("# header\n1 2\n\n  3.5,\t-4\n# again\n5 , 6e1 # trailing comment\n", "pts");
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  ASSERT_EQ(r->points.size(), 3u);
+  EXPECT_EQ(r->points[0], (Vec2{1, 2}));
+  EXPECT_EQ(r->points[1], (Vec2{3.5, -4}));
+  EXPECT_EQ(r->points[2], (Vec2{5, 60}));
+  EXPECT_EQ(r->lines, (std::vector<std::int64_t>{2, 4, 6}));
+}
+
+TEST(PointsIo, Reads3DPointsWithCrLfLineEndsAndAByteOrderMark) {
+  auto r = parse_points3("\xEF\xBB\xBF+1 .5 -0\r\n2. 3e-2 4\r\n", "pts");
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  ASSERT_EQ(r->points.size(), 2u);
+  EXPECT_EQ(r->points[0], (Vec3{1, 0.5, 0}));
+  EXPECT_TRUE(std::signbit(r->points[0].z));
+  EXPECT_EQ(r->points[1], (Vec3{2, 0.03, 4}));
+}
+
+TEST(PointsIo, ShortestRoundTripDecimalsReadBackAsTheSameDoubles) {
+  std::mt19937_64 rng(7);
+  std::string text;
+  std::vector<Vec2> expected;
+  for (int i = 0; i < 2000; ++i) {
+    // Random bit patterns cover subnormals and extreme exponents; skip NaN and infinities.
+    Vec2 p{std::bit_cast<double>(rng()), std::bit_cast<double>(rng())};
+    if (!is_finite(p)) continue;
+    expected.push_back(p);
+    char buf[64];
+    auto a = std::to_chars(buf, buf + 64, p.x);
+    *a.ptr++ = ' ';
+    auto b = std::to_chars(a.ptr, buf + 64, p.y);
+    text.append(buf, b.ptr);
+    text += '\n';
+  }
+  auto r = parse_points2(text, "pts");
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  ASSERT_EQ(r->points.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(r->points[i].x),
+              std::bit_cast<std::uint64_t>(expected[i].x));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(r->points[i].y),
+              std::bit_cast<std::uint64_t>(expected[i].y));
+  }
+}
+
+TEST(PointsIo, UnderflowRoundsCorrectlyToZeroOrASubnormal) {
+  auto r = parse_points2("1e-400 5e-324\n", "pts");
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  EXPECT_EQ(r->points[0].x, 0.0);
+  EXPECT_EQ(r->points[0].y, std::numeric_limits<double>::denorm_min());
+}
+
+TEST(PointsIo, RejectsALineOfTheOtherDimensionNamingTheLine) {
+  auto r = parse_points2("1 2\n3 4 5\n", "pts");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::invalid_value);
+  EXPECT_EQ(r.error().line, 2);
+  EXPECT_EQ(r.error().source, "pts");
+  EXPECT_NE(r.error().message.find("3 numbers"), std::string::npos) << r.error().message;
+}
+
+TEST(PointsIo, Rejects2DPointsWhere3DAreExpected) {
+  auto r = parse_points3("1 2\n", "pts");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().line, 1);
+}
+
+TEST(PointsIo, RejectsNaNInfinityAndOverflowAsInvalidValues) {
+  for (const char* text : {"1 nan\n", "inf 2\n", "-infinity 1\n", "1 1e400\n", "-1e309 0\n"}) {
+    auto r = parse_points2(std::string("0 0\n") + text, "pts");
+    ASSERT_FALSE(r.ok()) << text;
+    EXPECT_EQ(r.error().kind, ErrorKind::invalid_value) << text;
+    EXPECT_EQ(r.error().line, 2) << text;
+  }
+}
+
+TEST(PointsIo, RejectsTrailingGarbageAndMalformedNumbers) {
+  for (const char* text : {"1.5abc 2\n", "1 2x\n", "1 2 ,\n", "1,,2\n", "0x10 1\n", "1e 2\n",
+                           "- 1\n", "+-1 2\n", "1 2 3 4 5 6 7 8 9 10 11 x\n"}) {
+    auto r = parse_points2(text, "pts");
+    ASSERT_FALSE(r.ok()) << text;
+    EXPECT_EQ(r.error().kind, ErrorKind::parse) << text;
+    EXPECT_EQ(r.error().line, 1) << text;
+  }
+}
+
+TEST(PointsIo, AnEmptyOrCommentOnlyFileGivesNoPoints) {
+  auto empty = parse_points2("", "pts");
+  ASSERT_TRUE(empty.ok());
+  EXPECT_TRUE(empty->points.empty());
+  auto comments = parse_points3("# nothing\n\n   \n", "pts");
+  ASSERT_TRUE(comments.ok());
+  EXPECT_TRUE(comments->points.empty());
+}
+
+TEST(PointsIo, AMissingFileIsAnIoErrorNamingThePath) {
+  auto r = read_points2("/nonexistent/dir/points.txt");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::io);
+  EXPECT_EQ(r.error().source, "/nonexistent/dir/points.txt");
+}
+
+TEST(PointsIo, ReadsFromAFileAndFromAStream) {
+  test::TempFile file(".xyz", "0 1 2\n3 4 5\n");
+  auto r = read_points3(file.path());
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  EXPECT_EQ(r->points.size(), 2u);
+  std::istringstream in("7 8\n");
+  auto s = read_points2(in, "<stdin>");
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(s->points[0], (Vec2{7, 8}));
+  std::istringstream bad("7 x\n");
+  auto t = read_points2(bad, "<stdin>");
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().what(), "<stdin>:1: expected a number, found 'x'");
+}
+
+TEST(NumberTable, ReadsTwelveNumberTransformsFromOneArgument) {
+  auto r = parse_number_table("1,0,0,2.5,0,1,0,0,0,0,1,0", "--transform-b", {.columns = {12}});
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  EXPECT_EQ(r->columns, 12);
+  EXPECT_EQ(r->values[3], 2.5);
+}
+
+TEST(NumberTable, AcceptsAnyOfTheAllowedCountsButTheSameOnEveryLine) {
+  auto four = parse_number_table("0 0 1 1\n2 2 3 3\n", "seg", {.columns = {4, 6}});
+  ASSERT_TRUE(four.ok());
+  EXPECT_EQ(four->columns, 4);
+  EXPECT_EQ(four->rows(), 2u);
+  auto five = parse_number_table("0 0 1 1 1\n", "seg", {.columns = {4, 6}});
+  ASSERT_FALSE(five.ok());
+  EXPECT_NE(five.error().message.find("expected 4 or 6"), std::string::npos);
+  auto mixed = parse_number_table("0 0 1 1\n0 0 0 1 1 1\n", "seg", {.columns = {4, 6}});
+  ASSERT_FALSE(mixed.ok());
+  EXPECT_EQ(mixed.error().line, 2);
+}
+
+// Not a test of speed (no threshold): prints the parsing rate for the report.
+TEST(PointsIo, ReportsParsingThroughput) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::string text;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    char buf[96];
+    char* p = buf;
+    for (int k = 0; k < 3; ++k) {
+      p = std::to_chars(p, buf + 96, u(rng)).ptr;
+      *p++ = k < 2 ? ' ' : '\n';
+    }
+    text.append(buf, p);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  auto r = parse_points3(text, "bench");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r->points.size(), static_cast<std::size_t>(n));
+  const double mb = static_cast<double>(text.size()) / 1e6;
+  std::cout << "[ points ] parsed " << mb << " MB (" << n << " 3D points) in " << seconds
+            << " s: " << mb / seconds << " MB/s\n";
+  RecordProperty("points_mb_per_s", std::to_string(mb / seconds));
+}
+
+}  // namespace
+}  // namespace contain::io
