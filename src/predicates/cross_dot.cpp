@@ -1,5 +1,73 @@
-// PROVISIONAL floating-point body, replaced by the exact implementation in this same session.
 #include "contain/predicates/cross_dot.h"
+
+#include <array>
+#include <cmath>
+
+#include "predicates/big_float.h"
+#include "predicates/expansion.h"
+#include "predicates/stages.h"
+
 namespace contain::predicates {
-Sign cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) { return sign_of(dot(cross(b - a, p - a), cross(b - a, c - a))); }
+
+namespace detail {
+
+namespace {
+
+// ((b - a) x (p - a)) . ((b - a) x (c - a)) on exact numbers; Num is Expansion<1> or BigFloat.
+template <class Num>
+Sign cross_dot_in(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  const Num ax(a.x), ay(a.y), az(a.z);
+  const auto ux = Num(b.x) - ax, uy = Num(b.y) - ay, uz = Num(b.z) - az;
+  const auto vx = Num(p.x) - ax, vy = Num(p.y) - ay, vz = Num(p.z) - az;
+  const auto wx = Num(c.x) - ax, wy = Num(c.y) - ay, wz = Num(c.z) - az;
+  const auto n1x = uy * vz - uz * vy;
+  const auto n1y = uz * vx - ux * vz;
+  const auto n1z = ux * vy - uy * vx;
+  const auto n2x = uy * wz - uz * wy;
+  const auto n2y = uz * wx - ux * wz;
+  const auto n2z = ux * wy - uy * wx;
+  return (n1x * n2x + n1y * n2y + n1z * n2z).sign();
+}
+
+}  // namespace
+
+Sign cross_dot_expansion(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  return cross_dot_in<Expansion<1>>(a, b, p, c);
+}
+
+Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  return cross_dot_in<BigFloat>(a, b, p, c);
+}
+
+}  // namespace detail
+
+// Filter. Each monomial of the degree-4 expression passes through at most k = 11 roundings (four
+// differences, two inner products, two inner subtractions, the outer product, two sums), so
+// |error| <= gamma_11 * permanent < 12 eps * computed permanent (docs/robustness.md). An
+// underflowed inner product is multiplied by a component of the other cross product, so the
+// guard is scaled by 1 + the sum of the cross products' component permanents.
+Sign cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  constexpr double kBound = 12.0 * detail::kEpsilon;
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = p.x - a.x, vy = p.y - a.y, vz = p.z - a.z;
+  const double wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;
+  const double p1 = uy * vz, p2 = uz * vy, p3 = uz * vx, p4 = ux * vz, p5 = ux * vy, p6 = uy * vx;
+  const double q1 = uy * wz, q2 = uz * wy, q3 = uz * wx, q4 = ux * wz, q5 = ux * wy, q6 = uy * wx;
+  const double value = ((p1 - p2) * (q1 - q2) + (p3 - p4) * (q3 - q4)) + (p5 - p6) * (q5 - q6);
+  const double m1 = std::fabs(p1) + std::fabs(p2), m2 = std::fabs(p3) + std::fabs(p4),
+               m3 = std::fabs(p5) + std::fabs(p6);
+  const double k1 = std::fabs(q1) + std::fabs(q2), k2 = std::fabs(q3) + std::fabs(q4),
+               k3 = std::fabs(q5) + std::fabs(q6);
+  const double permanent = (m1 * k1 + m2 * k2) + m3 * k3;
+  const double errbound =
+      kBound * permanent + detail::kUnderflowGuard * (1.0 + (m1 + m2 + m3) + (k1 + k2 + k3));
+  if (value > errbound) return Sign::positive;
+  if (-value > errbound) return Sign::negative;
+  if (detail::in_expansion_range<4>(
+          std::array{a.x, a.y, a.z, b.x, b.y, b.z, p.x, p.y, p.z, c.x, c.y, c.z})) {
+    return detail::cross_dot_expansion(a, b, p, c);
+  }
+  return detail::cross_dot_big(a, b, p, c);
+}
+
 }  // namespace contain::predicates

@@ -1,5 +1,59 @@
-// PROVISIONAL floating-point body, replaced by the exact implementation in this same session.
 #include "contain/predicates/orient2d.h"
+
+#include <array>
+#include <cmath>
+
+#include "predicates/big_float.h"
+#include "predicates/expansion.h"
+#include "predicates/stages.h"
+
 namespace contain::predicates {
-Sign orient2d(Vec2 a, Vec2 b, Vec2 c) { return sign_of(cross(b - a, c - a)); }
+
+namespace detail {
+
+namespace {
+
+// det[b - a, c - a] on exact numbers; Num is Expansion<1> or BigFloat.
+template <class Num>
+Sign orient2d_in(Vec2 a, Vec2 b, Vec2 c) {
+  const Num ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
+  return ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)).sign();
+}
+
+}  // namespace
+
+Sign orient2d_expansion(Vec2 a, Vec2 b, Vec2 c) {
+  return orient2d_in<Expansion<1>>(a, b, c);
+}
+
+Sign orient2d_big(Vec2 a, Vec2 b, Vec2 c) {
+  return orient2d_in<BigFloat>(a, b, c);
+}
+
+Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
+  if (in_expansion_range<2>(std::array{a.x, a.y, b.x, b.y, c.x, c.y})) {
+    return orient2d_expansion(a, b, c);
+  }
+  return orient2d_big(a, b, c);
+}
+
+}  // namespace detail
+
+// Filter: Shewchuk's orient2d stage A (pivot c, which gives the same determinant). Without
+// underflow, |error| <= (3 + 16 eps) eps (|detleft| + |detright|) including the rounding of the
+// bound itself; the coefficient is raised to (3 + 32 eps) eps to absorb the rounding of the added
+// underflow guard, which covers the at most two products that may have underflowed.
+// Overflow makes the bound infinite or NaN, and the comparisons then fail.
+Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  constexpr double kBound = (3.0 + 32.0 * detail::kEpsilon) * detail::kEpsilon;
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  const double errbound =
+      kBound * (std::fabs(detleft) + std::fabs(detright)) + detail::kUnderflowGuard;
+  if (det > errbound) return Sign::positive;
+  if (-det > errbound) return Sign::negative;
+  return detail::orient2d_exact(a, b, c);
+}
+
 }  // namespace contain::predicates

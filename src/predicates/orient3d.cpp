@@ -1,5 +1,74 @@
-// PROVISIONAL floating-point body, replaced by the exact implementation in this same session.
 #include "contain/predicates/orient3d.h"
+
+#include <array>
+#include <cmath>
+
+#include "predicates/big_float.h"
+#include "predicates/expansion.h"
+#include "predicates/stages.h"
+
 namespace contain::predicates {
-Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return sign_of(dot(cross(b - a, c - a), d - a)); }
+
+namespace detail {
+
+namespace {
+
+// ((b - a) x (c - a)) . (d - a) on exact numbers; Num is Expansion<1> or BigFloat.
+template <class Num>
+Sign orient3d_in(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const Num ax(a.x), ay(a.y), az(a.z);
+  const auto abx = Num(b.x) - ax, aby = Num(b.y) - ay, abz = Num(b.z) - az;
+  const auto acx = Num(c.x) - ax, acy = Num(c.y) - ay, acz = Num(c.z) - az;
+  const auto adx = Num(d.x) - ax, ady = Num(d.y) - ay, adz = Num(d.z) - az;
+  const auto nx = aby * acz - abz * acy;
+  const auto ny = abz * acx - abx * acz;
+  const auto nz = abx * acy - aby * acx;
+  return (nx * adx + ny * ady + nz * adz).sign();
+}
+
+}  // namespace
+
+Sign orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return orient3d_in<Expansion<1>>(a, b, c, d);
+}
+
+Sign orient3d_big(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return orient3d_in<BigFloat>(a, b, c, d);
+}
+
+Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  if (in_expansion_range<3>(
+          std::array{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) {
+    return orient3d_expansion(a, b, c, d);
+  }
+  return orient3d_big(a, b, c, d);
+}
+
+}  // namespace detail
+
+// Filter: Shewchuk's orient3d stage A (pivot d; his determinant is the negative of ours).
+// Without underflow, |error| <= (7 + 56 eps) eps * permanent including the rounding of the
+// bound; raised to (7 + 64 eps) eps to absorb the rounding of the added underflow guard. An
+// underflowed 2x2 product is multiplied by one z difference, so the guard is scaled by
+// 1 + |adz| + |bdz| + |cdz|. Overflow makes the bound infinite or NaN and the comparisons fail.
+Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  constexpr double kBound = (7.0 + 64.0 * detail::kEpsilon) * detail::kEpsilon;
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double abs_adz = std::fabs(adz), abs_bdz = std::fabs(bdz), abs_cdz = std::fabs(cdz);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * abs_adz +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * abs_bdz +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * abs_cdz;
+  const double errbound =
+      kBound * permanent + detail::kUnderflowGuard * (1.0 + abs_adz + abs_bdz + abs_cdz);
+  if (det > errbound) return Sign::negative;
+  if (-det > errbound) return Sign::positive;
+  return detail::orient3d_exact(a, b, c, d);
+}
+
 }  // namespace contain::predicates

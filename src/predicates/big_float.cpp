@@ -1,0 +1,153 @@
+#include "predicates/big_float.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace contain::predicates::detail {
+
+namespace {
+
+using Limbs = std::vector<std::uint32_t>;
+
+// a << bits, as a new magnitude.
+Limbs shifted_left(const Limbs& a, int bits) {
+  const int limbs = bits / 32;
+  const int rest = bits % 32;
+  Limbs out(a.size() + static_cast<std::size_t>(limbs) + 1, 0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::uint64_t v = static_cast<std::uint64_t>(a[i]) << rest;
+    out[i + static_cast<std::size_t>(limbs)] |= static_cast<std::uint32_t>(v);
+    out[i + static_cast<std::size_t>(limbs) + 1] |= static_cast<std::uint32_t>(v >> 32);
+  }
+  while (!out.empty() && out.back() == 0)
+    out.pop_back();
+  return out;
+}
+
+int compare(const Limbs& a, const Limbs& b) {
+  if (a.size() != b.size()) return a.size() < b.size() ? -1 : 1;
+  for (std::size_t i = a.size(); i-- > 0;) {
+    if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+  }
+  return 0;
+}
+
+Limbs add(const Limbs& a, const Limbs& b) {
+  const Limbs& longer = a.size() >= b.size() ? a : b;
+  const Limbs& shorter = a.size() >= b.size() ? b : a;
+  Limbs out(longer.size() + 1, 0);
+  std::uint64_t carry = 0;
+  for (std::size_t i = 0; i < longer.size(); ++i) {
+    const std::uint64_t s = carry + longer[i] + (i < shorter.size() ? shorter[i] : 0U);
+    out[i] = static_cast<std::uint32_t>(s);
+    carry = s >> 32;
+  }
+  out[longer.size()] = static_cast<std::uint32_t>(carry);
+  return out;
+}
+
+// a - b for a >= b.
+Limbs subtract(const Limbs& a, const Limbs& b) {
+  Limbs out(a.size(), 0);
+  std::int64_t borrow = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    std::int64_t d = static_cast<std::int64_t>(a[i]) - borrow -
+                     static_cast<std::int64_t>(i < b.size() ? b[i] : 0U);
+    borrow = d < 0 ? 1 : 0;
+    if (d < 0) d += std::int64_t{1} << 32;
+    out[i] = static_cast<std::uint32_t>(d);
+  }
+  return out;
+}
+
+}  // namespace
+
+BigFloat::BigFloat(double x) {
+  if (x == 0.0) return;
+  negative_ = x < 0.0;
+  int e = 0;
+  // frexp is exact, subnormals included: |x| = f * 2^e with f in [0.5, 1).
+  const double f = std::frexp(std::fabs(x), &e);
+  std::uint64_t m = static_cast<std::uint64_t>(std::ldexp(f, 53));
+  exponent_ = e - 53;
+  while ((m & 1U) == 0) {
+    m >>= 1;
+    ++exponent_;
+  }
+  limbs_ = {static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(m >> 32)};
+  normalize();
+}
+
+Sign BigFloat::sign() const {
+  if (limbs_.empty()) return Sign::zero;
+  return negative_ ? Sign::negative : Sign::positive;
+}
+
+void BigFloat::normalize() {
+  while (!limbs_.empty() && limbs_.back() == 0)
+    limbs_.pop_back();
+  if (limbs_.empty()) {
+    exponent_ = 0;
+    negative_ = false;
+    return;
+  }
+  // Whole zero limbs at the bottom move into the exponent, keeping magnitudes short.
+  std::size_t zeros = 0;
+  while (limbs_[zeros] == 0)
+    ++zeros;
+  if (zeros > 0) {
+    limbs_.erase(limbs_.begin(), limbs_.begin() + static_cast<std::ptrdiff_t>(zeros));
+    exponent_ += 32 * static_cast<int>(zeros);
+  }
+}
+
+BigFloat operator+(const BigFloat& a, const BigFloat& b) {
+  if (a.limbs_.empty()) return b;
+  if (b.limbs_.empty()) return a;
+  // Align both magnitudes on the smaller exponent; shifting left is exact.
+  const int e = std::min(a.exponent_, b.exponent_);
+  const Limbs ma = shifted_left(a.limbs_, a.exponent_ - e);
+  const Limbs mb = shifted_left(b.limbs_, b.exponent_ - e);
+  BigFloat r;
+  r.exponent_ = e;
+  if (a.negative_ == b.negative_) {
+    r.limbs_ = add(ma, mb);
+    r.negative_ = a.negative_;
+  } else if (compare(ma, mb) >= 0) {
+    r.limbs_ = subtract(ma, mb);
+    r.negative_ = a.negative_;
+  } else {
+    r.limbs_ = subtract(mb, ma);
+    r.negative_ = b.negative_;
+  }
+  r.normalize();
+  return r;
+}
+
+BigFloat operator-(const BigFloat& a, const BigFloat& b) {
+  BigFloat nb = b;
+  nb.negative_ = !nb.negative_;
+  return a + nb;
+}
+
+BigFloat operator*(const BigFloat& a, const BigFloat& b) {
+  BigFloat r;
+  if (a.limbs_.empty() || b.limbs_.empty()) return r;
+  r.limbs_.assign(a.limbs_.size() + b.limbs_.size(), 0);
+  for (std::size_t i = 0; i < a.limbs_.size(); ++i) {
+    std::uint64_t carry = 0;
+    for (std::size_t j = 0; j < b.limbs_.size(); ++j) {
+      const std::uint64_t t =
+          static_cast<std::uint64_t>(a.limbs_[i]) * b.limbs_[j] + r.limbs_[i + j] + carry;
+      r.limbs_[i + j] = static_cast<std::uint32_t>(t);
+      carry = t >> 32;
+    }
+    r.limbs_[i + b.limbs_.size()] = static_cast<std::uint32_t>(carry);
+  }
+  r.exponent_ = a.exponent_ + b.exponent_;
+  r.negative_ = a.negative_ != b.negative_;
+  r.normalize();
+  return r;
+}
+
+}  // namespace contain::predicates::detail

@@ -1,0 +1,52 @@
+#pragma once
+// The stages behind each public predicate, exposed to the tests so that every stage can be
+// checked against the exact oracle on its own (the filter would otherwise answer most calls).
+//
+//   filter    a few floating-point operations and a proven error bound (in each .cpp);
+//   expansion exact floating-point expansions (expansion.h), exact when the inputs pass
+//             in_expansion_range for the predicate's degree;
+//   big       BigFloat (big_float.h), exact for every finite input.
+//
+// The public predicate runs filter -> expansion (if in range) -> big. Bounds and regimes are
+// derived in docs/robustness.md.
+
+#include <cfloat>
+
+#include "contain/geometry/plane.h"
+#include "contain/geometry/sphere.h"
+#include "contain/geometry/vec.h"
+#include "contain/predicates/sign.h"
+
+namespace contain::predicates::detail {
+
+/// The unit roundoff of binary64, 2^-53.
+inline constexpr double kEpsilon = 0x1p-53;
+
+/// Added to every filter bound (scaled by the largest factor a product's rounding error can be
+/// multiplied by) so that the bounds stay sound when products underflow: a product's absolute
+/// error is then at most 2^-1075 rather than relative, and DBL_MIN = 2^-1022 covers that with a
+/// margin of 2^53. Results below it in magnitude go to the exact stages.
+inline constexpr double kUnderflowGuard = DBL_MIN;
+
+[[nodiscard]] Sign orient2d_expansion(Vec2 a, Vec2 b, Vec2 c);
+[[nodiscard]] Sign orient2d_big(Vec2 a, Vec2 b, Vec2 c);
+[[nodiscard]] Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
+
+[[nodiscard]] Sign orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+[[nodiscard]] Sign orient3d_big(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+[[nodiscard]] Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+
+[[nodiscard]] Sign side_of_plane_expansion(const Plane& plane, Vec3 p);
+[[nodiscard]] Sign side_of_plane_big(const Plane& plane, Vec3 p);
+[[nodiscard]] Sign side_of_line_expansion(const HalfPlane& half_plane, Vec2 p);
+[[nodiscard]] Sign side_of_line_big(const HalfPlane& half_plane, Vec2 p);
+
+[[nodiscard]] Sign side_of_sphere_expansion(const Sphere& sphere, Vec3 p);
+[[nodiscard]] Sign side_of_sphere_big(const Sphere& sphere, Vec3 p);
+[[nodiscard]] Sign side_of_circle_expansion(const Circle& circle, Vec2 p);
+[[nodiscard]] Sign side_of_circle_big(const Circle& circle, Vec2 p);
+
+[[nodiscard]] Sign cross_dot_expansion(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
+[[nodiscard]] Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
+
+}  // namespace contain::predicates::detail
