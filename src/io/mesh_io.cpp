@@ -1,5 +1,8 @@
 #include "contain/io/mesh_io.h"
 
+#include <cmath>
+#include <limits>
+
 #include "io/mesh_formats.h"
 #include "io/text_scan.h"
 
@@ -90,6 +93,19 @@ Status write_mesh(const Mesh& mesh, const std::filesystem::path& path,
                               "cannot tell the mesh format from the extension '" +
                                   detail::lower_extension(path) + "': use .obj, .off, .stl or .ply",
                               detail::source_name(path));
+  }
+  if (*format == MeshFormat::stl_binary) {
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Vec3& v = mesh.vertices[i];
+      if (!(std::abs(v.x) <= kFloatMax && std::abs(v.y) <= kFloatMax &&
+            std::abs(v.z) <= kFloatMax)) {
+        return detail::make_error(
+            ErrorKind::invalid_value,
+            "vertex " + std::to_string(i) + " is beyond the range of binary STL's 32-bit floats",
+            detail::source_name(path));
+      }
+    }
   }
   return detail::write_file(path, format_mesh(mesh, *format));
 }

@@ -239,7 +239,10 @@ class DataReader {
   Status token(const char* what) {
     skip_space();
     if (pos_ == bytes_.size()) {
-      return fail(ErrorKind::parse, std::string("the file ends while reading ") + what);
+      // Name the last line that has data, not the empty one after its newline.
+      const std::int64_t last = line_ - (!bytes_.empty() && bytes_.back() == '\n' ? 1 : 0);
+      return make_error(ErrorKind::parse, std::string("PLY: the file ends while reading ") + what,
+                        source_, last);
     }
     token_begin_ = bytes_.data() + pos_;
     while (pos_ < bytes_.size() && !is_space(bytes_[pos_]))
@@ -381,7 +384,17 @@ Result<MeshFile> parse_ply(std::string_view bytes, const std::string& source) {
                           source);
       }
     }
-    if (e.name == "face") has_faces = true;
+    if (e.name == "face") {
+      has_faces = true;
+      const bool has_list =
+          std::any_of(e.properties.begin(), e.properties.end(), [](const Property& p) {
+            return p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index");
+          });
+      if (!has_list) {
+        return make_error(ErrorKind::unsupported,
+                          "PLY: the face element has no 'vertex_indices' list", source);
+      }
+    }
   }
   if (vertex_count < 0) return make_error(ErrorKind::parse, "PLY: no vertex element", source);
   if (vertex_count > std::numeric_limits<std::int32_t>::max()) {
@@ -400,9 +413,9 @@ Result<MeshFile> parse_ply(std::string_view bytes, const std::string& source) {
     const bool is_face = e.name == "face";
     if (is_vertex) vertices.reserve(static_cast<std::size_t>(std::min(e.count, cap)));
     if (is_face) triangles.reserve(static_cast<std::size_t>(std::min(e.count, cap)));
-    bool face_list_seen = false;
     for (std::int64_t r = 0; r < e.count; ++r) {
       Vec3 v;
+      bool face_list_seen = false;  // the first vertex_indices list of the face is the one
       for (const Property& p : e.properties) {
         if (p.is_list) {
           std::int64_t n = 0;
@@ -447,10 +460,6 @@ Result<MeshFile> parse_ply(std::string_view bytes, const std::string& source) {
         }
       }
       if (is_vertex) vertices.push_back(v);
-      if (is_face && !face_list_seen) {
-        return make_error(ErrorKind::unsupported,
-                          "PLY: the face element has no 'vertex_indices' list", source);
-      }
     }
   }
   if (auto s = in.at_end(); !s) return s.error();

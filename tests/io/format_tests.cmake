@@ -4,3 +4,7 @@ list(APPEND IO_TESTS
   ${CMAKE_CURRENT_LIST_DIR}/wkt_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/geojson_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/region_io_test.cpp)
+list(APPEND IO_TESTS
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_io_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_io_text_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_io_binary_test.cpp)

@@ -81,10 +81,11 @@ struct MeshFile {
 /// The bytes of `mesh` in `format`. OBJ, OFF and ASCII PLY write every coordinate as the
 /// shortest decimal that reads back as the same double, so reading gives the same mesh bit for
 /// bit (as do binary PLY, which stores doubles). STL stores 32-bit floats: coordinates are
-/// rounded to float (exact only for doubles that are floats), facet normals are written as zero
-/// (readers recompute them), and reading welds the corners back into shared vertices, so
-/// unreferenced or bitwise-duplicate vertices do not survive. ASCII STL is written with the
-/// shortest decimals of the floats.
+/// rounded to float (exact only for doubles that are floats; beyond float range they become
+/// infinities, which `write_mesh` refuses and every reader rejects), facet normals are unit
+/// normals rounded to float, and reading welds the corners back into shared vertices, so
+/// unreferenced or duplicate-position vertices do not survive. ASCII STL is written with the
+/// doubles in full (lossless but for the welding) and zero normals.
 [[nodiscard]] std::string format_mesh(const Mesh& mesh, MeshFormat format);
 
 /// How `write_mesh` writes.
@@ -94,8 +95,8 @@ struct MeshWriteOptions {
 };
 
 /// Writes `mesh` to `path` (replaced). Errors: ErrorKind::unsupported for an extension that
-/// names no format (when `options.format` is unset), ErrorKind::io when the file cannot be
-/// written.
+/// names no format (when `options.format` is unset), ErrorKind::invalid_value for binary STL of
+/// a coordinate beyond float range, ErrorKind::io when the file cannot be written.
 [[nodiscard]] Status write_mesh(const Mesh& mesh, const std::filesystem::path& path,
                                 const MeshWriteOptions& options = {});
 
