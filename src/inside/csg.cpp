@@ -178,16 +178,16 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
   std::vector<Pending> queue{{&tree, ""}};
   solid.nodes_.push_back({});
   for (std::size_t at = 0; at < queue.size(); ++at) {
+    // Copies: queue and nodes_ grow below.
     const Csg& t = *queue[at].tree;
-    const std::string& path = queue[at].path;
-    Node& node = solid.nodes_[at];
-    node.op = t.op();
+    const std::string path = queue[at].path;
+    solid.nodes_[at].op = t.op();
     if (t.op() == CsgOp::leaf) {
       const std::string problem = check_leaf(t.solid());
       if (!problem.empty()) {
         return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + problem};
       }
-      node.first = static_cast<std::int32_t>(solid.leaves_.size());
+      solid.nodes_[at].first = static_cast<std::int32_t>(solid.leaves_.size());
       solid.leaves_.push_back(t.solid());
       continue;
     }
@@ -196,8 +196,8 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
       return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + op_name(t.op()) +
                                                  " has " + std::to_string(arity) + " operands"};
     }
-    node.first = static_cast<std::int32_t>(solid.children_.size());
-    node.count = static_cast<std::int32_t>(arity);
+    solid.nodes_[at].first = static_cast<std::int32_t>(solid.children_.size());
+    solid.nodes_[at].count = static_cast<std::int32_t>(arity);
     for (std::size_t k = 0; k < arity; ++k) {
       solid.children_.push_back(static_cast<std::int32_t>(queue.size()));
       queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") + op_name(t.op()) + "[" +

@@ -1,6 +1,8 @@
 #include "csg_local.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace contain::inside::detail {
 namespace {
@@ -44,11 +46,19 @@ class Sampler {
       : constraints_(constraints),
         solid_contains_(solid_contains),
         positive_(constraints.size(), 0) {
+    // Several leaves often share a surface at p (touching boxes, a box face on a half-space):
+    // one representative per surface keeps the arrangement small.
     for (std::size_t i = 0; i < constraints.size(); ++i) {
       if (is_zero(constraints[i].normal)) {
         positive_[i] = constraints[i].fixed_value ? 1 : 0;
-      } else {
+        continue;
+      }
+      const auto same = std::find_if(geometric_.begin(), geometric_.end(),
+                                     [&](std::size_t r) { return same_surface(i, r); });
+      if (same == geometric_.end()) {
         geometric_.push_back(i);
+      } else {
+        aliases_.emplace_back(i, *same);
       }
     }
   }
@@ -68,12 +78,26 @@ class Sampler {
  private:
   const ExactVec3& n(std::size_t i) const { return constraints_[i].normal; }
 
+  static bool same_direction(const ExactVec3& a, const ExactVec3& b) {
+    return is_zero(cross(a, b)) && dot(a, b).sign() == Sign::positive;
+  }
+
+  // Two planes through p with the same inward direction, or two balls with the same centre.
+  bool same_surface(std::size_t i, std::size_t j) const {
+    if (constraints_[i].curved != constraints_[j].curved) return false;
+    if (constraints_[i].curved) return is_zero(n(i) - n(j));
+    return same_direction(n(i), n(j));
+  }
+
   std::vector<ExactVec3> rays() const {
     std::vector<ExactVec3> out;
     for (std::size_t x = 0; x < geometric_.size(); ++x) {
       for (std::size_t y = x + 1; y < geometric_.size(); ++y) {
         ExactVec3 v = cross(n(geometric_[x]), n(geometric_[y]));
         if (is_zero(v)) continue;
+        const bool seen = std::any_of(out.begin(), out.end(),
+                                      [&](const ExactVec3& w) { return same_direction(v, w); });
+        if (seen) continue;  // both v and -v are there already
         out.push_back(-v);
         out.push_back(std::move(v));
       }
@@ -172,6 +196,8 @@ class Sampler {
   }
 
   void record() {
+    for (const auto& [alias, representative] : aliases_)
+      positive_[alias] = positive_[representative];
     if (solid_contains_(positive_)) {
       seen_in_ = true;
     } else {
@@ -187,7 +213,8 @@ class Sampler {
   std::span<const LocalConstraint> constraints_;
   const std::function<bool(std::span<const char>)>& solid_contains_;
   std::vector<char> positive_;
-  std::vector<std::size_t> geometric_;
+  std::vector<std::size_t> geometric_;                        // one constraint per distinct surface
+  std::vector<std::pair<std::size_t, std::size_t>> aliases_;  // (constraint, its representative)
   ExactVec3 current_v_;
   bool seen_in_ = false;
   bool seen_out_ = false;
