@@ -1,7 +1,7 @@
 // Private: the minimal enclosing ball in floating point, for Vec2 (circles) and Vec3 (spheres).
 //
 // Outline
-//   1. Core set: the extreme points of the input along a few fixed directions.
+//   1. Core set: the extreme points along a few fixed directions of a strided sample.
 //   2. Welzl's move-to-front algorithm on the core set (MtfSolver) gives its minimal ball.
 //   3. One pass over all points collects those outside that ball; if there are none, done;
 //      else they join the core set (shuffled with a fixed seed) and step 2 runs again.
@@ -123,29 +123,33 @@ class MtfSolver {
   double threshold_ = 0.0;
 };
 
-[[nodiscard]] inline std::span<const Vec2> extreme_directions(Vec2) {
-  static constexpr std::array<Vec2, 4> kDirections{{{1, 0}, {0, 1}, {1, 1}, {1, -1}}};
-  return kDirections;
-}
-[[nodiscard]] inline std::span<const Vec3> extreme_directions(Vec3) {
-  static constexpr std::array<Vec3, 7> kDirections{
-      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}}};
-  return kDirections;
-}
+// Directions whose extreme points seed the core set: the axes, and for 3D the cube diagonals
+// too (the minimal ball of a box-like set is spanned by its corners).
+template <class P>
+inline constexpr auto kExtremeDirections = std::array<P, 4>{{{1, 0}, {0, 1}, {1, 1}, {1, -1}}};
+template <>
+inline constexpr auto kExtremeDirections<Vec3> = std::array<Vec3, 7>{
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}}};
 
-/// The points of minimum and maximum dot product with each direction, without repeats.
+// Points sampled for the extremes: the seed only has to be good, not exact (the passes over all
+// points repair it), and a strided sample of this size is nearly as good as all points.
+inline constexpr std::size_t kExtremeSample = 1 << 15;
+
+/// The points of minimum and maximum dot product with each direction, without repeats, over an
+/// evenly strided sample of at most about kExtremeSample points.
 template <class P>
 [[nodiscard]] std::vector<P> extreme_points(std::span<const P> points) {
-  constexpr std::size_t kMaxDirections = 7;
-  const std::span<const P> directions = extreme_directions(P{});
-  std::array<double, kMaxDirections> low{};
-  std::array<double, kMaxDirections> high{};
-  std::array<std::size_t, kMaxDirections> low_at{};
-  std::array<std::size_t, kMaxDirections> high_at{};
+  constexpr auto& directions = kExtremeDirections<P>;
+  constexpr std::size_t kCount = directions.size();
+  std::array<double, kCount> low{};
+  std::array<double, kCount> high{};
+  std::array<std::size_t, kCount> low_at{};
+  std::array<std::size_t, kCount> high_at{};
   low.fill(std::numeric_limits<double>::infinity());
   high.fill(-std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (std::size_t d = 0; d < directions.size(); ++d) {
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / kExtremeSample);
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    for (std::size_t d = 0; d < kCount; ++d) {
       const double s = dot(points[i], directions[d]);
       if (s < low[d]) {
         low[d] = s;
@@ -158,7 +162,7 @@ template <class P>
     }
   }
   std::vector<std::size_t> chosen;
-  for (std::size_t d = 0; d < directions.size(); ++d) {
+  for (std::size_t d = 0; d < kCount; ++d) {
     chosen.push_back(low_at[d]);
     chosen.push_back(high_at[d]);
   }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "bound/ball_checks.h"
 #include "bound/generators.h"
+#include "contain/predicates/compare_distance.h"
 
 namespace contain::bound {
 namespace {
@@ -251,6 +253,24 @@ TEST(BoundingSphere, SetsFarFromTheOriginStayAccurate) {
   for (Vec3& p : points)
     p = p + Vec3{100.0, -60.0, 30.0};
   check_both(points, "offset ball");
+}
+
+TEST(BoundingSphere, AMillionSortedPointsNeedNoDeepRecursion) {
+  // Sorted input is the worst order for Welzl without shuffling; recursion depth stays <= 4.
+  std::mt19937_64 rng(10);
+  std::vector<Vec3> points = test::uniform_cube(1'000'000, rng);
+  for (int i = 0; i < 8; ++i) {
+    points.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+  }
+  std::sort(points.begin(), points.end(), [](Vec3 a, Vec3 b) { return a.x < b.x; });
+  auto s = bounding_sphere(points);
+  ASSERT_TRUE(s.ok());
+  EXPECT_NEAR(s->radius, std::sqrt(3.0), kTight);
+  std::size_t outside = 0;
+  for (const Vec3& p : points) {
+    outside += predicates::side_of_sphere(*s, p) == Sign::negative ? 1 : 0;
+  }
+  EXPECT_EQ(outside, 0u);
 }
 
 TEST(BoundingSphere, IsDeterministic) {
