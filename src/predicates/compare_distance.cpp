@@ -60,9 +60,9 @@ Sign side_of_sphere(const Sphere& s, Vec3 p) {
   const double errbound = kBound * (r2 + d2) + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  if (detail::in_expansion_range<2>(
-          std::array{s.radius, s.center.x, s.center.y, s.center.z, p.x, p.y, p.z})) {
-    return detail::side_of_sphere_expansion(s, p);
+  std::array v{s.radius, s.center.x, s.center.y, s.center.z, p.x, p.y, p.z};
+  if (detail::scale_into_expansion_range<2>(v)) {
+    return detail::side_of_sphere_expansion({{v[1], v[2], v[3]}, v[0]}, {v[4], v[5], v[6]});
   }
   return detail::side_of_sphere_big(s, p);
 }
@@ -77,8 +77,9 @@ Sign side_of_circle(const Circle& s, Vec2 p) {
   const double errbound = kBound * (r2 + d2) + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  if (detail::in_expansion_range<2>(std::array{s.radius, s.center.x, s.center.y, p.x, p.y})) {
-    return detail::side_of_circle_expansion(s, p);
+  std::array v{s.radius, s.center.x, s.center.y, p.x, p.y};
+  if (detail::scale_into_expansion_range<2>(v)) {
+    return detail::side_of_circle_expansion({{v[1], v[2]}, v[0]}, {v[3], v[4]});
   }
   return detail::side_of_circle_big(s, p);
 }

@@ -332,4 +332,34 @@ template <int Degree, std::size_t K>
   return ok;
 }
 
+/// For a predicate whose polynomial is homogeneous in all its inputs (orient2d, orient3d,
+/// cross_dot, side_of_sphere, side_of_circle): multiplies every value by one power of two 2^k,
+/// k >= 0 or < 0, so that all lie in the degree's expansion range, and returns true; returns
+/// false (values untouched) when their exponents spread wider than the range. The scaling is
+/// exact (the results are normal doubles, so no bit is lost even from a subnormal input) and
+/// multiplies the polynomial by the positive 2^(k degree), so the sign is unchanged.
+template <int Degree, std::size_t K>
+[[nodiscard]] inline bool scale_into_expansion_range(std::array<double, K>& values) {
+  constexpr int lo = ExpansionRange<Degree>::lo;
+  constexpr int hi = ExpansionRange<Degree>::hi;
+  int e_min = hi;
+  int e_max = lo;
+  bool any = false;
+  for (const double x : values) {
+    if (x == 0.0) continue;
+    const int e = std::ilogb(x);  // floor(log2 |x|), exact for subnormals too
+    e_min = e < e_min ? e : e_min;
+    e_max = e > e_max ? e : e_max;
+    any = true;
+  }
+  if (!any || (e_min >= lo && e_max < hi)) return true;
+  if (e_max - e_min >= hi - lo) return false;
+  // Moves e_min to lo plus half the free room: e_min + k >= lo and e_max + k <= hi - 1.
+  const int free_room = (hi - 1 - lo) - (e_max - e_min);
+  const int k = lo - e_min + free_room / 2;
+  for (double& x : values)
+    x = std::ldexp(x, k);
+  return true;
+}
+
 }  // namespace contain::predicates::detail

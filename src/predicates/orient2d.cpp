@@ -31,8 +31,9 @@ Sign orient2d_big(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
-  if (in_expansion_range<2>(std::array{a.x, a.y, b.x, b.y, c.x, c.y})) {
-    return orient2d_expansion(a, b, c);
+  std::array v{a.x, a.y, b.x, b.y, c.x, c.y};
+  if (scale_into_expansion_range<2>(v)) {
+    return orient2d_expansion({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]});
   }
   return orient2d_big(a, b, c);
 }

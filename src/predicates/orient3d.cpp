@@ -37,9 +37,10 @@ Sign orient3d_big(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 }
 
 Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  if (in_expansion_range<3>(
-          std::array{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) {
-    return orient3d_expansion(a, b, c, d);
+  std::array v{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  if (scale_into_expansion_range<3>(v)) {
+    return orient3d_expansion({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]},
+                              {v[9], v[10], v[11]});
   }
   return orient3d_big(a, b, c, d);
 }

@@ -57,6 +57,9 @@ class CaseRng {
     return x;
   }
 
+  /// As nudge, but 0 stays 0 (a nudged zero is subnormal, outside the expansion stage's range).
+  double nudge_nonzero(double x, int max_ulps) { return x == 0.0 ? x : nudge(x, max_ulps); }
+
   /// A double of any magnitude: random sign, exponent uniform over the whole range (subnormals
   /// included), random mantissa; one time in eight a special value (0, -0.0, the extremes).
   double any_magnitude() {
