@@ -1,6 +1,7 @@
 // STL: a list of independent triangles (3D Systems' StereoLithography Interface Specification,
 // 1989), ASCII or binary. The corners are welded into shared vertices so that the mesh is
 // indexed and its topology (closedness, neighbours) can be seen.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstring>
@@ -241,7 +242,13 @@ Result<MeshFile> parse_stl(std::string_view bytes, const std::string& source) {
       bytes.size() == 84 + 50 * std::uint64_t{load_u32_le(bytes.data() + 80)}) {
     return parse_binary_stl(bytes, source);
   }
-  if (starts_with_solid(bytes)) return AsciiStl(bytes, source).read();
+  // A truncated binary file whose header says "solid" shows itself by its non-text bytes.
+  const std::string_view head = bytes.substr(0, 1024);
+  const bool text = std::none_of(head.begin(), head.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u >= 0x80 || (u < 0x20 && !is_space(c));
+  });
+  if (text && starts_with_solid(bytes)) return AsciiStl(bytes, source).read();
   if (bytes.size() < 84) {
     return make_error(ErrorKind::parse,
                       "binary STL: truncated: " + std::to_string(bytes.size()) +

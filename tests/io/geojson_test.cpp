@@ -75,6 +75,24 @@ TEST(GeoJson, RejectsMalformedInputNamingTheKindAndLine) {
   }
 }
 
+TEST(GeoJson, SurvivesRandomCorruption) {
+  const std::string text = std::string(R"({"type":"FeatureCollection","features":[{"type":"Feature",
+    "geometry":{"type":"MultiPolygon","coordinates":[)") +
+                           kSquareJson + "]}}]}";
+  std::mt19937_64 rng(4);
+  const std::string alphabet = "[]{},:\"-.e0123456789 \ntypePolygon";
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::string copy = text;
+    for (int k = 0; k < 2; ++k)
+      copy[rng() % copy.size()] = alphabet[rng() % alphabet.size()];
+    auto r = parse_geojson(copy, "corrupt.geojson");
+    if (!r.ok()) {
+      EXPECT_FALSE(r.error().message.empty());
+      EXPECT_GE(r.error().line, 1) << r.error().what();
+    }
+  }
+}
+
 TEST(GeoJson, WritesAndReadsBackBitForBit) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -75,6 +75,15 @@ TEST(StlReader, RejectsATruncatedBinaryFileWithTheByteOffset) {
   EXPECT_EQ(tiny.error().kind, ErrorKind::parse);
 }
 
+TEST(StlReader, ATruncatedBinaryFileWhoseHeaderSaysSolidIsStillReportedAsBinary) {
+  std::string bytes = format_mesh(kTetrahedron, MeshFormat::stl_binary);
+  std::memcpy(bytes.data(), "solid but binary", 16);
+  auto r = stl(bytes.substr(0, bytes.size() - 1));
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("binary STL"), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find("truncated"), std::string::npos) << r.error().message;
+}
+
 TEST(StlReader, RejectsNaNInABinaryFileWithTheByteOffset) {
   std::string bytes = format_mesh(kTetrahedron, MeshFormat::stl_binary);
   const float nan = std::numeric_limits<float>::quiet_NaN();

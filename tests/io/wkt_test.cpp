@@ -110,6 +110,23 @@ TEST(Wkt, NeverCrashesOnAnyPrefixOfValidText) {
   EXPECT_TRUE(parse_wkt(text, "full.wkt").ok());
 }
 
+TEST(Wkt, SurvivesRandomCorruption) {
+  const std::string text =
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)), ((5 5, 6 5, 5 6)))";
+  std::mt19937_64 rng(3);
+  const std::string alphabet = "(), .-+eE0123456789NnIiZzMEMPTY\n\t";
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::string copy = text;
+    for (int k = 0; k < 2; ++k)
+      copy[rng() % copy.size()] = alphabet[rng() % alphabet.size()];
+    auto r = parse_wkt(copy, "corrupt.wkt");
+    if (!r.ok()) {
+      EXPECT_FALSE(r.error().message.empty());
+      EXPECT_GE(r.error().line, 1);
+    }
+  }
+}
+
 TEST(Wkt, WritesClosedRingsAndReadsBackBitForBit) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1e3, 1e3);
