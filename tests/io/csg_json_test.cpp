@@ -1,0 +1,153 @@
+#include "contain/io/csg_json.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+namespace contain::io {
+namespace {
+
+using inside::CsgSolid;
+
+Result<CsgSolid> solid_of(std::string_view text) {
+  auto tree = parse_csg_json(text);
+  if (!tree) return tree.error();
+  return CsgSolid::prepare(*tree);
+}
+
+Location at(std::string_view text, Vec3 p) {
+  auto solid = solid_of(text);
+  EXPECT_TRUE(solid.ok()) << solid.error().what();
+  return solid ? solid->locate(p) : Location::outside;
+}
+
+std::string error_of(std::string_view text) {
+  auto tree = parse_csg_json(text, {.source = "scene.json"});
+  EXPECT_FALSE(tree.ok());
+  return tree ? "" : tree.error().what();
+}
+
+TEST(CsgJson, ReadsEveryLeafAndOperationOfTheContract) {
+  const char* text = R"({"union": [
+      {"sphere": {"center": [0, 0, 0], "radius": 5}},
+      {"difference": [{"box": {"min": [10, 0, 0], "max": [12, 2, 2]}},
+                      {"halfspace": [1, 0, 0, -11]}]},
+      {"intersection": [{"convex": [[1, 0, 0, 20], [-1, 0, 0, -19], [0, 1, 0, 0], [0, -1, 0, 1],
+                                    [0, 0, 1, 0], [0, 0, -1, 1]]},
+                        {"complement": {"implicit": "0.01 - (x+19.5)^2 - y^2 - z^2"}}]}]})";
+  EXPECT_EQ(at(text, {3, 4, 0}), Location::boundary);
+  EXPECT_EQ(at(text, {0, 0, 0}), Location::inside);
+  EXPECT_EQ(at(text, {10.5, 1, 1}), Location::inside);
+  EXPECT_EQ(at(text, {11.5, 1, 1}), Location::outside);  // x >= 11 removed
+  EXPECT_EQ(at(text, {-19.2, 0.5, 0.5}), Location::inside);
+  EXPECT_EQ(at(text, {-19.5, 0.5, 0.5}), Location::inside);  // outside the removed tiny ball
+  EXPECT_EQ(at(text, {-19.5, 0.05, 0.05}), Location::outside);
+}
+
+TEST(CsgJson, ImplicitExpressionUsesCaretForPowers) {
+  const char* ball = R"({"implicit": "1 - x^2 - y^2 - z^2"})";
+  EXPECT_EQ(at(ball, {0, 0, 0}), Location::inside);
+  EXPECT_EQ(at(ball, {0, 0, 2}), Location::outside);
+  EXPECT_EQ(at(ball, {0, 0, 1}), Location::boundary);
+}
+
+TEST(CsgJson, ImplicitLeavesGiveTheSameAnswersOnAnyNumberOfThreads) {
+  auto solid = solid_of(R"({"intersection": [{"implicit": "4 - x^2 - y^2 - z^2"},
+                                              {"implicit": "sin(3*x) + y"}]})");
+  ASSERT_TRUE(solid.ok());
+  std::vector<Vec3> points;
+  for (int i = 0; i < 20000; ++i)
+    points.push_back({(i % 41) / 10.0 - 2, (i % 37) / 9.0 - 2, (i % 13) / 6.0 - 1});
+  std::vector<Location> one(points.size()), four(points.size());
+  solid->locate(points, one, {.threads = 1});
+  solid->locate(points, four, {.threads = 4});
+  EXPECT_EQ(one, four);
+}
+
+TEST(CsgJson, ErrorsNameTheJsonPathOfTheOffendingValue) {
+  EXPECT_EQ(error_of(R"({"union": [{"box": {"min": [0,0,0], "max": [1,1,1]}},
+                                   {"sphere": {"center": [0,0,0], "radius": "big"}}]})"),
+            "scene.json: union[1].sphere.radius: expected a number, got a string");
+  EXPECT_EQ(error_of(R"({"sphere": {"center": [0,0], "radius": 1}})"),
+            "scene.json: sphere.center: expected 3 numbers, got 2");
+  EXPECT_EQ(error_of(R"({"sphere": {"center": [0,0,0], "radius": -1}})"),
+            "scene.json: sphere.radius: expected a radius >= 0");
+  EXPECT_EQ(error_of(R"({"box": {"min": [0,2,0], "max": [1,1,1]}})"),
+            "scene.json: box: min exceeds max");
+  EXPECT_EQ(error_of(R"({"difference": [{"halfspace": [0,0,0,1]}, {"halfspace": [1,0,0,0]}]})"),
+            "scene.json: difference[0].halfspace: the normal (a, b, c) is zero");
+  EXPECT_EQ(error_of(R"({"convex": [[1,0,0,0], [0,1,0]]})"),
+            "scene.json: convex[1]: expected 4 numbers, got 3");
+  EXPECT_EQ(error_of(R"({"difference": [{"halfspace": [1,0,0,0]}]})"),
+            "scene.json: difference: expected an array of 2 operands, got 1");
+  EXPECT_EQ(error_of(R"({"union": []})"), "scene.json: union: expected at least one operand");
+}
+
+TEST(CsgJson, RejectsUnknownKeysAndObjectsWithSeveralKeys) {
+  EXPECT_NE(
+      error_of(R"({"spere": {"center": [0,0,0], "radius": 1}})").find("unknown key \"spere\""),
+      std::string::npos);
+  EXPECT_EQ(error_of(R"({"sphere": {"center": [0,0,0], "radius": 1, "colour": 3}})"),
+            "scene.json: sphere: unknown key \"colour\"");
+  EXPECT_EQ(error_of(R"({"complement": {"box": {"min": [0,0,0]}}})"),
+            "scene.json: complement.box: missing key \"max\"");
+  EXPECT_EQ(error_of(R"({"sphere": {"center": [0,0,0], "radius": 1}, "box": {}})"),
+            "scene.json: expected an object with exactly one key, got 2");
+}
+
+TEST(CsgJson, RejectsNumbersOutsideTheDoubleRange) {
+  auto tree = parse_csg_json(R"({"halfspace": [1, 0, 0, 1e999]})", {.source = "scene.json"});
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::invalid_value);
+  EXPECT_EQ(tree.error().what(), "scene.json: number overflow parsing '1e999'");
+}
+
+TEST(CsgJson, MalformedJsonReportsTheLine) {
+  auto tree = parse_csg_json(
+      "{\"union\": [\n  {\"sphere\": {\"center\": [0,0,0], \"radius\": 1}}\n  oops\n]}",
+      {.source = "bad.json"});
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::parse);
+  EXPECT_EQ(tree.error().source, "bad.json");
+  EXPECT_EQ(tree.error().line, 3);
+  EXPECT_NE(tree.error().message.find("syntax error"), std::string::npos);
+}
+
+TEST(CsgJson, MuparserSyntaxErrorsCarryItsMessage) {
+  auto tree = parse_csg_json(R"({"union": [{"implicit": "1 - x^2 -"}]})", {.source = "s.json"});
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::parse);
+  EXPECT_EQ(tree.error().message.rfind("union[0].implicit: ", 0), 0u) << tree.error().message;
+  auto unknown = parse_csg_json(R"({"implicit": "1 - w"})");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error().message.find("\"1 - w\""), std::string::npos)
+      << unknown.error().message;
+}
+
+TEST(CsgJson, MeshLeavesAreUnsupportedAndNameTheFileRelativeToTheJson) {
+  const auto dir = std::filesystem::temp_directory_path() / "contain_csg_json_test";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "scene.json";
+  {
+    std::ofstream out(file);
+    out << R"({"difference": [{"box": {"min": [0,0,0], "max": [1,1,1]}}, {"mesh": "part.obj"}]})";
+  }
+  auto tree = read_csg_json(file);
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::unsupported);
+  EXPECT_EQ(tree.error().source, file.string());
+  EXPECT_NE(tree.error().message.find((dir / "part.obj").string()), std::string::npos);
+  EXPECT_EQ(tree.error().message.rfind("difference[1].mesh: ", 0), 0u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CsgJson, MissingFileIsAnIoError) {
+  auto tree = read_csg_json("/nonexistent/contain/scene.json");
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::io);
+}
+
+}  // namespace
+}  // namespace contain::io
