@@ -24,6 +24,15 @@ inline constexpr int dimension = static_cast<int>(sizeof(P) / sizeof(double));
   return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 }
 
+/// p * 2^e, coordinate by coordinate (exact unless the result leaves the normal range; a factor
+/// 2^e itself could overflow where the products do not).
+[[nodiscard]] inline Vec2 scaled(Vec2 p, int e) {
+  return {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+}
+[[nodiscard]] inline Vec3 scaled(Vec3 p, int e) {
+  return {std::ldexp(p.x, e), std::ldexp(p.y, e), std::ldexp(p.z, e)};
+}
+
 /// A ball in floating point, before the exact containment pass.
 template <class P>
 struct FpBall {

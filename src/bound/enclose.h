@@ -29,9 +29,13 @@ template <class P>
 [[nodiscard]] double distance_estimate(P c, P p) {
   const double m = std::max(max_abs(c), max_abs(p));
   if (m == 0.0) return 0.0;
-  const int e = std::ilogb(m);
-  if (e > -kScaleLimit && e < kScaleLimit) return length(p - c);
-  return std::ldexp(length(std::ldexp(1.0, -e) * p - std::ldexp(1.0, -e) * c), e);
+  // Bring the coordinates below 2^kScaleLimit so that the difference cannot overflow.
+  const int shift = std::ilogb(m) >= kScaleLimit ? -std::ilogb(m) : 0;
+  const P d = scaled(p, shift) - scaled(c, shift);
+  const double dm = max_abs(d);
+  if (dm == 0.0) return 0.0;
+  const int k = std::ilogb(dm);
+  return std::ldexp(length(scaled(d, -k)), k - shift);
 }
 
 /// The smallest double radius >= `radius` for which `contains(radius)` holds; `contains` must be
@@ -80,24 +84,22 @@ template <class P, class Side>
     largest = std::max(largest, max_abs(points[i]));
   }
   int exponent = 0;
-  std::vector<P> scaled;
+  std::vector<P> copy;
   std::span<const P> search = points;
   if (largest != 0.0) {
     const int e = std::ilogb(largest);
     if (e <= -kScaleLimit || e >= kScaleLimit) {
       exponent = e;
-      const double factor = std::ldexp(1.0, -e);
-      scaled.reserve(points.size());
+      copy.reserve(points.size());
       for (const P& p : points)
-        scaled.push_back(factor * p);
-      search = scaled;
+        copy.push_back(scaled(p, -e));
+      search = copy;
     }
   }
   FpBall<P> ball = method == SphereMethod::ritter ? ritter_ball(search) : min_ball(search);
   if (exponent != 0) {
-    const double factor = std::ldexp(1.0, exponent);
-    ball.center = factor * ball.center;
-    ball.radius = factor * ball.radius;
+    ball.center = scaled(ball.center, exponent);
+    ball.radius = std::ldexp(ball.radius, exponent);
   }
   if (!is_finite(ball.center) || !std::isfinite(ball.radius)) {
     return Error{ErrorKind::unsupported, "the bounding radius exceeds the largest double"};

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bound/ball_checks.h"
+#include "bound/brute_force_ball.h"
 #include "bound/generators.h"
 #include "contain/predicates/compare_distance.h"
 
@@ -235,6 +236,32 @@ TEST(BoundingSphere, HugeAndTinyCoordinatesTogetherAreContained) {
   const std::vector<Vec3> points{
       {big, 0, 0}, {-big, 1e-300, 0}, {0, 0.5 * big, 4e-320}, {5e-324, 0, 0}, {0, 0, 0.7 * big}};
   check_both(points, "mixed magnitudes");
+}
+
+TEST(BoundingSphere, SubnormalCoordinatesAreEnclosedWithinAFewSpacings) {
+  // Subnormal spacing is absolute (denorm_min), so the center cannot be placed to a relative
+  // accuracy: containment is exact, the radius within a few spacings of the true minimum.
+  const double d = std::numeric_limits<double>::denorm_min();
+  const std::vector<std::vector<Vec3>> sets{
+      {{0, 0, 0}, {d, 0, 0}}, {{0, 0, 0}, {5 * d, 0, 0}, {0, 1e-320, 0}, {0, 0, -3e-321}}};
+  for (const std::vector<Vec3>& points : sets) {
+    // Squares of subnormals underflow any double: compare in rationals.
+    const mpq_class minimum2 =
+        test::brute_force_min_ball(std::span<const Vec3>(points)).squared_radius;
+    for (SphereMethod method : {SphereMethod::exact, SphereMethod::ritter}) {
+      auto s = bounding_sphere(points, {.method = method});
+      ASSERT_TRUE(s.ok());
+      EXPECT_EQ(count_outside(*s, points), 0u);
+      if (method == SphereMethod::exact) {
+        const double below = s->radius - 4 * d;  // exact: subnormals share one spacing
+        EXPECT_TRUE(below <= 0 || test::exact_square(below) <= minimum2);
+      }
+    }
+  }
+  auto s = bounding_sphere(std::vector<Vec3>{{0, 0, 0}, {2 * d, 0, 0}});
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(s->center, (Vec3{d, 0, 0}));
+  EXPECT_EQ(s->radius, d);
 }
 
 TEST(BoundingSphere, RadiusBeyondTheLargestDoubleIsUnsupported) {

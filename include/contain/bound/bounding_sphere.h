@@ -46,7 +46,8 @@ struct SphereOptions {
 /// that, then one growing pass), then the exact pass. O(n), radius >= the minimal one.
 ///
 /// Coordinates of any finite magnitude work: the search runs on copies scaled by a power of two
-/// when the largest coordinate lies outside [2^-300, 2^300]. One point gives radius 0.
+/// when the largest coordinate lies outside [2^-300, 2^300]; where the center or radius is
+/// subnormal, their spacing (4.9e-324) limits the accuracy instead. One point gives radius 0.
 ///
 /// Errors: `ErrorKind::degenerate` for no points; `ErrorKind::invalid_value` for a NaN or infinite
 /// coordinate (the message names the point's 0-based index); `ErrorKind::unsupported` when the
