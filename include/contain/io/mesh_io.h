@@ -33,7 +33,8 @@ struct MeshInfo {
   MeshFormat format = MeshFormat::off;
   /// Faces read: polygons of any size, each fan-triangulated into size - 2 triangles.
   std::int64_t faces = 0;
-  /// STL only: vertices merged because their three coordinates were bitwise equal.
+  /// STL only: vertices merged because their three coordinates were equal (as doubles: +0 and -0
+  /// alike; no tolerance).
   std::int64_t welded_vertices = 0;
 };
 
@@ -56,12 +57,12 @@ struct MeshFile {
 /// on the header line or the next, `#` comments, extra numbers on vertex lines such as colours
 /// and normals, face colours after the indices). STL: binary when the size is 84 + 50 n for the
 /// count n of its header, otherwise ASCII if it starts with `solid`; vertices are welded when
-/// their coordinates are bitwise equal (binary STL's floats are widened exactly to double).
-/// PLY: `format ascii|binary_little_endian|binary_big_endian 1.0`; the `vertex` element's x, y, z
-/// of any numeric type; the `face` element's `vertex_indices` (or `vertex_index`) list of any
-/// integer type; other elements and properties are skipped.
-/// Polygonal faces are fan-triangulated (v0, vi, vi+1) in the order written, so a convex face
-/// keeps its orientation; a non-convex face's fan may cover the wrong area.
+/// their coordinates compare equal exactly (+0 = -0, no tolerance) (binary STL's floats are widened
+/// exactly to double). PLY: `format ascii|binary_little_endian|binary_big_endian 1.0`; the `vertex`
+/// element's x, y, z of any numeric type; the `face` element's `vertex_indices` (or `vertex_index`)
+/// list of any integer type; other elements and properties are skipped. Polygonal faces are
+/// fan-triangulated (v0, vi, vi+1) in the order written, so a convex face keeps its orientation; a
+/// non-convex face's fan may cover the wrong area.
 ///
 /// Errors (never an exception, never a crash, for any bytes): ErrorKind::io (missing file, a
 /// directory); ErrorKind::unsupported (unknown extension, a PLY without x/y/z or faces of a
