@@ -13,36 +13,42 @@ namespace detail {
 
 namespace {
 
-template <class Num>
-Sign side_of_sphere_in(const Sphere& s, Vec3 p) {
-  const Num r(s.radius);
-  const auto dx = Num(p.x) - Num(s.center.x);
-  const auto dy = Num(p.y) - Num(s.center.y);
-  const auto dz = Num(p.z) - Num(s.center.z);
-  return (r * r - (dx * dx + dy * dy + dz * dz)).sign();
-}
-
-template <class Num>
-Sign side_of_circle_in(const Circle& s, Vec2 p) {
-  const Num r(s.radius);
-  const auto dx = Num(p.x) - Num(s.center.x);
-  const auto dy = Num(p.y) - Num(s.center.y);
-  return (r * r - (dx * dx + dy * dy)).sign();
+// r^2 - |d|^2 from the radius and the differences d = p - center.
+template <class R, class D, std::size_t K>
+Sign side_of_ball_of(const R& r, const std::array<D, K>& d) {
+  if constexpr (K == 3) {
+    return (r * r - (d[0] * d[0] + d[1] * d[1] + d[2] * d[2])).sign();
+  } else {
+    return (r * r - (d[0] * d[0] + d[1] * d[1])).sign();
+  }
 }
 
 }  // namespace
 
-Sign side_of_sphere_expansion(const Sphere& sphere, Vec3 p) {
-  return side_of_sphere_in<Expansion<1>>(sphere, p);
+Sign side_of_sphere_expansion(const Sphere& s, Vec3 p) {
+  std::array<Expansion<2>, 3> d;
+  const Expansion<1> r(s.radius);
+  if (differences(std::array{p.x, p.y, p.z}, std::array{s.center.x, s.center.y, s.center.z}, d)) {
+    return side_of_ball_of(r, heads(d));
+  }
+  return side_of_ball_of(r, d);
 }
-Sign side_of_sphere_big(const Sphere& sphere, Vec3 p) {
-  return side_of_sphere_in<BigFloat>(sphere, p);
+Sign side_of_sphere_big(const Sphere& s, Vec3 p) {
+  return side_of_ball_of(BigFloat(s.radius), std::array{BigFloat(p.x) - BigFloat(s.center.x),
+                                                        BigFloat(p.y) - BigFloat(s.center.y),
+                                                        BigFloat(p.z) - BigFloat(s.center.z)});
 }
-Sign side_of_circle_expansion(const Circle& circle, Vec2 p) {
-  return side_of_circle_in<Expansion<1>>(circle, p);
+Sign side_of_circle_expansion(const Circle& s, Vec2 p) {
+  std::array<Expansion<2>, 2> d;
+  const Expansion<1> r(s.radius);
+  if (differences(std::array{p.x, p.y}, std::array{s.center.x, s.center.y}, d)) {
+    return side_of_ball_of(r, heads(d));
+  }
+  return side_of_ball_of(r, d);
 }
-Sign side_of_circle_big(const Circle& circle, Vec2 p) {
-  return side_of_circle_in<BigFloat>(circle, p);
+Sign side_of_circle_big(const Circle& s, Vec2 p) {
+  return side_of_ball_of(BigFloat(s.radius), std::array{BigFloat(p.x) - BigFloat(s.center.x),
+                                                        BigFloat(p.y) - BigFloat(s.center.y)});
 }
 
 }  // namespace detail

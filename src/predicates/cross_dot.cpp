@@ -13,13 +13,11 @@ namespace detail {
 
 namespace {
 
-// ((b - a) x (p - a)) . ((b - a) x (c - a)) on exact numbers; Num is Expansion<1> or BigFloat.
-template <class Num>
-Sign cross_dot_in(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
-  const Num ax(a.x), ay(a.y), az(a.z);
-  const auto ux = Num(b.x) - ax, uy = Num(b.y) - ay, uz = Num(b.z) - az;
-  const auto vx = Num(p.x) - ax, vy = Num(p.y) - ay, vz = Num(p.z) - az;
-  const auto wx = Num(c.x) - ax, wy = Num(c.y) - ay, wz = Num(c.z) - az;
+// ((b - a) x (p - a)) . ((b - a) x (c - a)) from the differences (b - a, p - a, c - a).
+template <class D>
+Sign cross_dot_of(const std::array<D, 9>& d) {
+  const D &ux = d[0], &uy = d[1], &uz = d[2], &vx = d[3], &vy = d[4], &vz = d[5], &wx = d[6],
+          &wy = d[7], &wz = d[8];
   const auto n1x = uy * vz - uz * vy;
   const auto n1y = uz * vx - ux * vz;
   const auto n1z = ux * vy - uy * vx;
@@ -32,11 +30,19 @@ Sign cross_dot_in(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
 }  // namespace
 
 Sign cross_dot_expansion(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
-  return cross_dot_in<Expansion<1>>(a, b, p, c);
+  std::array<Expansion<2>, 9> diff;
+  if (differences(std::array{b.x, b.y, b.z, p.x, p.y, p.z, c.x, c.y, c.z},
+                  std::array{a.x, a.y, a.z, a.x, a.y, a.z, a.x, a.y, a.z}, diff)) {
+    return cross_dot_of(heads(diff));
+  }
+  return cross_dot_of(diff);
 }
 
 Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
-  return cross_dot_in<BigFloat>(a, b, p, c);
+  const BigFloat ax(a.x), ay(a.y), az(a.z);
+  return cross_dot_of(std::array{BigFloat(b.x) - ax, BigFloat(b.y) - ay, BigFloat(b.z) - az,
+                                 BigFloat(p.x) - ax, BigFloat(p.y) - ay, BigFloat(p.z) - az,
+                                 BigFloat(c.x) - ax, BigFloat(c.y) - ay, BigFloat(c.z) - az});
 }
 
 }  // namespace detail

@@ -282,6 +282,40 @@ template <int N, int M>
   return result;
 }
 
+// --- differences of inputs -------------------------------------------------------------------
+
+/// out[i] = minuend[i] - subtrahend[i] exactly (Two-Diff); returns true when every difference is
+/// a single double (all tails zero), as for inputs on a common grid. Predicates then evaluate
+/// their polynomial on `heads(out)`, with far smaller expansions (Shewchuk's stage B idea).
+template <std::size_t K>
+[[nodiscard]] inline bool differences(const std::array<double, K>& minuend,
+                                      const std::array<double, K>& subtrahend,
+                                      std::array<Expansion<2>, K>& out) {
+  bool exact = true;
+  for (std::size_t i = 0; i < K; ++i) {
+    // Written in place: a temporary copied as a block after element-wise stores stalls on
+    // store-to-load forwarding, which cost more than the whole exact evaluation.
+    double x;
+    double y;
+    two_diff(minuend[i], subtrahend[i], x, y);
+    Expansion<2>& h = out[i];
+    h.n = 0;
+    if (y != 0.0) h.c[h.n++] = y;
+    if (x != 0.0) h.c[h.n++] = x;
+    exact &= y == 0.0;
+  }
+  return exact;
+}
+
+/// The single-double expansions of differences known to be exact.
+template <std::size_t K>
+[[nodiscard]] inline std::array<Expansion<1>, K> heads(const std::array<Expansion<2>, K>& d) {
+  std::array<Expansion<1>, K> out;
+  for (std::size_t i = 0; i < K; ++i)
+    out[i] = Expansion<1>(d[i].n == 0 ? 0.0 : d[i].c[0]);
+  return out;
+}
+
 // --- the regime in which expansion arithmetic is exact --------------------------------------
 
 /// Input magnitudes for which every expansion evaluation of a polynomial of the given degree in
@@ -340,6 +374,7 @@ template <int Degree, std::size_t K>
 /// multiplies the polynomial by the positive 2^(k degree), so the sign is unchanged.
 template <int Degree, std::size_t K>
 [[nodiscard]] inline bool scale_into_expansion_range(std::array<double, K>& values) {
+  if (in_expansion_range<Degree>(values)) return true;  // the common case, without libm calls
   constexpr int lo = ExpansionRange<Degree>::lo;
   constexpr int hi = ExpansionRange<Degree>::hi;
   int e_min = hi;
@@ -352,8 +387,7 @@ template <int Degree, std::size_t K>
     e_max = e > e_max ? e : e_max;
     any = true;
   }
-  if (!any || (e_min >= lo && e_max < hi)) return true;
-  if (e_max - e_min >= hi - lo) return false;
+  if (!any || e_max - e_min >= hi - lo) return false;  // (all zero was in range above)
   // Moves e_min to lo plus half the free room: e_min + k >= lo and e_max + k <= hi - 1.
   const int free_room = (hi - 1 - lo) - (e_max - e_min);
   const int k = lo - e_min + free_room / 2;

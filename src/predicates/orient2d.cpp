@@ -13,21 +13,26 @@ namespace detail {
 
 namespace {
 
-// det[b - a, c - a] on exact numbers; Num is Expansion<1> or BigFloat.
-template <class Num>
-Sign orient2d_in(Vec2 a, Vec2 b, Vec2 c) {
-  const Num ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
-  return ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)).sign();
+// det[b - a, c - a] from the differences (b - a, c - a) as exact numbers.
+template <class D>
+Sign orient2d_of(const std::array<D, 4>& d) {
+  return (d[0] * d[3] - d[1] * d[2]).sign();
 }
 
 }  // namespace
 
 Sign orient2d_expansion(Vec2 a, Vec2 b, Vec2 c) {
-  return orient2d_in<Expansion<1>>(a, b, c);
+  std::array<Expansion<2>, 4> d;
+  if (differences(std::array{b.x, b.y, c.x, c.y}, std::array{a.x, a.y, a.x, a.y}, d)) {
+    return orient2d_of(heads(d));
+  }
+  return orient2d_of(d);
 }
 
 Sign orient2d_big(Vec2 a, Vec2 b, Vec2 c) {
-  return orient2d_in<BigFloat>(a, b, c);
+  const BigFloat ax(a.x), ay(a.y);
+  return orient2d_of(
+      std::array{BigFloat(b.x) - ax, BigFloat(b.y) - ay, BigFloat(c.x) - ax, BigFloat(c.y) - ay});
 }
 
 Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {

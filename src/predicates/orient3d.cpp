@@ -13,27 +13,31 @@ namespace detail {
 
 namespace {
 
-// ((b - a) x (c - a)) . (d - a) on exact numbers; Num is Expansion<1> or BigFloat.
-template <class Num>
-Sign orient3d_in(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const Num ax(a.x), ay(a.y), az(a.z);
-  const auto abx = Num(b.x) - ax, aby = Num(b.y) - ay, abz = Num(b.z) - az;
-  const auto acx = Num(c.x) - ax, acy = Num(c.y) - ay, acz = Num(c.z) - az;
-  const auto adx = Num(d.x) - ax, ady = Num(d.y) - ay, adz = Num(d.z) - az;
-  const auto nx = aby * acz - abz * acy;
-  const auto ny = abz * acx - abx * acz;
-  const auto nz = abx * acy - aby * acx;
-  return (nx * adx + ny * ady + nz * adz).sign();
+// ((b - a) x (c - a)) . (d - a) from the differences (b - a, c - a, d - a) as exact numbers.
+template <class D>
+Sign orient3d_of(const std::array<D, 9>& d) {
+  const auto nx = d[1] * d[5] - d[2] * d[4];
+  const auto ny = d[2] * d[3] - d[0] * d[5];
+  const auto nz = d[0] * d[4] - d[1] * d[3];
+  return (nx * d[6] + ny * d[7] + nz * d[8]).sign();
 }
 
 }  // namespace
 
 Sign orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  return orient3d_in<Expansion<1>>(a, b, c, d);
+  std::array<Expansion<2>, 9> diff;
+  if (differences(std::array{b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z},
+                  std::array{a.x, a.y, a.z, a.x, a.y, a.z, a.x, a.y, a.z}, diff)) {
+    return orient3d_of(heads(diff));
+  }
+  return orient3d_of(diff);
 }
 
 Sign orient3d_big(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  return orient3d_in<BigFloat>(a, b, c, d);
+  const BigFloat ax(a.x), ay(a.y), az(a.z);
+  return orient3d_of(std::array{BigFloat(b.x) - ax, BigFloat(b.y) - ay, BigFloat(b.z) - az,
+                                BigFloat(c.x) - ax, BigFloat(c.y) - ay, BigFloat(c.z) - az,
+                                BigFloat(d.x) - ax, BigFloat(d.y) - ay, BigFloat(d.z) - az});
 }
 
 Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
