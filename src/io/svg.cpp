@@ -125,6 +125,11 @@ std::string SvgCanvas::str() const {
   if (!title_.empty()) out += "<text x=\"8\" y=\"-8\" font-size=\"16\">" + title_ + "</text>\n";
   out += body_;
   double y = 10.0;
+  if (!legend_.empty()) {
+    out += "<rect x=\"" + number(width_ - 158.0) + "\" y=\"4\" width=\"152\" height=\"" +
+           number(18.0 * static_cast<double>(legend_.size()) + 10.0) +
+           "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n";
+  }
   for (const auto& [colour, label] : legend_) {
     const double x = width_ - 150.0;
     out += "<rect x=\"" + number(x) + "\" y=\"" + number(y) +

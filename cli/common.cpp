@@ -1,0 +1,110 @@
+#include "common.h"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace contain::cli {
+
+int report(const Error& error) {
+  std::cerr << "contain: " << error.what() << '\n';
+  return error.kind == ErrorKind::usage ? exit_usage : exit_bad_input;
+}
+
+void warn(std::string_view message) {
+  std::cerr << "contain: warning: " << message << '\n';
+}
+
+Result<std::vector<double>> parse_numbers(std::string_view text, std::string_view option) {
+  std::vector<double> out;
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  auto is_separator = [](char c) { return c == ',' || c == ' ' || c == '\t' || c == '\n'; };
+  while (p < end) {
+    while (p < end && is_separator(*p))
+      ++p;
+    if (p == end) break;
+    double value = 0.0;
+    const char* start = p;
+    if (*p == '+') ++p;  // from_chars does not take a leading '+'
+    auto [next, ec] = std::from_chars(p, end, value);
+    if (ec != std::errc() || (next < end && !is_separator(*next)) || !std::isfinite(value)) {
+      const char* stop = next;
+      while (stop < end && !is_separator(*stop))
+        ++stop;
+      return Error{ErrorKind::usage, std::string(option) + ": '" + std::string(start, stop) +
+                                         "' is not a finite number"};
+    }
+    out.push_back(value);
+    p = next;
+  }
+  return out;
+}
+
+Status write_output(std::string_view text, const std::string& path) {
+  if (path.empty() || path == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    return Ok{};
+  }
+  std::ofstream file(path, std::ios::binary);
+  if (!file) return Error{ErrorKind::io, "cannot open for writing", path};
+  file.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!file) return Error{ErrorKind::io, "write failed", path};
+  return Ok{};
+}
+
+int emit(std::string_view text, const std::string& path) {
+  const Status written = write_output(text, path);
+  return written ? exit_ok : report(written.error());
+}
+
+bool stderr_is_terminal() {
+  return isatty(STDERR_FILENO) != 0;
+}
+
+void add_boundary_option(CLI::App& app, BoundaryPolicy& policy) {
+  const std::map<std::string, BoundaryPolicy> names{{"report", BoundaryPolicy::report},
+                                                    {"inside", BoundaryPolicy::as_inside},
+                                                    {"outside", BoundaryPolicy::as_outside}};
+  app.add_option("--boundary", policy,
+                 "points exactly on the boundary: 'report' prints 'on' (default), 'inside' / "
+                 "'outside' fold them into 'in' / 'out'")
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      ->option_text("report|inside|outside");
+}
+
+void add_fill_option(CLI::App& app, Fill& fill) {
+  const std::map<std::string, Fill> names{{"evenodd", Fill::even_odd},
+                                          {"nonzero", Fill::nonzero},
+                                          {"positive", Fill::positive},
+                                          {"negative", Fill::negative}};
+  app.add_option("--fill", fill,
+                 "how the rings (closed paths, in the direction written) fill the plane; evenodd "
+                 "(default) is the OGC meaning for valid polygons")
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      ->option_text("evenodd|nonzero|positive|negative");
+}
+
+void add_threads_option(CLI::App& app, int& threads) {
+  app.add_option("--threads", threads, "worker threads for batches (default: all cores)")
+      ->check(CLI::NonNegativeNumber)
+      ->option_text("N");
+}
+
+std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {
+  std::string out;
+  out.reserve(locations.size() * 4);
+  for (Location l : locations) {
+    out += to_string(apply(policy, l));
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace contain::cli

@@ -1,0 +1,60 @@
+#pragma once
+// Pieces every verb of the CLI shares: exit codes, error reporting, option values, output.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contain/core/location.h"
+#include "contain/core/result.h"
+#include "contain/geometry/polygon.h"
+
+namespace contain::cli {
+
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_usage = 2;      // the contract: unknown option, missing argument
+inline constexpr int exit_bad_input = 3;  // the contract: unreadable or malformed input
+
+/// A subcommand: its CLI11 node and what runs once it has been parsed.
+struct Verb {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// Prints "contain: <file>:<line>: <message>" on stderr and returns the contract's exit code
+/// (2 for usage errors, 3 for bad input).
+int report(const Error& error);
+
+/// Prints a warning on stderr (never on stdout, which holds only results).
+void warn(std::string_view message);
+
+/// The numbers of a list-valued option ("1,0,0,2.5" or "1 0 0 2.5"), all finite; `option` names
+/// the option in the error.
+[[nodiscard]] Result<std::vector<double>> parse_numbers(std::string_view text,
+                                                        std::string_view option);
+
+/// Writes `text` to `path`, or to stdout when `path` is empty or "-".
+[[nodiscard]] Status write_output(std::string_view text, const std::string& path);
+
+/// Writes the results (see `write_output`) and returns the exit code: 0, or 3 when writing failed.
+[[nodiscard]] int emit(std::string_view text, const std::string& path);
+
+/// True when stderr is a terminal (progress is shown only then).
+[[nodiscard]] bool stderr_is_terminal();
+
+/// `--boundary report|inside|outside` and `--fill evenodd|nonzero|positive|negative` as CLI11
+/// transforms onto the library's enums.
+void add_boundary_option(CLI::App& app, BoundaryPolicy& policy);
+void add_fill_option(CLI::App& app, Fill& fill);
+/// `--threads N` (0 or absent: all cores).
+void add_threads_option(CLI::App& app, int& threads);
+
+/// One line per location ("in", "on", "out") after applying `policy`.
+[[nodiscard]] std::string format_locations(std::span<const Location> locations,
+                                           BoundaryPolicy policy);
+
+}  // namespace contain::cli

@@ -1,0 +1,95 @@
+// contain inside: one line per point, "in", "on" or "out".
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common.h"
+#include "contain/inside/csg.h"
+#include "contain/inside/polygon_index.h"
+#include "contain/io/csg_json.h"
+#include "contain/io/points_io.h"
+#include "contain/io/region_io.h"
+#include "verbs.h"
+
+namespace contain::cli {
+namespace {
+
+struct InsideOptions {
+  std::string polygon;
+  std::string csg;
+  std::string points = "-";
+  std::string out;
+  BoundaryPolicy boundary = BoundaryPolicy::report;
+  Fill fill = Fill::even_odd;
+  int threads = 0;
+};
+
+int run_polygon(const InsideOptions& o) {
+  auto region = io::read_region(o.polygon);
+  if (!region) return report(region.error());
+  auto points = io::read_points2(o.points);
+  if (!points) return report(points.error());
+  const inside::PolygonIndex index(*region, {.fill = o.fill});
+  std::vector<Location> locations(points->points.size());
+  index.locate(points->points, locations, {.threads = o.threads});
+  return emit(format_locations(locations, o.boundary), o.out);
+}
+
+int run_csg(const InsideOptions& o) {
+  auto tree = io::read_csg_json(o.csg);
+  if (!tree) return report(tree.error());
+  auto solid = inside::CsgSolid::prepare(*tree);
+  if (!solid) {
+    Error error = solid.error();
+    if (error.source.empty()) error.source = o.csg;
+    return report(error);
+  }
+  auto points = io::read_points3(o.points);
+  if (!points) return report(points.error());
+  std::vector<Location> locations(points->points.size());
+  solid->locate(points->points, locations, {.threads = o.threads});
+  return emit(format_locations(locations, o.boundary), o.out);
+}
+
+}  // namespace
+
+Verb add_inside(CLI::App& app) {
+  auto o = std::make_shared<InsideOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "inside", "Point containment: prints in, on or out for each point, in input order");
+  auto* polygon = cmd->add_option("--polygon", o->polygon,
+                                  "2D region (.wkt POLYGON/MULTIPOLYGON or .geojson); points "
+                                  "have 2 numbers a line")
+                      ->option_text("FILE");
+  auto* csg = cmd->add_option("--csg", o->csg,
+                              "3D solid as a CSG tree in JSON (union, intersection, difference, "
+                              "complement of sphere, box, halfspace, convex, implicit leaves)")
+                  ->option_text("FILE");
+  polygon->excludes(csg);
+  csg->excludes(polygon);
+  cmd->add_option("--points", o->points,
+                  "points, one a line (2 or 3 numbers, white space or commas; '#' comments); '-' "
+                  "or absent: stdin")
+      ->option_text("FILE");
+  add_boundary_option(*cmd, o->boundary);
+  add_fill_option(*cmd, o->fill);
+  add_threads_option(*cmd, o->threads);
+  cmd->add_option("--out", o->out, "write the answers to FILE instead of stdout")
+      ->option_text("FILE");
+  cmd->footer(
+      "Examples:\n"
+      "  contain inside --polygon parcels.wkt --points survey.txt\n"
+      "  printf '0.5 0.5\\n2 2\\n' | contain inside --polygon square.geojson --boundary inside\n"
+      "  contain inside --csg part.json --points probes.xyz --threads 2 --out answers.txt\n"
+      "A point is 'on' only when it lies exactly on the boundary of the filled region (exact "
+      "arithmetic on the given doubles).");
+  return {
+      cmd, [o, polygon, csg]() {
+        if (polygon->count() > 0) return run_polygon(*o);
+        if (csg->count() > 0) return run_csg(*o);
+        return report({ErrorKind::usage, "inside: give the region: --polygon FILE or --csg FILE"});
+      }};
+}
+
+}  // namespace contain::cli

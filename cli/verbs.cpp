@@ -1,0 +1,9 @@
+#include "verbs.h"
+
+namespace contain::cli {
+
+std::vector<Verb> all_verbs(CLI::App& app) {
+  return {add_inside(app), add_bound(app), add_demo(app)};
+}
+
+}  // namespace contain::cli

@@ -1,0 +1,17 @@
+#pragma once
+// One function per verb; each adds its subcommand to the app and returns what runs it.
+
+#include <vector>
+
+#include "common.h"
+
+namespace contain::cli {
+
+Verb add_inside(CLI::App& app);
+Verb add_bound(CLI::App& app);
+Verb add_demo(CLI::App& app);
+
+/// Every verb, in the order `contain --help` lists them.
+std::vector<Verb> all_verbs(CLI::App& app);
+
+}  // namespace contain::cli

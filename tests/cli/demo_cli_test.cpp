@@ -1,0 +1,29 @@
+// contain demo: runs on its built-in scene and writes the pictures it names.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli/run.h"
+
+namespace contain::test {
+namespace {
+
+TEST(DemoCli, RunsEveryBuiltInSceneAndWritesTheSvgPicturesItNames) {
+  TempDir dir;
+  const std::string out = (dir.path() / "pictures").string();
+  const CliRun run = run_contain({"demo", "--out-dir", out});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* name : {"inside-polygon.svg", "inside-csg.svg", "bound-torus.svg"}) {
+    EXPECT_NE(run.out.find(name), std::string::npos) << name;
+    const std::filesystem::path file = std::filesystem::path(out) / name;
+    ASSERT_TRUE(std::filesystem::exists(file)) << file;
+    EXPECT_GT(std::filesystem::file_size(file), 1000u) << file;
+  }
+  EXPECT_NE(run.out.find("point in polygon"), std::string::npos);
+  EXPECT_NE(run.out.find("CSG"), std::string::npos);
+  EXPECT_NE(run.out.find("minimal sphere"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace contain::test
