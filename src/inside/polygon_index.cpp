@@ -1,6 +1,7 @@
 #include "contain/inside/polygon_index.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -296,12 +297,71 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
   return detail::classify_on_edges(point, winding, through, fill_);
 }
 
+std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
+  if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
+        point.y <= bounds_.max.y)) {
+    return -1;
+  }
+  const int i = guess_cell(point.x, bounds_.min.x, scale_x_, nx_);
+  const int j = guess_cell(point.y, bounds_.min.y, scale_y_, ny_);
+  return static_cast<std::ptrdiff_t>(j) * nx_ + i;
+}
+
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
                           const BatchOptions& options) const {
   const std::size_t count = std::min(points.size(), out.size());
+  if (cells_.empty()) {
+    std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count), Location::outside);
+    return;
+  }
+  // Random points touch random cells. When the structure outgrows the core's cache, a software
+  // pipeline prefetches, a few points ahead, the cell word, then the record of an edge cell, then
+  // its edges. Prefetches only warm the cache (the guessed cell need not be the exact one), so
+  // the answers do not change.
+  const std::size_t bytes = cells_.size() * sizeof(std::uint32_t) +
+                            edge_cells_.size() * sizeof(EdgeCell) +
+                            edges_.size() * sizeof(CellEdge);
+  if (bytes < (std::size_t{512} << 10)) {
+    parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        out[k] = locate(points[k]);
+    });
+    return;
+  }
+  constexpr std::size_t kAhead = 16, kRecordAhead = 8, kEdgesAhead = 4;
   parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
+    std::array<std::ptrdiff_t, kAhead> guessed{};  // guessed[k % kAhead]: cell of point k
+    for (std::size_t k = begin; k < std::min(end, begin + kAhead); ++k) {
+      guessed[k % kAhead] = guessed_cell(points[k]);
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k + kRecordAhead < end) {
+        const std::ptrdiff_t c = guessed[(k + kRecordAhead) % kAhead];
+        if (c >= 0) {
+          const std::uint32_t code = cells_[static_cast<std::size_t>(c)];
+          if (code >= 2) __builtin_prefetch(&edge_cells_[code - 2]);
+        }
+      }
+      if (k + kEdgesAhead < end) {
+        const std::ptrdiff_t c = guessed[(k + kEdgesAhead) % kAhead];
+        if (c >= 0) {
+          const std::uint32_t code = cells_[static_cast<std::size_t>(c)];
+          if (code >= 2) {
+            const EdgeCell& cell = edge_cells_[code - 2];
+            __builtin_prefetch(&edges_[cell.edges_begin]);
+            if (cell.side_begin < side_edges_.size()) {
+              __builtin_prefetch(&side_edges_[cell.side_begin]);
+            }
+          }
+        }
+      }
       out[k] = locate(points[k]);
+      if (k + kAhead < end) {
+        const std::ptrdiff_t c = guessed_cell(points[k + kAhead]);
+        guessed[k % kAhead] = c;
+        if (c >= 0) __builtin_prefetch(&cells_[static_cast<std::size_t>(c)]);
+      }
+    }
   });
 }
 

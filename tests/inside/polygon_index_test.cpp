@@ -174,10 +174,12 @@ TEST(PolygonIndex, PointsOutsideTheBoxAreOutside) {
 
 TEST(PolygonIndex, BatchAnswersDoNotDependOnTheThreadCount) {
   std::mt19937_64 rng(6);
-  const MultiPolygon region{{Polygon{{test::random_star(rng, 500, 0, 0, 1.0)}},
+  // Large enough (spiky, ~10^5 edge-cell pairs) for the batch call's prefetching path.
+  const MultiPolygon region{{Polygon{{test::random_star(rng, 3000, 0, 0, 1.0)}},
                              Polygon{{test::random_star(rng, 100, 0.5, 0.5, 0.8)}}}};
   const PolygonIndex index(region, {.fill = Fill::nonzero});
-  std::uniform_real_distribution<double> c(-1.6, 1.6);
+  ASSERT_GT(index.stats().edge_refs, 50000u);
+  std::uniform_real_distribution<double> c(-1.1, 1.1);
   std::vector<Vec2> points(50000);
   for (Vec2& p : points)
     p = {c(rng), c(rng)};
@@ -187,6 +189,8 @@ TEST(PolygonIndex, BatchAnswersDoNotDependOnTheThreadCount) {
   index.locate(points, all);
   EXPECT_EQ(one, four);
   EXPECT_EQ(one, all);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    ASSERT_EQ(one[k], index.locate(points[k]));
   for (std::size_t k = 0; k < points.size(); k += 97) {
     ASSERT_EQ(one[k], point_in_polygon(region, points[k], {.fill = Fill::nonzero}));
   }

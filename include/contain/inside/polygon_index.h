@@ -102,6 +102,7 @@ class PolygonIndex {
     int corner_winding;                    // at the lower-right corner, right-up perturbed
   };
 
+  [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const;  // -1 outside the box
   [[nodiscard]] int column_of(double x) const;
   [[nodiscard]] int row_of(double y) const;
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
