@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -13,7 +14,11 @@ namespace {
 
 template <class P, class Ball>
 double relative_excess_impl(const Ball& ball, std::span<const P> points) {
+  // Distinct points only: repeated copies of one far point would crowd out the support.
   std::vector<P> candidates(points.begin(), points.end());
+  std::sort(candidates.begin(), candidates.end(),
+            [](const P& a, const P& b) { return std::memcmp(&a, &b, sizeof(P)) < 0; });
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   constexpr std::size_t kAll = 14;
   constexpr std::size_t kTop = 12;
   if (candidates.size() > kAll) {

@@ -16,7 +16,8 @@ namespace contain::test {
 [[nodiscard]] std::size_t count_outside(const Circle& circle, std::span<const Vec2> points);
 
 /// r / r_min - 1, where r_min is the exact minimal radius of the points by brute force: over all
-/// points when there are at most 14, else over the 12 points farthest from the ball's center.
+/// distinct points when there are at most 14, else over the 12 distinct points farthest from the
+/// ball's center.
 /// For a ball that contains every point the candidates' r_min <= the true r_min <= r, so a small
 /// result proves r within that much of the true minimum, whichever candidates were taken.
 /// Negative only if the ball is smaller than the candidates' minimal ball (a containment bug).
