@@ -22,4 +22,14 @@ Result<Circle> bounding_circle(const Polygon& polygon, const CircleOptions& opti
   return bounding_circle(points, options);
 }
 
+Result<Circle> bounding_circle(const MultiPolygon& multi_polygon, const CircleOptions& options) {
+  std::vector<Vec2> points;
+  for (const Polygon& polygon : multi_polygon.polygons) {
+    for (const Ring& ring : polygon.rings) {
+      points.insert(points.end(), ring.begin(), ring.end());
+    }
+  }
+  return bounding_circle(points, options);
+}
+
 }  // namespace contain::bound

@@ -138,6 +138,12 @@ TEST(BoundingCircle, PolygonEnclosesEveryRingPoint) {
   ASSERT_TRUE(c.ok());
   EXPECT_NEAR(c->radius, std::sqrt(50.0), kTight);
   EXPECT_EQ(c->center, (Vec2{5, 5}));
+  auto far = Polygon::from_rings({{{30, 0}, {31, 0}, {30, 1}}});
+  ASSERT_TRUE(far.ok());
+  auto both = bounding_circle(MultiPolygon{{*polygon, *far}});
+  ASSERT_TRUE(both.ok());
+  EXPECT_NEAR(both->radius, 0.5 * std::hypot(31.0, 10.0), kTight);
+  EXPECT_EQ(bounding_circle(MultiPolygon{}).error().kind, ErrorKind::degenerate);
 }
 
 }  // namespace

@@ -33,4 +33,9 @@ struct CircleOptions {
 [[nodiscard]] Result<Circle> bounding_circle(const Polygon& polygon,
                                              const CircleOptions& options = {});
 
+/// The bounding circle of every ring point of every polygon (a region read from WKT/GeoJSON).
+/// No polygons, or only empty ones, is `ErrorKind::degenerate`.
+[[nodiscard]] Result<Circle> bounding_circle(const MultiPolygon& multi_polygon,
+                                             const CircleOptions& options = {});
+
 }  // namespace contain::bound
