@@ -1,10 +1,11 @@
 // Minimal enclosing sphere of 10^6 random points, uniform in a ball and in a cube:
 // contain::bound::bounding_sphere (exact and Ritter) against CGAL's Min_sphere_of_spheres_d with
-// zero radii (double number type, both its default Farthest-first heuristic and its LP
-// algorithm), on the same points in one run. Answers are checked outside the timed loop: exact
-// containment of every point with predicates::side_of_sphere, and the radius against the exact
-// (GMP) minimal ball of the 12 points farthest from the center, which bounds the true minimal
-// radius from below.
+// zero radii (double number type, Tag_true: square roots allowed; its default Farthest-first
+// heuristic and its LP algorithm), on the same points in one run, each library reading its own
+// input format prepared outside the timed loop. Answers are checked outside the timed loop:
+// exact containment of every point with predicates::side_of_sphere, and the radius against the
+// exact (GMP) minimal ball of the 12 points farthest from the center, which bounds the true
+// minimal radius from below.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -87,14 +88,22 @@ double radius_lower_bound(const std::vector<Vec3>& points, Vec3 center) {
 }
 
 #ifdef CONTAIN_BENCH_HAS_CGAL
-template <class Algorithm>
-Sphere cgal_sphere(const std::vector<Vec3>& points) {
-  using K = CGAL::Simple_cartesian<double>;
-  using Traits = CGAL::Min_sphere_of_spheres_d_traits_3<K, double, CGAL::Tag_true, Algorithm>;
-  std::vector<typename Traits::Sphere> spheres;
+using CgalKernel = CGAL::Simple_cartesian<double>;
+using CgalSphere = std::pair<CgalKernel::Point_3, double>;
+
+// CGAL's input in its own format (built outside the timed loop, as contain's span is).
+std::vector<CgalSphere> cgal_input(const std::vector<Vec3>& points) {
+  std::vector<CgalSphere> spheres;
   spheres.reserve(points.size());
   for (const Vec3& p : points)
-    spheres.emplace_back(K::Point_3(p.x, p.y, p.z), 0.0);
+    spheres.emplace_back(CgalKernel::Point_3(p.x, p.y, p.z), 0.0);
+  return spheres;
+}
+
+template <class Algorithm>
+Sphere cgal_sphere(const std::vector<CgalSphere>& spheres) {
+  using Traits =
+      CGAL::Min_sphere_of_spheres_d_traits_3<CgalKernel, double, CGAL::Tag_true, Algorithm>;
   CGAL::Min_sphere_of_spheres_d<Traits> ms(spheres.begin(), spheres.end());
   auto c = ms.center_cartesian_begin();
   Sphere s;
@@ -128,12 +137,13 @@ void scene(const char* name, const std::vector<Vec3>& points) {
       ritter);
   row("contain ritter", ritter_ms, exact_ms, ritter, lower, points);
 #ifdef CONTAIN_BENCH_HAS_CGAL
+  const std::vector<CgalSphere> spheres = cgal_input(points);
   Sphere ff;
   const double ff_ms =
-      median_ms([&] { return cgal_sphere<CGAL::Farthest_first_heuristic>(points); }, ff);
+      median_ms([&] { return cgal_sphere<CGAL::Farthest_first_heuristic>(spheres); }, ff);
   row("CGAL Min_sphere_of_spheres_d (FF)", ff_ms, exact_ms, ff, lower, points);
   Sphere lp;
-  const double lp_ms = median_ms([&] { return cgal_sphere<CGAL::LP_algorithm>(points); }, lp);
+  const double lp_ms = median_ms([&] { return cgal_sphere<CGAL::LP_algorithm>(spheres); }, lp);
   row("CGAL Min_sphere_of_spheres_d (LP)", lp_ms, exact_ms, lp, lower, points);
   std::printf("  CGAL(FF) / contain exact: time x%.2f, radius difference %+.2e relative\n",
               ff_ms / exact_ms, (ff.radius - exact.radius) / exact.radius);
