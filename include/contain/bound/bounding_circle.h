@@ -15,6 +15,7 @@ namespace contain::bound {
 
 /// Options of `bounding_circle`.
 struct CircleOptions {
+  /// The minimal circle (default) or Ritter's approximation.
   SphereMethod method = SphereMethod::exact;
 };
 

@@ -17,6 +17,7 @@ namespace contain::bound {
 /// Options of `bounding_sphere`, for designated initialisers:
 /// `bounding_sphere(mesh, {.method = SphereMethod::ritter})`.
 struct SphereOptions {
+  /// The minimal sphere (default) or Ritter's approximation.
   SphereMethod method = SphereMethod::exact;
   /// Which mesh vertices are enclosed (the `Mesh` overload only).
   MeshVertices vertices = MeshVertices::referenced;
