@@ -52,12 +52,7 @@ int run_region(const BoundOptions& o) {
   auto region = io::read_region(o.file);
   if (!region) return report(region.error());
   const Box2 box = bound::aabb(*region);
-  std::vector<Vec2> points;
-  for (const Polygon& polygon : region->polygons) {
-    for (const Ring& ring : polygon.rings)
-      points.insert(points.end(), ring.begin(), ring.end());
-  }
-  auto circle = bound::bounding_circle(points, {.method = o.method});
+auto circle = bound::bounding_circle(*region, {.method = o.method});
   if (!circle) {
     Error error = circle.error();
     error.source = o.file;
