@@ -52,7 +52,7 @@ int run_region(const BoundOptions& o) {
   auto region = io::read_region(o.file);
   if (!region) return report(region.error());
   const Box2 box = bound::aabb(*region);
-auto circle = bound::bounding_circle(*region, {.method = o.method});
+  auto circle = bound::bounding_circle(*region, {.method = o.method});
   if (!circle) {
     Error error = circle.error();
     error.source = o.file;
