@@ -1,4 +1,4 @@
-// orient2d and orient3d, single-threaded, on 65,536 precomputed inputs per scene:
+// orient2d and orient3d, single-threaded, on 4,096 precomputed inputs per scene:
 //   random      coordinates uniform in [-1, 1]: the filter answers;
 //   near        a rounded point of the line (plane) through the others, moved by <= 2 ulps:
 //               the filter fails and the exact stage sees non-zero difference tails;
@@ -6,14 +6,17 @@
 //               the filter fails and the exact stage runs on exact differences;
 // through
 //   contain     contain::predicates::orient2d / orient3d (exact);
+//   call        the same through a non-inlined wrapper: what an out-of-line filter would cost;
 //   naive       the sign of the double expression (not exact: mismatches are counted);
 //   cgal        CGAL::orientation with Exact_predicates_inexact_constructions_kernel (exact).
+// Every callee is wrapped in a lambda so that the compiler may inline it, as in user code.
 // Counters: calls/s (items_per_second), mismatches against contain (outside the timed loop).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "contain/predicates/orient2d.h"
@@ -30,7 +33,7 @@ using contain::Vec2;
 using contain::Vec3;
 namespace pr = contain::predicates;
 
-constexpr std::size_t kInputs = 1 << 16;
+constexpr std::size_t kInputs = 1 << 12;  // 200-300 KB: cache-resident, measures compute
 
 enum class Kind { random, near, degenerate };
 
@@ -102,6 +105,13 @@ const std::vector<Quad>& quads(Kind kind) {
   return out;
 }
 
+[[gnu::noinline]] Sign call2(Vec2 a, Vec2 b, Vec2 c) {
+  return pr::orient2d(a, b, c);
+}
+[[gnu::noinline]] Sign call3(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return pr::orient3d(a, b, c, d);
+}
+
 Sign naive2(Vec2 a, Vec2 b, Vec2 c) {
   return contain::sign_of(cross(b - a, c - a));
 }
@@ -155,28 +165,38 @@ Sign cgal3(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 }
 #endif
 
+// Each callee is a distinct lambda type, so run2/run3 are instantiated per callee and the
+// call can be inlined, as in user code.
+template <class F>
+void add2(const std::string& name, Kind kind, F f) {
+  benchmark::RegisterBenchmark(("orient2d/" + name).c_str(),
+                               [kind, f](benchmark::State& s) { run2(s, kind, f); });
+}
+template <class F>
+void add3(const std::string& name, Kind kind, F f) {
+  benchmark::RegisterBenchmark(("orient3d/" + name).c_str(),
+                               [kind, f](benchmark::State& s) { run3(s, kind, f); });
+}
+
 void register_all() {
   const struct {
     const char* name;
     Kind kind;
   } kinds[] = {{"random", Kind::random}, {"near", Kind::near}, {"degenerate", Kind::degenerate}};
   for (const auto& k : kinds) {
-    const Kind kind = k.kind;
-    benchmark::RegisterBenchmark((std::string("orient2d/contain/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run2(s, kind, pr::orient2d); });
-    benchmark::RegisterBenchmark((std::string("orient2d/naive/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run2(s, kind, naive2); });
+    const std::string n = k.name;
+    add2("contain/" + n, k.kind, [](Vec2 a, Vec2 b, Vec2 c) { return pr::orient2d(a, b, c); });
+    add2("call/" + n, k.kind, [](Vec2 a, Vec2 b, Vec2 c) { return call2(a, b, c); });
+    add2("naive/" + n, k.kind, [](Vec2 a, Vec2 b, Vec2 c) { return naive2(a, b, c); });
 #ifdef CONTAIN_BENCH_HAS_CGAL
-    benchmark::RegisterBenchmark((std::string("orient2d/cgal/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run2(s, kind, cgal2); });
+    add2("cgal/" + n, k.kind, [](Vec2 a, Vec2 b, Vec2 c) { return cgal2(a, b, c); });
 #endif
-    benchmark::RegisterBenchmark((std::string("orient3d/contain/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run3(s, kind, pr::orient3d); });
-    benchmark::RegisterBenchmark((std::string("orient3d/naive/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run3(s, kind, naive3); });
+    add3("contain/" + n, k.kind,
+         [](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return pr::orient3d(a, b, c, d); });
+    add3("call/" + n, k.kind, [](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return call3(a, b, c, d); });
+    add3("naive/" + n, k.kind, [](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return naive3(a, b, c, d); });
 #ifdef CONTAIN_BENCH_HAS_CGAL
-    benchmark::RegisterBenchmark((std::string("orient3d/cgal/") + k.name).c_str(),
-                                 [kind](benchmark::State& s) { run3(s, kind, cgal3); });
+    add3("cgal/" + n, k.kind, [](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return cgal3(a, b, c, d); });
 #endif
   }
 }

@@ -51,6 +51,32 @@ Sign side_of_circle_big(const Circle& s, Vec2 p) {
                                                         BigFloat(p.y) - BigFloat(s.center.y)});
 }
 
+// After the filter: out of line, so that the filter stays small and free of the stages'
+// setup.
+[[gnu::noinline]] Sign side_of_sphere_exact(const Sphere& s, Vec3 p) {
+  if (in_expansion_range<2>(s.radius, s.center.x, s.center.y, s.center.z, p.x, p.y, p.z)) {
+    return side_of_sphere_expansion(s, p);
+  }
+  std::array v{s.radius, s.center.x, s.center.y, s.center.z, p.x, p.y, p.z};
+  if (scale_into_expansion_range<2>(v)) {
+    return side_of_sphere_expansion({{v[1], v[2], v[3]}, v[0]}, {v[4], v[5], v[6]});
+  }
+  return side_of_sphere_big(s, p);
+}
+
+// After the filter: out of line, so that the filter stays small and free of the stages'
+// setup.
+[[gnu::noinline]] Sign side_of_circle_exact(const Circle& s, Vec2 p) {
+  if (in_expansion_range<2>(s.radius, s.center.x, s.center.y, p.x, p.y)) {
+    return side_of_circle_expansion(s, p);
+  }
+  std::array v{s.radius, s.center.x, s.center.y, p.x, p.y};
+  if (scale_into_expansion_range<2>(v)) {
+    return side_of_circle_expansion({{v[1], v[2]}, v[0]}, {v[3], v[4]});
+  }
+  return side_of_circle_big(s, p);
+}
+
 }  // namespace detail
 
 // Filter. The monomials of r r - ((dx dx + dy dy) + dz dz) pass through at most k = 6
@@ -66,11 +92,7 @@ Sign side_of_sphere(const Sphere& s, Vec3 p) {
   const double errbound = kBound * (r2 + d2) + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  std::array v{s.radius, s.center.x, s.center.y, s.center.z, p.x, p.y, p.z};
-  if (detail::scale_into_expansion_range<2>(v)) {
-    return detail::side_of_sphere_expansion({{v[1], v[2], v[3]}, v[0]}, {v[4], v[5], v[6]});
-  }
-  return detail::side_of_sphere_big(s, p);
+  return detail::side_of_sphere_exact(s, p);
 }
 
 // Filter as side_of_sphere with k = 5 roundings: bound 6 eps * permanent.
@@ -83,11 +105,7 @@ Sign side_of_circle(const Circle& s, Vec2 p) {
   const double errbound = kBound * (r2 + d2) + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  std::array v{s.radius, s.center.x, s.center.y, p.x, p.y};
-  if (detail::scale_into_expansion_range<2>(v)) {
-    return detail::side_of_circle_expansion({{v[1], v[2]}, v[0]}, {v[3], v[4]});
-  }
-  return detail::side_of_circle_big(s, p);
+  return detail::side_of_circle_exact(s, p);
 }
 
 }  // namespace contain::predicates

@@ -45,6 +45,20 @@ Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
                                  BigFloat(c.x) - ax, BigFloat(c.y) - ay, BigFloat(c.z) - az});
 }
 
+// After the filter: out of line, so that the filter stays small and free of the stages'
+// setup.
+[[gnu::noinline]] Sign cross_dot_exact(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
+  if (in_expansion_range<4>(a.x, a.y, a.z, b.x, b.y, b.z, p.x, p.y, p.z, c.x, c.y, c.z)) {
+    return cross_dot_expansion(a, b, p, c);
+  }
+  std::array v{a.x, a.y, a.z, b.x, b.y, b.z, p.x, p.y, p.z, c.x, c.y, c.z};
+  if (scale_into_expansion_range<4>(v)) {
+    return cross_dot_expansion({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]},
+                               {v[9], v[10], v[11]});
+  }
+  return cross_dot_big(a, b, p, c);
+}
+
 }  // namespace detail
 
 // Filter. Each monomial of the degree-4 expression passes through at most k = 11 roundings (four
@@ -69,12 +83,7 @@ Sign cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
       kBound * permanent + detail::kUnderflowGuard * (1.0 + (m1 + m2 + m3) + (k1 + k2 + k3));
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  std::array v{a.x, a.y, a.z, b.x, b.y, b.z, p.x, p.y, p.z, c.x, c.y, c.z};
-  if (detail::scale_into_expansion_range<4>(v)) {
-    return detail::cross_dot_expansion({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]},
-                                       {v[9], v[10], v[11]});
-  }
-  return detail::cross_dot_big(a, b, p, c);
+  return detail::cross_dot_exact(a, b, p, c);
 }
 
 }  // namespace contain::predicates

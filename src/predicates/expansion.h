@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 
 #include "contain/predicates/sign.h"
 
@@ -93,6 +94,32 @@ inline void two_product_presplit(double a, double b, double b_hi, double b_lo, d
   const double err3 = err2 - a_hi * b_lo;
   y = a_lo * b_lo - err3;
 #endif
+}
+
+/// x2 + x1 + x0 = (a1 + a0) - b exactly, a nonoverlapping expansion (x0 smallest; zeros kept).
+inline void two_one_diff(double a1, double a0, double b, double& x2, double& x1, double& x0) {
+  double i;
+  two_diff(a0, b, i, x0);
+  two_sum(a1, i, x2, x1);
+}
+
+/// x3 + x2 + x1 + x0 = (a1 + a0) - (b1 + b0) exactly (Shewchuk's Two-Two-Diff), branch-free.
+inline void two_two_diff(double a1, double a0, double b1, double b0, double& x3, double& x2,
+                         double& x1, double& x0) {
+  double j;
+  double zero;
+  two_one_diff(a1, a0, b0, j, zero, x0);
+  two_one_diff(j, zero, b1, x3, x2, x1);
+}
+
+/// The sign of a nonoverlapping expansion whose zeros were not eliminated: the sign of its
+/// largest nonzero component. `c` is ordered smallest first.
+template <std::size_t K>
+[[nodiscard]] inline Sign sign_of_largest(const std::array<double, K>& c) {
+  for (std::size_t i = K; i-- > 0;) {
+    if (c[i] != 0.0) return sign_of(c[i]);
+  }
+  return Sign::zero;
 }
 
 // --- operations on raw component arrays ----------------------------------------------------
@@ -244,6 +271,19 @@ template <int N, int M>
   return h;
 }
 
+/// The product of two doubles: Two-Product, zero tail dropped.
+[[nodiscard]] inline Expansion<2> operator*(const Expansion<1>& e, const Expansion<1>& f) {
+  Expansion<2> h;
+  h.n = 0;
+  if (e.n == 0 || f.n == 0) return h;
+  double x;
+  double y;
+  two_product(e.c[0], f.c[0], x, y);
+  if (y != 0.0) h.c[h.n++] = y;
+  h.c[h.n++] = x;
+  return h;
+}
+
 /// e * f: one Scale-Expansion per component of the shorter operand, summed.
 template <int N, int M>
 [[nodiscard]] Expansion<2 * N * M> operator*(const Expansion<N>& e, const Expansion<M>& f) {
@@ -353,17 +393,21 @@ struct ExpansionRange<4> {
   return r;
 }
 
-/// True when every value is 0 or has 2^lo <= |x| < 2^hi for the degree's range.
-template <int Degree, std::size_t K>
-[[nodiscard]] inline bool in_expansion_range(const std::array<double, K>& values) {
+/// True when x is 0 or 2^lo <= |x| < 2^hi for the degree's range.
+template <int Degree>
+[[nodiscard]] inline bool in_expansion_range(double x) {
   constexpr double min_abs = pow2(ExpansionRange<Degree>::lo);
   constexpr double max_abs = pow2(ExpansionRange<Degree>::hi);
-  bool ok = true;
-  for (const double x : values) {
-    const double a = std::fabs(x);
-    ok &= (a < max_abs) & ((a >= min_abs) | (a == 0.0));
-  }
-  return ok;
+  const double a = std::fabs(x);
+  return (a < max_abs) & ((a >= min_abs) | (a == 0.0));
+}
+
+/// True when every value is in the degree's range. Variadic over scalars on purpose: an array
+/// built from register arguments is reloaded through memory, and the store-to-load forwarding
+/// stall costs more than the check.
+template <int Degree, class... Doubles>
+[[nodiscard]] inline bool in_expansion_range(double x, Doubles... rest) {
+  return (in_expansion_range<Degree>(x) & ... & in_expansion_range<Degree>(rest));
 }
 
 /// For a predicate whose polynomial is homogeneous in all its inputs (orient2d, orient3d,
@@ -374,7 +418,9 @@ template <int Degree, std::size_t K>
 /// multiplies the polynomial by the positive 2^(k degree), so the sign is unchanged.
 template <int Degree, std::size_t K>
 [[nodiscard]] inline bool scale_into_expansion_range(std::array<double, K>& values) {
-  if (in_expansion_range<Degree>(values)) return true;  // the common case, without libm calls
+  const bool in_range = std::apply(
+      [](auto... x) { return in_expansion_range<Degree>(static_cast<double>(x)...); }, values);
+  if (in_range) return true;
   constexpr int lo = ExpansionRange<Degree>::lo;
   constexpr int hi = ExpansionRange<Degree>::hi;
   int e_min = hi;

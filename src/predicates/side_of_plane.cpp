@@ -38,6 +38,24 @@ Sign side_of_line_big(const HalfPlane& half_plane, Vec2 p) {
   return side_of_line_in<BigFloat>(half_plane, p);
 }
 
+// After the filter: out of line, so that the filter stays small and free of the stages'
+// setup.
+[[gnu::noinline]] Sign side_of_plane_exact(const Plane& h, Vec3 p) {
+  if (in_expansion_range<2>(h.a, h.b, h.c, h.d, p.x, p.y, p.z)) {
+    return side_of_plane_expansion(h, p);
+  }
+  return side_of_plane_big(h, p);
+}
+
+// After the filter: out of line, so that the filter stays small and free of the stages'
+// setup.
+[[gnu::noinline]] Sign side_of_line_exact(const HalfPlane& h, Vec2 p) {
+  if (in_expansion_range<2>(h.a, h.b, h.c, p.x, p.y)) {
+    return side_of_line_expansion(h, p);
+  }
+  return side_of_line_big(h, p);
+}
+
 }  // namespace detail
 
 // Filter. Every monomial of ((a x + b y) + c z) + d passes through at most k = 4 roundings
@@ -52,10 +70,7 @@ Sign side_of_plane(const Plane& h, Vec3 p) {
   const double errbound = kBound * permanent + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  if (detail::in_expansion_range<2>(std::array{h.a, h.b, h.c, h.d, p.x, p.y, p.z})) {
-    return detail::side_of_plane_expansion(h, p);
-  }
-  return detail::side_of_plane_big(h, p);
+  return detail::side_of_plane_exact(h, p);
 }
 
 // Filter as side_of_plane with k = 3 roundings: bound 4 eps * permanent.
@@ -67,10 +82,7 @@ Sign side_of_line(const HalfPlane& h, Vec2 p) {
   const double errbound = kBound * permanent + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  if (detail::in_expansion_range<2>(std::array{h.a, h.b, h.c, p.x, p.y})) {
-    return detail::side_of_line_expansion(h, p);
-  }
-  return detail::side_of_line_big(h, p);
+  return detail::side_of_line_exact(h, p);
 }
 
 }  // namespace contain::predicates

@@ -15,6 +15,8 @@
 #include "contain/geometry/plane.h"
 #include "contain/geometry/sphere.h"
 #include "contain/geometry/vec.h"
+#include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
 
 namespace contain::predicates::detail {
@@ -30,11 +32,9 @@ inline constexpr double kUnderflowGuard = DBL_MIN;
 
 [[nodiscard]] Sign orient2d_expansion(Vec2 a, Vec2 b, Vec2 c);
 [[nodiscard]] Sign orient2d_big(Vec2 a, Vec2 b, Vec2 c);
-[[nodiscard]] Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
 
 [[nodiscard]] Sign orient3d_expansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 [[nodiscard]] Sign orient3d_big(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
-[[nodiscard]] Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 [[nodiscard]] Sign side_of_plane_expansion(const Plane& plane, Vec3 p);
 [[nodiscard]] Sign side_of_plane_big(const Plane& plane, Vec3 p);
@@ -48,5 +48,12 @@ inline constexpr double kUnderflowGuard = DBL_MIN;
 
 [[nodiscard]] Sign cross_dot_expansion(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
 [[nodiscard]] Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
+
+/// The exact stages after the filter (range check, then expansion, rescaled expansion or big).
+[[nodiscard]] Sign side_of_sphere_exact(const Sphere& s, Vec3 p);
+[[nodiscard]] Sign side_of_circle_exact(const Circle& s, Vec2 p);
+[[nodiscard]] Sign cross_dot_exact(Vec3 a, Vec3 b, Vec3 p, Vec3 c);
+[[nodiscard]] Sign side_of_plane_exact(const Plane& h, Vec3 p);
+[[nodiscard]] Sign side_of_line_exact(const HalfPlane& h, Vec2 p);
 
 }  // namespace contain::predicates::detail

@@ -2,6 +2,9 @@
 /// \file
 /// Exact 2D orientation.
 
+#include <cfloat>
+#include <cmath>
+
 #include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
 
@@ -14,6 +17,32 @@ namespace contain::predicates {
 /// exact expansion arithmetic (Shewchuk 1997), and, where products could overflow or underflow
 /// (|coordinates| beyond ~2^±500), to exact big-integer arithmetic. Valid for every finite
 /// double; NaN or infinite input is a precondition violation (validated types never hold it).
-[[nodiscard]] Sign orient2d(Vec2 a, Vec2 b, Vec2 c);
+/// The filter is inline (a dozen flops, most calls end here); the exact stages are not.
+/// Rules and bounds: docs/robustness.md, "Predicates".
+[[nodiscard]] inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c);
+
+namespace detail {
+/// The exact stages of `orient2d`, out of line: expansion arithmetic, or big numbers when the
+/// input exponents leave its range.
+[[nodiscard]] Sign orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
+}  // namespace detail
+
+// Filter: Shewchuk's orient2d stage A (pivot c, the same determinant). Without underflow,
+// |error| <= (3 + 16 eps) eps (|detleft| + |detright|), the rounding of the bound included; the
+// coefficient is raised to (3 + 32 eps) eps to absorb the rounding of the added underflow guard
+// DBL_MIN, which covers the absolute error of the two products if they underflow. Overflow
+// makes the bound infinite or NaN, and then both comparisons fail. Contraction into FMAs only
+// removes roundings, so the bound holds with or without it.
+inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  constexpr double kEps = 0x1p-53;
+  constexpr double kBound = (3.0 + 32.0 * kEps) * kEps;
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  const double errbound = kBound * (std::fabs(detleft) + std::fabs(detright)) + DBL_MIN;
+  if (det > errbound) return Sign::positive;
+  if (-det > errbound) return Sign::negative;
+  return detail::orient2d_exact(a, b, c);
+}
 
 }  // namespace contain::predicates

@@ -2,6 +2,9 @@
 /// \file
 /// Exact 3D orientation.
 
+#include <cfloat>
+#include <cmath>
+
 #include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
 
@@ -12,6 +15,37 @@ namespace contain::predicates {
 /// (b - a) x (c - a) points to (where a, b, c look counter-clockwise); zero when coplanar.
 /// Note: this is the opposite sign convention from Shewchuk's orient3d. Filter + exact expansion
 /// fallback + big-integer fallback for extreme exponents, as `orient2d`.
-[[nodiscard]] Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+/// The filter is inline; the exact stages are not. Rules and bounds: docs/robustness.md.
+[[nodiscard]] inline Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+
+namespace detail {
+/// The exact stages of `orient3d`, out of line.
+[[nodiscard]] Sign orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+}  // namespace detail
+
+// Filter: Shewchuk's orient3d stage A (pivot d; his determinant is the negative of ours).
+// Without underflow, |error| <= (7 + 56 eps) eps * permanent, the rounding of the bound
+// included; raised to (7 + 64 eps) eps to absorb the rounding of the added underflow guard. An
+// underflowed 2x2 product is multiplied by one z difference, so the guard DBL_MIN is scaled by
+// 1 + |adz| + |bdz| + |cdz|. Overflow makes the bound infinite or NaN and the comparisons fail.
+inline Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  constexpr double kEps = 0x1p-53;
+  constexpr double kBound = (7.0 + 64.0 * kEps) * kEps;
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double abs_adz = std::fabs(adz), abs_bdz = std::fabs(bdz), abs_cdz = std::fabs(cdz);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * abs_adz +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * abs_bdz +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * abs_cdz;
+  const double errbound = kBound * permanent + DBL_MIN * (1.0 + abs_adz + abs_bdz + abs_cdz);
+  if (det > errbound) return Sign::negative;
+  if (-det > errbound) return Sign::positive;
+  return detail::orient3d_exact(a, b, c, d);
+}
 
 }  // namespace contain::predicates
