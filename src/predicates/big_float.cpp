@@ -1,6 +1,7 @@
 #include "predicates/big_float.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace contain::predicates::detail {
@@ -63,6 +64,7 @@ Limbs subtract(const Limbs& a, const Limbs& b) {
 }  // namespace
 
 BigFloat::BigFloat(double x) {
+  assert(std::isfinite(x) && "predicates take finite doubles only");
   if (x == 0.0) return;
   negative_ = x < 0.0;
   int e = 0;

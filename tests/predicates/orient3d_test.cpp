@@ -130,7 +130,7 @@ TEST(Orient3d, MatchesOracleOnMixedMagnitudes) {
 TEST(Orient3d, EvenPermutationsKeepAndOddPermutationsFlipTheSign) {
   CaseRng rng(0x3d05);
   Agreement agreement;
-  for (int i = 0; i < cases(450000); ++i) {
+  for (int i = 0; i < cases(480000); ++i) {
     // Mostly inside the expansion range, one case in eight at any scale.
     const Coplanar g =
         i % 8 == 0 ? exactly_coplanar(rng, -1074, 990) : exactly_coplanar(rng, -150, 150);
