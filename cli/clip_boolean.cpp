@@ -1,0 +1,88 @@
+// contain clip --subject A --clip B --op OP: the general polygon booleans.
+
+#include "clip_boolean.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "contain/io/geojson.h"
+#include "contain/io/region_io.h"
+#include "contain/io/svg.h"
+#include "contain/io/wkt.h"
+
+namespace contain::cli {
+namespace {
+
+std::string svg_of(const MultiPolygon& subject, const MultiPolygon& clip,
+                   const MultiPolygon& result) {
+  const std::vector<Ring> a = subject.all_rings(), b = clip.all_rings(), r = result.all_rings();
+  std::vector<Ring> all = a;
+  all.insert(all.end(), b.begin(), b.end());
+  io::SvgCanvas canvas(bounding_box(all), 800);
+  canvas.title("contain clip: subject, clip and result");
+  canvas.region(
+      a, {.fill = "#1f77b4", .stroke = "#1f77b4", .stroke_width = 1.0, .fill_opacity = 0.15});
+  canvas.region(
+      b, {.fill = "#ff7f0e", .stroke = "#ff7f0e", .stroke_width = 1.0, .fill_opacity = 0.15});
+  canvas.region(r,
+                {.fill = "#2ca02c", .stroke = "#145214", .stroke_width = 2.0, .fill_opacity = 0.5});
+  canvas.legend("#1f77b4", "subject");
+  canvas.legend("#ff7f0e", "clip");
+  canvas.legend("#2ca02c", "result");
+  return canvas.str();
+}
+
+}  // namespace
+
+void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& o) {
+  auto* subject = cmd.add_option("--subject", o.subject,
+                                 "subject region (.wkt or .geojson) of a polygon boolean")
+                      ->option_text("FILE");
+  auto* clip =
+      cmd.add_option("--clip", o.clip, "clip region (.wkt or .geojson)")->option_text("FILE");
+  const std::map<std::string, clip::Op> ops{{"intersection", clip::Op::intersection},
+                                            {"union", clip::Op::union_},
+                                            {"difference", clip::Op::difference},
+                                            {"xor", clip::Op::xor_}};
+  auto* op = cmd.add_option("--op", o.op, "the boolean: subject op clip")
+                 ->transform(CLI::CheckedTransformer(ops, CLI::ignore_case))
+                 ->option_text("intersection|union|difference|xor");
+  subject->needs(clip);
+  subject->needs(op);
+  clip->needs(subject);
+  op->needs(subject);
+  add_fill_option(cmd, o.fill);
+  cmd.add_option("--format", o.format, "output of a boolean: wkt (default), geojson or svg")
+      ->check(CLI::IsMember({"wkt", "geojson", "svg"}, CLI::ignore_case))
+      ->option_text("wkt|geojson|svg");
+}
+
+bool clip_boolean_requested(const ClipBooleanOptions& o) {
+  return !o.subject.empty();
+}
+
+int run_clip_boolean(const ClipBooleanOptions& o, const std::string& out) {
+  auto subject = io::read_region(o.subject);
+  if (!subject) return report(subject.error());
+  auto clip_region = io::read_region(o.clip);
+  if (!clip_region) return report(clip_region.error());
+  const MultiPolygon result =
+      clip::polygon_boolean(*subject, *clip_region, {.op = o.op, .fill = o.fill});
+  std::string format = o.format;
+  for (char& c : format)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string text;
+  if (format == "geojson") {
+    text = result.polygons.size() == 1 ? io::write_geojson(result.polygons[0])
+                                       : io::write_geojson(result);
+  } else if (format == "svg") {
+    text = svg_of(*subject, *clip_region, result);
+  } else {
+    text = result.polygons.size() == 1 ? io::write_wkt(result.polygons[0]) : io::write_wkt(result);
+  }
+  text += '\n';
+  return emit(text, out);
+}
+
+}  // namespace contain::cli

@@ -1,0 +1,32 @@
+#pragma once
+// The polygon-boolean branch of `contain clip` (--subject/--clip/--op), kept apart from the
+// segment, polygon and mesh branches of cli/clip.cpp, which calls these.
+
+#include <string>
+
+#include "common.h"
+#include "contain/clip/polygon_boolean.h"
+
+namespace contain::cli {
+
+struct ClipBooleanOptions {
+  std::string subject;
+  std::string clip;
+  clip::Op op = clip::Op::intersection;
+  Fill fill = Fill::even_odd;
+  std::string format = "wkt";
+};
+
+/// Adds --subject, --clip, --op, --fill and --format to the `clip` subcommand; --clip and --op
+/// are required together with --subject.
+void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& options);
+
+/// True when the command line asked for a boolean (--subject given).
+[[nodiscard]] bool clip_boolean_requested(const ClipBooleanOptions& options);
+
+/// Reads both regions, computes the boolean and writes it to `out` (stdout when empty or "-"):
+/// WKT (POLYGON, MULTIPOLYGON or their EMPTY), GeoJSON, or an SVG of subject, clip and result.
+/// Returns the exit code.
+[[nodiscard]] int run_clip_boolean(const ClipBooleanOptions& options, const std::string& out);
+
+}  // namespace contain::cli

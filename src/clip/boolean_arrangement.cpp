@@ -1,0 +1,421 @@
+// The arrangement behind the polygon booleans.
+//
+// 1. Noding (boolean_noding.cpp): every input edge becomes a chain of pieces that meet other
+//    pieces only at shared endpoints.
+// 2. Graph: equal points merge into vertices (sorted by (x, y)), equal pieces into edges whose
+//    multiplicities in A and B add up (opposite directions cancel); an edge that no operand
+//    counts is dropped unless it is part of an open path. Around every vertex the outgoing
+//    half-edges are sorted counter-clockwise, exactly: the half-plane of the direction (signs of
+//    coordinate differences, exact for doubles), then orient2d.
+// 3. Faces: the face left of h = u -> v continues with the half-edge of v that is the next
+//    clockwise from v -> u. A face left of h has winding numbers w(left) = w(right) + m(h) for
+//    the multiplicities m(h) of h. Per connected component, the face around it is found at its
+//    lowest (x, y) vertex v0 (all its edges leave v0 into x >= v0.x), and its winding numbers
+//    are those of v0 itself with respect to all other edges: a ray from v0 towards -x counted
+//    with the half-open rule and exact orient2d (no edge of the component meets the open ray,
+//    and no edge of another component passes through v0). The rest follows by the relation
+//    above, breadth first over the faces.
+// 4. Extraction: a half-edge is a boundary of the result when the face on its left is kept and
+//    the one on its right is not. Boundary chains take at each vertex the first boundary
+//    half-edge clockwise from the reverse of the arriving one (the tightest turn, which keeps
+//    two kept sectors meeting at a vertex apart); a chain that revisits a vertex is split there,
+//    so every ring is simple. Counter-clockwise rings are shells, clockwise ones holes, and a
+//    hole joins the shell whose kept faces are connected to its own across non-boundary edges.
+
+#include "clip/boolean_arrangement.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+#include "contain/predicates/orient2d.h"
+
+namespace contain::clip::detail {
+namespace {
+
+using predicates::orient2d;
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+bool lex_less(Vec2 a, Vec2 b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+// 0 for directions in [0, pi), 1 for [pi, 2 pi).
+int half_of(Vec2 o, Vec2 p) {
+  return (p.y > o.y || (p.y == o.y && p.x > o.x)) ? 0 : 1;
+}
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// Both pieces cross the line y = c (lo.y <= c < hi.y) and meet at most in endpoints: true when
+// t crosses it right of s. The higher of the two lower endpoints lies within the other's y span,
+// and the pieces cannot change sides between there and the line.
+bool crosses_right_of(Vec2 s_lo, Vec2 s_hi, Vec2 t_lo, Vec2 t_hi) {
+  if (t_lo.y >= s_lo.y) {
+    Sign o = orient2d(s_lo, s_hi, t_lo);
+    if (o == Sign::zero) o = orient2d(s_lo, s_hi, t_hi);  // shared lower endpoint
+    return o == Sign::negative;
+  }
+  Sign o = orient2d(t_lo, t_hi, s_lo);
+  if (o == Sign::zero) o = orient2d(t_lo, t_hi, s_hi);
+  return o == Sign::positive;  // s left of t
+}
+
+}  // namespace
+
+void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label) {
+  for (const Ring& ring : rings) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = ring[i], b = ring[(i + 1) % n];
+      if (a == b) continue;
+      segments.push_back({a, b});
+      labels.push_back(label);
+    }
+  }
+}
+
+Arrangement::Arrangement(const ArrangementInput& input) {
+  noded_ = node_segments(input.segments);
+  crossings = noded_.crossings;
+  rounds = noded_.rounds;
+  converged = noded_.converged;
+  build_graph(input);
+  label_faces();
+}
+
+void Arrangement::build_graph(const ArrangementInput& input) {
+  const std::vector<Vec2>& pts = noded_.points;
+  const std::size_t np = pts.size();
+  const std::size_t nchains = input.segments.size();
+  // Vertices: equal points merge.
+  std::vector<std::uint32_t> order(np);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t l, std::uint32_t r) { return lex_less(pts[l], pts[r]); });
+  std::vector<std::uint32_t> vid(np);
+  vertex_.clear();
+  for (std::size_t i = 0; i < np; ++i) {
+    if (i == 0 || pts[order[i]] != pts[order[i - 1]]) vertex_.push_back(pts[order[i]]);
+    vid[order[i]] = static_cast<std::uint32_t>(vertex_.size() - 1);
+  }
+  origin_.assign(vertex_.size(), kNone);
+  for (std::size_t c = nchains; c-- > 0;)
+    origin_[vid[noded_.first[c]]] = static_cast<std::uint32_t>(c);
+  // Pieces, keyed by their vertex pair, merged into edges.
+  struct Piece {
+    std::uint64_t key;
+    std::uint32_t piece;
+    std::int32_t a, b;  // multiplicity along key's u -> v
+    bool open;
+    bool flipped;
+  };
+  std::vector<Piece> pieces;
+  pieces.reserve(np - nchains);
+  for (std::size_t c = 0; c < nchains; ++c) {
+    const SegmentLabel label = input.labels[c];
+    for (std::uint32_t k = noded_.first[c]; k + 1 < noded_.first[c + 1]; ++k) {
+      std::uint32_t u = vid[k], v = vid[k + 1];
+      const bool flip = v < u;
+      if (flip) std::swap(u, v);
+      const std::int32_t s = flip ? -1 : 1;
+      pieces.push_back({(std::uint64_t{u} << 32) | v, static_cast<std::uint32_t>(k - c),
+                        s * label.a, s * label.b, label.open, flip});
+    }
+  }
+  std::sort(pieces.begin(), pieces.end(),
+            [](const Piece& l, const Piece& r) { return l.key < r.key; });
+  piece_half_.assign(pieces.size(), -1);
+  edge_.clear();
+  for (std::size_t i = 0; i < pieces.size();) {
+    std::size_t j = i;
+    std::int32_t a = 0, b = 0;
+    bool open = false;
+    for (; j < pieces.size() && pieces[j].key == pieces[i].key; ++j) {
+      a += pieces[j].a;
+      b += pieces[j].b;
+      open = open || pieces[j].open;
+    }
+    if (a != 0 || b != 0 || open) {
+      const auto e = static_cast<std::int32_t>(edge_.size());
+      edge_.push_back({static_cast<std::uint32_t>(pieces[i].key >> 32),
+                       static_cast<std::uint32_t>(pieces[i].key), a, b});
+      for (std::size_t k = i; k < j; ++k)
+        piece_half_[pieces[k].piece] = 2 * e + (pieces[k].flipped ? 1 : 0);
+    }
+    i = j;
+  }
+  edges = static_cast<std::int64_t>(edge_.size());
+  // Outgoing half-edges per vertex, sorted counter-clockwise from +x.
+  const std::size_t nv = vertex_.size();
+  out_first_.assign(nv + 1, 0);
+  for (const Edge& e : edge_) {
+    ++out_first_[e.u + 1];
+    ++out_first_[e.v + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    out_first_[v + 1] += out_first_[v];
+  out_.resize(2 * edge_.size());
+  {
+    std::vector<std::uint32_t> fill(out_first_.begin(), out_first_.end() - 1);
+    for (std::size_t e = 0; e < edge_.size(); ++e) {
+      out_[fill[edge_[e].u]++] = static_cast<std::int32_t>(2 * e);
+      out_[fill[edge_[e].v]++] = static_cast<std::int32_t>(2 * e + 1);
+    }
+  }
+  pos_.resize(2 * edge_.size());
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto begin = out_.begin() + out_first_[v], end = out_.begin() + out_first_[v + 1];
+    const Vec2 o = vertex_[v];
+    if (end - begin > 1) {
+      std::sort(begin, end, [&](std::int32_t l, std::int32_t r) {
+        const Vec2 pl = vertex_[head(l)], pr = vertex_[head(r)];
+        const int hl = half_of(o, pl), hr = half_of(o, pr);
+        if (hl != hr) return hl < hr;
+        return orient2d(o, pl, pr) == Sign::positive;
+      });
+    }
+    for (auto it = begin; it != end; ++it)
+      pos_[*it] = static_cast<std::uint32_t>(it - begin);
+  }
+}
+
+std::int32_t Arrangement::next(std::int32_t h) const {
+  const std::uint32_t v = head(h);
+  const std::uint32_t b = out_first_[v], deg = out_first_[v + 1] - b;
+  const std::uint32_t p = pos_[h ^ 1];
+  return out_[b + (p + deg - 1) % deg];
+}
+
+void Arrangement::label_faces() {
+  const std::size_t nh = 2 * edge_.size();
+  face_.assign(nh, -1);
+  std::vector<std::int32_t> face_start;
+  for (std::size_t h = 0; h < nh; ++h) {
+    if (face_[h] >= 0) continue;
+    const auto f = static_cast<std::int32_t>(face_start.size());
+    face_start.push_back(static_cast<std::int32_t>(h));
+    auto g = static_cast<std::int32_t>(h);
+    do {
+      face_[g] = f;
+      g = next(g);
+    } while (g != static_cast<std::int32_t>(h));
+  }
+  const std::size_t nf = face_start.size();
+  face_a_.assign(nf, 0);
+  face_b_.assign(nf, 0);
+  std::vector<char> done(nf, 0);
+  // Components of the graph; vertices in (x, y) order meet each component first at its lowest.
+  const std::size_t nv = vertex_.size();
+  UnionFind comp(nv);
+  for (const Edge& e : edge_)
+    comp.unite(e.u, e.v);
+  std::vector<char> seen(nv, 0);
+  std::vector<std::int32_t> queue;
+  for (std::size_t v0 = 0; v0 < nv; ++v0) {
+    const std::uint32_t deg = out_first_[v0 + 1] - out_first_[v0];
+    if (deg == 0) continue;
+    const std::uint32_t root = comp.find(static_cast<std::uint32_t>(v0));
+    if (seen[root]) continue;
+    seen[root] = 1;
+    // The outer face is left of the last half-edge of the upper half-plane (or the last one).
+    const Vec2 o = vertex_[v0];
+    std::uint32_t upper = 0;
+    for (std::uint32_t i = 0; i < deg; ++i) {
+      if (half_of(o, vertex_[head(out_[out_first_[v0] + i])]) == 0) ++upper;
+    }
+    const std::int32_t h0 = out_[out_first_[v0] + (upper > 0 ? upper - 1 : deg - 1)];
+    // Winding numbers of v0: edges crossing the open ray towards -x (half-open rule: an
+    // endpoint on the ray's line counts as below it).
+    int wa = 0, wb = 0;
+    std::int32_t nearest = -1;  // the edge hit first by the ray: the face around C is beside it
+    Vec2 near_lo, near_hi;
+    for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
+      const Edge& e = edge_[ei];
+      const Vec2 p = vertex_[e.u], q = vertex_[e.v];
+      const bool pb = p.y <= o.y, qb = q.y <= o.y;
+      if (pb == qb) continue;
+      if (p.x >= o.x && q.x >= o.x) continue;
+      // Upward orientation lo -> hi; the crossing is left of o when o is right of lo -> hi.
+      const bool up = pb;  // p below: u -> v goes up
+      const Vec2 lo = up ? p : q, hi = up ? q : p;
+      if (orient2d(lo, hi, o) != Sign::negative) continue;
+      // Crossing from far left to o over an upward edge goes from its left to its right.
+      wa += up ? -e.a : e.a;
+      wb += up ? -e.b : e.b;
+      if (nearest < 0 || crosses_right_of(near_lo, near_hi, lo, hi)) {
+        nearest = static_cast<std::int32_t>(ei);
+        near_lo = lo;
+        near_hi = hi;
+      }
+    }
+    const std::int32_t f0 = face_[h0];
+    if (nearest >= 0) {
+      // East of the upward edge lo -> hi is right of it: the face left of the reverse half-edge.
+      const bool up = vertex_[edge_[nearest].u] == near_lo;
+      face_links_.emplace_back(f0, face_[2 * nearest + (up ? 1 : 0)]);
+    }
+    face_a_[f0] = wa;
+    face_b_[f0] = wb;
+    done[f0] = 1;
+    queue.assign(1, f0);
+    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+      const std::int32_t f = queue[qi];
+      const std::int32_t start = face_start[f];
+      std::int32_t g = start;
+      do {
+        const std::int32_t r = face_[g ^ 1];
+        if (!done[r]) {
+          const Edge& e = edge_[g >> 1];
+          const int s = (g & 1) ? -1 : 1;
+          face_a_[r] = face_a_[f] - s * e.a;
+          face_b_[r] = face_b_[f] - s * e.b;
+          done[r] = 1;
+          queue.push_back(r);
+        }
+        g = next(g);
+      } while (g != start);
+    }
+  }
+}
+
+MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) const {
+  const std::size_t nf = face_a_.size();
+  const std::size_t nh = face_.size();
+  std::vector<char> in(nf);
+  for (std::size_t f = 0; f < nf; ++f)
+    in[f] = keep(face_a_[f], face_b_[f]) ? 1 : 0;
+  auto boundary = [&](std::int32_t h) { return in[face_[h]] && !in[face_[h ^ 1]]; };
+  // Regions: kept faces connected across kept-kept edges.
+  UnionFind region(nf);
+  for (const auto& [f, g] : face_links_) {
+    if (in[f]) region.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
+  }
+  for (std::size_t h = 0; h < nh; h += 2) {
+    if (in[face_[h]] && in[face_[h + 1]]) {
+      region.unite(static_cast<std::uint32_t>(face_[h]), static_cast<std::uint32_t>(face_[h + 1]));
+    }
+  }
+  struct Loop {
+    std::vector<std::uint32_t> vertices;
+    std::uint32_t region;
+    bool shell;
+    std::uint32_t key;  // earliest input segment among its vertices, else kNone
+  };
+  std::vector<Loop> loops;
+  std::vector<char> used(nh, 0);
+  std::vector<std::int32_t> stack;
+  std::vector<std::int32_t> mark(vertex_.size(), -1);
+  auto emit = [&](std::span<const std::int32_t> hs) {
+    Loop loop;
+    loop.vertices.reserve(hs.size());
+    for (std::int32_t h : hs)
+      loop.vertices.push_back(tail(h));
+    loop.region = region.find(static_cast<std::uint32_t>(face_[hs[0]]));
+    // The lowest vertex (ids are in (x, y) order) is convex: its turn gives the orientation.
+    const std::size_t n = loop.vertices.size();
+    std::size_t m = 0, k = 0;
+    std::uint32_t key = kNone;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (loop.vertices[i] < loop.vertices[m]) m = i;
+      if (origin_[loop.vertices[i]] < key) {
+        key = origin_[loop.vertices[i]];
+        k = i;
+      }
+    }
+    loop.shell = orient2d(vertex_[loop.vertices[(m + n - 1) % n]], vertex_[loop.vertices[m]],
+                          vertex_[loop.vertices[(m + 1) % n]]) == Sign::positive;
+    loop.key = key;
+    if (key == kNone) k = m;
+    std::rotate(loop.vertices.begin(), loop.vertices.begin() + static_cast<std::ptrdiff_t>(k),
+                loop.vertices.end());
+    loops.push_back(std::move(loop));
+  };
+  for (std::size_t h0 = 0; h0 < nh; ++h0) {
+    const auto start = static_cast<std::int32_t>(h0);
+    if (used[h0] || !boundary(start)) continue;
+    stack.clear();
+    std::int32_t h = start;
+    do {
+      used[h] = 1;
+      const std::uint32_t x = tail(h);
+      if (mark[x] >= 0) {
+        const auto from = static_cast<std::size_t>(mark[x]);
+        emit(std::span<const std::int32_t>(stack).subspan(from));
+        for (std::size_t i = from; i < stack.size(); ++i)
+          mark[tail(stack[i])] = -1;
+        stack.resize(from);
+      }
+      mark[x] = static_cast<std::int32_t>(stack.size());
+      stack.push_back(h);
+      // Next boundary half-edge: the first clockwise from the reverse of h.
+      const std::uint32_t v = head(h);
+      const std::uint32_t b = out_first_[v], deg = out_first_[v + 1] - b;
+      std::uint32_t p = pos_[h ^ 1];
+      std::int32_t g = -1;
+      for (std::uint32_t i = 0; i < deg; ++i) {
+        p = (p + deg - 1) % deg;
+        if (boundary(out_[b + p])) {
+          g = out_[b + p];
+          break;
+        }
+      }
+      h = g;
+    } while (h != start && h >= 0);
+    emit(stack);
+    for (std::int32_t s : stack)
+      mark[tail(s)] = -1;
+  }
+  // Polygons: one shell per region, its holes after it.
+  std::vector<std::int32_t> shell_of(nf, -1);
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    if (loops[i].shell) shell_of[loops[i].region] = static_cast<std::int32_t>(i);
+  }
+  std::vector<std::size_t> order(loops.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  auto rank = [&](std::size_t i) { return std::pair{loops[i].key, loops[i].vertices.front()}; };
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t l, std::size_t r) { return rank(l) < rank(r); });
+  MultiPolygon out;
+  std::vector<std::int32_t> polygon_of(loops.size(), -1);
+  auto ring_of = [&](const Loop& loop) {
+    Ring ring;
+    ring.reserve(loop.vertices.size());
+    for (std::uint32_t v : loop.vertices)
+      ring.push_back(vertex_[v]);
+    return ring;
+  };
+  for (std::size_t i : order) {
+    if (!loops[i].shell) continue;
+    polygon_of[i] = static_cast<std::int32_t>(out.polygons.size());
+    out.polygons.push_back(Polygon{{ring_of(loops[i])}});
+  }
+  for (std::size_t i : order) {
+    if (loops[i].shell) continue;
+    const std::int32_t s = shell_of[loops[i].region];
+    if (s < 0) continue;  // cannot happen for a bounded kept region
+    out.polygons[polygon_of[s]].rings.push_back(ring_of(loops[i]));
+  }
+  return out;
+}
+
+}  // namespace contain::clip::detail

@@ -1,0 +1,85 @@
+#pragma once
+// The noded arrangement of the booleans: a planar graph of the input edges of A and B (and of
+// open paths), each edge carrying its multiplicity in A and in B, every face its winding numbers.
+// Private to polygon_boolean and polyline_clip.
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "clip/boolean_noding.h"
+#include "contain/geometry/polygon.h"
+
+namespace contain::clip::detail {
+
+/// What one input segment adds: +1 / 0 per operand along its direction, or an open path piece.
+struct SegmentLabel {
+  std::int32_t a = 0;
+  std::int32_t b = 0;
+  bool open = false;
+};
+
+/// Input segments of A (label {1, 0}) and B ({0, 1}), zero-length edges left out.
+struct ArrangementInput {
+  std::vector<NodingInput> segments;
+  std::vector<SegmentLabel> labels;
+  void add_rings(std::span<const Ring> rings, SegmentLabel label);
+};
+
+class Arrangement {
+ public:
+  /// Nodes the segments and builds the graph, its faces and their winding numbers.
+  explicit Arrangement(const ArrangementInput& input);
+
+  /// The result region: faces where `keep(w_a, w_b)`, as OGC-valid polygons.
+  [[nodiscard]] MultiPolygon extract(const std::function<bool(int, int)>& keep) const;
+
+  /// For each input segment, its pieces in order: a half-edge each (-1 for a piece dropped
+  /// because no operand counts it and it is not open).
+  [[nodiscard]] std::span<const std::int32_t> pieces_of(std::size_t segment) const {
+    return {piece_half_.data() + noded_.first[segment] - segment,
+            noded_.first[segment + 1] - noded_.first[segment] - 1};
+  }
+  /// Winding numbers of the faces left and right of half-edge h.
+  [[nodiscard]] int left_a(std::int32_t h) const { return face_a_[face_[h]]; }
+  [[nodiscard]] int left_b(std::int32_t h) const { return face_b_[face_[h]]; }
+  [[nodiscard]] Vec2 tail_point(std::int32_t h) const { return vertex_[tail(h)]; }
+  [[nodiscard]] Vec2 head_point(std::int32_t h) const { return vertex_[head(h)]; }
+
+  std::int64_t crossings = 0;
+  std::int64_t rounds = 0;
+  std::int64_t edges = 0;
+  bool converged = true;
+
+ private:
+  struct Edge {
+    std::uint32_t u, v;
+    std::int32_t a, b;  // multiplicity along u -> v
+  };
+  [[nodiscard]] std::uint32_t tail(std::int32_t h) const {
+    return (h & 1) ? edge_[h >> 1].v : edge_[h >> 1].u;
+  }
+  [[nodiscard]] std::uint32_t head(std::int32_t h) const {
+    return (h & 1) ? edge_[h >> 1].u : edge_[h >> 1].v;
+  }
+  [[nodiscard]] std::int32_t next(std::int32_t h) const;
+  void build_graph(const ArrangementInput& input);
+  void label_faces();
+
+  Noded noded_;
+  std::vector<Vec2> vertex_;           // sorted by (x, y)
+  std::vector<std::uint32_t> origin_;  // first input segment starting at the vertex, or max
+  std::vector<Edge> edge_;
+  std::vector<std::int32_t> piece_half_;  // per noded piece (chain point but the last)
+  std::vector<std::uint32_t> out_first_;  // CSR of outgoing half-edges, counter-clockwise
+  std::vector<std::int32_t> out_;
+  std::vector<std::uint32_t> pos_;  // position of a half-edge in its tail's list
+  std::vector<std::int32_t> face_;  // face left of a half-edge
+  std::vector<std::int32_t> face_a_, face_b_;
+  // The face around a component and the face of another component that surrounds it: one face.
+  std::vector<std::pair<std::int32_t, std::int32_t>> face_links_;
+};
+
+}  // namespace contain::clip::detail

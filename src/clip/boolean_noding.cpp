@@ -1,0 +1,204 @@
+// Noding by "split until no new crossing".
+//
+// Round r takes the current pieces (consecutive points of every chain) and tests, by a sweep over
+// x intervals, every pair of pieces whose boxes overlap and of which at least one is new (made in
+// round r - 1, or an input segment in round 1); a pair of old pieces was tested when the younger
+// of the two was new and gave nothing then. A test is decided by the four exact orient2d signs:
+// - disjoint: nothing;
+// - collinear overlap: each piece is split at the other's endpoints that lie strictly inside it;
+// - an endpoint of one on the other (touching, T junction): the other is split there;
+// - a proper crossing: the crossing point is computed in long double, rounded to doubles and
+//   clamped to the intersection of both boxes, and both pieces are split there.
+// Splits of input doubles are exact. A rounded crossing point lies off both lines by at most an
+// ulp, so its pieces can meet a neighbour they did not meet before: those pieces are new and are
+// tested again. Rounds stop when one finds nothing; every piece then meets every other at most
+// in shared endpoints, or coincides with it exactly.
+
+#include "clip/boolean_noding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "contain/predicates/orient2d.h"
+
+namespace contain::clip::detail {
+namespace {
+
+using predicates::orient2d;
+
+struct Split {
+  std::uint32_t piece;  // index in points of the piece's first point
+  Vec2 at;
+};
+
+struct Item {
+  double xmin, xmax, ymin, ymax;
+  std::uint32_t piece;
+  bool fresh;
+};
+
+bool lex_less(Vec2 a, Vec2 b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+// x strictly between a and b, given that a, b, x are collinear.
+bool strictly_inside(Vec2 a, Vec2 b, Vec2 x) {
+  if (x == a || x == b) return false;
+  return lex_less(a, b) ? (lex_less(a, x) && lex_less(x, b)) : (lex_less(b, x) && lex_less(x, a));
+}
+
+Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
+  using L = long double;
+  const L dpx = L(p1.x) - L(p0.x), dpy = L(p1.y) - L(p0.y);
+  const L dqx = L(q1.x) - L(q0.x), dqy = L(q1.y) - L(q0.y);
+  const L den = dpx * dqy - dpy * dqx;
+  const L num = (L(q0.x) - L(p0.x)) * dqy - (L(q0.y) - L(p0.y)) * dqx;
+  const L t = num / den;
+  Vec2 x{static_cast<double>(L(p0.x) + t * dpx), static_cast<double>(L(p0.y) + t * dpy)};
+  // The exact crossing lies in both boxes; keep the rounded one there too.
+  const double lox = std::max(std::min(p0.x, p1.x), std::min(q0.x, q1.x));
+  const double hix = std::min(std::max(p0.x, p1.x), std::max(q0.x, q1.x));
+  const double loy = std::max(std::min(p0.y, p1.y), std::min(q0.y, q1.y));
+  const double hiy = std::min(std::max(p0.y, p1.y), std::max(q0.y, q1.y));
+  x.x = std::clamp(x.x, lox, hix);
+  x.y = std::clamp(x.y, loy, hiy);
+  return x;
+}
+
+void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t,
+               std::vector<Split>& splits, std::int64_t& crossings) {
+  const Vec2 p0 = pts[s], p1 = pts[s + 1], q0 = pts[t], q1 = pts[t + 1];
+  const Sign o1 = orient2d(p0, p1, q0);
+  const Sign o2 = orient2d(p0, p1, q1);
+  if (o1 == o2 && o1 != Sign::zero) return;
+  const Sign o3 = orient2d(q0, q1, p0);
+  const Sign o4 = orient2d(q0, q1, p1);
+  if (o3 == o4 && o3 != Sign::zero) return;
+  if (o1 == Sign::zero && o2 == Sign::zero) {
+    // Collinear: boxes overlap (the sweep checked), so the pieces overlap or touch.
+    if (strictly_inside(p0, p1, q0)) splits.push_back({s, q0});
+    if (strictly_inside(p0, p1, q1)) splits.push_back({s, q1});
+    if (strictly_inside(q0, q1, p0)) splits.push_back({t, p0});
+    if (strictly_inside(q0, q1, p1)) splits.push_back({t, p1});
+    return;
+  }
+  // Not parallel. A zero sign puts that endpoint on the other piece (the opposite pair of signs
+  // is not of one strict sign), and that endpoint is the only common point.
+  bool touched = false;
+  if (o1 == Sign::zero) {
+    touched = true;
+    if (q0 != p0 && q0 != p1) splits.push_back({s, q0});
+  }
+  if (o2 == Sign::zero) {
+    touched = true;
+    if (q1 != p0 && q1 != p1) splits.push_back({s, q1});
+  }
+  if (o3 == Sign::zero) {
+    touched = true;
+    if (p0 != q0 && p0 != q1) splits.push_back({t, p0});
+  }
+  if (o4 == Sign::zero) {
+    touched = true;
+    if (p1 != q0 && p1 != q1) splits.push_back({t, p1});
+  }
+  if (touched) return;
+  const Vec2 x = crossing_point(p0, p1, q0, q1);
+  ++crossings;
+  if (x != p0 && x != p1) splits.push_back({s, x});
+  if (x != q0 && x != q1) splits.push_back({t, x});
+}
+
+}  // namespace
+
+Noded node_segments(std::span<const NodingInput> segments) {
+  Noded out;
+  const auto n = static_cast<std::uint32_t>(segments.size());
+  out.points.reserve(2 * n);
+  out.first.reserve(n + 1);
+  for (const NodingInput& s : segments) {
+    out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
+    out.points.push_back(s.a);
+    out.points.push_back(s.b);
+  }
+  out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
+  // fresh[k]: the piece starting at points[k] is new this round.
+  std::vector<char> fresh(out.points.size(), 1);
+  std::vector<Item> items;
+  std::vector<std::uint32_t> active;
+  std::vector<Split> splits;
+  constexpr int kMaxRounds = 256;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    ++out.rounds;
+    items.clear();
+    for (std::uint32_t c = 0; c < n; ++c) {
+      for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k) {
+        const Vec2 a = out.points[k], b = out.points[k + 1];
+        items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
+                         std::max(a.y, b.y), k, fresh[k] != 0});
+      }
+    }
+    std::sort(items.begin(), items.end(),
+              [](const Item& l, const Item& r) { return l.xmin < r.xmin; });
+    splits.clear();
+    active.clear();
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+      const Item& it = items[i];
+      std::size_t w = 0;
+      for (std::size_t r = 0; r < active.size(); ++r) {
+        const Item& jt = items[active[r]];
+        if (jt.xmax < it.xmin) continue;  // left behind for good
+        active[w++] = active[r];
+        if (!(it.fresh || jt.fresh)) continue;
+        if (jt.ymax < it.ymin || it.ymax < jt.ymin) continue;
+        test_pair(out.points, jt.piece, it.piece, splits, out.crossings);
+      }
+      active.resize(w);
+      active.push_back(i);
+    }
+    if (splits.empty()) return out;
+    // Insert the splits, ordered along their piece; the pieces they make are new.
+    std::sort(splits.begin(), splits.end(), [&](const Split& l, const Split& r) {
+      if (l.piece != r.piece) return l.piece < r.piece;
+      const Vec2 a = out.points[l.piece], d = out.points[l.piece + 1] - a;
+      const double tl = dot(l.at - a, d), tr = dot(r.at - a, d);
+      if (tl != tr) return tl < tr;
+      return lex_less(l.at, r.at);
+    });
+    std::vector<Vec2> points;
+    std::vector<std::uint32_t> first;
+    std::vector<char> next_fresh;
+    points.reserve(out.points.size() + splits.size());
+    next_fresh.reserve(out.points.size() + splits.size());
+    first.reserve(n + 1);
+    std::size_t si = 0;
+    for (std::uint32_t c = 0; c < n; ++c) {
+      first.push_back(static_cast<std::uint32_t>(points.size()));
+      const std::uint32_t end = out.first[c + 1];
+      for (std::uint32_t k = out.first[c]; k < end; ++k) {
+        points.push_back(out.points[k]);
+        next_fresh.push_back(0);
+        if (si < splits.size() && splits[si].piece == k) {
+          next_fresh.back() = 1;
+          const Vec2 a = out.points[k], b = out.points[k + 1];
+          for (; si < splits.size() && splits[si].piece == k; ++si) {
+            const Vec2 x = splits[si].at;
+            if (x == a || x == b || x == points.back()) continue;
+            points.push_back(x);
+            next_fresh.push_back(1);
+          }
+        }
+      }
+    }
+    first.push_back(static_cast<std::uint32_t>(points.size()));
+    out.points = std::move(points);
+    out.first = std::move(first);
+    fresh = std::move(next_fresh);
+  }
+  out.converged = false;
+  return out;
+}
+
+}  // namespace contain::clip::detail

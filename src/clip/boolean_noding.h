@@ -1,0 +1,36 @@
+#pragma once
+// Noding of a set of segments: every segment becomes a chain of pieces such that no two pieces
+// of any chains meet except at shared endpoints (they may coincide exactly: the arrangement
+// merges them). Private to the polygon booleans and the polyline clipper.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contain/geometry/vec.h"
+
+namespace contain::clip::detail {
+
+struct NodingInput {
+  Vec2 a;
+  Vec2 b;
+};
+
+/// Chains in compressed rows: chain i is points[first[i]] .. points[first[i + 1] - 1], from the
+/// input segment's a to its b (both bit for bit).
+struct Noded {
+  std::vector<Vec2> points;
+  std::vector<std::uint32_t> first;
+  std::int64_t crossings = 0;
+  std::int64_t rounds = 0;
+  bool converged = true;
+};
+
+/// Splits the segments (none of zero length) until no two pieces cross, touch or overlap except
+/// at shared endpoints. Touching points and overlap ends are input doubles (exact splits); a
+/// proper crossing point is computed in extended precision, rounded to doubles and clamped to
+/// both segments' boxes, and the pieces through it are checked again in the next round (rule
+/// clip-noding, docs/robustness.md). Every decision is an exact orient2d sign.
+[[nodiscard]] Noded node_segments(std::span<const NodingInput> segments);
+
+}  // namespace contain::clip::detail
