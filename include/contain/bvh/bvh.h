@@ -1,0 +1,190 @@
+#pragma once
+/// \file
+/// A bounding volume hierarchy over axis-aligned boxes: flat nodes in one vector with int32
+/// indices, built once with the binned surface area heuristic, queried with visitors that can
+/// stop early. Items are any boxed things (triangles of a mesh, whole objects of a scene); the
+/// hierarchy knows only their boxes, so exact tests stay with the caller (broad phase apart from
+/// narrow phase).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "contain/geometry/box.h"
+
+namespace contain::bvh {
+
+/// One node of a `Bvh`. Nodes are stored depth first: the first child of an inner node is the
+/// node right after it, the second child is `nodes()[first]`.
+struct Node {
+  Box3 box;                ///< closed box of every item below
+  std::int32_t first = 0;  ///< leaf: first position in `items()`; inner: index of the 2nd child
+  std::int32_t count = 0;  ///< leaf: number of items (> 0); inner: 0
+  [[nodiscard]] constexpr bool is_leaf() const { return count > 0; }
+};
+
+/// How a `Bvh` is built (binned SAH, Wald 2007).
+struct BuildOptions {
+  /// Bins per axis of the centroid bounds in the SAH sweep.
+  int bins = 16;
+  /// A node with at most this many items may become a leaf ...
+  int max_leaf_items = 4;
+  /// ... and becomes one when splitting is not cheaper under the cost model
+  /// node_cost + (area(L) n(L) + area(R) n(R)) / area(parent) * item_cost against n * item_cost.
+  double node_cost = 1.0;
+  double item_cost = 1.0;
+};
+
+/// What a visitor tells a traversal.
+enum class Visit : std::uint8_t { proceed, stop };
+
+/// Counts of a traversal, for benchmarks and `--json`.
+struct TraversalStats {
+  std::size_t nodes = 0;  ///< nodes whose box was tested (entered or not)
+  std::size_t items = 0;  ///< items handed to the visitor
+  bool stopped = false;   ///< a visitor returned Visit::stop
+};
+
+/// A bounding volume hierarchy over n boxes, items numbered 0..n-1 in the order given.
+///
+/// Build: top down; at each node the items' box centroids are binned along each axis and the
+/// split plane with the least surface area heuristic cost is taken (Wald, "On fast Construction
+/// of SAH-based Bounding Volume Hierarchies", 2007; MacDonald and Booth 1990). Items whose
+/// centroids coincide are split by count; the tree depth stays O(log n) in that case.
+/// O(n log n) time (n * bins per level), O(n) memory (at most 2n - 1 nodes). Deterministic.
+/// Empty boxes (min > max) are allowed and never overlap anything.
+///
+/// Queries are templates over the visitors so that they inline; every decision about a box is
+/// the caller's (`enter`), so a query under a transform, a ray or a distance bound is a lambda.
+/// Thread safety: const; queries may run concurrently.
+class Bvh {
+ public:
+  /// An empty hierarchy: every traversal visits nothing.
+  Bvh() = default;
+  /// Builds over `boxes` (item i has box boxes[i]); no box may hold NaN.
+  explicit Bvh(std::span<const Box3> boxes, const BuildOptions& options = {});
+
+  /// The nodes, root first (none for an empty hierarchy).
+  [[nodiscard]] std::span<const Node> nodes() const { return nodes_; }
+  /// Item numbers in leaf order: a leaf holds items()[first .. first + count).
+  [[nodiscard]] std::span<const std::int32_t> items() const { return items_; }
+  [[nodiscard]] bool empty() const { return nodes_.empty(); }
+  /// The box of every item (empty for an empty hierarchy).
+  [[nodiscard]] Box3 bounds() const { return nodes_.empty() ? Box3{} : nodes_.front().box; }
+  /// Depth of the deepest leaf (root: 1; 0 when empty).
+  [[nodiscard]] int depth() const { return depth_; }
+
+  /// Depth-first traversal: `enter(const Node&, std::int32_t index) -> bool` decides whether to
+  /// descend into a node (called on the root too); `visit(std::int32_t item) -> Visit` sees the
+  /// items of every entered leaf and may stop the traversal. Children are visited first then
+  /// second. O(nodes entered + items visited).
+  template <class Enter, class VisitItem>
+  TraversalStats traverse(Enter&& enter, VisitItem&& visit) const;
+
+ private:
+  std::vector<Node> nodes_;
+  std::vector<std::int32_t> items_;
+  int depth_ = 0;
+};
+
+/// Simultaneous traversal of two hierarchies (collision of two meshes, self-tests with a == b):
+/// `enter(const Node& na, const Node& nb) -> bool` decides whether a pair of nodes can hold a
+/// pair of overlapping items (a transform of b goes into this test); `visit(std::int32_t item_a,
+/// std::int32_t item_b) -> Visit` sees each candidate pair of items once and may stop. The
+/// larger inner node (by surface area; an inner node before a leaf) is split first.
+/// O(pairs of nodes entered + pairs of items visited).
+template <class Enter, class VisitPair>
+TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPair&& visit);
+
+/// Surface area of a closed box (0 for an empty or flat one), the SAH's measure.
+[[nodiscard]] constexpr double surface_area(const Box3& box) {
+  if (box.empty()) return 0.0;
+  const double dx = box.max.x - box.min.x, dy = box.max.y - box.min.y, dz = box.max.z - box.min.z;
+  return 2.0 * (dx * dy + dy * dz + dz * dx);
+}
+
+// ---- templates ----------------------------------------------------------------------------
+
+template <class Enter, class VisitItem>
+TraversalStats Bvh::traverse(Enter&& enter, VisitItem&& visit) const {
+  TraversalStats stats;
+  if (nodes_.empty()) return stats;
+  // The depth bounds the stack: each level pushes at most one pending second child.
+  std::int32_t local[64];
+  std::vector<std::int32_t> heap;
+  std::int32_t* stack = local;
+  if (depth_ > 62) {
+    heap.resize(static_cast<std::size_t>(depth_) + 2);
+    stack = heap.data();
+  }
+  int top = 0;
+  std::int32_t index = 0;
+  for (;;) {
+    const Node& node = nodes_[static_cast<std::size_t>(index)];
+    ++stats.nodes;
+    if (enter(node, index)) {
+      if (node.is_leaf()) {
+        for (std::int32_t k = node.first; k < node.first + node.count; ++k) {
+          ++stats.items;
+          if (visit(items_[static_cast<std::size_t>(k)]) == Visit::stop) {
+            stats.stopped = true;
+            return stats;
+          }
+        }
+      } else {
+        stack[top++] = node.first;
+        index = index + 1;
+        continue;
+      }
+    }
+    if (top == 0) break;
+    index = stack[--top];
+  }
+  return stats;
+}
+
+template <class Enter, class VisitPair>
+TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPair&& visit) {
+  TraversalStats stats;
+  if (a.empty() || b.empty()) return stats;
+  const std::span<const Node> na = a.nodes(), nb = b.nodes();
+  const std::span<const std::int32_t> ia = a.items(), ib = b.items();
+  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
+  stack.reserve(static_cast<std::size_t>(2 * (a.depth() + b.depth()) + 4));
+  stack.emplace_back(0, 0);
+  while (!stack.empty()) {
+    const auto [x, y] = stack.back();
+    stack.pop_back();
+    const Node& p = na[static_cast<std::size_t>(x)];
+    const Node& q = nb[static_cast<std::size_t>(y)];
+    ++stats.nodes;
+    if (!enter(p, q)) continue;
+    if (p.is_leaf() && q.is_leaf()) {
+      for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
+        for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
+          ++stats.items;
+          if (visit(ia[static_cast<std::size_t>(s)], ib[static_cast<std::size_t>(t)]) ==
+              Visit::stop) {
+            stats.stopped = true;
+            return stats;
+          }
+        }
+      }
+      continue;
+    }
+    const bool split_a =
+        q.is_leaf() || (!p.is_leaf() && surface_area(p.box) >= surface_area(q.box));
+    if (split_a) {
+      stack.emplace_back(p.first, y);
+      stack.emplace_back(x + 1, y);
+    } else {
+      stack.emplace_back(x, q.first);
+      stack.emplace_back(x, y + 1);
+    }
+  }
+  return stats;
+}
+
+}  // namespace contain::bvh

@@ -1,0 +1,139 @@
+#pragma once
+/// \file
+/// A prepared triangle mesh for many point-in-polyhedron queries: exact ray parity over a grid
+/// that settles most of space at build time, or, for meshes that are not closed, the generalized
+/// winding number.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "contain/core/location.h"
+#include "contain/core/parallel.h"
+#include "contain/geometry/box.h"
+#include "contain/geometry/mesh.h"
+#include "contain/geometry/mesh_validation.h"
+#include "contain/geometry/vec.h"
+#include "contain/inside/fast_winding_number.h"
+#include "contain/predicates/sign.h"
+
+namespace contain::inside {
+
+/// How a `MeshIndex` answers, chosen from the mesh's `MeshReport`.
+enum class MeshRegime : std::uint8_t {
+  /// Every edge has exactly two triangles: exact ray parity; every answer is exact.
+  closed_exact,
+  /// Border or non-manifold edges: inside where the generalized winding number is >= 0.5
+  /// (approximate near the surface); `boundary` is still exact.
+  winding_number,
+};
+
+/// "closed-exact" or "winding-number".
+[[nodiscard]] const char* to_string(MeshRegime regime);
+
+/// How a `MeshIndex` is built.
+struct MeshIndexOptions {
+  /// Grid resolution for the exact regime: about this many cells per triangle ...
+  double cells_per_triangle = 4.0;
+  /// ... at least this many ...
+  std::size_t min_cells = 4096;
+  /// ... and at most this many (memory: 4 bytes a cell, 4 per triangle-cell pair).
+  std::size_t max_cells = std::size_t{1} << 24;
+  /// Accuracy of the winding number regime (see `FastWindingOptions`).
+  double winding_accuracy = 2.0;
+};
+
+/// A triangle mesh prepared for exact point location.
+///
+/// Regime `closed_exact` (every edge shared by exactly two triangles: a closed surface; its
+/// orientation does not matter). Answer: `boundary` if p lies on a triangle (orient3d == 0 and
+/// the exact point in triangle), else the parity of the crossings of the **perturbed +x ray
+/// rule** (docs/robustness.md; src/inside/mesh_ray.h): the ray from p along +x, its origin moved
+/// symbolically by (0, e, e^2), so that it never meets an edge or a vertex; odd is `inside`.
+/// Exact on the given doubles for every point (checked against a GMP oracle), deterministic.
+///
+/// Structure: a uniform grid over the bounding box; a point is assigned its cell by exact
+/// comparisons with the grid lines (half-open cells, the last closed). Cells that no triangle's
+/// closed box meets (an exact, conservative test) hold no surface, so one answer holds in the
+/// whole closed cell: it is computed once at build time, row by row from +x to -x. A cell the
+/// surface may touch keeps its triangles; a query there follows its own ray along the row of
+/// cells until the first empty cell, whose answer it inherits, counting the perturbed hits
+/// inside each cell's half-open slab [X_i, X_i+1) of x (a hit exactly on a grid plane is decided
+/// by the same perturbation), so each hit is counted once.
+///
+/// Regime `winding_number` (border or non-manifold edges): `boundary` exactly as above, else
+/// `inside` where the generalized winding number is >= 0.5 (FastWindingNumber; floating point).
+/// `warning()` says why this regime applies; it also names pinch vertices, inconsistent
+/// orientation and degenerate triangles of a closed mesh, which keep the exact regime.
+///
+/// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
+/// in an empty cell, else O(triangles met along the run of surface cells); winding regime about
+/// O(log n). Thread safety: const queries may run concurrently; answers do not depend on the
+/// thread count. Reference: seed section 22.4 (ray parity), Edelsbrunner and Muecke 1990 (SoS).
+class MeshIndex {
+ public:
+  /// An empty index: every point is `outside`.
+  MeshIndex() = default;
+  /// Prepares `mesh` (validated: finite coordinates, indices in range; any topology).
+  explicit MeshIndex(const Mesh& mesh, const MeshIndexOptions& options = {});
+
+  /// Where `point` lies.
+  [[nodiscard]] Location locate(Vec3 point) const;
+
+  /// Locates `points[i]` into `out[i]` for i < min(points.size(), out.size()), in parallel on
+  /// `options.threads` threads (0: all). Deterministic.
+  void locate(std::span<const Vec3> points, std::span<Location> out,
+              const BatchOptions& options = {}) const;
+
+  /// The regime in use.
+  [[nodiscard]] MeshRegime regime() const { return regime_; }
+  /// The validation of the mesh.
+  [[nodiscard]] const MeshReport& report() const { return report_; }
+  /// Empty when the mesh is a plain closed 2-manifold; otherwise one line naming the regime and
+  /// why ("not closed: 223 border edges ...").
+  [[nodiscard]] const std::string& warning() const { return warning_; }
+  /// The bounding box of the triangles.
+  [[nodiscard]] const Box3& bounds() const { return bounds_; }
+
+  /// Sizes of the structure, for benchmarks and tuning.
+  struct Stats {
+    std::size_t triangles = 0;
+    std::size_t cells = 0;          ///< grid cells (exact regime)
+    std::size_t surface_cells = 0;  ///< cells some triangle's box meets
+    std::size_t cell_refs = 0;      ///< triangle-cell pairs
+    int nx = 0, ny = 0, nz = 0;
+  };
+  [[nodiscard]] Stats stats() const { return stats_; }
+
+ private:
+  struct Tri {
+    Vec3 a, b, c;
+    Sign s;  // sign of the (y, z) projection: zero if never crossed by an x ray
+  };
+
+  [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
+  [[nodiscard]] bool odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
+  [[nodiscard]] Location locate_exact(Vec3 p) const;
+  [[nodiscard]] Location locate_winding(Vec3 p) const;
+
+  MeshRegime regime_ = MeshRegime::closed_exact;
+  MeshReport report_;
+  std::string warning_;
+  Box3 bounds_;
+  std::vector<Tri> tris_;
+  // Grid (exact regime).
+  int nx_ = 0, ny_ = 0, nz_ = 0;
+  Vec3 scale_{};  // cells per half unit along each axis, for the guess
+  std::vector<double> xs_, ys_, zs_;
+  // Per cell: 0 outside, 1 inside (empty cells), k >= 2: surface cell k - 2.
+  std::vector<std::uint32_t> cells_;
+  std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
+  std::vector<std::uint32_t> refs_;        // triangle numbers
+  // Winding regime.
+  FastWindingNumber winding_;
+  Stats stats_;
+};
+
+}  // namespace contain::inside

@@ -1,0 +1,145 @@
+#include "contain/bvh/bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+// Outline: top-down build over index ranges of `items_`. For each range: the bounds and the
+// centroid bounds; a leaf if small and the SAH says so; else, per axis, the centroids are put in
+// `bins` equal bins, prefix and suffix boxes give the cost of every bin boundary, and the range
+// is partitioned at the cheapest one. Coinciding centroids (or a split that leaves one side
+// empty) fall back to a split by count at the median, so the depth stays logarithmic.
+
+namespace contain::bvh {
+
+namespace {
+
+struct Builder {
+  std::span<const Box3> boxes;
+  std::vector<Vec3> centroids;
+  std::vector<std::int32_t>& items;
+  std::vector<Node>& nodes;
+  const BuildOptions& options;
+  int depth = 0;
+
+  Vec3 centroid(std::int32_t i) const { return centroids[static_cast<std::size_t>(i)]; }
+
+  static double axis_of(Vec3 v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+
+  void make_leaf(std::size_t node, std::size_t begin, std::size_t end) {
+    nodes[node].first = static_cast<std::int32_t>(begin);
+    nodes[node].count = static_cast<std::int32_t>(end - begin);
+  }
+
+  void build(std::size_t node, std::size_t begin, std::size_t end, int level) {
+    depth = std::max(depth, level);
+    Box3 box, cbox;
+    for (std::size_t k = begin; k < end; ++k) {
+      box.expand(boxes[static_cast<std::size_t>(items[k])]);
+      cbox.expand(centroid(items[k]));
+    }
+    nodes[node].box = box;
+    const std::size_t n = end - begin;
+    const auto max_leaf = static_cast<std::size_t>(std::max(options.max_leaf_items, 1));
+    if (n <= 1) {
+      make_leaf(node, begin, end);
+      return;
+    }
+    const int bins = std::clamp(options.bins, 2, 256);
+    double best_cost = std::numeric_limits<double>::infinity();
+    int best_axis = -1, best_split = 0;
+    const double parent_area = surface_area(box);
+    for (int axis = 0; axis < 3; ++axis) {
+      const double lo = axis_of(cbox.min, axis), hi = axis_of(cbox.max, axis);
+      if (!(hi > lo)) continue;
+      const double scale = bins / (hi - lo);
+      std::array<Box3, 256> bin_box;
+      std::array<std::size_t, 256> bin_count{};
+      for (std::size_t k = begin; k < end; ++k) {
+        const int b =
+            std::min(bins - 1, static_cast<int>((axis_of(centroid(items[k]), axis) - lo) * scale));
+        bin_count[static_cast<std::size_t>(b)]++;
+        bin_box[static_cast<std::size_t>(b)].expand(boxes[static_cast<std::size_t>(items[k])]);
+      }
+      std::array<double, 256> right_cost{};
+      Box3 acc;
+      std::size_t acc_n = 0;
+      for (int b = bins - 1; b > 0; --b) {
+        acc.expand(bin_box[static_cast<std::size_t>(b)]);
+        acc_n += bin_count[static_cast<std::size_t>(b)];
+        right_cost[static_cast<std::size_t>(b)] = surface_area(acc) * static_cast<double>(acc_n);
+      }
+      acc = Box3{};
+      acc_n = 0;
+      for (int b = 0; b + 1 < bins; ++b) {
+        acc.expand(bin_box[static_cast<std::size_t>(b)]);
+        acc_n += bin_count[static_cast<std::size_t>(b)];
+        if (acc_n == 0 || acc_n == n) continue;
+        const double cost = surface_area(acc) * static_cast<double>(acc_n) +
+                            right_cost[static_cast<std::size_t>(b) + 1];
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_axis = axis;
+          best_split = b + 1;
+        }
+      }
+    }
+    std::size_t mid = begin;
+    if (best_axis >= 0) {
+      const double split_cost = options.node_cost + (parent_area > 0.0 ? best_cost / parent_area
+                                                                       : static_cast<double>(n)) *
+                                                        options.item_cost;
+      if (n <= max_leaf && split_cost >= static_cast<double>(n) * options.item_cost) {
+        make_leaf(node, begin, end);
+        return;
+      }
+      const double lo = axis_of(cbox.min, best_axis), hi = axis_of(cbox.max, best_axis);
+      const double scale = bins / (hi - lo);
+      const auto it = std::partition(
+          items.begin() + static_cast<std::ptrdiff_t>(begin),
+          items.begin() + static_cast<std::ptrdiff_t>(end), [&](std::int32_t i) {
+            const int b = std::min(
+                bins - 1, static_cast<int>((axis_of(centroid(i), best_axis) - lo) * scale));
+            return b < best_split;
+          });
+      mid = static_cast<std::size_t>(it - items.begin());
+    }
+    if (mid == begin || mid == end) {
+      if (n <= max_leaf) {
+        make_leaf(node, begin, end);
+        return;
+      }
+      mid = begin + n / 2;  // coinciding centroids: split by count (order is deterministic)
+    }
+    const std::size_t left = node + 1;
+    nodes.emplace_back();
+    build(left, begin, mid, level + 1);
+    const std::size_t right = nodes.size();
+    nodes.emplace_back();
+    nodes[node].first = static_cast<std::int32_t>(right);
+    nodes[node].count = 0;
+    build(right, mid, end, level + 1);
+  }
+};
+
+}  // namespace
+
+Bvh::Bvh(std::span<const Box3> boxes, const BuildOptions& options) {
+  if (boxes.empty()) return;
+  items_.resize(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    items_[i] = static_cast<std::int32_t>(i);
+  std::vector<Vec3> centroids(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Box3& b = boxes[i];
+    // An empty box has no centroid; any finite point keeps the binning finite.
+    centroids[i] = b.empty() ? Vec3{} : 0.5 * b.min + 0.5 * b.max;
+  }
+  nodes_.reserve(2 * boxes.size());
+  nodes_.emplace_back();
+  Builder builder{boxes, std::move(centroids), items_, nodes_, options};
+  builder.build(0, 0, items_.size(), 1);
+  depth_ = builder.depth;
+}
+
+}  // namespace contain::bvh

@@ -1,0 +1,329 @@
+#include "contain/inside/mesh_index.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "contain/bvh/triangle_boxes.h"
+#include "contain/geometry/triangle.h"
+#include "contain/inside/point_in_triangle.h"
+#include "contain/predicates/orient3d.h"
+#include "inside/mesh_ray.h"
+
+// Outline (derivation in mesh_index.h and mesh_ray.h):
+//  1. validate, pick the regime, write the warning;
+//  2. exact regime: grid size from the triangle count and the box's shape; each triangle's
+//     closed box marks the closed cells it meets (exact comparisons) -> surface cells and their
+//     triangle lists;
+//  3. empty cells, row by row from +x to -x: the answer at one point of the cell, by the same
+//     run along the row that queries use (it stops at the next empty cell to the right, whose
+//     answer is already known, or at the end of the grid: outside).
+
+namespace contain::inside {
+
+namespace {
+
+// Grid lines from lo to hi (both exact), n cells, monotone; no overflow for huge coordinates.
+std::vector<double> grid_lines(double lo, double hi, int n) {
+  std::vector<double> lines(static_cast<std::size_t>(n) + 1);
+  lines.front() = lo;
+  for (int i = 1; i < n; ++i) {
+    const double t = static_cast<double>(i) / n;
+    const double v = lo * (1.0 - t) + hi * t;
+    lines[static_cast<std::size_t>(i)] = std::clamp(v, lines[static_cast<std::size_t>(i) - 1], hi);
+  }
+  lines.back() = hi;
+  return lines;
+}
+
+int guess_cell(double v, double origin, double scale, int n) {
+  const double g = (0.5 * v - 0.5 * origin) * scale;
+  if (!(g >= 0.0)) return 0;
+  if (g >= static_cast<double>(n)) return n - 1;
+  return static_cast<int>(g);
+}
+
+// The cell i with lines[i] <= v < lines[i + 1] (the last cell closed); v within the lines.
+int exact_cell(const std::vector<double>& lines, int n, double v, int guess) {
+  const auto i = static_cast<std::size_t>(guess);
+  if (lines[i] <= v && (guess + 1 == n || v < lines[i + 1])) return guess;
+  const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, v);
+  return static_cast<int>(it - (lines.begin() + 1));
+}
+
+// The cells [first, last] whose closed spans meet the closed interval [lo, hi].
+std::pair<int, int> cell_range(const std::vector<double>& lines, int n, double lo, double hi) {
+  const auto first = std::lower_bound(lines.begin() + 1, lines.end(), lo) - (lines.begin() + 1);
+  const auto last = (std::upper_bound(lines.begin(), lines.end() - 1, hi) - lines.begin()) - 1;
+  return {static_cast<int>(std::min<std::ptrdiff_t>(first, n - 1)),
+          static_cast<int>(std::max<std::ptrdiff_t>(last, 0))};
+}
+
+// A point strictly below `hi` in [lo, hi) when the span is not empty.
+double inner_point(double lo, double hi) {
+  const double m = 0.5 * lo + 0.5 * hi;
+  return (m >= lo && m < hi) ? m : lo;
+}
+
+std::string plural(std::size_t n, const char* word) {
+  std::ostringstream out;
+  out << n << " " << word << (n == 1 ? "" : "s");
+  return out.str();
+}
+
+}  // namespace
+
+const char* to_string(MeshRegime regime) {
+  return regime == MeshRegime::closed_exact ? "closed-exact" : "winding-number";
+}
+
+MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
+    : report_(validate_mesh(mesh)) {
+  tris_.reserve(mesh.triangles.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    Tri tri{mesh.vertices[static_cast<std::size_t>(t[0])],
+            mesh.vertices[static_cast<std::size_t>(t[1])],
+            mesh.vertices[static_cast<std::size_t>(t[2])], Sign::zero};
+    tri.s = detail::projected_sign(tri.a, tri.b, tri.c);
+    bounds_.expand(tri.a);
+    bounds_.expand(tri.b);
+    bounds_.expand(tri.c);
+    tris_.push_back(tri);
+  }
+  stats_.triangles = tris_.size();
+
+  // 1. Regime and warning.
+  std::vector<std::string> notes;
+  if (!report_.pinch_vertices.empty()) {
+    notes.push_back(plural(report_.pinch_vertices.size(), "pinch vertex") +
+                    " (not 2-manifold there; first: " +
+                    std::to_string(report_.pinch_vertices.front() + 1) + ", 1-based)");
+  }
+  if (report_.inconsistent_edges > 0) {
+    notes.push_back("inconsistent orientation (" + plural(report_.inconsistent_edges, "edge") +
+                    " used in the same direction)");
+  }
+  if (report_.degenerate_triangles > 0) {
+    notes.push_back(plural(report_.degenerate_triangles, "degenerate triangle"));
+  }
+  if (report_.closed()) {
+    regime_ = MeshRegime::closed_exact;
+    if (!notes.empty()) {
+      std::string w = "mesh has ";
+      for (std::size_t i = 0; i < notes.size(); ++i)
+        w += (i ? ", " : "") + notes[i];
+      warning_ = w +
+                 "; every edge has exactly two triangles, so the answers (closed-exact ray "
+                 "parity) are still exact";
+    }
+  } else {
+    regime_ = MeshRegime::winding_number;
+    std::vector<std::string> why;
+    if (report_.triangles == 0) why.push_back("no triangles");
+    if (report_.border_edges > 0) why.push_back(plural(report_.border_edges, "border edge"));
+    if (report_.nonmanifold_edges > 0) {
+      why.push_back(plural(report_.nonmanifold_edges, "edge") + " of three or more triangles");
+    }
+    if (report_.duplicated_triangles > 0) {
+      why.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
+    }
+    for (const std::string& n : notes)
+      why.push_back(n);
+    std::string w = "mesh is not closed (";
+    for (std::size_t i = 0; i < why.size(); ++i)
+      w += (i ? ", " : "") + why[i];
+    warning_ = w +
+               "): answers come from the generalized winding number (winding-number regime: "
+               "inside where it is >= 0.5, approximate near the surface); points exactly on the "
+               "surface are still 'on'";
+    winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
+    return;
+  }
+  if (tris_.empty()) return;
+
+  // 2. Grid. Half units keep the extents finite for any finite coordinates.
+  const std::array<double, 3> half{0.5 * bounds_.max.x - 0.5 * bounds_.min.x,
+                                   0.5 * bounds_.max.y - 0.5 * bounds_.min.y,
+                                   0.5 * bounds_.max.z - 0.5 * bounds_.min.z};
+  double target = std::max(options.cells_per_triangle * static_cast<double>(tris_.size()),
+                           static_cast<double>(options.min_cells));
+  target =
+      std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
+  double volume = 1.0;
+  int dims = 0;
+  for (double h : half) {
+    if (h > 0.0) {
+      volume *= h;
+      ++dims;
+    }
+  }
+  std::array<int, 3> n{1, 1, 1};
+  if (dims > 0) {
+    // cell edge = (volume / target)^(1/dims), in half units, computed in logs against overflow
+    const double log_edge = (std::log(volume) - std::log(target)) / dims;
+    for (int d = 0; d < 3; ++d) {
+      if (half[static_cast<std::size_t>(d)] > 0.0) {
+        const double cells = std::exp(std::log(half[static_cast<std::size_t>(d)]) - log_edge);
+        n[static_cast<std::size_t>(d)] =
+            static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
+      }
+    }
+  }
+  nx_ = n[0];
+  ny_ = n[1];
+  nz_ = n[2];
+  xs_ = grid_lines(bounds_.min.x, bounds_.max.x, nx_);
+  ys_ = grid_lines(bounds_.min.y, bounds_.max.y, ny_);
+  zs_ = grid_lines(bounds_.min.z, bounds_.max.z, nz_);
+  auto scale = [](double h, int cells) {
+    const double s = h > 0.0 ? cells / h : 0.0;
+    return std::isfinite(s) ? s : 0.0;
+  };
+  scale_ = {scale(half[0], nx_), scale(half[1], ny_), scale(half[2], nz_)};
+  const std::size_t cell_count =
+      static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
+  stats_.cells = cell_count;
+  stats_.nx = nx_;
+  stats_.ny = ny_;
+  stats_.nz = nz_;
+
+  // Triangle boxes -> closed cells (two passes: count, then fill).
+  const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
+  std::vector<std::uint32_t> count(cell_count + 1, 0);
+  auto for_cells = [&](const Box3& b, auto&& f) {
+    const auto [i0, i1] = cell_range(xs_, nx_, b.min.x, b.max.x);
+    const auto [j0, j1] = cell_range(ys_, ny_, b.min.y, b.max.y);
+    const auto [k0, k1] = cell_range(zs_, nz_, b.min.z, b.max.z);
+    for (int k = k0; k <= k1; ++k)
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+          f((static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+             static_cast<std::size_t>(j)) *
+                static_cast<std::size_t>(nx_) +
+            static_cast<std::size_t>(i));
+  };
+  for (const Box3& b : boxes)
+    for_cells(b, [&](std::size_t c) { ++count[c]; });
+  cells_.assign(cell_count, 0);
+  cell_start_.clear();
+  cell_start_.push_back(0);
+  std::vector<std::uint32_t> next(cell_count, 0);
+  for (std::size_t c = 0; c < cell_count; ++c) {
+    if (count[c] == 0) continue;
+    cells_[c] = static_cast<std::uint32_t>(cell_start_.size() - 1) + 2u;
+    next[c] = cell_start_.back();
+    cell_start_.push_back(cell_start_.back() + count[c]);
+  }
+  refs_.resize(cell_start_.back());
+  for (std::size_t t = 0; t < boxes.size(); ++t)
+    for_cells(boxes[t], [&](std::size_t c) { refs_[next[c]++] = static_cast<std::uint32_t>(t); });
+  stats_.surface_cells = cell_start_.size() - 1;
+  stats_.cell_refs = refs_.size();
+
+  // 3. Empty cells, right to left along each row.
+  for (int k = 0; k < nz_; ++k) {
+    const double z =
+        inner_point(zs_[static_cast<std::size_t>(k)], zs_[static_cast<std::size_t>(k) + 1]);
+    for (int j = 0; j < ny_; ++j) {
+      const double y =
+          inner_point(ys_[static_cast<std::size_t>(j)], ys_[static_cast<std::size_t>(j) + 1]);
+      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                               static_cast<std::size_t>(j)) *
+                              static_cast<std::size_t>(nx_);
+      for (int i = nx_ - 1; i >= 0; --i) {
+        if (cells_[row + static_cast<std::size_t>(i)] >= 2) continue;
+        const Vec3 m{xs_[static_cast<std::size_t>(i)], y, z};
+        const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
+        cells_[row + static_cast<std::size_t>(i)] = odd ? 1u : 0u;
+      }
+    }
+  }
+}
+
+bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
+  if (p.x < std::min({t.a.x, t.b.x, t.c.x}) || p.x > std::max({t.a.x, t.b.x, t.c.x}) ||
+      p.y < std::min({t.a.y, t.b.y, t.c.y}) || p.y > std::max({t.a.y, t.b.y, t.c.y}) ||
+      p.z < std::min({t.a.z, t.b.z, t.c.z}) || p.z > std::max({t.a.z, t.b.z, t.c.z})) {
+    return false;
+  }
+  if (predicates::orient3d(t.a, t.b, t.c, p) != Sign::zero) return false;
+  return point_in_triangle(Triangle3{t.a, t.b, t.c}, p) != Location::outside;
+}
+
+// Parity of the perturbed hits of the +x ray from q through the cells first, first + 1, ... of
+// the row until an empty cell (its answer is added) or the end of the grid (outside beyond).
+// q lies in cell `first` when q_in_first, else at or left of its lower plane in an empty cell.
+bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
+  bool odd = false;
+  for (int i = first; i < nx_; ++i) {
+    const std::uint32_t code = cells_[row + static_cast<std::size_t>(i)];
+    if (code < 2) return odd != (code == 1);
+    // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
+    // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
+    // (no hit can lie in its closed box).
+    const bool test_upper = i + 1 < nx_ && cells_[row + static_cast<std::size_t>(i) + 1] >= 2;
+    const Vec3 lower{xs_[static_cast<std::size_t>(i)], q.y, q.z};
+    const Vec3 upper{xs_[static_cast<std::size_t>(i) + 1], q.y, q.z};
+    const bool from_q = q_in_first && i == first;
+    for (std::uint32_t r = cell_start_[code - 2]; r < cell_start_[code - 1]; ++r) {
+      const Tri& t = tris_[refs_[r]];
+      if (t.s == Sign::zero || !detail::perturbed_line_hits(t.a, t.b, t.c, t.s, q)) continue;
+      if (from_q ? detail::hit_side(t.a, t.b, t.c, t.s, q) <= 0
+                 : detail::hit_side(t.a, t.b, t.c, t.s, lower) < 0) {
+        continue;
+      }
+      if (test_upper && detail::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
+      odd = !odd;
+    }
+  }
+  return odd;
+}
+
+Location MeshIndex::locate(Vec3 p) const {
+  if (regime_ == MeshRegime::winding_number) return locate_winding(p);
+  return locate_exact(p);
+}
+
+Location MeshIndex::locate_exact(Vec3 p) const {
+  if (cells_.empty() || !bounds_.contains(p)) return Location::outside;
+  const int i = exact_cell(xs_, nx_, p.x, guess_cell(p.x, bounds_.min.x, scale_.x, nx_));
+  const int j = exact_cell(ys_, ny_, p.y, guess_cell(p.y, bounds_.min.y, scale_.y, ny_));
+  const int k = exact_cell(zs_, nz_, p.z, guess_cell(p.z, bounds_.min.z, scale_.z, nz_));
+  const std::size_t row =
+      (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
+      static_cast<std::size_t>(nx_);
+  const std::uint32_t code = cells_[row + static_cast<std::size_t>(i)];
+  if (code < 2) return code == 1 ? Location::inside : Location::outside;
+  for (std::uint32_t r = cell_start_[code - 2]; r < cell_start_[code - 1]; ++r) {
+    if (on_triangle(tris_[refs_[r]], p)) return Location::boundary;
+  }
+  // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
+  // a point there that is not on the surface is outside (the solid's interior is open).
+  if (p.y == bounds_.max.y || p.z == bounds_.max.z) return Location::outside;
+  return odd_run(p, row, i, true) ? Location::inside : Location::outside;
+}
+
+Location MeshIndex::locate_winding(Vec3 p) const {
+  if (tris_.empty()) return Location::outside;
+  bool on = false;
+  (void)winding_.hierarchy().traverse(
+      [&](const bvh::Node& node, std::int32_t) { return node.box.contains(p); },
+      [&](std::int32_t t) {
+        on = on_triangle(tris_[static_cast<std::size_t>(t)], p);
+        return on ? bvh::Visit::stop : bvh::Visit::proceed;
+      });
+  if (on) return Location::boundary;
+  return winding_.evaluate(p) >= 0.5 ? Location::inside : Location::outside;
+}
+
+void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
+                       const BatchOptions& options) const {
+  const std::size_t count = std::min(points.size(), out.size());
+  parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t q = begin; q < end; ++q)
+      out[q] = locate(points[q]);
+  });
+}
+
+}  // namespace contain::inside
