@@ -1,0 +1,114 @@
+#include "contain/clip/clip_segments.h"
+
+#include <type_traits>
+
+#include "clip/box_exact.h"
+#include "clip/box_kernel.h"
+#include "clip/convex_functions.h"
+#include "clip/cyrus_beck_impl.h"
+#include "contain/clip/segment_halfspace.h"
+#include "contain/clip/segment_sphere.h"
+
+namespace contain::clip {
+namespace {
+
+static_assert(sizeof(Segment3) == 6 * sizeof(double) && std::is_standard_layout_v<Segment3>);
+static_assert(sizeof(Segment2) == 4 * sizeof(double) && std::is_standard_layout_v<Segment2>);
+
+template <class S, class Clip>
+void each(std::span<const S> segments, std::span<S> out, std::span<std::uint8_t> kept,
+          const BatchOptions& options, Clip clip) {
+  parallel_for(segments.size(), options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto r = clip(segments[i]);
+      kept[i] = r.kept ? 1 : 0;
+      if (r.kept) out[i] = r.segment;
+    }
+  });
+}
+
+template <int D, class S, class Box>
+void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
+               std::span<std::uint8_t> kept, const BatchOptions& options) {
+  if (box.empty()) {
+    for (auto& k : kept)
+      k = 0;
+    return;
+  }
+  detail::KernelBox<D> kb{};
+  for (int k = 0; k < D; ++k) {
+    kb.min[k] = detail::coord(box.min, k);
+    kb.max[k] = detail::coord(box.max, k);
+  }
+  parallel_for(segments.size(), options, [&](std::size_t begin, std::size_t end) {
+    // Blocks keep the fallback pass in cache.
+    constexpr std::size_t block = 2048;
+    for (std::size_t b = begin; b < end; b += block) {
+      const std::size_t n = std::min(block, end - b);
+      detail::box_kernel<D>(reinterpret_cast<const double*>(segments.data() + b),
+                            reinterpret_cast<double*>(out.data() + b), kept.data() + b, n, kb);
+      for (std::size_t i = b; i < b + n; ++i) {
+        if (kept[i] != 2) continue;
+        const auto r = detail::liang_barsky_exact(segments[i].a, segments[i].b, box);
+        kept[i] = r.kept ? 1 : 0;
+        if (r.kept) out[i] = r.segment;
+      }
+    }
+  });
+}
+
+}  // namespace
+
+void clip_segments(std::span<const Segment3> s, const Box3& box, std::span<Segment3> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  box_batch<3>(s, box, out, kept, options);
+}
+void clip_segments(std::span<const Segment2> s, const Box2& box, std::span<Segment2> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  box_batch<2>(s, box, out, kept, options);
+}
+void clip_segments(std::span<const Segment3> s, const Plane& h, std::span<Segment3> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  each(s, out, kept, options, [&](const Segment3& x) { return segment_halfspace(x, h); });
+}
+void clip_segments(std::span<const Segment2> s, const HalfPlane& h, std::span<Segment2> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  each(s, out, kept, options, [&](const Segment2& x) { return segment_halfspace(x, h); });
+}
+void clip_segments(std::span<const Segment3> s, const Sphere& ball, std::span<Segment3> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  each(s, out, kept, options, [&](const Segment3& x) { return segment_sphere(x, ball); });
+}
+void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Segment2> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  each(s, out, kept, options, [&](const Segment2& x) { return segment_sphere(x, disc); });
+}
+void clip_segments(std::span<const Segment3> s, const inside::ConvexPolyhedron& polyhedron,
+                   std::span<Segment3> out, std::span<std::uint8_t> kept,
+                   const BatchOptions& options) {
+  if (!polyhedron.faces().empty()) {
+    const auto f = detail::face_functions(polyhedron.faces());
+    each(s, out, kept, options, [&](const Segment3& x) {
+      return detail::cyrus_beck_clip<Vec3, detail::FaceFunction>(x.a, x.b, f);
+    });
+    return;
+  }
+  const auto f = detail::plane_functions(polyhedron.planes());
+  each(s, out, kept, options, [&](const Segment3& x) {
+    return detail::cyrus_beck_clip<Vec3, detail::PlaneFunction>(x.a, x.b, f);
+  });
+}
+void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::span<Segment2> out,
+                   std::span<std::uint8_t> kept, const BatchOptions& options) {
+  const auto edges = detail::edge_functions(convex_ring);
+  if (!edges) {
+    for (auto& k : kept)
+      k = 0;
+    return;
+  }
+  each(s, out, kept, options, [&](const Segment2& x) {
+    return detail::cyrus_beck_clip<Vec2, detail::EdgeFunction>(x.a, x.b, *edges);
+  });
+}
+
+}  // namespace contain::clip
