@@ -7,8 +7,9 @@
 //             in_expansion_range for the predicate's degree;
 //   big       BigFloat (big_float.h), exact for every finite input.
 //
-// The public predicate runs filter -> expansion (if in range) -> big. Bounds and regimes are
-// derived in docs/robustness.md.
+// The public predicate runs filter -> expansion (inputs in range, or rescaled into it by a
+// power of two when the predicate is homogeneous and the exponents allow) -> big. Bounds and
+// regimes are derived in docs/robustness.md.
 
 #include <cfloat>
 
