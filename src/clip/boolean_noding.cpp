@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -36,8 +37,9 @@ struct Split {
 
 struct Item {
   double xmin, xmax, ymin, ymax;
-  std::uint32_t piece;
+  std::uint32_t piece;  // or the index of a hot pixel
   bool fresh;
+  bool pixel;
 };
 
 bool lex_less(Vec2 a, Vec2 b) {
@@ -68,8 +70,36 @@ Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
   return x;
 }
 
-void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t,
-               std::vector<Split>& splits, std::int64_t& crossings) {
+bool within(Vec2 a, Vec2 b, double radius) {
+  return std::fabs(a.x - b.x) <= radius && std::fabs(a.y - b.y) <= radius;
+}
+
+// A piece that passes through the hot pixel of a crossing point x (the square of half-side
+// `radius` around it) is split at x, as in snap rounding (Hobby 1999; Hershberger 2013): pieces
+// that pass within rounding distance of each other then share the vertex instead of crossing again
+// and again near it. The test is exact on the doubles of the square's corners.
+void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double radius,
+                std::vector<Split>& splits) {
+  const Vec2 a = pts[s], b = pts[s + 1];
+  // A piece with an endpoint in the pixel already passes through it; its crossings there snap to
+  // endpoints (see test_pair).
+  if (within(a, x, radius) || within(b, x, radius)) return;
+  const Vec2 corners[4] = {{x.x - radius, x.y - radius},
+                           {x.x + radius, x.y - radius},
+                           {x.x + radius, x.y + radius},
+                           {x.x - radius, x.y + radius}};
+  int pos = 0, neg = 0;
+  for (const Vec2 c : corners) {
+    const Sign o = orient2d(a, b, c);
+    pos += o == Sign::positive ? 1 : 0;
+    neg += o == Sign::negative ? 1 : 0;
+  }
+  if (pos == 4 || neg == 4) return;
+  splits.push_back({s, x});
+}
+
+void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, double radius,
+               std::vector<Split>& splits, std::vector<Vec2>& hot, std::int64_t& crossings) {
   const Vec2 p0 = pts[s], p1 = pts[s + 1], q0 = pts[t], q1 = pts[t + 1];
   const Sign o1 = orient2d(p0, p1, q0);
   const Sign o2 = orient2d(p0, p1, q1);
@@ -105,8 +135,20 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t,
     if (p1 != q0 && p1 != q1) splits.push_back({t, p1});
   }
   if (touched) return;
-  const Vec2 x = crossing_point(p0, p1, q0, q1);
+  Vec2 x = crossing_point(p0, p1, q0, q1);
   ++crossings;
+  // A crossing within a pixel of an endpoint is that endpoint: no sliver pieces. Of several, the
+  // lowest in (x, y) order, the same choice whichever pair of pieces meets there.
+  bool snapped = false;
+  Vec2 best{};
+  for (const Vec2 e : {p0, p1, q0, q1}) {
+    if (within(x, e, radius) && (!snapped || lex_less(e, best))) {
+      best = e;
+      snapped = true;
+    }
+  }
+  if (snapped) x = best;
+  hot.push_back(x);
   if (x != p0 && x != p1) splits.push_back({s, x});
   if (x != q0 && x != q1) splits.push_back({t, x});
 }
@@ -118,14 +160,22 @@ Noded node_segments(std::span<const NodingInput> segments) {
   const auto n = static_cast<std::uint32_t>(segments.size());
   out.points.reserve(2 * n);
   out.first.reserve(n + 1);
+  double magnitude = 0.0;
   for (const NodingInput& s : segments) {
     out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
     out.points.push_back(s.a);
     out.points.push_back(s.b);
+    magnitude = std::max(
+        {magnitude, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
   }
   out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
+  // Hot pixels: half-side of two ulps of the largest coordinate (rule clip-noding).
+  const double radius = magnitude > 0 ? std::ldexp(1.0, std::ilogb(magnitude) - 51)
+                                      : std::numeric_limits<double>::min();
   // fresh[k]: the piece starting at points[k] is new this round.
   std::vector<char> fresh(out.points.size(), 1);
+  std::vector<Vec2> hot;           // crossing points: hot pixels for ever after
+  std::size_t hot_fresh_from = 0;  // hot[i] for i >= this were made last round
   std::vector<Item> items;
   std::vector<std::uint32_t> active;
   std::vector<Split> splits;
@@ -137,9 +187,15 @@ Noded node_segments(std::span<const NodingInput> segments) {
       for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k) {
         const Vec2 a = out.points[k], b = out.points[k + 1];
         items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
-                         std::max(a.y, b.y), k, fresh[k] != 0});
+                         std::max(a.y, b.y), k, fresh[k] != 0, false});
       }
     }
+    for (std::size_t i = 0; i < hot.size(); ++i) {
+      const Vec2 x = hot[i];
+      items.push_back({x.x - radius, x.x + radius, x.y - radius, x.y + radius,
+                       static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
+    }
+    const std::size_t hot_before = hot.size();
     std::sort(items.begin(), items.end(),
               [](const Item& l, const Item& r) { return l.xmin < r.xmin; });
     splits.clear();
@@ -151,13 +207,20 @@ Noded node_segments(std::span<const NodingInput> segments) {
         const Item& jt = items[active[r]];
         if (jt.xmax < it.xmin) continue;  // left behind for good
         active[w++] = active[r];
-        if (!(it.fresh || jt.fresh)) continue;
+        if (!(it.fresh || jt.fresh) || (it.pixel && jt.pixel)) continue;
         if (jt.ymax < it.ymin || it.ymax < jt.ymin) continue;
-        test_pair(out.points, jt.piece, it.piece, splits, out.crossings);
+        if (it.pixel) {
+          test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
+        } else if (jt.pixel) {
+          test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
+        } else {
+          test_pair(out.points, jt.piece, it.piece, radius, splits, hot, out.crossings);
+        }
       }
       active.resize(w);
       active.push_back(i);
     }
+    hot_fresh_from = hot_before;
     if (splits.empty()) return out;
     // Insert the splits, ordered along their piece; the pieces they make are new.
     std::sort(splits.begin(), splits.end(), [&](const Split& l, const Split& r) {
