@@ -3,3 +3,4 @@ list(APPEND CLIP_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/boolean_noding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/boolean_arrangement.cpp
   ${CMAKE_CURRENT_LIST_DIR}/polygon_boolean.cpp)
+list(APPEND CLIP_SOURCES ${CMAKE_CURRENT_LIST_DIR}/polyline_clip.cpp)

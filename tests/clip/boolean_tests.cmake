@@ -1,7 +1,8 @@
 # Tests of the general polygon booleans (the "booleans" group); each file appends to CLIP_TESTS.
 list(APPEND CLIP_TESTS
   ${CMAKE_CURRENT_LIST_DIR}/boolean_checks.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/polygon_boolean_test.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/polygon_boolean_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/polyline_clip_test.cpp)
 
 # The shared corpus of peer overlay cases: reads JSON Lines and WKT, so it needs contain::io and
 # nlohmann-json (present with the CLI build).
