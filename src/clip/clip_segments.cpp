@@ -48,7 +48,7 @@ void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
       detail::box_kernel<D>(reinterpret_cast<const double*>(segments.data() + b),
                             reinterpret_cast<double*>(out.data() + b), kept.data() + b, n, kb);
       for (std::size_t i = b; i < b + n; ++i) {
-        if (kept[i] != 2) continue;
+        if (kept[i] < 2) continue;
         const auto r = detail::liang_barsky_exact(segments[i].a, segments[i].b, box);
         kept[i] = r.kept ? 1 : 0;
         if (r.kept) out[i] = r.segment;

@@ -10,3 +10,9 @@ list(APPEND CLIP_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/cyrus_beck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/segment_sphere.cpp
   ${CMAKE_CURRENT_LIST_DIR}/clip_segments.cpp)
+list(APPEND CLIP_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/sutherland_hodgman.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/clip_polygon.cpp)
+list(APPEND CLIP_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/cap_triangulation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_clip.cpp)

@@ -1,0 +1,399 @@
+// contain clip: segments (Cohen-Sutherland, Liang-Barsky, Cyrus-Beck, balls), polygons and
+// meshes by half-spaces (Sutherland-Hodgman). One function per form of the contract; the
+// polygon booleans (--subject/--clip/--op) slot in beside them.
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "clip_boolean.h"
+#include "common.h"
+#include "contain/clip/box_halfspaces.h"
+#include "contain/clip/clip_polygon.h"
+#include "contain/clip/clip_segments.h"
+#include "contain/clip/cohen_sutherland.h"
+#include "contain/clip/cyrus_beck.h"
+#include "contain/clip/liang_barsky.h"
+#include "contain/clip/mesh_clip.h"
+#include "contain/clip/segment_halfspace.h"
+#include "contain/geometry/mesh_validation.h"
+#include "contain/inside/convex_polyhedron.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/number_table.h"
+#include "contain/io/region_io.h"
+#include "contain/io/wkt.h"
+#include "verbs.h"
+
+namespace contain::cli {
+namespace {
+
+struct ClipOptions {
+  // Segments, polygons and meshes by half-spaces.
+  std::string segments;
+  std::string polygon;
+  std::string mesh;
+  std::string box;
+  std::vector<std::string> halfspaces;
+  std::string convex;
+  std::string sphere;
+  std::string circle;
+  std::string algorithm;
+  bool keep_bridges = false;
+  bool cap = false;
+  std::string out;
+  int threads = 0;
+};
+
+Error usage(std::string message) {
+  return {ErrorKind::usage, "clip: " + std::move(message)};
+}
+
+// The numbers of a list-valued option, exactly `count` of them (one of `counts`).
+Result<std::vector<double>> numbers(const std::string& text, const char* option,
+                                    std::initializer_list<std::size_t> counts) {
+  auto values = parse_numbers(text, option);
+  if (!values) return values.error();
+  for (std::size_t c : counts) {
+    if (values->size() == c) return values;
+  }
+  std::string want;
+  for (std::size_t c : counts)
+    want += (want.empty() ? "" : " or ") + std::to_string(c);
+  return usage(std::string(option) + " takes " + want + " numbers here, got " +
+               std::to_string(values->size()));
+}
+
+Result<std::vector<Plane>> planes_of(const ClipOptions& o) {
+  std::vector<Plane> planes;
+  for (const std::string& h : o.halfspaces) {
+    auto v = numbers(h, "--halfspace", {4});
+    if (!v) return v.error();
+    planes.push_back({(*v)[0], (*v)[1], (*v)[2], (*v)[3]});
+  }
+  return planes;
+}
+
+Result<std::vector<HalfPlane>> half_planes_of(const ClipOptions& o) {
+  std::vector<HalfPlane> planes;
+  for (const std::string& h : o.halfspaces) {
+    auto v = numbers(h, "--halfspace", {3});
+    if (!v) return v.error();
+    planes.push_back({(*v)[0], (*v)[1], (*v)[2]});
+  }
+  return planes;
+}
+
+Result<Box3> box3_of(const std::string& text) {
+  auto v = numbers(text, "--box", {6});
+  if (!v) return v.error();
+  return Box3{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
+}
+
+Result<Box2> box2_of(const std::string& text) {
+  auto v = numbers(text, "--box", {4});
+  if (!v) return v.error();
+  return Box2{{(*v)[0], (*v)[1]}, {(*v)[2], (*v)[3]}};
+}
+
+// --convex in 2D: the shell of the first polygon of a region file.
+Result<Ring> convex_ring_of(const std::string& path) {
+  auto region = io::read_region(path);
+  if (!region) return region.error();
+  if (region->polygons.empty() || region->polygons.front().rings.empty()) {
+    return Error{ErrorKind::degenerate, "the convex polygon is empty", path};
+  }
+  return region->polygons.front().rings.front();
+}
+
+// --convex in 3D: a closed convex mesh.
+Result<inside::ConvexPolyhedron> convex_solid_of(const std::string& path) {
+  auto file = io::read_mesh(path);
+  if (!file) return file.error();
+  auto solid = inside::ConvexPolyhedron::from_mesh(file->mesh);
+  if (!solid) {
+    Error e = solid.error();
+    if (e.source.empty()) e.source = path;
+    return e;
+  }
+  return solid;
+}
+
+// --- segments ------------------------------------------------------------------------------
+
+std::string format_segments(std::span<const double> flat, int columns,
+                            std::span<const Segment2> out2, std::span<const Segment3> out3,
+                            std::span<const std::uint8_t> kept) {
+  (void)flat;
+  std::string text;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (!kept[i]) {
+      text += "-\n";
+    } else if (columns == 4) {
+      const Segment2& s = out2[i];
+      text += fmt::format("{} {} {} {}\n", s.a.x, s.a.y, s.b.x, s.b.y);
+    } else {
+      const Segment3& s = out3[i];
+      text += fmt::format("{} {} {} {} {} {}\n", s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z);
+    }
+  }
+  return text;
+}
+
+template <class S, class Clip>
+void each_segment(std::span<const S> in, std::span<S> out, std::span<std::uint8_t> kept,
+                  Clip clip) {
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const auto r = clip(in[i]);
+    kept[i] = r.kept ? 1 : 0;
+    if (r.kept) out[i] = r.segment;
+  }
+}
+
+int run_segments(const ClipOptions& o) {
+  const int regions = !o.box.empty() + !o.halfspaces.empty() + !o.convex.empty() +
+                      !o.sphere.empty() + !o.circle.empty();
+  if (regions != 1) {
+    return report(
+        usage("--segments needs one region: --box, --halfspace, --convex, --sphere or "
+              "--circle"));
+  }
+  if (!o.algorithm.empty() && o.box.empty() && o.algorithm != "cyrus-beck") {
+    return report(usage("--algorithm " + o.algorithm + " clips by a --box only"));
+  }
+  auto table = io::read_number_table(o.segments, {.columns = {4, 6}});
+  if (!table) return report(table.error());
+  const std::size_t n = table->rows();
+  const int columns =
+      table->columns == 0 ? (o.sphere.empty() && o.halfspaces.empty() ? 4 : 6) : table->columns;
+  const bool three_d = columns == 6;
+  if ((three_d && !o.circle.empty()) || (!three_d && !o.sphere.empty())) {
+    return report({ErrorKind::invalid_value,
+                   three_d ? "segments have 6 numbers (3D) but --circle is 2D"
+                           : "segments have 4 numbers (2D) but --sphere is 3D",
+                   o.segments == "-" ? "<stdin>" : o.segments});
+  }
+  std::vector<std::uint8_t> kept(n);
+  std::vector<Segment2> in2, out2;
+  std::vector<Segment3> in3, out3;
+  const double* v = table->values.data();
+  if (three_d) {
+    in3.resize(n);
+    out3.resize(n);
+    for (std::size_t i = 0; i < n; ++i, v += 6)
+      in3[i] = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  } else {
+    in2.resize(n);
+    out2.resize(n);
+    for (std::size_t i = 0; i < n; ++i, v += 4)
+      in2[i] = {{v[0], v[1]}, {v[2], v[3]}};
+  }
+  const BatchOptions batch{.threads = o.threads};
+  if (!o.box.empty()) {
+    auto run_box = [&](const auto& box, auto& in, auto& out) {
+      if (o.algorithm.empty()) {
+        clip::clip_segments(std::span(std::as_const(in)), box, std::span(out), kept, batch);
+      } else if (o.algorithm == "cohen-sutherland") {
+        each_segment(std::span(std::as_const(in)), std::span(out), kept,
+                     [&](const auto& s) { return clip::cohen_sutherland(s, box); });
+      } else if (o.algorithm == "liang-barsky") {
+        each_segment(std::span(std::as_const(in)), std::span(out), kept,
+                     [&](const auto& s) { return clip::liang_barsky(s, box); });
+      } else {
+        const auto planes = clip::box_halfspaces(box);
+        each_segment(std::span(std::as_const(in)), std::span(out), kept,
+                     [&](const auto& s) { return clip::cyrus_beck(s, planes); });
+      }
+    };
+    if (three_d) {
+      auto box = box3_of(o.box);
+      if (!box) return report(box.error());
+      run_box(*box, in3, out3);
+    } else {
+      auto box = box2_of(o.box);
+      if (!box) return report(box.error());
+      run_box(*box, in2, out2);
+    }
+  } else if (!o.halfspaces.empty()) {
+    if (three_d) {
+      auto planes = planes_of(o);
+      if (!planes) return report(planes.error());
+      if (planes->size() == 1) {
+        clip::clip_segments(std::span(std::as_const(in3)), planes->front(), std::span(out3), kept,
+                            batch);
+      } else {
+        each_segment(std::span(std::as_const(in3)), std::span(out3), kept,
+                     [&](const Segment3& s) { return clip::cyrus_beck(s, *planes); });
+      }
+    } else {
+      auto planes = half_planes_of(o);
+      if (!planes) return report(planes.error());
+      if (planes->size() == 1) {
+        clip::clip_segments(std::span(std::as_const(in2)), planes->front(), std::span(out2), kept,
+                            batch);
+      } else {
+        each_segment(std::span(std::as_const(in2)), std::span(out2), kept,
+                     [&](const Segment2& s) { return clip::cyrus_beck(s, *planes); });
+      }
+    }
+  } else if (!o.convex.empty()) {
+    if (three_d) {
+      auto solid = convex_solid_of(o.convex);
+      if (!solid) return report(solid.error());
+      clip::clip_segments(std::span(std::as_const(in3)), *solid, std::span(out3), kept, batch);
+    } else {
+      auto ring = convex_ring_of(o.convex);
+      if (!ring) return report(ring.error());
+      clip::clip_segments(std::span(std::as_const(in2)), *ring, std::span(out2), kept, batch);
+    }
+  } else if (!o.sphere.empty()) {
+    auto s = numbers(o.sphere, "--sphere", {4});
+    if (!s) return report(s.error());
+    const Sphere ball{{(*s)[0], (*s)[1], (*s)[2]}, (*s)[3]};
+    clip::clip_segments(std::span(std::as_const(in3)), ball, std::span(out3), kept, batch);
+  } else {
+    auto c = numbers(o.circle, "--circle", {3});
+    if (!c) return report(c.error());
+    const Circle disc{{(*c)[0], (*c)[1]}, (*c)[2]};
+    clip::clip_segments(std::span(std::as_const(in2)), disc, std::span(out2), kept, batch);
+  }
+  return emit(format_segments(table->values, columns, out2, out3, kept), o.out);
+}
+
+// --- polygons --------------------------------------------------------------------------------
+
+std::string polygon_wkt(const MultiPolygon& result) {
+  if (result.polygons.empty()) return "POLYGON EMPTY\n";
+  if (result.polygons.size() == 1) return io::write_wkt(result.polygons.front()) + "\n";
+  return io::write_wkt(result) + "\n";
+}
+
+int run_polygon(const ClipOptions& o) {
+  const int regions = !o.box.empty() + !o.halfspaces.empty() + !o.convex.empty();
+  if (regions != 1) {
+    return report(usage("--polygon needs one region: --halfspace (repeatable), --box or --convex"));
+  }
+  auto region = io::read_region(o.polygon);
+  if (!region) return report(region.error());
+  const clip::PolygonClipOptions options{.output = o.keep_bridges
+                                                       ? clip::PolygonClipOutput::bridged
+                                                       : clip::PolygonClipOutput::pieces};
+  MultiPolygon result;
+  if (!o.box.empty()) {
+    auto box = box2_of(o.box);
+    if (!box) return report(box.error());
+    result = clip::clip_polygon(*region, *box, options);
+  } else if (!o.halfspaces.empty()) {
+    auto planes = half_planes_of(o);
+    if (!planes) return report(planes.error());
+    result = clip::clip_polygon(*region, *planes, options);
+  } else {
+    auto ring = convex_ring_of(o.convex);
+    if (!ring) return report(ring.error());
+    result = clip::clip_polygon(*region, *ring, options);
+  }
+  return emit(polygon_wkt(result), o.out);
+}
+
+// --- meshes ----------------------------------------------------------------------------------
+
+int run_mesh(const ClipOptions& o) {
+  const int regions = !o.box.empty() + !o.halfspaces.empty() + !o.convex.empty();
+  if (regions != 1) {
+    return report(usage("--mesh needs one region: --halfspace (repeatable), --box or --convex"));
+  }
+  std::optional<io::MeshFormat> format = io::MeshFormat::off;
+  if (!o.out.empty() && o.out != "-") {
+    format = io::mesh_format_for_path(o.out);
+    if (!format) return report(usage("--out " + o.out + ": unknown mesh extension"));
+  }
+  auto file = io::read_mesh(o.mesh);
+  if (!file) return report(file.error());
+  const clip::MeshClipOptions options{.cut = o.cap ? clip::MeshCut::cap : clip::MeshCut::open};
+  if (o.cap && !validate_mesh(file->mesh).closed()) {
+    return report(
+        {ErrorKind::invalid_value, "--cap needs a closed mesh; this one has border edges", o.mesh});
+  }
+  Mesh result;
+  if (!o.box.empty()) {
+    auto box = box3_of(o.box);
+    if (!box) return report(box.error());
+    result = clip::mesh_clip(file->mesh, *box, options);
+  } else if (!o.halfspaces.empty()) {
+    auto planes = planes_of(o);
+    if (!planes) return report(planes.error());
+    result = clip::mesh_clip(file->mesh, *planes, options);
+  } else {
+    auto solid = convex_solid_of(o.convex);
+    if (!solid) return report(solid.error());
+    result = clip::mesh_clip(file->mesh, *solid, options);
+  }
+  if (o.out.empty() || o.out == "-") return emit(io::format_mesh(result, io::MeshFormat::off), "");
+  const Status written = io::write_mesh(result, o.out);
+  if (!written) return report(written.error());
+  return exit_ok;
+}
+
+}  // namespace
+
+Verb add_clip(CLI::App& app) {
+  auto o = std::make_shared<ClipOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "clip",
+      "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and "
+      "meshes by half-spaces (Sutherland-Hodgman)");
+  auto* segments = cmd->add_option("--segments", o->segments,
+                                   "segments, one a line: 4 numbers (2D) or 6 (3D); '-': stdin")
+                       ->option_text("FILE");
+  auto* polygon = cmd->add_option("--polygon", o->polygon,
+                                  "2D region (.wkt or .geojson) clipped by half-planes")
+                      ->option_text("FILE");
+  auto* mesh = cmd->add_option("--mesh", o->mesh,
+                               "mesh (.obj .off .stl .ply) clipped by "
+                               "half-spaces")
+                   ->option_text("FILE");
+  segments->excludes(polygon)->excludes(mesh);
+  polygon->excludes(segments)->excludes(mesh);
+  mesh->excludes(segments)->excludes(polygon);
+  cmd->add_option("--box", o->box, "the box: min corner then max corner (4 or 6 numbers)")
+      ->option_text("MIN..,MAX..");
+  cmd->add_option("--halfspace", o->halfspaces,
+                  "a x + b y + c z + d >= 0 (2D: a x + b y + c >= 0); repeatable")
+      ->option_text("a,b,c[,d]");
+  cmd->add_option("--convex", o->convex,
+                  "convex region: a convex polygon (.wkt) in 2D, a closed convex mesh in 3D")
+      ->option_text("FILE");
+  cmd->add_option("--sphere", o->sphere, "ball for 3D segments")->option_text("cx,cy,cz,r");
+  cmd->add_option("--circle", o->circle, "disc for 2D segments")->option_text("cx,cy,r");
+  cmd->add_option("--algorithm", o->algorithm,
+                  "segment clipper for --box (default: the "
+                  "branch-free batch kernel, exact decisions)")
+      ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "cyrus-beck"}));
+  cmd->add_flag("--keep-bridges", o->keep_bridges,
+                "polygons: the section's one ring per input ring, with degenerate bridging edges");
+  cmd->add_flag("--cap", o->cap, "meshes: close the cut of a closed mesh with cap polygons");
+  auto boolean = std::make_shared<ClipBooleanOptions>();  // --subject/--clip/--op: clip_boolean.cpp
+  add_clip_boolean_options(*cmd, *boolean);
+  add_threads_option(*cmd, o->threads);
+  cmd->add_option("--out", o->out, "write the result to FILE (meshes: format by extension)")
+      ->option_text("FILE");
+  cmd->footer(
+      "Examples:\n"
+      "  contain clip --segments lines.txt --box 0,0,0,1,1,1 --algorithm liang-barsky\n"
+      "  contain clip --segments lines2d.txt --circle 0,0,1\n"
+      "  contain clip --polygon parcels.wkt --box 0,0,100,100\n"
+      "  contain clip --mesh bunny.obj --halfspace=0,0,1,-0.5 --cap --out top.ply\n"
+      "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
+      "touches the region prints a zero-length segment.");
+  return {cmd, [o, boolean, segments, polygon, mesh]() {
+            if (clip_boolean_requested(*boolean)) return run_clip_boolean(*boolean, o->out);
+            if (segments->count() > 0) return run_segments(*o);
+            if (polygon->count() > 0) return run_polygon(*o);
+            if (mesh->count() > 0) return run_mesh(*o);
+            return report(usage("give what to clip: --segments, --polygon or --mesh"));
+          }};
+}
+
+}  // namespace contain::cli

@@ -1,0 +1,64 @@
+#pragma once
+/// \file
+/// 2D regions (polygons with holes, multipolygons) clipped by half-planes, a box or a convex
+/// polygon: Sutherland-Hodgman ring by ring (the section: "executed separately for each closed
+/// polyline of the boundary"), with the result either as the section gives it or split into its
+/// separate valid pieces.
+
+#include <cstdint>
+#include <span>
+
+#include "contain/geometry/box.h"
+#include "contain/geometry/plane.h"
+#include "contain/geometry/polygon.h"
+
+namespace contain::clip {
+
+/// What `clip_polygon` returns.
+enum class PolygonClipOutput : std::uint8_t {
+  /// The region split into its pieces: an OGC-valid MultiPolygon for OGC-valid input (closed
+  /// simple rings, shells counter-clockwise, holes clockwise, every hole in its piece).
+  pieces,
+  /// The section's result: one ring per input ring (rings that vanish are left out; a polygon
+  /// whose shell vanishes is left out), with the degenerate bridging edges along the clip lines;
+  /// read under the even-odd rule it covers the same area. Ring directions as in the input.
+  bridged,
+};
+
+struct PolygonClipOptions {
+  PolygonClipOutput output = PolygonClipOutput::pieces;
+};
+
+/// Clips a region by the intersection of closed half-planes (a convex region, possibly
+/// unbounded), one half-plane after the other.
+///
+/// Pieces: for each half-plane, each polygon's rings are walked once (shells turned
+/// counter-clockwise and holes clockwise first, orientation decided exactly at the lowest
+/// vertex); the runs of the rings inside the half-plane become chains from an entry point on the
+/// line to an exit point on it (a vertex on the line is taken as an entry or exit according to
+/// the next vertex off the line, so parts lying in the line with nothing inside beside them give
+/// no area); the chain ends are sorted along the line exactly (big-number comparisons of
+/// the exact crossing points' positions, ties: exit first) and each exit joins the next entry
+/// along the line's direction (inside on the left). The closed cycles are the pieces' shells;
+/// rings entirely inside stay as they are, and each hole not cut goes to the piece that contains
+/// it (inside::point_in_polygon). Rings entirely outside, and pieces of zero area, are dropped.
+/// Decisions are exact on the doubles each step sees; crossing points are rounded as in
+/// `sutherland_hodgman`. For input that is not OGC-valid (self-intersecting rings) the pieces
+/// cover the clipped area but are not guaranteed valid.
+///
+/// Complexity: O(n log n) per half-plane for n vertices, plus O(h s) for h uncut holes and s
+/// pieces.
+[[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region,
+                                        std::span<const HalfPlane> half_planes,
+                                        const PolygonClipOptions& options = {});
+
+/// By a closed box: its four half-planes (crossing coordinates on the box's sides exactly).
+[[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
+                                        const PolygonClipOptions& options = {});
+
+/// By a convex ring (either direction, see `sutherland_hodgman`); its edges' sides are exact
+/// orient2d tests.
+[[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
+                                        const PolygonClipOptions& options = {});
+
+}  // namespace contain::clip

@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// Triangle meshes clipped by half-spaces, a box or a convex polyhedron, face by face
+/// (Sutherland-Hodgman on each triangle, seed section 22.4), optionally closed again by caps.
+
+#include <cstdint>
+#include <span>
+
+#include "contain/geometry/box.h"
+#include "contain/geometry/mesh.h"
+#include "contain/geometry/plane.h"
+#include "contain/inside/convex_polyhedron.h"
+
+namespace contain::clip {
+
+/// What happens to the cut.
+enum class MeshCut : std::uint8_t {
+  open,  ///< faces are clipped, the cut stays open
+  cap,   ///< the cut of a closed mesh is closed by cap polygons (the `--cap` of the CLI)
+};
+
+struct MeshClipOptions {
+  MeshCut cut = MeshCut::open;
+};
+
+/// Clips a mesh by the intersection of closed half-spaces, one after the other.
+///
+/// Per half-space: the side of every vertex is exact (predicates::side_of_plane, or orient3d on
+/// a convex mesh's faces); a triangle with all vertices in or on is kept; one with a vertex
+/// strictly in is clipped by Sutherland-Hodgman and fan-triangulated (1 or 2 triangles); a
+/// triangle lying in the plane is kept iff its normal points out of the half-space (exact sign),
+/// so a face of the solid on the plane stays and a face looking into it goes. Crossing points are
+/// made once per mesh edge (from its lower-index end), so neighbouring triangles share them and
+/// the result stays welded; they are rounded (a few ulps), and exact on box faces.
+///
+/// With `MeshCut::cap`, the border edges that lie on the plane (ends on the plane or cut) are
+/// chained into loops, nested by the even-odd rule, and each region between them is
+/// triangulated (holes bridged to their outer loop, then ear clipping with exact orient2d in the
+/// plane's dominant projection), its triangles turned to face out of the half-space: for a
+/// closed, consistently oriented (2-manifold along the cut) mesh the result is again closed and
+/// consistently oriented (check: validate_mesh). Unreferenced vertices are removed at the end.
+/// An empty result has no triangles. Complexity: O(n) per half-space plus O(k^2)..O(k^3) for a
+/// cap of k vertices.
+[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, std::span<const Plane> half_spaces,
+                             const MeshClipOptions& options = {});
+
+/// By a closed box (its six face half-spaces).
+[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const Box3& box,
+                             const MeshClipOptions& options = {});
+
+/// By a convex polyhedron: its planes, or the faces of the convex mesh it was made from.
+[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
+                             const MeshClipOptions& options = {});
+
+}  // namespace contain::clip

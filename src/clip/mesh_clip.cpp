@@ -1,0 +1,225 @@
+// Meshes by half-spaces: one half-space at a time, triangle by triangle, with crossing vertices
+// shared per mesh edge; the cap (optional) closes the border loops lying on the plane.
+
+#include "contain/clip/mesh_clip.h"
+
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "clip/cap_triangulation.h"
+#include "clip/convex_functions.h"
+#include "clip/ring_clip.h"
+#include "contain/clip/box_halfspaces.h"
+
+namespace contain::clip {
+namespace {
+
+using detail::big;
+using detail::BigFloat;
+
+struct Gradient {
+  BigFloat x, y, z;  // exact
+  Vec3 approx;
+};
+
+Gradient gradient(const detail::PlaneFunction& f) {
+  return {big(f.plane.a), big(f.plane.b), big(f.plane.c), f.plane.normal()};
+}
+Gradient gradient(const detail::FaceFunction& f) {
+  // s(p) = ((c - a) x (b - a)) . (p - a)
+  const Triangle3& t = f.face;
+  const BigFloat ux = big(t.c.x) - big(t.a.x), uy = big(t.c.y) - big(t.a.y),
+                 uz = big(t.c.z) - big(t.a.z);
+  const BigFloat wx = big(t.b.x) - big(t.a.x), wy = big(t.b.y) - big(t.a.y),
+                 wz = big(t.b.z) - big(t.a.z);
+  return {uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx, cross(t.c - t.a, t.b - t.a)};
+}
+
+// Sign of the triangle's normal (b - a) x (c - a) dotted with the gradient, exactly.
+Sign facing(const Vec3& a, const Vec3& b, const Vec3& c, const Gradient& g) {
+  const BigFloat ux = big(b.x) - big(a.x), uy = big(b.y) - big(a.y), uz = big(b.z) - big(a.z);
+  const BigFloat wx = big(c.x) - big(a.x), wy = big(c.y) - big(a.y), wz = big(c.z) - big(a.z);
+  return ((uy * wz - uz * wy) * g.x + (uz * wx - ux * wz) * g.y + (ux * wy - uy * wx) * g.z).sign();
+}
+
+using Key = std::uint64_t;
+Key edge_key(std::int32_t i, std::int32_t j) {
+  return (static_cast<Key>(static_cast<std::uint32_t>(i)) << 32) | static_cast<std::uint32_t>(j);
+}
+
+template <class F>
+Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
+  const Gradient g = gradient(f);
+  Mesh out;
+  out.vertices = mesh.vertices;
+  std::vector<Sign> side(mesh.vertices.size());
+  std::vector<bool> on_plane(mesh.vertices.size());
+  for (std::size_t v = 0; v < side.size(); ++v) {
+    side[v] = f.side(mesh.vertices[v]);
+    on_plane[v] = side[v] == Sign::zero;
+  }
+  std::unordered_map<Key, std::int32_t> crossings;
+  auto crossing = [&](std::int32_t i, std::int32_t j) {
+    if (j < i) std::swap(i, j);
+    const auto [it, fresh] = crossings.try_emplace(edge_key(i, j), 0);
+    if (fresh) {
+      it->second = static_cast<std::int32_t>(out.vertices.size());
+      out.vertices.push_back(detail::crossing_point(mesh.vertices[static_cast<std::size_t>(i)],
+                                                    mesh.vertices[static_cast<std::size_t>(j)], f));
+      on_plane.push_back(true);
+    }
+    return it->second;
+  };
+  for (const TriangleIndices& t : mesh.triangles) {
+    Sign s[3];
+    bool any_in = false, any_out = false;
+    for (int e = 0; e < 3; ++e) {
+      s[e] = side[static_cast<std::size_t>(t[static_cast<std::size_t>(e)])];
+      any_in |= s[e] == Sign::positive;
+      any_out |= s[e] == Sign::negative;
+    }
+    if (!any_out) {
+      if (any_in || facing(mesh.vertices[static_cast<std::size_t>(t[0])],
+                           mesh.vertices[static_cast<std::size_t>(t[1])],
+                           mesh.vertices[static_cast<std::size_t>(t[2])], g) == Sign::negative) {
+        out.triangles.push_back(t);
+      }
+      continue;
+    }
+    if (!any_in) continue;
+    std::int32_t poly[4];
+    int n = 0;
+    for (int e = 0; e < 3; ++e) {
+      const int ip = (e + 2) % 3;
+      const Sign sp = s[ip], sq = s[e];
+      if ((sp == Sign::positive && sq == Sign::negative) ||
+          (sp == Sign::negative && sq == Sign::positive)) {
+        poly[n++] = crossing(t[static_cast<std::size_t>(ip)], t[static_cast<std::size_t>(e)]);
+      }
+      if (sq != Sign::negative) poly[n++] = t[static_cast<std::size_t>(e)];
+    }
+    for (int m = 1; m + 1 < n; ++m)
+      out.triangles.push_back({poly[0], poly[m], poly[m + 1]});
+  }
+  if (!cap) return out;
+
+  // Border edges on the plane, chained into loops (directed as the mesh uses them).
+  std::unordered_set<Key> directed;
+  for (const auto& t : out.triangles) {
+    for (int e = 0; e < 3; ++e)
+      directed.insert(
+          edge_key(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]));
+  }
+  std::unordered_map<std::int32_t, std::int32_t> next;
+  for (const auto& t : out.triangles) {
+    for (int e = 0; e < 3; ++e) {
+      const std::int32_t u = t[static_cast<std::size_t>(e)],
+                         v = t[static_cast<std::size_t>((e + 1) % 3)];
+      if (on_plane[static_cast<std::size_t>(u)] && on_plane[static_cast<std::size_t>(v)] &&
+          !directed.contains(edge_key(v, u))) {
+        next.try_emplace(u, v);
+      }
+    }
+  }
+  std::vector<std::vector<std::int32_t>> loops;
+  std::unordered_set<std::int32_t> seen;
+  for (const auto& [start, unused] : next) {
+    (void)unused;
+    if (seen.contains(start)) continue;
+    std::vector<std::int32_t> loop;
+    std::int32_t v = start;
+    bool closed = false;
+    while (!seen.contains(v)) {
+      seen.insert(v);
+      loop.push_back(v);
+      const auto it = next.find(v);
+      if (it == next.end()) break;
+      v = it->second;
+      if (v == start) {
+        closed = true;
+        break;
+      }
+    }
+    if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  if (loops.empty()) return out;
+  // Project along the gradient's largest component.
+  const Vec3 n = g.approx;
+  const int axis = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z)
+                       ? 0
+                       : (std::fabs(n.y) >= std::fabs(n.z) ? 1 : 2);
+  std::vector<Vec2> pts(out.vertices.size());
+  for (std::size_t v = 0; v < pts.size(); ++v) {
+    const Vec3 p = out.vertices[v];
+    pts[v] = axis == 0 ? Vec2{p.y, p.z} : (axis == 1 ? Vec2{p.z, p.x} : Vec2{p.x, p.y});
+  }
+  // The cap runs along each loop against the mesh's direction: if the outermost loop turns
+  // counter-clockwise in the projection as the mesh uses it, cap triangles turn clockwise.
+  std::size_t outer = 0;
+  double outer_area = 0.0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    Ring r;
+    for (auto i : loops[l])
+      r.push_back(pts[static_cast<std::size_t>(i)]);
+    const double a = signed_area2(r);
+    if (std::fabs(a) > std::fabs(outer_area)) {
+      outer_area = a;
+      outer = l;
+    }
+  }
+  (void)outer;
+  const auto cap_triangles = detail::triangulate_loops(loops, pts, !(outer_area > 0.0));
+  for (const auto& t : cap_triangles)
+    out.triangles.push_back({t[0], t[1], t[2]});
+  return out;
+}
+
+Mesh compact(Mesh mesh) {
+  std::vector<std::int32_t> remap(mesh.vertices.size(), -1);
+  std::vector<Vec3> vertices;
+  for (auto& t : mesh.triangles) {
+    for (auto& i : t) {
+      auto& r = remap[static_cast<std::size_t>(i)];
+      if (r < 0) {
+        r = static_cast<std::int32_t>(vertices.size());
+        vertices.push_back(mesh.vertices[static_cast<std::size_t>(i)]);
+      }
+      i = r;
+    }
+  }
+  mesh.vertices = std::move(vertices);
+  return mesh;
+}
+
+template <class F>
+Mesh clip_all(const Mesh& mesh, const std::vector<F>& functions, const MeshClipOptions& options) {
+  Mesh current = mesh;
+  for (const F& f : functions) {
+    if (current.triangles.empty()) break;
+    current = clip_step(current, f, options.cut == MeshCut::cap);
+  }
+  return compact(std::move(current));
+}
+
+}  // namespace
+
+Mesh mesh_clip(const Mesh& mesh, std::span<const Plane> half_spaces,
+               const MeshClipOptions& options) {
+  return clip_all(mesh, detail::plane_functions(half_spaces), options);
+}
+
+Mesh mesh_clip(const Mesh& mesh, const Box3& box, const MeshClipOptions& options) {
+  if (box.empty()) return {};
+  return mesh_clip(mesh, box_halfspaces(box), options);
+}
+
+Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
+               const MeshClipOptions& options) {
+  if (!polyhedron.faces().empty()) {
+    return clip_all(mesh, detail::face_functions(polyhedron.faces()), options);
+  }
+  return mesh_clip(mesh, std::span<const Plane>(polyhedron.planes()), options);
+}
+
+}  // namespace contain::clip
