@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "contain/bvh/triangle_boxes.h"
@@ -66,6 +67,17 @@ double inner_point(double lo, double hi) {
   return (m >= lo && m < hi) ? m : lo;
 }
 
+float float_below(double v) {
+  auto f = static_cast<float>(v);
+  if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+float float_above(double v) {
+  auto f = static_cast<float>(v);
+  if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
 std::string plural(std::size_t n, const char* word) {
   std::ostringstream out;
   out << n << " " << word << (n == 1 ? "" : "s");
@@ -84,8 +96,17 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   for (const TriangleIndices& t : mesh.triangles) {
     Tri tri{mesh.vertices[static_cast<std::size_t>(t[0])],
             mesh.vertices[static_cast<std::size_t>(t[1])],
-            mesh.vertices[static_cast<std::size_t>(t[2])], Sign::zero};
+            mesh.vertices[static_cast<std::size_t>(t[2])],
+            {},
+            {},
+            Sign::zero};
     tri.s = detail::projected_sign(tri.a, tri.b, tri.c);
+    tri.lo[0] = float_below(std::min({tri.a.x, tri.b.x, tri.c.x}));
+    tri.lo[1] = float_below(std::min({tri.a.y, tri.b.y, tri.c.y}));
+    tri.lo[2] = float_below(std::min({tri.a.z, tri.b.z, tri.c.z}));
+    tri.hi[0] = float_above(std::max({tri.a.x, tri.b.x, tri.c.x}));
+    tri.hi[1] = float_above(std::max({tri.a.y, tri.b.y, tri.c.y}));
+    tri.hi[2] = float_above(std::max({tri.a.z, tri.b.z, tri.c.z}));
     bounds_.expand(tri.a);
     bounds_.expand(tri.b);
     bounds_.expand(tri.c);
@@ -150,24 +171,36 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
                            static_cast<double>(options.min_cells));
   target =
       std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
-  double volume = 1.0;
+  // cell edge = (volume / target)^(1/dims) in half units, in logarithms: the volume of a box of
+  // huge or tiny extents over- or underflows.
+  double log_volume = 0.0;
   int dims = 0;
   for (double h : half) {
     if (h > 0.0) {
-      volume *= h;
+      log_volume += std::log(h);
       ++dims;
     }
   }
   std::array<int, 3> n{1, 1, 1};
   if (dims > 0) {
-    // cell edge = (volume / target)^(1/dims), in half units, computed in logs against overflow
-    const double log_edge = (std::log(volume) - std::log(target)) / dims;
+    const double log_edge = (log_volume - std::log(target)) / dims;
+    double product = 1.0;
     for (int d = 0; d < 3; ++d) {
-      if (half[static_cast<std::size_t>(d)] > 0.0) {
-        const double cells = std::exp(std::log(half[static_cast<std::size_t>(d)]) - log_edge);
-        n[static_cast<std::size_t>(d)] =
-            static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
+      const auto du = static_cast<std::size_t>(d);
+      if (half[du] > 0.0) {
+        const double cells = std::exp(std::log(half[du]) - log_edge);
+        n[du] = static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
       }
+      product *= n[du];
+    }
+    // Rounding may overshoot the cap: shrink the largest dimension until it fits.
+    while (product > static_cast<double>(std::max<std::size_t>(options.max_cells, 1))) {
+      int* largest = &n[0];
+      for (int& v : n)
+        largest = v > *largest ? &v : largest;
+      if (*largest == 1) break;
+      product = product / *largest * (*largest - 1);
+      *largest -= 1;
     }
   }
   nx_ = n[0];
@@ -205,13 +238,15 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   };
   for (const Box3& b : boxes)
     for_cells(b, [&](std::size_t c) { ++count[c]; });
-  cells_.assign(cell_count, 0);
+  state_.assign(cell_count, 0);
+  surface_.assign(cell_count, 0);
   cell_start_.clear();
   cell_start_.push_back(0);
   std::vector<std::uint32_t> next(cell_count, 0);
   for (std::size_t c = 0; c < cell_count; ++c) {
     if (count[c] == 0) continue;
-    cells_[c] = static_cast<std::uint32_t>(cell_start_.size() - 1) + 2u;
+    state_[c] = 2;
+    surface_[c] = static_cast<std::uint32_t>(cell_start_.size() - 1);
     next[c] = cell_start_.back();
     cell_start_.push_back(cell_start_.back() + count[c]);
   }
@@ -232,19 +267,19 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
                                static_cast<std::size_t>(j)) *
                               static_cast<std::size_t>(nx_);
       for (int i = nx_ - 1; i >= 0; --i) {
-        if (cells_[row + static_cast<std::size_t>(i)] >= 2) continue;
+        if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
         const Vec3 m{xs_[static_cast<std::size_t>(i)], y, z};
         const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
-        cells_[row + static_cast<std::size_t>(i)] = odd ? 1u : 0u;
+        state_[row + static_cast<std::size_t>(i)] = odd ? 1 : 0;
       }
     }
   }
 }
 
 bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
-  if (p.x < std::min({t.a.x, t.b.x, t.c.x}) || p.x > std::max({t.a.x, t.b.x, t.c.x}) ||
-      p.y < std::min({t.a.y, t.b.y, t.c.y}) || p.y > std::max({t.a.y, t.b.y, t.c.y}) ||
-      p.z < std::min({t.a.z, t.b.z, t.c.z}) || p.z > std::max({t.a.z, t.b.z, t.c.z})) {
+  // Outside the outward-rounded box: certainly not on the triangle.
+  if ((p.x < t.lo[0]) | (p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) |
+      (p.z > t.hi[2])) {
     return false;
   }
   if (predicates::orient3d(t.a, t.b, t.c, p) != Sign::zero) return false;
@@ -257,18 +292,22 @@ bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
 bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
   bool odd = false;
   for (int i = first; i < nx_; ++i) {
-    const std::uint32_t code = cells_[row + static_cast<std::size_t>(i)];
-    if (code < 2) return odd != (code == 1);
+    const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
+    if (state < 2) return odd != (state == 1);
+    const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
     // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
     // (no hit can lie in its closed box).
-    const bool test_upper = i + 1 < nx_ && cells_[row + static_cast<std::size_t>(i) + 1] >= 2;
+    const bool test_upper = i + 1 < nx_ && state_[row + static_cast<std::size_t>(i) + 1] == 2;
     const Vec3 lower{xs_[static_cast<std::size_t>(i)], q.y, q.z};
     const Vec3 upper{xs_[static_cast<std::size_t>(i) + 1], q.y, q.z};
     const bool from_q = q_in_first && i == first;
-    for (std::uint32_t r = cell_start_[code - 2]; r < cell_start_[code - 1]; ++r) {
+    for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
       const Tri& t = tris_[refs_[r]];
-      if (t.s == Sign::zero || !detail::perturbed_line_hits(t.a, t.b, t.c, t.s, q)) continue;
+      if ((q.y < t.lo[1]) | (q.y > t.hi[1]) | (q.z < t.lo[2]) | (q.z > t.hi[2])) continue;
+      if (t.s == Sign::zero || !detail::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, q)) {
+        continue;
+      }
       if (from_q ? detail::hit_side(t.a, t.b, t.c, t.s, q) <= 0
                  : detail::hit_side(t.a, t.b, t.c, t.s, lower) < 0) {
         continue;
@@ -286,16 +325,17 @@ Location MeshIndex::locate(Vec3 p) const {
 }
 
 Location MeshIndex::locate_exact(Vec3 p) const {
-  if (cells_.empty() || !bounds_.contains(p)) return Location::outside;
+  if (state_.empty() || !bounds_.contains(p)) return Location::outside;
   const int i = exact_cell(xs_, nx_, p.x, guess_cell(p.x, bounds_.min.x, scale_.x, nx_));
   const int j = exact_cell(ys_, ny_, p.y, guess_cell(p.y, bounds_.min.y, scale_.y, ny_));
   const int k = exact_cell(zs_, nz_, p.z, guess_cell(p.z, bounds_.min.z, scale_.z, nz_));
   const std::size_t row =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
       static_cast<std::size_t>(nx_);
-  const std::uint32_t code = cells_[row + static_cast<std::size_t>(i)];
-  if (code < 2) return code == 1 ? Location::inside : Location::outside;
-  for (std::uint32_t r = cell_start_[code - 2]; r < cell_start_[code - 1]; ++r) {
+  const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
+  if (state < 2) return state == 1 ? Location::inside : Location::outside;
+  const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
+  for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
     if (on_triangle(tris_[refs_[r]], p)) return Location::boundary;
   }
   // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
@@ -320,9 +360,45 @@ Location MeshIndex::locate_winding(Vec3 p) const {
 void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
                        const BatchOptions& options) const {
   const std::size_t count = std::min(points.size(), out.size());
+  if (regime_ == MeshRegime::winding_number || state_.empty()) {
+    parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t q = begin; q < end; ++q)
+        out[q] = locate(points[q]);
+    });
+    return;
+  }
+  // Random points read random cells: a software pipeline prefetches, a few points ahead, the
+  // cell's state byte, then (for a surface cell) its number and its triangle list. Prefetches
+  // only warm the cache (the guessed cell need not be the exact one): answers do not change.
+  constexpr std::size_t kAhead = 16, kListAhead = 6;
   parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t q = begin; q < end; ++q)
-      out[q] = locate(points[q]);
+    std::array<std::ptrdiff_t, kAhead> guessed{};
+    auto guess = [&](Vec3 p) -> std::ptrdiff_t {
+      if (!bounds_.contains(p)) return -1;
+      const int i = guess_cell(p.x, bounds_.min.x, scale_.x, nx_);
+      const int j = guess_cell(p.y, bounds_.min.y, scale_.y, ny_);
+      const int k = guess_cell(p.z, bounds_.min.z, scale_.z, nz_);
+      return (static_cast<std::ptrdiff_t>(k) * ny_ + j) * nx_ + i;
+    };
+    for (std::size_t q = begin; q < std::min(end, begin + kAhead); ++q)
+      guessed[q % kAhead] = guess(points[q]);
+    for (std::size_t q = begin; q < end; ++q) {
+      if (q + kListAhead < end) {
+        const std::ptrdiff_t c = guessed[(q + kListAhead) % kAhead];
+        if (c >= 0 && state_[static_cast<std::size_t>(c)] == 2) {
+          const std::uint32_t cell = surface_[static_cast<std::size_t>(c)];
+          __builtin_prefetch(&refs_[cell_start_[cell]]);
+        }
+      }
+      out[q] = locate_exact(points[q]);
+      if (q + kAhead < end) {
+        const std::ptrdiff_t c = guess(points[q + kAhead]);
+        guessed[q % kAhead] = c;
+        if (c >= 0) {
+          __builtin_prefetch(&state_[static_cast<std::size_t>(c)]);
+        }
+      }
+    }
   });
 }
 

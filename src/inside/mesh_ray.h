@@ -40,11 +40,15 @@ namespace contain::inside::detail {
 
 // Does the perturbed line through q along x pass through the triangle (s = projected_sign != 0)?
 // The (y, z) box test first: q_e can only be inside if q.y in [min y, max y) and likewise z.
+// The orientation tests alone are complete (the box test only saves time).
+[[nodiscard]] inline bool perturbed_line_hits_unboxed(Vec3 a, Vec3 b, Vec3 c, Sign s, Vec3 q) {
+  return perturbed_orient_yz(a, b, q) == s && perturbed_orient_yz(b, c, q) == s &&
+         perturbed_orient_yz(c, a, q) == s;
+}
 [[nodiscard]] inline bool perturbed_line_hits(Vec3 a, Vec3 b, Vec3 c, Sign s, Vec3 q) {
   if (!(q.y >= std::min({a.y, b.y, c.y}) && q.y < std::max({a.y, b.y, c.y}))) return false;
   if (!(q.z >= std::min({a.z, b.z, c.z}) && q.z < std::max({a.z, b.z, c.z}))) return false;
-  return perturbed_orient_yz(a, b, q) == s && perturbed_orient_yz(b, c, q) == s &&
-         perturbed_orient_yz(c, a, q) == s;
+  return perturbed_line_hits_unboxed(a, b, c, s, q);
 }
 
 // Where the perturbed line through m meets the triangle's plane, relative to m.x: +1 beyond,

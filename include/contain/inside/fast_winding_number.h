@@ -18,7 +18,7 @@ namespace contain::inside {
 struct FastWindingOptions {
   /// A node is treated as one dipole when the point is farther than `accuracy` times the
   /// node's radius from the node's area-weighted centre. Larger: more accurate, slower.
-  double accuracy = 2.0;
+  double accuracy = 3.0;
 };
 
 /// A mesh prepared for generalized winding numbers (see winding_number_3d.h). Near the point

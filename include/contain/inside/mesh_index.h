@@ -36,13 +36,13 @@ enum class MeshRegime : std::uint8_t {
 /// How a `MeshIndex` is built.
 struct MeshIndexOptions {
   /// Grid resolution for the exact regime: about this many cells per triangle ...
-  double cells_per_triangle = 4.0;
+  double cells_per_triangle = 16.0;
   /// ... at least this many ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: 4 bytes a cell, 4 per triangle-cell pair).
+  /// ... and at most this many (memory: 5 bytes a cell, 4 per triangle-cell pair).
   std::size_t max_cells = std::size_t{1} << 24;
   /// Accuracy of the winding number regime (see `FastWindingOptions`).
-  double winding_accuracy = 2.0;
+  double winding_accuracy = 3.0;
 };
 
 /// A triangle mesh prepared for exact point location.
@@ -110,7 +110,8 @@ class MeshIndex {
  private:
   struct Tri {
     Vec3 a, b, c;
-    Sign s;  // sign of the (y, z) projection: zero if never crossed by an x ray
+    float lo[3], hi[3];  // box rounded outward to float: a quick, safe rejection test
+    Sign s;              // sign of the (y, z) projection: zero if never crossed by an x ray
   };
 
   [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
@@ -127,8 +128,11 @@ class MeshIndex {
   int nx_ = 0, ny_ = 0, nz_ = 0;
   Vec3 scale_{};  // cells per half unit along each axis, for the guess
   std::vector<double> xs_, ys_, zs_;
-  // Per cell: 0 outside, 1 inside (empty cells), k >= 2: surface cell k - 2.
-  std::vector<std::uint32_t> cells_;
+  // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
+  // most queries read stays small in cache).
+  std::vector<std::uint8_t> state_;
+  std::vector<std::uint32_t> surface_;  // per cell: its surface cell number k, where state 2
+
   std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
   std::vector<std::uint32_t> refs_;        // triangle numbers
   // Winding regime.

@@ -1,0 +1,162 @@
+#include "contain/bvh/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "contain/bvh/triangle_boxes.h"
+#include "scenes/scenes.h"
+
+namespace contain::bvh {
+namespace {
+
+std::vector<Box3> random_boxes(std::size_t n, unsigned seed, double size = 0.05) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(0.0, size);
+  std::vector<Box3> boxes(n);
+  for (Box3& b : boxes) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    b.min = p;
+    b.max = p + Vec3{s(rng), s(rng), s(rng)};
+  }
+  return boxes;
+}
+
+Box3 translated(const Box3& b, Vec3 t) {
+  return {b.min + t, b.max + t};
+}
+
+TEST(Bvh, EveryItemIsInExactlyOneLeafAndEveryNodeBoxContainsItsItems) {
+  const std::vector<Box3> boxes = random_boxes(5000, 1);
+  const Bvh bvh(boxes);
+  std::vector<int> seen(boxes.size(), 0);
+  const auto nodes = bvh.nodes();
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (!nodes[n].is_leaf()) {
+      const Box3& l = nodes[n + 1].box;
+      const Box3& r = nodes[static_cast<std::size_t>(nodes[n].first)].box;
+      EXPECT_TRUE(nodes[n].box.contains(l.min) && nodes[n].box.contains(l.max));
+      EXPECT_TRUE(nodes[n].box.contains(r.min) && nodes[n].box.contains(r.max));
+      continue;
+    }
+    for (std::int32_t k = nodes[n].first; k < nodes[n].first + nodes[n].count; ++k) {
+      const std::int32_t item = bvh.items()[static_cast<std::size_t>(k)];
+      ++seen[static_cast<std::size_t>(item)];
+      const Box3& b = boxes[static_cast<std::size_t>(item)];
+      EXPECT_TRUE(nodes[n].box.contains(b.min) && nodes[n].box.contains(b.max));
+    }
+  }
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
+  EXPECT_LE(nodes.size(), 2 * boxes.size() - 1);
+}
+
+TEST(Bvh, OverlapQueryFindsExactlyTheOverlappingBoxes) {
+  const std::vector<Box3> boxes = random_boxes(3000, 2);
+  const Bvh bvh(boxes);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int q = 0; q < 50; ++q) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    const Box3 query{p, p + Vec3{0.1, 0.1, 0.1}};
+    std::set<std::int32_t> found;
+    const TraversalStats stats =
+        bvh.traverse([&](const Node& node, std::int32_t) { return node.box.overlaps(query); },
+                     [&](std::int32_t item) {
+                       if (boxes[static_cast<std::size_t>(item)].overlaps(query))
+                         found.insert(item);
+                       return Visit::proceed;
+                     });
+    std::set<std::int32_t> expected;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      if (boxes[i].overlaps(query)) expected.insert(static_cast<std::int32_t>(i));
+    EXPECT_EQ(found, expected);
+    EXPECT_FALSE(stats.stopped);
+    EXPECT_LT(stats.items, boxes.size() / 4) << "the hierarchy prunes";
+  }
+}
+
+TEST(Bvh, VisitorThatStopsEndsTheTraversalAtOnce) {
+  const std::vector<Box3> boxes = random_boxes(1000, 4);
+  const Bvh bvh(boxes);
+  int visited = 0;
+  const TraversalStats stats = bvh.traverse([](const Node&, std::int32_t) { return true; },
+                                            [&](std::int32_t) {
+                                              ++visited;
+                                              return visited == 3 ? Visit::stop : Visit::proceed;
+                                            });
+  EXPECT_TRUE(stats.stopped);
+  EXPECT_EQ(visited, 3);
+  EXPECT_EQ(stats.items, 3u);
+}
+
+TEST(Bvh, PairTraversalUnderATranslationFindsExactlyTheOverlappingPairs) {
+  const std::vector<Box3> a = random_boxes(800, 5), b = random_boxes(600, 6);
+  const Bvh ba(a), bb(b);
+  const Vec3 shift{0.3, -0.2, 0.1};  // b is moved: its boxes are tested translated
+  std::set<std::pair<std::int32_t, std::int32_t>> found;
+  (void)traverse_pairs(
+      ba, bb,
+      [&](const Node& na, const Node& nb) { return na.box.overlaps(translated(nb.box, shift)); },
+      [&](std::int32_t i, std::int32_t j) {
+        if (a[static_cast<std::size_t>(i)].overlaps(
+                translated(b[static_cast<std::size_t>(j)], shift))) {
+          EXPECT_TRUE(found.insert({i, j}).second) << "each pair once";
+        }
+        return Visit::proceed;
+      });
+  std::set<std::pair<std::int32_t, std::int32_t>> expected;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if (a[i].overlaps(translated(b[j], shift)))
+        expected.insert({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+  EXPECT_EQ(found, expected);
+  EXPECT_FALSE(expected.empty());
+}
+
+TEST(Bvh, CoincidentBoxesStillGiveALogarithmicDepth) {
+  const std::vector<Box3> boxes(4096, Box3{{1, 1, 1}, {2, 2, 2}});
+  const Bvh bvh(boxes);
+  EXPECT_LE(bvh.depth(), 14);
+  std::size_t count = 0;
+  (void)bvh.traverse([](const Node&, std::int32_t) { return true; },
+                     [&](std::int32_t) {
+                       ++count;
+                       return Visit::proceed;
+                     });
+  EXPECT_EQ(count, boxes.size());
+}
+
+TEST(Bvh, EmptyHierarchyVisitsNothingAndEmptyBoxesNeverOverlap) {
+  const Bvh empty;
+  const TraversalStats stats = empty.traverse([](const Node&, std::int32_t) { return true; },
+                                              [](std::int32_t) { return Visit::proceed; });
+  EXPECT_EQ(stats.nodes, 0u);
+  EXPECT_TRUE(empty.bounds().empty());
+  std::vector<Box3> boxes = random_boxes(10, 7);
+  boxes.push_back(Box3{});  // empty
+  const Bvh bvh(boxes);
+  EXPECT_EQ(bvh.items().size(), boxes.size());
+}
+
+TEST(Bvh, SahTreeOverAMeshPrunesPointQueries) {
+  const Mesh torus = scenes::torus(1.0, 0.4, 100, 40);
+  const std::vector<Box3> boxes = triangle_boxes(torus);
+  const Bvh bvh(boxes);
+  const Vec3 p = torus.vertices[17];
+  std::size_t hits = 0;
+  const TraversalStats stats =
+      bvh.traverse([&](const Node& node, std::int32_t) { return node.box.contains(p); },
+                   [&](std::int32_t t) {
+                     hits += boxes[static_cast<std::size_t>(t)].contains(p);
+                     return Visit::proceed;
+                   });
+  EXPECT_GE(hits, 3u);  // a vertex's triangles
+  EXPECT_LT(stats.nodes, 200u);
+}
+
+}  // namespace
+}  // namespace contain::bvh
