@@ -108,18 +108,26 @@ void ear_clip(Loop poly, const std::vector<Vec2>& pts,
       clipped = true;
     }
     if (!clipped) {
-      // Only flat or reflex corners left (degenerate input): drop a flat one, else give up.
-      bool dropped = false;
-      for (std::size_t i = 0; i < n && !dropped; ++i) {
-        if (orient2d(P(poly[(i + n - 1) % n]), P(poly[i]), P(poly[(i + 1) % n])) == Sign::zero) {
+      // No empty ear (rounded crossings can make a loop touch itself): cut a convex corner
+      // anyway, which keeps the cap closed; else drop a flat corner; else give up.
+      for (std::size_t i = 0; i < n && !clipped; ++i) {
+        const std::int32_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+        if (orient2d(P(a), P(b), P(c)) == Sign::positive) {
+          out.push_back({a, b, c});
           poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
-          dropped = true;
+          clipped = true;
         }
       }
-      if (!dropped) return;
+      for (std::size_t i = 0; i < n && !clipped; ++i) {
+        if (orient2d(P(poly[(i + n - 1) % n]), P(poly[i]), P(poly[(i + 1) % n])) == Sign::zero) {
+          poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+          clipped = true;
+        }
+      }
+      if (!clipped) return;
     }
   }
-  if (poly.size() == 3 && orient2d(P(poly[0]), P(poly[1]), P(poly[2])) == Sign::positive) {
+  if (poly.size() == 3 && orient2d(P(poly[0]), P(poly[1]), P(poly[2])) != Sign::negative) {
     out.push_back({poly[0], poly[1], poly[2]});
   }
 }

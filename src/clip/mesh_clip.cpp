@@ -3,6 +3,7 @@
 
 #include "contain/clip/mesh_clip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
@@ -217,7 +218,16 @@ Mesh mesh_clip(const Mesh& mesh, const Box3& box, const MeshClipOptions& options
 Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
                const MeshClipOptions& options) {
   if (!polyhedron.faces().empty()) {
-    return clip_all(mesh, detail::face_functions(polyhedron.faces()), options);
+    // One cut per plane: a face coplanar with an earlier one (a quad split in two) would cut
+    // again through the rounded crossings of the first.
+    std::vector<detail::FaceFunction> faces;
+    for (const Triangle3& t : polyhedron.faces()) {
+      const bool repeated = std::any_of(faces.begin(), faces.end(), [&](const auto& f) {
+        return f.side(t.a) == Sign::zero && f.side(t.b) == Sign::zero && f.side(t.c) == Sign::zero;
+      });
+      if (!repeated) faces.push_back({t});
+    }
+    return clip_all(mesh, faces, options);
   }
   return mesh_clip(mesh, std::span<const Plane>(polyhedron.planes()), options);
 }

@@ -26,7 +26,12 @@ inline void snap(const PlaneFunction& f, Vec3& x) {
   if (h.a == 0.0 && h.b == 0.0 && unit(h.c)) x.z = -h.d * h.c;
 }
 
-inline void snap(const FaceFunction& /*face*/, Vec3& /*x*/) {}
+inline void snap(const FaceFunction& f, Vec3& x) {
+  const Triangle3& t = f.face;
+  if (t.a.x == t.b.x && t.a.x == t.c.x) x.x = t.a.x;
+  if (t.a.y == t.b.y && t.a.y == t.c.y) x.y = t.a.y;
+  if (t.a.z == t.b.z && t.a.z == t.c.z) x.z = t.a.z;
+}
 
 /// The crossing of the edge p->q (one endpoint strictly in, one strictly out) with the boundary.
 template <class V, class F>

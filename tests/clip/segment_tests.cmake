@@ -7,3 +7,8 @@ list(APPEND CLIP_TESTS
   ${CMAKE_CURRENT_LIST_DIR}/cyrus_beck_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/segment_sphere_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/clip_segments_test.cpp)
+list(APPEND CLIP_TESTS
+  ${CMAKE_CURRENT_LIST_DIR}/polygon_checks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sutherland_hodgman_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/clip_polygon_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_clip_test.cpp)

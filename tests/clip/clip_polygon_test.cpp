@@ -1,0 +1,101 @@
+// Polygons clipped into valid pieces: validity, conserved area, holes, the section's form.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "clip/polygon_checks.h"
+#include "contain/clip/clip_polygon.h"
+#include "contain/clip/sutherland_hodgman.h"
+#include "scenes/scenes.h"
+
+namespace contain::test {
+namespace {
+
+MultiPolygon of(Polygon p) {
+  return MultiPolygon{{std::move(p)}};
+}
+
+TEST(ClipPolygon, ConcaveShapeFallsApartIntoValidPieces) {
+  const Polygon u{{{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}}};
+  const std::vector<HalfPlane> y_ge_2 = {{0, 1, -2}};
+  const MultiPolygon pieces = clip::clip_polygon(of(u), y_ge_2);
+  ASSERT_EQ(pieces.polygons.size(), 2u);
+  EXPECT_EQ(ogc_problem(pieces), "");
+  EXPECT_DOUBLE_EQ(area(pieces), 2.0);
+  const MultiPolygon bridged =
+      clip::clip_polygon(of(u), y_ge_2, {.output = clip::PolygonClipOutput::bridged});
+  ASSERT_EQ(bridged.polygons.size(), 1u);
+  EXPECT_EQ(bridged.polygons[0].rings.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(bridged), 2.0);
+}
+
+TEST(ClipPolygon, HoleCutByTheBoxBecomesPartOfTheShell) {
+  const Polygon frame{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 2}, {2, 8}, {8, 8}, {8, 2}}}};
+  const MultiPolygon a = clip::clip_polygon(of(frame), Box2{{0, 0}, {5, 5}});
+  EXPECT_EQ(ogc_problem(a), "");
+  ASSERT_EQ(a.polygons.size(), 1u);
+  EXPECT_EQ(a.polygons[0].rings.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(a), 25.0 - 9.0);
+  const MultiPolygon b = clip::clip_polygon(of(frame), Box2{{1, 1}, {9, 9}});
+  ASSERT_EQ(b.polygons.size(), 1u);
+  EXPECT_EQ(b.polygons[0].rings.size(), 2u);  // the hole is uncut and stays a hole
+  EXPECT_DOUBLE_EQ(area(b), 64.0 - 36.0);
+  EXPECT_TRUE(clip::clip_polygon(of(frame), Box2{{3, 3}, {4, 4}}).polygons.empty());
+  // A box cutting the frame into a C: one piece, no hole.
+  const MultiPolygon c = clip::clip_polygon(of(frame), Box2{{0, 0}, {5, 10}});
+  EXPECT_EQ(ogc_problem(c), "");
+  ASSERT_EQ(c.polygons.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(c), 50.0 - 18.0);
+}
+
+TEST(ClipPolygon, ClockwiseInputComesOutCounterClockwise) {
+  const Polygon cw{{{{0, 0}, {0, 2}, {2, 2}, {2, 0}}}};
+  const MultiPolygon r = clip::clip_polygon(of(cw), Box2{{1, -1}, {3, 3}});
+  EXPECT_EQ(ogc_problem(r), "");
+  EXPECT_DOUBLE_EQ(area(r), 2.0);
+}
+
+TEST(ClipPolygon, VertexTouchingTheLineFromInsideKeepsOnePiece) {
+  const Polygon diamond{{{{0, 1}, {1, 0}, {2, 1}, {1, 2}}}};
+  const std::vector<HalfPlane> y_le_2 = {{0, -1, 2}};
+  const MultiPolygon r = clip::clip_polygon(of(diamond), y_le_2);
+  ASSERT_EQ(r.polygons.size(), 1u);
+  EXPECT_EQ(r.polygons[0].rings[0].size(), 4u);
+  const std::vector<HalfPlane> y_ge_2 = {{0, 1, -2}};
+  EXPECT_TRUE(clip::clip_polygon(of(diamond), y_ge_2).polygons.empty());  // zero area: gone
+}
+
+TEST(ClipPolygon, RandomStarsByRandomHalfPlanesGiveValidPiecesOfTheBridgedArea) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int multi = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const Ring star = scenes::star_ring(40, {0, 0}, 0.2, 1.0, static_cast<std::uint64_t>(trial));
+    std::vector<HalfPlane> planes;
+    for (int i = 0; i < 1 + trial % 4; ++i) {
+      const double a = u(rng) * M_PI;
+      planes.push_back({std::cos(a), std::sin(a), 0.5 * u(rng)});
+    }
+    const MultiPolygon pieces = clip::clip_polygon(of(Polygon{{star}}), planes);
+    ASSERT_EQ(ogc_problem(pieces), "") << trial;
+    multi += pieces.polygons.size() > 1;
+    const Ring bridged = clip::sutherland_hodgman(star, planes);
+    EXPECT_NEAR(area(pieces), 0.5 * signed_area2(bridged), 1e-12) << trial;
+  }
+  EXPECT_GT(multi, 10);
+}
+
+TEST(ClipPolygon, DemoPolygonWithHolesByAConvexRing) {
+  const Polygon demo = scenes::demo_polygon();
+  const Ring window = {{-0.3, -2}, {2, -0.5}, {1.5, 2}, {-0.5, 1}};
+  const MultiPolygon r = clip::clip_polygon(of(demo), window);
+  EXPECT_EQ(ogc_problem(r), "");
+  MultiPolygon bridged =
+      clip::clip_polygon(of(demo), window, {.output = clip::PolygonClipOutput::bridged});
+  EXPECT_NEAR(area(r), area(bridged), 1e-12);
+}
+
+}  // namespace
+}  // namespace contain::test
