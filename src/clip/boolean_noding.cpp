@@ -177,7 +177,7 @@ Noded node_segments(std::span<const NodingInput> segments) {
   std::vector<Vec2> hot;           // crossing points: hot pixels for ever after
   std::size_t hot_fresh_from = 0;  // hot[i] for i >= this were made last round
   std::vector<Item> items;
-  std::vector<std::uint32_t> active;
+  std::vector<std::uint32_t> active, active_fresh;
   std::vector<Split> splits;
   constexpr int kMaxRounds = 256;
   for (int round = 0; round < kMaxRounds; ++round) {
@@ -199,15 +199,17 @@ Noded node_segments(std::span<const NodingInput> segments) {
     std::sort(items.begin(), items.end(),
               [](const Item& l, const Item& r) { return l.xmin < r.xmin; });
     splits.clear();
+    // Two active lists: a fresh item meets every active item, an old one only the fresh ones, so
+    // later rounds cost little beyond the sort.
     active.clear();
-    for (std::uint32_t i = 0; i < items.size(); ++i) {
-      const Item& it = items[i];
+    active_fresh.clear();
+    auto visit = [&](std::vector<std::uint32_t>& list, const Item& it) {
       std::size_t w = 0;
-      for (std::size_t r = 0; r < active.size(); ++r) {
-        const Item& jt = items[active[r]];
+      for (std::size_t r = 0; r < list.size(); ++r) {
+        const Item& jt = items[list[r]];
         if (jt.xmax < it.xmin) continue;  // left behind for good
-        active[w++] = active[r];
-        if (!(it.fresh || jt.fresh) || (it.pixel && jt.pixel)) continue;
+        list[w++] = list[r];
+        if (it.pixel && jt.pixel) continue;
         if (jt.ymax < it.ymin || it.ymax < jt.ymin) continue;
         if (it.pixel) {
           test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
@@ -217,8 +219,13 @@ Noded node_segments(std::span<const NodingInput> segments) {
           test_pair(out.points, jt.piece, it.piece, radius, splits, hot, out.crossings);
         }
       }
-      active.resize(w);
+      list.resize(w);
+    };
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+      const Item& it = items[i];
+      visit(it.fresh ? active : active_fresh, it);
       active.push_back(i);
+      if (it.fresh) active_fresh.push_back(i);
     }
     hot_fresh_from = hot_before;
     if (splits.empty()) return out;
