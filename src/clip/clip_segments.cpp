@@ -45,8 +45,9 @@ void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
     constexpr std::size_t block = 2048;
     for (std::size_t b = begin; b < end; b += block) {
       const std::size_t n = std::min(block, end - b);
-      detail::box_kernel<D>(reinterpret_cast<const double*>(segments.data() + b),
-                            reinterpret_cast<double*>(out.data() + b), kept.data() + b, n, kb);
+      detail::box_kernel_pairs<D>(reinterpret_cast<const double*>(segments.data() + b),
+                                  reinterpret_cast<double*>(out.data() + b), kept.data() + b, n,
+                                  kb);
       for (std::size_t i = b; i < b + n; ++i) {
         if (kept[i] < 2) continue;
         const auto r = detail::liang_barsky_exact(segments[i].a, segments[i].b, box);

@@ -38,7 +38,9 @@ struct MeshClipOptions {
 /// triangulated (holes bridged to their outer loop, then ear clipping with exact orient2d in the
 /// plane's dominant projection), its triangles turned to face out of the half-space: for a
 /// closed, consistently oriented (2-manifold along the cut) mesh the result is again closed and
-/// consistently oriented (check: validate_mesh). Unreferenced vertices are removed at the end.
+/// consistently oriented (check: validate_mesh). Where a later cut passes through rounded
+/// crossing points of an earlier one, a cap may hold zero-area triangles (kept so that the
+/// surface stays closed; validate_mesh counts them). Unreferenced vertices are removed at the end.
 /// An empty result has no triangles. Complexity: O(n) per half-space plus O(k^2)..O(k^3) for a
 /// cap of k vertices.
 [[nodiscard]] Mesh mesh_clip(const Mesh& mesh, std::span<const Plane> half_spaces,
