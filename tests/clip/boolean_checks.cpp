@@ -126,6 +126,10 @@ mpq_class exact_signed_area(const MultiPolygon& region) {
     }
     return Location::boundary;
   };
+  std::vector<Box2> boxes;
+  for (const Polygon& p : region.polygons) {
+    boxes.push_back(bounding_box(std::span<const Ring>(p.rings.data(), 1)));
+  }
   for (std::size_t pi = 0; pi < region.polygons.size(); ++pi) {
     const Polygon& polygon = region.polygons[pi];
     for (std::size_t ri = 1; ri < polygon.rings.size(); ++ri) {
@@ -134,8 +138,14 @@ mpq_class exact_signed_area(const MultiPolygon& region) {
                << "hole " << ri << " of polygon " << pi << " outside its shell";
       }
     }
+    const Box2& box = boxes[pi];
     for (std::size_t pj = 0; pj < region.polygons.size(); ++pj) {
       if (pj == pi) continue;
+      const Box2& other = boxes[pj];
+      if (box.min.x < other.min.x || box.min.y < other.min.y || box.max.x > other.max.x ||
+          box.max.y > other.max.y) {
+        continue;  // not within the other's box, so not inside it
+      }
       const Location l = side(polygon.rings[0], region.polygons[pj].rings[0]);
       if (l != Location::inside) continue;
       // Inside the other shell: must be inside one of its holes.
