@@ -1,0 +1,195 @@
+#include "contain/collide/tri_tri.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "collide/simplex.h"
+#include "contain/collide/tri_tri_2d.h"
+#include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
+
+namespace contain::collide {
+namespace {
+
+using predicates::orient2d;
+using predicates::orient3d;
+using Simplex3 = detail::Simplex<Vec3>;
+
+// The projection that drops coordinate k (0: x, 1: y, 2: z). On a plane whose normal has a
+// non-zero k component it is an affine bijection onto the coordinate plane, so incidences
+// (shared points, points on edges) are the same before and after.
+Vec2 drop(Vec3 p, int k) {
+  if (k == 0) return {p.y, p.z};
+  if (k == 1) return {p.z, p.x};
+  return {p.x, p.y};
+}
+
+// An axis whose projection of the triangle has exactly non-zero area, or -1 (collinear).
+int proper_axis(Vec3 a, Vec3 b, Vec3 c) {
+  for (int k = 2; k >= 0; --k) {
+    if (orient2d(drop(a, k), drop(b, k), drop(c, k)) != Sign::zero) return k;
+  }
+  return -1;
+}
+
+Simplex3 simplex_of(const Triangle3& t, int& axis) {
+  axis = proper_axis(t.a, t.b, t.c);
+  if (axis >= 0) return {2, {t.a, t.b, t.c}};
+  return detail::collinear_simplex(t.a, t.b, t.c);
+}
+
+bool collinear3(Vec3 a, Vec3 b, Vec3 c) {
+  return proper_axis(a, b, c) < 0;
+}
+
+bool point_on_segment3(Vec3 p, Vec3 a, Vec3 b) {
+  if (!collinear3(a, b, p)) return false;
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y) && std::min(a.z, b.z) <= p.z && p.z <= std::max(a.z, b.z);
+}
+
+// Closed segments of non-zero length in space.
+bool segments_intersect3(Vec3 s0, Vec3 s1, Vec3 t0, Vec3 t1) {
+  if (orient3d(s0, s1, t0, t1) != Sign::zero) return false;
+  // Coplanar: find a projection that is injective on their affine hull.
+  int k = proper_axis(s0, s1, t0);
+  if (k < 0) k = proper_axis(s0, s1, t1);
+  if (k < 0) {
+    // All four collinear: any axis along which s0 and s1 stay apart.
+    for (k = 2; k > 0 && drop(s0, k) == drop(s1, k); --k) {
+    }
+  }
+  return segments_intersect({drop(s0, k), drop(s1, k)}, {drop(t0, k), drop(t1, k)});
+}
+
+// Segment (s0, s1) against a proper triangle whose projection along `axis` is proper: the
+// section's edge-face test. Endpoints on opposite sides of the face plane (or on it), then the
+// crossing point is in the closed face iff the tetrahedra (s0, s1, edge) have no two opposite
+// signs: the line through s0 and s1 passes on the inner side of (or through) every edge.
+bool segment_proper_triangle(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis) {
+  const Sign o0 = orient3d(a, b, c, s0), o1 = orient3d(a, b, c, s1);
+  if (o0 != Sign::zero && o0 == o1) return false;
+  if (o0 == Sign::zero && o1 == Sign::zero) {
+    const Vec2 p = drop(s0, axis), q = drop(s1, axis);
+    return tri_tri_intersect(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)},
+                             Triangle2{p, q, q});
+  }
+  const Sign e0 = orient3d(s0, s1, a, b), e1 = orient3d(s0, s1, b, c), e2 = orient3d(s0, s1, c, a);
+  const bool any_pos = e0 == Sign::positive || e1 == Sign::positive || e2 == Sign::positive;
+  const bool any_neg = e0 == Sign::negative || e1 == Sign::negative || e2 == Sign::negative;
+  return !(any_pos && any_neg);
+}
+
+bool point_in_proper_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c, int axis) {
+  if (orient3d(a, b, c, p) != Sign::zero) return false;
+  const Vec2 q = drop(p, axis);
+  return tri_tri_intersect(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)},
+                           Triangle2{q, q, q});
+}
+
+bool simplices_intersect(const Simplex3& s, int s_axis, const Simplex3& t, int t_axis) {
+  if (s.dim < t.dim) return simplices_intersect(t, t_axis, s, s_axis);
+  switch (s.dim * 3 + t.dim) {
+    case 8: {  // two proper triangles, known to be coplanar here
+      const int k = s_axis;
+      return tri_tri_intersect(Triangle2{drop(s.p[0], k), drop(s.p[1], k), drop(s.p[2], k)},
+                               Triangle2{drop(t.p[0], k), drop(t.p[1], k), drop(t.p[2], k)});
+    }
+    case 7:
+      return segment_proper_triangle(t.p[0], t.p[1], s.p[0], s.p[1], s.p[2], s_axis);
+    case 6:
+      return point_in_proper_triangle(t.p[0], s.p[0], s.p[1], s.p[2], s_axis);
+    case 4:
+      return segments_intersect3(s.p[0], s.p[1], t.p[0], t.p[1]);
+    case 3:
+      return point_on_segment3(t.p[0], s.p[0], s.p[1]);
+    default:
+      return s.p[0] == t.p[0];
+  }
+}
+
+// Coplanar or degenerate pairs: each triangle as the simplex it spans.
+bool special_case(const Triangle3& a, const Triangle3& b) {
+  int ka = -1, kb = -1;
+  const Simplex3 sa = simplex_of(a, ka), sb = simplex_of(b, kb);
+  return simplices_intersect(sa, ka, sb, kb);
+}
+
+// Cyclic relabelling (and, with flip, reversal of the other triangle) that puts the signs of
+// (p, q, r) in the form d(p) > 0, d(q) <= 0, d(r) <= 0 (p strictly off the plane, so that the
+// edges pq and pr each meet the plane in one point). Such a form exists for every sign pattern
+// that is not all zero, not all one strict sign and not a lone zero beside two equal strict
+// signs (those are decided before). Returns the rotation in 0..2 and
+// sets `flip` when the signs had to be negated.
+int canonical_rotation(const int d[3], bool& flip) {
+  for (int f = 1; f >= -1; f -= 2) {
+    for (int k = 0; k < 3; ++k) {
+      if (f * d[k] > 0 && f * d[(k + 1) % 3] <= 0 && f * d[(k + 2) % 3] <= 0) {
+        flip = f < 0;
+        return k;
+      }
+    }
+  }
+  flip = false;
+  return 0;  // unreachable for the patterns this is called with
+}
+
+// The vertex with sign zero when the other two have one strict sign, else -1.
+int lone_vertex_on_plane(const int d[3]) {
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0 && d[(k + 1) % 3] == d[(k + 2) % 3]) return d[(k + 1) % 3] != 0 ? k : -1;
+  }
+  return -1;
+}
+
+}  // namespace
+
+bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
+  Vec3 t1[3] = {a.a, a.b, a.c};
+  Vec3 t2[3] = {b.a, b.b, b.c};
+  // Signs of T1's vertices against T2's plane: all strictly on one side -> apart.
+  int d1[3] = {to_int(orient3d(t2[0], t2[1], t2[2], t1[0])),
+               to_int(orient3d(t2[0], t2[1], t2[2], t1[1])),
+               to_int(orient3d(t2[0], t2[1], t2[2], t1[2]))};
+  if (d1[0] * d1[1] > 0 && d1[0] * d1[2] > 0) return false;
+  int d2[3] = {to_int(orient3d(t1[0], t1[1], t1[2], t2[0])),
+               to_int(orient3d(t1[0], t1[1], t1[2], t2[1])),
+               to_int(orient3d(t1[0], t1[1], t1[2], t2[2]))};
+  if (d2[0] * d2[1] > 0 && d2[0] * d2[2] > 0) return false;
+  // All zero against a plane: coplanar triangles, or that plane's triangle is degenerate.
+  if ((d1[0] | d1[1] | d1[2]) == 0 || (d2[0] | d2[1] | d2[2]) == 0) return special_case(a, b);
+  // A triangle that meets the other's plane in one vertex only (the other two strictly on one
+  // side) meets the other triangle iff that vertex lies in it: the interval test below needs
+  // intervals of positive length on the line of the planes.
+  if (const int v = lone_vertex_on_plane(d1); v >= 0) {
+    return point_in_proper_triangle(t1[v], t2[0], t2[1], t2[2], proper_axis(t2[0], t2[1], t2[2]));
+  }
+  if (const int v = lone_vertex_on_plane(d2); v >= 0) {
+    return point_in_proper_triangle(t2[v], t1[0], t1[1], t1[2], proper_axis(t1[0], t1[1], t1[2]));
+  }
+
+  // Both proper, not coplanar, each meets the other's plane: relabel T1 so that p1 is alone on
+  // the non-negative side of plane 2 (reversing T2 negates those signs) ...
+  bool flip = false;
+  int k = canonical_rotation(d1, flip);
+  Vec3 p1 = t1[k], q1 = t1[(k + 1) % 3], r1 = t1[(k + 2) % 3];
+  if (flip) {
+    std::swap(t2[1], t2[2]);
+    std::swap(d2[1], d2[2]);
+  }
+  // ... then T2 likewise against plane 1 (reversing T1 keeps p1 alone on its side).
+  k = canonical_rotation(d2, flip);
+  const Vec3 p2 = t2[k], q2 = t2[(k + 1) % 3], r2 = t2[(k + 2) % 3];
+  if (flip) std::swap(q1, r1);
+  // T1 meets the line L of the planes in [i, j] (i on p1q1, j on p1r1), T2 in [k, l]; the plane
+  // through p1, q1, p2 cuts L at i and orient3d(p1, q1, p2, q2) says on which side of i the
+  // point k lies; likewise orient3d(p1, r1, r2, p2) places l against j. In this labelling the
+  // intervals overlap iff neither sign is strictly positive (Guigue and Devillers 2003).
+  return orient3d(p1, q1, p2, q2) != Sign::positive && orient3d(p1, r1, r2, p2) != Sign::positive;
+}
+
+bool segment_triangle_intersect(const Segment3& s, const Triangle3& t) {
+  return tri_tri_intersect(Triangle3{s.a, s.b, s.b}, t);
+}
+
+}  // namespace contain::collide
