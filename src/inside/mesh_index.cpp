@@ -221,8 +221,30 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   stats_.ny = ny_;
   stats_.nz = nz_;
 
+  // Triangles in the order of the cell of their box's low corner (rows along x are contiguous):
+  // a query's run along a row then reads triangles that lie close together in memory.
+  std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
+  {
+    std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
+    for (std::size_t t = 0; t < tris_.size(); ++t) {
+      const Vec3 lo = boxes[t].min;
+      const auto i = static_cast<std::size_t>(cell_range(xs_, nx_, lo.x, lo.x).first);
+      const auto j = static_cast<std::size_t>(cell_range(ys_, ny_, lo.y, lo.y).first);
+      const auto k = static_cast<std::size_t>(cell_range(zs_, nz_, lo.z, lo.z).first);
+      order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
+                  static_cast<std::uint32_t>(t)};
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<Tri> sorted_tris(tris_.size());
+    std::vector<Box3> sorted_boxes(tris_.size());
+    for (std::size_t t = 0; t < order.size(); ++t) {
+      sorted_tris[t] = tris_[order[t].second];
+      sorted_boxes[t] = boxes[order[t].second];
+    }
+    tris_ = std::move(sorted_tris);
+    boxes = std::move(sorted_boxes);
+  }
   // Triangle boxes -> closed cells (two passes: count, then fill).
-  const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
   std::vector<std::uint32_t> count(cell_count + 1, 0);
   auto for_cells = [&](const Box3& b, auto&& f) {
     const auto [i0, i1] = cell_range(xs_, nx_, b.min.x, b.max.x);
@@ -252,7 +274,12 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   refs_.resize(cell_start_.back());
   for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(boxes[t], [&](std::size_t c) { refs_[next[c]++] = static_cast<std::uint32_t>(t); });
+    for_cells(boxes[t], [&](std::size_t c) {
+      const Tri& tri = tris_[t];
+      refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]},
+                          {tri.hi[0], tri.hi[1], tri.hi[2]},
+                          static_cast<std::uint32_t>(t)};
+    });
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();
 
@@ -303,8 +330,9 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
     const Vec3 upper{xs_[static_cast<std::size_t>(i) + 1], q.y, q.z};
     const bool from_q = q_in_first && i == first;
     for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
-      const Tri& t = tris_[refs_[r]];
-      if ((q.y < t.lo[1]) | (q.y > t.hi[1]) | (q.z < t.lo[2]) | (q.z > t.hi[2])) continue;
+      const CellRef& ref = refs_[r];
+      if ((q.y < ref.lo[1]) | (q.y > ref.hi[1]) | (q.z < ref.lo[2]) | (q.z > ref.hi[2])) continue;
+      const Tri& t = tris_[ref.tri];
       if (t.s == Sign::zero || !detail::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, q)) {
         continue;
       }
@@ -336,7 +364,9 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
-    if (on_triangle(tris_[refs_[r]], p)) return Location::boundary;
+    if (!outside_box(refs_[r], p) && on_triangle(tris_[refs_[r].tri], p)) {
+      return Location::boundary;
+    }
   }
   // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
   // a point there that is not on the surface is outside (the solid's interior is open).
@@ -370,7 +400,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
   // Random points read random cells: a software pipeline prefetches, a few points ahead, the
   // cell's state byte, then (for a surface cell) its number and its triangle list. Prefetches
   // only warm the cache (the guessed cell need not be the exact one): answers do not change.
-  constexpr std::size_t kAhead = 16, kListAhead = 6;
+  constexpr std::size_t kAhead = 16, kNumberAhead = 11, kStartAhead = 7, kListAhead = 3;
   parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
     std::array<std::ptrdiff_t, kAhead> guessed{};
     auto guess = [&](Vec3 p) -> std::ptrdiff_t {
@@ -380,14 +410,46 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
       const int k = guess_cell(p.z, bounds_.min.z, scale_.z, nz_);
       return (static_cast<std::ptrdiff_t>(k) * ny_ + j) * nx_ + i;
     };
+    // The surface cell of the guessed cell of point q, or -1.
+    auto surface_cell = [&](std::size_t q) -> std::ptrdiff_t {
+      const std::ptrdiff_t c = guessed[q % kAhead];
+      if (c < 0 || state_[static_cast<std::size_t>(c)] != 2) return -1;
+      return c;
+    };
     for (std::size_t q = begin; q < std::min(end, begin + kAhead); ++q)
       guessed[q % kAhead] = guess(points[q]);
     for (std::size_t q = begin; q < end; ++q) {
+      if (q + kNumberAhead < end) {
+        const std::ptrdiff_t c = surface_cell(q + kNumberAhead);
+        if (c >= 0) __builtin_prefetch(&surface_[static_cast<std::size_t>(c)]);
+      }
+      if (q + kStartAhead < end) {
+        const std::ptrdiff_t c = surface_cell(q + kStartAhead);
+        if (c >= 0) __builtin_prefetch(&cell_start_[surface_[static_cast<std::size_t>(c)]]);
+      }
       if (q + kListAhead < end) {
-        const std::ptrdiff_t c = guessed[(q + kListAhead) % kAhead];
-        if (c >= 0 && state_[static_cast<std::size_t>(c)] == 2) {
+        const std::ptrdiff_t c = surface_cell(q + kListAhead);
+        if (c >= 0) {
+          const char* first = reinterpret_cast<const char*>(
+              &refs_[cell_start_[surface_[static_cast<std::size_t>(c)]]]);
+          __builtin_prefetch(first);
+          __builtin_prefetch(first + 64);
+          __builtin_prefetch(first + 128);
+        }
+      }
+      if (q + 1 < end) {
+        // The triangles of the next point's cell that its ray may meet: their records.
+        const std::ptrdiff_t c = surface_cell(q + 1);
+        if (c >= 0) {
+          const Vec3 p = points[q + 1];
           const std::uint32_t cell = surface_[static_cast<std::size_t>(c)];
-          __builtin_prefetch(&refs_[cell_start_[cell]]);
+          for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
+            const CellRef& ref = refs_[r];
+            if (!((p.y < ref.lo[1]) | (p.y > ref.hi[1]) | (p.z < ref.lo[2]) | (p.z > ref.hi[2]))) {
+              __builtin_prefetch(&tris_[ref.tri]);
+              __builtin_prefetch(reinterpret_cast<const char*>(&tris_[ref.tri]) + 64);
+            }
+          }
         }
       }
       out[q] = locate_exact(points[q]);

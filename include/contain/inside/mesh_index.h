@@ -114,6 +114,17 @@ class MeshIndex {
     Sign s;              // sign of the (y, z) projection: zero if never crossed by an x ray
   };
 
+  // A triangle of a surface cell, with a copy of its box so that a cell's rejection tests read one
+  // contiguous run of memory.
+  struct CellRef {
+    float lo[3], hi[3];  // the triangle's box rounded outward to float
+    std::uint32_t tri;   // into tris_
+  };
+
+  [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
+    return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
+           (p.z > r.hi[2]);
+  }
   [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
   [[nodiscard]] bool odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
@@ -134,7 +145,7 @@ class MeshIndex {
   std::vector<std::uint32_t> surface_;  // per cell: its surface cell number k, where state 2
 
   std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
-  std::vector<std::uint32_t> refs_;        // triangle numbers
+  std::vector<CellRef> refs_;
   // Winding regime.
   FastWindingNumber winding_;
   Stats stats_;
