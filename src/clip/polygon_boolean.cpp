@@ -17,6 +17,7 @@ MultiPolygon polygon_boolean(std::span<const Ring> a, std::span<const Ring> b,
     stats->crossings = arrangement.crossings;
     stats->noding_rounds = arrangement.rounds;
     stats->graph_edges = arrangement.edges;
+    stats->converged = arrangement.converged;
   }
   const Fill fill = options.fill;
   const Op op = options.op;
