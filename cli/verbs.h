@@ -11,6 +11,7 @@ Verb add_inside(CLI::App& app);
 Verb add_bound(CLI::App& app);
 Verb add_demo(CLI::App& app);
 Verb add_clip(CLI::App& app);
+Verb add_collide(CLI::App& app);
 
 /// Every verb, in the order `contain --help` lists them.
 std::vector<Verb> all_verbs(CLI::App& app);

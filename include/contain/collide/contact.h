@@ -11,15 +11,18 @@ namespace contain::collide {
 enum class WitnessKind : std::uint8_t {
   none,              ///< disjoint (no witness)
   triangles,         ///< triangle_a and triangle_b share a point
+  edges,             ///< 2D: edge triangle_a of A and edge triangle_b of B share a point
   vertex_of_a_in_b,  ///< vertex `vertex` of A lies in the solid B (nested, no surface contact)
   vertex_of_b_in_a,  ///< vertex `vertex` of B lies in the solid A
 };
 
-/// "none", "triangles", "vertex_of_a_in_b", "vertex_of_b_in_a".
+/// "none", "triangles", "edges", "vertex_of_a_in_b", "vertex_of_b_in_a".
 [[nodiscard]] constexpr const char* to_string(WitnessKind kind) {
   switch (kind) {
     case WitnessKind::triangles:
       return "triangles";
+    case WitnessKind::edges:
+      return "edges";
     case WitnessKind::vertex_of_a_in_b:
       return "vertex_of_a_in_b";
     case WitnessKind::vertex_of_b_in_a:

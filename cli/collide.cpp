@@ -1,0 +1,198 @@
+// contain collide: discrete collision of two meshes (solids, or surfaces when not closed) or
+// two 2D regions; one answer per pose of B.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common.h"
+#include "contain/collide/mesh_mesh.h"
+#include "contain/collide/region_region.h"
+#include "contain/geometry/mesh_validation.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/number_table.h"
+#include "contain/io/region_io.h"
+#include "verbs.h"
+
+namespace contain::cli {
+namespace {
+
+struct CollideOptions {
+  std::string a, b;
+  std::string transform_a, transform_b, poses;
+  bool json = false;
+  int threads = 0;
+  std::string out;
+};
+
+bool is_region_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
+}
+
+Result<Transform> parse_transform(const std::string& text, std::string_view option) {
+  auto numbers = parse_numbers(text, option);
+  if (!numbers) return numbers.error();
+  auto t = Transform::from_row_major(*numbers);
+  if (!t) {
+    Error e = t.error();
+    e.kind = ErrorKind::usage;
+    e.message = std::string(option) + ": " + e.message;
+    return e;
+  }
+  return t;
+}
+
+std::string json_vec(Vec3 v) {
+  return fmt::format("[{},{},{}]", v.x, v.y, v.z);
+}
+
+std::string mesh_json(const collide::Contact& c, const collide::MeshPair& pair, const Mesh& b,
+                      const Transform& tb) {
+  std::string w;
+  switch (c.witness) {
+    case collide::WitnessKind::triangles:
+      w = fmt::format(",\"witness\":{{\"kind\":\"triangles\",\"triangle_a\":{},\"triangle_b\":{}}}",
+                      c.triangle_a, c.triangle_b);
+      break;
+    case collide::WitnessKind::vertex_of_a_in_b:
+      w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_a_in_b\",\"vertex\":{},\"point\":{}}}",
+                      c.vertex, json_vec(pair.a_vertices()[static_cast<std::size_t>(c.vertex)]));
+      break;
+    case collide::WitnessKind::vertex_of_b_in_a:
+      w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_b_in_a\",\"vertex\":{},\"point\":{}}}",
+                      c.vertex, json_vec(tb.apply(b.vertices[static_cast<std::size_t>(c.vertex)])));
+      break;
+    default:
+      break;
+  }
+  return fmt::format("{{\"intersect\":{}{},\"node_pairs\":{},\"exact_tests\":{}}}\n",
+                     c.intersect ? "true" : "false", w, c.node_pairs, c.exact_tests);
+}
+
+std::string answer(bool intersect) {
+  return intersect ? "intersect\n" : "disjoint\n";
+}
+
+int run_regions(const CollideOptions& o) {
+  if (!o.transform_a.empty() || !o.transform_b.empty() || !o.poses.empty()) {
+    return report(Error{ErrorKind::usage,
+                        "--transform-a, --transform-b and --poses apply to meshes (3D) only"});
+  }
+  auto a = io::read_region(o.a);
+  if (!a) return report(a.error());
+  auto b = io::read_region(o.b);
+  if (!b) return report(b.error());
+  const collide::Contact c = collide::region_region(*a, *b);
+  if (!o.json) return emit(answer(c.intersect), o.out);
+  std::string w;
+  if (c.witness == collide::WitnessKind::edges) {
+    w = fmt::format(",\"witness\":{{\"kind\":\"edges\",\"edge_a\":{},\"edge_b\":{}}}", c.triangle_a,
+                    c.triangle_b);
+  } else if (c.intersect) {
+    w = fmt::format(",\"witness\":{{\"kind\":\"{}\",\"vertex\":{}}}", collide::to_string(c.witness),
+                    c.vertex);
+  }
+  return emit(fmt::format("{{\"intersect\":{}{}}}\n", c.intersect ? "true" : "false", w), o.out);
+}
+
+int run_meshes(const CollideOptions& o) {
+  if (is_region_path(o.b)) {
+    return report(Error{ErrorKind::invalid_value,
+                        "A is a mesh and B a 2D region: both must be meshes or both regions", o.b});
+  }
+  Transform ta, tb;
+  if (!o.transform_a.empty()) {
+    auto t = parse_transform(o.transform_a, "--transform-a");
+    if (!t) return report(t.error());
+    ta = *t;
+  }
+  if (!o.transform_b.empty()) {
+    auto t = parse_transform(o.transform_b, "--transform-b");
+    if (!t) return report(t.error());
+    tb = *t;
+  }
+  std::vector<Transform> poses;
+  if (!o.poses.empty()) {
+    if (!o.transform_b.empty()) {
+      return report(Error{ErrorKind::usage, "--poses and --transform-b exclude each other"});
+    }
+    auto table = io::read_number_table(o.poses, {.columns = {12}});
+    if (!table) return report(table.error());
+    for (std::size_t r = 0; r < table->rows(); ++r) {
+      auto t =
+          Transform::from_row_major(std::span<const double>(table->values).subspan(r * 12, 12));
+      if (!t) {
+        Error e = t.error();
+        e.source = o.poses;
+        e.line = table->lines[r];
+        return report(e);
+      }
+      poses.push_back(*t);
+    }
+  } else {
+    poses.push_back(tb);
+  }
+  auto a = io::read_mesh(o.a);
+  if (!a) return report(a.error());
+  auto b = io::read_mesh(o.b);
+  if (!b) return report(b.error());
+  const collide::MeshPair pair(a->mesh, b->mesh, {.transform_a = ta});
+  for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
+                                          std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
+    if (solid) continue;
+    const MeshReport r = validate_mesh(*mesh);
+    warn(
+        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "
+                    "which meets the other shape only where they share a point",
+                    name, r.border_edges, r.nonmanifold_edges));
+  }
+  std::vector<collide::Contact> contacts(poses.size());
+  pair.collide(poses, contacts, {.threads = o.threads});
+  std::string text;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    text +=
+        o.json ? mesh_json(contacts[i], pair, b->mesh, poses[i]) : answer(contacts[i].intersect);
+  }
+  return emit(text, o.out);
+}
+
+}  // namespace
+
+Verb add_collide(CLI::App& app) {
+  auto o = std::make_shared<CollideOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
+  cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)")
+      ->required();
+  cmd->add_option("B", o->b, "the same kind of shape as A")->required();
+  cmd->add_option("--transform-a", o->transform_a,
+                  "place A: 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2 (x' = R x + t)")
+      ->option_text("T");
+  cmd->add_option("--transform-b", o->transform_b, "place B (12 numbers, as --transform-a)")
+      ->option_text("T");
+  cmd->add_option("--poses", o->poses, "one transform of B a line: one answer a line")
+      ->option_text("FILE");
+  cmd->add_flag("--json", o->json,
+                "one JSON object a result: intersect, a witness (a pair of triangles or a "
+                "contained vertex) and work counts");
+  add_threads_option(*cmd, o->threads);
+  cmd->add_option("--out", o->out, "write the answers to FILE instead of stdout")
+      ->option_text("FILE");
+  cmd->footer(
+      "Solids and regions are closed sets: touching counts, one inside the other counts.\n"
+      "A mesh that is not closed is a surface (a warning says so).\n"
+      "Examples:\n"
+      "  contain collide gear.stl shaft.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0\n"
+      "  contain collide a.off b.off --poses poses.txt --json\n"
+      "  contain collide parcel.wkt road.geojson");
+  return {cmd, [o]() { return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o); }};
+}
+
+}  // namespace contain::cli
