@@ -78,6 +78,33 @@ float float_above(double v) {
   return f;
 }
 
+// True only if the closed box and the triangle are certainly disjoint: their projections on the
+// triangle's (floating-point) normal n, computed in floating point, are apart by more than a
+// bound on the rounding errors of both. Any fixed n separates exactly when the exact
+// projections are apart, so the answer needs no exact n. Overflow or NaN: never separated.
+template <class Tri>
+bool separated_by_plane(const Tri& t, const Box3& box) {
+  const Vec3 n = cross(t.b - t.a, t.c - t.a);
+  const double ta = dot(n, t.a), tb = dot(n, t.b), tc = dot(n, t.c);
+  const double tmin = std::min({ta, tb, tc}), tmax = std::max({ta, tb, tc});
+  double bmin = 0.0, bmax = 0.0, scale = 0.0;
+  const double nv[3] = {n.x, n.y, n.z};
+  const double lo[3] = {box.min.x, box.min.y, box.min.z}, hi[3] = {box.max.x, box.max.y, box.max.z};
+  const double tv[3][3] = {{t.a.x, t.b.x, t.c.x}, {t.a.y, t.b.y, t.c.y}, {t.a.z, t.b.z, t.c.z}};
+  for (int d = 0; d < 3; ++d) {
+    const double p = nv[d] * lo[d], q = nv[d] * hi[d];
+    bmin += std::min(p, q);
+    bmax += std::max(p, q);
+    const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), std::abs(tv[d][0]),
+                               std::abs(tv[d][1]), std::abs(tv[d][2])});
+    scale += std::abs(nv[d]) * m;
+  }
+  // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
+  // a generous multiple of u = 2^-53.
+  const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
+  return bmin > tmax + margin || bmax < tmin - margin;
+}
+
 std::string plural(std::size_t n, const char* word) {
   std::ostringstream out;
   out << n << " " << word << (n == 1 ? "" : "s");
@@ -246,20 +273,28 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   // Triangle boxes -> closed cells (two passes: count, then fill).
   std::vector<std::uint32_t> count(cell_count + 1, 0);
-  auto for_cells = [&](const Box3& b, auto&& f) {
+  auto for_cells = [&](std::size_t t, auto&& f) {
+    const Box3& b = boxes[t];
     const auto [i0, i1] = cell_range(xs_, nx_, b.min.x, b.max.x);
     const auto [j0, j1] = cell_range(ys_, ny_, b.min.y, b.max.y);
     const auto [k0, k1] = cell_range(zs_, nz_, b.min.z, b.max.z);
+    // A triangle whose box spans several cells is tested against each cell's box along its
+    // normal, conservatively (separated_by_plane): fewer surface cells under big triangles.
+    const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-          f((static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
-             static_cast<std::size_t>(j)) *
-                static_cast<std::size_t>(nx_) +
-            static_cast<std::size_t>(i));
+        for (int i = i0; i <= i1; ++i) {
+          const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j),
+                     ku = static_cast<std::size_t>(k);
+          if (big && separated_by_plane(tris_[t], {{xs_[iu], ys_[ju], zs_[ku]},
+                                                   {xs_[iu + 1], ys_[ju + 1], zs_[ku + 1]}})) {
+            continue;
+          }
+          f((ku * static_cast<std::size_t>(ny_) + ju) * static_cast<std::size_t>(nx_) + iu);
+        }
   };
-  for (const Box3& b : boxes)
-    for_cells(b, [&](std::size_t c) { ++count[c]; });
+  for (std::size_t t = 0; t < boxes.size(); ++t)
+    for_cells(t, [&](std::size_t c) { ++count[c]; });
   state_.assign(cell_count, 0);
   surface_.assign(cell_count, 0);
   cell_start_.clear();
@@ -274,7 +309,7 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   refs_.resize(cell_start_.back());
   for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(boxes[t], [&](std::size_t c) {
+    for_cells(t, [&](std::size_t c) {
       const Tri& tri = tris_[t];
       refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]},
                           {tri.hi[0], tri.hi[1], tri.hi[2]},
