@@ -157,6 +157,11 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   if (report_.closed()) {
     regime_ = MeshRegime::closed_exact;
+    // Two copies of a triangle with opposite orientations still close every edge: parity stays
+    // exact (the pair bounds no volume), but the user should hear of it.
+    if (report_.duplicated_triangles > 0) {
+      notes.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
+    }
     if (!notes.empty()) {
       std::string w = "mesh has ";
       for (std::size_t i = 0; i < notes.size(); ++i)

@@ -173,6 +173,18 @@ TEST(MeshIndex, PinchVertexKeepsTheExactRegimeWithAWarning) {
     ASSERT_EQ(index.locate(p), oracle_locate(welded.mesh, p));
 }
 
+TEST(MeshIndex, ATriangleAndItsReverseCloseEveryEdgeAndBoundNoVolume) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 1}};
+  const MeshIndex index(mesh);
+  EXPECT_EQ(index.regime(), MeshRegime::closed_exact);
+  EXPECT_NE(index.warning().find("1 duplicated triangle"), std::string::npos) << index.warning();
+  EXPECT_EQ(index.locate({0.5, 0.5, 0}), Location::boundary);
+  EXPECT_EQ(index.locate({0.5, 0.5, 1e-300}), Location::outside);
+  EXPECT_EQ(index.locate({1.5, 1.5, 0}), Location::outside);
+}
+
 TEST(PointInMesh, OneShotGivesTheIndexAnswers) {
   const Mesh mesh = test::l_prism();
   const MeshIndex index(mesh);
