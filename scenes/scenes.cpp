@@ -81,4 +81,44 @@ Mesh torus(double major, double minor, int rings, int sides) {
   return mesh;
 }
 
+Mesh box_mesh(const Box3& box) {
+  Mesh mesh;
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.push_back({(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                             (i & 4) ? box.max.z : box.min.z});
+  }
+  // Two triangles per face, counter-clockwise seen from outside.
+  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                    {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return mesh;
+}
+
+std::vector<Segment2> uniform_segments(const Box2& box, std::size_t count, std::uint64_t seed) {
+  const std::vector<Vec2> ends = uniform_points(box, 2 * count, seed);
+  std::vector<Segment2> segments(count);
+  for (std::size_t i = 0; i < count; ++i)
+    segments[i] = {ends[2 * i], ends[2 * i + 1]};
+  return segments;
+}
+
+std::vector<Segment3> uniform_segments(const Box3& box, std::size_t count, std::uint64_t seed) {
+  const std::vector<Vec3> ends = uniform_points(box, 2 * count, seed);
+  std::vector<Segment3> segments(count);
+  for (std::size_t i = 0; i < count; ++i)
+    segments[i] = {ends[2 * i], ends[2 * i + 1]};
+  return segments;
+}
+
+std::vector<Vec3> grid_points(const Box2& box, int n, double z) {
+  std::vector<Vec3> points;
+  points.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      points.push_back({box.min.x + (box.max.x - box.min.x) * i / (n - 1),
+                        box.min.y + (box.max.y - box.min.y) * j / (n - 1), z});
+    }
+  }
+  return points;
+}
+
 }  // namespace contain::scenes

@@ -8,6 +8,7 @@
 #include "contain/geometry/box.h"
 #include "contain/geometry/mesh.h"
 #include "contain/geometry/polygon.h"
+#include "contain/geometry/segment.h"
 #include "contain/geometry/vec.h"
 
 namespace contain::scenes {
@@ -35,5 +36,17 @@ namespace contain::scenes {
 /// A closed, outward oriented torus around the z axis: `major` and `minor` radii, `rings` x
 /// `sides` quads split into triangles.
 [[nodiscard]] Mesh torus(double major, double minor, int rings, int sides);
+
+/// The closed, outward oriented surface of a box: 8 vertices, 12 triangles.
+[[nodiscard]] Mesh box_mesh(const Box3& box);
+
+/// `count` segments with both ends uniform in `box` (seeded).
+[[nodiscard]] std::vector<Segment2> uniform_segments(const Box2& box, std::size_t count,
+                                                     std::uint64_t seed);
+[[nodiscard]] std::vector<Segment3> uniform_segments(const Box3& box, std::size_t count,
+                                                     std::uint64_t seed);
+
+/// An n x n grid of points spanning `box` in the plane z = `z`, row by row.
+[[nodiscard]] std::vector<Vec3> grid_points(const Box2& box, int n, double z);
 
 }  // namespace contain::scenes
