@@ -97,6 +97,12 @@ void add_threads_option(CLI::App& app, int& threads) {
       ->option_text("N");
 }
 
+void add_quiet_option(CLI::App& app, bool& quiet) {
+  app.add_flag("--quiet", quiet,
+               "no progress on stderr (progress shows only when stderr is a terminal and the run "
+               "takes over a second)");
+}
+
 std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {
   std::string out;
   out.reserve(locations.size() * 4);

@@ -53,6 +53,9 @@ void add_fill_option(CLI::App& app, Fill& fill);
 /// `--threads N` (0 or absent: all cores).
 void add_threads_option(CLI::App& app, int& threads);
 
+/// `--quiet`: no progress on stderr (warnings and errors still go there).
+void add_quiet_option(CLI::App& app, bool& quiet);
+
 /// One line per location ("in", "on", "out") after applying `policy`.
 [[nodiscard]] std::string format_locations(std::span<const Location> locations,
                                            BoundaryPolicy policy);

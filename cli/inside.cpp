@@ -12,6 +12,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
+#include "progress.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -26,7 +27,22 @@ struct InsideOptions {
   BoundaryPolicy boundary = BoundaryPolicy::report;
   Fill fill = Fill::even_odd;
   int threads = 0;
+  bool quiet = false;
 };
+
+// Locates every point through `locator.locate(span, span, options)`, chunked for progress.
+template <class Locator, class Point>
+std::vector<Location> locate_all(const Locator& locator, const std::vector<Point>& points,
+                                 const InsideOptions& o) {
+  std::vector<Location> locations(points.size());
+  Progress progress("points", points.size(), !o.quiet && stderr_is_terminal());
+  progress.run([&](std::size_t begin, std::size_t end) {
+    locator.locate(std::span<const Point>(points).subspan(begin, end - begin),
+                   std::span<Location>(locations).subspan(begin, end - begin),
+                   {.threads = o.threads});
+  });
+  return locations;
+}
 
 int run_polygon(const InsideOptions& o) {
   auto region = io::read_region(o.polygon);
@@ -34,8 +50,7 @@ int run_polygon(const InsideOptions& o) {
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
   const inside::PolygonIndex index(*region, {.fill = o.fill});
-  std::vector<Location> locations(points->points.size());
-  index.locate(points->points, locations, {.threads = o.threads});
+  const std::vector<Location> locations = locate_all(index, points->points, o);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
@@ -50,8 +65,7 @@ int run_csg(const InsideOptions& o) {
   }
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
-  std::vector<Location> locations(points->points.size());
-  solid->locate(points->points, locations, {.threads = o.threads});
+  const std::vector<Location> locations = locate_all(*solid, points->points, o);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
@@ -64,8 +78,7 @@ int run_mesh(const InsideOptions& o) {
   if (!points) return report(points.error());
   const inside::MeshIndex index(file->mesh);
   if (!index.warning().empty()) warn(o.mesh + ": " + index.warning());
-  std::vector<Location> locations(points->points.size());
-  index.locate(points->points, locations, {.threads = o.threads});
+  const std::vector<Location> locations = locate_all(index, points->points, o);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
@@ -101,6 +114,7 @@ Verb add_inside(CLI::App& app) {
   add_boundary_option(*cmd, o->boundary);
   add_fill_option(*cmd, o->fill);
   add_threads_option(*cmd, o->threads);
+  add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write the answers to FILE instead of stdout")
       ->option_text("FILE");
   cmd->footer(
