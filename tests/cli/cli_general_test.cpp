@@ -34,13 +34,13 @@ TEST(CliGeneral, MissingOptionArgumentIsAUsageErrorWithExitTwo) {
 TEST(CliGeneral, HelpListsEveryVerbAndExitsZero) {
   const CliRun run = run_contain({"--help"});
   EXPECT_EQ(run.exit_code, 0);
-  for (const char* verb : {"inside", "bound", "demo"}) {
+  for (const char* verb : {"inside", "collide", "clip", "bound", "demo"}) {
     EXPECT_NE(run.out.find(verb), std::string::npos) << verb;
   }
 }
 
 TEST(CliGeneral, VerbHelpShowsAnExample) {
-  for (const char* verb : {"inside", "bound", "demo"}) {
+  for (const char* verb : {"inside", "collide", "clip", "bound", "demo"}) {
     const CliRun run = run_contain({verb, "--help"});
     EXPECT_EQ(run.exit_code, 0) << verb;
     EXPECT_NE(run.out.find("Example"), std::string::npos) << verb;
