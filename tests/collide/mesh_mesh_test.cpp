@@ -86,7 +86,7 @@ TEST(MeshPair, FastPathAgreesWithTheSectionsReferenceOnRandomPoses) {
   const MeshPair pair(torus, box);
   const MeshPair self(torus, torus);
   int hits = 0;
-  for (int i = 0; i < 150; ++i) {
+  for (int i = 0; i < 60; ++i) {
     const Transform t = test::random_pose(rng, 1.6);
     const bool fast = pair.collide(t).intersect;
     ASSERT_EQ(fast, polyhedra_reference(torus, box, {}, t).contact.intersect) << i;
@@ -94,8 +94,8 @@ TEST(MeshPair, FastPathAgreesWithTheSectionsReferenceOnRandomPoses) {
         << i;
     hits += fast;
   }
-  EXPECT_GT(hits, 20);
-  EXPECT_LT(hits, 130);
+  EXPECT_GT(hits, 8);
+  EXPECT_LT(hits, 52);
 }
 
 TEST(MeshPair, TransformOfAIsAppliedOnce) {
