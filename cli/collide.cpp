@@ -16,6 +16,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
+#include "progress.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -26,6 +27,7 @@ struct CollideOptions {
   std::string transform_a, transform_b, poses;
   bool json = false;
   int threads = 0;
+  bool quiet = false;
   std::string out;
 };
 
@@ -154,7 +156,12 @@ int run_meshes(const CollideOptions& o) {
                     name, r.border_edges, r.nonmanifold_edges));
   }
   std::vector<collide::Contact> contacts(poses.size());
-  pair.collide(poses, contacts, {.threads = o.threads});
+  Progress progress("poses", poses.size(), !o.quiet && stderr_is_terminal());
+  progress.run([&](std::size_t begin, std::size_t end) {
+    pair.collide(std::span<const Transform>(poses).subspan(begin, end - begin),
+                 std::span<collide::Contact>(contacts).subspan(begin, end - begin),
+                 {.threads = o.threads});
+  });
   std::string text;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     text +=
@@ -183,6 +190,7 @@ Verb add_collide(CLI::App& app) {
                 "one JSON object a result: intersect, a witness (a pair of triangles or a "
                 "contained vertex) and work counts");
   add_threads_option(*cmd, o->threads);
+  add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write the answers to FILE instead of stdout")
       ->option_text("FILE");
   cmd->footer(

@@ -33,11 +33,11 @@ class Progress {
     std::fflush(stderr);
   }
 
-  /// Runs `body(begin, end)` over [0, total) in chunks of about 1% (at least 65536 items), with
-  /// an update after each: the library's batch calls stay whole within a chunk.
+  /// Runs `body(begin, end)` over [0, total) in chunks of about 1% (at least `min_chunk` items),
+  /// with an update after each: the library's batch calls stay whole within a chunk.
   template <class Body>
-  void run(Body&& body) {
-    const std::size_t chunk = enabled_ ? std::max<std::size_t>(65536, total_ / 100) : total_;
+  void run(Body&& body, std::size_t min_chunk = 4096) {
+    const std::size_t chunk = enabled_ ? std::max<std::size_t>(min_chunk, total_ / 100) : total_;
     for (std::size_t begin = 0; begin < total_; begin += chunk) {
       const std::size_t end = std::min(total_, begin + chunk);
       body(begin, end);
