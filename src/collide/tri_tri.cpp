@@ -1,12 +1,15 @@
 #include "contain/collide/tri_tri.h"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <utility>
 
 #include "collide/simplex.h"
 #include "contain/collide/tri_tri_2d.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
+#include "contain/predicates/orient3d_plane.h"
 
 namespace contain::collide {
 namespace {
@@ -121,7 +124,7 @@ bool special_case(const Triangle3& a, const Triangle3& b) {
 // that is not all zero, not all one strict sign and not a lone zero beside two equal strict
 // signs (those are decided before). Returns the rotation in 0..2 and
 // sets `flip` when the signs had to be negated.
-int canonical_rotation(const int d[3], bool& flip) {
+constexpr int canonical_rotation(const int d[3], bool& flip) {
   for (int f = 1; f >= -1; f -= 2) {
     for (int k = 0; k < 3; ++k) {
       if (f * d[k] > 0 && f * d[(k + 1) % 3] <= 0 && f * d[(k + 2) % 3] <= 0) {
@@ -135,57 +138,97 @@ int canonical_rotation(const int d[3], bool& flip) {
 }
 
 // The vertex with sign zero when the other two have one strict sign, else -1.
-int lone_vertex_on_plane(const int d[3]) {
+constexpr int lone_vertex_on_plane(const int d[3]) {
   for (int k = 0; k < 3; ++k) {
     if (d[k] == 0 && d[(k + 1) % 3] == d[(k + 2) % 3]) return d[(k + 1) % 3] != 0 ? k : -1;
   }
   return -1;
 }
 
-}  // namespace
+// What the three signs of one triangle's vertices against the other's plane decide, for each
+// of the 27 patterns, so that the hot path reads a table instead of branching on each sign
+// (random input makes those branches unpredictable).
+struct SignPattern {
+  bool apart = false;    // all strictly on one side
+  bool special = false;  // all zero, or a lone zero beside two equal strict signs
+  int rotation = 0;      // canonical_rotation's answer for the other patterns
+  bool flip = false;
+};
 
-bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
-  Vec3 t1[3] = {a.a, a.b, a.c};
-  Vec3 t2[3] = {b.a, b.b, b.c};
-  // Signs of T1's vertices against T2's plane: all strictly on one side -> apart.
-  int d1[3] = {to_int(orient3d(t2[0], t2[1], t2[2], t1[0])),
-               to_int(orient3d(t2[0], t2[1], t2[2], t1[1])),
-               to_int(orient3d(t2[0], t2[1], t2[2], t1[2]))};
-  if (d1[0] * d1[1] > 0 && d1[0] * d1[2] > 0) return false;
-  int d2[3] = {to_int(orient3d(t1[0], t1[1], t1[2], t2[0])),
-               to_int(orient3d(t1[0], t1[1], t1[2], t2[1])),
-               to_int(orient3d(t1[0], t1[1], t1[2], t2[2]))};
-  if (d2[0] * d2[1] > 0 && d2[0] * d2[2] > 0) return false;
+constexpr int pattern_code(int d0, int d1, int d2) {
+  return (d0 + 1) * 9 + (d1 + 1) * 3 + (d2 + 1);
+}
+
+constexpr std::array<SignPattern, 27> make_patterns() {
+  std::array<SignPattern, 27> table{};
+  for (int c = 0; c < 27; ++c) {
+    const int d[3] = {c / 9 - 1, c / 3 % 3 - 1, c % 3 - 1};
+    SignPattern& t = table[static_cast<std::size_t>(c)];
+    t.apart = d[0] != 0 && d[0] == d[1] && d[0] == d[2];
+    t.special = (d[0] == 0 && d[1] == 0 && d[2] == 0) || lone_vertex_on_plane(d) >= 0;
+    if (!t.apart && !t.special) t.rotation = canonical_rotation(d, t.flip);
+  }
+  return table;
+}
+constexpr std::array<SignPattern, 27> kPatterns = make_patterns();
+
+// The pairs whose sign patterns are special: coplanar triangles, a degenerate triangle, or a
+// triangle meeting the other's plane in one vertex only. Out of the hot path.
+[[gnu::noinline]] bool special_pair(const Triangle3& a, const Triangle3& b, const int d1[3],
+                                    const int d2[3]) {
   // All zero against a plane: coplanar triangles, or that plane's triangle is degenerate.
   if ((d1[0] | d1[1] | d1[2]) == 0 || (d2[0] | d2[1] | d2[2]) == 0) return special_case(a, b);
   // A triangle that meets the other's plane in one vertex only (the other two strictly on one
-  // side) meets the other triangle iff that vertex lies in it: the interval test below needs
+  // side) meets the other triangle iff that vertex lies in it: the interval test needs
   // intervals of positive length on the line of the planes.
+  const Vec3 t1[3] = {a.a, a.b, a.c};
+  const Vec3 t2[3] = {b.a, b.b, b.c};
   if (const int v = lone_vertex_on_plane(d1); v >= 0) {
     return point_in_proper_triangle(t1[v], t2[0], t2[1], t2[2], proper_axis(t2[0], t2[1], t2[2]));
   }
-  if (const int v = lone_vertex_on_plane(d2); v >= 0) {
-    return point_in_proper_triangle(t2[v], t1[0], t1[1], t1[2], proper_axis(t1[0], t1[1], t1[2]));
+  const int v = lone_vertex_on_plane(d2);
+  return point_in_proper_triangle(t2[v], t1[0], t1[1], t1[2], proper_axis(t1[0], t1[1], t1[2]));
+}
+
+}  // namespace
+
+bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
+  const Vec3 t1[3] = {a.a, a.b, a.c};
+  const Vec3 t2[3] = {b.a, b.b, b.c};
+  // Signs of T1's vertices against T2's plane (its normal formed once): all strictly on one
+  // side -> apart.
+  const auto s1 = predicates::Orient3dPlane(t2[0], t2[1], t2[2]).signs(t1[0], t1[1], t1[2]);
+  const int d1[3] = {to_int(s1[0]), to_int(s1[1]), to_int(s1[2])};
+  const SignPattern& p1_pattern = kPatterns[pattern_code(d1[0], d1[1], d1[2])];
+  if (p1_pattern.apart) return false;
+  const auto s2 = predicates::Orient3dPlane(t1[0], t1[1], t1[2]).signs(t2[0], t2[1], t2[2]);
+  const int d2[3] = {to_int(s2[0]), to_int(s2[1]), to_int(s2[2])};
+  if (kPatterns[pattern_code(d2[0], d2[1], d2[2])].apart) return false;
+  if (p1_pattern.special || kPatterns[pattern_code(d2[0], d2[1], d2[2])].special) {
+    return special_pair(a, b, d1, d2);
   }
 
   // Both proper, not coplanar, each meets the other's plane: relabel T1 so that p1 is alone on
   // the non-negative side of plane 2 (reversing T2 negates those signs) ...
-  bool flip = false;
-  int k = canonical_rotation(d1, flip);
-  Vec3 p1 = t1[k], q1 = t1[(k + 1) % 3], r1 = t1[(k + 2) % 3];
-  if (flip) {
-    std::swap(t2[1], t2[2]);
-    std::swap(d2[1], d2[2]);
-  }
+  const int k1 = p1_pattern.rotation;
+  const int f1 = p1_pattern.flip ? 1 : 0;
+  // T2's vertex order after the optional reversal (swap of its vertices 1 and 2).
+  const int o1 = 1 + f1, o2 = 2 - f1;
   // ... then T2 likewise against plane 1 (reversing T1 keeps p1 alone on its side).
-  k = canonical_rotation(d2, flip);
-  const Vec3 p2 = t2[k], q2 = t2[(k + 1) % 3], r2 = t2[(k + 2) % 3];
-  if (flip) std::swap(q1, r1);
+  const SignPattern& p2_pattern = kPatterns[pattern_code(d2[0], d2[o1], d2[o2])];
+  const int order2[3] = {0, o1, o2};
+  const int k2 = p2_pattern.rotation;
+  const int f2 = p2_pattern.flip ? 1 : 0;
+  constexpr int kNext[5] = {0, 1, 2, 0, 1};  // (i) mod 3 for i < 5
+  const Vec3 p1 = t1[k1], q1 = t1[kNext[k1 + 1 + f2]], r1 = t1[kNext[k1 + 2 - f2]];
+  const Vec3 p2 = t2[order2[k2]], q2 = t2[order2[kNext[k2 + 1]]], r2 = t2[order2[kNext[k2 + 2]]];
   // T1 meets the line L of the planes in [i, j] (i on p1q1, j on p1r1), T2 in [k, l]; the plane
   // through p1, q1, p2 cuts L at i and orient3d(p1, q1, p2, q2) says on which side of i the
   // point k lies; likewise orient3d(p1, r1, r2, p2) places l against j. In this labelling the
   // intervals overlap iff neither sign is strictly positive (Guigue and Devillers 2003).
-  return orient3d(p1, q1, p2, q2) != Sign::positive && orient3d(p1, r1, r2, p2) != Sign::positive;
+  const Sign i_side = predicates::Orient3dPlane(p1, q1, p2).sign(q2);
+  const Sign j_side = predicates::Orient3dPlane(p1, r1, r2).sign(p2);
+  return (i_side != Sign::positive) & (j_side != Sign::positive);
 }
 
 bool segment_triangle_intersect(const Segment3& s, const Triangle3& t) {
