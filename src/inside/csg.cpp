@@ -5,6 +5,8 @@
 #include <string>
 #include <type_traits>
 
+#include "contain/inside/point_in_triangle.h"
+#include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/side_of_plane.h"
 #include "csg_local.h"
@@ -12,6 +14,7 @@
 namespace contain::inside {
 namespace {
 
+using detail::ExactNumber;
 using detail::ExactVec3;
 using detail::LocalConstraint;
 
@@ -42,8 +45,9 @@ std::string op_name(CsgOp op) {
   return "?";
 }
 
-// Empty string when the leaf is valid, else the reason.
-std::string check_leaf(const CsgLeaf& leaf) {
+// Empty string when the leaf is valid, else the reason; `kind` is set to what the reason is.
+std::string check_leaf(const CsgLeaf& leaf, ErrorKind& kind) {
+  kind = ErrorKind::invalid_value;
   return std::visit(
       Overloaded{
           [](const Sphere& s) -> std::string {
@@ -66,6 +70,12 @@ std::string check_leaf(const CsgLeaf& leaf) {
           [](const ImplicitFunction& f) -> std::string {
             return f ? "" : "implicit leaf holds no function";
           },
+          [&](const CsgMesh& m) -> std::string {
+            if (!m.problem().empty() && m.index().regime() != MeshRegime::closed_exact) {
+              kind = ErrorKind::degenerate;
+            }
+            return m.problem();
+          },
       },
       leaf);
 }
@@ -77,9 +87,119 @@ Location locate_leaf(const CsgLeaf& leaf, Vec3 p) {
                         [&](const Plane& h) { return point_in_halfspace(h, p); },
                         [&](const ConvexPolyhedron& c) { return c.locate(p); },
                         [&](const ImplicitFunction& f) { return point_in_implicit(f, p); },
+                        [&](const CsgMesh& m) { return m.index().locate(p); },
                     },
                     leaf);
 }
+
+Vec3 vertex(const Mesh& mesh, std::int32_t k) {
+  return mesh.vertices[static_cast<std::size_t>(k)];
+}
+
+// The planes of the non-degenerate triangles that contain p (exact point in triangle): near p
+// they carry the whole surface, so every open cell of their arrangement is in or out.
+void mesh_constraints(const Mesh& mesh, Vec3 p, std::vector<LocalConstraint>& out) {
+  for (const TriangleIndices& t : mesh.triangles) {
+    const Triangle3 tri{vertex(mesh, t[0]), vertex(mesh, t[1]), vertex(mesh, t[2])};
+    Box3 box;
+    box.expand(tri.a);
+    box.expand(tri.b);
+    box.expand(tri.c);
+    if (!box.contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
+    const ExactVec3 a = detail::exact(tri.a);
+    ExactVec3 normal = cross(detail::exact(tri.b) - a, detail::exact(tri.c) - a);
+    if (!is_zero(normal)) out.push_back({std::move(normal), false, false});
+  }
+}
+
+// MeshIndex's perturbed +x ray parity from a symbolic point q = p + (offset of a sample), the
+// ray's own perturbation (0, e, e²) coming after q's: every test of "the ray from o crosses the
+// triangle" is the sign of c + g . (o − p), linear in the origin o, so it is decided by its value
+// at p, then by the sample's terms (detail::sign_at), then by g_y, g_z.
+class MeshRay {
+ public:
+  MeshRay() = default;
+  MeshRay(const Mesh& mesh, Vec3 p) {
+    const ExactVec3 ep = detail::exact(p);
+    for (const TriangleIndices& t : mesh.triangles) {
+      const Vec3 a = vertex(mesh, t[0]), b = vertex(mesh, t[1]), c = vertex(mesh, t[2]);
+      // Triangles that the ray from a point near p cannot reach (exact comparisons of inputs).
+      if (std::max({a.x, b.x, c.x}) < p.x || std::min({a.y, b.y, c.y}) > p.y ||
+          std::max({a.y, b.y, c.y}) < p.y || std::min({a.z, b.z, c.z}) > p.z ||
+          std::max({a.z, b.z, c.z}) < p.z) {
+        continue;
+      }
+      // Cheap exact rejection first: an edge of the (y, z) projection strictly on the wrong
+      // side of p decides the triangle for every point near p.
+      const Vec2 pa{a.y, a.z}, pb{b.y, b.z}, pc{c.y, c.z}, pp{p.y, p.z};
+      const Sign turn = predicates::orient2d(pa, pb, pc);
+      if (turn == Sign::zero) continue;  // never crossed by an x ray
+      const Sign edge[3] = {predicates::orient2d(pa, pb, pp), predicates::orient2d(pb, pc, pp),
+                            predicates::orient2d(pc, pa, pp)};
+      if (std::any_of(edge, edge + 3, [&](Sign e) { return e != Sign::zero && e != turn; }))
+        continue;
+      const ExactVec3 ea = detail::exact(a), eb = detail::exact(b), ec = detail::exact(c);
+      const ExactVec3 normal = cross(eb - ea, ec - ea);
+      Candidate k;
+      k.s = normal.x.sign();  // the (y, z) projection's orientation, = turn
+      // Edge tests in the (y, z) plane: (B − A) x (O − A) = g . (o − a), g = (0, −dz, dy).
+      const ExactVec3* from[3] = {&ea, &eb, &ec};
+      const ExactVec3* to[3] = {&eb, &ec, &ea};
+      for (int e = 0; e < 3; ++e) {
+        const ExactVec3 d = *to[e] - *from[e];
+        k.g[e] = ExactVec3{ExactNumber(), -d.z, d.y};
+        k.c[e] = dot(k.g[e], ep - *from[e]);
+      }
+      // The plane is met ahead (t > 0) when sign(N . (a − o)) == sign(N.x).
+      k.g[3] = -normal;
+      k.c[3] = dot(normal, ea - ep);
+      bool decided = true, crosses = true;
+      for (int e = 0; e < 4 && crosses; ++e) {
+        const Sign s = k.c[e].sign();
+        if (s == Sign::zero) {
+          decided = false;
+        } else if (s != k.s) {
+          crosses = false;
+          decided = true;
+        }
+      }
+      if (!crosses) continue;
+      if (decided) {
+        parity_ = !parity_;
+      } else {
+        open_.push_back(std::move(k));
+      }
+    }
+  }
+
+  // Whether the sample is inside the mesh (odd number of crossings).
+  [[nodiscard]] bool inside(const detail::SymbolicOffset& at) const {
+    bool odd = parity_;
+    for (const Candidate& k : open_) {
+      bool crosses = true;
+      for (int e = 0; e < 4 && crosses; ++e)
+        crosses = sign(k.c[e], k.g[e], at) == k.s;
+      odd = odd != crosses;
+    }
+    return odd;
+  }
+
+ private:
+  struct Candidate {
+    Sign s = Sign::zero;
+    ExactNumber c[4];
+    ExactVec3 g[4];
+  };
+
+  static Sign sign(const ExactNumber& c, const ExactVec3& g, const detail::SymbolicOffset& at) {
+    if (const Sign s = detail::sign_at(c, g, at); s != Sign::zero) return s;
+    if (const Sign s = g.y.sign(); s != Sign::zero) return s;
+    return g.z.sign();
+  }
+
+  bool parity_ = false;          // crossings decided at p itself
+  std::vector<Candidate> open_;  // triangles whose tests vanish at p
+};
 
 ExactVec3 axis(int k, double s) {
   return detail::exact(Vec3{k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0});
@@ -105,7 +225,8 @@ LocalConstraint implicit_constraint(const ImplicitFunction& f, Vec3 p) {
 }
 
 // The planes through p that bound the leaf near p (p on the leaf's boundary), inward normals.
-// Every present leaf fills exactly the cells on the positive side of all its constraints.
+// Every leaf but a mesh fills exactly the cells on the positive side of all its constraints; a
+// mesh's planes have no particular orientation and it classifies samples itself (MeshRay).
 void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>& out) {
   std::visit(
       Overloaded{
@@ -141,11 +262,36 @@ void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>
             }
           },
           [&](const ImplicitFunction& f) { out.push_back(implicit_constraint(f, p)); },
+          [&](const CsgMesh& m) { mesh_constraints(m.mesh(), p, out); },
       },
       leaf);
 }
 
 }  // namespace
+
+CsgMesh::CsgMesh(Mesh mesh, const MeshIndexOptions& options) {
+  std::string problem;
+  if (!std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
+                   [](Vec3 v) { return is_finite(v); })) {
+    problem = "mesh has a NaN or infinite coordinate";
+  }
+  const auto n = static_cast<std::int64_t>(mesh.vertices.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    if (std::any_of(t.begin(), t.end(), [&](std::int32_t i) { return i < 0 || i >= n; })) {
+      problem = "mesh has a vertex index out of range";
+    }
+  }
+  if (problem.empty()) {
+    index_ = std::make_shared<const MeshIndex>(mesh, options);
+    if (index_->regime() != MeshRegime::closed_exact) {
+      problem = "mesh is not closed, a closed mesh is required (" + index_->warning() + ")";
+    }
+  } else {
+    index_ = std::make_shared<const MeshIndex>();
+  }
+  mesh_ = std::make_shared<const Mesh>(std::move(mesh));
+  problem_ = std::make_shared<const std::string>(std::move(problem));
+}
 
 Csg Csg::leaf(CsgLeaf solid) {
   return Csg(CsgOp::leaf, {}, std::make_shared<const CsgLeaf>(std::move(solid)));
@@ -183,10 +329,9 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
     const std::string path = queue[at].path;
     solid.nodes_[at].op = t.op();
     if (t.op() == CsgOp::leaf) {
-      const std::string problem = check_leaf(t.solid());
-      if (!problem.empty()) {
-        return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + problem};
-      }
+      ErrorKind kind = ErrorKind::invalid_value;
+      const std::string problem = check_leaf(t.solid(), kind);
+      if (!problem.empty()) return Error{kind, (path.empty() ? "" : path + ": ") + problem};
       solid.nodes_[at].first = static_cast<std::int32_t>(solid.leaves_.size());
       solid.leaves_.push_back(t.solid());
       continue;
@@ -263,15 +408,26 @@ Location CsgSolid::locate(Vec3 p) const {
   // p is on the boundary of leaves that matter: analyse its neighbourhood.
   std::vector<LocalConstraint> constraints;
   std::vector<std::int32_t> first(leaves_.size() + 1, 0);
+  std::vector<MeshRay> rays;  // per leaf, for meshes on whose surface p lies
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
     first[i] = static_cast<std::int32_t>(constraints.size());
-    if (at[i] == Location::boundary) local_constraints(leaves_[i], p, constraints);
+    if (at[i] == Location::boundary) {
+      local_constraints(leaves_[i], p, constraints);
+      if (const auto* m = std::get_if<CsgMesh>(&leaves_[i])) {
+        rays.resize(leaves_.size());
+        rays[i] = MeshRay(m->mesh(), p);
+      }
+    }
     first[i + 1] = static_cast<std::int32_t>(constraints.size());
   }
-  const std::function<bool(std::span<const char>)> contains = [&](std::span<const char> positive) {
+  const detail::SolidContains contains = [&](std::span<const char> positive,
+                                             const detail::SymbolicOffset& sample) {
     return evaluate(0, [&](std::int32_t leaf) {
              const auto i = static_cast<std::size_t>(leaf);
              if (at[i] != Location::boundary) return static_cast<int>(at[i]);
+             if (std::holds_alternative<CsgMesh>(leaves_[i])) {
+               return rays[i].inside(sample) ? 1 : -1;
+             }
              for (std::int32_t k = first[i]; k < first[i + 1]; ++k) {
                if (positive[static_cast<std::size_t>(k)] == 0) return -1;
              }

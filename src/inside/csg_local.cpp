@@ -41,8 +41,7 @@ struct Line {
 
 class Sampler {
  public:
-  Sampler(std::span<const LocalConstraint> constraints,
-          const std::function<bool(std::span<const char>)>& solid_contains)
+  Sampler(std::span<const LocalConstraint> constraints, const SolidContains& solid_contains)
       : constraints_(constraints),
         solid_contains_(solid_contains),
         positive_(constraints.size(), 0) {
@@ -65,7 +64,7 @@ class Sampler {
 
   Location run() {
     if (geometric_.empty()) {
-      record();
+      record({});
       return answer();
     }
     for (const ExactVec3& v : rays()) {
@@ -171,12 +170,13 @@ class Sampler {
       }
     }
     if (through.empty()) {
-      record();
+      record({&current_v_, &w});
       return;
     }
     std::vector<Sign> along(through.size()), across(through.size());
     for (std::size_t l : through) {
       const ExactVec3 dir = cross(current_v_, lines[l].a);
+      const ExactVec3 u1[2] = {dir, -dir}, u2[2] = {lines[l].a, -lines[l].a};
       for (std::size_t k = 0; k < through.size(); ++k) {
         along[k] = dot(lines[through[k]].a, dir).sign();
         across[k] = dot(lines[through[k]].a, lines[l].a).sign();
@@ -188,17 +188,17 @@ class Sampler {
             const int sign = first != 0 ? first : s2 * to_int(across[k]);
             positive_[lines[through[k]].constraint] = sign > 0 ? 1 : 0;
           }
-          record();
+          record({&current_v_, &w, &u1[s1 > 0 ? 0 : 1], &u2[s2 > 0 ? 0 : 1]});
           if (seen_in_ && seen_out_) return;
         }
       }
     }
   }
 
-  void record() {
+  void record(const SymbolicOffset& at) {
     for (const auto& [alias, representative] : aliases_)
       positive_[alias] = positive_[representative];
-    if (solid_contains_(positive_)) {
+    if (solid_contains_(positive_, at)) {
       seen_in_ = true;
     } else {
       seen_out_ = true;
@@ -211,7 +211,7 @@ class Sampler {
   }
 
   std::span<const LocalConstraint> constraints_;
-  const std::function<bool(std::span<const char>)>& solid_contains_;
+  const SolidContains& solid_contains_;
   std::vector<char> positive_;
   std::vector<std::size_t> geometric_;                        // one constraint per distinct surface
   std::vector<std::pair<std::size_t, std::size_t>> aliases_;  // (constraint, its representative)
@@ -222,9 +222,17 @@ class Sampler {
 
 }  // namespace
 
-Location classify_neighbourhood(
-    std::span<const LocalConstraint> constraints,
-    const std::function<bool(std::span<const char> positive)>& solid_contains) {
+Sign sign_at(const ExactNumber& c, const ExactVec3& g, const SymbolicOffset& at) {
+  if (const Sign s = c.sign(); s != Sign::zero) return s;
+  for (const ExactVec3* term : {at.v, at.w, at.u1, at.u2}) {
+    if (term == nullptr) continue;
+    if (const Sign s = dot(g, *term).sign(); s != Sign::zero) return s;
+  }
+  return Sign::zero;
+}
+
+Location classify_neighbourhood(std::span<const LocalConstraint> constraints,
+                                const SolidContains& solid_contains) {
   return Sampler(constraints, solid_contains).run();
 }
 

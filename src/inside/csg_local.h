@@ -22,12 +22,30 @@ struct LocalConstraint {
   bool fixed_value = false;
 };
 
+/// The sample point q = p + ε v + ε² (w / h + δ u1 + δ² u2), 0 < ε ≪ δ ≪ 1, h > 0 (h is not
+/// given: only signs matter). Null members are zero: no v when there is no geometric
+/// constraint, no u1, u2 when w lies on no second-order line.
+struct SymbolicOffset {
+  const ExactVec3* v = nullptr;
+  const ExactVec3* w = nullptr;
+  const ExactVec3* u1 = nullptr;
+  const ExactVec3* u2 = nullptr;
+};
+
+/// The sign of c + g . (q − p) for the sample q: the first non-zero of c, g . v, g . w, g . u1,
+/// g . u2 (zero if all are).
+[[nodiscard]] Sign sign_at(const ExactNumber& c, const ExactVec3& g, const SymbolicOffset& at);
+
+/// What a sample tells the solid: for each constraint, whether the region is on its positive
+/// side, and the sample point itself (for leaves that classify it themselves).
+using SolidContains = std::function<bool(std::span<const char> positive, const SymbolicOffset& at)>;
+
 /// Samples every open region of the neighbourhood of p cut by the constraints and calls
-/// `solid_contains(positive)` with, for each constraint, whether the region is on its positive
-/// side. Returns `inside` if every call returned true, `outside` if every call returned false,
-/// else `boundary`; stops as soon as both answers have been seen.
-[[nodiscard]] Location classify_neighbourhood(
-    std::span<const LocalConstraint> constraints,
-    const std::function<bool(std::span<const char> positive)>& solid_contains);
+/// `solid_contains(positive, at)` with, for each constraint, whether the region is on its
+/// positive side, and the sample point q in the region. Returns `inside` if every call returned
+/// true, `outside` if every call returned false, else `boundary`; stops as soon as both answers
+/// have been seen.
+[[nodiscard]] Location classify_neighbourhood(std::span<const LocalConstraint> constraints,
+                                              const SolidContains& solid_contains);
 
 }  // namespace contain::inside::detail

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "contain/io/mesh_io.h"
 #include "muparser_function.h"
 
 namespace contain::io {
@@ -20,7 +21,24 @@ class Reader {
  public:
   explicit Reader(const CsgJsonOptions& options) : options_(options) {}
 
+  // Trees deeper than this are refused: reading (and later evaluating) a tree recurses once
+  // per level, so a file of 10^5 nested complements would overflow the stack.
+  static constexpr int kMaxDepth = 256;
+
   Result<Csg> node(const json& j, const std::string& path) {
+    if (depth_ >= kMaxDepth) {
+      return fail("",
+                  "the CSG tree is nested more than " + std::to_string(kMaxDepth) + " levels deep",
+                  ErrorKind::unsupported);
+    }
+    ++depth_;
+    Result<Csg> out = node_at_depth(j, path);
+    --depth_;
+    return out;
+  }
+
+ private:
+  Result<Csg> node_at_depth(const json& j, const std::string& path) {
     if (!j.is_object()) return fail(path, "expected an object, got " + describe(j));
     if (j.size() != 1) {
       return fail(path, "expected an object with exactly one key, got " + std::to_string(j.size()));
@@ -46,7 +64,6 @@ class Reader {
                           "halfspace, convex, implicit or mesh)");
   }
 
- private:
   static std::string join(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
   }
@@ -200,11 +217,20 @@ class Reader {
   Result<Csg> mesh(const json& j, const std::string& path) {
     if (!j.is_string()) return fail(path, "expected a file name, got " + describe(j));
     const std::filesystem::path file = options_.base_dir / j.get<std::string>();
-    return fail(path, "mesh leaves are not supported yet (" + file.string() + ")",
-                ErrorKind::unsupported);
+    Result<MeshFile> read = read_mesh(file);
+    // The mesh reader's error names the mesh file (and its line); the path names the leaf.
+    if (!read) return fail(path, read.error().what(), read.error().kind);
+    inside::CsgMesh leaf(std::move(read->mesh));
+    if (!leaf.problem().empty()) {
+      const bool open = leaf.index().regime() != inside::MeshRegime::closed_exact;
+      return fail(path, file.string() + ": " + leaf.problem(),
+                  open ? ErrorKind::degenerate : ErrorKind::invalid_value);
+    }
+    return Csg::leaf(std::move(leaf));
   }
 
   const CsgJsonOptions& options_;
+  int depth_ = 0;
 };
 
 // "[json.exception.parse_error.101] parse error at line 2, column 5: ..." -> after "] ".

@@ -126,20 +126,86 @@ TEST(CsgJson, MuparserSyntaxErrorsCarryItsMessage) {
       << unknown.error().message;
 }
 
-TEST(CsgJson, MeshLeavesAreUnsupportedAndNameTheFileRelativeToTheJson) {
-  const auto dir = std::filesystem::temp_directory_path() / "contain_csg_json_test";
-  std::filesystem::create_directories(dir);
+// A unit cube, faces as quads (the reader fan-triangulates them).
+constexpr const char* kCubeObj = R"(v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+)";
+
+// A fresh directory holding scene.json and the given mesh files.
+std::filesystem::path scene_dir(const char* name, const std::string& json,
+                                std::initializer_list<std::pair<const char*, std::string>> files) {
+  const auto dir = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "parts");
+  std::ofstream(dir / "scene.json") << json;
+  for (const auto& [file, text] : files)
+    std::ofstream(dir / file) << text;
+  return dir;
+}
+
+TEST(CsgJson, MeshLeafIsReadRelativeToTheJsonFile) {
+  const auto dir = scene_dir(
+      "contain_csg_json_mesh_ok",
+      R"({"union": [{"mesh": "parts/cube.obj"}, {"box": {"min": [1,0,0], "max": [2,1,1]}}]})",
+      {{"parts/cube.obj", kCubeObj}});
+  auto tree = read_csg_json(dir / "scene.json");
+  ASSERT_TRUE(tree.ok()) << tree.error().what();
+  auto solid = CsgSolid::prepare(*tree);
+  ASSERT_TRUE(solid.ok()) << solid.error().what();
+  EXPECT_EQ(solid->locate({0.5, 0.5, 0.5}), Location::inside);
+  EXPECT_EQ(solid->locate({1, 0.5, 0.5}), Location::inside);  // the shared face
+  EXPECT_EQ(solid->locate({0, 0.5, 0.5}), Location::boundary);
+  EXPECT_EQ(solid->locate({-1, 0.5, 0.5}), Location::outside);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CsgJson, MissingMeshFileIsAnIoErrorNamingTheLeafAndTheFile) {
+  const auto dir = scene_dir(
+      "contain_csg_json_mesh_missing",
+      R"({"difference": [{"box": {"min": [0,0,0], "max": [1,1,1]}}, {"mesh": "part.obj"}]})", {});
   const auto file = dir / "scene.json";
-  {
-    std::ofstream out(file);
-    out << R"({"difference": [{"box": {"min": [0,0,0], "max": [1,1,1]}}, {"mesh": "part.obj"}]})";
-  }
   auto tree = read_csg_json(file);
   ASSERT_FALSE(tree.ok());
-  EXPECT_EQ(tree.error().kind, ErrorKind::unsupported);
+  EXPECT_EQ(tree.error().kind, ErrorKind::io);
   EXPECT_EQ(tree.error().source, file.string());
   EXPECT_NE(tree.error().message.find((dir / "part.obj").string()), std::string::npos);
   EXPECT_EQ(tree.error().message.rfind("difference[1].mesh: ", 0), 0u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CsgJson, OpenMeshLeafIsDegenerateNamingTheLeafAndTheFile) {
+  std::string open = kCubeObj;
+  open.resize(open.rfind("f 4 1 5 8"));  // without its last face
+  const auto dir = scene_dir("contain_csg_json_mesh_open",
+                             R"({"complement": {"mesh": "open.obj"}})", {{"open.obj", open}});
+  auto tree = read_csg_json(dir / "scene.json");
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::degenerate);
+  EXPECT_EQ(tree.error().message.rfind("complement.mesh: ", 0), 0u) << tree.error().message;
+  EXPECT_NE(tree.error().message.find("open.obj"), std::string::npos);
+  EXPECT_NE(tree.error().message.find("not closed"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CsgJson, UnreadableMeshKeepsTheMeshReadersKindAndLine) {
+  const auto dir = scene_dir("contain_csg_json_mesh_bad", R"({"mesh": "bad.obj"})",
+                             {{"bad.obj", "v 0 0 0\nv 1 0 zero\n"}});
+  auto tree = read_csg_json(dir / "scene.json");
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::parse);
+  EXPECT_NE(tree.error().message.find("bad.obj:2"), std::string::npos) << tree.error().message;
   std::filesystem::remove_all(dir);
 }
 
@@ -147,6 +213,30 @@ TEST(CsgJson, MissingFileIsAnIoError) {
   auto tree = read_csg_json("/nonexistent/contain/scene.json");
   ASSERT_FALSE(tree.ok());
   EXPECT_EQ(tree.error().kind, ErrorKind::io);
+}
+
+// Regression (found by fuzz/fuzz_csg_json's bad-input row "deep nesting"): 10^5 nested
+// complements overflowed the stack of the recursive reader (SIGSEGV in `contain inside --csg`).
+TEST(CsgJson, DeeplyNestedTreeIsRefusedInsteadOfOverflowingTheStack) {
+  const int depth = 100000;
+  std::string text;
+  for (int i = 0; i < depth; ++i)
+    text += "{\"complement\": ";
+  text += R"({"sphere": {"center": [0, 0, 0], "radius": 1}})";
+  text.append(static_cast<std::size_t>(depth), '}');
+  auto tree = parse_csg_json(text, {.source = "deep.json"});
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.error().kind, ErrorKind::unsupported);
+  EXPECT_NE(tree.error().what().find("nested more than 256 levels"), std::string::npos);
+}
+
+TEST(CsgJson, TreesUpToTheDepthLimitAreRead) {
+  std::string text;
+  for (int i = 0; i < 254; ++i)
+    text += "{\"complement\": ";
+  text += R"({"sphere": {"center": [0, 0, 0], "radius": 1}})";
+  text.append(254, '}');
+  EXPECT_EQ(at(text, {0, 0, 0}), Location::inside);  // an even number of complements
 }
 
 }  // namespace

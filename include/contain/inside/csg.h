@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Point in a CSG tree (exercise 22.4-2): unions, intersections, differences and complements of
-/// balls, boxes, half-spaces, convex polyhedra and implicit solids, with the regularised
+/// balls, boxes, half-spaces, convex polyhedra, closed triangle meshes and implicit solids, with
+/// the regularised
 /// operations of solid modelling.
 ///
 /// Semantics. Every leaf is a closed solid. The operations are regularised (the closure of the
@@ -38,13 +39,25 @@
 /// A zero or non-finite gradient estimate makes the leaf locally `inside` if f >= 0 at the six
 /// points p ± step e_k and `outside` otherwise.
 ///
-/// Extending: a new kind of leaf (a general closed mesh) adds an alternative to CsgLeaf, its
-/// exact locate, its local constraints at a boundary point, and the rule that says which cells of
-/// its own constraints it fills; the combination logic stays as it is.
+/// Mesh leaves (CsgMesh, a closed triangle mesh): located exactly by inside::MeshIndex (ray
+/// parity). A mesh is not locally an intersection of half-spaces (a reflex edge, a saddle
+/// vertex), so each leaf classifies the symbolic samples itself: its local constraints are the
+/// planes of the triangles that contain p (so every cell of the arrangement is wholly in or out
+/// of the mesh), and it decides a sample q by the same perturbed +x ray parity as MeshIndex,
+/// with q's symbolic offset from p ordered before the ray's own perturbation (0, e, e²): every
+/// test is linear in the ray origin, so its sign is the first non-zero one of its value at p and
+/// its products with v, w, u1, u2, e_y, e_z, all exact. Exact, like MeshIndex on closed meshes.
+/// An open mesh (border or non-manifold edges, where MeshIndex falls back on the approximate
+/// winding number) is refused by CsgSolid::prepare.
+///
+/// Extending: a new kind of leaf adds an alternative to CsgLeaf, its exact locate, its local
+/// constraints at a boundary point, and either the rule that it fills exactly the cells on the
+/// positive side of its constraints or its own classification of a symbolic sample (as meshes).
 
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -53,17 +66,40 @@
 #include "contain/core/parallel.h"
 #include "contain/core/result.h"
 #include "contain/geometry/box.h"
+#include "contain/geometry/mesh.h"
 #include "contain/geometry/plane.h"
 #include "contain/geometry/sphere.h"
 #include "contain/geometry/vec.h"
 #include "contain/inside/convex_polyhedron.h"
 #include "contain/inside/implicit.h"
+#include "contain/inside/mesh_index.h"
 
 namespace contain::inside {
 
+/// A closed triangle mesh as a CSG leaf: the solid it bounds under the ray parity rule of
+/// MeshIndex (its orientation does not matter). Holds the mesh and its MeshIndex, shared by
+/// copies; built once, O(n log n + grid) as MeshIndex. CsgSolid::prepare refuses a mesh with a
+/// NaN/Inf coordinate or an index out of range (invalid_value) and a mesh that is not closed
+/// (degenerate: border or non-manifold edges make the parity rule meaningless).
+class CsgMesh {
+ public:
+  /// Prepares `mesh` (any contents; problems are reported by CsgSolid::prepare).
+  explicit CsgMesh(Mesh mesh, const MeshIndexOptions& options = {});
+
+  [[nodiscard]] const Mesh& mesh() const { return *mesh_; }
+  [[nodiscard]] const MeshIndex& index() const { return *index_; }
+  /// Empty when the mesh may be used as a leaf, else why not.
+  [[nodiscard]] const std::string& problem() const { return *problem_; }
+
+ private:
+  std::shared_ptr<const Mesh> mesh_;
+  std::shared_ptr<const MeshIndex> index_;
+  std::shared_ptr<const std::string> problem_;
+};
+
 /// A leaf solid: a closed ball, a closed box, a closed half-space (a x + b y + c z + d >= 0), a
-/// convex polyhedron (from planes or a convex mesh), or { p : f(p) >= 0 }.
-using CsgLeaf = std::variant<Sphere, Box3, Plane, ConvexPolyhedron, ImplicitFunction>;
+/// convex polyhedron (from planes or a convex mesh), { p : f(p) >= 0 }, or a closed mesh.
+using CsgLeaf = std::variant<Sphere, Box3, Plane, ConvexPolyhedron, ImplicitFunction, CsgMesh>;
 
 /// The kind of a CSG node.
 enum class CsgOp : std::uint8_t {
@@ -106,13 +142,16 @@ class CsgSolid {
  public:
   /// Validates every leaf: finite numbers (invalid_value), radius >= 0 (invalid_value),
   /// box min <= max on every axis (invalid_value), half-space normal not zero (degenerate),
-  /// an implicit leaf holding a function (invalid_value); messages name the leaf by its
-  /// position in the tree ("intersect[1].subtract[0]: radius is negative"). O(size of the tree).
+  /// an implicit leaf holding a function (invalid_value), a mesh with valid numbers and indices
+  /// (invalid_value) that is closed (degenerate); messages name the leaf by its position in the
+  /// tree ("intersect[1].subtract[0]: radius is negative"). O(size of the tree).
   [[nodiscard]] static Result<CsgSolid> prepare(const Csg& tree);
 
   /// Where p lies, with the semantics of this header. Cost: one exact locate per leaf; at points
   /// on some leaf's boundary, the neighbourhood analysis (exact arithmetic, polynomial in the
-  /// number k of local constraints, ~k^4 tree evaluations, small k in practice).
+  /// number k of local constraints, ~k^4 tree evaluations, small k in practice; a mesh leaf adds
+  /// O(n) to find the triangles through p and an exact ray test per sample against the few
+  /// triangles that p's +x ray touches degenerately).
   [[nodiscard]] Location locate(Vec3 p) const;
 
   /// locate() for every point, in parallel (core/parallel.h); out[i] is the answer for

@@ -39,8 +39,9 @@ struct CsgJsonOptions {
 ///   out of the double range, negative radius, box min > max, wrong array length, unknown key,
 ///   an object with no or several keys, empty union/intersection;
 /// - ErrorKind::degenerate: a half-space (or convex plane) with a zero normal;
-/// - ErrorKind::unsupported: `{"mesh": ...}` leaves (the point-in-mesh test is not there yet);
-///   the message names the resolved file.
+/// - mesh leaves (`{"mesh": "f.obj"}`, read with io::read_mesh into an inside::CsgMesh): the
+///   mesh reader's errors with its kind ("mesh: dir/f.obj:12: ..."), and ErrorKind::degenerate
+///   for a mesh that is not closed (a CSG leaf needs a solid); messages name the resolved file.
 ///
 /// Implicit leaves: the expression is compiled once here (so errors surface now) and evaluated by
 /// a small pool of muparser instances, one per concurrent caller, behind a mutex that guards
