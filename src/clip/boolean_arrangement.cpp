@@ -95,7 +95,7 @@ void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label
 }
 
 Arrangement::Arrangement(const ArrangementInput& input) {
-  noded_ = node_segments(input.segments);
+  noded_ = node_segments(input.segments, input.magnitude);
   crossings = noded_.crossings;
   rounds = noded_.rounds;
   converged = noded_.converged;

@@ -25,6 +25,8 @@ struct SegmentLabel {
 struct ArrangementInput {
   std::vector<NodingInput> segments;
   std::vector<SegmentLabel> labels;
+  /// Largest coordinate for the noding's hot pixels; 0: that of the segments.
+  double magnitude = 0.0;
   void add_rings(std::span<const Ring> rings, SegmentLabel label);
 };
 

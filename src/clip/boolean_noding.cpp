@@ -155,18 +155,19 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, d
 
 }  // namespace
 
-Noded node_segments(std::span<const NodingInput> segments) {
+Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
   Noded out;
   const auto n = static_cast<std::uint32_t>(segments.size());
   out.points.reserve(2 * n);
   out.first.reserve(n + 1);
-  double magnitude = 0.0;
+  const bool given = magnitude > 0.0;
   for (const NodingInput& s : segments) {
     out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
     out.points.push_back(s.a);
     out.points.push_back(s.b);
-    magnitude = std::max(
-        {magnitude, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
+    if (!given)
+      magnitude = std::max(
+          {magnitude, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
   }
   out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
   // Hot pixels: half-side of two ulps of the largest coordinate (rule clip-noding).

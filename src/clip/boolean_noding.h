@@ -30,7 +30,10 @@ struct Noded {
 /// at shared endpoints. Touching points and overlap ends are input doubles (exact splits); a
 /// proper crossing point is computed in extended precision, rounded to doubles and clamped to
 /// both segments' boxes, and the pieces through it are checked again in the next round (rule
-/// clip-noding, docs/robustness.md). Every decision is an exact orient2d sign.
-[[nodiscard]] Noded node_segments(std::span<const NodingInput> segments);
+/// clip-noding, docs/robustness.md). Every decision is an exact orient2d sign. `magnitude`, when
+/// positive, replaces the largest coordinate of the segments in the hot-pixel size (the booleans
+/// pass the one of their whole input when they leave far edges out, so that the pixels stay the
+/// same).
+[[nodiscard]] Noded node_segments(std::span<const NodingInput> segments, double magnitude = 0.0);
 
 }  // namespace contain::clip::detail

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -192,6 +193,42 @@ TEST(PolygonBoolean, RandomSelfIntersectingPairsGiveValidOutputAndConsistentArea
       EXPECT_NEAR(area(u) + area(i), area_a + area_b, kTol);
       EXPECT_NEAR(area(d), area_a - area(i), kTol);
       EXPECT_NEAR(area(x), area(u) - area(i), kTol);
+    }
+  }
+}
+
+// Intersection and difference leave out the edges of the larger operand far from the other
+// (rule clip-far-edges): the results must still agree with the union, which uses every edge, for
+// regions that wind several times, have far islands and rings around the small operand.
+TEST(PolygonBoolean, SmallOperandsAgainstALargeWindingRegionAgreeWithTheUnion) {
+  std::mt19937_64 rng(77);
+  Ring twice = star(rng, 300, 0.5, 0.5, 0.3, 0.45);
+  const Ring once(twice);
+  twice.insert(twice.end(), once.begin(), once.end());   // winding 2 inside
+  Ring clockwise = star(rng, 200, 0.5, 0.5, 0.1, 0.25);  // a hole, or winding 1 again
+  std::reverse(clockwise.begin(), clockwise.end());
+  const std::vector<Ring> big{twice, clockwise, star(rng, 50, 1.5, 1.5, 0.05, 0.1),
+                              box(-1, -1, 2, 2), scribble(rng, 40)};
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  const std::vector<Ring> none;
+  for (int trial = 0; trial < 40; ++trial) {
+    const double x = u(rng), y = u(rng), s = trial % 2 == 0 ? 0.03 : 0.2;
+    const std::vector<Ring> small{trial % 3 == 0 ? star(rng, 7, x, y, s / 2, s)
+                                                 : box(x, y, x + s, y + s)};
+    for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative}) {
+      const double area_big = area(run(big, none, Op::union_, fill));
+      const double area_small = area(run(small, none, Op::union_, fill));
+      const MultiPolygon i1 = run(big, small, Op::intersection, fill);
+      const MultiPolygon i2 = run(small, big, Op::intersection, fill);
+      const MultiPolygon d = run(small, big, Op::difference, fill);
+      const MultiPolygon un = run(big, small, Op::union_, fill);
+      for (const MultiPolygon* r : {&i1, &i2, &d, &un}) {
+        ASSERT_TRUE(is_valid_ogc(*r)) << trial << " " << static_cast<int>(fill);
+      }
+      constexpr double kTol = 1e-12;  // relative to the extent squared (9 here)
+      EXPECT_NEAR(area(i1) + area(un), area_big + area_small, kTol) << trial;
+      EXPECT_NEAR(area(i2), area(i1), kTol) << trial;
+      EXPECT_NEAR(area(d), area(un) - area_big, kTol) << trial;
     }
   }
 }
