@@ -9,7 +9,7 @@
 #include "contain/collide/tri_tri_2d.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
-#include "contain/predicates/orient3d_plane.h"
+#include "contain/predicates/orient3d_set.h"
 
 namespace contain::collide {
 namespace {
@@ -193,41 +193,43 @@ constexpr std::array<SignPattern, 27> kPatterns = make_patterns();
 }  // namespace
 
 bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
-  const Vec3 t1[3] = {a.a, a.b, a.c};
-  const Vec3 t2[3] = {b.a, b.b, b.c};
-  // Signs of T1's vertices against T2's plane (its normal formed once): all strictly on one
-  // side -> apart.
-  const auto s1 = predicates::Orient3dPlane(t2[0], t2[1], t2[2]).signs(t1[0], t1[1], t1[2]);
-  const int d1[3] = {to_int(s1[0]), to_int(s1[1]), to_int(s1[2])};
-  const SignPattern& p1_pattern = kPatterns[pattern_code(d1[0], d1[1], d1[2])];
-  if (p1_pattern.apart) return false;
-  const auto s2 = predicates::Orient3dPlane(t1[0], t1[1], t1[2]).signs(t2[0], t2[1], t2[2]);
-  const int d2[3] = {to_int(s2[0]), to_int(s2[1]), to_int(s2[2])};
-  if (kPatterns[pattern_code(d2[0], d2[1], d2[2])].apart) return false;
-  if (p1_pattern.special || kPatterns[pattern_code(d2[0], d2[1], d2[2])].special) {
-    return special_pair(a, b, d1, d2);
-  }
+  // The six vertices, T1 as 0, 1, 2 and T2 as 3, 4, 5, share one filter bound; each plane's
+  // normal is formed once for its three queries.
+  const predicates::Orient3dSet<6> set({a.a, a.b, a.c, b.a, b.b, b.c});
+  // Signs of T1's vertices against T2's plane: all strictly on one side -> apart.
+  const auto plane2 = set.plane(3, 4, 5);
+  const int d1[3] = {to_int(set.sign(plane2, 0)), to_int(set.sign(plane2, 1)),
+                     to_int(set.sign(plane2, 2))};
+  const SignPattern& pattern1 = kPatterns[pattern_code(d1[0], d1[1], d1[2])];
+  if (pattern1.apart) return false;
+  const auto plane1 = set.plane(0, 1, 2);
+  const int d2[3] = {to_int(set.sign(plane1, 3)), to_int(set.sign(plane1, 4)),
+                     to_int(set.sign(plane1, 5))};
+  const SignPattern& pattern2 = kPatterns[pattern_code(d2[0], d2[1], d2[2])];
+  if (pattern2.apart) return false;
+  if (pattern1.special || pattern2.special) return special_pair(a, b, d1, d2);
 
   // Both proper, not coplanar, each meets the other's plane: relabel T1 so that p1 is alone on
   // the non-negative side of plane 2 (reversing T2 negates those signs) ...
-  const int k1 = p1_pattern.rotation;
-  const int f1 = p1_pattern.flip ? 1 : 0;
+  const int k1 = pattern1.rotation;
+  const int f1 = pattern1.flip ? 1 : 0;
   // T2's vertex order after the optional reversal (swap of its vertices 1 and 2).
   const int o1 = 1 + f1, o2 = 2 - f1;
   // ... then T2 likewise against plane 1 (reversing T1 keeps p1 alone on its side).
-  const SignPattern& p2_pattern = kPatterns[pattern_code(d2[0], d2[o1], d2[o2])];
-  const int order2[3] = {0, o1, o2};
-  const int k2 = p2_pattern.rotation;
-  const int f2 = p2_pattern.flip ? 1 : 0;
-  constexpr int kNext[5] = {0, 1, 2, 0, 1};  // (i) mod 3 for i < 5
-  const Vec3 p1 = t1[k1], q1 = t1[kNext[k1 + 1 + f2]], r1 = t1[kNext[k1 + 2 - f2]];
-  const Vec3 p2 = t2[order2[k2]], q2 = t2[order2[kNext[k2 + 1]]], r2 = t2[order2[kNext[k2 + 2]]];
+  const SignPattern& pattern2r = kPatterns[pattern_code(d2[0], d2[o1], d2[o2])];
+  const std::size_t order2[3] = {3, static_cast<std::size_t>(3 + o1),
+                                 static_cast<std::size_t>(3 + o2)};
+  const int k2 = pattern2r.rotation;
+  const int f2 = pattern2r.flip ? 1 : 0;
+  constexpr std::size_t kNext[5] = {0, 1, 2, 0, 1};  // i mod 3 for i < 5
+  const std::size_t p1 = kNext[k1], q1 = kNext[k1 + 1 + f2], r1 = kNext[k1 + 2 - f2];
+  const std::size_t p2 = order2[k2], q2 = order2[kNext[k2 + 1]], r2 = order2[kNext[k2 + 2]];
   // T1 meets the line L of the planes in [i, j] (i on p1q1, j on p1r1), T2 in [k, l]; the plane
   // through p1, q1, p2 cuts L at i and orient3d(p1, q1, p2, q2) says on which side of i the
   // point k lies; likewise orient3d(p1, r1, r2, p2) places l against j. In this labelling the
   // intervals overlap iff neither sign is strictly positive (Guigue and Devillers 2003).
-  const Sign i_side = predicates::Orient3dPlane(p1, q1, p2).sign(q2);
-  const Sign j_side = predicates::Orient3dPlane(p1, r1, r2).sign(p2);
+  const Sign i_side = set.orient3d(p1, q1, p2, q2);
+  const Sign j_side = set.orient3d(p1, r1, r2, p2);
   return (i_side != Sign::positive) & (j_side != Sign::positive);
 }
 

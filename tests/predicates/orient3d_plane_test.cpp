@@ -73,7 +73,7 @@ TEST(Orient3dPlane, SignIsOrient3dOfThePlanesPointsAndTheQuery) {
 TEST(Orient3dPlane, MatchesOracleOnUniformRandom) {
   CaseRng rng(0x3e01);
   Agreement agreement;
-  for (int i = 0; i < cases(100000); ++i) {
+  for (int i = 0; i < cases(50000); ++i) {
     expect_exact(agreement, uniform_point(rng, 1), uniform_point(rng, 1), uniform_point(rng, 1),
                  uniform_point(rng, 1), uniform_point(rng, 1), uniform_point(rng, 1));
   }
@@ -83,7 +83,7 @@ TEST(Orient3dPlane, MatchesOracleOnUniformRandom) {
 TEST(Orient3dPlane, MatchesOracleNearCoplanarAtEveryScale) {
   CaseRng rng(0x3e02);
   Agreement agreement;
-  for (int i = 0; i < cases(150000); ++i) {
+  for (int i = 0; i < cases(75000); ++i) {
     Vec3 a, b, c, p[3];
     if (i % 2 == 0) {  // rounded points of a random plane moved by a few ulps, any scale
       const double scale = i % 8 == 0 ? rng.power_of_two(-1000, 1000) : rng.power_of_two(-30, 30);
@@ -112,7 +112,7 @@ TEST(Orient3dPlane, MatchesOracleNearCoplanarAtEveryScale) {
 TEST(Orient3dPlane, IsZeroOnExactlyCoplanarPointsAndDegeneratePlanes) {
   CaseRng rng(0x3e03);
   Agreement agreement;
-  for (int i = 0; i < cases(60000); ++i) {
+  for (int i = 0; i < cases(30000); ++i) {
     const LatticePlane g = lattice_plane(rng, -1074, 990);
     Vec3 a = g.point(rng), b = g.point(rng), c = g.point(rng);
     Vec3 p = g.point(rng), q = g.point(rng), r = g.point(rng);
@@ -147,7 +147,7 @@ TEST(Orient3dPlane, IsZeroOnExactlyCoplanarPointsAndDegeneratePlanes) {
 TEST(Orient3dPlane, MatchesOracleOnMixedMagnitudesWithOverflowAndUnderflow) {
   CaseRng rng(0x3e04);
   Agreement agreement;
-  for (int i = 0; i < cases(30000); ++i) {
+  for (int i = 0; i < cases(15000); ++i) {
     const Vec3 a = any_point(rng), b = any_point(rng), c = any_point(rng);
     Vec3 p = any_point(rng), q = any_point(rng), r = any_point(rng);
     if (i % 4 == 0) p = {a.x, b.y, c.z};  // shared coordinates: exact cancellations
