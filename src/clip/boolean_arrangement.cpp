@@ -108,15 +108,22 @@ void Arrangement::build_graph(const ArrangementInput& input) {
   const std::size_t np = pts.size();
   const std::size_t nchains = input.segments.size();
   // Vertices: equal points merge.
-  std::vector<std::uint32_t> order(np);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t l, std::uint32_t r) { return lex_less(pts[l], pts[r]); });
+  struct Keyed {
+    Vec2 p;
+    std::uint32_t i;
+  };
+  std::vector<Keyed> order(np);
+  for (std::size_t i = 0; i < np; ++i)
+    order[i] = {pts[i], static_cast<std::uint32_t>(i)};
+  std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
+    return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
+  });
   std::vector<std::uint32_t> vid(np);
   vertex_.clear();
+  vertex_.reserve(np / 2 + 1);
   for (std::size_t i = 0; i < np; ++i) {
-    if (i == 0 || pts[order[i]] != pts[order[i - 1]]) vertex_.push_back(pts[order[i]]);
-    vid[order[i]] = static_cast<std::uint32_t>(vertex_.size() - 1);
+    if (i == 0 || order[i].p != order[i - 1].p) vertex_.push_back(order[i].p);
+    vid[order[i].i] = static_cast<std::uint32_t>(vertex_.size() - 1);
   }
   origin_.assign(vertex_.size(), kNone);
   for (std::size_t c = nchains; c-- > 0;)
@@ -203,7 +210,7 @@ std::int32_t Arrangement::next(std::int32_t h) const {
   const std::uint32_t v = head(h);
   const std::uint32_t b = out_first_[v], deg = out_first_[v + 1] - b;
   const std::uint32_t p = pos_[h ^ 1];
-  return out_[b + (p + deg - 1) % deg];
+  return out_[b + (p == 0 ? deg - 1 : p - 1)];
 }
 
 void Arrangement::label_faces() {
@@ -373,7 +380,7 @@ MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) con
       std::uint32_t p = pos_[h ^ 1];
       std::int32_t g = -1;
       for (std::uint32_t i = 0; i < deg; ++i) {
-        p = (p + deg - 1) % deg;
+        p = p == 0 ? deg - 1 : p - 1;
         if (boundary(out_[b + p])) {
           g = out_[b + p];
           break;

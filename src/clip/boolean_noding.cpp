@@ -42,6 +42,13 @@ struct Item {
   bool pixel;
 };
 
+// orient2d, without its exact fallback when c is an endpoint (pieces sharing an endpoint are the
+// most common pair, and their zero determinant is the filter's worst case).
+Sign orient(Vec2 a, Vec2 b, Vec2 c) {
+  if (c == a || c == b) return Sign::zero;
+  return orient2d(a, b, c);
+}
+
 bool lex_less(Vec2 a, Vec2 b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
@@ -101,11 +108,11 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
 void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, double radius,
                std::vector<Split>& splits, std::vector<Vec2>& hot, std::int64_t& crossings) {
   const Vec2 p0 = pts[s], p1 = pts[s + 1], q0 = pts[t], q1 = pts[t + 1];
-  const Sign o1 = orient2d(p0, p1, q0);
-  const Sign o2 = orient2d(p0, p1, q1);
+  const Sign o1 = orient(p0, p1, q0);
+  const Sign o2 = orient(p0, p1, q1);
   if (o1 == o2 && o1 != Sign::zero) return;
-  const Sign o3 = orient2d(q0, q1, p0);
-  const Sign o4 = orient2d(q0, q1, p1);
+  const Sign o3 = orient(q0, q1, p0);
+  const Sign o4 = orient(q0, q1, p1);
   if (o3 == o4 && o3 != Sign::zero) return;
   if (o1 == Sign::zero && o2 == Sign::zero) {
     // Collinear: boxes overlap (the sweep checked), so the pieces overlap or touch.
@@ -178,6 +185,11 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
   std::vector<Vec2> hot;           // crossing points: hot pixels for ever after
   std::size_t hot_fresh_from = 0;  // hot[i] for i >= this were made last round
   std::vector<Item> items;
+  struct Key {
+    double xmin;
+    std::uint32_t item;
+  };
+  std::vector<Key> keys;
   std::vector<std::uint32_t> active, active_fresh;
   std::vector<Split> splits;
   constexpr int kMaxRounds = 256;
@@ -197,8 +209,12 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
                        static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
     }
     const std::size_t hot_before = hot.size();
-    std::sort(items.begin(), items.end(),
-              [](const Item& l, const Item& r) { return l.xmin < r.xmin; });
+    keys.resize(items.size());
+    for (std::uint32_t i = 0; i < items.size(); ++i)
+      keys[i] = {items[i].xmin, i};
+    std::sort(keys.begin(), keys.end(), [](const Key& l, const Key& r) {
+      return l.xmin < r.xmin || (l.xmin == r.xmin && l.item < r.item);
+    });
     splits.clear();
     // Two active lists: a fresh item meets every active item, an old one only the fresh ones, so
     // later rounds cost little beyond the sort.
@@ -222,7 +238,8 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
       }
       list.resize(w);
     };
-    for (std::uint32_t i = 0; i < items.size(); ++i) {
+    for (const Key& key : keys) {
+      const std::uint32_t i = key.item;
       const Item& it = items[i];
       visit(it.fresh ? active : active_fresh, it);
       active.push_back(i);
