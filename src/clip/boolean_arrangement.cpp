@@ -112,18 +112,30 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     Vec2 p;
     std::uint32_t i;
   };
-  std::vector<Keyed> order(np);
-  for (std::size_t i = 0; i < np; ++i)
-    order[i] = {pts[i], static_cast<std::uint32_t>(i)};
+  // The end of a chain is usually the start of the next one (consecutive ring edges): such ends
+  // take the vertex of that start and stay out of the sort.
+  std::vector<char> alias(np, 0);
+  for (std::size_t c = 0; c + 1 < nchains; ++c) {
+    const std::uint32_t end = noded_.first[c + 1] - 1;
+    if (pts[end] == pts[noded_.first[c + 1]]) alias[end] = 1;
+  }
+  std::vector<Keyed> order;
+  order.reserve(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    if (!alias[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
+  }
   std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
     return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
   });
   std::vector<std::uint32_t> vid(np);
   vertex_.clear();
-  vertex_.reserve(np / 2 + 1);
-  for (std::size_t i = 0; i < np; ++i) {
+  vertex_.reserve(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
     if (i == 0 || order[i].p != order[i - 1].p) vertex_.push_back(order[i].p);
     vid[order[i].i] = static_cast<std::uint32_t>(vertex_.size() - 1);
+  }
+  for (std::size_t i = np; i-- > 0;) {
+    if (alias[i]) vid[i] = vid[i + 1];  // the next chain's start, assigned (or aliased) already
   }
   origin_.assign(vertex_.size(), kNone);
   for (std::size_t c = nchains; c-- > 0;)

@@ -190,6 +190,7 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
     std::uint32_t item;
   };
   std::vector<Key> keys;
+  std::vector<std::pair<double, double>> spans;  // merged x intervals of the fresh items
   std::vector<std::uint32_t> active, active_fresh;
   std::vector<Split> splits;
   constexpr int kMaxRounds = 256;
@@ -209,9 +210,38 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
                        static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
     }
     const std::size_t hot_before = hot.size();
-    keys.resize(items.size());
-    for (std::uint32_t i = 0; i < items.size(); ++i)
-      keys[i] = {items[i].xmin, i};
+    keys.clear();
+    if (round == 0) {
+      for (std::uint32_t i = 0; i < items.size(); ++i)
+        keys.push_back({items[i].xmin, i});
+    } else {
+      // Old items meet only fresh ones: leave out those whose x interval meets none of theirs.
+      spans.clear();
+      for (const Item& it : items) {
+        if (it.fresh) spans.push_back({it.xmin, it.xmax});
+      }
+      std::sort(spans.begin(), spans.end());
+      std::size_t m = 0;
+      for (const auto& sp : spans) {
+        if (m > 0 && sp.first <= spans[m - 1].second) {
+          spans[m - 1].second = std::max(spans[m - 1].second, sp.second);
+        } else {
+          spans[m++] = sp;
+        }
+      }
+      spans.resize(m);
+      for (std::uint32_t i = 0; i < items.size(); ++i) {
+        const Item& it = items[i];
+        if (!it.fresh) {
+          // The first merged span that does not end before the item starts.
+          const auto at = std::lower_bound(
+              spans.begin(), spans.end(), it.xmin,
+              [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
+          if (at == spans.end() || at->first > it.xmax) continue;
+        }
+        keys.push_back({it.xmin, i});
+      }
+    }
     std::sort(keys.begin(), keys.end(), [](const Key& l, const Key& r) {
       return l.xmin < r.xmin || (l.xmin == r.xmin && l.item < r.item);
     });
