@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -40,6 +41,125 @@ struct Item {
   std::uint32_t piece;  // or the index of a hot pixel
   bool fresh;
   bool pixel;
+};
+
+// An item of the round and its position in the grid's per-item cell lists.
+struct Key {
+  std::uint32_t item;
+  std::uint32_t rank;
+};
+
+// A uniform grid over the items of a round, about one cell per item. Every item is listed in
+// every cell its piece (or pixel square) passes through, conservatively: the rows and, per row,
+// the x range of the piece are widened by a millionth of a cell, far above the rounding of their
+// computation, so two pieces that meet share a listed cell (the one of a common point).
+class CellGrid {
+ public:
+  void build(const std::vector<Item>& items, std::vector<Key>& keys) {
+    x0_ = y0_ = std::numeric_limits<double>::infinity();
+    double x1 = -x0_, y1 = -y0_;
+    for (const Key& k : keys) {
+      const Item& it = items[k.item];
+      x0_ = std::min(x0_, it.xmin);
+      y0_ = std::min(y0_, it.ymin);
+      x1 = std::max(x1, it.xmax);
+      y1 = std::max(y1, it.ymax);
+    }
+    const double w = x1 - x0_, h = y1 - y0_;
+    const double side = std::ceil(std::sqrt(static_cast<double>(keys.size())));
+    nx_ = w > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    ny_ = h > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    cw_ = w > 0 ? w / nx_ : 1.0;
+    ch_ = h > 0 ? h / ny_ : 1.0;
+    ex_ = 1e-6 * cw_;
+    ey_ = 1e-6 * ch_;
+    entries_.clear();
+    item_first_.clear();
+    for (Key& k : keys) {
+      k.rank = static_cast<std::uint32_t>(item_first_.size());
+      item_first_.push_back(static_cast<std::uint32_t>(entries_.size()));
+      const Item& it = items[k.item];
+      add(it, k.item);
+    }
+    item_first_.push_back(static_cast<std::uint32_t>(entries_.size()));
+    // Counting sort of (cell, item) into per-cell lists.
+    const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+    cell_first_.assign(ncell + 1, 0);
+    for (const auto& e : entries_)
+      ++cell_first_[e.first + 1];
+    for (std::size_t c = 0; c < ncell; ++c)
+      cell_first_[c + 1] += cell_first_[c];
+    cell_items_.resize(entries_.size());
+    fill_.assign(cell_first_.begin(), cell_first_.end() - 1);
+    for (const auto& e : entries_)
+      cell_items_[fill_[e.first]++] = e.second;
+  }
+  [[nodiscard]] std::span<const std::uint32_t> items_in(std::uint32_t cell) const {
+    return {cell_items_.data() + cell_first_[cell], cell_first_[cell + 1] - cell_first_[cell]};
+  }
+  // The cells of the item of rank r (its position in the keys).
+  [[nodiscard]] auto cells_of(std::uint32_t r) const {
+    struct Range {
+      const std::pair<std::uint32_t, std::uint32_t>* b;
+      const std::pair<std::uint32_t, std::uint32_t>* e;
+      struct It {
+        const std::pair<std::uint32_t, std::uint32_t>* p;
+        std::uint32_t operator*() const { return p->first; }
+        It& operator++() {
+          ++p;
+          return *this;
+        }
+        bool operator!=(const It& o) const { return p != o.p; }
+      };
+      [[nodiscard]] It begin() const { return {b}; }
+      [[nodiscard]] It end() const { return {e}; }
+    };
+    return Range{entries_.data() + item_first_[r], entries_.data() + item_first_[r + 1]};
+  }
+
+ private:
+  [[nodiscard]] int col(double x) const {
+    return static_cast<int>(std::clamp(std::floor((x - x0_) / cw_), 0.0, double(nx_ - 1)));
+  }
+  [[nodiscard]] int row(double y) const {
+    return static_cast<int>(std::clamp(std::floor((y - y0_) / ch_), 0.0, double(ny_ - 1)));
+  }
+  void add(const Item& it, std::uint32_t item) {
+    const int r0 = row(it.ymin - ey_), r1 = row(it.ymax + ey_);
+    const bool line = !it.pixel && it.ymin < it.ymax && it.xmin < it.xmax && r0 < r1;
+    Vec2 a{}, b{};
+    if (line) {
+      a = points_->at(it.piece);
+      b = points_->at(it.piece + 1);
+    }
+    for (int r = r0; r <= r1; ++r) {
+      double xl = it.xmin, xr = it.xmax;
+      if (line) {
+        // The piece's x range over the row's y range (widened), within its box.
+        const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
+        const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
+        const double slope = (b.x - a.x) / (b.y - a.y);
+        const double xa = a.x + (ylo - a.y) * slope, xb = a.x + (yhi - a.y) * slope;
+        xl = std::max(it.xmin, std::min(xa, xb) - ex_);
+        xr = std::min(it.xmax, std::max(xa, xb) + ex_);
+      }
+      const int c0 = col(xl - ex_), c1 = col(xr + ex_);
+      for (int c = c0; c <= c1; ++c)
+        entries_.emplace_back(static_cast<std::uint32_t>(r) * static_cast<std::uint32_t>(nx_) +
+                                  static_cast<std::uint32_t>(c),
+                              item);
+    }
+  }
+
+ public:
+  const std::vector<Vec2>* points_ = nullptr;
+
+ private:
+  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1, ex_ = 0, ey_ = 0;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries_;  // (cell, item) per item
+  std::vector<std::uint32_t> item_first_;
+  std::vector<std::uint32_t> cell_first_, cell_items_, fill_;
 };
 
 // orient2d, without its exact fallback when c is an endpoint (pieces sharing an endpoint are the
@@ -185,13 +305,11 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
   std::vector<Vec2> hot;           // crossing points: hot pixels for ever after
   std::size_t hot_fresh_from = 0;  // hot[i] for i >= this were made last round
   std::vector<Item> items;
-  struct Key {
-    double xmin;
-    std::uint32_t item;
-  };
   std::vector<Key> keys;
   std::vector<std::pair<double, double>> spans;  // merged x intervals of the fresh items
-  std::vector<std::uint32_t> active, active_fresh;
+  CellGrid grid;
+  std::vector<std::uint32_t> stamp;
+  constexpr std::uint32_t kNoStamp = std::numeric_limits<std::uint32_t>::max();
   std::vector<Split> splits;
   constexpr int kMaxRounds = 256;
   for (int round = 0; round < kMaxRounds; ++round) {
@@ -213,7 +331,7 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
     keys.clear();
     if (round == 0) {
       for (std::uint32_t i = 0; i < items.size(); ++i)
-        keys.push_back({items[i].xmin, i});
+        keys.push_back({i, 0});
     } else {
       // Old items meet only fresh ones: leave out those whose x interval meets none of theirs.
       spans.clear();
@@ -239,41 +357,39 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
               [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
           if (at == spans.end() || at->first > it.xmax) continue;
         }
-        keys.push_back({it.xmin, i});
+        keys.push_back({i, 0});
       }
     }
-    std::sort(keys.begin(), keys.end(), [](const Key& l, const Key& r) {
-      return l.xmin < r.xmin || (l.xmin == r.xmin && l.item < r.item);
-    });
     splits.clear();
-    // Two active lists: a fresh item meets every active item, an old one only the fresh ones, so
-    // later rounds cost little beyond the sort.
-    active.clear();
-    active_fresh.clear();
-    auto visit = [&](std::vector<std::uint32_t>& list, const Item& it) {
-      std::size_t w = 0;
-      for (std::size_t r = 0; r < list.size(); ++r) {
-        const Item& jt = items[list[r]];
-        if (jt.xmax < it.xmin) continue;  // left behind for good
-        list[w++] = list[r];
-        if (it.pixel && jt.pixel) continue;
-        if (jt.ymax < it.ymin || it.ymax < jt.ymin) continue;
-        if (it.pixel) {
-          test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
-        } else if (jt.pixel) {
-          test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
-        } else {
-          test_pair(out.points, jt.piece, it.piece, radius, splits, hot, out.crossings);
-        }
-      }
-      list.resize(w);
-    };
+    grid.points_ = &out.points;
+    grid.build(items, keys);
+    // A fresh item meets every item sharing a cell with it, an old one only the fresh ones; each
+    // pair once (stamps), from its fresh side with the higher index when both are fresh.
+    stamp.assign(items.size(), kNoStamp);
     for (const Key& key : keys) {
       const std::uint32_t i = key.item;
       const Item& it = items[i];
-      visit(it.fresh ? active : active_fresh, it);
-      active.push_back(i);
-      if (it.fresh) active_fresh.push_back(i);
+      if (!it.fresh) continue;
+      for (const std::uint32_t cell : grid.cells_of(key.rank)) {
+        for (const std::uint32_t j : grid.items_in(cell)) {
+          if (j == i || stamp[j] == i) continue;
+          stamp[j] = i;
+          const Item& jt = items[j];
+          if (jt.fresh && j > i) continue;
+          if (it.pixel && jt.pixel) continue;
+          if (jt.xmax < it.xmin || it.xmax < jt.xmin || jt.ymax < it.ymin || it.ymax < jt.ymin)
+            continue;
+          if (it.pixel) {
+            test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
+          } else if (jt.pixel) {
+            test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
+          } else {
+            // The lower piece first: the rounded crossing does not depend on the visiting order.
+            test_pair(out.points, std::min(it.piece, jt.piece), std::max(it.piece, jt.piece),
+                      radius, splits, hot, out.crossings);
+          }
+        }
+      }
     }
     hot_fresh_from = hot_before;
     if (splits.empty()) return out;
