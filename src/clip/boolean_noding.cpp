@@ -231,6 +231,9 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, d
   const Sign o1 = orient(p0, p1, q0);
   const Sign o2 = orient(p0, p1, q1);
   if (o1 == o2 && o1 != Sign::zero) return;
+  // Pieces sharing an endpoint, the other one off the line: that endpoint is all they share.
+  if (o1 == Sign::zero && o2 != Sign::zero && (q0 == p0 || q0 == p1)) return;
+  if (o2 == Sign::zero && o1 != Sign::zero && (q1 == p0 || q1 == p1)) return;
   const Sign o3 = orient(q0, q1, p0);
   const Sign o4 = orient(q0, q1, p1);
   if (o3 == o4 && o3 != Sign::zero) return;
