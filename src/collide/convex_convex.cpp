@@ -1,0 +1,297 @@
+#include "contain/collide/convex_convex.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "contain/collide/tri_tri.h"
+#include "contain/geometry/plane.h"
+#include "contain/predicates/side_of_plane.h"
+
+namespace contain::collide {
+
+// Builds shapes and reads their private parts for the query below.
+struct ConvexAccess {
+  static ConvexShape make() { return ConvexShape(); }
+  static Sphere& sphere(ConvexShape& s) { return s.sphere_; }
+  static std::vector<Vec3>& vertices(ConvexShape& s) { return s.vertices_; }
+  static std::vector<Triangle3>& faces(ConvexShape& s) { return s.faces_; }
+  static inside::ConvexPolyhedron& solid(ConvexShape& s) { return s.solid_; }
+  static const std::vector<Vec3>& vertices(const ConvexShape& s) { return s.vertices_; }
+  static const std::vector<Triangle3>& faces(const ConvexShape& s) { return s.faces_; }
+  static const inside::ConvexPolyhedron& solid(const ConvexShape& s) { return s.solid_; }
+};
+
+namespace {
+
+// ---- GJK ---------------------------------------------------------------------------------
+
+struct Simplex {
+  std::array<Vec3, 4> w{};
+  int n = 0;
+};
+
+// Barycentric coordinates (l[0..k-1]) of the point of the affine hull of p[0..k-1] closest to
+// the origin, by the normal equations G l' = -(p_i - p_0) . p_0 (Cramer's rule). False when the
+// points are (numerically) affinely dependent.
+bool affine_closest(const Vec3* p, int k, double* l) {
+  if (k == 1) {
+    l[0] = 1;
+    return true;
+  }
+  Vec3 e[3];
+  double rhs[3];
+  for (int i = 1; i < k; ++i) {
+    e[i - 1] = p[i] - p[0];
+    rhs[i - 1] = -dot(e[i - 1], p[0]);
+  }
+  const int m = k - 1;
+  double g[3][3];
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      g[i][j] = dot(e[i], e[j]);
+  double sol[3] = {0, 0, 0};
+  if (m == 1) {
+    if (!(g[0][0] > 0)) return false;
+    sol[0] = rhs[0] / g[0][0];
+  } else if (m == 2) {
+    const double det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
+    if (!(det > 1e-24 * g[0][0] * g[1][1])) return false;
+    sol[0] = (rhs[0] * g[1][1] - g[0][1] * rhs[1]) / det;
+    sol[1] = (g[0][0] * rhs[1] - rhs[0] * g[1][0]) / det;
+  } else {
+    const auto det3 = [](const double a[3][3]) {
+      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+             a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double det = det3(g);
+    // A nearly flat tetrahedron is left to its faces: its volume says nothing reliable about
+    // where the origin is.
+    if (!(det > 1e-12 * g[0][0] * g[1][1] * g[2][2])) return false;
+    for (int c = 0; c < 3; ++c) {
+      double a[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          a[i][j] = j == c ? rhs[i] : g[i][j];
+      sol[c] = det3(a) / det;
+    }
+  }
+  double sum = 0;
+  for (int i = 0; i < m; ++i) {
+    l[i + 1] = sol[i];
+    sum += sol[i];
+  }
+  l[0] = 1 - sum;
+  return true;
+}
+
+// The point of conv(simplex) closest to the origin, and the simplex reduced to the smallest
+// face that holds it (Johnson's sub-algorithm, here by trying every face: at most 15).
+Vec3 closest_to_origin(Simplex& s) {
+  double best = INFINITY;
+  Vec3 best_v{};
+  Simplex best_s;
+  for (int mask = 1; mask < (1 << s.n); ++mask) {
+    Vec3 p[4];
+    int k = 0;
+    for (int i = 0; i < s.n; ++i)
+      if ((mask >> i) & 1) p[k++] = s.w[static_cast<std::size_t>(i)];
+    double l[4];
+    if (!affine_closest(p, k, l)) continue;
+    bool interior = true;
+    Vec3 v{0, 0, 0};
+    for (int i = 0; i < k; ++i) {
+      interior = interior && l[i] > 0;
+      v = v + l[i] * p[i];
+    }
+    if (!interior) continue;
+    if (k == 4) v = {0, 0, 0};  // the origin is inside the tetrahedron
+    const double d = dot(v, v);
+    if (d < best) {
+      best = d;
+      best_v = v;
+      best_s.n = k;
+      for (int i = 0; i < k; ++i)
+        best_s.w[static_cast<std::size_t>(i)] = p[i];
+    }
+  }
+  s = best_s;
+  return best_v;
+}
+
+Vec3 support_difference(const ConvexShape& a, const ConvexShape& b, Vec3 d) {
+  return a.support(d) - b.support(-1.0 * d);
+}
+
+// Distances below this fraction of the shapes' size are not trusted to separate them.
+constexpr double kMargin = 1e-12;
+
+struct GjkResult {
+  Vec3 v;              // closest point of the Minkowski difference found (a - b)
+  double lower = 0.0;  // a lower bound of the distance (up to rounding)
+  double size = 0.0;   // the largest |w| seen: the scale of rounding errors
+  bool origin_inside = false;
+};
+
+// GJK's distance iteration, run to convergence (or no progress, or 64 iterations).
+GjkResult gjk(const ConvexShape& a, const ConvexShape& b) {
+  GjkResult r;
+  Vec3 v = support_difference(a, b, {1, 0, 0});
+  Simplex s;
+  s.w[0] = v;
+  s.n = 1;
+  r.size = length(v);
+  for (int iter = 0; iter < 64; ++iter) {
+    const double vv = dot(v, v);
+    if (vv == 0) {
+      r.origin_inside = true;
+      break;
+    }
+    const Vec3 w = support_difference(a, b, -1.0 * v);
+    r.size = std::max(r.size, length(w));
+    const double vw = dot(v, w);
+    r.lower = std::max(r.lower, vw / std::sqrt(vv));
+    if (vv - vw <= 1e-12 * vv) break;  // converged: the upper and lower bounds agree
+    bool repeated = false;
+    for (int i = 0; i < s.n; ++i)
+      repeated = repeated || s.w[static_cast<std::size_t>(i)] == w;
+    if (repeated) break;
+    Simplex next = s;
+    next.w[static_cast<std::size_t>(next.n++)] = w;
+    const Vec3 next_v = closest_to_origin(next);
+    if (dot(next_v, next_v) <= 1e-24 * r.size * r.size) {
+      r.origin_inside = true;
+      v = {0, 0, 0};
+      break;
+    }
+    if (dot(next_v, next_v) >= vv) break;  // no progress: rounding has taken over
+    v = next_v;
+    s = next;
+  }
+  r.v = v;
+  return r;
+}
+
+// ---- exact stage for polytopes -------------------------------------------------------------
+
+// A plane with normal n strictly between the two vertex sets, checked exactly: all of a's
+// vertices strictly on its positive side, all of b's strictly on its negative side.
+bool certified_separation(const ConvexShape& a, const ConvexShape& b, Vec3 n) {
+  const auto& va = ConvexAccess::vertices(a);
+  const auto& vb = ConvexAccess::vertices(b);
+  double lo_a = INFINITY, hi_b = -INFINITY;
+  for (const Vec3& p : va)
+    lo_a = std::min(lo_a, dot(n, p));
+  for (const Vec3& p : vb)
+    hi_b = std::max(hi_b, dot(n, p));
+  const double t = 0.5 * lo_a + 0.5 * hi_b;
+  if (!std::isfinite(t)) return false;
+  const Plane plane{n.x, n.y, n.z, -t};
+  for (const Vec3& p : va)
+    if (predicates::side_of_plane(plane, p) != Sign::positive) return false;
+  for (const Vec3& p : vb)
+    if (predicates::side_of_plane(plane, p) != Sign::negative) return false;
+  return true;
+}
+
+// Closed convex solids meet iff their surfaces meet or one holds a vertex of the other (if the
+// surfaces are apart, each surface is wholly inside or wholly outside the other solid).
+bool polytopes_meet(const ConvexShape& a, const ConvexShape& b) {
+  for (const Triangle3& fa : ConvexAccess::faces(a))
+    for (const Triangle3& fb : ConvexAccess::faces(b))
+      if (tri_tri_intersect(fa, fb)) return true;
+  return inside::point_in_convex(ConvexAccess::solid(b), ConvexAccess::vertices(a)[0]) !=
+             Location::outside ||
+         inside::point_in_convex(ConvexAccess::solid(a), ConvexAccess::vertices(b)[0]) !=
+             Location::outside;
+}
+
+}  // namespace
+
+ConvexShape ConvexShape::sphere(const Sphere& sphere) {
+  ConvexShape s;
+  s.sphere_ = sphere;
+  return s;
+}
+
+ConvexShape ConvexShape::box(const Box3& box) {
+  ConvexShape s;
+  Vec3 c[8];
+  for (int i = 0; i < 8; ++i) {
+    c[i] = {(i & 1) != 0 ? box.max.x : box.min.x, (i & 2) != 0 ? box.max.y : box.min.y,
+            (i & 4) != 0 ? box.max.z : box.min.z};
+  }
+  s.vertices_.assign(c, c + 8);
+  // Two triangles per side (corner indices by bits x = 1, y = 2, z = 4), outward.
+  static constexpr int kQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : kQuads) {
+    s.faces_.push_back({c[q[0]], c[q[1]], c[q[2]]});
+    s.faces_.push_back({c[q[0]], c[q[2]], c[q[3]]});
+  }
+  // Inward half-spaces x - min.x >= 0, max.x - x >= 0, ...: exact coefficients.
+  auto solid = inside::ConvexPolyhedron::from_planes(
+      {Plane{1, 0, 0, -box.min.x}, Plane{-1, 0, 0, box.max.x}, Plane{0, 1, 0, -box.min.y},
+       Plane{0, -1, 0, box.max.y}, Plane{0, 0, 1, -box.min.z}, Plane{0, 0, -1, box.max.z}});
+  if (solid) s.solid_ = std::move(*solid);
+  return s;
+}
+
+Result<ConvexShape> ConvexShape::polyhedron(const inside::ConvexPolyhedron& polyhedron) {
+  if (polyhedron.faces().empty()) {
+    return Error{ErrorKind::unsupported,
+                 "a convex polyhedron given by planes has no vertices: build it from a mesh"};
+  }
+  ConvexShape s;
+  s.faces_ = polyhedron.faces();
+  for (const Triangle3& t : s.faces_) {
+    s.vertices_.push_back(t.a);
+    s.vertices_.push_back(t.b);
+    s.vertices_.push_back(t.c);
+  }
+  const auto less = [](Vec3 p, Vec3 q) {
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
+  };
+  std::sort(s.vertices_.begin(), s.vertices_.end(), less);
+  s.vertices_.erase(std::unique(s.vertices_.begin(), s.vertices_.end()), s.vertices_.end());
+  s.solid_ = polyhedron;
+  return s;
+}
+
+Vec3 ConvexShape::support(Vec3 direction) const {
+  if (vertices_.empty()) {
+    const double len = length(direction);
+    if (!(len > 0)) return sphere_.center;
+    return sphere_.center + (sphere_.radius / len) * direction;
+  }
+  Vec3 best = vertices_[0];
+  double best_dot = dot(direction, best);
+  for (const Vec3& p : vertices_) {
+    const double d = dot(direction, p);
+    if (d > best_dot) {
+      best_dot = d;
+      best = p;
+    }
+  }
+  return best;
+}
+
+ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b) {
+  const bool polytopes = a.is_polytope() && b.is_polytope();
+  const GjkResult r = gjk(a, b);
+  const double distance = r.origin_inside ? 0.0 : length(r.v);
+  if (polytopes) {
+    // v = a - b at its closest: a lies on the side v points to.
+    if (!r.origin_inside && r.lower > 0 && certified_separation(a, b, r.v)) {
+      return {false, distance, true};
+    }
+    const bool meet = polytopes_meet(a, b);
+    return {meet, meet ? 0.0 : distance, true};
+  }
+  const bool separated = !r.origin_inside && r.lower > kMargin * r.size;
+  return {!separated, separated ? distance : 0.0, false};
+}
+
+}  // namespace contain::collide
