@@ -26,6 +26,7 @@
 #include "contain/collide/contact.h"
 #include "contain/collide/convex_convex.h"
 #include "contain/collide/mesh_mesh.h"
+#include "contain/collide/pair_search.h"
 #include "contain/collide/polyhedra_reference.h"
 #include "contain/collide/region_region.h"
 #include "contain/collide/tri_tri.h"
