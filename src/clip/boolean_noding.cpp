@@ -49,7 +49,7 @@ struct Key {
   std::uint32_t rank;
 };
 
-// A uniform grid over the items of a round, about one cell per item. Every item is listed in
+// A uniform grid over the items of a round, about four cells per item. Every item is listed in
 // every cell its piece (or pixel square) passes through, conservatively: the rows and, per row,
 // the x range of the piece are widened by a millionth of a cell, far above the rounding of their
 // computation, so two pieces that meet share a listed cell (the one of a common point).
@@ -66,7 +66,7 @@ class CellGrid {
       y1 = std::max(y1, it.ymax);
     }
     const double w = x1 - x0_, h = y1 - y0_;
-    const double side = std::ceil(std::sqrt(static_cast<double>(keys.size())));
+    const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(keys.size())));
     nx_ = w > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
     ny_ = h > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
     cw_ = w > 0 ? w / nx_ : 1.0;
