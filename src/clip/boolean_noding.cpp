@@ -1,9 +1,11 @@
 // Noding by "split until no new crossing".
 //
-// Round r takes the current pieces (consecutive points of every chain) and tests, by a sweep over
-// x intervals, every pair of pieces whose boxes overlap and of which at least one is new (made in
-// round r - 1, or an input segment in round 1); a pair of old pieces was tested when the younger
-// of the two was new and gave nothing then. A test is decided by the four exact orient2d signs:
+// Round r takes the current pieces (consecutive points of every chain) and tests every pair of
+// pieces whose boxes overlap, that share a cell of a uniform grid (each piece listed in the cells
+// it passes through, conservatively), and of which at least one is new (made in round r - 1, or
+// an input segment in round 1); a pair of old pieces was tested when the younger of the two was
+// new and gave nothing then, and later rounds grid only the old pieces whose x interval meets a
+// new one's. A test is decided by the four exact orient2d signs:
 // - disjoint: nothing;
 // - collinear overlap: each piece is split at the other's endpoints that lie strictly inside it;
 // - an endpoint of one on the other (touching, T junction): the other is split there;

@@ -29,8 +29,9 @@ struct PolygonBooleanOptions {
 
 /// Counters of one run, for benchmarks and `--json`.
 struct PolygonBooleanStats {
-  std::int64_t input_edges = 0;    ///< non-degenerate input edges of A and B
-  std::int64_t crossings = 0;      ///< proper crossings whose point was computed and rounded
+  std::int64_t input_edges =
+      0;                       ///< edges noded: non-degenerate ones of A and B (far ones replaced)
+  std::int64_t crossings = 0;  ///< proper crossings whose point was computed and rounded
   std::int64_t noding_rounds = 0;  ///< passes of the split-until-no-crossing loop
   std::int64_t graph_edges = 0;    ///< edges of the noded arrangement
   bool converged = true;           ///< false if the noding hit its round cap (never seen)
@@ -45,8 +46,11 @@ struct PolygonBooleanStats {
 ///   any rings: self-intersecting, overlapping, touching, repeated points, zero-area rings, any
 ///   direction. Under `Fill::even_odd` shells and holes may be written in either direction.
 ///
-/// Method: an exact-decision arrangement. All input edges are noded together (a sweep over x
-/// intervals; every crossing, touching and overlap decided by the exact `orient2d`); a proper
+/// Method: an exact-decision arrangement. All input edges are noded together (candidate pairs
+/// from a uniform grid; every crossing, touching and overlap decided by the exact `orient2d`;
+/// for an intersection or difference, the edges of the larger operand far from the other's box
+/// are first replaced by a few frame edges with the same winding numbers there, rule
+/// clip-far-edges in docs/robustness.md); a proper
 /// crossing point is computed in extended precision and rounded to the nearest doubles, and the
 /// pieces are checked again until no two pieces meet except at shared endpoints ("split until no
 /// new crossing", rule clip-noding in docs/robustness.md). Faces of the noded graph get their
@@ -73,9 +77,12 @@ struct PolygonBooleanStats {
 /// of zero area is empty. Two regions that touch at a point or along an edge have an empty
 /// intersection (the boolean is regularised, as in OGC).
 ///
-/// Complexity: O((n + k) log n) for n input edges and k crossings in typical input (sweep over
-/// x intervals, so O(n^2) when all edges overlap in x), plus O(n) per connected component of the
-/// arrangement for its winding ray.
+/// Complexity: O((n + k) log n) for n input edges and k crossings in typical input (grid cells
+/// shared by pieces: O(n^2) pair tests at worst, when all edges crowd into a few cells), plus
+/// O(n) per connected component of the arrangement for its winding ray. An intersection of a
+/// small region with a large one costs O(n) comparisons plus the arrangement of the large one's
+/// edges near the small one; boxes whose intersection has no interior give the empty result in
+/// O(n).
 [[nodiscard]] MultiPolygon polygon_boolean(std::span<const Ring> a, std::span<const Ring> b,
                                            const PolygonBooleanOptions& options = {},
                                            PolygonBooleanStats* stats = nullptr);
