@@ -29,9 +29,9 @@ struct PolygonBooleanOptions {
 
 /// Counters of one run, for benchmarks and `--json`.
 struct PolygonBooleanStats {
-  std::int64_t input_edges =
-      0;                       ///< edges noded: non-degenerate ones of A and B (far ones replaced)
-  std::int64_t crossings = 0;  ///< proper crossings whose point was computed and rounded
+  /// Edges noded: the non-degenerate ones of A and B, far ones replaced (rule clip-far-edges).
+  std::int64_t input_edges = 0;
+  std::int64_t crossings = 0;      ///< proper crossings whose point was computed and rounded
   std::int64_t noding_rounds = 0;  ///< passes of the split-until-no-crossing loop
   std::int64_t graph_edges = 0;    ///< edges of the noded arrangement
   bool converged = true;           ///< false if the noding hit its round cap (never seen)
