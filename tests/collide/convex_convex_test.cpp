@@ -78,7 +78,7 @@ TEST(ConvexConvex, BoxesMatchTheExactOverlapTestIncludingTouching) {
 TEST(ConvexConvex, TetrahedraMatchThePolyhedronReferenceOnRandomAndTouchingPairs) {
   std::mt19937_64 rng(0xc0c1);
   int hits = 0;
-  for (int i = 0; i < 800; ++i) {
+  for (int i = 0; i < 250; ++i) {
     const Mesh a = tetrahedron(rng, 0, 4, {0, 0, 0});
     const Mesh b = tetrahedron(rng, 0, 4, {double(i % 3), 0, 0});
     const bool want = polyhedra_reference(a, b).contact.intersect;
@@ -87,13 +87,13 @@ TEST(ConvexConvex, TetrahedraMatchThePolyhedronReferenceOnRandomAndTouchingPairs
     EXPECT_TRUE(got.exact);
     hits += want;
   }
-  EXPECT_GT(hits, 50);
-  EXPECT_LT(hits, 750);
+  EXPECT_GT(hits, 20);
+  EXPECT_LT(hits, 230);
 }
 
 TEST(ConvexConvex, TetrahedronAgainstBoxMatchesTheReference) {
   std::mt19937_64 rng(0xc0c2);
-  for (int i = 0; i < 500; ++i) {
+  for (int i = 0; i < 150; ++i) {
     const Mesh a = tetrahedron(rng, 0, 5, {0, 0, 0});
     const Box3 box = random_box(rng, 1, 4);
     const bool want = polyhedra_reference(a, box_mesh(box)).contact.intersect;
