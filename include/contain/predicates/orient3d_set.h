@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "contain/geometry/vec.h"
 #include "contain/predicates/orient3d.h"
@@ -38,46 +39,31 @@ class Orient3dSet {
   };
 
   /// The set; any finite doubles.
-  explicit Orient3dSet(const std::array<Vec3, N>& points) : p_(points) {
-    Vec3 lo = points[0], hi = points[0];
-    for (std::size_t i = 1; i < N; ++i) {
-      lo = {std::min(lo.x, points[i].x), std::min(lo.y, points[i].y), std::min(lo.z, points[i].z)};
-      hi = {std::max(hi.x, points[i].x), std::max(hi.y, points[i].y), std::max(hi.z, points[i].z)};
-    }
-    // Every computed difference of two coordinates is at most the computed extent in absolute
-    // value (rounding is monotone), so every permanent is below 6 Dx Dy Dz. Extents of 2^340
-    // or more could overflow a product (an infinite determinant would pass a finite bound):
-    // then the bound is infinite and the exact stages answer.
-    const double dx = hi.x - lo.x, dy = hi.y - lo.y, dz = hi.z - lo.z;
-    constexpr double kBound = 50.0 * 0x1p-53;
-    errbound_ = std::max(dx, std::max(dy, dz)) < 0x1p340
-                    ? kBound * (dx * dy * dz) + DBL_MIN * (1.0 + dx + dy + dz)
-                    : INFINITY;
-  }
+  explicit Orient3dSet(const std::array<Vec3, N>& points)
+      : Orient3dSet(points, std::make_index_sequence<N>()) {}
 
   /// The point with index i < N.
-  [[nodiscard]] const Vec3& point(std::size_t i) const { return p_[i]; }
+  [[nodiscard]] Vec3 point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
 
   /// The plane through points a, b, c (indices < N). O(1).
   [[nodiscard]] Plane plane(std::size_t a, std::size_t b, std::size_t c) const {
     assert(a < N && b < N && c < N);
-    const Vec3 pa = p_[a], pb = p_[b], pc = p_[c];
-    const double bax = pb.x - pa.x, bay = pb.y - pa.y, baz = pb.z - pa.z;
-    const double cax = pc.x - pa.x, cay = pc.y - pa.y, caz = pc.z - pa.z;
+    const double bax = x_[b] - x_[a], bay = y_[b] - y_[a], baz = z_[b] - z_[a];
+    const double cax = x_[c] - x_[a], cay = y_[c] - y_[a], caz = z_[c] - z_[a];
     return {a, b, c, bay * caz - baz * cay, baz * cax - bax * caz, bax * cay - bay * cax};
   }
 
   /// Exactly orient3d(point(plane.a), point(plane.b), point(plane.c), point(d)), d < N. O(1).
   [[nodiscard]] Sign sign(const Plane& plane, std::size_t d) const {
     assert(d < N);
-    const Vec3 pa = p_[plane.a], pd = p_[d];
+    const std::size_t a = plane.a;
     const double det =
-        (plane.nx * (pd.x - pa.x) + plane.ny * (pd.y - pa.y)) + plane.nz * (pd.z - pa.z);
+        (plane.nx * (x_[d] - x_[a]) + plane.ny * (y_[d] - y_[a])) + plane.nz * (z_[d] - z_[a]);
     // Formed without branching on the sign (random input makes such branches unpredictable);
     // only the rare undecided case branches.
     const bool positive = det > errbound_, negative = -det > errbound_;
     if (positive == negative) [[unlikely]] {  // both false: the filter cannot tell
-      return detail::orient3d_exact(pa, p_[plane.b], p_[plane.c], pd);
+      return detail::orient3d_exact(point(a), point(plane.b), point(plane.c), point(d));
     }
     return static_cast<Sign>(static_cast<int>(positive) - static_cast<int>(negative));
   }
@@ -88,7 +74,27 @@ class Orient3dSet {
   }
 
  private:
-  std::array<Vec3, N> p_;
+  // Unrolled by the fold expressions (a loop over N stays a loop at -O2 and costs more than
+  // the queries it serves).
+  template <std::size_t... I>
+  Orient3dSet(const std::array<Vec3, N>& points, std::index_sequence<I...>)
+      : x_{points[I].x...}, y_{points[I].y...}, z_{points[I].z...} {
+    double lo_x = x_[0], hi_x = x_[0], lo_y = y_[0], hi_y = y_[0], lo_z = z_[0], hi_z = z_[0];
+    ((lo_x = std::min(lo_x, x_[I]), hi_x = std::max(hi_x, x_[I]), lo_y = std::min(lo_y, y_[I]),
+      hi_y = std::max(hi_y, y_[I]), lo_z = std::min(lo_z, z_[I]), hi_z = std::max(hi_z, z_[I])),
+     ...);
+    // Every computed difference of two coordinates is at most the computed extent in absolute
+    // value (rounding is monotone), so every permanent is below 6 Dx Dy Dz. Extents of 2^340
+    // or more could overflow a product (an infinite determinant would pass a finite bound):
+    // then the bound is infinite and the exact stages answer.
+    const double dx = hi_x - lo_x, dy = hi_y - lo_y, dz = hi_z - lo_z;
+    constexpr double kBound = 50.0 * 0x1p-53;
+    errbound_ = std::max(dx, std::max(dy, dz)) < 0x1p340
+                    ? kBound * (dx * dy * dz) + DBL_MIN * (1.0 + dx + dy + dz)
+                    : INFINITY;
+  }
+  // Coordinates by axis: plain loads for the queries.
+  double x_[N], y_[N], z_[N];
   double errbound_;
 };
 
