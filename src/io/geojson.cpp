@@ -17,22 +17,33 @@ using detail::make_error;
 // nlohmann-json's DOM keeps no positions, so the text goes through its SAX parser into this small
 // tree, each value remembering the byte offset where the parser stood when it was read (the end
 // of its first token): enough to name the line of every semantic error.
+struct JsonMember;
+
 struct JsonValue {
   enum class Kind : std::uint8_t { null, boolean, number, string, array, object };
   Kind kind = Kind::null;
   double number = 0.0;
   std::string text;
   std::vector<JsonValue> items;
-  std::vector<std::pair<std::string, JsonValue>> members;
+  std::vector<JsonMember> members;
   std::size_t offset = 0;
 
-  [[nodiscard]] const JsonValue* member(std::string_view name) const {
-    for (const auto& [key, value] : members) {
-      if (key == name) return &value;
-    }
-    return nullptr;
-  }
+  [[nodiscard]] const JsonValue* member(std::string_view name) const;
 };
+
+// A named struct rather than std::pair<std::string, JsonValue>, and member() out of the
+// class: clang with libstdc++ rejects the pair of a still incomplete JsonValue.
+struct JsonMember {
+  std::string key;
+  JsonValue value;
+};
+
+const JsonValue* JsonValue::member(std::string_view name) const {
+  for (const auto& [key, value] : members) {
+    if (key == name) return &value;
+  }
+  return nullptr;
+}
 
 // A char iterator that publishes how far nlohmann's lexer has read.
 class TrackingIterator {
@@ -166,7 +177,7 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     } else if (stack_.back().value.kind == JsonValue::Kind::array) {
       stack_.back().value.items.push_back(std::move(v));
     } else {
-      stack_.back().value.members.emplace_back(std::move(stack_.back().key), std::move(v));
+      stack_.back().value.members.push_back({std::move(stack_.back().key), std::move(v)});
     }
     return true;
   }
@@ -180,7 +191,7 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     if (stack_.back().value.kind == JsonValue::Kind::array) {
       stack_.back().value.items.push_back(std::move(v));
     } else {
-      stack_.back().value.members.emplace_back(std::move(stack_.back().key), std::move(v));
+      stack_.back().value.members.push_back({std::move(stack_.back().key), std::move(v)});
     }
     return true;
   }

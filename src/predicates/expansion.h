@@ -407,7 +407,9 @@ template <int Degree>
 /// stall costs more than the check.
 template <int Degree, class... Doubles>
 [[nodiscard]] inline bool in_expansion_range(double x, Doubles... rest) {
-  return (in_expansion_range<Degree>(x) & ... & in_expansion_range<Degree>(rest));
+  // int operands: a branch-free & (clang's -Wbitwise-instead-of-logical flags & on bool calls).
+  return (static_cast<int>(in_expansion_range<Degree>(x)) & ... &
+          static_cast<int>(in_expansion_range<Degree>(rest))) != 0;
 }
 
 /// For a predicate whose polynomial is homogeneous in all its inputs (orient2d, orient3d,
