@@ -240,5 +240,17 @@ TEST(PlyReader, RejectsBinaryIndicesOutOfRangeAndNaN) {
   EXPECT_EQ(n.error().kind, ErrorKind::invalid_value);
 }
 
+// Regression (bad-input table, "files larger than memory"): an element without properties
+// whose header claims 10^12 rows made the reader count through them all (a hang).
+TEST(PlyReader, ElementWithoutPropertiesAndAHugeCountIsSkippedAtOnce) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement junk 1000000000000\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  auto r = ply(text);
+  ASSERT_TRUE(r.ok()) << r.error().what();
+  EXPECT_EQ(r->mesh.triangles.size(), 1u);
+}
+
 }  // namespace
 }  // namespace contain::io
