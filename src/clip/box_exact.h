@@ -82,6 +82,16 @@ class BoxLine {
       return p.value == 0.0 ? a_ : b_;
     }
     const int k = p.axis;
+    // A face through an endpoint is t = 0 or 1 exactly: return the endpoint bit for bit (the
+    // formula below can lose a far-away coordinate's small part; found by fuzz_clip_segments).
+    if (p.value == coord(a_, k)) {
+      t = 0.0;
+      return a_;
+    }
+    if (p.value == coord(b_, k)) {
+      t = 1.0;
+      return b_;
+    }
     t = (p.value - coord(a_, k)) / (coord(b_, k) - coord(a_, k));
     t = std::clamp(t, 0.0, 1.0);
     V q = a_;

@@ -134,5 +134,21 @@ TEST(BoxSegmentClip, EmptyBoxKeepsNothing) {
   EXPECT_FALSE(clip::liang_barsky(Segment3{{0, 0, 0}, {1, 1, 1}}, empty).kept);
 }
 
+// Regression (found by fuzz/fuzz_clip_segments): the segment touches the box only at its end b,
+// which lies on the face x = 1; the face crossing was computed as a + 1 * (b - a), whose y lost
+// b's -2 against a.y ~ -1e281, so the touching point came back as (1, 0) instead of b.
+TEST(BoxSegmentClip, TouchAtAnInsideEndpointReturnsThatEndpointBitForBit) {
+  const Segment2 s{{0x1.3cdcp+16, -0x1.ba4a02289a725p+934}, {1, -2}};
+  const Box2 box{{-0x1.ed25eefffffdcp-739, -0x1.ba47efa6fac29p+934}, {1, 0x1.0444p+16}};
+  for (const clip::ClippedSegment2 r :
+       {clip::cohen_sutherland(s, box), clip::liang_barsky(s, box)}) {
+    ASSERT_TRUE(r.kept);
+    EXPECT_EQ(r.t0, 1.0);
+    EXPECT_EQ(r.t1, 1.0);
+    EXPECT_EQ(r.segment.a, s.b);
+    EXPECT_EQ(r.segment.b, s.b);
+  }
+}
+
 }  // namespace
 }  // namespace contain::test
