@@ -64,17 +64,20 @@ std::pair<int, int> cell_range(const std::vector<double>& lines, int n, double l
 std::pair<double, double> x_range_in_rows(const Edge& e, double y0, double y1) {
   const double minx = std::min(e.a.x, e.b.x), maxx = std::max(e.a.x, e.b.x);
   if (e.a.y == e.b.y) return {minx, maxx};
+  // In half units, as the grid size: differences of coordinates near DBL_MAX overflowed to
+  // infinity, the range fell back to the edge's whole x-extent in every row, and a few such
+  // edges filled every cell (found by fuzz_point_in_polygon: 58 s and 650 MB for 12 edges).
   auto x_at = [&](double y) {
     if (y == e.a.y) return e.a.x;
     if (y == e.b.y) return e.b.x;
-    const double t = (y - e.a.y) / (e.b.y - e.a.y);
-    return e.a.x + t * (e.b.x - e.a.x);
+    const double t = (0.5 * y - 0.5 * e.a.y) / (0.5 * e.b.y - 0.5 * e.a.y);
+    return 2.0 * (0.5 * e.a.x + t * (0.5 * e.b.x - 0.5 * e.a.x));
   };
   double lo = x_at(y0), hi = x_at(y1);
   if (lo > hi) std::swap(lo, hi);
   // A few ulps of |a.x| + |b.x| bound the error of x_at (one rounding per operation); 2^-40 is
-  // generous, and the denormal term covers underflow.
-  const double margin = std::ldexp(std::abs(e.a.x) + std::abs(e.b.x), -40) +
+  // generous, and the denormal term covers underflow (halving included).
+  const double margin = std::ldexp(0.5 * std::abs(e.a.x) + 0.5 * std::abs(e.b.x), -39) +
                         64 * std::numeric_limits<double>::denorm_min();
   lo -= margin;
   hi += margin;
@@ -133,6 +136,26 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
     nx = std::round(target);
   } else if (half_h > 0.0) {
     ny = std::round(target);
+  }
+  // Long edges crossing the whole region (stars with long spikes) touch about length / cell
+  // size cells each: on a grid of max_cells they made 27 million edge-cell pairs (2 GB) for a
+  // 64,000-edge star (found by the memory growth test). Coarsen the grid until the estimated
+  // pairs, n + sum |dx| / cell width + sum |dy| / cell height, fit kPairsPerEdge per edge.
+  {
+    constexpr double kPairsPerEdge = 32.0;
+    // Edge extents relative to the box (each at most 1: no overflow near DBL_MAX).
+    double rel_x = 0.0, rel_y = 0.0;
+    for (const Edge& e : edges) {
+      if (half_w > 0.0) rel_x += std::abs(0.5 * e.b.x - 0.5 * e.a.x) / half_w;
+      if (half_h > 0.0) rel_y += std::abs(0.5 * e.b.y - 0.5 * e.a.y) / half_h;
+    }
+    const double n = static_cast<double>(edges.size());
+    auto pairs = [&](double cx, double cy) { return n + rel_x * cx + rel_y * cy; };
+    const double budget = std::max(kPairsPerEdge * n, static_cast<double>(options.min_cells));
+    while (nx * ny > 1.0 && pairs(nx, ny) > budget) {
+      nx = std::ceil(nx / 2);
+      ny = std::ceil(ny / 2);
+    }
   }
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);

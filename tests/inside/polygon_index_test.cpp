@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -205,6 +206,31 @@ TEST(PolygonIndex, GridStaysSmallForSmallPolygonsAndBoundedForLargeOnes) {
                            {.max_cells = 1 << 16});
   EXPECT_LE(large.stats().cells, 2u * (1u << 16));
   EXPECT_EQ(large.stats().edges, 20000u);
+}
+
+// Regression (found by fuzz/fuzz_point_in_polygon): with coordinates near DBL_MAX, b.x - a.x
+// overflowed, each edge's x-range fell back to its whole extent in every row of cells, and the
+// edge-cell pairs grew as cells x edges instead of (columns + rows) x edges.
+TEST(PolygonIndex, EdgesNearDblMaxTouchOnlyTheCellsAlongThem) {
+  // The same star at 1.7e308 and scaled down by 2^-8 (exactly): the same grid, the same cells.
+  auto star = [](double scale) {
+    Ring ring;
+    const int n = 64;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * 3.141592653589793 * i / n;
+      const double r = (i % 2 == 0 ? 1.0 : 0.4) * 1.7e308;
+      ring.push_back({r * std::cos(angle) * scale, r * std::sin(angle) * scale});
+    }
+    return std::vector<Ring>{ring};
+  };
+  const std::vector<Ring> huge = star(1.0), smaller = star(1.0 / 256);
+  const PolygonIndex index(huge, {.max_cells = 1 << 12});
+  const PolygonIndex reference(smaller, {.max_cells = 1 << 12});
+  ASSERT_EQ(index.grid_x().size(), reference.grid_x().size());
+  EXPECT_EQ(index.stats().edge_refs, reference.stats().edge_refs);
+  for (const Vec2 p : {Vec2{0, 0}, Vec2{1.6e308, 0}, Vec2{1.7e308, 0}, Vec2{-1e308, 1e308}}) {
+    EXPECT_EQ(index.locate(p), point_in_polygon(huge, p)) << p.x << " " << p.y;
+  }
 }
 
 }  // namespace

@@ -25,7 +25,10 @@ struct PolygonIndexOptions {
   double cells_per_edge = 4.0;
   /// ... at least this many cells (small polygons get a fine grid for free) ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: 4 bytes per cell plus 32 per edge-cell pair).
+  /// ... and at most this many (memory: 4 bytes per cell plus 32 per edge-cell pair). The
+  /// grid is then coarsened (halved per axis) until the estimated edge-cell pairs are at most
+  /// max(32 per edge, min_cells), so memory stays linear in the edges even when long edges
+  /// cross the whole region (a star with long spikes); queries there read more edges per cell.
   std::size_t max_cells = std::size_t{1} << 20;
 };
 
