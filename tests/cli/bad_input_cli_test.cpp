@@ -27,9 +27,6 @@ std::string binary_stl(std::uint32_t claimed, std::size_t records) {
   return bytes;
 }
 
-const char* const kTetrahedronObj =
-    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
-
 TEST(BadInputCli, MalformedNumbersAreExitThreeNamingFileAndLine) {
   TempDir dir;
   const std::string square = dir.write("square.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4))");
