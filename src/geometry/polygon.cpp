@@ -31,14 +31,16 @@ bool MultiPolygon::empty() const {
 
 std::vector<Ring> MultiPolygon::all_rings() const {
   std::vector<Ring> out;
-  for (const Polygon& p : polygons) out.insert(out.end(), p.rings.begin(), p.rings.end());
+  for (const Polygon& p : polygons)
+    out.insert(out.end(), p.rings.begin(), p.rings.end());
   return out;
 }
 
 Box2 bounding_box(std::span<const Ring> rings) {
   Box2 box;
   for (const Ring& ring : rings) {
-    for (const Vec2& p : ring) box.expand(p);
+    for (const Vec2& p : ring)
+      box.expand(p);
   }
   return box;
 }
@@ -46,7 +48,8 @@ Box2 bounding_box(std::span<const Ring> rings) {
 double signed_area2(const Ring& ring) {
   double sum = 0.0;
   const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) sum += cross(ring[i], ring[(i + 1) % n]);
+  for (std::size_t i = 0; i < n; ++i)
+    sum += cross(ring[i], ring[(i + 1) % n]);
   return sum;
 }
 

@@ -18,7 +18,8 @@ Result<Transform> Transform::from_row_major(std::span<const double> numbers) {
   }
   Transform out;
   for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) out.r[row][col] = numbers[row * 4 + col];
+    for (int col = 0; col < 3; ++col)
+      out.r[row][col] = numbers[row * 4 + col];
   }
   out.t = {numbers[3], numbers[7], numbers[11]};
   return out;

@@ -2,8 +2,12 @@
 
 namespace contain::test {
 
-QVec2 exact(Vec2 p) { return {mpq_class(p.x), mpq_class(p.y)}; }
-QVec3 exact(Vec3 p) { return {mpq_class(p.x), mpq_class(p.y), mpq_class(p.z)}; }
+QVec2 exact(Vec2 p) {
+  return {mpq_class(p.x), mpq_class(p.y)};
+}
+QVec3 exact(Vec3 p) {
+  return {mpq_class(p.x), mpq_class(p.y), mpq_class(p.z)};
+}
 
 Sign sign_of(const mpq_class& v) {
   const int s = sgn(v);
@@ -12,11 +16,15 @@ Sign sign_of(const mpq_class& v) {
 
 namespace {
 
-QVec3 sub(const QVec3& a, const QVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+QVec3 sub(const QVec3& a, const QVec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 QVec3 cross(const QVec3& a, const QVec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-mpq_class dot(const QVec3& a, const QVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+mpq_class dot(const QVec3& a, const QVec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 }  // namespace
 

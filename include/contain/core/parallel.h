@@ -18,8 +18,8 @@ struct BatchOptions {
 /// at least `min_chunk`), never fewer than one.
 [[nodiscard]] inline int thread_count(const BatchOptions& options, std::size_t count,
                                       std::size_t min_chunk = 4096) {
-  int wanted = options.threads > 0 ? options.threads
-                                   : static_cast<int>(std::thread::hardware_concurrency());
+  int wanted =
+      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   wanted = std::max(wanted, 1);
   const std::size_t by_size = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_chunk));
   return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(wanted), by_size));
@@ -37,15 +37,16 @@ void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
   }
   std::vector<std::thread> workers;
   workers.reserve(static_cast<std::size_t>(threads) - 1);
-  const std::size_t chunk = (count + static_cast<std::size_t>(threads) - 1) /
-                            static_cast<std::size_t>(threads);
+  const std::size_t chunk =
+      (count + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
   for (int t = 1; t < threads; ++t) {
     const std::size_t begin = std::min(count, chunk * static_cast<std::size_t>(t));
     const std::size_t end = std::min(count, begin + chunk);
     workers.emplace_back([&body, begin, end] { body(begin, end); });
   }
   body(std::size_t{0}, std::min(count, chunk));
-  for (std::thread& w : workers) w.join();
+  for (std::thread& w : workers)
+    w.join();
 }
 
 }  // namespace contain

@@ -22,31 +22,67 @@ struct Vec3 {
   friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
 };
 
-[[nodiscard]] constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-[[nodiscard]] constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-[[nodiscard]] constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
-[[nodiscard]] constexpr Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
-[[nodiscard]] constexpr Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
-[[nodiscard]] constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+[[nodiscard]] constexpr Vec2 operator+(Vec2 a, Vec2 b) {
+  return {a.x + b.x, a.y + b.y};
+}
+[[nodiscard]] constexpr Vec2 operator-(Vec2 a, Vec2 b) {
+  return {a.x - b.x, a.y - b.y};
+}
+[[nodiscard]] constexpr Vec2 operator-(Vec2 a) {
+  return {-a.x, -a.y};
+}
+[[nodiscard]] constexpr Vec2 operator*(double s, Vec2 a) {
+  return {s * a.x, s * a.y};
+}
+[[nodiscard]] constexpr Vec2 operator*(Vec2 a, double s) {
+  return {s * a.x, s * a.y};
+}
+[[nodiscard]] constexpr double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
 /// z component of the 3D cross product: positive when b is counter-clockwise from a.
-[[nodiscard]] constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-[[nodiscard]] inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
-[[nodiscard]] constexpr double squared_length(Vec2 a) { return dot(a, a); }
+[[nodiscard]] constexpr double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+[[nodiscard]] inline double length(Vec2 a) {
+  return std::hypot(a.x, a.y);
+}
+[[nodiscard]] constexpr double squared_length(Vec2 a) {
+  return dot(a, a);
+}
 
-[[nodiscard]] constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-[[nodiscard]] constexpr Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-[[nodiscard]] constexpr Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
-[[nodiscard]] constexpr Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-[[nodiscard]] constexpr Vec3 operator*(Vec3 a, double s) { return {s * a.x, s * a.y, s * a.z}; }
-[[nodiscard]] constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+[[nodiscard]] constexpr Vec3 operator+(Vec3 a, Vec3 b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+[[nodiscard]] constexpr Vec3 operator-(Vec3 a, Vec3 b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+[[nodiscard]] constexpr Vec3 operator-(Vec3 a) {
+  return {-a.x, -a.y, -a.z};
+}
+[[nodiscard]] constexpr Vec3 operator*(double s, Vec3 a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+[[nodiscard]] constexpr Vec3 operator*(Vec3 a, double s) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+[[nodiscard]] constexpr double dot(Vec3 a, Vec3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 [[nodiscard]] constexpr Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-[[nodiscard]] inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
-[[nodiscard]] constexpr double squared_length(Vec3 a) { return dot(a, a); }
+[[nodiscard]] inline double length(Vec3 a) {
+  return std::sqrt(dot(a, a));
+}
+[[nodiscard]] constexpr double squared_length(Vec3 a) {
+  return dot(a, a);
+}
 
 /// True when every coordinate is finite (no NaN, no infinity).
-[[nodiscard]] inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+[[nodiscard]] inline bool is_finite(Vec2 a) {
+  return std::isfinite(a.x) && std::isfinite(a.y);
+}
 [[nodiscard]] inline bool is_finite(Vec3 a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
