@@ -74,10 +74,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // Grids capped: the answers do not depend on them, and a fine grid under a few huge, thin
   // triangles costs seconds per input in this build.
-  const inside::MeshIndex index(mesh, {.max_cells = 1 << 12});
+  const inside::MeshIndex index(mesh, {.min_cells = 64, .max_cells = 1 << 12});
   const inside::MeshIndex coarse(mesh, {.cells_per_triangle = 0.1, .min_cells = 1, .max_cells = 8});
   const inside::MeshIndex fine(mesh,
-                               {.cells_per_triangle = 512, .min_cells = 1, .max_cells = 1 << 14});
+                               {.cells_per_triangle = 512, .min_cells = 1, .max_cells = 1 << 12});
   FUZZ_CHECK(coarse.regime() == index.regime() && fine.regime() == index.regime());
   std::vector<Location> batch(points.size());
   index.locate(points, batch, {.threads = 1});

@@ -92,7 +92,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Grids capped small: a far vertex makes the grid as fine as max_cells allows, and the
     // default 2^20 cells cost seconds per input here, more where coordinates span 2^±900 and
     // the predicates go to big numbers (the answers do not depend on the grid).
-    const inside::PolygonIndex index(rings, {.fill = fill, .max_cells = 1 << 10});
+    const inside::PolygonIndex index(rings, {.fill = fill, .min_cells = 64, .max_cells = 1 << 10});
     const inside::PolygonIndex coarse(rings, {.fill = fill, .min_cells = 1, .max_cells = 4});
     const inside::PolygonIndex fine(
         rings, {.fill = fill, .cells_per_edge = 64, .min_cells = 1, .max_cells = 1 << 12});
