@@ -27,6 +27,9 @@ std::string after_key(const std::string& line, const std::string& key) {
 double parse_number(const std::string& text) {
   std::size_t begin = text.find_first_of("-0123456789");
   std::size_t end = text.find_first_not_of("-+.0123456789eE", begin);
+  // A number that runs to the end: data() + npos is pointer overflow (clang's UBSan stops here).
+  if (begin == std::string::npos) return 0.0;
+  if (end == std::string::npos) end = text.size();
   double value = 0.0;
   std::from_chars(text.data() + begin, text.data() + end, value);
   return value;
