@@ -19,8 +19,11 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <span>
 
+#include "contain/core/parallel.h"
 #include "contain/geometry/box.h"
 #include "contain/geometry/segment.h"
 
@@ -39,9 +42,11 @@ struct KernelBox {
                                (std::bit_cast<std::uint64_t>(y) & ~m));
 }
 
+// The reference kernel, one segment at a time: every vector version below computes bit for bit
+// what this one does (tests/clip/clip_segments_test.cpp checks it); it also does their tails.
 template <int D>
-inline void box_kernel(const double* in, double* out, std::uint8_t* kept, std::size_t count,
-                       const KernelBox<D>& box) {
+inline void box_kernel_scalar(const double* in, double* out, std::uint8_t* kept, std::size_t count,
+                              const KernelBox<D>& box) {
   constexpr double big = 0x1p900;
   constexpr double tiny = 0x1p-900;
   constexpr double margin = 8.01 * 0x1p-53;
@@ -89,81 +94,240 @@ inline void box_kernel(const double* in, double* out, std::uint8_t* kept, std::s
 }
 
 #if defined(__GNUC__)
-// The same kernel on two segments at once with GCC/Clang vector extensions (SSE2 on every
-// x86-64, NEON on AArch64; no -march needed): one division instruction per axis for two
-// segments, comparisons as lane masks, selects as bit operations. Bit for bit the scalar
-// kernel's arithmetic, lane by lane.
+// The same kernel on W = 2 or 4 segments at once with GCC/Clang vector extensions: SSE2 pairs
+// on every x86-64 (NEON on AArch64), AVX2 quadruples where the CPU has them (chosen at run time
+// by `box_kernel_for`; no -march needed). Lane l holds segment l; the arithmetic is the scalar
+// kernel's, operation for operation, with no contraction into FMA (AVX2 alone has none), so
+// every lane is bit for bit what `box_kernel_scalar` computes. Comparisons give lane masks, selects
+// are bit operations.
+//
+// Layout. A segment is 2D doubles (a_0 .. a_{D-1}, b_0 .. b_{D-1}), read as D pairs of two
+// doubles. The lane vectors of coordinates 2p and 2p + 1 are the low and high interleave of
+// pair p of the even segments with pair p of the odd ones (unpcklpd / unpckhpd within each
+// 128-bit half): a 4 x 2 transpose per pair instead of one scalar insert per coordinate, and
+// the same transpose backwards for the output.
+//
+// The lane helpers pass 32-byte vectors by value: they are always inlined into the one function
+// compiled for AVX2, so no call crosses the ABI difference GCC warns about (-Wpsabi, turned off
+// for clip_segments.cpp, the one file that instantiates them, in segment_sources.cmake).
 using V2 = double __attribute__((vector_size(16)));
 using M2 = long long __attribute__((vector_size(16)));
+using V4 = double __attribute__((vector_size(32)));
+using M4 = long long __attribute__((vector_size(32)));
 
-[[nodiscard]] inline V2 select2(M2 m, V2 x, V2 y) {
-  return reinterpret_cast<V2>((reinterpret_cast<M2>(x) & m) | (reinterpret_cast<M2>(y) & ~m));
-}
-[[nodiscard]] inline V2 abs2(V2 x) {
-  const M2 mask = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
-  return reinterpret_cast<V2>(reinterpret_cast<M2>(x) & mask);
-}
+template <class V>
+struct Lanes;
+template <>
+struct Lanes<V2> {
+  using M = M2;
+  static constexpr int count = 2;
+};
+template <>
+struct Lanes<V4> {
+  using M = M4;
+  static constexpr int count = 4;
+};
 
-template <int D>
-inline void box_kernel_pairs(const double* in, double* out, std::uint8_t* kept, std::size_t count,
-                             const KernelBox<D>& box) {
-  const V2 big = {0x1p900, 0x1p900}, tiny = {0x1p-900, 0x1p-900};
-  const V2 margin = {8.01 * 0x1p-53, 8.01 * 0x1p-53};
-  const V2 zero = {0.0, 0.0}, one = {1.0, 1.0}, two = {2.0, 2.0}, minus_one = {-1.0, -1.0};
-  std::size_t i = 0;
-  for (; i + 2 <= count; i += 2) {
-    const double* s0 = in + 2 * D * i;
-    const double* s1 = s0 + 2 * D;
-    V2 a[D], b[D], d[D], enter[D], exit[D];
-    V2 lo = zero, hi = one;
-    M2 unsure = {0, 0};
-    for (int k = 0; k < D; ++k) {
-      a[k] = V2{s0[k], s1[k]};
-      b[k] = V2{s0[D + k], s1[D + k]};
-      d[k] = b[k] - a[k];
-      const V2 r = one / d[k];
-      const V2 mn = {box.min[k], box.min[k]}, mx = {box.max[k], box.max[k]};
-      const V2 t1 = (mn - a[k]) * r, t2 = (mx - a[k]) * r;
-      const M2 ordered = t1 < t2;
-      enter[k] = select2(ordered, t1, t2);
-      exit[k] = select2(ordered, t2, t1);
-      const V2 ad = abs2(d[k]);
-      unsure |= ~(abs2(a[k]) < big) | ~(abs2(b[k]) < big) | ((ad < tiny) & (ad != zero)) |
-                (t1 != t1) | (t2 != t2);
-      lo = select2(lo < enter[k], enter[k], lo);
-      hi = select2(exit[k] < hi, exit[k], hi);
-    }
-    const V2 lo_c = select2(lo < two, lo, two), hi_c = select2(hi > minus_one, hi, minus_one);
-    const V2 gap = hi_c - lo_c;
-    unsure |= abs2(gap) <= margin * (abs2(lo_c) + abs2(hi_c)) + tiny;
-    const M2 keep = gap >= zero;
-    double* o0 = out + 2 * D * i;
-    double* o1 = o0 + 2 * D;
-    for (int k = 0; k < D; ++k) {
-      const V2 mn = {box.min[k], box.min[k]}, mx = {box.max[k], box.max[k]};
-      const M2 forward = d[k] > zero;
-      V2 p0 = a[k] + lo_c * d[k];
-      V2 p1 = select2(hi_c == one, b[k], a[k] + hi_c * d[k]);
-      p0 = select2(lo == enter[k], select2(forward, mn, mx), p0);
-      p1 = select2(hi == exit[k], select2(forward, mx, mn), p1);
-      p0 = select2(p0 < mn, mn, select2(mx < p0, mx, p0));
-      p1 = select2(p1 < mn, mn, select2(mx < p1, mx, p1));
-      o0[k] = p0[0];
-      o1[k] = p0[1];
-      o0[D + k] = p1[0];
-      o1[D + k] = p1[1];
-    }
-    kept[i] = static_cast<std::uint8_t>((keep[0] & 1) + (unsure[0] & 2));
-    kept[i + 1] = static_cast<std::uint8_t>((keep[1] & 1) + (unsure[1] & 2));
+template <class V>
+[[gnu::always_inline]] inline V splat(double x) {
+  if constexpr (Lanes<V>::count == 2) {
+    return V{x, x};
+  } else {
+    return V{x, x, x, x};
   }
-  if (i < count) box_kernel<D>(in + 2 * D * i, out + 2 * D * i, kept + i, count - i, box);
 }
-#else
-template <int D>
-inline void box_kernel_pairs(const double* in, double* out, std::uint8_t* kept, std::size_t count,
-                             const KernelBox<D>& box) {
-  box_kernel<D>(in, out, kept, count, box);
+
+// Bit masks on lane vectors: x where m, else y; |x|.
+template <class V, class M>
+[[gnu::always_inline]] inline V select_lanes(M m, V x, V y) {
+  return reinterpret_cast<V>((reinterpret_cast<M>(x) & m) | (reinterpret_cast<M>(y) & ~m));
+}
+template <class V>
+[[gnu::always_inline]] inline V abs_lanes(V x) {
+  using M = typename Lanes<V>::M;
+  const M mask = reinterpret_cast<M>(splat<V>(std::bit_cast<double>(~(std::uint64_t{1} << 63))));
+  return reinterpret_cast<V>(reinterpret_cast<M>(x) & mask);
+}
+
+// The D coordinate pairs of W consecutive segments at `s` as 2D lane vectors.
+template <class V, int D>
+[[gnu::always_inline]] inline void load_lanes(const double* s, V* c) {
+  constexpr int stride = 2 * D;
+#pragma GCC unroll 4
+  for (int p = 0; p < D; ++p) {
+    V2 e, o;
+    std::memcpy(&e, s + 2 * p, sizeof e);
+    std::memcpy(&o, s + stride + 2 * p, sizeof o);
+    if constexpr (Lanes<V>::count == 2) {
+      c[2 * p] = __builtin_shufflevector(e, o, 0, 2);
+      c[2 * p + 1] = __builtin_shufflevector(e, o, 1, 3);
+    } else {
+      V2 e2, o2;
+      std::memcpy(&e2, s + 2 * stride + 2 * p, sizeof e2);
+      std::memcpy(&o2, s + 3 * stride + 2 * p, sizeof o2);
+      const V4 even = __builtin_shufflevector(e, e2, 0, 1, 2, 3);
+      const V4 odd = __builtin_shufflevector(o, o2, 0, 1, 2, 3);
+      c[2 * p] = __builtin_shufflevector(even, odd, 0, 4, 2, 6);
+      c[2 * p + 1] = __builtin_shufflevector(even, odd, 1, 5, 3, 7);
+    }
+  }
+}
+
+// The inverse of load_lanes.
+template <class V, int D>
+[[gnu::always_inline]] inline void store_lanes(const V* c, double* s) {
+  constexpr int stride = 2 * D;
+#pragma GCC unroll 4
+  for (int p = 0; p < D; ++p) {
+    if constexpr (Lanes<V>::count == 2) {
+      const V2 e = __builtin_shufflevector(c[2 * p], c[2 * p + 1], 0, 2);
+      const V2 o = __builtin_shufflevector(c[2 * p], c[2 * p + 1], 1, 3);
+      std::memcpy(s + 2 * p, &e, sizeof e);
+      std::memcpy(s + stride + 2 * p, &o, sizeof o);
+    } else {
+      const V4 even = __builtin_shufflevector(c[2 * p], c[2 * p + 1], 0, 4, 2, 6);
+      const V4 odd = __builtin_shufflevector(c[2 * p], c[2 * p + 1], 1, 5, 3, 7);
+      const V2 e = __builtin_shufflevector(even, even, 0, 1);
+      const V2 e2 = __builtin_shufflevector(even, even, 2, 3);
+      const V2 o = __builtin_shufflevector(odd, odd, 0, 1);
+      const V2 o2 = __builtin_shufflevector(odd, odd, 2, 3);
+      std::memcpy(s + 2 * p, &e, sizeof e);
+      std::memcpy(s + stride + 2 * p, &o, sizeof o);
+      std::memcpy(s + 2 * stride + 2 * p, &e2, sizeof e2);
+      std::memcpy(s + 3 * stride + 2 * p, &o2, sizeof o2);
+    }
+  }
+}
+
+template <class V, int D>
+[[gnu::always_inline]] inline void box_kernel_lanes(const double* in, double* out,
+                                                    std::uint8_t* kept, std::size_t count,
+                                                    const KernelBox<D>& box) {
+  using M = typename Lanes<V>::M;
+  constexpr std::size_t width = Lanes<V>::count;
+  const V big = splat<V>(0x1p900), tiny = splat<V>(0x1p-900), margin = splat<V>(8.01 * 0x1p-53);
+  const V zero = splat<V>(0.0), one = splat<V>(1.0), two = splat<V>(2.0),
+          minus_one = splat<V>(-1.0);
+  std::size_t i = 0;
+  for (; i + width <= count; i += width) {
+    V c[2 * D];
+    load_lanes<V, D>(in + 2 * D * i, c);
+    V d[D], enter[D], exit[D];
+    V lo = zero, hi = one;
+    M unsure = reinterpret_cast<M>(zero);
+#pragma GCC unroll 4
+    for (int k = 0; k < D; ++k) {
+      const V a = c[k], b = c[D + k];
+      d[k] = b - a;
+      const V r = one / d[k];
+      const V mn = splat<V>(box.min[k]), mx = splat<V>(box.max[k]);
+      const V t1 = (mn - a) * r, t2 = (mx - a) * r;
+      const M ordered = t1 < t2;
+      enter[k] = select_lanes<V, M>(ordered, t1, t2);
+      exit[k] = select_lanes<V, M>(ordered, t2, t1);
+      const V ad = abs_lanes<V>(d[k]);
+      unsure |= ~(abs_lanes<V>(a) < big) | ~(abs_lanes<V>(b) < big) | ((ad < tiny) & (ad != zero)) |
+                (t1 != t1) | (t2 != t2);
+      lo = select_lanes<V, M>(lo < enter[k], enter[k], lo);
+      hi = select_lanes<V, M>(exit[k] < hi, exit[k], hi);
+    }
+    const V lo_c = select_lanes<V, M>(lo < two, lo, two),
+            hi_c = select_lanes<V, M>(hi > minus_one, hi, minus_one);
+    const V gap = hi_c - lo_c;
+    unsure |= abs_lanes<V>(gap) <= margin * (abs_lanes<V>(lo_c) + abs_lanes<V>(hi_c)) + tiny;
+    const M keep = gap >= zero;
+    V p[2 * D];
+#pragma GCC unroll 4
+    for (int k = 0; k < D; ++k) {
+      const V a = c[k], b = c[D + k];
+      const V mn = splat<V>(box.min[k]), mx = splat<V>(box.max[k]);
+      const M forward = d[k] > zero;
+      V p0 = a + lo_c * d[k];
+      V p1 = select_lanes<V, M>(hi_c == one, b, a + hi_c * d[k]);
+      p0 = select_lanes<V, M>(lo == enter[k], select_lanes<V, M>(forward, mn, mx), p0);
+      p1 = select_lanes<V, M>(hi == exit[k], select_lanes<V, M>(forward, mx, mn), p1);
+      p[k] = select_lanes<V, M>(p0 < mn, mn, select_lanes<V, M>(mx < p0, mx, p0));
+      p[D + k] = select_lanes<V, M>(p1 < mn, mn, select_lanes<V, M>(mx < p1, mx, p1));
+    }
+    store_lanes<V, D>(p, out + 2 * D * i);
+    const M flags = (keep & 1) | (unsure & 2);
+#pragma GCC unroll 4
+    for (std::size_t l = 0; l < width; ++l)
+      kept[i + l] = static_cast<std::uint8_t>(flags[l]);
+  }
+  if (i < count) box_kernel_scalar<D>(in + 2 * D * i, out + 2 * D * i, kept + i, count - i, box);
 }
 #endif
+
+/// The instruction sets the batch kernel has a version for.
+enum class KernelIsa { portable, avx2 };
+
+template <int D>
+using BoxKernel = void (*)(const double* in, double* out, std::uint8_t* kept, std::size_t count,
+                           const KernelBox<D>& box);
+
+template <int D>
+void box_kernel_portable(const double* in, double* out, std::uint8_t* kept, std::size_t count,
+                         const KernelBox<D>& box) {
+#if defined(__GNUC__)
+  box_kernel_lanes<V2, D>(in, out, kept, count, box);
+#else
+  box_kernel_scalar<D>(in, out, kept, count, box);
+#endif
+}
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define CONTAIN_CLIP_KERNEL_AVX2 1
+template <int D>
+[[gnu::target("avx2")]] void box_kernel_avx2(const double* in, double* out, std::uint8_t* kept,
+                                             std::size_t count, const KernelBox<D>& box) {
+  box_kernel_lanes<V4, D>(in, out, kept, count, box);
+}
+#endif
+
+/// Whether this CPU (and its OS) runs the version for `isa`.
+[[nodiscard]] inline bool kernel_isa_available(KernelIsa isa) {
+  if (isa == KernelIsa::portable) return true;
+#if defined(CONTAIN_CLIP_KERNEL_AVX2)
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
+
+/// The version for `isa` (the portable one when there is none).
+template <int D>
+[[nodiscard]] BoxKernel<D> box_kernel_for(KernelIsa isa) {
+#if defined(CONTAIN_CLIP_KERNEL_AVX2)
+  if (isa == KernelIsa::avx2) return &box_kernel_avx2<D>;
+#endif
+  (void)isa;
+  return &box_kernel_portable<D>;
+}
+
+/// The widest version this CPU runs, chosen once.
+template <int D>
+[[nodiscard]] BoxKernel<D> best_box_kernel() {
+  static const BoxKernel<D> kernel = box_kernel_for<D>(
+      kernel_isa_available(KernelIsa::avx2) ? KernelIsa::avx2 : KernelIsa::portable);
+  return kernel;
+}
+
+/// `clip_segments` against a box with the kernel version for `isa` (the portable one where
+/// there is none); `clip_segments` itself takes the widest this CPU runs. For the tests and the
+/// benchmark: the results are the same bit for bit whatever the version.
+void clip_segments_with(std::span<const Segment3> segments, const Box3& box,
+                        std::span<Segment3> out, std::span<std::uint8_t> kept,
+                        const BatchOptions& options, KernelIsa isa);
+void clip_segments_with(std::span<const Segment2> segments, const Box2& box,
+                        std::span<Segment2> out, std::span<std::uint8_t> kept,
+                        const BatchOptions& options, KernelIsa isa);
+
+/// The kernel alone on one thread, without the exact pass: flags[i] bit 0 = kept, bit 1 =
+/// unsure (the exact Liang-Barsky decides). Preconditions as `clip_segments`, non-empty box.
+void run_box_kernel(std::span<const Segment3> segments, const Box3& box, std::span<Segment3> out,
+                    std::span<std::uint8_t> flags, KernelIsa isa);
+void run_box_kernel(std::span<const Segment2> segments, const Box2& box, std::span<Segment2> out,
+                    std::span<std::uint8_t> flags, KernelIsa isa);
 
 }  // namespace contain::clip::detail

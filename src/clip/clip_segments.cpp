@@ -27,27 +27,33 @@ void each(std::span<const S> segments, std::span<S> out, std::span<std::uint8_t>
   });
 }
 
-template <int D, class S, class Box>
-void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
-               std::span<std::uint8_t> kept, const BatchOptions& options) {
-  if (box.empty()) {
-    for (auto& k : kept)
-      k = 0;
-    return;
-  }
+template <int D, class Box>
+detail::KernelBox<D> kernel_box(const Box& box) {
   detail::KernelBox<D> kb{};
   for (int k = 0; k < D; ++k) {
     kb.min[k] = detail::coord(box.min, k);
     kb.max[k] = detail::coord(box.max, k);
   }
+  return kb;
+}
+
+template <int D, class S, class Box>
+void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
+               std::span<std::uint8_t> kept, const BatchOptions& options,
+               detail::BoxKernel<D> kernel) {
+  if (box.empty()) {
+    for (auto& k : kept)
+      k = 0;
+    return;
+  }
+  const detail::KernelBox<D> kb = kernel_box<D>(box);
   parallel_for(segments.size(), options, [&](std::size_t begin, std::size_t end) {
     // Blocks keep the fallback pass in cache.
     constexpr std::size_t block = 2048;
     for (std::size_t b = begin; b < end; b += block) {
       const std::size_t n = std::min(block, end - b);
-      detail::box_kernel_pairs<D>(reinterpret_cast<const double*>(segments.data() + b),
-                                  reinterpret_cast<double*>(out.data() + b), kept.data() + b, n,
-                                  kb);
+      kernel(reinterpret_cast<const double*>(segments.data() + b),
+             reinterpret_cast<double*>(out.data() + b), kept.data() + b, n, kb);
       for (std::size_t i = b; i < b + n; ++i) {
         if (kept[i] < 2) continue;
         const auto r = detail::liang_barsky_exact(segments[i].a, segments[i].b, box);
@@ -58,15 +64,23 @@ void box_batch(std::span<const S> segments, const Box& box, std::span<S> out,
   });
 }
 
+template <int D, class S, class Box>
+void raw_kernel(std::span<const S> segments, const Box& box, std::span<S> out,
+                std::span<std::uint8_t> flags, detail::KernelIsa isa) {
+  detail::box_kernel_for<D>(isa)(reinterpret_cast<const double*>(segments.data()),
+                                 reinterpret_cast<double*>(out.data()), flags.data(),
+                                 segments.size(), kernel_box<D>(box));
+}
+
 }  // namespace
 
 void clip_segments(std::span<const Segment3> s, const Box3& box, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  box_batch<3>(s, box, out, kept, options);
+  box_batch<3>(s, box, out, kept, options, detail::best_box_kernel<3>());
 }
 void clip_segments(std::span<const Segment2> s, const Box2& box, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  box_batch<2>(s, box, out, kept, options);
+  box_batch<2>(s, box, out, kept, options, detail::best_box_kernel<2>());
 }
 void clip_segments(std::span<const Segment3> s, const Plane& h, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
@@ -111,5 +125,24 @@ void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::sp
     return detail::cyrus_beck_clip<Vec2, detail::EdgeFunction>(x.a, x.b, *edges);
   });
 }
+
+namespace detail {
+void clip_segments_with(std::span<const Segment3> s, const Box3& box, std::span<Segment3> out,
+                        std::span<std::uint8_t> kept, const BatchOptions& options, KernelIsa isa) {
+  box_batch<3>(s, box, out, kept, options, box_kernel_for<3>(isa));
+}
+void clip_segments_with(std::span<const Segment2> s, const Box2& box, std::span<Segment2> out,
+                        std::span<std::uint8_t> kept, const BatchOptions& options, KernelIsa isa) {
+  box_batch<2>(s, box, out, kept, options, box_kernel_for<2>(isa));
+}
+void run_box_kernel(std::span<const Segment3> s, const Box3& box, std::span<Segment3> out,
+                    std::span<std::uint8_t> flags, KernelIsa isa) {
+  raw_kernel<3>(s, box, out, flags, isa);
+}
+void run_box_kernel(std::span<const Segment2> s, const Box2& box, std::span<Segment2> out,
+                    std::span<std::uint8_t> flags, KernelIsa isa) {
+  raw_kernel<2>(s, box, out, flags, isa);
+}
+}  // namespace detail
 
 }  // namespace contain::clip

@@ -1,8 +1,14 @@
 // Batch forms: the branch-free box kernel decides exactly as the exact Liang-Barsky, whatever
-// the thread count; the other regions match their one-shot clippers.
+// the thread count; every vector version of the kernel is the scalar kernel bit for bit; the
+// other regions match their one-shot clippers.
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <type_traits>
+
+#include "clip/box_kernel.h"
+#include "clip/segment_common.h"
 #include "clip/segment_oracle.h"
 #include "contain/clip/clip_segments.h"
 #include "contain/clip/cyrus_beck.h"
@@ -54,6 +60,93 @@ TEST(ClipSegments, Box2DKernelMatchesLiangBarsky) {
     ASSERT_EQ(kept[i], r.kept ? 1 : 0) << i;
     if (r.kept) {
       EXPECT_NEAR(out[i].b.x, r.segment.b.x, 1e-14);
+    }
+  }
+}
+
+// Segments rich in degenerate positions, with the kernel's unsure cases among them.
+template <class S>
+std::vector<S> kernel_input(unsigned seed, std::size_t n) {
+  SegmentGenerator gen(seed);
+  std::vector<S> in(n);
+  for (auto& s : in) {
+    if constexpr (std::is_same_v<S, Segment3>) {
+      s = gen.segment3();
+    } else {
+      s = gen.segment2();
+    }
+  }
+  if (n > 3) {
+    in[1].a.x = 1e-310;
+    in[1].b.x = 2e-310;
+    in[2].a.x = -1e305;
+    in[3].b = in[3].a;
+  }
+  return in;
+}
+
+std::vector<clip::detail::KernelIsa> available_isas() {
+  std::vector<clip::detail::KernelIsa> isas;
+  for (auto isa : {clip::detail::KernelIsa::portable, clip::detail::KernelIsa::avx2})
+    if (clip::detail::kernel_isa_available(isa)) isas.push_back(isa);
+  return isas;
+}
+
+template <int D, class S, class Box>
+void expect_kernel_versions_equal_scalar(const std::vector<S>& in, const Box& box) {
+  clip::detail::KernelBox<D> kb{};
+  for (int k = 0; k < D; ++k) {
+    kb.min[k] = clip::detail::coord(box.min, k);
+    kb.max[k] = clip::detail::coord(box.max, k);
+  }
+  std::vector<S> want(in.size());
+  std::vector<std::uint8_t> want_flags(in.size());
+  clip::detail::box_kernel_scalar<D>(reinterpret_cast<const double*>(in.data()),
+                                     reinterpret_cast<double*>(want.data()), want_flags.data(),
+                                     in.size(), kb);
+  for (auto isa : available_isas()) {
+    std::vector<S> got(in.size());
+    std::vector<std::uint8_t> flags(in.size());
+    clip::detail::run_box_kernel(in, box, got, flags, isa);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      ASSERT_EQ(flags[i], want_flags[i]) << i << " isa " << static_cast<int>(isa);
+      // Sure keeps are final: their points must be the scalar kernel's, bit for bit.
+      if (flags[i] == 1) {
+        EXPECT_EQ(std::memcmp(&got[i], &want[i], sizeof(S)), 0)
+            << i << " isa " << static_cast<int>(isa);
+      }
+    }
+  }
+}
+
+TEST(ClipSegments, EveryKernelVersionIsTheScalarKernelBitForBit) {
+  // Sizes around the lane counts exercise the scalar tails too.
+  for (std::size_t n : {1, 2, 3, 4, 5, 7, 9, 4001}) {
+    expect_kernel_versions_equal_scalar<3>(kernel_input<Segment3>(41 + n, n),
+                                           Box3{{-1, -1, -1}, {1, 1, 1}});
+    expect_kernel_versions_equal_scalar<3>(kernel_input<Segment3>(43 + n, n),
+                                           Box3{{-1, 0, -0.5}, {1, 0, 2}});
+    expect_kernel_versions_equal_scalar<2>(kernel_input<Segment2>(47 + n, n),
+                                           Box2{{-1, -0.5}, {1, 1}});
+  }
+}
+
+TEST(ClipSegments, EveryKernelVersionDecidesExactlyAndGivesTheSamePoints) {
+  const auto in = kernel_input<Segment3>(53, 20001);
+  const Box3 box{{-1, -1, -1}, {1, 1, 1}};
+  std::vector<Segment3> first;
+  for (auto isa : available_isas()) {
+    std::vector<Segment3> out(in.size());
+    std::vector<std::uint8_t> kept(in.size());
+    clip::detail::clip_segments_with(in, box, out, kept, {.threads = 2}, isa);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      ASSERT_EQ(kept[i], clip::liang_barsky(in[i], box).kept ? 1 : 0) << i;
+      if (!kept[i]) out[i] = {};
+    }
+    if (first.empty()) {
+      first = out;
+    } else {
+      EXPECT_EQ(std::memcmp(first.data(), out.data(), out.size() * sizeof(Segment3)), 0);
     }
   }
 }
