@@ -8,6 +8,7 @@
 #include "clip/segment_oracle.h"
 #include "contain/clip/cyrus_beck.h"
 #include "contain/clip/liang_barsky.h"
+#include "scenes/scenes.h"
 #include "support/exact.h"
 
 namespace contain::test {
@@ -71,25 +72,10 @@ TEST(CyrusBeck, FlatRingKeepsNothing) {
 }
 
 TEST(CyrusBeck, CubeMeshAgreesWithLiangBarskyOnTheSameBox) {
-  const Mesh cube =
-      Mesh::from_arrays(
-          {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
-          {{0, 2, 1},
-           {0, 3, 2},
-           {4, 5, 6},
-           {4, 6, 7},
-           {0, 1, 5},
-           {0, 5, 4},
-           {1, 2, 6},
-           {1, 6, 5},
-           {2, 3, 7},
-           {2, 7, 6},
-           {3, 0, 4},
-           {3, 4, 7}})
-          .value();
+  const Box3 box{{0, 0, 0}, {1, 1, 1}};
+  const Mesh cube = scenes::box_mesh(box);
   const auto solid = inside::ConvexPolyhedron::from_mesh(cube);
   ASSERT_TRUE(solid.ok());
-  const Box3 box{{0, 0, 0}, {1, 1, 1}};
   SegmentGenerator gen(13);
   for (int i = 0; i < 5000; ++i) {
     Segment3 s = gen.segment3();

@@ -13,28 +13,9 @@
 namespace contain::test {
 namespace {
 
+// The unit cube [0, 1]^3 as a closed, outward mesh.
 Mesh cube() {
-  return Mesh::from_arrays({{0, 0, 0},
-                            {1, 0, 0},
-                            {1, 1, 0},
-                            {0, 1, 0},
-                            {0, 0, 1},
-                            {1, 0, 1},
-                            {1, 1, 1},
-                            {0, 1, 1}},
-                           {{0, 2, 1},
-                            {0, 3, 2},
-                            {4, 5, 6},
-                            {4, 6, 7},
-                            {0, 1, 5},
-                            {0, 5, 4},
-                            {1, 2, 6},
-                            {1, 6, 5},
-                            {2, 3, 7},
-                            {2, 7, 6},
-                            {3, 0, 4},
-                            {3, 4, 7}})
-      .value();
+  return scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}});
 }
 
 void expect_solid(const Mesh& m, double volume, double tolerance) {

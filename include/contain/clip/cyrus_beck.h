@@ -30,8 +30,13 @@ namespace contain::clip {
 /// Accuracy: crossing points are a + t (b - a) with t from the rounded values, a few ulps from
 /// the true point; each is then checked against every half-space exactly and, if rounding put it
 /// outside, moved along the kept part toward its other end until it is inside (so returned
-/// points lie in the closed region), except for a zero-length (touching) result, whose one
-/// point may miss the region by rounding. Half-spaces with a zero normal are all or nothing.
+/// points lie in the closed region), with two exceptions: a zero-length (touching) result,
+/// whose one point may miss the region by rounding; and a kept part shorter than the resolution
+/// of t (about 2^-53 of the segment's length, e.g. 9 units of a segment 3.5e282 long), which no
+/// double t names a point of, so both returned points can lie outside the region. In both the
+/// decision kept / touched / missed stays exact (docs/robustness.md, "Documented, not a bug");
+/// `liang_barsky` and `cohen_sutherland` keep their points in the box always.
+/// Half-spaces with a zero normal are all or nothing.
 /// O(n) for n half-spaces (O(n) more predicate calls if a point is adjusted).
 [[nodiscard]] ClippedSegment3 cyrus_beck(const Segment3& segment,
                                          std::span<const Plane> half_spaces);
