@@ -99,7 +99,7 @@ inline void box_kernel_scalar(const double* in, double* out, std::uint8_t* kept,
 // by `box_kernel_for`; no -march needed). Lane l holds segment l; the arithmetic is the scalar
 // kernel's, operation for operation, with no contraction into FMA (AVX2 alone has none), so
 // every lane is bit for bit what `box_kernel_scalar` computes. Comparisons give lane masks, selects
-// are bit operations.
+// are blends, and the selects of a larger or smaller value are max / min instructions.
 //
 // Layout. A segment is 2D doubles (a_0 .. a_{D-1}, b_0 .. b_{D-1}), read as D pairs of two
 // doubles. The lane vectors of coordinates 2p and 2p + 1 are the low and high interleave of
@@ -137,11 +137,24 @@ template <class V>
   }
 }
 
-// Bit masks on lane vectors: x where m, else y; |x|.
+// Lane selects: x where m, else y.
 template <class V, class M>
 [[gnu::always_inline]] inline V select_lanes(M m, V x, V y) {
-  return reinterpret_cast<V>((reinterpret_cast<M>(x) & m) | (reinterpret_cast<M>(y) & ~m));
+  return m ? x : y;
 }
+
+// x > y ? x : y and x < y ? x : y, lane by lane (y where unordered): the scalar kernel's selects
+// of the larger / smaller value. Written with the comparison inside the select, GCC and Clang
+// emit x86 maxpd / minpd, which compute exactly this (operand order, NaN and -0 included).
+template <class V>
+[[gnu::always_inline]] inline V max_lanes(V x, V y) {
+  return x > y ? x : y;
+}
+template <class V>
+[[gnu::always_inline]] inline V min_lanes(V x, V y) {
+  return x < y ? x : y;
+}
+// |x| by the sign bit.
 template <class V>
 [[gnu::always_inline]] inline V abs_lanes(V x) {
   using M = typename Lanes<V>::M;
@@ -222,17 +235,15 @@ template <class V, int D>
       const V r = one / d[k];
       const V mn = splat<V>(box.min[k]), mx = splat<V>(box.max[k]);
       const V t1 = (mn - a) * r, t2 = (mx - a) * r;
-      const M ordered = t1 < t2;
-      enter[k] = select_lanes<V, M>(ordered, t1, t2);
-      exit[k] = select_lanes<V, M>(ordered, t2, t1);
+      enter[k] = min_lanes(t1, t2);  // t1 < t2 ? t1 : t2
+      exit[k] = max_lanes(t2, t1);   // t1 < t2 ? t2 : t1
       const V ad = abs_lanes<V>(d[k]);
       unsure |= ~(abs_lanes<V>(a) < big) | ~(abs_lanes<V>(b) < big) | ((ad < tiny) & (ad != zero)) |
                 (t1 != t1) | (t2 != t2);
-      lo = select_lanes<V, M>(lo < enter[k], enter[k], lo);
-      hi = select_lanes<V, M>(exit[k] < hi, exit[k], hi);
+      lo = max_lanes(enter[k], lo);  // lo < enter ? enter : lo
+      hi = min_lanes(exit[k], hi);   // exit < hi ? exit : hi
     }
-    const V lo_c = select_lanes<V, M>(lo < two, lo, two),
-            hi_c = select_lanes<V, M>(hi > minus_one, hi, minus_one);
+    const V lo_c = min_lanes(lo, two), hi_c = max_lanes(hi, minus_one);
     const V gap = hi_c - lo_c;
     unsure |= abs_lanes<V>(gap) <= margin * (abs_lanes<V>(lo_c) + abs_lanes<V>(hi_c)) + tiny;
     const M keep = gap >= zero;
@@ -246,8 +257,9 @@ template <class V, int D>
       V p1 = select_lanes<V, M>(hi_c == one, b, a + hi_c * d[k]);
       p0 = select_lanes<V, M>(lo == enter[k], select_lanes<V, M>(forward, mn, mx), p0);
       p1 = select_lanes<V, M>(hi == exit[k], select_lanes<V, M>(forward, mx, mn), p1);
-      p[k] = select_lanes<V, M>(p0 < mn, mn, select_lanes<V, M>(mx < p0, mx, p0));
-      p[D + k] = select_lanes<V, M>(p1 < mn, mn, select_lanes<V, M>(mx < p1, mx, p1));
+      // Clamped into [mn, mx] as the scalar kernel's two selects do.
+      p[k] = max_lanes(mn, min_lanes(mx, p0));
+      p[D + k] = max_lanes(mn, min_lanes(mx, p1));
     }
     store_lanes<V, D>(p, out + 2 * D * i);
     const M flags = (keep & 1) | (unsure & 2);
