@@ -95,39 +95,59 @@ void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label
 }
 
 Arrangement::Arrangement(const ArrangementInput& input) {
-  noded_ = node_segments(input.segments, input.magnitude);
+  // Consecutive segments of one path: the first ends where the next starts, with the same label.
+  const std::size_t n = input.segments.size();
+  std::vector<char> links(n, 0);
+  for (std::size_t c = 0; c + 1 < n; ++c) {
+    const SegmentLabel l = input.labels[c], r = input.labels[c + 1];
+    links[c] = (input.segments[c].b == input.segments[c + 1].a && l.a == r.a && l.b == r.b &&
+                l.open == r.open)
+                   ? 1
+                   : 0;
+  }
+  noded_ = node_segments(input.segments, links, input.magnitude);
   crossings = noded_.crossings;
   rounds = noded_.rounds;
   converged = noded_.converged;
-  build_graph(input);
+  build_graph(input, links);
   label_faces();
 }
 
-void Arrangement::build_graph(const ArrangementInput& input) {
+void Arrangement::build_graph(const ArrangementInput& input, std::span<const char> links) {
   const std::vector<Vec2>& pts = noded_.points;
+  const std::vector<std::uint32_t>& first = noded_.first;
   const std::size_t np = pts.size();
   const std::size_t nchains = input.segments.size();
-  // Vertices: equal points merge.
+  // Which points are vertices: the noding's events, the ends of paths, every point of an open
+  // path (polyline_clip reads its pieces one by one). The end of a linked segment is the start
+  // of the next one (alias): it takes that start's vertex, and is a vertex when either is.
+  std::vector<char> is_vertex(noded_.event);
+  std::vector<char> alias(np, 0);
+  for (std::size_t c = 0; c < nchains; ++c) {
+    const std::uint32_t s = first[c], e = first[c + 1] - 1;
+    if (input.labels[c].open) {
+      std::fill(is_vertex.begin() + s, is_vertex.begin() + e + 1, 1);
+    }
+    if (links[c] != 0) {
+      alias[e] = 1;
+      if (is_vertex[e]) is_vertex[e + 1] = 1;
+    } else {
+      is_vertex[e] = 1;
+    }
+    if (c == 0 || links[c - 1] == 0) is_vertex[s] = 1;
+  }
   struct Keyed {
     Vec2 p;
     std::uint32_t i;
   };
-  // The end of a chain is usually the start of the next one (consecutive ring edges): such ends
-  // take the vertex of that start and stay out of the sort.
-  std::vector<char> alias(np, 0);
-  for (std::size_t c = 0; c + 1 < nchains; ++c) {
-    const std::uint32_t end = noded_.first[c + 1] - 1;
-    if (pts[end] == pts[noded_.first[c + 1]]) alias[end] = 1;
-  }
   std::vector<Keyed> order;
-  order.reserve(np);
   for (std::size_t i = 0; i < np; ++i) {
-    if (!alias[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
+    if (is_vertex[i] && !alias[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
   }
   std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
     return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
   });
-  std::vector<std::uint32_t> vid(np);
+  std::vector<std::uint32_t> vid(np, kNone);
   vertex_.clear();
   vertex_.reserve(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
@@ -138,9 +158,13 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     if (alias[i]) vid[i] = vid[i + 1];  // the next chain's start, assigned (or aliased) already
   }
   origin_.assign(vertex_.size(), kNone);
-  for (std::size_t c = nchains; c-- > 0;)
-    origin_[vid[noded_.first[c]]] = static_cast<std::uint32_t>(c);
-  // Pieces, keyed by their vertex pair, merged into edges.
+  for (std::size_t c = nchains; c-- > 0;) {
+    const std::uint32_t v = vid[first[c]];
+    if (v != kNone) origin_[v] = static_cast<std::uint32_t>(c);
+  }
+  // Runs: from a vertex along the path through points that are no vertex, to the next vertex.
+  // A run of several pieces is an edge of its own (another piece equal to one of its pieces
+  // would meet its inner points); single pieces, keyed by their vertex pair, merge into edges.
   struct Piece {
     std::uint64_t key;
     std::uint32_t piece;
@@ -149,22 +173,53 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     bool flipped;
   };
   std::vector<Piece> pieces;
-  pieces.reserve(np - nchains);
+  piece_half_.assign(np - nchains, -1);
+  edge_.clear();
+  std::vector<std::uint32_t> run_pieces;  // piece ids (k - c) of the current run
   for (std::size_t c = 0; c < nchains; ++c) {
     const SegmentLabel label = input.labels[c];
-    for (std::uint32_t k = noded_.first[c]; k + 1 < noded_.first[c + 1]; ++k) {
-      std::uint32_t u = vid[k], v = vid[k + 1];
-      const bool flip = v < u;
-      if (flip) std::swap(u, v);
-      const std::int32_t s = flip ? -1 : 1;
-      pieces.push_back({(std::uint64_t{u} << 32) | v, static_cast<std::uint32_t>(k - c),
-                        s * label.a, s * label.b, label.open, flip});
+    for (std::uint32_t k = first[c]; k + 1 < first[c + 1]; ++k) {
+      if (vid[k] == kNone) continue;  // inside a run started before
+      // Follow the run from k to the next vertex.
+      run_pieces.clear();
+      std::size_t cc = c;
+      std::uint32_t j = k;  // current piece start
+      std::uint32_t end = 0;
+      for (;;) {
+        run_pieces.push_back(static_cast<std::uint32_t>(j - cc));
+        const std::uint32_t h = j + 1;
+        if (vid[h] != kNone) {
+          end = h;
+          break;
+        }
+        // h is no vertex: either a linked segment's end (continue after the alias) or, never,
+        // a split point (splits are events).
+        if (h + 1 == first[cc + 1]) {
+          j = h + 1;
+          ++cc;
+        } else {
+          j = h;
+        }
+      }
+      const std::uint32_t u = vid[k], v = vid[end];
+      if (run_pieces.size() == 1) {
+        std::uint32_t a = u, b = v;
+        const bool flip = b < a;
+        if (flip) std::swap(a, b);
+        const std::int32_t sg = flip ? -1 : 1;
+        pieces.push_back({(std::uint64_t{a} << 32) | b, run_pieces[0], sg * label.a, sg * label.b,
+                          label.open, flip});
+        continue;
+      }
+      if (label.a == 0 && label.b == 0 && !label.open) continue;
+      const auto e = static_cast<std::int32_t>(edge_.size());
+      edge_.push_back({u, v, label.a, label.b, k, end, pts[k + 1], pts[end - 1]});
+      for (const std::uint32_t pc : run_pieces)
+        piece_half_[pc] = 2 * e;
     }
   }
   std::sort(pieces.begin(), pieces.end(),
             [](const Piece& l, const Piece& r) { return l.key < r.key; });
-  piece_half_.assign(pieces.size(), -1);
-  edge_.clear();
   for (std::size_t i = 0; i < pieces.size();) {
     std::size_t j = i;
     std::int32_t a = 0, b = 0;
@@ -176,15 +231,17 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     }
     if (a != 0 || b != 0 || open) {
       const auto e = static_cast<std::int32_t>(edge_.size());
-      edge_.push_back({static_cast<std::uint32_t>(pieces[i].key >> 32),
-                       static_cast<std::uint32_t>(pieces[i].key), a, b});
+      const auto u = static_cast<std::uint32_t>(pieces[i].key >> 32);
+      const auto v = static_cast<std::uint32_t>(pieces[i].key);
+      edge_.push_back({u, v, a, b, kPlain, kPlain, vertex_[v], vertex_[u]});
       for (std::size_t k = i; k < j; ++k)
         piece_half_[pieces[k].piece] = 2 * e + (pieces[k].flipped ? 1 : 0);
     }
     i = j;
   }
   edges = static_cast<std::int64_t>(edge_.size());
-  // Outgoing half-edges per vertex, sorted counter-clockwise from +x.
+  // Outgoing half-edges per vertex, sorted counter-clockwise from +x by the direction of their
+  // first piece.
   const std::size_t nv = vertex_.size();
   out_first_.assign(nv + 1, 0);
   for (const Edge& e : edge_) {
@@ -202,12 +259,13 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     }
   }
   pos_.resize(2 * edge_.size());
+  auto toward = [&](std::int32_t h) { return (h & 1) ? edge_[h >> 1].dv : edge_[h >> 1].du; };
   for (std::size_t v = 0; v < nv; ++v) {
     const auto begin = out_.begin() + out_first_[v], end = out_.begin() + out_first_[v + 1];
     const Vec2 o = vertex_[v];
     if (end - begin > 1) {
       std::sort(begin, end, [&](std::int32_t l, std::int32_t r) {
-        const Vec2 pl = vertex_[head(l)], pr = vertex_[head(r)];
+        const Vec2 pl = toward(l), pr = toward(r);
         const int hl = half_of(o, pl), hr = half_of(o, pr);
         if (hl != hr) return hl < hr;
         return orient2d(o, pl, pr) == Sign::positive;
@@ -215,6 +273,23 @@ void Arrangement::build_graph(const ArrangementInput& input) {
     }
     for (auto it = begin; it != end; ++it)
       pos_[*it] = static_cast<std::uint32_t>(it - begin);
+  }
+}
+
+void Arrangement::append_points(std::int32_t h, std::vector<Vec2>& out) const {
+  const Edge& e = edge_[h >> 1];
+  out.push_back(vertex_[tail(h)]);
+  if (e.i0 == kPlain) return;
+  const std::vector<Vec2>& pts = noded_.points;
+  // A joint's two copies are equal neighbours: the second one is left out.
+  if ((h & 1) == 0) {
+    for (std::uint32_t k = e.i0 + 1; k < e.i1; ++k) {
+      if (pts[k] != pts[k - 1]) out.push_back(pts[k]);
+    }
+  } else {
+    for (std::uint32_t k = e.i1 - 1; k > e.i0; --k) {
+      if (pts[k] != pts[k + 1]) out.push_back(pts[k]);
+    }
   }
 }
 
@@ -243,55 +318,99 @@ void Arrangement::label_faces() {
   face_a_.assign(nf, 0);
   face_b_.assign(nf, 0);
   std::vector<char> done(nf, 0);
-  // Components of the graph; vertices in (x, y) order meet each component first at its lowest.
+  const std::vector<Vec2>& pts = noded_.points;
+  // Components of the graph, and the lowest (x, y) point of each, a vertex or a point inside a
+  // run (ids of the lowest vertex, or kNone and the run's edge and point index).
   const std::size_t nv = vertex_.size();
   UnionFind comp(nv);
   for (const Edge& e : edge_)
     comp.unite(e.u, e.v);
-  std::vector<char> seen(nv, 0);
-  std::vector<std::int32_t> queue;
-  for (std::size_t v0 = 0; v0 < nv; ++v0) {
-    const std::uint32_t deg = out_first_[v0 + 1] - out_first_[v0];
-    if (deg == 0) continue;
-    const std::uint32_t root = comp.find(static_cast<std::uint32_t>(v0));
-    if (seen[root]) continue;
-    seen[root] = 1;
-    // The outer face is left of the last half-edge of the upper half-plane (or the last one).
-    const Vec2 o = vertex_[v0];
-    std::uint32_t upper = 0;
-    for (std::uint32_t i = 0; i < deg; ++i) {
-      if (half_of(o, vertex_[head(out_[out_first_[v0] + i])]) == 0) ++upper;
+  struct Lowest {
+    Vec2 p;
+    std::uint32_t vertex = kNone;
+    std::uint32_t edge = kNone;
+    std::uint32_t k = 0;
+  };
+  std::vector<Lowest> lowest(nv);
+  std::vector<char> has(nv, 0);
+  for (std::uint32_t ei = 0; ei < edge_.size(); ++ei) {
+    const Edge& e = edge_[ei];
+    const std::uint32_t root = comp.find(e.u);
+    Lowest best{vertex_[std::min(e.u, e.v)], std::min(e.u, e.v), kNone, 0};
+    if (e.i0 != kPlain) {
+      for (std::uint32_t k = e.i0 + 1; k < e.i1; ++k) {
+        if (lex_less(pts[k], best.p) && pts[k] != pts[k - 1]) best = {pts[k], kNone, ei, k};
+      }
     }
-    const std::int32_t h0 = out_[out_first_[v0] + (upper > 0 ? upper - 1 : deg - 1)];
-    // Winding numbers of v0: edges crossing the open ray towards -x (half-open rule: an
-    // endpoint on the ray's line counts as below it).
+    if (!has[root] || lex_less(best.p, lowest[root].p) ||
+        (best.p == lowest[root].p && best.vertex < lowest[root].vertex)) {
+      lowest[root] = best;
+      has[root] = 1;
+    }
+  }
+  std::vector<std::int32_t> queue;
+  for (std::size_t root = 0; root < nv; ++root) {
+    if (!has[root]) continue;
+    const Lowest& low = lowest[root];
+    const Vec2 o = low.p;
+    std::int32_t f0 = -1;
+    if (low.vertex != kNone) {
+      // The outer face is left of the last half-edge of the upper half-plane (or the last one).
+      const std::uint32_t v0 = low.vertex;
+      const std::uint32_t deg = out_first_[v0 + 1] - out_first_[v0];
+      std::uint32_t upper = 0;
+      for (std::uint32_t i = 0; i < deg; ++i) {
+        const std::int32_t h = out_[out_first_[v0] + i];
+        if (half_of(o, (h & 1) ? edge_[h >> 1].dv : edge_[h >> 1].du) == 0) ++upper;
+      }
+      f0 = face_[out_[out_first_[v0] + (upper > 0 ? upper - 1 : deg - 1)]];
+    } else {
+      // A run passes a -> o -> b with a and b above o in (x, y) order: the direction -x from o
+      // is left of the run when b turns counter-clockwise from a.
+      const Vec2 a = pts[low.k - 1];
+      const Vec2 b = pts[low.k + 1] != o ? pts[low.k + 1] : pts[low.k + 2];
+      const bool left = orient2d(o, a, b) == Sign::positive;
+      f0 = face_[2 * low.edge + (left ? 0 : 1)];
+    }
+    // Winding numbers of o: pieces crossing the open ray towards -x (half-open rule: an
+    // endpoint on the ray's line counts as below it). No piece of the component meets the open
+    // ray, and no piece of another component passes through o.
     int wa = 0, wb = 0;
     std::int32_t nearest = -1;  // the edge hit first by the ray: the face around C is beside it
     Vec2 near_lo, near_hi;
-    for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
-      const Edge& e = edge_[ei];
-      const Vec2 p = vertex_[e.u], q = vertex_[e.v];
+    bool near_up = false;
+    auto piece = [&](std::int32_t ei, const Edge& e, Vec2 p, Vec2 q) {
       const bool pb = p.y <= o.y, qb = q.y <= o.y;
-      if (pb == qb) continue;
-      if (p.x >= o.x && q.x >= o.x) continue;
+      if (pb == qb) return;
+      if (p.x >= o.x && q.x >= o.x) return;
       // Upward orientation lo -> hi; the crossing is left of o when o is right of lo -> hi.
-      const bool up = pb;  // p below: u -> v goes up
+      const bool up = pb;  // p below: the edge goes up here
       const Vec2 lo = up ? p : q, hi = up ? q : p;
-      if (orient2d(lo, hi, o) != Sign::negative) continue;
+      if (orient2d(lo, hi, o) != Sign::negative) return;
       // Crossing from far left to o over an upward edge goes from its left to its right.
       wa += up ? -e.a : e.a;
       wb += up ? -e.b : e.b;
       if (nearest < 0 || crosses_right_of(near_lo, near_hi, lo, hi)) {
-        nearest = static_cast<std::int32_t>(ei);
+        nearest = ei;
         near_lo = lo;
         near_hi = hi;
+        near_up = up;
+      }
+    };
+    for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
+      const Edge& e = edge_[ei];
+      const auto id = static_cast<std::int32_t>(ei);
+      if (e.i0 == kPlain) {
+        piece(id, e, vertex_[e.u], vertex_[e.v]);
+      } else {
+        for (std::uint32_t k = e.i0; k < e.i1; ++k)
+          piece(id, e, pts[k], pts[k + 1]);
       }
     }
-    const std::int32_t f0 = face_[h0];
     if (nearest >= 0) {
-      // East of the upward edge lo -> hi is right of it: the face left of the reverse half-edge.
-      const bool up = vertex_[edge_[nearest].u] == near_lo;
-      face_links_.emplace_back(f0, face_[2 * nearest + (up ? 1 : 0)]);
+      // East of the upward piece lo -> hi is right of it: the face left of the reverse
+      // half-edge when the edge runs upward there.
+      face_links_.emplace_back(f0, face_[2 * nearest + (near_up ? 1 : 0)]);
     }
     face_a_[f0] = wa;
     face_b_[f0] = wb;
@@ -335,38 +454,52 @@ MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) con
     }
   }
   struct Loop {
-    std::vector<std::uint32_t> vertices;
+    Ring ring;
     std::uint32_t region;
     bool shell;
-    std::uint32_t key;  // earliest input segment among its vertices, else kNone
+    std::uint32_t key;  // earliest input segment starting at one of its points, else kNone
   };
   std::vector<Loop> loops;
   std::vector<char> used(nh, 0);
   std::vector<std::int32_t> stack;
   std::vector<std::int32_t> mark(vertex_.size(), -1);
+  const std::vector<std::uint32_t>& first = noded_.first;
   auto emit = [&](std::span<const std::int32_t> hs) {
     Loop loop;
-    loop.vertices.reserve(hs.size());
-    for (std::int32_t h : hs)
-      loop.vertices.push_back(tail(h));
     loop.region = region.find(static_cast<std::uint32_t>(face_[hs[0]]));
-    // The lowest vertex (ids are in (x, y) order) is convex: its turn gives the orientation.
-    const std::size_t n = loop.vertices.size();
-    std::size_t m = 0, k = 0;
+    Ring& ring = loop.ring;
     std::uint32_t key = kNone;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (loop.vertices[i] < loop.vertices[m]) m = i;
-      if (origin_[loop.vertices[i]] < key) {
-        key = origin_[loop.vertices[i]];
-        k = i;
+    std::size_t k = 0;
+    for (const std::int32_t h : hs) {
+      const std::uint32_t t = tail(h);
+      if (origin_[t] < key) {
+        key = origin_[t];
+        k = ring.size();
+      }
+      const Edge& e = edge_[h >> 1];
+      const std::size_t before = ring.size();
+      append_points(h, ring);
+      if (e.i0 == kPlain) continue;
+      // Points inside a run are joints, each the start of the segment after the one that ends
+      // there: the earliest is the end of the segment holding i0, first in the run's direction.
+      if (ring.size() == before + 1) continue;
+      const auto seg = static_cast<std::uint32_t>(
+          std::upper_bound(first.begin(), first.end(), e.i0) - first.begin());
+      if (seg < key) {
+        key = seg;
+        k = (h & 1) ? ring.size() - 1 : before + 1;
       }
     }
-    loop.shell = orient2d(vertex_[loop.vertices[(m + n - 1) % n]], vertex_[loop.vertices[m]],
-                          vertex_[loop.vertices[(m + 1) % n]]) == Sign::positive;
+    // The lowest point is convex: its turn gives the orientation.
+    const std::size_t n = ring.size();
+    std::size_t m = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (lex_less(ring[i], ring[m])) m = i;
+    }
+    loop.shell = orient2d(ring[(m + n - 1) % n], ring[m], ring[(m + 1) % n]) == Sign::positive;
     loop.key = key;
     if (key == kNone) k = m;
-    std::rotate(loop.vertices.begin(), loop.vertices.begin() + static_cast<std::ptrdiff_t>(k),
-                loop.vertices.end());
+    std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(k), ring.end());
     loops.push_back(std::move(loop));
   };
   for (std::size_t h0 = 0; h0 < nh; ++h0) {
@@ -411,28 +544,23 @@ MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) con
   }
   std::vector<std::size_t> order(loops.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  auto rank = [&](std::size_t i) { return std::pair{loops[i].key, loops[i].vertices.front()}; };
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t l, std::size_t r) { return rank(l) < rank(r); });
+  // By the earliest input vertex, then the first point: ties keep the order found.
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) {
+    if (loops[l].key != loops[r].key) return loops[l].key < loops[r].key;
+    return lex_less(loops[l].ring.front(), loops[r].ring.front());
+  });
   MultiPolygon out;
   std::vector<std::int32_t> polygon_of(loops.size(), -1);
-  auto ring_of = [&](const Loop& loop) {
-    Ring ring;
-    ring.reserve(loop.vertices.size());
-    for (std::uint32_t v : loop.vertices)
-      ring.push_back(vertex_[v]);
-    return ring;
-  };
   for (std::size_t i : order) {
     if (!loops[i].shell) continue;
     polygon_of[i] = static_cast<std::int32_t>(out.polygons.size());
-    out.polygons.push_back(Polygon{{ring_of(loops[i])}});
+    out.polygons.push_back(Polygon{{std::move(loops[i].ring)}});
   }
   for (std::size_t i : order) {
     if (loops[i].shell) continue;
     const std::int32_t s = shell_of[loops[i].region];
     if (s < 0) continue;  // cannot happen for a bounded kept region
-    out.polygons[polygon_of[s]].rings.push_back(ring_of(loops[i]));
+    out.polygons[polygon_of[s]].rings.push_back(std::move(loops[i].ring));
   }
   return out;
 }

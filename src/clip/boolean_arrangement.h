@@ -21,7 +21,8 @@ struct SegmentLabel {
   bool open = false;
 };
 
-/// Input segments of A (label {1, 0}) and B ({0, 1}), zero-length edges left out.
+/// Input segments of A (label {1, 0}) and B ({0, 1}), zero-length edges left out. Consecutive
+/// segments with the same label where one ends and the next starts continue one path.
 struct ArrangementInput {
   std::vector<NodingInput> segments;
   std::vector<SegmentLabel> labels;
@@ -32,7 +33,8 @@ struct ArrangementInput {
 
 class Arrangement {
  public:
-  /// Nodes the segments and builds the graph, its faces and their winding numbers.
+  /// Nodes the segments and builds the graph, its faces and their winding numbers. A run of
+  /// pieces along a path through points that nothing else meets (Noded::event) is one edge.
   explicit Arrangement(const ArrangementInput& input);
 
   /// The result region: faces where `keep(w_a, w_b)`, as OGC-valid polygons.
@@ -56,10 +58,17 @@ class Arrangement {
   bool converged = true;
 
  private:
+  // A run of noded pieces from u to v: noded points i0 .. i1 (a joint's two copies are equal
+  // neighbours), or a single piece (i0 == kPlain) whose merged copies add up.
   struct Edge {
     std::uint32_t u, v;
     std::int32_t a, b;  // multiplicity along u -> v
+    std::uint32_t i0, i1;
+    Vec2 du, dv;  // the points after u and before v along the edge
   };
+  static constexpr std::uint32_t kPlain = 0xffffffffu;
+  // Appends the points of half-edge h from its tail up to (not including) its head.
+  void append_points(std::int32_t h, std::vector<Vec2>& out) const;
   [[nodiscard]] std::uint32_t tail(std::int32_t h) const {
     return (h & 1) ? edge_[h >> 1].v : edge_[h >> 1].u;
   }
@@ -67,7 +76,7 @@ class Arrangement {
     return (h & 1) ? edge_[h >> 1].u : edge_[h >> 1].v;
   }
   [[nodiscard]] std::int32_t next(std::int32_t h) const;
-  void build_graph(const ArrangementInput& input);
+  void build_graph(const ArrangementInput& input, std::span<const char> links);
   void label_faces();
 
   Noded noded_;

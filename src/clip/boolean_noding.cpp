@@ -227,20 +227,52 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
   splits.push_back({s, x});
 }
 
+// Marks point k as a vertex of the arrangement (Noded::event).
+struct Marks {
+  std::vector<char>& event;
+  void operator()(std::uint32_t k) const { event[k] = 1; }
+};
+
+// x on the closed piece a b, given that a, b, x are collinear.
+bool on_piece(Vec2 a, Vec2 b, Vec2 x) {
+  return x == a || x == b || strictly_inside(a, b, x);
+}
+
+// `linked`: t is the piece after s on a linked path (t == s + 2, points[s + 1] the joint); their
+// common joint is then no event.
 void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, double radius,
-               std::vector<Split>& splits, std::vector<Vec2>& hot, std::int64_t& crossings) {
+               std::vector<Split>& splits, std::vector<Vec2>& hot, std::int64_t& crossings,
+               const Marks& mark, bool linked) {
   const Vec2 p0 = pts[s], p1 = pts[s + 1], q0 = pts[t], q1 = pts[t + 1];
   const Sign o1 = orient(p0, p1, q0);
   const Sign o2 = orient(p0, p1, q1);
   if (o1 == o2 && o1 != Sign::zero) return;
   // Pieces sharing an endpoint, the other one off the line: that endpoint is all they share.
-  if (o1 == Sign::zero && o2 != Sign::zero && (q0 == p0 || q0 == p1)) return;
-  if (o2 == Sign::zero && o1 != Sign::zero && (q1 == p0 || q1 == p1)) return;
+  if (o1 == Sign::zero && o2 != Sign::zero && (q0 == p0 || q0 == p1)) {
+    if (!(linked && q0 == p1)) {
+      mark(t);
+      mark(q0 == p0 ? s : s + 1);
+    }
+    return;
+  }
+  if (o2 == Sign::zero && o1 != Sign::zero && (q1 == p0 || q1 == p1)) {
+    mark(t + 1);
+    mark(q1 == p0 ? s : s + 1);
+    return;
+  }
   const Sign o3 = orient(q0, q1, p0);
   const Sign o4 = orient(q0, q1, p1);
   if (o3 == o4 && o3 != Sign::zero) return;
   if (o1 == Sign::zero && o2 == Sign::zero) {
-    // Collinear: boxes overlap (the sweep checked), so the pieces overlap or touch.
+    // Collinear: boxes overlap (the caller checked), so the pieces overlap or touch. Every
+    // endpoint on the other piece is a vertex, but for the joint of a straight linked path.
+    const bool q0_on = on_piece(p0, p1, q0), q1_on = on_piece(p0, p1, q1);
+    const bool p0_on = on_piece(q0, q1, p0), p1_on = on_piece(q0, q1, p1);
+    if (linked && !q1_on && !p0_on) return;
+    if (q0_on) mark(t);
+    if (q1_on) mark(t + 1);
+    if (p0_on) mark(s);
+    if (p1_on) mark(s + 1);
     if (strictly_inside(p0, p1, q0)) splits.push_back({s, q0});
     if (strictly_inside(p0, p1, q1)) splits.push_back({s, q1});
     if (strictly_inside(q0, q1, p0)) splits.push_back({t, p0});
@@ -252,18 +284,26 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, d
   bool touched = false;
   if (o1 == Sign::zero) {
     touched = true;
+    mark(t);
+    if (q0 == p0) mark(s);
+    if (q0 == p1) mark(s + 1);
     if (q0 != p0 && q0 != p1) splits.push_back({s, q0});
   }
   if (o2 == Sign::zero) {
     touched = true;
+    mark(t + 1);
+    if (q1 == p0) mark(s);
+    if (q1 == p1) mark(s + 1);
     if (q1 != p0 && q1 != p1) splits.push_back({s, q1});
   }
   if (o3 == Sign::zero) {
     touched = true;
+    mark(s);
     if (p0 != q0 && p0 != q1) splits.push_back({t, p0});
   }
   if (o4 == Sign::zero) {
     touched = true;
+    mark(s + 1);
     if (p1 != q0 && p1 != q1) splits.push_back({t, p1});
   }
   if (touched) return;
@@ -279,17 +319,128 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, d
       snapped = true;
     }
   }
-  if (snapped) x = best;
+  if (snapped) {
+    x = best;
+    const std::uint32_t ends[4] = {s, s + 1, t, t + 1};
+    for (const std::uint32_t k : ends) {
+      if (pts[k] == x) mark(k);
+    }
+  }
   hot.push_back(x);
   if (x != p0 && x != p1) splits.push_back({s, x});
   if (x != q0 && x != q1) splits.push_back({t, x});
 }
 
+// Maximal runs of linked segments whose points strictly increase (or strictly decrease) in
+// (x, y) order. A segment lies in the (x, y) interval of its endpoints, and the intervals of a
+// chain's segments follow each other, so two segments of one chain meet at most at the joint of
+// consecutive ones: the first round tests only pairs from different chains (rule
+// clip-noding-chains in docs/robustness.md).
+struct Chain {
+  std::uint32_t first, last;  // segments first .. last - 1
+  bool up;                    // the points increase along the segments
+  double xmin, xmax, ymin, ymax;
+};
+
+std::vector<Chain> monotone_chains(std::span<const NodingInput> segments,
+                                   std::span<const char> links) {
+  std::vector<Chain> chains;
+  const auto n = static_cast<std::uint32_t>(segments.size());
+  for (std::uint32_t c = 0; c < n;) {
+    const bool up = lex_less(segments[c].a, segments[c].b);
+    std::uint32_t e = c + 1;
+    while (e < n && links[e - 1] != 0 && lex_less(segments[e].a, segments[e].b) == up)
+      ++e;
+    const Vec2 lo = up ? segments[c].a : segments[e - 1].b;
+    const Vec2 hi = up ? segments[e - 1].b : segments[c].a;
+    Chain ch{c, e, up, lo.x, hi.x, lo.y, lo.y};
+    for (std::uint32_t k = c; k < e; ++k) {
+      ch.ymin = std::min(ch.ymin, segments[k].b.y);
+      ch.ymax = std::max(ch.ymax, segments[k].b.y);
+    }
+    ch.ymin = std::min(ch.ymin, segments[c].a.y);
+    ch.ymax = std::max(ch.ymax, segments[c].a.y);
+    chains.push_back(ch);
+    c = e;
+  }
+  return chains;
+}
+
+// Calls test(segment i, segment j) for every pair of segments of different chains whose boxes
+// overlap: chains by a sweep over their x intervals, segments of a chain pair by a merge of
+// their x intervals over the common x range (each chain's segments in increasing x order).
+template <class Test>
+void chain_pairs(std::span<const NodingInput> segments, const std::vector<Chain>& chains,
+                 Test&& test) {
+  struct Seg {
+    Vec2 lo, hi;
+    std::uint32_t index;
+  };
+  auto at = [&](const Chain& ch, std::uint32_t i) {
+    const std::uint32_t k = ch.up ? ch.first + i : ch.last - 1 - i;
+    const NodingInput& sg = segments[k];
+    return ch.up ? Seg{sg.a, sg.b, k} : Seg{sg.b, sg.a, k};
+  };
+  auto walk = [&](const Chain& c, const Chain& d) {
+    const double x0 = std::max(c.xmin, d.xmin), x1 = std::min(c.xmax, d.xmax);
+    const std::uint32_t nc = c.last - c.first, nd = d.last - d.first;
+    // First segments whose high end reaches x0 (high ends do not decrease along a chain).
+    auto start = [&](const Chain& ch, std::uint32_t len) {
+      std::uint32_t lo = 0, hi = len;
+      while (lo < hi) {
+        const std::uint32_t mid = (lo + hi) / 2;
+        if (at(ch, mid).hi.x < x0) {
+          lo = mid + 1;
+        } else {
+          hi = mid;
+        }
+      }
+      return lo;
+    };
+    std::uint32_t j0 = start(d, nd);
+    for (std::uint32_t i = start(c, nc); i < nc; ++i) {
+      const Seg s = at(c, i);
+      if (s.lo.x > x1) break;
+      const double sy0 = std::min(s.lo.y, s.hi.y), sy1 = std::max(s.lo.y, s.hi.y);
+      while (j0 < nd && at(d, j0).hi.x < s.lo.x)
+        ++j0;
+      for (std::uint32_t j = j0; j < nd; ++j) {
+        const Seg t = at(d, j);
+        if (t.lo.x > s.hi.x) break;
+        if (std::max(t.lo.y, t.hi.y) < sy0 || std::min(t.lo.y, t.hi.y) > sy1) continue;
+        test(s.index, t.index);
+      }
+    }
+  };
+  std::vector<std::uint32_t> order(chains.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t l, std::uint32_t r) {
+    return chains[l].xmin < chains[r].xmin || (chains[l].xmin == chains[r].xmin && l < r);
+  });
+  std::vector<std::uint32_t> active;
+  for (const std::uint32_t ci : order) {
+    const Chain& c = chains[ci];
+    std::size_t m = 0;
+    for (const std::uint32_t di : active) {
+      const Chain& d = chains[di];
+      if (d.xmax < c.xmin) continue;
+      active[m++] = di;
+      if (d.ymax < c.ymin || c.ymax < d.ymin) continue;
+      walk(c, d);
+    }
+    active.resize(m);
+    active.push_back(ci);
+  }
+}
+
 }  // namespace
 
-Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
+Noded node_segments(std::span<const NodingInput> segments, std::span<const char> links,
+                    double magnitude) {
   Noded out;
   const auto n = static_cast<std::uint32_t>(segments.size());
+  const bool linked_paths = links.size() == segments.size();
   out.points.reserve(2 * n);
   out.first.reserve(n + 1);
   const bool given = magnitude > 0.0;
@@ -302,6 +453,14 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
           {magnitude, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
   }
   out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
+  out.event.assign(out.points.size(), 0);
+  // joint[k]: points[k] ends a segment linked to the next one (the piece at k + 1 continues it).
+  std::vector<char> joint(out.points.size(), 0);
+  if (linked_paths) {
+    for (std::uint32_t c = 0; c < n; ++c)
+      joint[out.first[c + 1] - 1] = links[c];
+  }
+  const Marks mark{out.event};
   // Hot pixels: half-side of two ulps of the largest coordinate (rule clip-noding).
   const double radius = magnitude > 0 ? std::ldexp(1.0, std::ilogb(magnitude) - 51)
                                       : std::numeric_limits<double>::min();
@@ -316,89 +475,110 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
   std::vector<std::uint32_t> stamp;
   constexpr std::uint32_t kNoStamp = std::numeric_limits<std::uint32_t>::max();
   std::vector<Split> splits;
+  auto pair = [&](std::uint32_t s, std::uint32_t t) {
+    // The lower piece first: the rounded crossing does not depend on the visiting order.
+    if (t < s) std::swap(s, t);
+    test_pair(out.points, s, t, radius, splits, hot, out.crossings, mark,
+              t == s + 2 && joint[s + 1] != 0);
+  };
+  // First round by monotone chains when they are long (smooth input); short chains (spiky
+  // input, many small rings) go to the grid.
+  bool chains_done = false;
+  if (linked_paths && n > 0) {
+    const std::vector<Chain> chains = monotone_chains(segments, links);
+    if (4 * chains.size() <= n) {
+      ++out.rounds;
+      chain_pairs(segments, chains,
+                  [&](std::uint32_t i, std::uint32_t j) { pair(out.first[i], out.first[j]); });
+      chains_done = true;
+    }
+  }
   constexpr int kMaxRounds = 256;
   for (int round = 0; round < kMaxRounds; ++round) {
-    ++out.rounds;
-    items.clear();
-    for (std::uint32_t c = 0; c < n; ++c) {
-      for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k) {
-        const Vec2 a = out.points[k], b = out.points[k + 1];
-        items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
-                         std::max(a.y, b.y), k, fresh[k] != 0, false});
-      }
-    }
-    for (std::size_t i = 0; i < hot.size(); ++i) {
-      const Vec2 x = hot[i];
-      items.push_back({x.x - radius, x.x + radius, x.y - radius, x.y + radius,
-                       static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
-    }
-    const std::size_t hot_before = hot.size();
-    keys.clear();
-    if (round == 0) {
-      for (std::uint32_t i = 0; i < items.size(); ++i)
-        keys.push_back({i, 0});
-    } else {
-      // Old items meet only fresh ones: leave out those whose x interval meets none of theirs.
-      spans.clear();
-      for (const Item& it : items) {
-        if (it.fresh) spans.push_back({it.xmin, it.xmax});
-      }
-      std::sort(spans.begin(), spans.end());
-      std::size_t m = 0;
-      for (const auto& sp : spans) {
-        if (m > 0 && sp.first <= spans[m - 1].second) {
-          spans[m - 1].second = std::max(spans[m - 1].second, sp.second);
-        } else {
-          spans[m++] = sp;
+    if (!(chains_done && round == 0)) {
+      ++out.rounds;
+      items.clear();
+      for (std::uint32_t c = 0; c < n; ++c) {
+        for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k) {
+          const Vec2 a = out.points[k], b = out.points[k + 1];
+          items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
+                           std::max(a.y, b.y), k, fresh[k] != 0, false});
         }
       }
-      spans.resize(m);
-      for (std::uint32_t i = 0; i < items.size(); ++i) {
-        const Item& it = items[i];
-        if (!it.fresh) {
-          // The first merged span that does not end before the item starts.
-          const auto at = std::lower_bound(
-              spans.begin(), spans.end(), it.xmin,
-              [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
-          if (at == spans.end() || at->first > it.xmax) continue;
-        }
-        keys.push_back({i, 0});
+      for (std::size_t i = 0; i < hot.size(); ++i) {
+        const Vec2 x = hot[i];
+        items.push_back({x.x - radius, x.x + radius, x.y - radius, x.y + radius,
+                         static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
       }
-    }
-    splits.clear();
-    grid.points_ = &out.points;
-    grid.build(items, keys);
-    // A fresh item meets every item sharing a cell with it, an old one only the fresh ones; each
-    // pair once (stamps), from its fresh side with the higher index when both are fresh.
-    stamp.assign(items.size(), kNoStamp);
-    for (const Key& key : keys) {
-      const std::uint32_t i = key.item;
-      const Item& it = items[i];
-      if (!it.fresh) continue;
-      for (const std::uint32_t cell : grid.cells_of(key.rank)) {
-        for (const std::uint32_t j : grid.items_in(cell)) {
-          if (j == i || stamp[j] == i) continue;
-          stamp[j] = i;
-          const Item& jt = items[j];
-          if (jt.fresh && j > i) continue;
-          if (it.pixel && jt.pixel) continue;
-          if (jt.xmax < it.xmin || it.xmax < jt.xmin || jt.ymax < it.ymin || it.ymax < jt.ymin)
-            continue;
-          if (it.pixel) {
-            test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
-          } else if (jt.pixel) {
-            test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
+      const std::size_t hot_before = hot.size();
+      keys.clear();
+      if (round == 0) {
+        for (std::uint32_t i = 0; i < items.size(); ++i)
+          keys.push_back({i, 0});
+      } else {
+        // Old items meet only fresh ones: leave out those whose x interval meets none of theirs.
+        spans.clear();
+        for (const Item& it : items) {
+          if (it.fresh) spans.push_back({it.xmin, it.xmax});
+        }
+        std::sort(spans.begin(), spans.end());
+        std::size_t m = 0;
+        for (const auto& sp : spans) {
+          if (m > 0 && sp.first <= spans[m - 1].second) {
+            spans[m - 1].second = std::max(spans[m - 1].second, sp.second);
           } else {
-            // The lower piece first: the rounded crossing does not depend on the visiting order.
-            test_pair(out.points, std::min(it.piece, jt.piece), std::max(it.piece, jt.piece),
-                      radius, splits, hot, out.crossings);
+            spans[m++] = sp;
+          }
+        }
+        spans.resize(m);
+        for (std::uint32_t i = 0; i < items.size(); ++i) {
+          const Item& it = items[i];
+          if (!it.fresh) {
+            // The first merged span that does not end before the item starts.
+            const auto at = std::lower_bound(
+                spans.begin(), spans.end(), it.xmin,
+                [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
+            if (at == spans.end() || at->first > it.xmax) continue;
+          }
+          keys.push_back({i, 0});
+        }
+      }
+      splits.clear();
+      grid.points_ = &out.points;
+      grid.build(items, keys);
+      // A fresh item meets every item sharing a cell with it, an old one only the fresh ones;
+      // each pair once (stamps), from its fresh side with the higher index when both are fresh.
+      stamp.assign(items.size(), kNoStamp);
+      for (const Key& key : keys) {
+        const std::uint32_t i = key.item;
+        const Item& it = items[i];
+        if (!it.fresh) continue;
+        for (const std::uint32_t cell : grid.cells_of(key.rank)) {
+          for (const std::uint32_t j : grid.items_in(cell)) {
+            if (j == i || stamp[j] == i) continue;
+            stamp[j] = i;
+            const Item& jt = items[j];
+            if (jt.fresh && j > i) continue;
+            if (it.pixel && jt.pixel) continue;
+            if (jt.xmax < it.xmin || it.xmax < jt.xmin || jt.ymax < it.ymin || it.ymax < jt.ymin)
+              continue;
+            if (it.pixel) {
+              test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
+            } else if (jt.pixel) {
+              test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
+            } else {
+              pair(it.piece, jt.piece);
+            }
           }
         }
       }
+      hot_fresh_from = hot_before;
+    } else {
+      hot_fresh_from = 0;  // every crossing of the chain round is new
     }
-    hot_fresh_from = hot_before;
     if (splits.empty()) return out;
-    // Insert the splits, ordered along their piece; the pieces they make are new.
+    // Insert the splits, ordered along their piece; the pieces they make are new, and so are
+    // their points (events).
     std::sort(splits.begin(), splits.end(), [&](const Split& l, const Split& r) {
       if (l.piece != r.piece) return l.piece < r.piece;
       const Vec2 a = out.points[l.piece], d = out.points[l.piece + 1] - a;
@@ -408,9 +588,10 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
     });
     std::vector<Vec2> points;
     std::vector<std::uint32_t> first;
-    std::vector<char> next_fresh;
+    std::vector<char> next_fresh, next_event;
     points.reserve(out.points.size() + splits.size());
     next_fresh.reserve(out.points.size() + splits.size());
+    next_event.reserve(out.points.size() + splits.size());
     first.reserve(n + 1);
     std::size_t si = 0;
     for (std::uint32_t c = 0; c < n; ++c) {
@@ -419,6 +600,7 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
       for (std::uint32_t k = out.first[c]; k < end; ++k) {
         points.push_back(out.points[k]);
         next_fresh.push_back(0);
+        next_event.push_back(out.event[k]);
         if (si < splits.size() && splits[si].piece == k) {
           next_fresh.back() = 1;
           const Vec2 a = out.points[k], b = out.points[k + 1];
@@ -427,6 +609,7 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
             if (x == a || x == b || x == points.back()) continue;
             points.push_back(x);
             next_fresh.push_back(1);
+            next_event.push_back(1);
           }
         }
       }
@@ -434,7 +617,13 @@ Noded node_segments(std::span<const NodingInput> segments, double magnitude) {
     first.push_back(static_cast<std::uint32_t>(points.size()));
     out.points = std::move(points);
     out.first = std::move(first);
+    out.event = std::move(next_event);
     fresh = std::move(next_fresh);
+    joint.assign(out.points.size(), 0);
+    if (linked_paths) {
+      for (std::uint32_t c = 0; c < n; ++c)
+        joint[out.first[c + 1] - 1] = links[c];
+    }
   }
   out.converged = false;
   return out;

@@ -21,6 +21,11 @@ struct NodingInput {
 struct Noded {
   std::vector<Vec2> points;
   std::vector<std::uint32_t> first;
+  /// Per point: 1 when the arrangement must treat it as a vertex of its own: a point made by a
+  /// split, or an endpoint that another piece meets (shares, touches, overlaps) other than the
+  /// next piece of a linked segment at their common joint. A point left 0 is met by no piece but
+  /// its two neighbours along its path.
+  std::vector<char> event;
   std::int64_t crossings = 0;
   std::int64_t rounds = 0;
   bool converged = true;
@@ -34,6 +39,10 @@ struct Noded {
 /// positive, replaces the largest coordinate of the segments in the hot-pixel size (the booleans
 /// pass the one of their whole input when they leave far edges out, so that the pixels stay the
 /// same).
-[[nodiscard]] Noded node_segments(std::span<const NodingInput> segments, double magnitude = 0.0);
+/// `links` (empty, or one per segment): links[i] != 0 when segment i + 1 starts where segment i
+/// ends and continues the same path; the first round then takes candidate pairs from maximal
+/// monotone chains of linked segments (rule clip-noding-chains) and the joints are not events.
+[[nodiscard]] Noded node_segments(std::span<const NodingInput> segments,
+                                  std::span<const char> links = {}, double magnitude = 0.0);
 
 }  // namespace contain::clip::detail
