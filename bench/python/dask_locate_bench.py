@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Points per second of contain.dask.locate on 1 and 2 Dask worker processes, and the speed-up.
+
+Run with Debian's python3 and the module on PYTHONPATH (the build tree's python/ or an
+installed prefix), from the project root:
+
+    PYTHONPATH=build/release/python /usr/bin/python3 bench/python/dask_locate_bench.py \
+        --out bench/results/debian12-2core/dask_locate.txt
+
+Scene: the armadillo of ../shared/corpus/meshes (86,482 triangles, closed) when ../shared is
+there, else a built-in torus; points uniform in the mesh's box padded by 10%, generated on the
+workers by dask.array.random and persisted there before timing (so the timed part is the
+classification, the scheduling and the reduction, not the data's transfer). Each cluster is a
+distributed.LocalCluster of n worker processes with one thread each on 127.0.0.1; each chunk is
+classified on one thread (contain.dask's default). Timed: best of --repeat runs of
+(contain.dask.locate(points, mesh) == inside).sum().compute(), after a warm-up run in which each
+worker builds its index (once; its time is reported apart). Also reported, without Dask: one
+process on 1 and 2 threads (MeshIndex.locate), the ceiling that the workers approach.
+"""
+
+import argparse
+import datetime
+import os
+import pathlib
+import platform
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+import contain
+import contain.dask
+
+PROJECT = pathlib.Path(__file__).resolve().parents[2]
+
+
+def machine():
+    model = "unknown CPU"
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{os.cpu_count()}-core {platform.machine()} ({model}), {platform.platform()}, Python {platform.python_version()}"
+
+
+def load():
+    return " ".join(f"{value:.2f}" for value in os.getloadavg())
+
+
+def scene(args):
+    armadillo = PROJECT.parent / "shared/corpus/meshes/armadillo.obj"
+    if args.mesh:
+        path = pathlib.Path(args.mesh)
+    elif armadillo.exists():
+        path = armadillo
+    else:
+        sys.path.insert(0, str(PROJECT / "tests/python"))
+        from meshes import torus
+
+        path = pathlib.Path("/tmp/contain_bench_torus.ply")
+        contain.write_mesh(torus(rings=256, sides=128), path)
+    return path
+
+
+def best_of(repeat, run):
+    times = []
+    result = None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = run()
+        times.append(time.perf_counter() - start)
+    return min(times), result
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--points", type=int, default=20_000_000)
+    parser.add_argument("--chunk", type=int, default=500_000)
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--mesh", help="a mesh file (default: the armadillo of ../shared)")
+    parser.add_argument("--out", help="also write the report to this file")
+    args = parser.parse_args()
+
+    import dask.array as da
+    import distributed
+
+    path = scene(args)
+    index = contain.MeshIndex.from_file(path)
+    low, high = index.bounds
+    pad = 0.1 * (high - low)
+    lines = []
+
+    def say(text=""):
+        print(text, flush=True)
+        lines.append(text)
+
+    commit = subprocess.run(["git", "-C", str(PROJECT), "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    say("# PYTHONPATH=build/release/python /usr/bin/python3 bench/python/dask_locate_bench.py "
+        + " ".join(sys.argv[1:]))
+    say(f"# machine: {machine()}; shared machine, load average at start: {load()}")
+    say(f"# {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%dT%H:%M:%SZ}, commit {commit}, "
+        f"dask {__import__('dask').__version__}, distributed {distributed.__version__}, numpy {np.__version__}")
+    say(f"mesh {path.name}: {index.stats['triangles']} triangles, {index.regime}; "
+        f"{args.points:,} points uniform in its box + 10%, chunks of {args.chunk:,}; best of {args.repeat}")
+
+    local = np.random.default_rng(1).uniform(low - pad, high + pad, (min(args.points, 5_000_000), 3))
+    for threads in (1, 2):
+        seconds, _ = best_of(args.repeat, lambda: index.locate(local, threads=threads))
+        say(f"  one process, no Dask, {threads} thread{'s' if threads > 1 else ' '}      "
+            f"{len(local) / seconds / 1e6:7.2f} M points/s")
+
+    rates = {}
+    for workers in args.workers:
+        cluster = distributed.LocalCluster(n_workers=workers, processes=True, threads_per_worker=1,
+                                           host="127.0.0.1", dashboard_address=None)
+        with distributed.Client(cluster) as client:
+            points = da.random.RandomState(5).uniform(low - pad, high + pad, size=(args.points, 3),
+                                                      chunks=(args.chunk, 3))
+            points = client.persist(points)
+            distributed.wait(points)
+            task = lambda: int((contain.dask.locate(points, path) == 1).sum().compute())  # noqa: E731
+            start = time.perf_counter()
+            inside = task()
+            warm = time.perf_counter() - start
+            seconds, again = best_of(args.repeat, task)
+            assert again == inside
+            builds = client.run(contain.dask.index_builds)
+            rates[workers] = args.points / seconds
+            say(f"  Dask, {workers} worker process{'es' if workers > 1 else '  '} x 1 thread  "
+                f"{rates[workers] / 1e6:7.2f} M points/s  ({seconds:.2f} s; first run with index "
+                f"builds {warm:.2f} s; builds per worker {sorted(builds.values())}; inside {inside:,})")
+        cluster.close()
+    if 1 in rates and 2 in rates:
+        say(f"  speed-up 2 workers / 1 worker: x{rates[2] / rates[1]:.2f}")
+    say(f"# load average at end: {load()}")
+    if args.out:
+        pathlib.Path(args.out).write_text("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,79 @@
+"""Exact point containment, collision and clipping in 2D and 3D, on numpy arrays.
+
+The Python face of the contain C++ library. Two layers, as in C++: one-shot functions
+(point_in_polygon, point_in_mesh, collide, polygon_boolean, bounding_sphere, ...) and prepared
+objects that own their acceleration structure and answer batches on every core with the GIL
+released (MeshIndex, PolygonIndex, MeshPair).
+
+Points go in as (N, 3) or (N, 2) float64 arrays, read in place when C-contiguous (any other
+layout or real dtype is converted once); answers come out as int8 arrays of
+contain.Location values (-1 outside, 0 boundary, 1 inside), or as bool arrays under an explicit
+boundary policy (contains(points, boundary='inside' | 'outside' | 'raise')).
+
+Library errors raise contain.ContainError (a ValueError) carrying the library's message with
+file and line; unreadable files raise contain.ContainIOError (also an OSError). Wrong dtypes
+raise TypeError and wrong shapes ValueError, naming the expected shape.
+
+    >>> import numpy as np, contain
+    >>> index = contain.MeshIndex(contain.read_mesh("part.obj"))
+    >>> answers = index.locate(np.random.default_rng(1).uniform(-1, 1, (1_000_000, 3)))
+    >>> (answers == contain.Location.inside).sum()
+
+contain.dask classifies Dask arrays and dataframes of points on a cluster, building each index
+once per worker process. See docs/python.md and docs/scale.md.
+"""
+
+from ._contain import (
+    Contact,
+    ContainError,
+    ContainIOError,
+    Location,
+    Mesh,
+    MeshIndex,
+    MeshPair,
+    PolygonIndex,
+    Region,
+    aabb,
+    bounding_circle,
+    bounding_sphere,
+    clip_segments,
+    collide,
+    format_mesh,
+    parse_mesh,
+    parse_wkt,
+    point_in_mesh,
+    point_in_polygon,
+    polygon_boolean,
+    read_mesh,
+    read_region,
+    write_mesh,
+    write_wkt,
+)
+from ._contain import __version__
+
+__all__ = [
+    "Contact",
+    "ContainError",
+    "ContainIOError",
+    "Location",
+    "Mesh",
+    "MeshIndex",
+    "MeshPair",
+    "PolygonIndex",
+    "Region",
+    "aabb",
+    "bounding_circle",
+    "bounding_sphere",
+    "clip_segments",
+    "collide",
+    "format_mesh",
+    "parse_mesh",
+    "parse_wkt",
+    "point_in_mesh",
+    "point_in_polygon",
+    "polygon_boolean",
+    "read_mesh",
+    "read_region",
+    "write_mesh",
+    "write_wkt",
+]

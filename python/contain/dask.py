@@ -1,0 +1,288 @@
+"""Classify Dask arrays and dataframes of points against a mesh or a region, past one machine.
+
+    >>> from distributed import Client
+    >>> import dask.array as da, contain.dask
+    >>> client = Client("tcp://scheduler:8786")          # or Client(LocalCluster(...))
+    >>> points = da.from_zarr("survey.zarr")              # (N, 3) float64, chunked by rows
+    >>> answers = contain.dask.locate(points, "/data/building.obj")   # (N,) int8, lazy
+    >>> (answers == contain.Location.inside).sum().compute()
+
+What travels to the workers is a small, picklable `Shape`: the mesh or region file's path
+(each worker reads the file itself: it must see the same path, e.g. a shared file system), or
+its bytes (a `contain.Mesh`, a `contain.Region`, WKT text or `Shape.from_bytes`), placed in the
+task graph once as one key, so that every worker fetches it once. A built index is never
+pickled. Each worker process builds the prepared index (`contain.MeshIndex` or
+`contain.PolygonIndex`) on its first chunk and keeps it in a module-level cache keyed by the
+shape's key (the path with its size and modification time, or the SHA-256 of the bytes), so
+later chunks, and later computations on the same shape, reuse it: one build per worker process,
+not one per chunk. `index_builds()` counts the builds in the calling process
+(`client.run(contain.dask.index_builds)` asks every worker).
+
+Each chunk is classified on `threads` threads (default 1): Dask's workers supply the
+parallelism, one chunk per worker thread, so a cluster of one-thread worker processes uses
+each core once. With threads=0 a chunk uses every core of its machine (for one worker process
+per machine with one thread).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import threading
+from collections import OrderedDict
+from dataclasses import dataclass
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+
+import contain
+
+__all__ = ["Shape", "locate", "locate_dataframe", "index_builds", "clear_cache"]
+
+_REGION_SUFFIXES = (".wkt", ".geojson", ".json")
+_WKT_PREFIXES = ("POLYGON", "MULTIPOLYGON", "SRID=")
+
+
+@dataclass(frozen=True)
+class Shape:
+    """A mesh or region as it travels to the workers: a file path or bytes, never an index.
+
+    kind: 'mesh' (3D points) or 'region' (2D points).
+    key: what the worker cache is keyed by: 'path:<absolute path>:<size>:<mtime ns>' for a
+        file (a changed file gets a new key), 'sha256:<hex>' for bytes.
+    path / data: exactly one is set. format: the mesh format of `data` ('ply', 'obj', 'off',
+        'stl'); WKT for a region's bytes. fill: the fill rule of a region.
+    """
+
+    kind: str
+    key: str
+    path: Optional[str] = None
+    data: Optional[bytes] = None
+    format: Optional[str] = None
+    fill: str = "even_odd"
+
+    @staticmethod
+    def from_path(path: Union[str, os.PathLike], *, fill: str = "even_odd") -> "Shape":
+        """A mesh file (.obj .off .stl .ply) or a region file (.wkt .geojson .json) by path.
+
+        Workers open the path themselves. The key holds the size and modification time seen
+        here when the file exists on this machine, else the path alone.
+        """
+        text = os.path.abspath(os.fspath(path))
+        kind = "region" if text.lower().endswith(_REGION_SUFFIXES) else "mesh"
+        try:
+            stat = os.stat(text)
+            key = f"path:{text}:{stat.st_size}:{stat.st_mtime_ns}"
+        except OSError:
+            key = f"path:{text}"
+        if kind == "region":
+            key += f":{fill}"
+        return Shape(kind=kind, key=key, path=text, fill=fill)
+
+    @staticmethod
+    def from_bytes(data: bytes, format: str, *, fill: str = "even_odd") -> "Shape":
+        """Mesh bytes in `format` ('ply', 'obj', 'off', 'stl'), or region WKT with format='wkt'."""
+        data = bytes(data)
+        kind = "region" if format == "wkt" else "mesh"
+        key = "sha256:" + hashlib.sha256(data).hexdigest()
+        if kind == "region":
+            key += f":{fill}"
+        return Shape(kind=kind, key=key, data=data, format=format, fill=fill)
+
+    @staticmethod
+    def of(shape: Any, *, fill: str = "even_odd") -> "Shape":
+        """A Shape from a Shape, a path, WKT text, a contain.Mesh or a contain.Region."""
+        if isinstance(shape, Shape):
+            return shape
+        if isinstance(shape, contain.Mesh):
+            # Binary PLY stores the doubles: the workers get the mesh bit for bit.
+            return Shape.from_bytes(contain.format_mesh(shape, "ply"), "ply")
+        if isinstance(shape, contain.Region):
+            return Shape.from_bytes(shape.to_wkt().encode(), "wkt", fill=fill)
+        if isinstance(shape, str) and shape.lstrip().upper().startswith(_WKT_PREFIXES):
+            return Shape.from_bytes(shape.encode(), "wkt", fill=fill)
+        if isinstance(shape, (str, os.PathLike)):
+            return Shape.from_path(shape, fill=fill)
+        raise TypeError(
+            "shape must be a path, WKT text, a contain.Mesh, a contain.Region or a "
+            f"contain.dask.Shape, got {type(shape).__name__}"
+        )
+
+    @property
+    def dimension(self) -> int:
+        """3 for a mesh, 2 for a region."""
+        return 3 if self.kind == "mesh" else 2
+
+    def build(self) -> Any:
+        """The prepared index (MeshIndex or PolygonIndex): what each worker builds once."""
+        if self.kind == "mesh":
+            if self.path is not None:
+                return contain.MeshIndex.from_file(self.path)
+            return contain.MeshIndex(contain.parse_mesh(self.data, self.format, "<mesh bytes>"))
+        if self.path is not None:
+            return contain.PolygonIndex.from_file(self.path, fill=self.fill)
+        return contain.PolygonIndex(contain.parse_wkt(self.data.decode(), "<wkt>"), fill=self.fill)
+
+    def __repr__(self) -> str:
+        where = self.path if self.path is not None else f"{len(self.data or b'')} bytes"
+        return f"contain.dask.Shape({self.kind}, {where})"
+
+
+# The worker-side cache: one prepared index per shape key and process. A few shapes at most
+# are in use at once; the oldest is dropped past _CACHE_SIZE.
+_CACHE_SIZE = 8
+_lock = threading.Lock()
+_indexes: "OrderedDict[str, Any]" = OrderedDict()
+_builds: "dict[str, int]" = {}
+
+
+def _index(shape: Shape) -> Any:
+    index = _indexes.get(shape.key)
+    if index is not None:
+        return index
+    with _lock:  # several worker threads: still one build
+        index = _indexes.get(shape.key)
+        if index is None:
+            index = shape.build()
+            _indexes[shape.key] = index
+            _builds[shape.key] = _builds.get(shape.key, 0) + 1
+            while len(_indexes) > _CACHE_SIZE:
+                _indexes.popitem(last=False)
+        return index
+
+
+def index_builds(key: Optional[str] = None) -> int:
+    """How many indexes this process has built (for `key` only, when given).
+
+    On a cluster: client.run(contain.dask.index_builds) -> {worker address: count}.
+    """
+    if key is not None:
+        return _builds.get(key, 0)
+    return sum(_builds.values())
+
+
+def clear_cache() -> None:
+    """Drops this process's cached indexes and build counts."""
+    with _lock:
+        _indexes.clear()
+        _builds.clear()
+
+
+def _classify(points: np.ndarray, shape: Shape, boundary: Optional[str], threads: int) -> np.ndarray:
+    index = _index(shape)
+    if boundary is None:
+        return index.locate(points, threads=threads)
+    return index.contains(points, boundary=boundary, threads=threads)
+
+
+def _locate_block(block: np.ndarray, shape: Shape, boundary: Optional[str], threads: int) -> np.ndarray:
+    return _classify(block, shape, boundary, threads)
+
+
+def _check_boundary(boundary: Optional[str]) -> None:
+    if boundary not in (None, "inside", "outside", "raise"):
+        raise ValueError(f"boundary must be None, 'inside', 'outside' or 'raise', got {boundary!r}")
+
+
+def locate(
+    points: Any,
+    shape: Any,
+    *,
+    fill: str = "even_odd",
+    boundary: Optional[str] = None,
+    threads: int = 1,
+) -> Any:
+    """Classifies a Dask array of points against a mesh or a region, chunk by chunk.
+
+    points: a dask.array (or anything dask.array.asarray takes) of shape (N, 3) for a mesh or
+        (N, 2) for a region, chunked along the rows (column chunks are merged).
+    shape: a mesh or region file path, WKT text, a contain.Mesh, a contain.Region or a Shape.
+        Only the path or the bytes are sent to the workers; each worker process builds the
+        index once (see the module documentation).
+    fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
+    boundary: None gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
+        'outside' or 'raise' give booleans under that boundary policy.
+    threads: threads per chunk (default 1: the workers supply the parallelism).
+
+    Returns a lazy dask array of shape (N,), chunked like the rows of `points`; the answers
+    equal contain.MeshIndex(...).locate(points) on one machine.
+    """
+    import dask
+    import dask.array as da
+
+    _check_boundary(boundary)
+    source = Shape.of(shape, fill=fill)
+    array = da.asarray(points)
+    if array.ndim != 2 or array.shape[1] != source.dimension:
+        raise ValueError(
+            f"points must have shape (N, {source.dimension}) for a {source.kind}, got {array.shape}"
+        )
+    if array.numblocks[1] != 1:
+        array = array.rechunk({1: -1})
+    dtype = np.dtype(np.int8 if boundary is None else bool)
+    # One graph key holds the shape; every chunk depends on it, so it travels once per worker.
+    shape_key = dask.delayed(source, pure=True)
+    return da.map_blocks(
+        _locate_block,
+        array,
+        shape_key,
+        boundary,
+        threads,
+        dtype=dtype,
+        drop_axis=1,
+        meta=np.empty((0,), dtype=dtype),
+        name="contain-locate",
+    )
+
+
+def _locate_partition(
+    frame: Any, shape: Shape, columns: Sequence[str], boundary: Optional[str], threads: int, name: str
+) -> Any:
+    import pandas as pd
+
+    points = np.ascontiguousarray(frame[list(columns)].to_numpy(dtype=np.float64))
+    return pd.Series(_classify(points, shape, boundary, threads), index=frame.index, name=name)
+
+
+def locate_dataframe(
+    frame: Any,
+    shape: Any,
+    *,
+    columns: Optional[Sequence[str]] = None,
+    fill: str = "even_odd",
+    boundary: Optional[str] = None,
+    threads: int = 1,
+    name: str = "location",
+) -> Any:
+    """Classifies the rows of a Dask dataframe of coordinates, partition by partition.
+
+    frame: a dask.dataframe with columns x, y[, z] (or `columns`, in that order).
+    shape, fill, boundary, threads: as in locate().
+    name: the name of the result.
+
+    Returns a lazy dask Series aligned with `frame` (same index and partitions): int8 answers
+    or booleans under `boundary`. Add it with frame.assign(location=...).
+    """
+    import dask
+    import pandas as pd
+
+    _check_boundary(boundary)
+    source = Shape.of(shape, fill=fill)
+    if columns is None:
+        columns = ("x", "y", "z")[: source.dimension]
+    columns = list(columns)
+    if len(columns) != source.dimension:
+        raise ValueError(f"a {source.kind} needs {source.dimension} coordinate columns, got {columns}")
+    missing = [c for c in columns if c not in frame.columns]
+    if missing:
+        raise ValueError(f"the dataframe has no column {missing[0]!r} (columns: {list(frame.columns)})")
+    dtype = np.dtype(np.int8 if boundary is None else bool)
+    return frame.map_partitions(
+        _locate_partition,
+        dask.delayed(source, pure=True),
+        columns,
+        boundary,
+        threads,
+        name,
+        meta=pd.Series([], dtype=dtype, name=name),
+    )

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// numpy arrays in and out of the library's flat types, without copies where the layout allows.
+///
+/// The input rule, the same for every function of the module: anything numpy can turn into an
+/// array is accepted (arrays, lists, tuples); its dtype must be a real number (floating point or
+/// integer, kinds 'f', 'i', 'u'), else TypeError; its shape must be the one named, else
+/// ValueError naming the expected and the given shape. A C-contiguous, aligned float64 array is
+/// read in place (zero-copy: `(N, 3)` float64 is exactly `Vec3[N]`); any other layout or real
+/// dtype (a transposed view, every other row, float32, int64) is copied once into a C-contiguous
+/// float64 array, which is exact for every float32 and for integers up to 2^53.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "contain/core/location.h"
+#include "contain/geometry/mesh.h"
+#include "contain/geometry/polygon.h"
+#include "contain/geometry/vec.h"
+
+namespace contain::python {
+
+namespace py = pybind11;
+
+/// A C-contiguous float64 array (the caller's own when it qualified, else a converted copy).
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// `object` as a float64 array of shape (N, columns) (rows == -1) or (rows, columns); `name`
+/// and the expected shape appear in the messages.
+[[nodiscard]] Doubles as_matrix(const py::handle& object, py::ssize_t columns, const char* name,
+                                py::ssize_t rows = -1);
+
+/// `object` as a float64 vector of exactly `count` values (count == -1: any length).
+[[nodiscard]] Doubles as_vector(const py::handle& object, py::ssize_t count, const char* name);
+
+/// True when `as_matrix` would read `object` in place (for the tests of the zero-copy claim).
+[[nodiscard]] bool reads_in_place(const py::handle& object);
+
+/// The rows of an (N, 3) / (N, 2) array as points, in place.
+[[nodiscard]] std::span<const Vec3> as_vec3(const Doubles& array);
+[[nodiscard]] std::span<const Vec2> as_vec2(const Doubles& array);
+
+/// Raises ContainError (invalid_value) naming the first row with a NaN or infinite value.
+/// Runs without the GIL on `threads` threads.
+void require_finite(const Doubles& array, const char* name, int threads);
+
+/// `object` as an (N, 3) array of triangle vertex indices (any integer dtype; values must fit
+/// in int32, else ValueError). Copied: a Mesh owns its indices.
+[[nodiscard]] std::vector<TriangleIndices> as_triangles(const py::handle& object);
+
+/// A new numpy array of `locations` (int8: -1 outside, 0 boundary, 1 inside) that owns them:
+/// the vector is moved into the array's base object, no copy.
+[[nodiscard]] py::array_t<std::int8_t> to_numpy(std::vector<Location>&& locations);
+
+/// A new numpy float64 array of shape (rows, columns) owning `values` (moved, no copy).
+[[nodiscard]] py::array_t<double> to_numpy(std::vector<double>&& values, py::ssize_t rows,
+                                           py::ssize_t columns);
+
+/// A numpy (K, 2) float64 array copied from a ring.
+[[nodiscard]] py::array_t<double> ring_to_numpy(const Ring& ring);
+
+/// A sequence of rings (each an (K, 2) array-like) as rings.
+[[nodiscard]] std::vector<Ring> as_rings(const py::handle& object, const char* name);
+
+}  // namespace contain::python

@@ -1,0 +1,162 @@
+// contain.Contact, contain.MeshPair and contain.collide.
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "contain/collide/mesh_mesh.h"
+#include "contain/collide/region_region.h"
+#include "errors.h"
+#include "shapes.h"
+
+namespace contain::python {
+namespace {
+
+using namespace pybind11::literals;
+
+// Poses as transforms: (N, 12) rows in the contract's order, or (N, 3, 4) / (N, 4, 4) matrices.
+std::vector<Transform> to_transforms(const py::handle& object) {
+  py::array array = py::array::ensure(object);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error("poses must be an (N, 12), (N, 3, 4) or (N, 4, 4) array");
+  }
+  if (array.ndim() == 3 && array.shape(1) == 3 && array.shape(2) == 4) {
+    array = array.attr("reshape")(array.shape(0), 12);
+  }
+  std::vector<Transform> poses;
+  if (array.ndim() == 3 && array.shape(1) == 4 && array.shape(2) == 4) {
+    for (py::ssize_t i = 0; i < array.shape(0); ++i)
+      poses.push_back(to_transform(array[py::int_(i)], "poses[i]"));
+    return poses;
+  }
+  const Doubles rows = as_matrix(array, 12, "poses");
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    poses.push_back(
+        take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
+  }
+  return poses;
+}
+
+}  // namespace
+
+void bind_collide(py::module_& m) {
+  py::class_<collide::Contact>(m, "Contact", R"doc(
+The answer of a collision query: `intersect` (also bool(contact)) and one witness.
+
+witness: 'none' (disjoint), 'triangles' (triangle_a of A and triangle_b of B share a point),
+'edges' (2D: edge triangle_a of A and edge triangle_b of B), 'vertex_of_a_in_b' /
+'vertex_of_b_in_a' (nested solids: `vertex` of one lies in the other). node_pairs and
+exact_tests count the work done.
+)doc")
+      .def_readonly("intersect", &collide::Contact::intersect, "True when the shapes meet.")
+      .def_property_readonly(
+          "witness", [](const collide::Contact& c) { return to_string(c.witness); },
+          "What proves it: 'none', 'triangles', 'edges', 'vertex_of_a_in_b', 'vertex_of_b_in_a'.")
+      .def_readonly("triangle_a", &collide::Contact::triangle_a,
+                    "The triangle (2D: edge) of A of the witness pair, else -1.")
+      .def_readonly("triangle_b", &collide::Contact::triangle_b,
+                    "The triangle (2D: edge) of B of the witness pair, else -1.")
+      .def_readonly("vertex", &collide::Contact::vertex,
+                    "The vertex (in its own mesh) of a vertex witness, else -1.")
+      .def_readonly("node_pairs", &collide::Contact::node_pairs,
+                    "Bounding volume pairs tested (work done).")
+      .def_readonly("exact_tests", &collide::Contact::exact_tests,
+                    "Exact primitive tests run (work done).")
+      .def("__bool__", [](const collide::Contact& c) { return c.intersect; })
+      .def("__repr__", [](const collide::Contact& c) {
+        return std::string("contain.Contact(intersect=") + (c.intersect ? "True" : "False") +
+               ", witness='" + to_string(c.witness) + "')";
+      });
+
+  py::class_<collide::MeshPair>(m, "MeshPair", R"doc(
+Two meshes prepared for many collision queries, B placed by a transform per query.
+
+A closed mesh bounds a solid (touching counts, nesting counts); an open mesh is a surface.
+Every answer is exact on the transformed doubles ((r0 x + r1 y) + r2 z) + t.
+Transforms: None (identity), 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2, a (3, 4)
+[R | t] or a (4, 4) matrix with last row 0 0 0 1.
+
+Example:
+    >>> pair = contain.MeshPair(part, tool)
+    >>> pair.collide(pose).intersect
+    >>> hits = pair.collide_many(poses)   # (N, 3, 4) -> (N,) bool, on every core
+)doc")
+      .def(py::init([](const Mesh& a, const Mesh& b, const py::handle& transform_a) {
+             const collide::MeshPairOptions options{.transform_a =
+                                                        to_transform(transform_a, "transform_a")};
+             py::gil_scoped_release release;
+             return collide::MeshPair(a, b, options);
+           }),
+           "a"_a, "b"_a, py::kw_only(), "transform_a"_a = py::none(),
+           "Prepares A (placed once by transform_a) and B.")
+      .def(
+          "collide",
+          [](const collide::MeshPair& pair, const py::handle& transform_b) {
+            const Transform t = to_transform(transform_b, "transform_b");
+            py::gil_scoped_release release;
+            return pair.collide(t);
+          },
+          "transform_b"_a = py::none(), "Does A meet B placed by transform_b? A Contact.")
+      .def(
+          "collide_many",
+          [](const collide::MeshPair& pair, const py::handle& poses, int threads) {
+            const std::vector<Transform> transforms = to_transforms(poses);
+            std::vector<collide::Contact> contacts(transforms.size());
+            {
+              py::gil_scoped_release release;
+              pair.collide(transforms, contacts, BatchOptions{.threads = threads});
+            }
+            py::array_t<bool> out(static_cast<py::ssize_t>(contacts.size()));
+            bool* data = out.mutable_data();
+            for (std::size_t i = 0; i < contacts.size(); ++i)
+              data[i] = contacts[i].intersect;
+            return out;
+          },
+          "poses"_a, py::kw_only(), "threads"_a = 0, R"doc(
+Whether A meets B under each pose: poses (N, 12), (N, 3, 4) or (N, 4, 4); a bool array (N,).
+Runs on `threads` threads (0: every core) without the GIL.
+)doc")
+      .def_property_readonly("a_is_solid", &collide::MeshPair::a_is_solid,
+                             "True when A is closed (a solid), False for a surface.")
+      .def_property_readonly("b_is_solid", &collide::MeshPair::b_is_solid,
+                             "True when B is closed (a solid), False for a surface.");
+
+  m.def(
+      "collide",
+      [](const py::handle& a, const py::handle& b, const py::handle& transform_a,
+         const py::handle& transform_b, const std::string& fill) {
+        if (py::isinstance<Mesh>(a) && py::isinstance<Mesh>(b)) {
+          const Mesh& ma = a.cast<const Mesh&>();
+          const Mesh& mb = b.cast<const Mesh&>();
+          const Transform ta = to_transform(transform_a, "transform_a");
+          const Transform tb = to_transform(transform_b, "transform_b");
+          py::gil_scoped_release release;
+          return collide::mesh_mesh(ma, mb, ta, tb);
+        }
+        if (py::isinstance<Mesh>(a) || py::isinstance<Mesh>(b)) {
+          throw py::type_error("collide: a and b must both be meshes or both be regions");
+        }
+        if (!transform_a.is_none() || !transform_b.is_none()) {
+          throw py::value_error("collide: transforms apply to meshes only");
+        }
+        const MultiPolygon ra = to_region(a, "a");
+        const MultiPolygon rb = to_region(b, "b");
+        const collide::RegionCollideOptions options{.fill = parse_fill(fill)};
+        py::gil_scoped_release release;
+        return collide::region_region(ra, rb, options);
+      },
+      "a"_a, "b"_a, py::kw_only(), "transform_a"_a = py::none(), "transform_b"_a = py::none(),
+      "fill"_a = "even_odd", R"doc(
+Do two shapes meet? One query, a Contact.
+
+Meshes (contain.Mesh): closed ones are solids (touching and nesting count), open ones surfaces;
+each placed by an optional transform (see MeshPair; use MeshPair for many poses).
+Regions (Region, WKT or rings): the closed filled regions under `fill` share a point.
+)doc");
+}
+
+}  // namespace contain::python

@@ -1,0 +1,318 @@
+// contain.MeshIndex, contain.PolygonIndex and the one-shot containment functions.
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+
+#include <string>
+#include <vector>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "contain/inside/mesh_index.h"
+#include "contain/inside/point_in_mesh.h"
+#include "contain/inside/point_in_polygon.h"
+#include "contain/inside/polygon_index.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/region_io.h"
+#include "errors.h"
+#include "shapes.h"
+
+namespace contain::python {
+namespace {
+
+using namespace pybind11::literals;
+
+// The batch of one index: points checked (finite), located without the GIL on `threads`
+// threads (0: all cores) straight from the caller's buffer into a vector the result array owns.
+template <class Index, class Point>
+std::vector<Location> locate_batch(const Index& index, std::span<const Point> points,
+                                   const Doubles& array, int threads) {
+  require_finite(array, "points", threads);
+  std::vector<Location> out(points.size());
+  py::gil_scoped_release release;
+  index.locate(points, out, BatchOptions{.threads = threads});
+  return out;
+}
+
+std::vector<Location> mesh_locate(const inside::MeshIndex& index, const py::handle& points,
+                                  int threads) {
+  const Doubles array = as_matrix(points, 3, "points");
+  return locate_batch(index, as_vec3(array), array, threads);
+}
+
+std::vector<Location> polygon_locate(const inside::PolygonIndex& index, const py::handle& points,
+                                     int threads) {
+  const Doubles array = as_matrix(points, 2, "points");
+  return locate_batch(index, as_vec2(array), array, threads);
+}
+
+Vec3 point3(const py::handle& point) {
+  const Doubles p = as_vector(point, 3, "point");
+  if (!std::isfinite(p.at(0)) || !std::isfinite(p.at(1)) || !std::isfinite(p.at(2))) {
+    fail(ErrorKind::invalid_value, "point has a NaN or infinite coordinate");
+  }
+  return {p.at(0), p.at(1), p.at(2)};
+}
+
+Vec2 point2(const py::handle& point) {
+  const Doubles p = as_vector(point, 2, "point");
+  if (!std::isfinite(p.at(0)) || !std::isfinite(p.at(1))) {
+    fail(ErrorKind::invalid_value, "point has a NaN or infinite coordinate");
+  }
+  return {p.at(0), p.at(1)};
+}
+
+inside::MeshIndexOptions mesh_options(double cells_per_triangle, std::size_t min_cells,
+                                      std::size_t max_cells, double winding_accuracy) {
+  return {.cells_per_triangle = cells_per_triangle,
+          .min_cells = min_cells,
+          .max_cells = max_cells,
+          .winding_accuracy = winding_accuracy};
+}
+
+py::tuple box3(const Box3& box) {
+  return py::make_tuple(py::array_t<double>(3, &box.min.x), py::array_t<double>(3, &box.max.x));
+}
+
+py::tuple box2(const Box2& box) {
+  return py::make_tuple(py::array_t<double>(2, &box.min.x), py::array_t<double>(2, &box.max.x));
+}
+
+// Both indexes answer "not picklable" with the way to ship them instead.
+py::tuple refuse_pickle(const py::handle& self) {
+  throw py::type_error(std::string(py::str(py::type::of(self).attr("__name__"))) +
+                       " is not picklable: ship the mesh or region (its file path, bytes or "
+                       "WKT) and build the index where it is used, as contain.dask does");
+}
+
+constexpr const char* kLocateDoc = R"doc(
+Where each point lies: an int8 array of shape (N,), -1 outside, 0 on the boundary, 1 inside
+(compare with contain.Location members). Exact on the given doubles.
+
+points: (N, {dim}) array of real numbers; a C-contiguous float64 array is read in place,
+    any other layout or dtype is converted to one copy first. NaN/Inf raise ContainError.
+threads: threads for the batch (0: every core). The GIL is released while it runs, and the
+    answers do not depend on the thread count.
+)doc";
+
+constexpr const char* kContainsDoc = R"doc(
+True where the point is inside, as a bool array of shape (N,). `boundary` (keyword, required)
+says what a point exactly on the boundary gives: 'inside' (True), 'outside' (False), or
+'raise' (ContainError naming the first such point). Otherwise as locate().
+)doc";
+
+std::string locate_doc(const char* dim) {
+  std::string doc = kLocateDoc;
+  return doc.replace(doc.find("{dim}"), 5, dim);
+}
+
+}  // namespace
+
+void bind_inside(py::module_& m) {
+  // pybind11 copies docstrings; these only need to live through the def() calls.
+  static const std::string locate3 = locate_doc("3");
+  static const std::string locate2 = locate_doc("2");
+  py::class_<inside::MeshIndex>(m, "MeshIndex", R"doc(
+A triangle mesh prepared for exact point location, built once, queried in batches on every core.
+
+For a closed mesh (every edge shared by two triangles) every answer is exact: 'boundary' when
+the point lies on a triangle, else the parity of the crossings of a symbolically perturbed +x
+ray (docs/robustness.md). A mesh with border or non-manifold edges is answered by the
+generalized winding number (inside where >= 0.5; floating point), still with exact 'boundary';
+`regime` and `warning` say which applies and why.
+
+Build: MeshIndex(mesh) or MeshIndex(vertices, faces), or MeshIndex.from_file(path); about
+O(n log n) for n triangles. Query: locate(points) -> int8 (-1/0/1), contains(points,
+boundary=...) -> bool, locate_point(p) -> Location. Not picklable: to use it on Dask workers
+ship the mesh (see contain.dask).
+
+Example:
+    >>> index = contain.MeshIndex(contain.read_mesh("part.obj"))
+    >>> answers = index.locate(points)            # (N, 3) float64 -> (N,) int8
+    >>> inside = index.contains(points, boundary="inside")
+)doc")
+      .def(py::init([](const Mesh& mesh, double cells_per_triangle, std::size_t min_cells,
+                       std::size_t max_cells, double winding_accuracy) {
+             const auto options =
+                 mesh_options(cells_per_triangle, min_cells, max_cells, winding_accuracy);
+             py::gil_scoped_release release;
+             return inside::MeshIndex(mesh, options);
+           }),
+           "mesh"_a, py::kw_only(), "cells_per_triangle"_a = 16.0, "min_cells"_a = 4096,
+           "max_cells"_a = std::size_t{1} << 24, "winding_accuracy"_a = 3.0,
+           "Prepares a contain.Mesh. Grid options: about cells_per_triangle cells per triangle,\n"
+           "between min_cells and max_cells; winding_accuracy for open meshes.")
+      .def(py::init([](const py::handle& vertices, const py::handle& faces,
+                       double cells_per_triangle, std::size_t min_cells, std::size_t max_cells,
+                       double winding_accuracy) {
+             const Doubles v = as_matrix(vertices, 3, "vertices");
+             const auto points = as_vec3(v);
+             Mesh mesh = take(Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()),
+                                                as_triangles(faces)));
+             const auto options =
+                 mesh_options(cells_per_triangle, min_cells, max_cells, winding_accuracy);
+             py::gil_scoped_release release;
+             return inside::MeshIndex(mesh, options);
+           }),
+           "vertices"_a, "faces"_a, py::kw_only(), "cells_per_triangle"_a = 16.0,
+           "min_cells"_a = 4096, "max_cells"_a = std::size_t{1} << 24, "winding_accuracy"_a = 3.0,
+           "Prepares the mesh of (V, 3) vertices and (M, 3) integer faces (validated: NaN/Inf\n"
+           "or an index out of range raise ContainError).")
+      .def_static(
+          "from_file",
+          [](const std::filesystem::path& path) {
+            Mesh mesh = take(io::read_mesh(path)).mesh;
+            py::gil_scoped_release release;
+            return inside::MeshIndex(mesh);
+          },
+          "path"_a, "Reads a mesh file (see contain.read_mesh) and prepares it.")
+      .def(
+          "locate",
+          [](const inside::MeshIndex& index, const py::handle& points, int threads) {
+            return to_numpy(mesh_locate(index, points, threads));
+          },
+          "points"_a, py::kw_only(), "threads"_a = 0, locate3.c_str())
+      .def(
+          "contains",
+          [](const inside::MeshIndex& index, const py::handle& points, const std::string& boundary,
+             int threads) {
+            check_boundary_policy(boundary);
+            return to_booleans(mesh_locate(index, points, threads), boundary);
+          },
+          "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
+      .def(
+          "locate_point",
+          [](const inside::MeshIndex& index, const py::handle& point) {
+            return location_object(index.locate(point3(point)));
+          },
+          "point"_a, "Where one point (x, y, z) lies, as a contain.Location.")
+      .def_property_readonly(
+          "regime", [](const inside::MeshIndex& index) { return to_string(index.regime()); },
+          "'closed-exact' (ray parity, every answer exact) or 'winding-number' (open or\n"
+          "non-manifold mesh: generalized winding number, boundary still exact).")
+      .def_property_readonly(
+          "warning", [](const inside::MeshIndex& index) { return index.warning(); },
+          "'' for a plain closed 2-manifold; otherwise one line naming the regime and why.")
+      .def_property_readonly(
+          "bounds", [](const inside::MeshIndex& index) { return box3(index.bounds()); },
+          "(min, max): the bounding box of the triangles, two float64 arrays of 3.")
+      .def_property_readonly(
+          "stats",
+          [](const inside::MeshIndex& index) {
+            const auto s = index.stats();
+            return py::dict("triangles"_a = s.triangles, "cells"_a = s.cells,
+                            "surface_cells"_a = s.surface_cells, "cell_refs"_a = s.cell_refs,
+                            "grid"_a = py::make_tuple(s.nx, s.ny, s.nz));
+          },
+          "Sizes of the structure (triangles, cells, surface_cells, cell_refs, grid).")
+      .def("__reduce__", &refuse_pickle)
+      .def("__repr__", [](const inside::MeshIndex& index) {
+        return "contain.MeshIndex(" + std::to_string(index.stats().triangles) + " triangles, " +
+               to_string(index.regime()) + ")";
+      });
+
+  py::class_<inside::PolygonIndex>(m, "PolygonIndex", R"doc(
+A planar region prepared for exact point location under a fill rule, queried in batches.
+
+Same answers as contain.point_in_polygon for every point, exactly, with its tie-break rules
+(half-open ray rule, right-up perturbation, filled-sector boundary rule; docs/robustness.md):
+'boundary' only for points exactly on the boundary of the filled region.
+
+Build: PolygonIndex(region, fill='even_odd') where region is a contain.Region, a WKT string or
+a sequence of (K, 2) rings (closed paths in the direction written). fill: 'even_odd' (OGC
+meaning for valid polygons), 'nonzero', 'positive' or 'negative'.
+Query: locate(points) -> int8, contains(points, boundary=...) -> bool, locate_point(p).
+
+Example:
+    >>> parcel = contain.PolygonIndex("POLYGON ((0 0, 4 0, 4 4, 0 4), (1 1, 1 3, 3 3, 3 1))")
+    >>> parcel.locate([[0.5, 0.5], [2, 2], [4, 2]])
+    array([ 1, -1,  0], dtype=int8)
+)doc")
+      .def(py::init([](const py::handle& region, const std::string& fill, double cells_per_edge,
+                       std::size_t min_cells, std::size_t max_cells) {
+             const MultiPolygon polygons = to_region(region, "region");
+             const inside::PolygonIndexOptions options{.fill = parse_fill(fill),
+                                                       .cells_per_edge = cells_per_edge,
+                                                       .min_cells = min_cells,
+                                                       .max_cells = max_cells};
+             py::gil_scoped_release release;
+             return inside::PolygonIndex(polygons, options);
+           }),
+           "region"_a, py::kw_only(), "fill"_a = "even_odd", "cells_per_edge"_a = 4.0,
+           "min_cells"_a = 4096, "max_cells"_a = std::size_t{1} << 20,
+           "Prepares a region (Region, WKT string or sequence of rings) under `fill`.")
+      .def_static(
+          "from_file",
+          [](const std::filesystem::path& path, const std::string& fill) {
+            const MultiPolygon polygons = take(io::read_region(path));
+            const Fill rule = parse_fill(fill);
+            py::gil_scoped_release release;
+            return inside::PolygonIndex(polygons, {.fill = rule});
+          },
+          "path"_a, py::kw_only(), "fill"_a = "even_odd",
+          "Reads a region file (see contain.read_region) and prepares it.")
+      .def(
+          "locate",
+          [](const inside::PolygonIndex& index, const py::handle& points, int threads) {
+            return to_numpy(polygon_locate(index, points, threads));
+          },
+          "points"_a, py::kw_only(), "threads"_a = 0, locate2.c_str())
+      .def(
+          "contains",
+          [](const inside::PolygonIndex& index, const py::handle& points,
+             const std::string& boundary, int threads) {
+            check_boundary_policy(boundary);
+            return to_booleans(polygon_locate(index, points, threads), boundary);
+          },
+          "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
+      .def(
+          "locate_point",
+          [](const inside::PolygonIndex& index, const py::handle& point) {
+            return location_object(index.locate(point2(point)));
+          },
+          "point"_a, "Where one point (x, y) lies, as a contain.Location.")
+      .def_property_readonly(
+          "fill", [](const inside::PolygonIndex& index) { return fill_name(index.fill()); },
+          "The fill rule the region was prepared with.")
+      .def_property_readonly(
+          "bounds", [](const inside::PolygonIndex& index) { return box2(index.bounds()); },
+          "(min, max): the bounding box of every edge, two float64 arrays of 2.")
+      .def_property_readonly(
+          "stats",
+          [](const inside::PolygonIndex& index) {
+            const auto s = index.stats();
+            return py::dict("edges"_a = s.edges, "cells"_a = s.cells, "edge_cells"_a = s.edge_cells,
+                            "edge_refs"_a = s.edge_refs);
+          },
+          "Sizes of the structure (edges, cells, edge_cells, edge_refs).")
+      .def("__reduce__", &refuse_pickle)
+      .def("__repr__", [](const inside::PolygonIndex& index) {
+        return "contain.PolygonIndex(" + std::to_string(index.stats().edges) + " edges, fill='" +
+               fill_name(index.fill()) + "')";
+      });
+
+  m.def(
+      "point_in_polygon",
+      [](const py::handle& region, const py::handle& point, const std::string& fill) {
+        const MultiPolygon polygons = to_region(region, "region");
+        return location_object(
+            inside::point_in_polygon(polygons, point2(point), {.fill = parse_fill(fill)}));
+      },
+      "region"_a, "point"_a, py::kw_only(), "fill"_a = "even_odd", R"doc(
+Where one point (x, y) lies relative to a region (Region, WKT or rings) under `fill`, exactly,
+as a contain.Location. O(n) for n edges; build a PolygonIndex for many points.
+)doc");
+  m.def(
+      "point_in_mesh",
+      [](const Mesh& mesh, const py::handle& point) {
+        return location_object(inside::point_in_mesh(mesh, point3(point)));
+      },
+      "mesh"_a, "point"_a, R"doc(
+Where one point (x, y, z) lies relative to the solid bounded by `mesh`, as a contain.Location:
+exactly MeshIndex(mesh).locate_point(point). Builds the index each call; use MeshIndex for more.
+)doc");
+}
+
+}  // namespace contain::python

@@ -1,0 +1,249 @@
+// contain.Mesh, contain.Region and the file readers and writers (contain::io).
+
+#include <pybind11/operators.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/region_io.h"
+#include "contain/io/wkt.h"
+#include "errors.h"
+#include "shapes.h"
+
+namespace contain::python {
+namespace {
+
+using namespace pybind11::literals;
+
+io::MeshFormat parse_format(const std::string& format) {
+  if (format == "obj") return io::MeshFormat::obj;
+  if (format == "off") return io::MeshFormat::off;
+  if (format == "stl" || format == "stl_binary") return io::MeshFormat::stl_binary;
+  if (format == "stl_ascii") return io::MeshFormat::stl_ascii;
+  if (format == "ply" || format == "ply_binary") return io::MeshFormat::ply_binary_little_endian;
+  if (format == "ply_ascii") return io::MeshFormat::ply_ascii;
+  if (format == "ply_big_endian") return io::MeshFormat::ply_binary_big_endian;
+  throw py::value_error(
+      "format must be 'obj', 'off', 'stl', 'stl_ascii', 'ply', 'ply_ascii' or "
+      "'ply_big_endian', got '" +
+      format + "'");
+}
+
+Mesh mesh_from_arrays(const py::handle& vertices, const py::handle& faces) {
+  const Doubles v = as_matrix(vertices, 3, "vertices");
+  const auto points = as_vec3(v);
+  return take(
+      Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()), as_triangles(faces)));
+}
+
+// Twice the signed area of a ring, relative to its first vertex (shoelace terms stay small for
+// far coordinates), summed with Neumaier's compensation.
+double region_area(const MultiPolygon& region) {
+  double sum = 0.0, compensation = 0.0;
+  const auto add = [&](double term) {
+    const double t = sum + term;
+    compensation += std::abs(sum) >= std::abs(term) ? (sum - t) + term : (term - t) + sum;
+    sum = t;
+  };
+  for (const Polygon& polygon : region.polygons) {
+    for (const Ring& ring : polygon.rings) {
+      if (ring.size() < 3) continue;
+      const Vec2 o = ring[0];
+      for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
+        const Vec2 a = ring[i] - o, b = ring[i + 1] - o;
+        add(a.x * b.y);
+        add(-a.y * b.x);
+      }
+    }
+  }
+  return (sum + compensation) / 2;
+}
+
+}  // namespace
+
+void bind_io(py::module_& m) {
+  py::class_<Mesh>(m, "Mesh", R"doc(
+A triangle mesh: an (V, 3) float64 array of vertices and an (M, 3) int32 array of triangles
+(0-based vertex indices, counter-clockwise seen from outside for an outward closed mesh).
+
+Mesh(vertices, faces) validates: NaN/Inf coordinates and indices out of range raise
+ContainError. The mesh may be open or degenerate; MeshIndex reports that. Read one from a file
+with contain.read_mesh(path) (OBJ, OFF, STL, PLY).
+
+Example:
+    >>> cube = contain.read_mesh("cube.off")
+    >>> cube.vertices.shape, cube.faces.shape
+    ((8, 3), (12, 3))
+)doc")
+      .def(py::init(&mesh_from_arrays), "vertices"_a, "faces"_a,
+           "Validates and copies (V, 3) vertices (real numbers) and (M, 3) integer faces.")
+      .def_property_readonly(
+          "vertices",
+          [](py::object self) {
+            const Mesh& mesh = self.cast<const Mesh&>();
+            // A read-only view of the mesh's own storage, alive as long as the mesh.
+            py::array_t<double> view(
+                {static_cast<py::ssize_t>(mesh.vertices.size()), py::ssize_t{3}},
+                reinterpret_cast<const double*>(mesh.vertices.data()), self);
+            py::detail::array_proxy(view.ptr())->flags &=
+                ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+            return view;
+          },
+          "(V, 3) float64 read-only view of the vertices (no copy).")
+      .def_property_readonly(
+          "faces",
+          [](py::object self) {
+            const Mesh& mesh = self.cast<const Mesh&>();
+            py::array_t<std::int32_t> view(
+                {static_cast<py::ssize_t>(mesh.triangles.size()), py::ssize_t{3}},
+                reinterpret_cast<const std::int32_t*>(mesh.triangles.data()), self);
+            py::detail::array_proxy(view.ptr())->flags &=
+                ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+            return view;
+          },
+          "(M, 3) int32 read-only view of the triangles' vertex indices (no copy).")
+      .def(
+          "__len__", [](const Mesh& mesh) { return mesh.triangles.size(); },
+          "The number of triangles.")
+      .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def("__repr__", [](const Mesh& mesh) {
+        return "contain.Mesh(" + std::to_string(mesh.vertices.size()) + " vertices, " +
+               std::to_string(mesh.triangles.size()) + " triangles)";
+      });
+
+  py::class_<MultiPolygon>(m, "Region", R"doc(
+A planar region: polygons of rings (the shell first, then holes, OGC), or under a fill rule
+simply a set of closed paths. Rings are (K, 2) float64 arrays without the closing point.
+
+Region(rings) makes one polygon of the given rings (a sequence of (K, 2) arrays);
+Region.from_polygons([[shell, hole, ...], ...]) several; Region.from_wkt(text) parses WKT.
+Wherever a region is expected, a Region, a WKT string or a sequence of rings is accepted.
+)doc")
+      .def(py::init([](const py::handle& rings) { return to_region(rings, "rings"); }), "rings"_a,
+           "One polygon of `rings` (each a (K, 2) array of x, y; at least 3 points; finite).")
+      .def_static(
+          "from_polygons",
+          [](const py::sequence& polygons) {
+            MultiPolygon region;
+            for (const py::handle polygon : polygons) {
+              region.polygons.push_back(take(Polygon::from_rings(as_rings(polygon, "polygon"))));
+            }
+            return region;
+          },
+          "polygons"_a, "Several polygons, each a sequence of rings (shell first, then holes).")
+      .def_static(
+          "from_wkt", [](const std::string& text) { return take(io::parse_wkt(text, "<wkt>")); },
+          "text"_a, "Parses a POLYGON or MULTIPOLYGON (see contain.parse_wkt).")
+      .def_property_readonly(
+          "polygons",
+          [](const MultiPolygon& region) {
+            py::list polygons;
+            for (const Polygon& polygon : region.polygons) {
+              py::list rings;
+              for (const Ring& ring : polygon.rings)
+                rings.append(ring_to_numpy(ring));
+              polygons.append(rings);
+            }
+            return polygons;
+          },
+          "A list of polygons, each a list of (K, 2) float64 rings (copies).")
+      .def_property_readonly(
+          "rings",
+          [](const MultiPolygon& region) {
+            py::list rings;
+            for (const Polygon& polygon : region.polygons)
+              for (const Ring& ring : polygon.rings)
+                rings.append(ring_to_numpy(ring));
+            return rings;
+          },
+          "Every ring of every polygon in order, as (K, 2) float64 arrays (copies).")
+      .def_property_readonly("area", &region_area,
+                             "The signed area summed over the rings: the area for OGC-valid\n"
+                             "polygons (shells counter-clockwise, holes clockwise), as\n"
+                             "polygon_boolean returns them. Floating point, each ring taken\n"
+                             "relative to its first vertex with compensated sums, so far\n"
+                             "coordinates lose little.")
+      .def(
+          "to_wkt", [](const MultiPolygon& region) { return io::write_wkt(region); },
+          "MULTIPOLYGON WKT with shortest round-trip decimals (parse_wkt reads it back exactly).")
+      .def(
+          "__len__", [](const MultiPolygon& region) { return region.polygons.size(); },
+          "The number of polygons.")
+      .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def("__repr__", [](const MultiPolygon& region) {
+        std::size_t rings = 0;
+        for (const Polygon& polygon : region.polygons)
+          rings += polygon.rings.size();
+        return "contain.Region(" + std::to_string(region.polygons.size()) + " polygons, " +
+               std::to_string(rings) + " rings)";
+      });
+
+  m.def(
+      "read_mesh", [](const std::filesystem::path& path) { return take(io::read_mesh(path)).mesh; },
+      "path"_a, R"doc(
+Reads a triangle mesh; the extension picks the format: .obj, .off, .stl (ASCII or binary),
+.ply (ASCII, binary little or big endian). Polygonal faces are fan-triangulated; STL corners
+are welded where their coordinates are equal.
+
+Raises ContainIOError (an OSError) when the file cannot be read, ContainError naming the file
+and line (or byte offset) for malformed content, NaN/Inf or indices out of range.
+)doc");
+  m.def(
+      "parse_mesh",
+      [](const py::bytes& data, const std::string& format, const std::string& source) {
+        const std::string_view bytes = data;
+        return take(io::parse_mesh(bytes, parse_format(format), source)).mesh;
+      },
+      "data"_a, "format"_a, "source"_a = "<bytes>", R"doc(
+Parses mesh bytes in memory: format 'obj', 'off', 'stl' or 'ply' (the STL and PLY encoding is
+detected from the bytes). `source` names the bytes in error messages.
+)doc");
+  m.def(
+      "format_mesh",
+      [](const Mesh& mesh, const std::string& format) {
+        return py::bytes(io::format_mesh(mesh, parse_format(format)));
+      },
+      "mesh"_a, "format"_a = "ply", R"doc(
+The bytes of `mesh` in `format`: 'obj', 'off', 'ply_ascii' (shortest round-trip decimals) and
+'ply' (binary doubles) read back bit for bit; 'stl' and 'stl_ascii' round to float / weld.
+)doc");
+  m.def(
+      "write_mesh",
+      [](const Mesh& mesh, const std::filesystem::path& path,
+         const std::optional<std::string>& format) {
+        io::MeshWriteOptions options;
+        if (format) options.format = parse_format(*format);
+        (void)take(io::write_mesh(mesh, path, options));
+      },
+      "mesh"_a, "path"_a, "format"_a = py::none(),
+      "Writes `mesh` to `path` (replaced); the format defaults to the extension's.");
+  m.def(
+      "read_region", [](const std::filesystem::path& path) { return take(io::read_region(path)); },
+      "path"_a, R"doc(
+Reads a planar region: .wkt (POLYGON / MULTIPOLYGON) or .geojson / .json (Polygon,
+MultiPolygon, Feature, FeatureCollection). Errors name the file and line.
+)doc");
+  m.def(
+      "parse_wkt",
+      [](const std::string& text, const std::string& source) {
+        return take(io::parse_wkt(text, source));
+      },
+      "text"_a, "source"_a = "<wkt>", R"doc(
+Parses one POLYGON or MULTIPOLYGON (Z/M ordinates dropped, EWKT SRID ignored, closing points
+dropped). Raises ContainError naming `source` and the line for malformed text.
+)doc");
+  m.def(
+      "write_wkt",
+      [](const py::handle& region) { return io::write_wkt(to_region(region, "region")); },
+      "region"_a,
+      "MULTIPOLYGON WKT of a region, every coordinate the shortest decimal that reads back "
+      "exactly.");
+}
+
+}  // namespace contain::python
