@@ -25,6 +25,7 @@
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 #include "contain/io/wkt.h"
+#include "progress.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -45,6 +46,7 @@ struct ClipOptions {
   bool cap = false;
   std::string out;
   int threads = 0;
+  bool quiet = false;
 };
 
 Error usage(std::string message) {
@@ -152,6 +154,18 @@ void each_segment(std::span<const S> in, std::span<S> out, std::span<std::uint8_
   }
 }
 
+// Runs `clip(in, out, kept)` on chunks of the segments (subspans of the same indices), with
+// progress after each; the library's batch calls stay whole within a chunk.
+template <class S, class Clip>
+void clip_all(const std::vector<S>& in, std::vector<S>& out, std::span<std::uint8_t> kept,
+              const ClipOptions& o, Clip clip) {
+  Progress progress("segments", in.size(), !o.quiet && stderr_is_terminal());
+  progress.run([&](std::size_t begin, std::size_t end) {
+    clip(std::span<const S>(in).subspan(begin, end - begin),
+         std::span<S>(out).subspan(begin, end - begin), kept.subspan(begin, end - begin));
+  });
+}
+
 int run_segments(const ClipOptions& o) {
   const int regions = !o.box.empty() + !o.halfspaces.empty() + !o.convex.empty() +
                       !o.sphere.empty() + !o.circle.empty();
@@ -194,17 +208,25 @@ int run_segments(const ClipOptions& o) {
   if (!o.box.empty()) {
     auto run_box = [&](const auto& box, auto& in, auto& out) {
       if (o.algorithm.empty()) {
-        clip::clip_segments(std::span(std::as_const(in)), box, std::span(out), kept, batch);
+        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          clip::clip_segments(in_c, box, out_c, kept_c, batch);
+        });
       } else if (o.algorithm == "cohen-sutherland") {
-        each_segment(std::span(std::as_const(in)), std::span(out), kept,
-                     [&](const auto& s) { return clip::cohen_sutherland(s, box); });
+        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          each_segment(in_c, out_c, kept_c,
+                       [&](const auto& s) { return clip::cohen_sutherland(s, box); });
+        });
       } else if (o.algorithm == "liang-barsky") {
-        each_segment(std::span(std::as_const(in)), std::span(out), kept,
-                     [&](const auto& s) { return clip::liang_barsky(s, box); });
+        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          each_segment(in_c, out_c, kept_c,
+                       [&](const auto& s) { return clip::liang_barsky(s, box); });
+        });
       } else {
         const auto planes = clip::box_halfspaces(box);
-        each_segment(std::span(std::as_const(in)), std::span(out), kept,
-                     [&](const auto& s) { return clip::cyrus_beck(s, planes); });
+        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          each_segment(in_c, out_c, kept_c,
+                       [&](const auto& s) { return clip::cyrus_beck(s, planes); });
+        });
       }
     };
     if (three_d) {
@@ -221,43 +243,57 @@ int run_segments(const ClipOptions& o) {
       auto planes = planes_of(o);
       if (!planes) return report(planes.error());
       if (planes->size() == 1) {
-        clip::clip_segments(std::span(std::as_const(in3)), planes->front(), std::span(out3), kept,
-                            batch);
+        clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          clip::clip_segments(in_c, planes->front(), out_c, kept_c, batch);
+        });
       } else {
-        each_segment(std::span(std::as_const(in3)), std::span(out3), kept,
-                     [&](const Segment3& s) { return clip::cyrus_beck(s, *planes); });
+        clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          each_segment(in_c, out_c, kept_c,
+                       [&](const Segment3& s) { return clip::cyrus_beck(s, *planes); });
+        });
       }
     } else {
       auto planes = half_planes_of(o);
       if (!planes) return report(planes.error());
       if (planes->size() == 1) {
-        clip::clip_segments(std::span(std::as_const(in2)), planes->front(), std::span(out2), kept,
-                            batch);
+        clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          clip::clip_segments(in_c, planes->front(), out_c, kept_c, batch);
+        });
       } else {
-        each_segment(std::span(std::as_const(in2)), std::span(out2), kept,
-                     [&](const Segment2& s) { return clip::cyrus_beck(s, *planes); });
+        clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+          each_segment(in_c, out_c, kept_c,
+                       [&](const Segment2& s) { return clip::cyrus_beck(s, *planes); });
+        });
       }
     }
   } else if (!o.convex.empty()) {
     if (three_d) {
       auto solid = convex_solid_of(o.convex);
       if (!solid) return report(solid.error());
-      clip::clip_segments(std::span(std::as_const(in3)), *solid, std::span(out3), kept, batch);
+      clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+        clip::clip_segments(in_c, *solid, out_c, kept_c, batch);
+      });
     } else {
       auto ring = convex_ring_of(o.convex);
       if (!ring) return report(ring.error());
-      clip::clip_segments(std::span(std::as_const(in2)), *ring, std::span(out2), kept, batch);
+      clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+        clip::clip_segments(in_c, *ring, out_c, kept_c, batch);
+      });
     }
   } else if (!o.sphere.empty()) {
     auto s = numbers(o.sphere, "--sphere", {4});
     if (!s) return report(s.error());
     const Sphere ball{{(*s)[0], (*s)[1], (*s)[2]}, (*s)[3]};
-    clip::clip_segments(std::span(std::as_const(in3)), ball, std::span(out3), kept, batch);
+    clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+      clip::clip_segments(in_c, ball, out_c, kept_c, batch);
+    });
   } else {
     auto c = numbers(o.circle, "--circle", {3});
     if (!c) return report(c.error());
     const Circle disc{{(*c)[0], (*c)[1]}, (*c)[2]};
-    clip::clip_segments(std::span(std::as_const(in2)), disc, std::span(out2), kept, batch);
+    clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
+      clip::clip_segments(in_c, disc, out_c, kept_c, batch);
+    });
   }
   return emit(format_segments(table->values, columns, out2, out3, kept), o.out);
 }
@@ -377,6 +413,7 @@ Verb add_clip(CLI::App& app) {
   auto boolean = std::make_shared<ClipBooleanOptions>();  // --subject/--clip/--op: clip_boolean.cpp
   add_clip_boolean_options(*cmd, *boolean);
   add_threads_option(*cmd, o->threads);
+  add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write the result to FILE (meshes: format by extension)")
       ->option_text("FILE");
   cmd->footer(

@@ -21,6 +21,28 @@ TEST(ClipSegmentsCli, BoxPrintsClippedEndpointsOrDashInInputOrder) {
   }
 }
 
+TEST(ClipSegmentsCli, QuietIsAcceptedAndManySegmentsKeepTheirOrder) {
+  // More segments than a progress chunk (4096, used when stderr is a terminal); --quiet, as in
+  // the other verbs, turns progress off and leaves stderr empty.
+  std::string input;
+  std::string want;
+  for (int i = 0; i < 10000; ++i) {
+    input += i % 2 == 0 ? "-2 0.5 2 0.5\n" : "5 5 6 6\n";
+    want += i % 2 == 0 ? "0 0.5 1 0.5\n" : "-\n";
+  }
+  for (const char* algorithm : {"", "liang-barsky"}) {
+    std::vector<std::string> args = {"clip", "--segments", "-", "--box", "0,0,1,1", "--quiet"};
+    if (*algorithm != '\0') {
+      args.push_back("--algorithm");
+      args.push_back(algorithm);
+    }
+    const CliRun run = run_contain(args, input);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_EQ(run.out, want) << algorithm;
+  }
+}
+
 TEST(ClipSegmentsCli, ThreeDimensionalBoxSphereAndHalfspace) {
   TempDir dir;
   const std::string file = dir.write("s.txt", "-2 0 0 2 0 0\n0 2 0 2 2 0\n");
