@@ -85,11 +85,12 @@ bool crosses_right_of(Vec2 s_lo, Vec2 s_hi, Vec2 t_lo, Vec2 t_hi) {
 void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label) {
   for (const Ring& ring : rings) {
     const std::size_t n = ring.size();
+    bool continues = false;
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring[i], b = ring[(i + 1) % n];
+      const Vec2 a = ring[i], b = i + 1 < n ? ring[i + 1] : ring[0];
       if (a == b) continue;
-      segments.push_back({a, b});
-      labels.push_back(label);
+      push(a, b, label, continues);
+      continues = true;
     }
   }
 }
@@ -97,14 +98,19 @@ void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label
 Arrangement::Arrangement(const ArrangementInput& input) {
   // Consecutive segments of one path: the first ends where the next starts, with the same label.
   const std::size_t n = input.segments.size();
-  std::vector<char> links(n, 0);
-  for (std::size_t c = 0; c + 1 < n; ++c) {
-    const SegmentLabel l = input.labels[c], r = input.labels[c + 1];
-    links[c] = (input.segments[c].b == input.segments[c + 1].a && l.a == r.a && l.b == r.b &&
-                l.open == r.open)
-                   ? 1
-                   : 0;
+  std::vector<char> computed;
+  if (input.links.size() != n) {
+    computed.assign(n, 0);
+    for (std::size_t c = 0; c + 1 < n; ++c) {
+      const SegmentLabel l = input.labels[c], r = input.labels[c + 1];
+      computed[c] = (input.segments[c].b == input.segments[c + 1].a && l.a == r.a && l.b == r.b &&
+                     l.open == r.open)
+                        ? 1
+                        : 0;
+    }
   }
+  const std::span<const char> links =
+      input.links.size() == n ? std::span<const char>(input.links) : computed;
   noded_ = node_segments(input.segments, links, input.magnitude);
   crossings = noded_.crossings;
   rounds = noded_.rounds;
@@ -121,7 +127,7 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   // Which points are vertices: the noding's events, the ends of paths, every point of an open
   // path (polyline_clip reads its pieces one by one). The end of a linked segment is the start
   // of the next one (alias): it takes that start's vertex, and is a vertex when either is.
-  std::vector<char> is_vertex(noded_.event);
+  std::vector<char>& is_vertex = noded_.event;
   std::vector<char> alias(np, 0);
   for (std::size_t c = 0; c < nchains; ++c) {
     const std::uint32_t s = first[c], e = first[c + 1] - 1;
@@ -130,7 +136,8 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     }
     if (links[c] != 0) {
       alias[e] = 1;
-      if (is_vertex[e]) is_vertex[e + 1] = 1;
+      is_vertex[e + 1] = static_cast<char>(is_vertex[e + 1] | is_vertex[e]);
+      is_vertex[e] = 0;
     } else {
       is_vertex[e] = 1;
     }
@@ -142,11 +149,12 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   };
   std::vector<Keyed> order;
   for (std::size_t i = 0; i < np; ++i) {
-    if (is_vertex[i] && !alias[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
+    if (is_vertex[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
   }
   std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
     return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
   });
+  // vid: the vertex of a point, kNone for the others and for aliases (see vertex_of).
   std::vector<std::uint32_t> vid(np, kNone);
   vertex_.clear();
   vertex_.reserve(order.size());
@@ -154,9 +162,7 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     if (i == 0 || order[i].p != order[i - 1].p) vertex_.push_back(order[i].p);
     vid[order[i].i] = static_cast<std::uint32_t>(vertex_.size() - 1);
   }
-  for (std::size_t i = np; i-- > 0;) {
-    if (alias[i]) vid[i] = vid[i + 1];  // the next chain's start, assigned (or aliased) already
-  }
+  auto vertex_of = [&](std::uint32_t k) { return alias[k] ? vid[k + 1] : vid[k]; };
   origin_.assign(vertex_.size(), kNone);
   for (std::size_t c = nchains; c-- > 0;) {
     const std::uint32_t v = vid[first[c]];
@@ -165,6 +171,7 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   // Runs: from a vertex along the path through points that are no vertex, to the next vertex.
   // A run of several pieces is an edge of its own (another piece equal to one of its pieces
   // would meet its inner points); single pieces, keyed by their vertex pair, merge into edges.
+  // The pieces of a run have consecutive ids (point index - segment index).
   struct Piece {
     std::uint64_t key;
     std::uint32_t piece;
@@ -175,48 +182,49 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   std::vector<Piece> pieces;
   piece_half_.assign(np - nchains, -1);
   edge_.clear();
-  std::vector<std::uint32_t> run_pieces;  // piece ids (k - c) of the current run
-  for (std::size_t c = 0; c < nchains; ++c) {
-    const SegmentLabel label = input.labels[c];
-    for (std::uint32_t k = first[c]; k + 1 < first[c + 1]; ++k) {
-      if (vid[k] == kNone) continue;  // inside a run started before
-      // Follow the run from k to the next vertex.
-      run_pieces.clear();
-      std::size_t cc = c;
-      std::uint32_t j = k;  // current piece start
-      std::uint32_t end = 0;
-      for (;;) {
-        run_pieces.push_back(static_cast<std::uint32_t>(j - cc));
-        const std::uint32_t h = j + 1;
-        if (vid[h] != kNone) {
-          end = h;
-          break;
-        }
-        // h is no vertex: either a linked segment's end (continue after the alias) or, never,
-        // a split point (splits are events).
-        if (h + 1 == first[cc + 1]) {
-          j = h + 1;
-          ++cc;
-        } else {
-          j = h;
-        }
-      }
-      const std::uint32_t u = vid[k], v = vid[end];
-      if (run_pieces.size() == 1) {
-        std::uint32_t a = u, b = v;
-        const bool flip = b < a;
-        if (flip) std::swap(a, b);
-        const std::int32_t sg = flip ? -1 : 1;
-        pieces.push_back({(std::uint64_t{a} << 32) | b, run_pieces[0], sg * label.a, sg * label.b,
-                          label.open, flip});
-        continue;
-      }
-      if (label.a == 0 && label.b == 0 && !label.open) continue;
-      const auto e = static_cast<std::int32_t>(edge_.size());
-      edge_.push_back({u, v, label.a, label.b, k, end, pts[k + 1], pts[end - 1]});
-      for (const std::uint32_t pc : run_pieces)
-        piece_half_[pc] = 2 * e;
+  std::size_t c = 0;
+  std::uint32_t k = nchains > 0 ? first[0] : 0;
+  while (c < nchains) {
+    if (k + 1 >= first[c + 1]) {  // the segment's last point: go on with the next segment
+      ++c;
+      if (c < nchains) k = first[c];
+      continue;
     }
+    if (vid[k] == kNone) {  // inside a run (not reached: runs are followed to their end)
+      ++k;
+      continue;
+    }
+    // Follow the run from k to the next vertex; h steps over the points after k.
+    std::size_t cc = c;
+    std::uint32_t h = k + 1;
+    while (vertex_of(h) == kNone) {
+      // h is no vertex: a linked segment's end (continue after the alias), or a point inside a
+      // segment that no split made (none: splits are events).
+      if (alias[h]) {
+        h += 2;
+        ++cc;
+      } else {
+        ++h;
+      }
+    }
+    const SegmentLabel label = input.labels[c];
+    const std::uint32_t u = vid[k], v = vertex_of(h);
+    const auto p0 = static_cast<std::uint32_t>(k - c);
+    const auto p1 = static_cast<std::uint32_t>(h - 1 - cc);  // the last piece of the run
+    if (p0 == p1) {
+      std::uint32_t a = u, b = v;
+      const bool flip = b < a;
+      if (flip) std::swap(a, b);
+      const std::int32_t sg = flip ? -1 : 1;
+      pieces.push_back(
+          {(std::uint64_t{a} << 32) | b, p0, sg * label.a, sg * label.b, label.open, flip});
+    } else if (label.a != 0 || label.b != 0 || label.open) {
+      const auto e = static_cast<std::int32_t>(edge_.size());
+      edge_.push_back({u, v, label.a, label.b, k, h, pts[k + 1], pts[h - 1]});
+      std::fill(piece_half_.begin() + p0, piece_half_.begin() + p1 + 1, 2 * e);
+    }
+    c = cc;
+    k = h;
   }
   std::sort(pieces.begin(), pieces.end(),
             [](const Piece& l, const Piece& r) { return l.key < r.key; });
@@ -234,8 +242,8 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
       const auto u = static_cast<std::uint32_t>(pieces[i].key >> 32);
       const auto v = static_cast<std::uint32_t>(pieces[i].key);
       edge_.push_back({u, v, a, b, kPlain, kPlain, vertex_[v], vertex_[u]});
-      for (std::size_t k = i; k < j; ++k)
-        piece_half_[pieces[k].piece] = 2 * e + (pieces[k].flipped ? 1 : 0);
+      for (std::size_t m = i; m < j; ++m)
+        piece_half_[pieces[m].piece] = 2 * e + (pieces[m].flipped ? 1 : 0);
     }
     i = j;
   }
@@ -333,9 +341,11 @@ void Arrangement::label_faces() {
   };
   std::vector<Lowest> lowest(nv);
   std::vector<char> has(nv, 0);
+  std::vector<std::uint32_t> edge_root(edge_.size());
   for (std::uint32_t ei = 0; ei < edge_.size(); ++ei) {
     const Edge& e = edge_[ei];
     const std::uint32_t root = comp.find(e.u);
+    edge_root[ei] = root;
     Lowest best{vertex_[std::min(e.u, e.v)], std::min(e.u, e.v), kNone, 0};
     if (e.i0 != kPlain) {
       for (std::uint32_t k = e.i0 + 1; k < e.i1; ++k) {
@@ -372,9 +382,8 @@ void Arrangement::label_faces() {
       const bool left = orient2d(o, a, b) == Sign::positive;
       f0 = face_[2 * low.edge + (left ? 0 : 1)];
     }
-    // Winding numbers of o: pieces crossing the open ray towards -x (half-open rule: an
-    // endpoint on the ray's line counts as below it). No piece of the component meets the open
-    // ray, and no piece of another component passes through o.
+    // Winding numbers of o: pieces of the other components crossing the open ray towards -x
+    // (half-open rule: an endpoint on the ray's line counts as below it; none passes through o).
     int wa = 0, wb = 0;
     std::int32_t nearest = -1;  // the edge hit first by the ray: the face around C is beside it
     Vec2 near_lo, near_hi;
@@ -398,6 +407,8 @@ void Arrangement::label_faces() {
       }
     };
     for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
+      // All points of the component are at or after o in (x, y) order: none meets the ray.
+      if (edge_root[ei] == root) continue;
       const Edge& e = edge_[ei];
       const auto id = static_cast<std::int32_t>(ei);
       if (e.i0 == kPlain) {

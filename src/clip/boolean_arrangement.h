@@ -26,6 +26,22 @@ struct SegmentLabel {
 struct ArrangementInput {
   std::vector<NodingInput> segments;
   std::vector<SegmentLabel> labels;
+  /// links[i] != 0: segment i + 1 continues segment i (kept by push(); computed by the
+  /// arrangement when its size differs from the segments').
+  std::vector<char> links;
+  /// Appends the segment a -> b (not of zero length); `continues`: the segment before has the
+  /// same label and ends at a (one path).
+  void push(Vec2 a, Vec2 b, SegmentLabel label, bool continues) {
+    if (!links.empty()) links.back() = continues ? 1 : 0;
+    segments.push_back({a, b});
+    labels.push_back(label);
+    links.push_back(0);
+  }
+  void reserve(std::size_t n) {
+    segments.reserve(n);
+    labels.reserve(n);
+    links.reserve(n);
+  }
   /// Largest coordinate for the noding's hot pixels; 0: that of the segments.
   double magnitude = 0.0;
   void add_rings(std::span<const Ring> rings, SegmentLabel label);

@@ -331,14 +331,15 @@ void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, d
   if (x != q0 && x != q1) splits.push_back({t, x});
 }
 
-// Maximal runs of linked segments whose points strictly increase (or strictly decrease) in
-// (x, y) order. A segment lies in the (x, y) interval of its endpoints, and the intervals of a
-// chain's segments follow each other, so two segments of one chain meet at most at the joint of
+// Maximal runs of linked segments monotone in x and in y (each coordinate never decreases, or
+// never increases, along the run; Guibas and Stolfi's monotone chains as GEOS uses them). A
+// segment lies in the box of its endpoints, and those boxes follow each other along a chain
+// meeting only at the joints, so two segments of one chain meet at most at the joint of
 // consecutive ones: the first round tests only pairs from different chains (rule
-// clip-noding-chains in docs/robustness.md).
+// clip-noding-chains in docs/robustness.md). The box of the points i .. j of a chain is the box
+// of points i and j, which prunes a pair of chains by bisection.
 struct Chain {
-  std::uint32_t first, last;  // segments first .. last - 1
-  bool up;                    // the points increase along the segments
+  std::uint32_t first, last;  // segments first .. last - 1; points 0 .. last - first
   double xmin, xmax, ymin, ymax;
 };
 
@@ -347,68 +348,67 @@ std::vector<Chain> monotone_chains(std::span<const NodingInput> segments,
   std::vector<Chain> chains;
   const auto n = static_cast<std::uint32_t>(segments.size());
   for (std::uint32_t c = 0; c < n;) {
-    const bool up = lex_less(segments[c].a, segments[c].b);
+    // The directions so far: 0 while every segment was flat in that coordinate.
+    const Vec2 d = segments[c].b - segments[c].a;
+    int sx = (d.x > 0) - (d.x < 0), sy = (d.y > 0) - (d.y < 0);
     std::uint32_t e = c + 1;
-    while (e < n && links[e - 1] != 0 && lex_less(segments[e].a, segments[e].b) == up)
-      ++e;
-    const Vec2 lo = up ? segments[c].a : segments[e - 1].b;
-    const Vec2 hi = up ? segments[e - 1].b : segments[c].a;
-    Chain ch{c, e, up, lo.x, hi.x, lo.y, lo.y};
-    for (std::uint32_t k = c; k < e; ++k) {
-      ch.ymin = std::min(ch.ymin, segments[k].b.y);
-      ch.ymax = std::max(ch.ymax, segments[k].b.y);
+    for (; e < n && links[e - 1] != 0; ++e) {
+      const Vec2 t = segments[e].b - segments[e].a;
+      if ((sx > 0 && t.x < 0) || (sx < 0 && t.x > 0) || (sy > 0 && t.y < 0) || (sy < 0 && t.y > 0))
+        break;
+      if (sx == 0) sx = (t.x > 0) - (t.x < 0);
+      if (sy == 0) sy = (t.y > 0) - (t.y < 0);
     }
-    ch.ymin = std::min(ch.ymin, segments[c].a.y);
-    ch.ymax = std::max(ch.ymax, segments[c].a.y);
-    chains.push_back(ch);
+    const Vec2 p = segments[c].a, q = segments[e - 1].b;
+    chains.push_back(
+        {c, e, std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y)});
     c = e;
   }
   return chains;
 }
 
 // Calls test(segment i, segment j) for every pair of segments of different chains whose boxes
-// overlap: chains by a sweep over their x intervals, segments of a chain pair by a merge of
-// their x intervals over the common x range (each chain's segments in increasing x order).
+// overlap: chains by a sweep over their x intervals, segments of a chain pair by bisection of
+// both chains while the boxes of their parts overlap.
 template <class Test>
 void chain_pairs(std::span<const NodingInput> segments, const std::vector<Chain>& chains,
                  Test&& test) {
-  struct Seg {
-    Vec2 lo, hi;
-    std::uint32_t index;
+  // Point i of the chain starting at segment f.
+  auto point = [&](std::uint32_t f, std::uint32_t i) {
+    return i == 0 ? segments[f].a : segments[f + i - 1].b;
   };
-  auto at = [&](const Chain& ch, std::uint32_t i) {
-    const std::uint32_t k = ch.up ? ch.first + i : ch.last - 1 - i;
-    const NodingInput& sg = segments[k];
-    return ch.up ? Seg{sg.a, sg.b, k} : Seg{sg.b, sg.a, k};
+  auto disjoint = [](Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1) {
+    return std::max(a0.x, a1.x) < std::min(b0.x, b1.x) ||
+           std::max(b0.x, b1.x) < std::min(a0.x, a1.x) ||
+           std::max(a0.y, a1.y) < std::min(b0.y, b1.y) ||
+           std::max(b0.y, b1.y) < std::min(a0.y, a1.y);
   };
-  auto walk = [&](const Chain& c, const Chain& d) {
-    const double x0 = std::max(c.xmin, d.xmin), x1 = std::min(c.xmax, d.xmax);
-    const std::uint32_t nc = c.last - c.first, nd = d.last - d.first;
-    // First segments whose high end reaches x0 (high ends do not decrease along a chain).
-    auto start = [&](const Chain& ch, std::uint32_t len) {
-      std::uint32_t lo = 0, hi = len;
-      while (lo < hi) {
-        const std::uint32_t mid = (lo + hi) / 2;
-        if (at(ch, mid).hi.x < x0) {
-          lo = mid + 1;
-        } else {
-          hi = mid;
-        }
+  struct Task {
+    std::uint32_t i0, i1, j0, j1;  // point ranges of the two chains
+  };
+  std::vector<Task> stack;
+  auto overlap = [&](const Chain& c, const Chain& d) {
+    stack.clear();
+    stack.push_back({0, c.last - c.first, 0, d.last - d.first});
+    while (!stack.empty()) {
+      const Task t = stack.back();
+      stack.pop_back();
+      if (disjoint(point(c.first, t.i0), point(c.first, t.i1), point(d.first, t.j0),
+                   point(d.first, t.j1)))
+        continue;
+      const std::uint32_t ni = t.i1 - t.i0, nj = t.j1 - t.j0;
+      if (ni == 1 && nj == 1) {
+        test(c.first + t.i0, d.first + t.j0);
+        continue;
       }
-      return lo;
-    };
-    std::uint32_t j0 = start(d, nd);
-    for (std::uint32_t i = start(c, nc); i < nc; ++i) {
-      const Seg s = at(c, i);
-      if (s.lo.x > x1) break;
-      const double sy0 = std::min(s.lo.y, s.hi.y), sy1 = std::max(s.lo.y, s.hi.y);
-      while (j0 < nd && at(d, j0).hi.x < s.lo.x)
-        ++j0;
-      for (std::uint32_t j = j0; j < nd; ++j) {
-        const Seg t = at(d, j);
-        if (t.lo.x > s.hi.x) break;
-        if (std::max(t.lo.y, t.hi.y) < sy0 || std::min(t.lo.y, t.hi.y) > sy1) continue;
-        test(s.index, t.index);
+      if (ni >= nj) {
+        const std::uint32_t m = t.i0 + ni / 2;
+        stack.push_back({m, t.i1, t.j0, t.j1});
+        stack.push_back({t.i0, m, t.j0, t.j1});
+      } else {
+        const std::uint32_t m = t.j0 + nj / 2;
+        stack.push_back({t.i0, t.i1, m, t.j1});
+        stack.push_back({t.i0, t.i1, t.j0, m});
       }
     }
   };
@@ -427,7 +427,7 @@ void chain_pairs(std::span<const NodingInput> segments, const std::vector<Chain>
       if (d.xmax < c.xmin) continue;
       active[m++] = di;
       if (d.ymax < c.ymin || c.ymax < d.ymin) continue;
-      walk(c, d);
+      overlap(c, d);
     }
     active.resize(m);
     active.push_back(ci);
@@ -441,18 +441,20 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   Noded out;
   const auto n = static_cast<std::uint32_t>(segments.size());
   const bool linked_paths = links.size() == segments.size();
-  out.points.reserve(2 * n);
-  out.first.reserve(n + 1);
-  const bool given = magnitude > 0.0;
-  for (const NodingInput& s : segments) {
-    out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
-    out.points.push_back(s.a);
-    out.points.push_back(s.b);
-    if (!given)
-      magnitude = std::max(
-          {magnitude, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
+  out.points.resize(2 * std::size_t{n});
+  out.first.resize(std::size_t{n} + 1);
+  for (std::uint32_t c = 0; c < n; ++c) {
+    out.first[c] = 2 * c;
+    out.points[2 * c] = segments[c].a;
+    out.points[2 * c + 1] = segments[c].b;
   }
-  out.first.push_back(static_cast<std::uint32_t>(out.points.size()));
+  out.first[n] = 2 * n;
+  if (magnitude <= 0.0) {
+    for (const NodingInput& s : segments) {
+      magnitude = std::max(magnitude, std::max(std::fabs(s.a.x), std::fabs(s.a.y)));
+      magnitude = std::max(magnitude, std::max(std::fabs(s.b.x), std::fabs(s.b.y)));
+    }
+  }
   out.event.assign(out.points.size(), 0);
   // joint[k]: points[k] ends a segment linked to the next one (the piece at k + 1 continues it).
   std::vector<char> joint(out.points.size(), 0);
@@ -466,8 +468,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
                                       : std::numeric_limits<double>::min();
   // fresh[k]: the piece starting at points[k] is new this round.
   std::vector<char> fresh(out.points.size(), 1);
-  std::vector<Vec2> hot;           // crossing points: hot pixels for ever after
-  std::size_t hot_fresh_from = 0;  // hot[i] for i >= this were made last round
+  std::vector<std::uint32_t> fresh_list;  // pieces made by the last round's splits
+  std::vector<Vec2> hot;                  // crossing points: hot pixels for ever after
+  std::size_t hot_fresh_from = 0;         // hot[i] for i >= this were made last round
   std::vector<Item> items;
   std::vector<Key> keys;
   std::vector<std::pair<double, double>> spans;  // merged x intervals of the fresh items
@@ -498,29 +501,34 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
     if (!(chains_done && round == 0)) {
       ++out.rounds;
       items.clear();
-      for (std::uint32_t c = 0; c < n; ++c) {
-        for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k) {
-          const Vec2 a = out.points[k], b = out.points[k + 1];
-          items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
-                           std::max(a.y, b.y), k, fresh[k] != 0, false});
-        }
-      }
-      for (std::size_t i = 0; i < hot.size(); ++i) {
+      keys.clear();
+      auto piece_item = [&](std::uint32_t k) {
+        const Vec2 a = out.points[k], b = out.points[k + 1];
+        items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
+                         std::max(a.y, b.y), k, fresh[k] != 0, false});
+      };
+      auto pixel_item = [&](std::size_t i) {
         const Vec2 x = hot[i];
         items.push_back({x.x - radius, x.x + radius, x.y - radius, x.y + radius,
                          static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
-      }
+      };
       const std::size_t hot_before = hot.size();
-      keys.clear();
       if (round == 0) {
-        for (std::uint32_t i = 0; i < items.size(); ++i)
-          keys.push_back({i, 0});
+        for (std::uint32_t c = 0; c < n; ++c) {
+          for (std::uint32_t k = out.first[c]; k + 1 < out.first[c + 1]; ++k)
+            piece_item(k);
+        }
+        for (std::size_t i = 0; i < hot.size(); ++i)
+          pixel_item(i);
       } else {
         // Old items meet only fresh ones: leave out those whose x interval meets none of theirs.
+        for (const std::uint32_t k : fresh_list)
+          piece_item(k);
+        for (std::size_t i = hot_fresh_from; i < hot.size(); ++i)
+          pixel_item(i);
         spans.clear();
-        for (const Item& it : items) {
-          if (it.fresh) spans.push_back({it.xmin, it.xmax});
-        }
+        for (const Item& it : items)
+          spans.push_back({it.xmin, it.xmax});
         std::sort(spans.begin(), spans.end());
         std::size_t m = 0;
         for (const auto& sp : spans) {
@@ -531,18 +539,30 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
           }
         }
         spans.resize(m);
-        for (std::uint32_t i = 0; i < items.size(); ++i) {
-          const Item& it = items[i];
-          if (!it.fresh) {
-            // The first merged span that does not end before the item starts.
-            const auto at = std::lower_bound(
-                spans.begin(), spans.end(), it.xmin,
-                [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
-            if (at == spans.end() || at->first > it.xmax) continue;
+        const double lo = spans.empty() ? 0.0 : spans.front().first;
+        const double hi = spans.empty() ? -1.0 : spans.back().second;
+        auto meets = [&](double xmin, double xmax) {
+          if (xmax < lo || xmin > hi) return false;
+          // The first merged span that does not end before the item starts.
+          const auto at = std::lower_bound(
+              spans.begin(), spans.end(), xmin,
+              [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
+          return at != spans.end() && at->first <= xmax;
+        };
+        for (std::uint32_t c = 0; c < n; ++c) {
+          const std::uint32_t end = out.first[c + 1] - 1;
+          for (std::uint32_t k = out.first[c]; k < end; ++k) {
+            if (fresh[k]) continue;
+            const double xa = out.points[k].x, xb = out.points[k + 1].x;
+            if (meets(std::min(xa, xb), std::max(xa, xb))) piece_item(k);
           }
-          keys.push_back({i, 0});
+        }
+        for (std::size_t i = 0; i < hot_fresh_from; ++i) {
+          if (meets(hot[i].x - radius, hot[i].x + radius)) pixel_item(i);
         }
       }
+      for (std::uint32_t i = 0; i < items.size(); ++i)
+        keys.push_back({i, 0});
       splits.clear();
       grid.points_ = &out.points;
       grid.build(items, keys);
@@ -586,44 +606,62 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       if (tl != tr) return tl < tr;
       return lex_less(l.at, r.at);
     });
+    // Block copies of the unchanged runs of points between the split pieces.
     std::vector<Vec2> points;
-    std::vector<std::uint32_t> first;
-    std::vector<char> next_fresh, next_event;
-    points.reserve(out.points.size() + splits.size());
-    next_fresh.reserve(out.points.size() + splits.size());
-    next_event.reserve(out.points.size() + splits.size());
-    first.reserve(n + 1);
-    std::size_t si = 0;
-    for (std::uint32_t c = 0; c < n; ++c) {
-      first.push_back(static_cast<std::uint32_t>(points.size()));
-      const std::uint32_t end = out.first[c + 1];
-      for (std::uint32_t k = out.first[c]; k < end; ++k) {
-        points.push_back(out.points[k]);
-        next_fresh.push_back(0);
-        next_event.push_back(out.event[k]);
-        if (si < splits.size() && splits[si].piece == k) {
-          next_fresh.back() = 1;
-          const Vec2 a = out.points[k], b = out.points[k + 1];
-          for (; si < splits.size() && splits[si].piece == k; ++si) {
-            const Vec2 x = splits[si].at;
-            if (x == a || x == b || x == points.back()) continue;
-            points.push_back(x);
-            next_fresh.push_back(1);
-            next_event.push_back(1);
-          }
-        }
+    std::vector<char> next_fresh, next_event, next_joint;
+    const std::size_t total = out.points.size() + splits.size();
+    points.reserve(total);
+    next_fresh.reserve(total);
+    next_event.reserve(total);
+    next_joint.reserve(total);
+    fresh_list.clear();
+    std::uint32_t done = 0;                  // old points before this one are copied
+    auto copy_to = [&](std::uint32_t end) {  // old points done .. end - 1
+      points.insert(points.end(), out.points.begin() + done, out.points.begin() + end);
+      next_event.insert(next_event.end(), out.event.begin() + done, out.event.begin() + end);
+      next_joint.insert(next_joint.end(), joint.begin() + done, joint.begin() + end);
+      next_fresh.resize(points.size(), 0);
+      done = end;
+    };
+    // Inserted points before each old point, for the new first[].
+    std::vector<std::uint32_t> shift_at;  // (old piece, count) pairs, in order
+    for (std::size_t si = 0; si < splits.size();) {
+      const std::uint32_t k = splits[si].piece;
+      copy_to(k + 1);
+      next_fresh.back() = 1;
+      fresh_list.push_back(static_cast<std::uint32_t>(points.size() - 1));
+      const Vec2 a = out.points[k], b = out.points[k + 1];
+      std::uint32_t added = 0;
+      for (; si < splits.size() && splits[si].piece == k; ++si) {
+        const Vec2 x = splits[si].at;
+        if (x == a || x == b || x == points.back()) continue;
+        points.push_back(x);
+        next_fresh.push_back(1);
+        next_event.push_back(1);
+        next_joint.push_back(0);
+        fresh_list.push_back(static_cast<std::uint32_t>(points.size() - 1));
+        ++added;
+      }
+      if (added > 0) {
+        shift_at.push_back(k);
+        shift_at.push_back(added);
       }
     }
-    first.push_back(static_cast<std::uint32_t>(points.size()));
+    copy_to(static_cast<std::uint32_t>(out.points.size()));
+    // first[c] moves by the points inserted into pieces before it.
+    std::uint32_t shift = 0;
+    std::size_t sh = 0;
+    for (std::uint32_t c = 0; c <= n; ++c) {
+      while (sh < shift_at.size() && shift_at[sh] < out.first[c]) {
+        shift += shift_at[sh + 1];
+        sh += 2;
+      }
+      out.first[c] += shift;
+    }
     out.points = std::move(points);
-    out.first = std::move(first);
     out.event = std::move(next_event);
     fresh = std::move(next_fresh);
-    joint.assign(out.points.size(), 0);
-    if (linked_paths) {
-      for (std::uint32_t c = 0; c < n; ++c)
-        joint[out.first[c + 1] - 1] = links[c];
-    }
+    joint = std::move(next_joint);
   }
   out.converged = false;
   return out;

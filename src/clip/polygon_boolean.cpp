@@ -59,11 +59,11 @@ Operand measure(std::span<const Ring> rings) {
   for (const Ring& ring : rings) {
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring[i], b = ring[(i + 1) % n];
+      const Vec2 a = ring[i], b = i + 1 < n ? ring[i + 1] : ring[0];
       if (a == b) continue;
       ++o.edges;
       o.box.add(a);
-      o.magnitude = std::max({o.magnitude, std::fabs(a.x), std::fabs(a.y)});
+      o.magnitude = std::max(o.magnitude, std::max(std::fabs(a.x), std::fabs(a.y)));
     }
   }
   return o;
@@ -84,6 +84,7 @@ class FarEdges {
     std::vector<Vec2> v;
     std::vector<char> keep;
     for (const Ring& ring : rings) {
+      continues_ = false;
       v.clear();
       for (const Vec2 p : ring) {
         if (v.empty() || v.back() != p) v.push_back(p);
@@ -92,21 +93,21 @@ class FarEdges {
         v.pop_back();
       const std::size_t n = v.size();
       if (n < 2) continue;
-      keep.assign(n, 0);
+      keep.resize(n);
       std::size_t kept = 0;
       for (std::size_t i = 0; i < n; ++i) {
-        keep[i] = r_.meets(v[i], v[(i + 1) % n]) ? 1 : 0;
+        keep[i] = r_.meets(v[i], v[i + 1 < n ? i + 1 : 0]) ? 1 : 0;
         kept += keep[i];
       }
       if (kept == n) {
         for (std::size_t i = 0; i < n; ++i)
-          push(in, v[i], v[(i + 1) % n], label);
+          push(in, v[i], v[i + 1 < n ? i + 1 : 0], label);
         continue;
       }
       if (kept == 0) {
         int w = 0;
         for (std::size_t i = 0; i < n; ++i)
-          w += turn(v[i], v[(i + 1) % n]);
+          w += turn(v[i], v[i + 1 < n ? i + 1 : 0]);
         if (!ok_) return false;
         loops(in, corner_[3], w, label);
         continue;
@@ -121,16 +122,16 @@ class FarEdges {
       std::size_t visited = 0;
       while (visited < n) {
         if (keep[i]) {
-          push(in, v[i], v[(i + 1) % n], label);
-          i = (i + 1) % n;
+          push(in, v[i], v[i + 1 < n ? i + 1 : 0], label);
+          i = i + 1 < n ? i + 1 : 0;
           ++visited;
           continue;
         }
         const Vec2 p = v[i];
         int w = 0;
         while (visited < n && !keep[i]) {
-          w += turn(v[i], v[(i + 1) % n]);
-          i = (i + 1) % n;
+          w += turn(v[i], v[i + 1 < n ? i + 1 : 0]);
+          i = i + 1 < n ? i + 1 : 0;
           ++visited;
         }
         bridge(in, p, v[i], w, label);
@@ -150,10 +151,11 @@ class FarEdges {
     ok_ = false;
     return 0;
   }
-  static void push(detail::ArrangementInput& in, Vec2 a, Vec2 b, detail::SegmentLabel label) {
+  // Consecutive pushes of one ring continue one path.
+  void push(detail::ArrangementInput& in, Vec2 a, Vec2 b, detail::SegmentLabel label) {
     if (a == b) return;
-    in.segments.push_back({a, b});
-    in.labels.push_back(label);
+    in.push(a, b, label, continues_);
+    continues_ = true;
   }
   // The side of the frame (0 bottom, 1 right, 2 top, 3 left) an outward step from p reaches.
   [[nodiscard]] int side(Vec2 p) const {
@@ -239,6 +241,7 @@ class FarEdges {
   Box r_, f_;
   Vec2 corner_[4];
   bool ok_ = true;
+  bool continues_ = false;
 };
 
 bool keep_face(Op op, Fill fill, int wa, int wb) {
@@ -266,6 +269,7 @@ MultiPolygon polygon_boolean(std::span<const Ring> a, std::span<const Ring> b,
   bool reduced = false;
   if (op == Op::intersection || op == Op::difference) {
     const Operand oa = measure(a), ob = measure(b);
+    input.reserve(oa.edges + ob.edges + 64);
     const double magnitude = std::max(oa.magnitude, ob.magnitude);
     if (oa.edges == 0 || (op == Op::intersection && ob.edges == 0)) {
       if (stats != nullptr) *stats = {};
