@@ -128,28 +128,28 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   // path (polyline_clip reads its pieces one by one). The end of a linked segment is the start
   // of the next one (alias): it takes that start's vertex, and is a vertex when either is.
   std::vector<char>& is_vertex = noded_.event;
-  std::vector<char> alias(np, 0);
-  for (std::size_t c = 0; c < nchains; ++c) {
-    const std::uint32_t s = first[c], e = first[c + 1] - 1;
-    if (input.labels[c].open) {
-      std::fill(is_vertex.begin() + s, is_vertex.begin() + e + 1, 1);
-    }
-    if (links[c] != 0) {
-      alias[e] = 1;
-      is_vertex[e + 1] = static_cast<char>(is_vertex[e + 1] | is_vertex[e]);
-      is_vertex[e] = 0;
-    } else {
-      is_vertex[e] = 1;
-    }
-    if (c == 0 || links[c - 1] == 0) is_vertex[s] = 1;
-  }
   struct Keyed {
     Vec2 p;
     std::uint32_t i;
   };
   std::vector<Keyed> order;
-  for (std::size_t i = 0; i < np; ++i) {
-    if (is_vertex[i]) order.push_back({pts[i], static_cast<std::uint32_t>(i)});
+  bool any_open = false;
+  for (std::size_t c = 0; c < nchains; ++c) {
+    const std::uint32_t s = first[c], e = first[c + 1] - 1;
+    if (input.labels[c].open) {
+      any_open = true;
+      std::fill(is_vertex.begin() + s, is_vertex.begin() + e + 1, 1);
+    }
+    if (c == 0 || links[c - 1] == 0) is_vertex[s] = 1;
+    if (links[c] != 0) {
+      is_vertex[e + 1] = static_cast<char>(is_vertex[e + 1] | is_vertex[e]);
+      is_vertex[e] = 0;
+    } else {
+      is_vertex[e] = 1;
+    }
+    for (std::uint32_t k = s; k <= e; ++k) {
+      if (is_vertex[k]) order.push_back({pts[k], k});
+    }
   }
   std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
     return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
@@ -162,7 +162,10 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     if (i == 0 || order[i].p != order[i - 1].p) vertex_.push_back(order[i].p);
     vid[order[i].i] = static_cast<std::uint32_t>(vertex_.size() - 1);
   }
-  auto vertex_of = [&](std::uint32_t k) { return alias[k] ? vid[k + 1] : vid[k]; };
+  // The end of a linked segment (an alias) has the vertex of the next segment's start.
+  auto alias = [&](std::uint32_t k, std::size_t c) {
+    return k + 1 == first[c + 1] && links[c] != 0;
+  };
   origin_.assign(vertex_.size(), kNone);
   for (std::size_t c = nchains; c-- > 0;) {
     const std::uint32_t v = vid[first[c]];
@@ -180,7 +183,8 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     bool flipped;
   };
   std::vector<Piece> pieces;
-  piece_half_.assign(np - nchains, -1);
+  // Pieces to half-edges, for polyline_clip's open paths only.
+  piece_half_.assign(any_open ? np - nchains : 0, -1);
   edge_.clear();
   std::size_t c = 0;
   std::uint32_t k = nchains > 0 ? first[0] : 0;
@@ -197,18 +201,23 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     // Follow the run from k to the next vertex; h steps over the points after k.
     std::size_t cc = c;
     std::uint32_t h = k + 1;
-    while (vertex_of(h) == kNone) {
+    std::uint32_t v = kNone;
+    for (;;) {
       // h is no vertex: a linked segment's end (continue after the alias), or a point inside a
       // segment that no split made (none: splits are events).
-      if (alias[h]) {
+      if (alias(h, cc)) {
+        v = vid[h + 1];
+        if (v != kNone) break;
         h += 2;
         ++cc;
       } else {
+        v = vid[h];
+        if (v != kNone) break;
         ++h;
       }
     }
     const SegmentLabel label = input.labels[c];
-    const std::uint32_t u = vid[k], v = vertex_of(h);
+    const std::uint32_t u = vid[k];
     const auto p0 = static_cast<std::uint32_t>(k - c);
     const auto p1 = static_cast<std::uint32_t>(h - 1 - cc);  // the last piece of the run
     if (p0 == p1) {
@@ -221,7 +230,7 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     } else if (label.a != 0 || label.b != 0 || label.open) {
       const auto e = static_cast<std::int32_t>(edge_.size());
       edge_.push_back({u, v, label.a, label.b, k, h, pts[k + 1], pts[h - 1]});
-      std::fill(piece_half_.begin() + p0, piece_half_.begin() + p1 + 1, 2 * e);
+      if (any_open) std::fill(piece_half_.begin() + p0, piece_half_.begin() + p1 + 1, 2 * e);
     }
     c = cc;
     k = h;
@@ -242,7 +251,7 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
       const auto u = static_cast<std::uint32_t>(pieces[i].key >> 32);
       const auto v = static_cast<std::uint32_t>(pieces[i].key);
       edge_.push_back({u, v, a, b, kPlain, kPlain, vertex_[v], vertex_[u]});
-      for (std::size_t m = i; m < j; ++m)
+      for (std::size_t m = i; m < j && any_open; ++m)
         piece_half_[pieces[m].piece] = 2 * e + (pieces[m].flipped ? 1 : 0);
     }
     i = j;
@@ -349,7 +358,8 @@ void Arrangement::label_faces() {
     Lowest best{vertex_[std::min(e.u, e.v)], std::min(e.u, e.v), kNone, 0};
     if (e.i0 != kPlain) {
       for (std::uint32_t k = e.i0 + 1; k < e.i1; ++k) {
-        if (lex_less(pts[k], best.p) && pts[k] != pts[k - 1]) best = {pts[k], kNone, ei, k};
+        // Strictly lower: of a joint's two copies, the first (the end of a segment).
+        if (lex_less(pts[k], best.p)) best = {pts[k], kNone, ei, k};
       }
     }
     if (!has[root] || lex_less(best.p, lowest[root].p) ||

@@ -487,8 +487,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   // First round by monotone chains when they are long (smooth input); short chains (spiky
   // input, many small rings) go to the grid.
   bool chains_done = false;
+  std::vector<Chain> chains;
   if (linked_paths && n > 0) {
-    const std::vector<Chain> chains = monotone_chains(segments, links);
+    chains = monotone_chains(segments, links);
     if (4 * chains.size() <= n) {
       ++out.rounds;
       chain_pairs(segments, chains,
@@ -549,13 +550,67 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
               [](const std::pair<double, double>& sp, double x) { return sp.second < x; });
           return at != spans.end() && at->first <= xmax;
         };
-        for (std::uint32_t c = 0; c < n; ++c) {
-          const std::uint32_t end = out.first[c + 1] - 1;
-          for (std::uint32_t k = out.first[c]; k < end; ++k) {
-            if (fresh[k]) continue;
-            const double xa = out.points[k].x, xb = out.points[k + 1].x;
-            if (meets(std::min(xa, xb), std::max(xa, xb))) piece_item(k);
+        auto old_pieces = [&](std::uint32_t c0, std::uint32_t c1) {
+          for (std::uint32_t c = c0; c < c1; ++c) {
+            const std::uint32_t end = out.first[c + 1] - 1;
+            for (std::uint32_t k = out.first[c]; k < end; ++k) {
+              if (fresh[k]) continue;
+              const double xa = out.points[k].x, xb = out.points[k + 1].x;
+              if (meets(std::min(xa, xb), std::max(xa, xb))) piece_item(k);
+            }
           }
+        };
+        if (chains_done) {
+          // Pieces stay in their segment's box, and the segments of a chain are in x order: the
+          // segments of a chain that meet a span are a range found by binary search.
+          for (const Chain& ch : chains) {
+            if (!meets(ch.xmin, ch.xmax)) continue;
+            const bool up = segments[ch.first].a.x <= segments[ch.last - 1].b.x;
+            // The i-th segment in increasing x order, and its x interval.
+            auto seg = [&](std::uint32_t i) { return up ? ch.first + i : ch.last - 1 - i; };
+            auto lo_x = [&](std::uint32_t i) {
+              const NodingInput& g = segments[seg(i)];
+              return std::min(g.a.x, g.b.x);
+            };
+            auto hi_x = [&](std::uint32_t i) {
+              const NodingInput& g = segments[seg(i)];
+              return std::max(g.a.x, g.b.x);
+            };
+            const std::uint32_t len = ch.last - ch.first;
+            std::uint32_t from = 0;  // segments before this one (in x order) are listed
+            for (const auto& sp : spans) {
+              // The first segment whose x interval reaches the span, and the first one past it.
+              std::uint32_t l = from, h = len;
+              while (l < h) {
+                const std::uint32_t mid = (l + h) / 2;
+                if (hi_x(mid) < sp.first) {
+                  l = mid + 1;
+                } else {
+                  h = mid;
+                }
+              }
+              std::uint32_t e = l;
+              h = len;
+              while (e < h) {
+                const std::uint32_t mid = (e + h) / 2;
+                if (lo_x(mid) <= sp.second) {
+                  e = mid + 1;
+                } else {
+                  h = mid;
+                }
+              }
+              if (l >= e) continue;
+              if (up) {
+                old_pieces(ch.first + l, ch.first + e);
+              } else {
+                old_pieces(ch.last - e, ch.last - l);
+              }
+              from = e;
+              if (from == len) break;
+            }
+          }
+        } else {
+          old_pieces(0, n);
         }
         for (std::size_t i = 0; i < hot_fresh_from; ++i) {
           if (meets(hot[i].x - radius, hot[i].x + radius)) pixel_item(i);

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "clip/boolean_arrangement.h"
@@ -57,14 +58,23 @@ struct Operand {
 Operand measure(std::span<const Ring> rings) {
   Operand o;
   for (const Ring& ring : rings) {
+    // Every point of a ring with an edge is the start of an edge or equal to one.
     const std::size_t n = ring.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring[i], b = i + 1 < n ? ring[i + 1] : ring[0];
-      if (a == b) continue;
-      ++o.edges;
-      o.box.add(a);
-      o.magnitude = std::max(o.magnitude, std::max(std::fabs(a.x), std::fabs(a.y)));
+    if (n == 0) continue;
+    std::size_t edges = 0;
+    Box box;
+    Vec2 a = ring[n - 1];
+    for (const Vec2 b : ring) {
+      edges += a != b ? 1 : 0;
+      box.add(b);
+      a = b;
     }
+    if (edges == 0) continue;
+    o.edges += edges;
+    o.box.add({box.x0, box.y0});
+    o.box.add({box.x1, box.y1});
+    o.magnitude = std::max(
+        {o.magnitude, std::fabs(box.x0), std::fabs(box.x1), std::fabs(box.y0), std::fabs(box.y1)});
   }
   return o;
 }
@@ -81,16 +91,24 @@ class FarEdges {
 
   // Appends the reduced rings; false when a winding count could not be decided (never expected).
   bool add(std::span<const Ring> rings, detail::SegmentLabel label, detail::ArrangementInput& in) {
-    std::vector<Vec2> v;
+    std::vector<Vec2> copy;
     std::vector<char> keep;
     for (const Ring& ring : rings) {
       continues_ = false;
-      v.clear();
-      for (const Vec2 p : ring) {
-        if (v.empty() || v.back() != p) v.push_back(p);
+      // The ring without repeated points (a copy only when it has some).
+      bool clean = ring.size() >= 2 && ring.back() != ring.front();
+      for (std::size_t i = 1; clean && i < ring.size(); ++i)
+        clean = ring[i] != ring[i - 1];
+      std::span<const Vec2> v(ring);
+      if (!clean) {
+        copy.clear();
+        for (const Vec2 p : ring) {
+          if (copy.empty() || copy.back() != p) copy.push_back(p);
+        }
+        while (copy.size() > 1 && copy.back() == copy.front())
+          copy.pop_back();
+        v = copy;
       }
-      while (v.size() > 1 && v.back() == v.front())
-        v.pop_back();
       const std::size_t n = v.size();
       if (n < 2) continue;
       keep.resize(n);
