@@ -73,6 +73,10 @@ class CellGrid {
     ny_ = h > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
     cw_ = w > 0 ? w / nx_ : 1.0;
     ch_ = h > 0 ? h / ny_ : 1.0;
+    // Multiplying by the inverse rounds a little differently from dividing: far below the
+    // widening by a millionth of a cell.
+    icw_ = 1.0 / cw_;
+    ich_ = 1.0 / ch_;
     ex_ = 1e-6 * cw_;
     ey_ = 1e-6 * ch_;
     entries_.clear();
@@ -120,11 +124,16 @@ class CellGrid {
   }
 
  private:
+  // Truncation is floor here (values below 1 give cell 0); NaN (an infinite extent) gives 0.
   [[nodiscard]] int col(double x) const {
-    return static_cast<int>(std::clamp(std::floor((x - x0_) / cw_), 0.0, double(nx_ - 1)));
+    const double c = (x - x0_) * icw_;
+    if (!(c >= 1.0)) return 0;
+    return c >= nx_ - 1 ? nx_ - 1 : static_cast<int>(c);
   }
   [[nodiscard]] int row(double y) const {
-    return static_cast<int>(std::clamp(std::floor((y - y0_) / ch_), 0.0, double(ny_ - 1)));
+    const double r = (y - y0_) * ich_;
+    if (!(r >= 1.0)) return 0;
+    return r >= ny_ - 1 ? ny_ - 1 : static_cast<int>(r);
   }
   void add(const Item& it, std::uint32_t item) {
     const int r0 = row(it.ymin - ey_), r1 = row(it.ymax + ey_);
@@ -134,13 +143,13 @@ class CellGrid {
       a = points_->at(it.piece);
       b = points_->at(it.piece + 1);
     }
+    const double slope = line ? (b.x - a.x) / (b.y - a.y) : 0.0;
     for (int r = r0; r <= r1; ++r) {
       double xl = it.xmin, xr = it.xmax;
       if (line) {
         // The piece's x range over the row's y range (widened), within its box.
         const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
         const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
-        const double slope = (b.x - a.x) / (b.y - a.y);
         const double xa = a.x + (ylo - a.y) * slope, xb = a.x + (yhi - a.y) * slope;
         xl = std::max(it.xmin, std::min(xa, xb) - ex_);
         xr = std::min(it.xmax, std::max(xa, xb) + ex_);
@@ -157,7 +166,7 @@ class CellGrid {
   const std::vector<Vec2>* points_ = nullptr;
 
  private:
-  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1, ex_ = 0, ey_ = 0;
+  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1, icw_ = 1, ich_ = 1, ex_ = 0, ey_ = 0;
   int nx_ = 1, ny_ = 1;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> entries_;  // (cell, item) per item
   std::vector<std::uint32_t> item_first_;
@@ -528,9 +537,15 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
         for (std::size_t i = hot_fresh_from; i < hot.size(); ++i)
           pixel_item(i);
         spans.clear();
-        for (const Item& it : items)
-          spans.push_back({it.xmin, it.xmax});
-        std::sort(spans.begin(), spans.end());
+        if (8 * items.size() < out.points.size()) {
+          for (const Item& it : items)
+            spans.push_back({it.xmin, it.xmax});
+          std::sort(spans.begin(), spans.end());
+        } else {
+          // Most pieces are new: every old one is listed.
+          const double inf = std::numeric_limits<double>::infinity();
+          spans.push_back({-inf, inf});
+        }
         std::size_t m = 0;
         for (const auto& sp : spans) {
           if (m > 0 && sp.first <= spans[m - 1].second) {
