@@ -20,10 +20,11 @@ namespace contain::clip {
 /// unspecified). Results per index do not depend on the thread count.
 /// Preconditions: out.size() == kept.size() == segments.size(); finite coordinates.
 ///
-/// The box forms run a branch-free kernel (no data-dependent branch; two segments per step in
-/// GCC/Clang vector extensions, SSE2 on any x86-64, no -march needed) computing
-/// Liang-Barsky in floating point together with a certificate: every decision whose margin
-/// exceeds the kernel's proven rounding error bound (8.01 eps of the parameters involved) is
+/// The box forms run a branch-free kernel (no data-dependent branch; GCC/Clang vector
+/// extensions: four segments per step in AVX2 where the CPU has it, chosen at run time, else
+/// two in SSE2, which every x86-64 has; no -march needed, and the same bits either way)
+/// computing Liang-Barsky in floating point together with a certificate: every decision whose
+/// margin exceeds the kernel's proven rounding error bound (8.01 eps of the parameters involved) is
 /// final; the rest (touching, nearly touching, parallel on a face, huge or tiny coordinates) are
 /// redone by the exact `liang_barsky`. So decisions equal `liang_barsky`'s exactly; points agree
 /// with it to rounding (the kernel may pick the other face at a corner tie) and lie in the
