@@ -209,6 +209,7 @@ def locate(
     """
     import dask
     import dask.array as da
+    from dask.base import tokenize
 
     _check_boundary(boundary)
     source = Shape.of(shape, fill=fill)
@@ -231,7 +232,8 @@ def locate(
         dtype=dtype,
         drop_axis=1,
         meta=np.empty((0,), dtype=dtype),
-        name="contain-locate",
+        # Deterministic, so the same request is the same graph (and two requests never clash).
+        name="contain-locate-" + tokenize(array.name, source.key, boundary, threads),
     )
 
 
