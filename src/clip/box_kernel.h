@@ -97,8 +97,9 @@ inline void box_kernel_scalar(const double* in, double* out, std::uint8_t* kept,
 // The same kernel on W = 2 or 4 segments at once with GCC/Clang vector extensions: SSE2 pairs
 // on every x86-64 (NEON on AArch64), AVX2 quadruples where the CPU has them (chosen at run time
 // by `box_kernel_for`; no -march needed). Lane l holds segment l; the arithmetic is the scalar
-// kernel's, operation for operation, with no contraction into FMA (AVX2 alone has none), so
-// every lane is bit for bit what `box_kernel_scalar` computes. Comparisons give lane masks, selects
+// kernel's, operation for operation, with no contraction into FMA (the AVX2 target has no FMA
+// instructions, and GCC does not contract in ISO C++ mode), so every lane is bit for bit what
+// `box_kernel_scalar` computes. Comparisons give lane masks, selects
 // are blends, and the selects of a larger or smaller value are max / min instructions.
 //
 // Layout. A segment is 2D doubles (a_0 .. a_{D-1}, b_0 .. b_{D-1}), read as D pairs of two
