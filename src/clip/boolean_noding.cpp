@@ -175,7 +175,7 @@ class CellGrid {
 
 // orient2d, without its exact fallback when c is an endpoint (pieces sharing an endpoint are the
 // most common pair, and their zero determinant is the filter's worst case).
-Sign orient(Vec2 a, Vec2 b, Vec2 c) {
+[[gnu::always_inline]] inline Sign orient(Vec2 a, Vec2 b, Vec2 c) {
   if (c == a || c == b) return Sign::zero;
   return orient2d(a, b, c);
 }
@@ -638,28 +638,43 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       grid.build(items, keys);
       // A fresh item meets every item sharing a cell with it, an old one only the fresh ones;
       // each pair once (stamps), from its fresh side with the higher index when both are fresh.
+      // Items are listed fresh first (cell lists are in item order): a fresh item meets the
+      // fresh ones before it and every old one; each pair once (stamps).
+      std::uint32_t old_from = 0;
+      while (old_from < items.size() && items[old_from].fresh)
+        ++old_from;
       stamp.assign(items.size(), kNoStamp);
+      auto visit = [&](std::uint32_t i, const Item& it, std::uint32_t j) {
+        if (stamp[j] == i) return;
+        stamp[j] = i;
+        const Item& jt = items[j];
+        if (it.pixel && jt.pixel) return;
+        if (jt.xmax < it.xmin || it.xmax < jt.xmin || jt.ymax < it.ymin || it.ymax < jt.ymin)
+          return;
+        if (it.pixel) {
+          test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
+        } else if (jt.pixel) {
+          test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
+        } else {
+          pair(it.piece, jt.piece);
+        }
+      };
       for (const Key& key : keys) {
         const std::uint32_t i = key.item;
+        if (i >= old_from) break;
         const Item& it = items[i];
-        if (!it.fresh) continue;
         for (const std::uint32_t cell : grid.cells_of(key.rank)) {
-          for (const std::uint32_t j : grid.items_in(cell)) {
-            if (j == i || stamp[j] == i) continue;
-            stamp[j] = i;
-            const Item& jt = items[j];
-            if (jt.fresh && j > i) continue;
-            if (it.pixel && jt.pixel) continue;
-            if (jt.xmax < it.xmin || it.xmax < jt.xmin || jt.ymax < it.ymin || it.ymax < jt.ymin)
-              continue;
-            if (it.pixel) {
-              test_pixel(out.points, jt.piece, hot[it.piece], radius, splits);
-            } else if (jt.pixel) {
-              test_pixel(out.points, it.piece, hot[jt.piece], radius, splits);
-            } else {
-              pair(it.piece, jt.piece);
-            }
-          }
+          const std::span<const std::uint32_t> list = grid.items_in(cell);
+          std::size_t m = 0;
+          for (; m < list.size() && list[m] < i; ++m)
+            visit(i, it, list[m]);
+          if (old_from == items.size()) continue;
+          m = static_cast<std::size_t>(
+              std::lower_bound(list.begin() + static_cast<std::ptrdiff_t>(m), list.end(),
+                               old_from) -
+              list.begin());
+          for (; m < list.size(); ++m)
+            visit(i, it, list[m]);
         }
       }
       hot_fresh_from = hot_before;
