@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/bound/aabb.h"
@@ -36,7 +37,8 @@ py::tuple disc(Vec2 center, double radius) {
 void bind_bound(py::module_& m) {
   m.def(
       "aabb",
-      [](const py::handle& shape) {
+      [](const ShapeLike& argument) {
+        const py::handle shape = argument.object;
         if (py::isinstance<Mesh>(shape)) {
           const Box3 box = bound::aabb(shape.cast<const Mesh&>());
           return py::make_tuple(py::array_t<double>(3, &box.min.x),
@@ -67,7 +69,8 @@ Empty input gives min = +inf, max = -inf.
 )doc");
   m.def(
       "bounding_sphere",
-      [](const py::handle& shape, const std::string& method) {
+      [](const ShapeLike& argument, const std::string& method) {
+        const py::handle shape = argument.object;
         const bound::SphereOptions options{.method = parse_method(method)};
         if (py::isinstance<Mesh>(shape)) {
           const Mesh& mesh = shape.cast<const Mesh&>();
@@ -95,7 +98,8 @@ point is inside the returned ball, checked exactly. No points or NaN/Inf raise C
 )doc");
   m.def(
       "bounding_circle",
-      [](const py::handle& shape, const std::string& method) {
+      [](const ShapeLike& argument, const std::string& method) {
+        const py::handle shape = argument.object;
         const bound::CircleOptions options{.method = parse_method(method)};
         if (py::isinstance<MultiPolygon>(shape) || py::isinstance<py::str>(shape)) {
           const Circle c = take(bound::bounding_circle(to_region(shape, "shape"), options));

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/clip/clip_segments.h"
@@ -166,9 +167,9 @@ py::tuple clip2(const Doubles& array, const py::handle& box, const py::handle& h
 void bind_clip(py::module_& m) {
   m.def(
       "clip_segments",
-      [](const py::handle& segments, const py::handle& box, const py::handle& halfspace,
-         const py::handle& ball, const py::handle& convex, int threads) {
-        py::array array = py::array::ensure(segments);
+      [](const ArrayLike& segments, const py::object& box, const py::object& halfspace,
+         const py::object& ball, const py::object& convex, int threads) {
+        py::array array = py::array::ensure(segments.object);
         if (!array) {
           PyErr_Clear();
           throw py::type_error("segments must be an (N, 4) or (N, 6) array of real numbers");
@@ -203,17 +204,17 @@ Whether a segment misses, touches or crosses is decided exactly. Runs on `thread
 
   m.def(
       "polygon_boolean",
-      [](const py::handle& a, const py::handle& b, const std::string& op,
+      [](const RegionLike& a, const RegionLike& b, const std::string& op,
          const std::string& fill) -> py::object {
-        const MultiPolygon ra = to_region(a, "a");
-        const MultiPolygon rb = to_region(b, "b");
+        const MultiPolygon ra = to_region(a.object, "a");
+        const MultiPolygon rb = to_region(b.object, "b");
         const clip::PolygonBooleanOptions options{.op = parse_op(op), .fill = parse_fill(fill)};
         MultiPolygon result;
         {
           py::gil_scoped_release release;
           result = clip::polygon_boolean(ra, rb, options);
         }
-        if (py::isinstance<py::str>(a) && py::isinstance<py::str>(b)) {
+        if (py::isinstance<py::str>(a.object) && py::isinstance<py::str>(b.object)) {
           return py::str(io::write_wkt(result));
         }
         return py::cast(std::move(result));

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/collide/mesh_mesh.h"
@@ -85,9 +86,9 @@ Example:
     >>> pair.collide(pose).intersect
     >>> hits = pair.collide_many(poses)   # (N, 3, 4) -> (N,) bool, on every core
 )doc")
-      .def(py::init([](const Mesh& a, const Mesh& b, const py::handle& transform_a) {
-             const collide::MeshPairOptions options{.transform_a =
-                                                        to_transform(transform_a, "transform_a")};
+      .def(py::init([](const Mesh& a, const Mesh& b, const TransformLike& transform_a) {
+             const collide::MeshPairOptions options{
+                 .transform_a = to_transform(transform_a.object, "transform_a")};
              py::gil_scoped_release release;
              return collide::MeshPair(a, b, options);
            }),
@@ -95,16 +96,16 @@ Example:
            "Prepares A (placed once by transform_a) and B.")
       .def(
           "collide",
-          [](const collide::MeshPair& pair, const py::handle& transform_b) {
-            const Transform t = to_transform(transform_b, "transform_b");
+          [](const collide::MeshPair& pair, const TransformLike& transform_b) {
+            const Transform t = to_transform(transform_b.object, "transform_b");
             py::gil_scoped_release release;
             return pair.collide(t);
           },
           "transform_b"_a = py::none(), "Does A meet B placed by transform_b? A Contact.")
       .def(
           "collide_many",
-          [](const collide::MeshPair& pair, const py::handle& poses, int threads) {
-            const std::vector<Transform> transforms = to_transforms(poses);
+          [](const collide::MeshPair& pair, const ArrayLike& poses, int threads) {
+            const std::vector<Transform> transforms = to_transforms(poses.object);
             std::vector<collide::Contact> contacts(transforms.size());
             {
               py::gil_scoped_release release;
@@ -127,20 +128,21 @@ Runs on `threads` threads (0: every core) without the GIL.
 
   m.def(
       "collide",
-      [](const py::handle& a, const py::handle& b, const py::handle& transform_a,
-         const py::handle& transform_b, const std::string& fill) {
+      [](const ShapeLike& shape_a, const ShapeLike& shape_b, const TransformLike& transform_a,
+         const TransformLike& transform_b, const std::string& fill) {
+        const py::handle a = shape_a.object, b = shape_b.object;
         if (py::isinstance<Mesh>(a) && py::isinstance<Mesh>(b)) {
           const Mesh& ma = a.cast<const Mesh&>();
           const Mesh& mb = b.cast<const Mesh&>();
-          const Transform ta = to_transform(transform_a, "transform_a");
-          const Transform tb = to_transform(transform_b, "transform_b");
+          const Transform ta = to_transform(transform_a.object, "transform_a");
+          const Transform tb = to_transform(transform_b.object, "transform_b");
           py::gil_scoped_release release;
           return collide::mesh_mesh(ma, mb, ta, tb);
         }
         if (py::isinstance<Mesh>(a) || py::isinstance<Mesh>(b)) {
           throw py::type_error("collide: a and b must both be meshes or both be regions");
         }
-        if (!transform_a.is_none() || !transform_b.is_none()) {
+        if (!transform_a.object.is_none() || !transform_b.object.is_none()) {
           throw py::value_error("collide: transforms apply to meshes only");
         }
         const MultiPolygon ra = to_region(a, "a");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/inside/mesh_index.h"
@@ -144,13 +145,12 @@ Example:
            "max_cells"_a = std::size_t{1} << 24, "winding_accuracy"_a = 3.0,
            "Prepares a contain.Mesh. Grid options: about cells_per_triangle cells per triangle,\n"
            "between min_cells and max_cells; winding_accuracy for open meshes.")
-      .def(py::init([](const py::handle& vertices, const py::handle& faces,
-                       double cells_per_triangle, std::size_t min_cells, std::size_t max_cells,
-                       double winding_accuracy) {
-             const Doubles v = as_matrix(vertices, 3, "vertices");
+      .def(py::init([](const ArrayLike& vertices, const ArrayLike& faces, double cells_per_triangle,
+                       std::size_t min_cells, std::size_t max_cells, double winding_accuracy) {
+             const Doubles v = as_matrix(vertices.object, 3, "vertices");
              const auto points = as_vec3(v);
              Mesh mesh = take(Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()),
-                                                as_triangles(faces)));
+                                                as_triangles(faces.object)));
              const auto options =
                  mesh_options(cells_per_triangle, min_cells, max_cells, winding_accuracy);
              py::gil_scoped_release release;
@@ -170,22 +170,22 @@ Example:
           "path"_a, "Reads a mesh file (see contain.read_mesh) and prepares it.")
       .def(
           "locate",
-          [](const inside::MeshIndex& index, const py::handle& points, int threads) {
-            return to_numpy(mesh_locate(index, points, threads));
+          [](const inside::MeshIndex& index, const ArrayLike& points, int threads) {
+            return to_numpy(mesh_locate(index, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, locate3.c_str())
       .def(
           "contains",
-          [](const inside::MeshIndex& index, const py::handle& points, const std::string& boundary,
+          [](const inside::MeshIndex& index, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(mesh_locate(index, points, threads), boundary);
+            return to_booleans(mesh_locate(index, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
       .def(
           "locate_point",
-          [](const inside::MeshIndex& index, const py::handle& point) {
-            return location_object(index.locate(point3(point)));
+          [](const inside::MeshIndex& index, const ArrayLike& point) {
+            return location_object(index.locate(point3(point.object)));
           },
           "point"_a, "Where one point (x, y, z) lies, as a contain.Location.")
       .def_property_readonly(
@@ -230,9 +230,9 @@ Example:
     >>> parcel.locate([[0.5, 0.5], [2, 2], [4, 2]])
     array([ 1, -1,  0], dtype=int8)
 )doc")
-      .def(py::init([](const py::handle& region, const std::string& fill, double cells_per_edge,
+      .def(py::init([](const RegionLike& region, const std::string& fill, double cells_per_edge,
                        std::size_t min_cells, std::size_t max_cells) {
-             const MultiPolygon polygons = to_region(region, "region");
+             const MultiPolygon polygons = to_region(region.object, "region");
              const inside::PolygonIndexOptions options{.fill = parse_fill(fill),
                                                        .cells_per_edge = cells_per_edge,
                                                        .min_cells = min_cells,
@@ -255,22 +255,22 @@ Example:
           "Reads a region file (see contain.read_region) and prepares it.")
       .def(
           "locate",
-          [](const inside::PolygonIndex& index, const py::handle& points, int threads) {
-            return to_numpy(polygon_locate(index, points, threads));
+          [](const inside::PolygonIndex& index, const ArrayLike& points, int threads) {
+            return to_numpy(polygon_locate(index, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, locate2.c_str())
       .def(
           "contains",
-          [](const inside::PolygonIndex& index, const py::handle& points,
+          [](const inside::PolygonIndex& index, const ArrayLike& points,
              const std::string& boundary, int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(polygon_locate(index, points, threads), boundary);
+            return to_booleans(polygon_locate(index, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
       .def(
           "locate_point",
-          [](const inside::PolygonIndex& index, const py::handle& point) {
-            return location_object(index.locate(point2(point)));
+          [](const inside::PolygonIndex& index, const ArrayLike& point) {
+            return location_object(index.locate(point2(point.object)));
           },
           "point"_a, "Where one point (x, y) lies, as a contain.Location.")
       .def_property_readonly(
@@ -295,10 +295,10 @@ Example:
 
   m.def(
       "point_in_polygon",
-      [](const py::handle& region, const py::handle& point, const std::string& fill) {
-        const MultiPolygon polygons = to_region(region, "region");
+      [](const RegionLike& region, const ArrayLike& point, const std::string& fill) {
+        const MultiPolygon polygons = to_region(region.object, "region");
         return location_object(
-            inside::point_in_polygon(polygons, point2(point), {.fill = parse_fill(fill)}));
+            inside::point_in_polygon(polygons, point2(point.object), {.fill = parse_fill(fill)}));
       },
       "region"_a, "point"_a, py::kw_only(), "fill"_a = "even_odd", R"doc(
 Where one point (x, y) lies relative to a region (Region, WKT or rings) under `fill`, exactly,
@@ -306,8 +306,8 @@ as a contain.Location. O(n) for n edges; build a PolygonIndex for many points.
 )doc");
   m.def(
       "point_in_mesh",
-      [](const Mesh& mesh, const py::handle& point) {
-        return location_object(inside::point_in_mesh(mesh, point3(point)));
+      [](const Mesh& mesh, const ArrayLike& point) {
+        return location_object(inside::point_in_mesh(mesh, point3(point.object)));
       },
       "mesh"_a, "point"_a, R"doc(
 Where one point (x, y, z) lies relative to the solid bounded by `mesh`, as a contain.Location:

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/io/mesh_io.h"
@@ -35,11 +36,11 @@ io::MeshFormat parse_format(const std::string& format) {
       format + "'");
 }
 
-Mesh mesh_from_arrays(const py::handle& vertices, const py::handle& faces) {
-  const Doubles v = as_matrix(vertices, 3, "vertices");
+Mesh mesh_from_arrays(const ArrayLike& vertices, const ArrayLike& faces) {
+  const Doubles v = as_matrix(vertices.object, 3, "vertices");
   const auto points = as_vec3(v);
-  return take(
-      Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()), as_triangles(faces)));
+  return take(Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()),
+                                as_triangles(faces.object)));
 }
 
 // Twice the signed area of a ring, relative to its first vertex (shoelace terms stay small for
@@ -125,7 +126,8 @@ Region(rings) makes one polygon of the given rings (a sequence of (K, 2) arrays)
 Region.from_polygons([[shell, hole, ...], ...]) several; Region.from_wkt(text) parses WKT.
 Wherever a region is expected, a Region, a WKT string or a sequence of rings is accepted.
 )doc")
-      .def(py::init([](const py::handle& rings) { return to_region(rings, "rings"); }), "rings"_a,
+      .def(py::init([](const RegionLike& rings) { return to_region(rings.object, "rings"); }),
+           "rings"_a,
            "One polygon of `rings` (each a (K, 2) array of x, y; at least 3 points; finite).")
       .def_static(
           "from_polygons",
@@ -240,7 +242,7 @@ dropped). Raises ContainError naming `source` and the line for malformed text.
 )doc");
   m.def(
       "write_wkt",
-      [](const py::handle& region) { return io::write_wkt(to_region(region, "region")); },
+      [](const RegionLike& region) { return io::write_wkt(to_region(region.object, "region")); },
       "region"_a,
       "MULTIPOLYGON WKT of a region, every coordinate the shortest decimal that reads back "
       "exactly.");
