@@ -213,6 +213,24 @@ template <class V, int D>
   }
 }
 
+// The low byte of each lane of `flags` (0 to 3) to kept[0 .. W).
+template <class V>
+[[gnu::always_inline]] inline void store_flags(typename Lanes<V>::M flags, std::uint8_t* kept) {
+  if constexpr (Lanes<V>::count == 2) {
+    using Bytes = unsigned char __attribute__((vector_size(16)));
+    using Low = unsigned char __attribute__((vector_size(2)));
+    const Bytes b = reinterpret_cast<Bytes>(flags);
+    const Low low = __builtin_shufflevector(b, b, 0, 8);
+    std::memcpy(kept, &low, sizeof low);
+  } else {
+    using Bytes = unsigned char __attribute__((vector_size(32)));
+    using Low = unsigned char __attribute__((vector_size(4)));
+    const Bytes b = reinterpret_cast<Bytes>(flags);
+    const Low low = __builtin_shufflevector(b, b, 0, 8, 16, 24);
+    std::memcpy(kept, &low, sizeof low);
+  }
+}
+
 template <class V, int D>
 [[gnu::always_inline]] inline void box_kernel_lanes(const double* in, double* out,
                                                     std::uint8_t* kept, std::size_t count,
@@ -222,6 +240,12 @@ template <class V, int D>
   const V big = splat<V>(0x1p900), tiny = splat<V>(0x1p-900), margin = splat<V>(8.01 * 0x1p-53);
   const V zero = splat<V>(0.0), one = splat<V>(1.0), two = splat<V>(2.0),
           minus_one = splat<V>(-1.0);
+  // The box in lanes, read once: `out` could alias `box` as far as the compiler knows.
+  V box_min[D], box_max[D];
+  for (int k = 0; k < D; ++k) {
+    box_min[k] = splat<V>(box.min[k]);
+    box_max[k] = splat<V>(box.max[k]);
+  }
   std::size_t i = 0;
   for (; i + width <= count; i += width) {
     V c[2 * D];
@@ -234,7 +258,7 @@ template <class V, int D>
       const V a = c[k], b = c[D + k];
       d[k] = b - a;
       const V r = one / d[k];
-      const V mn = splat<V>(box.min[k]), mx = splat<V>(box.max[k]);
+      const V mn = box_min[k], mx = box_max[k];
       const V t1 = (mn - a) * r, t2 = (mx - a) * r;
       enter[k] = min_lanes(t1, t2);  // t1 < t2 ? t1 : t2
       exit[k] = max_lanes(t2, t1);   // t1 < t2 ? t2 : t1
@@ -252,7 +276,7 @@ template <class V, int D>
 #pragma GCC unroll 4
     for (int k = 0; k < D; ++k) {
       const V a = c[k], b = c[D + k];
-      const V mn = splat<V>(box.min[k]), mx = splat<V>(box.max[k]);
+      const V mn = box_min[k], mx = box_max[k];
       const M forward = d[k] > zero;
       V p0 = a + lo_c * d[k];
       V p1 = select_lanes<V, M>(hi_c == one, b, a + hi_c * d[k]);
@@ -263,10 +287,7 @@ template <class V, int D>
       p[D + k] = max_lanes(mn, min_lanes(mx, p1));
     }
     store_lanes<V, D>(p, out + 2 * D * i);
-    const M flags = (keep & 1) | (unsure & 2);
-#pragma GCC unroll 4
-    for (std::size_t l = 0; l < width; ++l)
-      kept[i + l] = static_cast<std::uint8_t>(flags[l]);
+    store_flags<V>((keep & 1) | (unsure & 2), kept + i);
   }
   if (i < count) box_kernel_scalar<D>(in + 2 * D * i, out + 2 * D * i, kept + i, count - i, box);
 }
