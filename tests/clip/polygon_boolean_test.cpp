@@ -45,6 +45,27 @@ Ring star(std::mt19937_64& rng, int n, double cx, double cy, double r0, double r
   return ring;
 }
 
+// A smooth ring of n vertices around (cx, cy) (radius 1 + a few low harmonics, counter-clockwise):
+// long monotone chains, so the first noding round works on chains and most vertices end inside
+// runs of the arrangement (one graph edge each).
+Ring blob(std::mt19937_64& rng, int n, double cx, double cy, double scale) {
+  std::uniform_real_distribution<double> u(0, 1);
+  double amp[6], phase[6];
+  for (int k = 0; k < 6; ++k) {
+    amp[k] = u(rng);
+    phase[k] = 2 * M_PI * u(rng);
+  }
+  Ring ring;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / n;
+    double r = 1.0;
+    for (int k = 0; k < 6; ++k)
+      r += (0.25 / (k + 2)) * amp[k] * std::sin((k + 2) * t + phase[k]);
+    ring.push_back({cx + scale * r * std::cos(t), cy + scale * r * std::sin(t)});
+  }
+  return ring;
+}
+
 // A random closed path of n vertices in [0, 1]^2: self-intersecting almost surely.
 Ring scribble(std::mt19937_64& rng, int n) {
   std::uniform_real_distribution<double> u(0, 1);
@@ -290,6 +311,126 @@ TEST(PolygonBoolean, EmptyAndDegenerateInputsGiveEmptyOrTheOtherRegion) {
   EXPECT_EQ(run(a, none, Op::union_), region(a));
   EXPECT_EQ(run(a, flat, Op::union_), region(a));
   EXPECT_TRUE(run(flat, flat, Op::union_).empty());
+}
+
+TEST(PolygonBoolean, SmoothRingsGiveValidOutputConsistentAreasAndFewGraphEdges) {
+  std::mt19937_64 rng(31);
+  const std::vector<Ring> none;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::uniform_real_distribution<double> shift(-0.6, 0.6);
+    const std::vector<Ring> a{blob(rng, 400, 0, 0, 1)};
+    std::vector<Ring> b{blob(rng, 300, shift(rng), shift(rng), 0.9)};
+    if (trial % 2 == 1) std::reverse(b[0].begin(), b[0].end());
+    for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive}) {
+      const double area_a = area(run(a, none, Op::union_, fill));
+      const double area_b = area(run(b, none, Op::union_, fill));
+      PolygonBooleanStats stats;
+      const MultiPolygon i = polygon_boolean(a, b, {.op = Op::intersection, .fill = fill}, &stats);
+      const MultiPolygon u = run(a, b, Op::union_, fill);
+      const MultiPolygon d = run(a, b, Op::difference, fill);
+      const MultiPolygon x = run(a, b, Op::xor_, fill);
+      for (const MultiPolygon* r : {&i, &u, &d, &x}) {
+        ASSERT_TRUE(is_valid_ogc(*r)) << trial << " " << static_cast<int>(fill) << " " << (r - &i);
+      }
+      constexpr double kTol = 1e-12 * 9;  // relative to the extent squared
+      EXPECT_NEAR(area(u) + area(i), area_a + area_b, kTol) << trial;
+      EXPECT_NEAR(area(d), area_a - area(i), kTol) << trial;
+      EXPECT_NEAR(area(x), area(u) - area(i), kTol) << trial;
+      // Runs through vertices that nothing else meets are single edges: a few per crossing.
+      EXPECT_LT(stats.graph_edges, 4 * stats.crossings + 8) << trial;
+    }
+  }
+}
+
+TEST(PolygonBoolean, UnionOfASmoothRegionWithItselfReturnsTheInputBitForBit) {
+  std::mt19937_64 rng(32);
+  Ring hole = blob(rng, 500, 0.1, 0.2, 0.4);
+  std::reverse(hole.begin(), hole.end());
+  const MultiPolygon a = region({blob(rng, 2000, 0, 0, 2), hole});
+  EXPECT_EQ(polygon_boolean(a, a, {.op = Op::union_}), a);
+  EXPECT_EQ(polygon_boolean(a, a, {.op = Op::intersection}), a);
+  EXPECT_TRUE(polygon_boolean(a, a, {.op = Op::difference}).empty());
+  const MultiPolygon big = region({box(-5, -5, 5, 5)});
+  EXPECT_EQ(polygon_boolean(a, big, {.op = Op::intersection}), a);
+}
+
+// A vertex that another ring passes through or shares is a vertex of the arrangement even when
+// it lies inside a long run of untouched vertices: the noding reports it (Noded::event).
+TEST(PolygonBoolean, SmoothRingsSharingVerticesAndEdgesWithoutCrossingStayApart) {
+  std::mt19937_64 rng(33);
+  const Ring a = blob(rng, 600, 0, 0, 1);
+  // b shares the vertices 100 .. 250 of a (and the edges between them, in the opposite
+  // direction) and closes with an arc outside a: the regions touch along that chain only.
+  Ring b;
+  for (int k = 250; k >= 100; --k)
+    b.push_back(a[k]);
+  for (int k = 100; k <= 250; k += 10) {
+    const Vec2 p = a[k];
+    b.push_back({p.x * 2.5, p.y * 2.5});
+  }
+  // c touches a at vertex 400 from outside with one corner (a thin counter-clockwise triangle
+  // along the ray from the centre, which meets a only there: a is star-shaped).
+  const Vec2 q = a[400], side{-0.02 * q.y, 0.02 * q.x};
+  const Ring c{q, {3 * q.x - side.x, 3 * q.y - side.y}, {3 * q.x + side.x, 3 * q.y + side.y}};
+  const mpq_class area_a = exact_signed_area(region({a}));
+  for (const Ring& other : {b, c}) {
+    const mpq_class area_o = exact_signed_area(region({other}));
+    ASSERT_GT(area_o, 0);
+    const MultiPolygon u = run({a}, {other}, Op::union_);
+    const MultiPolygon i = run({a}, {other}, Op::intersection);
+    const MultiPolygon d = run({a}, {other}, Op::difference);
+    EXPECT_TRUE(is_valid_ogc(u));
+    EXPECT_TRUE(is_valid_ogc(d));
+    EXPECT_TRUE(i.empty());
+    EXPECT_EQ(exact_signed_area(u), area_a + area_o);
+    EXPECT_EQ(exact_signed_area(d), area_a);
+  }
+}
+
+// Components without crossings get their winding numbers from a ray from their lowest point,
+// which is usually inside a run.
+TEST(PolygonBoolean, NestedSmoothRingsGetTheirWindingNumbersRight) {
+  std::mt19937_64 rng(34);
+  const Ring outer = blob(rng, 700, 0, 0, 3);
+  const Ring inner = blob(rng, 300, 0.2, -0.1, 1);
+  Ring inner_cw(inner);
+  std::reverse(inner_cw.begin(), inner_cw.end());
+  const mpq_class area_outer = exact_signed_area(region({outer}));
+  const mpq_class area_inner = exact_signed_area(region({inner}));
+  const MultiPolygon d = run({outer}, {inner}, Op::difference);
+  ASSERT_EQ(d.polygons.size(), 1u);
+  EXPECT_EQ(d.polygons[0].rings.size(), 2u);
+  EXPECT_TRUE(is_valid_ogc(d));
+  EXPECT_EQ(exact_signed_area(d), area_outer - area_inner);
+  EXPECT_EQ(exact_signed_area(run({outer}, {inner}, Op::intersection)), area_inner);
+  EXPECT_EQ(exact_signed_area(run({inner}, {outer}, Op::union_)), area_outer);
+  // One operand of two nested rings: even-odd makes a hole, nonzero with a counter-clockwise
+  // inner ring a region of winding 2, with a clockwise one a hole again.
+  const std::vector<Ring> none;
+  EXPECT_EQ(exact_signed_area(run({outer, inner}, none, Op::union_)), area_outer - area_inner);
+  EXPECT_EQ(exact_signed_area(run({outer, inner}, none, Op::union_, Fill::nonzero)), area_outer);
+  EXPECT_EQ(exact_signed_area(run({outer, inner_cw}, none, Op::union_, Fill::nonzero)),
+            area_outer - area_inner);
+  // Far apart: each its own component.
+  Ring away = inner;
+  for (Vec2& p : away)
+    p.x += 10;
+  EXPECT_EQ(exact_signed_area(run({outer}, {away}, Op::union_)),
+            area_outer + exact_signed_area(region({away})));
+  EXPECT_TRUE(run({outer}, {away}, Op::intersection).empty());
+}
+
+// Rings of one operand written one after another, the next starting where the one before ends:
+// the paths are kept apart, and the shared start is a vertex.
+TEST(PolygonBoolean, RingsStartingWhereThePreviousEndsAreSeparatePaths) {
+  const std::vector<Ring> a{box(0, 0, 1, 1), {{0, 0}, {-1, 0}, {-1, -1}, {0, -1}}};
+  const MultiPolygon u = run(a, {}, Op::union_);
+  EXPECT_TRUE(is_valid_ogc(u));
+  EXPECT_EQ(u.polygons.size(), 2u);
+  EXPECT_EQ(exact_signed_area(u), 2);
+  const MultiPolygon i = run(a, {box(-0.5, -0.5, 0.5, 0.5)}, Op::intersection);
+  EXPECT_TRUE(is_valid_ogc(i));
+  EXPECT_EQ(exact_signed_area(i), 0.5);
 }
 
 }  // namespace
