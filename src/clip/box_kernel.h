@@ -329,11 +329,11 @@ template <int D>
 #endif
 }
 
-/// The version for `isa` (the portable one when there is none).
+/// The version for `isa`; the portable one where this build or this CPU has none.
 template <int D>
 [[nodiscard]] BoxKernel<D> box_kernel_for(KernelIsa isa) {
 #if defined(CONTAIN_CLIP_KERNEL_AVX2)
-  if (isa == KernelIsa::avx2) return &box_kernel_avx2<D>;
+  if (isa == KernelIsa::avx2 && kernel_isa_available(isa)) return &box_kernel_avx2<D>;
 #endif
   (void)isa;
   return &box_kernel_portable<D>;
@@ -342,13 +342,12 @@ template <int D>
 /// The widest version this CPU runs, chosen once.
 template <int D>
 [[nodiscard]] BoxKernel<D> best_box_kernel() {
-  static const BoxKernel<D> kernel = box_kernel_for<D>(
-      kernel_isa_available(KernelIsa::avx2) ? KernelIsa::avx2 : KernelIsa::portable);
+  static const BoxKernel<D> kernel = box_kernel_for<D>(KernelIsa::avx2);
   return kernel;
 }
 
-/// `clip_segments` against a box with the kernel version for `isa` (the portable one where
-/// there is none); `clip_segments` itself takes the widest this CPU runs. For the tests and the
+/// `clip_segments` against a box with the kernel version `box_kernel_for(isa)`;
+/// `clip_segments` itself takes the widest this CPU runs. For the tests and the
 /// benchmark: the results are the same bit for bit whatever the version.
 void clip_segments_with(std::span<const Segment3> segments, const Box3& box,
                         std::span<Segment3> out, std::span<std::uint8_t> kept,
