@@ -2,25 +2,30 @@
 //
 // 1. Noding (boolean_noding.cpp): every input edge becomes a chain of pieces that meet other
 //    pieces only at shared endpoints.
-// 2. Graph: equal points merge into vertices (sorted by (x, y)), equal pieces into edges whose
+// 2. Graph: the points that something else meets (Noded::event), split points and path ends
+//    are vertices; equal ones merge (sorted by (x, y)). Every run of pieces from a vertex along
+//    its path through the other points to the next vertex is one edge carrying its inner points
+//    (rule clip-events); runs of one piece that are equal merge into one edge whose
 //    multiplicities in A and B add up (opposite directions cancel); an edge that no operand
 //    counts is dropped unless it is part of an open path. Around every vertex the outgoing
-//    half-edges are sorted counter-clockwise, exactly: the half-plane of the direction (signs of
-//    coordinate differences, exact for doubles), then orient2d.
+//    half-edges are sorted counter-clockwise by their first piece, exactly: the half-plane of the
+//    direction (signs of coordinate differences, exact for doubles), then orient2d.
 // 3. Faces: the face left of h = u -> v continues with the half-edge of v that is the next
 //    clockwise from v -> u. A face left of h has winding numbers w(left) = w(right) + m(h) for
 //    the multiplicities m(h) of h. Per connected component, the face around it is found at its
-//    lowest (x, y) vertex v0 (all its edges leave v0 into x >= v0.x), and its winding numbers
-//    are those of v0 itself with respect to all other edges: a ray from v0 towards -x counted
-//    with the half-open rule and exact orient2d (no edge of the component meets the open ray,
-//    and no edge of another component passes through v0). The rest follows by the relation
-//    above, breadth first over the faces.
+//    lowest (x, y) point o, a vertex (all its edges leave o into x >= o.x) or a point inside a
+//    run (the face left of the run when it turns counter-clockwise there), and its winding
+//    numbers are those of o with respect to the other components: a ray from o towards -x
+//    counted with the half-open rule and exact orient2d (no piece of the component meets the
+//    open ray, and no piece of another component passes through o). The rest follows by the
+//    relation above, breadth first over the faces.
 // 4. Extraction: a half-edge is a boundary of the result when the face on its left is kept and
 //    the one on its right is not. Boundary chains take at each vertex the first boundary
 //    half-edge clockwise from the reverse of the arriving one (the tightest turn, which keeps
 //    two kept sectors meeting at a vertex apart); a chain that revisits a vertex is split there,
-//    so every ring is simple. Counter-clockwise rings are shells, clockwise ones holes, and a
-//    hole joins the shell whose kept faces are connected to its own across non-boundary edges.
+//    so every ring is simple; rings copy the inner points of their runs. Counter-clockwise rings
+//    are shells, clockwise ones holes, and a hole joins the shell whose kept faces are connected
+//    to its own across non-boundary edges.
 
 #include "clip/boolean_arrangement.h"
 

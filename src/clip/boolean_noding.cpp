@@ -1,11 +1,12 @@
 // Noding by "split until no new crossing".
 //
 // Round r takes the current pieces (consecutive points of every chain) and tests every pair of
-// pieces whose boxes overlap, that share a cell of a uniform grid (each piece listed in the cells
-// it passes through, conservatively), and of which at least one is new (made in round r - 1, or
-// an input segment in round 1); a pair of old pieces was tested when the younger of the two was
-// new and gave nothing then, and later rounds grid only the old pieces whose x interval meets a
-// new one's. A test is decided by the four exact orient2d signs:
+// pieces whose boxes overlap and of which at least one is new (made in round r - 1, or an input
+// segment in round 1); a pair of old pieces was tested when the younger of the two was new and
+// gave nothing then. Candidate pairs come from a uniform grid (each piece listed in the cells it
+// passes through, conservatively; later rounds grid only the old pieces whose x interval meets a
+// new one's), or, in the first round of input made of long monotone paths, from pairs of
+// monotone chains (rule clip-noding-chains). A test is decided by the four exact orient2d signs:
 // - disjoint: nothing;
 // - collinear overlap: each piece is split at the other's endpoints that lie strictly inside it;
 // - an endpoint of one on the other (touching, T junction): the other is split there;
@@ -14,7 +15,9 @@
 // Splits of input doubles are exact. A rounded crossing point lies off both lines by at most an
 // ulp, so its pieces can meet a neighbour they did not meet before: those pieces are new and are
 // tested again. Rounds stop when one finds nothing; every piece then meets every other at most
-// in shared endpoints, or coincides with it exactly.
+// in shared endpoints, or coincides with it exactly. Every endpoint that a test finds met by the
+// other piece is marked (Noded::event, rule clip-events), so the arrangement needs to sort only
+// those points, the split points and the ends of paths.
 
 #include "clip/boolean_noding.h"
 
@@ -249,13 +252,13 @@ bool on_piece(Vec2 a, Vec2 b, Vec2 x) {
 
 // `linked`: t is the piece after s on a linked path (t == s + 2, points[s + 1] the joint); their
 // common joint is then no event.
-void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t, double radius,
-               std::vector<Split>& splits, std::vector<Vec2>& hot, std::int64_t& crossings,
-               const Marks& mark, bool linked) {
+// o1, o2: the sides of q0 and q1 of the line p0 p1, not both the same strict side (the caller
+// rejects most pairs with them).
+[[gnu::noinline]] void test_pair(const std::vector<Vec2>& pts, std::uint32_t s, std::uint32_t t,
+                                 Sign o1, Sign o2, double radius, std::vector<Split>& splits,
+                                 std::vector<Vec2>& hot, std::int64_t& crossings, const Marks& mark,
+                                 bool linked) {
   const Vec2 p0 = pts[s], p1 = pts[s + 1], q0 = pts[t], q1 = pts[t + 1];
-  const Sign o1 = orient(p0, p1, q0);
-  const Sign o2 = orient(p0, p1, q1);
-  if (o1 == o2 && o1 != Sign::zero) return;
   // Pieces sharing an endpoint, the other one off the line: that endpoint is all they share.
   if (o1 == Sign::zero && o2 != Sign::zero && (q0 == p0 || q0 == p1)) {
     if (!(linked && q0 == p1)) {
@@ -490,7 +493,11 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   auto pair = [&](std::uint32_t s, std::uint32_t t) {
     // The lower piece first: the rounded crossing does not depend on the visiting order.
     if (t < s) std::swap(s, t);
-    test_pair(out.points, s, t, radius, splits, hot, out.crossings, mark,
+    const Vec2 p0 = out.points[s], p1 = out.points[s + 1];
+    const Sign o1 = orient(p0, p1, out.points[t]);
+    const Sign o2 = orient(p0, p1, out.points[t + 1]);
+    if (o1 == o2 && o1 != Sign::zero) return;
+    test_pair(out.points, s, t, o1, o2, radius, splits, hot, out.crossings, mark,
               t == s + 2 && joint[s + 1] != 0);
   };
   // First round by monotone chains when they are long (smooth input); short chains (spiky

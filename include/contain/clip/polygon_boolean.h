@@ -47,13 +47,16 @@ struct PolygonBooleanStats {
 ///   direction. Under `Fill::even_odd` shells and holes may be written in either direction.
 ///
 /// Method: an exact-decision arrangement. All input edges are noded together (candidate pairs
-/// from a uniform grid; every crossing, touching and overlap decided by the exact `orient2d`;
+/// from monotone chains for smooth input, rule clip-noding-chains, else from a uniform grid;
+/// every crossing, touching and overlap decided by the exact `orient2d`;
 /// for an intersection or difference, the edges of the larger operand far from the other's box
 /// are first replaced by a few frame edges with the same winding numbers there, rule
 /// clip-far-edges in docs/robustness.md); a proper
 /// crossing point is computed in extended precision and rounded to the nearest doubles, and the
 /// pieces are checked again until no two pieces meet except at shared endpoints ("split until no
-/// new crossing", rule clip-noding in docs/robustness.md). Faces of the noded graph get their
+/// new crossing", rule clip-noding in docs/robustness.md). Only points that other pieces meet,
+/// split points and path ends become vertices; each run through the other points is one graph
+/// edge (rule clip-events). Faces of the noded graph get their
 /// winding numbers of A and B from one exact ray per connected component and the edge
 /// multiplicities; a face is in the result when `op(filled(w_A), filled(w_B))`. Boundary edges
 /// are chained with the tightest turn, chains split where they revisit a vertex, and rings are
@@ -78,8 +81,10 @@ struct PolygonBooleanStats {
 /// intersection (the boolean is regularised, as in OGC).
 ///
 /// Complexity: O((n + k) log n) for n input edges and k crossings in typical input (grid cells
-/// shared by pieces: O(n^2) pair tests at worst, when all edges crowd into a few cells), plus
-/// O(n) per connected component of the arrangement for its winding ray. An intersection of a
+/// shared by pieces: O(n^2) pair tests at worst, when all edges crowd into a few cells; smooth
+/// input: O(n + k log n) pair tests by monotone chains, and sorting, labelling and tracing on
+/// O(k + rings) graph edges), plus O(n) per connected component of the arrangement for its
+/// winding ray. An intersection of a
 /// small region with a large one costs O(n) comparisons plus the arrangement of the large one's
 /// edges near the small one; boxes whose intersection has no interior give the empty result in
 /// O(n).
