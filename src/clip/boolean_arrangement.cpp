@@ -138,11 +138,10 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     std::uint32_t i;
   };
   std::vector<Keyed> order;
-  bool any_open = false;
+  const bool any_open = input.open_paths;
   for (std::size_t c = 0; c < nchains; ++c) {
     const std::uint32_t s = first[c], e = first[c + 1] - 1;
-    if (input.labels[c].open) {
-      any_open = true;
+    if (any_open && input.labels[c].open) {
       std::fill(is_vertex.begin() + s, is_vertex.begin() + e + 1, 1);
     }
     if (c == 0 || links[c - 1] == 0) is_vertex[s] = 1;

@@ -42,6 +42,8 @@ struct ArrangementInput {
     labels.reserve(n);
     links.reserve(n);
   }
+  /// Some labels are open (polyline_clip): their pieces are read one by one.
+  bool open_paths = false;
   /// Largest coordinate for the noding's hot pixels; 0: that of the segments.
   double magnitude = 0.0;
   void add_rings(std::span<const Ring> rings, SegmentLabel label);

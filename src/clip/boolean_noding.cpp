@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <span>
 #include <utility>
@@ -707,9 +708,13 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
     next_event.reserve(total);
     next_joint.reserve(total);
     fresh_list.clear();
-    std::uint32_t done = 0;                  // old points before this one are copied
-    auto copy_to = [&](std::uint32_t end) {  // old points done .. end - 1
-      points.insert(points.end(), out.points.begin() + done, out.points.begin() + end);
+    std::uint32_t done = 0;  // old points before this one are copied
+    // Old points done .. end - 1 (memcpy: Vec2 is trivially copyable, but not trivial, so
+    // vector::insert copies it one by one).
+    auto copy_to = [&](std::uint32_t end) {
+      const std::size_t at = points.size(), len = end - done;
+      points.resize(at + len);
+      std::memcpy(points.data() + at, out.points.data() + done, len * sizeof(Vec2));
       next_event.insert(next_event.end(), out.event.begin() + done, out.event.begin() + end);
       next_joint.insert(next_joint.end(), joint.begin() + done, joint.begin() + end);
       next_fresh.resize(points.size(), 0);

@@ -10,6 +10,7 @@ std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines,
                                     std::span<const Ring> region,
                                     const PolylineClipOptions& options) {
   detail::ArrangementInput input;
+  input.open_paths = true;
   input.add_rings(region, {.a = 1, .b = 0, .open = false});
   const std::size_t first_open = input.segments.size();
   std::vector<std::size_t> path_end;  // one past each polyline's last segment
