@@ -9,7 +9,7 @@ installed prefix), from the project root:
 
 Scene: the armadillo of ../shared/corpus/meshes (86,482 triangles, closed) when ../shared is
 there, else a built-in torus; points uniform in the mesh's box padded by 10%, generated on the
-workers by dask.array.random and persisted there before timing (so the timed part is the
+workers by dask.array.random, persisted and rebalanced there before timing (so the timed part is the
 classification, the scheduling and the reduction, not the data's transfer). Each cluster is a
 distributed.LocalCluster of n worker processes with one thread each on 127.0.0.1; each chunk is
 classified on one thread (contain.dask's default). Timed: the fastest of --repeat runs of
@@ -69,6 +69,10 @@ def scene(args):
         path = pathlib.Path("/tmp/contain_bench_torus.ply")
         contain.write_mesh(torus(rings=256, sides=128), path)
     return path
+
+
+def scale(block, offset, span):
+    return block * np.array(span) + np.array(offset)
 
 
 def best_of(repeat, run, settle=lambda: None):
@@ -138,10 +142,17 @@ def main():
         cluster = distributed.LocalCluster(n_workers=workers, processes=True, threads_per_worker=1,
                                            host="127.0.0.1", dashboard_address=None)
         with distributed.Client(cluster) as client:
-            points = da.random.RandomState(5).uniform(low - pad, high + pad, size=(args.points, 3),
-                                                      chunks=(args.chunk, 3))
+            # Bounds as plain floats inside each task: numpy arrays as arguments would become graph
+            # keys that every chunk depends on, and the scheduler would then put every chunk on the
+            # worker holding them. Rebalanced after persisting, so each worker holds its share.
+            unit = da.random.RandomState(5).uniform(size=(args.points, 3), chunks=(args.chunk, 3))
+            points = unit.map_blocks(scale, dtype=np.float64,
+                                     offset=tuple(float(v) for v in low - pad),
+                                     span=tuple(float(v) for v in high - low + 2 * pad))
             points = client.persist(points)
             distributed.wait(points)
+            client.rebalance(points)
+            held = sorted(client.run(lambda dask_worker: len(dask_worker.data)).values())
             task = lambda: int((contain.dask.locate(points, path) == 1).sum().compute())  # noqa: E731
             keep = client.run_on_scheduler(lambda dask_scheduler: len(dask_scheduler.tasks))
             wait = settled(client, keep)
@@ -167,7 +178,7 @@ def main():
                 f"{rates[workers] / 1e6:7.2f} M points/s  ({seconds:.2f} s wall, workers' CPU "
                 f"{cpu:.2f} s = {cpu / seconds / workers:.0%} of {workers} core{'s' if workers > 1 else ''}; "
                 f"first run with index builds {warm:.2f} s; builds per worker "
-                f"{sorted(builds.values())}; inside {inside:,})")
+                f"{sorted(builds.values())}; chunks held per worker {held}; inside {inside:,})")
         cluster.close()
     if 1 in rates and 2 in rates:
         say(f"  speed-up 2 workers / 1 worker: x{rates[2] / rates[1]:.2f} wall-clock; points per "
