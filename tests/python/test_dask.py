@@ -107,3 +107,11 @@ def test_shape_and_argument_errors_are_clear(mesh_file):
         contain.dask.locate(da.zeros((10, 3), chunks=5), 42)
     assert contain.dask.Shape.of("/data/parcels.wkt").kind == "region"
     assert contain.dask.Shape.of("/data/part.obj").kind == "mesh"
+
+
+def test_column_chunks_numpy_input_and_all_core_chunks_give_the_same_answers(client, mesh_file):
+    local = np.random.default_rng(9).uniform(-1.6, 1.6, (200_000, 3))
+    expected = contain.MeshIndex.from_file(mesh_file).locate(local)
+    by_columns = da.from_array(local, chunks=(50_000, 1))  # merged into whole rows
+    assert np.array_equal(contain.dask.locate(by_columns, mesh_file).compute(), expected)
+    assert np.array_equal(contain.dask.locate(local, mesh_file, threads=0).compute(), expected)
