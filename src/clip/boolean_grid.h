@@ -1,0 +1,152 @@
+#pragma once
+// The uniform grid of candidate pairs of a noding round (boolean_noding.cpp). Private to the
+// polygon booleans.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "contain/geometry/vec.h"
+
+namespace contain::clip::detail {
+
+struct Item {
+  double xmin, xmax, ymin, ymax;
+  std::uint32_t piece;  // or the index of a hot pixel
+  bool fresh;
+  bool pixel;
+};
+
+// An item of the round and its position in the grid's per-item cell lists.
+struct Key {
+  std::uint32_t item;
+  std::uint32_t rank;
+};
+
+// A uniform grid over the items of a round, about four cells per item. Every item is listed in
+// every cell its piece (or pixel square) passes through, conservatively: the rows and, per row,
+// the x range of the piece are widened by a millionth of a cell, far above the rounding of their
+// computation, so two pieces that meet share a listed cell (the one of a common point).
+class CellGrid {
+ public:
+  void build(const std::vector<Item>& items, std::vector<Key>& keys) {
+    x0_ = y0_ = std::numeric_limits<double>::infinity();
+    double x1 = -x0_, y1 = -y0_;
+    for (const Key& k : keys) {
+      const Item& it = items[k.item];
+      x0_ = std::min(x0_, it.xmin);
+      y0_ = std::min(y0_, it.ymin);
+      x1 = std::max(x1, it.xmax);
+      y1 = std::max(y1, it.ymax);
+    }
+    const double w = x1 - x0_, h = y1 - y0_;
+    const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(keys.size())));
+    nx_ = w > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    ny_ = h > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    cw_ = w > 0 ? w / nx_ : 1.0;
+    ch_ = h > 0 ? h / ny_ : 1.0;
+    // Multiplying by the inverse rounds a little differently from dividing: far below the
+    // widening by a millionth of a cell.
+    icw_ = 1.0 / cw_;
+    ich_ = 1.0 / ch_;
+    ex_ = 1e-6 * cw_;
+    ey_ = 1e-6 * ch_;
+    entries_.clear();
+    item_first_.clear();
+    for (Key& k : keys) {
+      k.rank = static_cast<std::uint32_t>(item_first_.size());
+      item_first_.push_back(static_cast<std::uint32_t>(entries_.size()));
+      const Item& it = items[k.item];
+      add(it, k.item);
+    }
+    item_first_.push_back(static_cast<std::uint32_t>(entries_.size()));
+    // Counting sort of (cell, item) into per-cell lists.
+    const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+    cell_first_.assign(ncell + 1, 0);
+    for (const auto& e : entries_)
+      ++cell_first_[e.first + 1];
+    for (std::size_t c = 0; c < ncell; ++c)
+      cell_first_[c + 1] += cell_first_[c];
+    cell_items_.resize(entries_.size());
+    fill_.assign(cell_first_.begin(), cell_first_.end() - 1);
+    for (const auto& e : entries_)
+      cell_items_[fill_[e.first]++] = e.second;
+  }
+  [[nodiscard]] std::span<const std::uint32_t> items_in(std::uint32_t cell) const {
+    return {cell_items_.data() + cell_first_[cell], cell_first_[cell + 1] - cell_first_[cell]};
+  }
+  // The cells of the item of rank r (its position in the keys).
+  [[nodiscard]] auto cells_of(std::uint32_t r) const {
+    struct Range {
+      const std::pair<std::uint32_t, std::uint32_t>* b;
+      const std::pair<std::uint32_t, std::uint32_t>* e;
+      struct It {
+        const std::pair<std::uint32_t, std::uint32_t>* p;
+        std::uint32_t operator*() const { return p->first; }
+        It& operator++() {
+          ++p;
+          return *this;
+        }
+        bool operator!=(const It& o) const { return p != o.p; }
+      };
+      [[nodiscard]] It begin() const { return {b}; }
+      [[nodiscard]] It end() const { return {e}; }
+    };
+    return Range{entries_.data() + item_first_[r], entries_.data() + item_first_[r + 1]};
+  }
+
+ private:
+  // Truncation is floor here (values below 1 give cell 0); NaN (an infinite extent) gives 0.
+  [[nodiscard]] int col(double x) const {
+    const double c = (x - x0_) * icw_;
+    if (!(c >= 1.0)) return 0;
+    return c >= nx_ - 1 ? nx_ - 1 : static_cast<int>(c);
+  }
+  [[nodiscard]] int row(double y) const {
+    const double r = (y - y0_) * ich_;
+    if (!(r >= 1.0)) return 0;
+    return r >= ny_ - 1 ? ny_ - 1 : static_cast<int>(r);
+  }
+  void add(const Item& it, std::uint32_t item) {
+    const int r0 = row(it.ymin - ey_), r1 = row(it.ymax + ey_);
+    const bool line = !it.pixel && it.ymin < it.ymax && it.xmin < it.xmax && r0 < r1;
+    Vec2 a{}, b{};
+    if (line) {
+      a = points_->at(it.piece);
+      b = points_->at(it.piece + 1);
+    }
+    const double slope = line ? (b.x - a.x) / (b.y - a.y) : 0.0;
+    for (int r = r0; r <= r1; ++r) {
+      double xl = it.xmin, xr = it.xmax;
+      if (line) {
+        // The piece's x range over the row's y range (widened), within its box.
+        const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
+        const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
+        const double xa = a.x + (ylo - a.y) * slope, xb = a.x + (yhi - a.y) * slope;
+        xl = std::max(it.xmin, std::min(xa, xb) - ex_);
+        xr = std::min(it.xmax, std::max(xa, xb) + ex_);
+      }
+      const int c0 = col(xl - ex_), c1 = col(xr + ex_);
+      for (int c = c0; c <= c1; ++c)
+        entries_.emplace_back(static_cast<std::uint32_t>(r) * static_cast<std::uint32_t>(nx_) +
+                                  static_cast<std::uint32_t>(c),
+                              item);
+    }
+  }
+
+ public:
+  const std::vector<Vec2>* points_ = nullptr;
+
+ private:
+  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1, icw_ = 1, ich_ = 1, ex_ = 0, ey_ = 0;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries_;  // (cell, item) per item
+  std::vector<std::uint32_t> item_first_;
+  std::vector<std::uint32_t> cell_first_, cell_items_, fill_;
+};
+
+}  // namespace contain::clip::detail
