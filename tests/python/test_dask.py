@@ -3,7 +3,6 @@ answers equal the single-process ones on a few million points, each worker build
 once, and only the shape's path or bytes travel (one graph key, never an index)."""
 
 import numpy as np
-import pandas as pd
 import pytest
 
 import contain
@@ -14,6 +13,7 @@ dask = pytest.importorskip("dask")
 da = pytest.importorskip("dask.array")
 dd = pytest.importorskip("dask.dataframe")
 distributed = pytest.importorskip("distributed")
+pd = pytest.importorskip("pandas")
 
 POINTS = 3_000_000
 CHUNK = 250_000
