@@ -2,11 +2,13 @@
 // Liang-Barsky, Cyrus-Beck (six half-spaces) and the branch-free batch kernel (each version:
 // portable SSE2 pairs, AVX2 quadruples), beside a plain pass that copies the same data (the
 // memory limit). Answers are checked outside the timed loops (every clipper keeps the same
-// segments; every kernel version gives the same points bit for bit). Best of several runs, in
-// wall-clock time and in CPU time of the process (all its threads): the machine is shared, and
-// CPU time does not count the time other jobs held the core.
+// segments; every kernel version gives the same points bit for bit). Best of several rounds
+// (each round runs every pass once, in turn), in wall-clock time and in CPU time of the process
+// (all its threads): the machine is shared, and CPU time does not count the time other jobs held
+// the core.
 //
-//   segment_clip_bench [count=10000000] [repeats=5] [only rows whose name contains this]
+//   segment_clip_bench [count=10000000] [rounds=5] [only rows whose name contains this; the
+//                                                   copy passes always run]
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -42,17 +45,12 @@ double cpu_seconds() {
 }
 
 template <class F>
-Timing best_of(int repeats, F run) {
-  Timing best;
-  for (int r = 0; r < repeats; ++r) {
-    const double cpu0 = cpu_seconds();
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    best.wall = std::min(best.wall, took.count());
-    best.cpu = std::min(best.cpu, cpu_seconds() - cpu0);
-  }
-  return best;
+Timing timed(F&& run) {
+  const double cpu0 = cpu_seconds();
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+  return {took.count(), cpu_seconds() - cpu0};
 }
 
 }  // namespace
@@ -73,61 +71,76 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < count; ++i)
     reference[i] = clip::liang_barsky(in[i], box).kept;
 
-  struct Row {
+  // The passes run in turn, `repeats` rounds, each pass keeping its best time: on a shared
+  // machine every pass then meets the same changes of load, and the ratios compare like with like.
+  struct Pass {
     std::string name;
     int threads;
+    std::function<void()> run;
+    std::function<void()> check;
     Timing time;
   };
-  std::vector<Row> rows;
-  const auto wanted = [&](const std::string& name) {
-    return only.empty() || name.find(only) != std::string::npos;
+  std::vector<Pass> passes;
+  const auto add = [&](std::string name, int threads, std::function<void()> run,
+                       std::function<void()> check) {
+    if (only.empty() || name.find(only) != std::string::npos || name.starts_with("copy")) {
+      passes.push_back({std::move(name), threads, std::move(run), std::move(check), {}});
+    }
   };
-  const auto check = [&](const std::string& name) {
+  const auto same_decisions = [&](const std::string& name) {
     if (!std::equal(kept.begin(), kept.end(), reference.begin())) {
       std::printf("MISMATCH: %s keeps other segments than Liang-Barsky\n", name.c_str());
       std::exit(1);
     }
   };
   const auto scalar = [&](const std::string& name, auto clipper) {
-    if (!wanted(name)) return;
-    rows.push_back({name, 1, best_of(repeats, [&] {
-                      for (std::size_t i = 0; i < count; ++i) {
-                        const auto r = clipper(in[i]);
-                        kept[i] = r.kept ? 1 : 0;
-                        if (r.kept) out[i] = r.segment;
-                      }
-                    })});
-    check(name);
+    add(
+        name, 1,
+        [&, clipper] {
+          for (std::size_t i = 0; i < count; ++i) {
+            const auto r = clipper(in[i]);
+            kept[i] = r.kept ? 1 : 0;
+            if (r.kept) out[i] = r.segment;
+          }
+        },
+        [&, name] { same_decisions(name); });
   };
   const auto batch = [&](const std::string& name, int threads, clip::detail::KernelIsa isa) {
-    if (!wanted(name)) return;
-    rows.push_back({name, threads, best_of(repeats, [&] {
-                      clip::detail::clip_segments_with(in, box, out, kept, {.threads = threads},
-                                                       isa);
-                    })});
-    check(name);
-    for (std::size_t i = 0; i < count; ++i)
-      if (!kept[i]) out[i] = {};
-    if (first_out.empty()) {
-      first_out = out;
-    } else if (std::memcmp(first_out.data(), out.data(), count * sizeof(Segment3)) != 0) {
-      std::printf("MISMATCH: %s gives other points than the first kernel row\n", name.c_str());
-      std::exit(1);
-    }
+    add(
+        name, threads,
+        [&, threads, isa] {
+          clip::detail::clip_segments_with(in, box, out, kept, {.threads = threads}, isa);
+        },
+        [&, name] {
+          same_decisions(name);
+          for (std::size_t i = 0; i < count; ++i)
+            if (!kept[i]) out[i] = {};
+          if (first_out.empty()) {
+            first_out = out;
+          } else if (std::memcmp(first_out.data(), out.data(), count * sizeof(Segment3)) != 0) {
+            std::printf("MISMATCH: %s gives other points than the first kernel row\n",
+                        name.c_str());
+            std::exit(1);
+          }
+        });
   };
 
-  const Timing copy1 = best_of(repeats, [&] {
-    std::memcpy(out.data(), in.data(), count * sizeof(Segment3));
-    std::memset(kept.data(), 1, count);
-  });
-  const Timing copy2 = best_of(repeats, [&] {
-    parallel_for(count, {.threads = 2}, [&](std::size_t b, std::size_t e) {
-      std::memcpy(out.data() + b, in.data() + b, (e - b) * sizeof(Segment3));
-      std::memset(kept.data() + b, 1, e - b);
-    });
-  });
-  rows.push_back({"copy (memcpy, 1 thread)", 1, copy1});
-  rows.push_back({"copy (memcpy, 2 threads)", 2, copy2});
+  add(
+      "copy (memcpy, 1 thread)", 1,
+      [&] {
+        std::memcpy(out.data(), in.data(), count * sizeof(Segment3));
+        std::memset(kept.data(), 1, count);
+      },
+      [] {});
+  add(
+      "copy (memcpy, 2 threads)", 2,
+      [&] {
+        parallel_for(count, {.threads = 2}, [&](std::size_t b, std::size_t e) {
+          std::memcpy(out.data() + b, in.data() + b, (e - b) * sizeof(Segment3));
+          std::memset(kept.data() + b, 1, e - b);
+        });
+      },
+      [] {});
   scalar("Cohen-Sutherland (exact, scalar)",
          [&](const Segment3& s) { return clip::cohen_sutherland(s, box); });
   scalar("Liang-Barsky (exact, scalar)",
@@ -141,16 +154,26 @@ int main(int argc, char** argv) {
   batch("clip_segments, SSE2 kernel (2 threads)", 2, KernelIsa::portable);
   if (avx2) batch("clip_segments, AVX2 kernel (2 threads)", 2, KernelIsa::avx2);
 
+  for (int r = 0; r < repeats; ++r) {
+    for (Pass& pass : passes) {
+      const Timing t = timed(pass.run);
+      pass.time.wall = std::min(pass.time.wall, t.wall);
+      pass.time.cpu = std::min(pass.time.cpu, t.cpu);
+      pass.check();
+    }
+  }
+  const Timing copy1 = passes[0].time, copy2 = passes[1].time;
+
   std::size_t kept_count = 0;
   for (auto k : reference)
     kept_count += k;
-  std::printf("%zu random segments in [-2,2]^3 against [-1,1]^3 (%zu kept), best of %d\n", count,
-              kept_count, repeats);
+  std::printf("%zu random segments in [-2,2]^3 against [-1,1]^3 (%zu kept), best of %d rounds\n",
+              count, kept_count, repeats);
   std::printf("traffic per segment: 48 B read + 48 B written + 1 B flag\n");
   std::printf("ratios: to the copy pass with the same thread count (wall / CPU time)\n\n");
   std::printf("%-42s %9s %9s %9s %8s %9s %9s\n", "pass", "wall ms", "CPU ms", "M seg/s", "GB/s in",
               "vs copy", "(CPU)");
-  for (const Row& r : rows) {
+  for (const Pass& r : passes) {
     const double rate = static_cast<double>(count) / r.time.wall;
     const Timing& copy = r.threads == 1 ? copy1 : copy2;
     std::printf("%-42s %9.1f %9.1f %9.1f %8.2f %8.1f%% %8.1f%%\n", r.name.c_str(),
