@@ -218,6 +218,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   Noded out;
   const auto n = static_cast<std::uint32_t>(segments.size());
   const bool linked_paths = links.size() == segments.size();
+  // Room for some splits: the rounds insert them in place.
+  const std::size_t room = 2 * std::size_t{n} + n / 8 + 64;
+  out.points.reserve(room);
   out.points.resize(2 * std::size_t{n});
   out.first.resize(std::size_t{n} + 1);
   for (std::uint32_t c = 0; c < n; ++c) {
@@ -232,9 +235,12 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       magnitude = std::max(magnitude, std::max(std::fabs(s.b.x), std::fabs(s.b.y)));
     }
   }
+  out.event.reserve(room);
   out.event.assign(out.points.size(), 0);
   // joint[k]: points[k] ends a segment linked to the next one (the piece at k + 1 continues it).
-  std::vector<char> joint(out.points.size(), 0);
+  std::vector<char> joint;
+  joint.reserve(room);
+  joint.assign(out.points.size(), 0);
   if (linked_paths) {
     for (std::uint32_t c = 0; c < n; ++c)
       joint[out.first[c + 1] - 1] = links[c];
@@ -244,7 +250,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   const double radius = magnitude > 0 ? std::ldexp(1.0, std::ilogb(magnitude) - 51)
                                       : std::numeric_limits<double>::min();
   // fresh[k]: the piece starting at points[k] is new this round.
-  std::vector<char> fresh(out.points.size(), 1);
+  std::vector<char> fresh;
+  fresh.reserve(room);
+  fresh.assign(out.points.size(), 1);
   std::vector<std::uint32_t> fresh_list;  // pieces made by the last round's splits
   std::vector<Vec2> hot;                  // crossing points: hot pixels for ever after
   std::size_t hot_fresh_from = 0;         // hot[i] for i >= this were made last round
@@ -463,66 +471,69 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       if (tl != tr) return tl < tr;
       return lex_less(l.at, r.at);
     });
-    // Block copies of the unchanged runs of points between the split pieces.
-    std::vector<Vec2> points;
-    std::vector<char> next_fresh, next_event, next_joint;
-    const std::size_t total = out.points.size() + splits.size();
-    points.reserve(total);
-    next_fresh.reserve(total);
-    next_event.reserve(total);
-    next_joint.reserve(total);
-    fresh_list.clear();
-    std::uint32_t done = 0;  // old points before this one are copied
-    // Old points done .. end - 1 (memcpy: Vec2 is trivially copyable, but not trivial, so
-    // vector::insert copies it one by one).
-    auto copy_to = [&](std::uint32_t end) {
-      const std::size_t at = points.size(), len = end - done;
-      points.resize(at + len);
-      std::memcpy(points.data() + at, out.points.data() + done, len * sizeof(Vec2));
-      next_event.insert(next_event.end(), out.event.begin() + done, out.event.begin() + end);
-      next_joint.insert(next_joint.end(), joint.begin() + done, joint.begin() + end);
-      next_fresh.resize(points.size(), 0);
-      done = end;
+    // The accepted split points, grouped by piece (none equal to the piece's ends or to the one
+    // before), then an in-place insertion from the back: unchanged runs of points move by
+    // memmove, so few splits cost no second copy of the arrays.
+    struct Group {
+      std::uint32_t piece, first, count;  // adds[first .. first + count - 1]
     };
-    // Inserted points before each old point, for the new first[].
-    std::vector<std::uint32_t> shift_at;  // (old piece, count) pairs, in order
+    std::vector<Group> groups;
+    std::vector<Vec2> adds;
     for (std::size_t si = 0; si < splits.size();) {
       const std::uint32_t k = splits[si].piece;
-      copy_to(k + 1);
-      next_fresh.back() = 1;
-      fresh_list.push_back(static_cast<std::uint32_t>(points.size() - 1));
       const Vec2 a = out.points[k], b = out.points[k + 1];
-      std::uint32_t added = 0;
+      Group g{k, static_cast<std::uint32_t>(adds.size()), 0};
+      Vec2 last = a;
       for (; si < splits.size() && splits[si].piece == k; ++si) {
         const Vec2 x = splits[si].at;
-        if (x == a || x == b || x == points.back()) continue;
-        points.push_back(x);
-        next_fresh.push_back(1);
-        next_event.push_back(1);
-        next_joint.push_back(0);
-        fresh_list.push_back(static_cast<std::uint32_t>(points.size() - 1));
-        ++added;
+        if (x == a || x == b || x == last) continue;
+        adds.push_back(x);
+        last = x;
+        ++g.count;
       }
-      if (added > 0) {
-        shift_at.push_back(k);
-        shift_at.push_back(added);
-      }
+      groups.push_back(g);
     }
-    copy_to(static_cast<std::uint32_t>(out.points.size()));
+    const std::size_t old_size = out.points.size(), new_size = old_size + adds.size();
+    out.points.resize(new_size);
+    out.event.resize(new_size);
+    joint.resize(new_size);
+    fresh.assign(new_size, 0);
+    fresh_list.clear();
+    std::size_t src_end = old_size, dst_end = new_size;
+    for (std::size_t gi = groups.size(); gi-- > 0;) {
+      const Group& g = groups[gi];
+      const std::size_t from = g.piece + 1, len = src_end - from;
+      if (dst_end != src_end && len > 0) {
+        std::memmove(out.points.data() + dst_end - len, out.points.data() + from,
+                     len * sizeof(Vec2));
+        std::memmove(out.event.data() + dst_end - len, out.event.data() + from, len);
+        std::memmove(joint.data() + dst_end - len, joint.data() + from, len);
+      }
+      dst_end -= len;
+      src_end = from;
+      for (std::uint32_t m = g.count; m-- > 0;) {
+        --dst_end;
+        out.points[dst_end] = adds[g.first + m];
+        out.event[dst_end] = 1;
+        joint[dst_end] = 0;
+        fresh[dst_end] = 1;
+        fresh_list.push_back(static_cast<std::uint32_t>(dst_end));
+      }
+      // The split piece itself (its start stays the old point) is new.
+      fresh[dst_end - 1] = 1;
+      fresh_list.push_back(static_cast<std::uint32_t>(dst_end - 1));
+    }
+    std::reverse(fresh_list.begin(), fresh_list.end());
     // first[c] moves by the points inserted into pieces before it.
     std::uint32_t shift = 0;
-    std::size_t sh = 0;
+    std::size_t gi = 0;
     for (std::uint32_t c = 0; c <= n; ++c) {
-      while (sh < shift_at.size() && shift_at[sh] < out.first[c]) {
-        shift += shift_at[sh + 1];
-        sh += 2;
+      while (gi < groups.size() && groups[gi].piece < out.first[c]) {
+        shift += groups[gi].count;
+        ++gi;
       }
       out.first[c] += shift;
     }
-    out.points = std::move(points);
-    out.event = std::move(next_event);
-    fresh = std::move(next_fresh);
-    joint = std::move(next_joint);
   }
   out.converged = false;
   return out;
