@@ -355,9 +355,11 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
             }
           }
         };
-        if (chains_done) {
-          // Pieces stay in their segment's box, and the segments of a chain are in x order: the
-          // segments of a chain that meet a span are a range found by binary search.
+        if (chains_done && round == 1) {
+          // The old pieces of the round after the chain round are whole input segments, and the
+          // segments of a chain are in x order: those that meet a span are a range found by
+          // binary search. (Later, a piece may reach a pixel beyond its segment's box: a full
+          // scan.)
           for (const Chain& ch : chains) {
             if (!meets(ch.xmin, ch.xmax)) continue;
             const bool up = segments[ch.first].a.x <= segments[ch.last - 1].b.x;
