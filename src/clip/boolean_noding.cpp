@@ -62,6 +62,15 @@ bool strictly_inside(Vec2 a, Vec2 b, Vec2 x) {
 }
 
 Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
+  // The rounded point depends on the order and direction of the segments: put them in a
+  // canonical order, so that equal segments (A and B both holding an edge, a ring edge traversed
+  // both ways) are split at equal points and cancel exactly (fuzz finding sliver_in_a_minus_a).
+  if (lex_less(p1, p0)) std::swap(p0, p1);
+  if (lex_less(q1, q0)) std::swap(q0, q1);
+  if (lex_less(q0, p0) || (q0 == p0 && lex_less(q1, p1))) {
+    std::swap(p0, q0);
+    std::swap(p1, q1);
+  }
   using L = long double;
   const L dpx = L(p1.x) - L(p0.x), dpy = L(p1.y) - L(p0.y);
   const L dqx = L(q1.x) - L(q0.x), dqy = L(q1.y) - L(q0.y);

@@ -2,6 +2,7 @@
 list(APPEND CLIP_TESTS
   ${CMAKE_CURRENT_LIST_DIR}/boolean_checks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/polygon_boolean_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/polygon_boolean_extreme_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/polyline_clip_test.cpp)
 
 # The shared corpus of peer overlay cases: reads JSON Lines and WKT, so it needs contain::io and
