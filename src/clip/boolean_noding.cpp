@@ -61,6 +61,22 @@ bool strictly_inside(Vec2 a, Vec2 b, Vec2 x) {
   return lex_less(a, b) ? (lex_less(a, x) && lex_less(x, b)) : (lex_less(b, x) && lex_less(x, a));
 }
 
+// p before q on the way from a to b, for points on (or rounded next to) the piece: compared on
+// the axis along which the piece moves most, then on the other one, without products (a dot
+// product with the direction underflows to zero for coordinates below 2^-511 and would leave
+// the order to lex_less, which zigzags a chain going the other way: fuzz finding
+// hang_at_scale_2pow-904, docs/robustness.md).
+bool before_along(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
+  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
+  const double pu = by_x ? p.x : p.y, qu = by_x ? q.x : q.y;
+  const double pv = by_x ? p.y : p.x, qv = by_x ? q.y : q.x;
+  const bool u_up = by_x ? a.x < b.x : a.y < b.y;
+  const bool v_up = by_x ? a.y < b.y : a.x < b.x;
+  if (pu != qu) return u_up ? pu < qu : pu > qu;
+  if (pv != qv) return v_up ? pv < qv : pv > qv;
+  return false;
+}
+
 Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
   // The rounded point depends on the order and direction of the segments: put them in a
   // canonical order, so that equal segments (A and B both holding an edge, a ring edge traversed
@@ -477,10 +493,7 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
     // their points (events).
     std::sort(splits.begin(), splits.end(), [&](const Split& l, const Split& r) {
       if (l.piece != r.piece) return l.piece < r.piece;
-      const Vec2 a = out.points[l.piece], d = out.points[l.piece + 1] - a;
-      const double tl = dot(l.at - a, d), tr = dot(r.at - a, d);
-      if (tl != tr) return tl < tr;
-      return lex_less(l.at, r.at);
+      return before_along(out.points[l.piece], out.points[l.piece + 1], l.at, r.at);
     });
     // The accepted split points, grouped by piece (none equal to the piece's ends or to the one
     // before), then an in-place insertion from the back: unchanged runs of points move by
