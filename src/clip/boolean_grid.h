@@ -45,16 +45,22 @@ class CellGrid {
     }
     const double w = x1 - x0_, h = y1 - y0_;
     const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(keys.size())));
-    nx_ = w > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
-    ny_ = h > 0 ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
-    cw_ = w > 0 ? w / nx_ : 1.0;
-    ch_ = h > 0 ? h / ny_ : 1.0;
+    // An extent that overflows (coordinates of both signs near DBL_MAX): one column or row.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    nx_ = w > 0 && w < kInf ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    ny_ = h > 0 && h < kInf ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
+    cw_ = nx_ > 1 ? w / nx_ : 1.0;
+    ch_ = ny_ > 1 ? h / ny_ : 1.0;
     // Multiplying by the inverse rounds a little differently from dividing: far below the
     // widening by a millionth of a cell.
     icw_ = 1.0 / cw_;
     ich_ = 1.0 / ch_;
-    ex_ = 1e-6 * cw_;
-    ey_ = 1e-6 * ch_;
+    // The widening must exceed the rounding of the cell computations, a few ulps of the largest
+    // coordinate: cells can be far narrower than that (later rounds grid only the pieces near new
+    // ones, which may crowd within ulps of a point), and below 2^-1000 a millionth of a cell
+    // underflows.
+    ex_ = std::max(1e-6 * cw_, 16 * ulp(std::max(std::fabs(x0_), std::fabs(x1))));
+    ey_ = std::max(1e-6 * ch_, 16 * ulp(std::max(std::fabs(y0_), std::fabs(y1))));
     entries_.clear();
     item_first_.clear();
     for (Key& k : keys) {
@@ -100,6 +106,11 @@ class CellGrid {
   }
 
  private:
+  // ulp(m) for m >= 0, subnormals included.
+  static double ulp(double m) {
+    return m > 0 ? std::ldexp(1.0, std::max(std::ilogb(m) - 52, -1074))
+                 : std::numeric_limits<double>::denorm_min();
+  }
   // Truncation is floor here (values below 1 give cell 0); NaN (an infinite extent) gives 0.
   [[nodiscard]] int col(double x) const {
     const double c = (x - x0_) * icw_;
@@ -126,9 +137,14 @@ class CellGrid {
         // The piece's x range over the row's y range (widened), within its box.
         const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
         const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
+        // The slope overflows for a long, nearly horizontal piece, and inf * 0 is NaN (fuzz
+        // finding invalid_difference_extreme_range, docs/robustness.md): a range that is not
+        // finite takes the piece's whole box.
         const double xa = a.x + (ylo - a.y) * slope, xb = a.x + (yhi - a.y) * slope;
-        xl = std::max(it.xmin, std::min(xa, xb) - ex_);
-        xr = std::min(it.xmax, std::max(xa, xb) + ex_);
+        if (std::isfinite(xa) && std::isfinite(xb)) {
+          xl = std::max(it.xmin, std::min(xa, xb) - ex_);
+          xr = std::min(it.xmax, std::max(xa, xb) + ex_);
+        }
       }
       const int c0 = col(xl - ex_), c1 = col(xr + ex_);
       for (int c = c0; c <= c1; ++c)

@@ -104,6 +104,15 @@ Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
   return x;
 }
 
+// The sides of a hot pixel, clamped to the finite doubles: x +- radius overflows next to
+// DBL_MAX, and no piece reaches beyond it, so the clamped square meets the same pieces.
+double pixel_lo(double v, double radius) {
+  return std::max(v - radius, std::numeric_limits<double>::lowest());
+}
+double pixel_hi(double v, double radius) {
+  return std::min(v + radius, std::numeric_limits<double>::max());
+}
+
 bool within(Vec2 a, Vec2 b, double radius) {
   return std::fabs(a.x - b.x) <= radius && std::fabs(a.y - b.y) <= radius;
 }
@@ -118,10 +127,9 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
   // A piece with an endpoint in the pixel already passes through it; its crossings there snap to
   // endpoints (see test_pair).
   if (within(a, x, radius) || within(b, x, radius)) return;
-  const Vec2 corners[4] = {{x.x - radius, x.y - radius},
-                           {x.x + radius, x.y - radius},
-                           {x.x + radius, x.y + radius},
-                           {x.x - radius, x.y + radius}};
+  const double x0 = pixel_lo(x.x, radius), x1 = pixel_hi(x.x, radius);
+  const double y0 = pixel_lo(x.y, radius), y1 = pixel_hi(x.y, radius);
+  const Vec2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
   int pos = 0, neg = 0;
   for (const Vec2 c : corners) {
     const Sign o = orient2d(a, b, c);
@@ -271,8 +279,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       joint[out.first[c + 1] - 1] = links[c];
   }
   const Marks mark{out.event};
-  // Hot pixels: half-side of two ulps of the largest coordinate (rule clip-noding).
-  const double radius = magnitude > 0 ? std::ldexp(1.0, std::ilogb(magnitude) - 51)
+  // Hot pixels: half-side of two ulps of the largest coordinate (rule clip-noding); for
+  // subnormal coordinates two ulps are 2^-1073, not 2^(ilogb - 51), which underflows to zero.
+  const double radius = magnitude > 0 ? std::ldexp(1.0, std::max(std::ilogb(magnitude) - 51, -1073))
                                       : std::numeric_limits<double>::min();
   // fresh[k]: the piece starting at points[k] is new this round.
   std::vector<char> fresh;
@@ -324,8 +333,9 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       };
       auto pixel_item = [&](std::size_t i) {
         const Vec2 x = hot[i];
-        items.push_back({x.x - radius, x.x + radius, x.y - radius, x.y + radius,
-                         static_cast<std::uint32_t>(i), i >= hot_fresh_from, true});
+        items.push_back({pixel_lo(x.x, radius), pixel_hi(x.x, radius), pixel_lo(x.y, radius),
+                         pixel_hi(x.y, radius), static_cast<std::uint32_t>(i), i >= hot_fresh_from,
+                         true});
       };
       const std::size_t hot_before = hot.size();
       if (round == 0) {

@@ -128,5 +128,69 @@ TEST(PolygonBooleanExtreme, ScalingByAPowerOfTwoScalesTheResultBitForBit) {
   }
 }
 
+// A long edge from 0 to 1e285 that descends by 1e-117, against edges of length 1e-117: per row
+// of the noding grid the edge's x range was a + (y - a.y) * (dx / dy) with dx / dy overflowing
+// to infinity (and inf * 0 = NaN), so the edge was listed in the wrong cells, a crossing was
+// never tested and the difference had two edges crossing (the operands of
+// fuzz/corpus/polygon_boolean/regression_invalid_difference_extreme_range).
+TEST(PolygonBooleanExtreme, CoordinatesMixing1e285And1eMinus117GiveValidResults) {
+  const std::vector<Ring> a{{{0, 0x1.4p-390},
+                             {0, 0x1.4p-390},
+                             {0x1.c0bbc339eee2bp+946, -0x1p-389},
+                             {-0x1.7cp-388, -0x1.48p-388},
+                             {-0x1.7cp-388, -0x1.48p-388},
+                             {-0x1.acp-388, 0x1.cp-390},
+                             {-0x1.7cp-388, -0x1.48p-388},
+                             {0x1p-391, 0x1p-389}}};
+  const std::vector<Ring> b{
+      {{0x1p-391, 0x1.cp-390}, {-0x1.9p-389, -0x1p-391}, {0x1.cp-390, -0x1p-392}}};
+  for (const Op op : kOps) {
+    for (const Fill fill : kFills) {
+      SCOPED_TRACE(static_cast<int>(op) * 4 + static_cast<int>(fill));
+      EXPECT_TRUE(is_valid_ogc(polygon_boolean(a, b, {.op = op, .fill = fill})));
+      EXPECT_TRUE(is_valid_ogc(polygon_boolean(b, a, {.op = op, .fill = fill})));
+    }
+  }
+}
+
+// Coordinates near DBL_MAX of both signs (the extent overflows; hot pixels reach past DBL_MAX),
+// subnormal coordinates (two ulps there are 2^-1073, where 2^(ilogb - 51) underflowed to a
+// pixel of size zero), and both at once: every result is valid and A \ A is empty.
+TEST(PolygonBooleanExtreme, RandomRingsAtTheEndsOfTheDoubleRangeGiveValidResults) {
+  std::mt19937_64 rng(904);
+  std::uniform_int_distribution<int> pick(0, 7);
+  const double big = std::numeric_limits<double>::max();
+  auto coordinate = [&](int range) {
+    switch (pick(rng)) {
+      case 0:
+        return big;
+      case 1:
+        return -big;
+      case 2:
+        return std::ldexp(static_cast<double>(pick(rng) - 3), -1074);  // subnormal
+      case 3:
+        return 0.0;
+      default:
+        // 2^(range) times a small integer: near DBL_MAX, near 2^-1074 or in between.
+        return std::ldexp(static_cast<double>(pick(rng) * 37 - 130), range);
+    }
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    SCOPED_TRACE(trial);
+    const int range = std::array<int, 4>{1016, -1074, -1060, 0}[trial % 4];
+    std::vector<Ring> a(1), b(1);
+    for (int i = 0; i < 6; ++i)
+      a[0].push_back({coordinate(range), coordinate(range)});
+    for (int i = 0; i < 5; ++i)
+      b[0].push_back({coordinate(range), coordinate(range)});
+    for (const Op op : kOps) {
+      for (const Fill fill : {Fill::even_odd, Fill::positive}) {
+        EXPECT_TRUE(is_valid_ogc(polygon_boolean(a, b, {.op = op, .fill = fill})));
+      }
+    }
+    EXPECT_TRUE(polygon_boolean(a, a, {.op = Op::difference}).empty());
+  }
+}
+
 }  // namespace
 }  // namespace contain::clip
