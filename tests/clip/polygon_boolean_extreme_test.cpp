@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "clip/boolean_checks.h"
@@ -189,6 +190,69 @@ TEST(PolygonBooleanExtreme, RandomRingsAtTheEndsOfTheDoubleRangeGiveValidResults
       }
     }
     EXPECT_TRUE(polygon_boolean(a, a, {.op = Op::difference}).empty());
+  }
+}
+
+// One coordinate of 1.4e16 (2^53.6, where an ulp is 2) makes hot pixels of half-side 4 around
+// crossings of edges a few units long. A piece a -> b passing through the pixel of a crossing x
+// just behind a was split there; x -> b then passed through the pixel of a and was split back to
+// a -> b, round after round: the noding hit its cap of 256 rounds (5 s per operation in the
+// optimised build, converged = false). Pixel splits are now made only strictly between the
+// piece's ends on the axis it moves most along.
+TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
+  const std::vector<std::pair<std::vector<Ring>, std::vector<Ring>>> cases{
+      // fuzz/corpus/polygon_boolean/regression_pixel_cycle_a_minus_a (A = B)
+      {{{{-5, -5},
+         {-7, 1},
+         {22.25, -8},
+         {-7, 1},
+         {-5, -5},
+         {0x1.8c193ac771798p+53, 130303},
+         {130303, -3},
+         {-7, -7}},
+        {{5, -7}, {-0x1p-51, 130303}, {130051, -99328}, {5, -7}}},
+       {}},
+      // fuzz/corpus/polygon_boolean/regression_pixel_cycle_level_with_an_end (A = B): the
+      // pixel of (-2, -8) split (5/3, -4) -> (3, -8), level with its end, and back
+      {{{{-2, -8},
+         {0x1.8316fd3ec5901p-1016, 1},
+         {-2, -8},
+         {0x1.8c193acd0d1f4p+53, 5},
+         {-4, -4},
+         {0x1.8316fd3ec5901p-1016, 1},
+         {3, -8},
+         {-17.5, -3}},
+        {{-29.25, -19.75},
+         {-8, -8},
+         {-29.25, -19.75},
+         {-29.25, -19.75},
+         {-29.25, -19.75},
+         {16384, -8}}},
+       {}},
+      // fuzz/corpus/polygon_boolean/regression_pixel_cycle_timeout
+      {{{{-5, -5},
+         {-5, -4},
+         {130147, -0x1.ffffffffffffcp-1},
+         {-0x1.ffffffffffffcp-1, -0x1.ffffffffffffcp-1},
+         {-0x1.ffffffffffffcp-1, -0x1.ffffffffffffcp-1},
+         {-0x1.ffffffffffffcp-1, -0x1.ffffffffffffcp-1},
+         {-3, -15.25},
+         {130147, -0x1.ffffffffffffcp-1}},
+        {{-2.25, 94242}, {6.5, 2}, {2, -12.5}, {0x1.8c193ac771798p+53, 5}}},
+       {{{-8, 3}, {115781, -54232}, {7, -120703}, {7, 8}}}},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::vector<Ring>& a = cases[i].first;
+    const std::vector<Ring>& b = cases[i].second.empty() ? a : cases[i].second;
+    for (const Op op : kOps) {
+      for (const Fill fill : kFills) {
+        SCOPED_TRACE(i * 16 + static_cast<std::size_t>(op) * 4 + static_cast<std::size_t>(fill));
+        PolygonBooleanStats stats;
+        const MultiPolygon r = polygon_boolean(a, b, {.op = op, .fill = fill}, &stats);
+        EXPECT_TRUE(stats.converged);
+        EXPECT_TRUE(is_valid_ogc(r));
+      }
+    }
   }
 }
 
