@@ -256,5 +256,34 @@ TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
   }
 }
 
+// Two rings with spikes to (-1.6e163, -4.6e73) beside vertices of size 10: A n A is two thin
+// triangles meeting at the far vertex, side by side. The validity checker took a rounded edge
+// midpoint as a point inside one of them, which fell into the other (a false "polygon 1 lies
+// inside polygon 0"); it now decides at the exact midpoint (tests/clip/boolean_checks.cpp).
+TEST(PolygonBooleanExtreme, SpikesTo1e163BesideSmallVerticesGiveValidResults) {
+  const std::vector<Ring> a{{{-5, -5},
+                             {-5, -5},
+                             {-5, -5},
+                             {7, 109700},
+                             {-7, -1.5},
+                             {4, 8},
+                             {-7, -6137},
+                             {0x1.6e1d1de695a31p+893, 0}},
+                            {{-7, 0x1.8adc6cf60ccf1p-780},
+                             {-13.5, 4},
+                             {2, -0x1p-51},
+                             {-7, 0x1.8adc6cf60ccf1p-780},
+                             {-1.5, 6},
+                             {8, 1},
+                             {-6137, 9.5},
+                             {-0x1.1de695a31ca8fp+542, -0x1.9cdf483e68f0fp+244}}};
+  for (const Op op : kOps) {
+    for (const Fill fill : kFills) {
+      SCOPED_TRACE(static_cast<int>(op) * 4 + static_cast<int>(fill));
+      EXPECT_TRUE(is_valid_ogc(polygon_boolean(a, a, {.op = op, .fill = fill})));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contain::clip
