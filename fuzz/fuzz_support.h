@@ -47,7 +47,6 @@ class FuzzInput {
   /// degenerate cases reach the huge and tiny ranges (1e300, 1e-300) too.
   void choose_scale() {
     const std::uint8_t s = byte();
-    if (ordinary_) return;
     scale_exponent_ = s < 192 ? 0 : static_cast<int>(s % 63) * 32 - 1000;  // 2^-1000 .. 2^984
   }
 
@@ -72,10 +71,6 @@ class FuzzInput {
             std::ldexp(static_cast<double>(static_cast<int>(byte() % 5) - 2), -52);
         break;
       case 6: {
-        if (ordinary_) {
-          v = static_cast<double>(static_cast<int>(byte()) - 128) / 64.0;
-          break;
-        }
         v = std::bit_cast<double>(bits64());
         if (!std::isfinite(v)) v = 0.0;
         return v;  // raw bits are not rescaled
@@ -87,10 +82,6 @@ class FuzzInput {
     return scale_exponent_ == 0 ? v : std::ldexp(v, scale_exponent_);
   }
 
-  /// Keeps coordinates in an ordinary range: no 2^±1000 scaling, no raw bit patterns (for a
-  /// target whose open findings lie in the extreme ranges; see docs/robustness.md).
-  void keep_ordinary_range() { ordinary_ = true; }
-
   Vec2 point2() { return {coordinate(), coordinate()}; }
   Vec3 point3() { return {coordinate(), coordinate(), coordinate()}; }
 
@@ -98,7 +89,6 @@ class FuzzInput {
   const std::uint8_t* p_;
   const std::uint8_t* end_;
   int scale_exponent_ = 0;
-  bool ordinary_ = false;
 };
 
 }  // namespace contain::fuzz
