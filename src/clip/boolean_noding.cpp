@@ -137,13 +137,13 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
     neg += o == Sign::negative ? 1 : 0;
   }
   if (pos == 4 || neg == 4) return;
-  // Only where x lies strictly between a and b on the axis the piece moves most along: a split
-  // behind a, beyond b or level with either turns the chain back or sideways, and pixels can
-  // then split each other's pieces for ever (a -> b split at x gives x -> b, which passes
-  // through the pixel of a and is split there, giving a -> b again).
-  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
-  const double au = by_x ? a.x : a.y, bu = by_x ? b.x : b.y, xu = by_x ? x.x : x.y;
-  if (!(std::min(au, bu) < xu && xu < std::max(au, bu))) return;
+  // Only where x lies in the piece's box, as (unsnapped) crossing points do: a split outside the
+  // box turns the chain back, and pixels can then split each other's pieces for ever (a -> b
+  // split at x behind a gives x -> b, which passes through the pixel of a and is split there,
+  // giving a -> b again; fuzz_polygon_boolean, docs/robustness.md).
+  if (x.x < std::min(a.x, b.x) || x.x > std::max(a.x, b.x) || x.y < std::min(a.y, b.y) ||
+      x.y > std::max(a.y, b.y))
+    return;
   splits.push_back({s, x});
 }
 

@@ -197,8 +197,7 @@ TEST(PolygonBooleanExtreme, RandomRingsAtTheEndsOfTheDoubleRangeGiveValidResults
 // crossings of edges a few units long. A piece a -> b passing through the pixel of a crossing x
 // just behind a was split there; x -> b then passed through the pixel of a and was split back to
 // a -> b, round after round: the noding hit its cap of 256 rounds (5 s per operation in the
-// optimised build, converged = false). Pixel splits are now made only strictly between the
-// piece's ends on the axis it moves most along.
+// optimised build, converged = false). A pixel now splits a piece only at a point of its box.
 TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
   const std::vector<std::pair<std::vector<Ring>, std::vector<Ring>>> cases{
       // fuzz/corpus/polygon_boolean/regression_pixel_cycle_a_minus_a (A = B)
@@ -228,6 +227,18 @@ TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
          {-29.25, -19.75},
          {-29.25, -19.75},
          {16384, -8}}},
+       {}},
+      // fuzz/corpus/polygon_boolean/regression_pixel_cycle_off_the_box (A = B): a pixel split
+      // (-7, -5) -> (-5, 0) at (-2.71, -4.99...), within its y range but far outside its box
+      {{{{-7, -5},
+         {-18.5, 130097},
+         {110681, -4},
+         {-15.25, -2},
+         {-2.25, 94242},
+         {6.5, 2},
+         {2, -12.5},
+         {0x1.8c193ac771798p+53, 5}},
+        {{-5, 3}, {115781, -54232}, {-5, 0}, {7, 115781}, {5, -32}, {-5, 3}, {-5, 3}}},
        {}},
       // fuzz/corpus/polygon_boolean/regression_pixel_cycle_timeout
       {{{{-5, -5},
