@@ -130,17 +130,22 @@ class CellGrid {
       a = points_->at(it.piece);
       b = points_->at(it.piece + 1);
     }
-    const double slope = line ? (b.x - a.x) / (b.y - a.y) : 0.0;
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double slope = line ? dx / dy : 0.0;
+    // The slope overflows for a long, nearly horizontal piece (and inf * 0 is NaN) and underflows
+    // for a long, nearly vertical one (to 0: the x extent is lost), e.g. 1e285 by 1e-117 (fuzz
+    // finding invalid_difference_extreme_range, docs/robustness.md): such pieces go through the
+    // fraction (y - a.y) / dy in [0, 1], and a range that is still not finite (dx overflowing)
+    // takes the piece's whole box.
+    const bool by_slope = std::isnormal(slope) || dx == 0;
     for (int r = r0; r <= r1; ++r) {
       double xl = it.xmin, xr = it.xmax;
       if (line) {
         // The piece's x range over the row's y range (widened), within its box.
         const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
         const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
-        // The slope overflows for a long, nearly horizontal piece, and inf * 0 is NaN (fuzz
-        // finding invalid_difference_extreme_range, docs/robustness.md): a range that is not
-        // finite takes the piece's whole box.
-        const double xa = a.x + (ylo - a.y) * slope, xb = a.x + (yhi - a.y) * slope;
+        const double xa = by_slope ? a.x + (ylo - a.y) * slope : a.x + (ylo - a.y) / dy * dx;
+        const double xb = by_slope ? a.x + (yhi - a.y) * slope : a.x + (yhi - a.y) / dy * dx;
         if (std::isfinite(xa) && std::isfinite(xb)) {
           xl = std::max(it.xmin, std::min(xa, xb) - ex_);
           xr = std::min(it.xmax, std::max(xa, xb) + ex_);

@@ -154,6 +154,27 @@ TEST(PolygonBooleanExtreme, CoordinatesMixing1e285And1eMinus117GiveValidResults)
   }
 }
 
+// The other way round: an edge 5e270 long that moves 1.7e-99 sideways, among edges of length
+// 1e-117. Its slope dx / dy underflowed to zero, so its x range per row of the grid shrank to
+// one end and a crossing near the other end was never tested
+// (fuzz/corpus/polygon_boolean/regression_nearly_vertical_1e270).
+TEST(PolygonBooleanExtreme, NearlyVerticalEdgeOf1e270AmongEdgesOf1eMinus117GivesValidResults) {
+  const std::vector<Ring> a{{{0, 0x1.4p-390},
+                             {0, 0x1.4p-390},
+                             {0, 0x1.4p-390},
+                             {-0x1p-389, 0x1p-391},
+                             {-0x1p-387, -0x1p-389},
+                             {0x1.d55903cc4217cp-329, -0x1.2e4147d4e190ap+899},
+                             {-0x1p-389, 0x1p-390},
+                             {-0x1p-392, 0x1.9964p-377}}};
+  for (const Op op : kOps) {
+    for (const Fill fill : kFills) {
+      SCOPED_TRACE(static_cast<int>(op) * 4 + static_cast<int>(fill));
+      EXPECT_TRUE(is_valid_ogc(polygon_boolean(a, a, {.op = op, .fill = fill})));
+    }
+  }
+}
+
 // Coordinates near DBL_MAX of both signs (the extent overflows; hot pixels reach past DBL_MAX),
 // subnormal coordinates (two ulps there are 2^-1073, where 2^(ilogb - 51) underflowed to a
 // pixel of size zero), and both at once: every result is valid and A \ A is empty.
