@@ -230,10 +230,18 @@ bool on_piece(Vec2 a, Vec2 b, Vec2 x) {
   Vec2 x = crossing_point(p0, p1, q0, q1);
   ++crossings;
   // A crossing within a pixel of an endpoint is that endpoint: no sliver pieces. Of several, the
-  // lowest in (x, y) order, the same choice whichever pair of pieces meets there.
+  // lowest in (x, y) order, the same choice whichever pair of pieces meets there. Only endpoints
+  // in both pieces' boxes: a piece split outside its box turns back, and where pixels are large
+  // against the pieces (a coordinate of 1.4e16 beside pieces a few units long) such splits
+  // undid each other round after round (fuzz_polygon_boolean, docs/robustness.md).
+  const double lox = std::max(std::min(p0.x, p1.x), std::min(q0.x, q1.x));
+  const double hix = std::min(std::max(p0.x, p1.x), std::max(q0.x, q1.x));
+  const double loy = std::max(std::min(p0.y, p1.y), std::min(q0.y, q1.y));
+  const double hiy = std::min(std::max(p0.y, p1.y), std::max(q0.y, q1.y));
   bool snapped = false;
   Vec2 best{};
   for (const Vec2 e : {p0, p1, q0, q1}) {
+    if (e.x < lox || e.x > hix || e.y < loy || e.y > hiy) continue;
     if (within(x, e, radius) && (!snapped || lex_less(e, best))) {
       best = e;
       snapped = true;

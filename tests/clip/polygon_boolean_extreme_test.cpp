@@ -218,7 +218,8 @@ TEST(PolygonBooleanExtreme, RandomRingsAtTheEndsOfTheDoubleRangeGiveValidResults
 // crossings of edges a few units long. A piece a -> b passing through the pixel of a crossing x
 // just behind a was split there; x -> b then passed through the pixel of a and was split back to
 // a -> b, round after round: the noding hit its cap of 256 rounds (5 s per operation in the
-// optimised build, converged = false). A pixel now splits a piece only at a point of its box.
+// optimised build, converged = false). A pixel now splits a piece only at a point of its box, and
+// a crossing snaps only to an endpoint in both pieces' boxes.
 TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
   const std::vector<std::pair<std::vector<Ring>, std::vector<Ring>>> cases{
       // fuzz/corpus/polygon_boolean/regression_pixel_cycle_a_minus_a (A = B)
@@ -260,6 +261,18 @@ TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
          {2, -12.5},
          {0x1.8c193ac771798p+53, 5}},
         {{-5, 3}, {115781, -54232}, {-5, 0}, {7, 115781}, {5, -32}, {-5, 3}, {-5, 3}}},
+       {}},
+      // fuzz/corpus/polygon_boolean/regression_snap_cycle_off_the_box (A = B): crossings snapped
+      // to endpoints outside a piece's box, (-3, 1) -> (-5, -5) split at (-7, -7) and back
+      {{{{-5, -5},
+         {-3, 1},
+         {-9.75, -8},
+         {-3, 1},
+         {-5, -5},
+         {0x1.8c193ac77ff27p+53, 2.25},
+         {-18, -5},
+         {-80688, 8}},
+        {{-1, -0x1.100c2c2c2ff98p-383}, {130303, 130303}, {130303, -3}, {130303, -3}, {-7, -7}}},
        {}},
       // fuzz/corpus/polygon_boolean/regression_pixel_cycle_timeout
       {{{{-5, -5},
