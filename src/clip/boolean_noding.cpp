@@ -92,7 +92,11 @@ Vec2 crossing_point(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
   const L dqx = L(q1.x) - L(q0.x), dqy = L(q1.y) - L(q0.y);
   const L den = dpx * dqy - dpy * dqx;
   const L num = (L(q0.x) - L(p0.x)) * dqy - (L(q0.y) - L(p0.y)) * dqx;
-  const L t = num / den;
+  // The rounded denominator can vanish (or the quotient overflow) for nearly parallel pieces
+  // that the exact signs say cross, and NaN would pass the clamps below: then any point of both
+  // boxes serves, as the pieces are tested again (fuzz_polygon_boolean, NaN into orient2d).
+  L t = num / den;
+  if (!std::isfinite(t)) t = 0.5L;
   Vec2 x{static_cast<double>(L(p0.x) + t * dpx), static_cast<double>(L(p0.y) + t * dpy)};
   // The exact crossing lies in both boxes; keep the rounded one there too.
   const double lox = std::max(std::min(p0.x, p1.x), std::min(q0.x, q1.x));

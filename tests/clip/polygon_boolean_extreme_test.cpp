@@ -175,6 +175,42 @@ TEST(PolygonBooleanExtreme, NearlyVerticalEdgeOf1e270AmongEdgesOf1eMinus117Gives
   }
 }
 
+// Nearly parallel pieces (edges to (1.4e16, 1) and to (2, 8.7e107) among short ones) that the
+// exact signs say cross: the crossing's long double denominator rounded to zero, t = num / den
+// was not finite, and NaN passed the clamps into the noded points, the predicates and the
+// output (fuzz/corpus/polygon_boolean/regression_nan_crossing_point).
+TEST(PolygonBooleanExtreme, NearlyParallelCrossingPiecesGiveFinitePoints) {
+  const std::vector<Ring> a{{{-2, -8},
+                             {0x1.8316f28d3ec59p-1016, -8},
+                             {-2, -8},
+                             {-2, -8},
+                             {0x1.82893acd0d1f4p+53, 1},
+                             {-4, -4},
+                             {0x1.8316f28d3ec59p-1016, -8},
+                             {-25, -8}},
+                            {{1, 0},
+                             {2, 0x1.6565656565656p+358},
+                             {3, -8},
+                             {-17.5, -3},
+                             {-1, -7},
+                             {0x1.00003p-591, -8},
+                             {-8, -8},
+                             {1, 0}}};
+  for (const Op op : kOps) {
+    for (const Fill fill : kFills) {
+      SCOPED_TRACE(static_cast<int>(op) * 4 + static_cast<int>(fill));
+      const MultiPolygon r = polygon_boolean(a, a, {.op = op, .fill = fill});
+      for (const Polygon& polygon : r.polygons) {
+        for (const Ring& ring : polygon.rings) {
+          for (const Vec2 p : ring)
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+        }
+      }
+      EXPECT_TRUE(is_valid_ogc(r));
+    }
+  }
+}
+
 // Coordinates near DBL_MAX of both signs (the extent overflows; hot pixels reach past DBL_MAX),
 // subnormal coordinates (two ulps there are 2^-1073, where 2^(ilogb - 51) underflowed to a
 // pixel of size zero), and both at once: every result is valid and A \ A is empty.
