@@ -62,6 +62,8 @@ class CellGrid {
     ex_ = std::max(1e-6 * cw_, 16 * ulp(std::max(std::fabs(x0_), std::fabs(x1))));
     ey_ = std::max(1e-6 * ch_, 16 * ulp(std::max(std::fabs(y0_), std::fabs(y1))));
     entries_.clear();
+    // Room for a dozen cells per item saves most regrowth of the array (long pieces list more).
+    entries_.reserve(12 * keys.size());
     item_first_.clear();
     for (Key& k : keys) {
       k.rank = static_cast<std::uint32_t>(item_first_.size());
@@ -124,39 +126,69 @@ class CellGrid {
   }
   void add(const Item& it, std::uint32_t item) {
     const int r0 = row(it.ymin - ey_), r1 = row(it.ymax + ey_);
-    const bool line = !it.pixel && it.ymin < it.ymax && it.xmin < it.xmax && r0 < r1;
-    Vec2 a{}, b{};
-    if (line) {
-      a = points_->at(it.piece);
-      b = points_->at(it.piece + 1);
+    const int c0 = col(it.xmin - ex_), c1 = col(it.xmax + ex_);
+    const bool line = !it.pixel && it.ymin < it.ymax && it.xmin < it.xmax;
+    // An item within one row or one column covers its box's cells: no per-row x ranges.
+    if (!line || r0 == r1 || c0 == c1) {
+      for (int r = r0; r <= r1; ++r)
+        emit(r, c0, c1, item);
+      return;
     }
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double slope = line ? dx / dy : 0.0;
-    // The slope overflows for a long, nearly horizontal piece (and inf * 0 is NaN) and underflows
-    // for a long, nearly vertical one (to 0: the x extent is lost), e.g. 1e285 by 1e-117 (fuzz
-    // finding invalid_difference_extreme_range, docs/robustness.md): such pieces go through the
-    // fraction (y - a.y) / dy in [0, 1], and a range that is still not finite (dx overflowing)
-    // takes the piece's whole box.
-    const bool by_slope = std::isnormal(slope) || dx == 0;
-    for (int r = r0; r <= r1; ++r) {
-      double xl = it.xmin, xr = it.xmax;
-      if (line) {
-        // The piece's x range over the row's y range (widened), within its box.
-        const double ylo = std::max(it.ymin, y0_ + r * ch_ - ey_);
-        const double yhi = std::min(it.ymax, y0_ + (r + 1) * ch_ + ey_);
-        const double xa = by_slope ? a.x + (ylo - a.y) * slope : a.x + (ylo - a.y) / dy * dx;
-        const double xb = by_slope ? a.x + (yhi - a.y) * slope : a.x + (yhi - a.y) / dy * dx;
-        if (std::isfinite(xa) && std::isfinite(xb)) {
-          xl = std::max(it.xmin, std::min(xa, xb) - ex_);
-          xr = std::min(it.xmax, std::max(xa, xb) + ex_);
-        }
+    const Vec2 a = points_->at(it.piece), b = points_->at(it.piece + 1);
+    // A piece crossing more rows than columns goes column by column (the same bound with the axes
+    // swapped): the loop runs over the fewer bands.
+    if (r1 - r0 > c1 - c0) {
+      bands(
+          a.y, a.x, b.y, b.x, it.ymin, it.ymax, it.xmin, it.xmax, c0, c1, x0_, cw_, ey_, ex_,
+          [&](double y) { return row(y); },
+          [&](int c, int rl, int rh) {
+            for (int r = rl; r <= rh; ++r)
+              entries_.emplace_back(
+                  static_cast<std::uint32_t>(r) * static_cast<std::uint32_t>(nx_) +
+                      static_cast<std::uint32_t>(c),
+                  item);
+          });
+    } else {
+      bands(
+          a.x, a.y, b.x, b.y, it.xmin, it.xmax, it.ymin, it.ymax, r0, r1, y0_, ch_, ex_, ey_,
+          [&](double x) { return col(x); }, [&](int r, int cl, int ch) { emit(r, cl, ch, item); });
+    }
+  }
+  // The bands k0 .. k1 along axis v (rows: v is y; columns: v is x) that the piece a -> b
+  // crosses, each with the cells along the other axis u that the piece passes through within the
+  // band (widened by ev), widened by eu, within [umin, umax]: emit_band(k, first, last).
+  template <class Cell, class EmitBand>
+  static void bands(double au, double av, double bu, double bv, double umin, double umax,
+                    double vmin, double vmax, int k0, int k1, double v0, double side, double eu,
+                    double ev, Cell cell, EmitBand emit_band) {
+    const double du = bu - au, dv = bv - av;
+    const double slope = du / dv;
+    // The slope overflows for a long piece nearly along u (and inf * 0 is NaN) and underflows for
+    // a long one nearly along v (to 0: the u extent is lost), e.g. 1e285 by 1e-117 (fuzz finding
+    // invalid_difference_extreme_range, docs/robustness.md): such pieces go through the fraction
+    // (v - av) / dv in [0, 1], and a range that is still not finite (du overflowing) takes the
+    // piece's whole box.
+    const bool by_slope = std::isnormal(slope) || du == 0;
+    auto u_at = [&](double v) {
+      return by_slope ? au + (v - av) * slope : au + (v - av) / dv * du;
+    };
+    for (int k = k0; k <= k1; ++k) {
+      double ul = umin, ur = umax;
+      const double vlo = std::max(vmin, v0 + k * side - ev);
+      const double vhi = std::min(vmax, v0 + (k + 1) * side + ev);
+      const double ua = u_at(vlo), ub = u_at(vhi);
+      if (std::isfinite(ua) && std::isfinite(ub)) {
+        ul = std::max(umin, std::min(ua, ub) - eu);
+        ur = std::min(umax, std::max(ua, ub) + eu);
       }
-      const int c0 = col(xl - ex_), c1 = col(xr + ex_);
-      for (int c = c0; c <= c1; ++c)
-        entries_.emplace_back(static_cast<std::uint32_t>(r) * static_cast<std::uint32_t>(nx_) +
-                                  static_cast<std::uint32_t>(c),
-                              item);
+      emit_band(k, cell(ul - eu), cell(ur + eu));
     }
+  }
+  // Lists the item in cells c0 .. c1 of row r.
+  void emit(int r, int c0, int c1, std::uint32_t item) {
+    const std::uint32_t base = static_cast<std::uint32_t>(r) * static_cast<std::uint32_t>(nx_);
+    for (int c = c0; c <= c1; ++c)
+      entries_.emplace_back(base + static_cast<std::uint32_t>(c), item);
   }
 
  public:

@@ -131,16 +131,6 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
   // A piece with an endpoint in the pixel already passes through it; its crossings there snap to
   // endpoints (see test_pair).
   if (within(a, x, radius) || within(b, x, radius)) return;
-  const double x0 = pixel_lo(x.x, radius), x1 = pixel_hi(x.x, radius);
-  const double y0 = pixel_lo(x.y, radius), y1 = pixel_hi(x.y, radius);
-  const Vec2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-  int pos = 0, neg = 0;
-  for (const Vec2 c : corners) {
-    const Sign o = orient2d(a, b, c);
-    pos += o == Sign::positive ? 1 : 0;
-    neg += o == Sign::negative ? 1 : 0;
-  }
-  if (pos == 4 || neg == 4) return;
   // Only where x lies in the piece's box, as (unsnapped) crossing points do: a split outside the
   // box turns the chain back, and pixels can then split each other's pieces for ever (a -> b
   // split at x behind a gives x -> b, which passes through the pixel of a and is split there,
@@ -148,6 +138,16 @@ void test_pixel(const std::vector<Vec2>& pts, std::uint32_t s, Vec2 x, double ra
   if (x.x < std::min(a.x, b.x) || x.x > std::max(a.x, b.x) || x.y < std::min(a.y, b.y) ||
       x.y > std::max(a.y, b.y))
     return;
+  // The line misses the square when all four corners lie strictly on one side. orient2d(a, b, c)
+  // is the sign of an affine function of c whose gradient is (-(b.y - a.y), b.x - a.x): over the
+  // square it is smallest at the corner that gradient points away from and largest at the
+  // opposite one, so those two corners decide exactly what the four would.
+  const double x0 = pixel_lo(x.x, radius), x1 = pixel_hi(x.x, radius);
+  const double y0 = pixel_lo(x.y, radius), y1 = pixel_hi(x.y, radius);
+  const bool rises = b.y > a.y, rightward = b.x > a.x;
+  const Vec2 low{rises ? x1 : x0, rightward ? y0 : y1};
+  const Vec2 high{rises ? x0 : x1, rightward ? y1 : y0};
+  if (orient2d(a, b, low) == Sign::positive || orient2d(a, b, high) == Sign::negative) return;
   splits.push_back({s, x});
 }
 
@@ -319,6 +319,10 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
   auto pair = [&](std::uint32_t s, std::uint32_t t) {
     // The lower piece first: the rounded crossing does not depend on the visiting order.
     if (t < s) std::swap(s, t);
+    // Consecutive pieces of one chain meet only at their joint, a split point (an event since it
+    // was made): every split lies in the box of the piece it splits, so by induction each joint
+    // lies between its neighbours on both axes, and the chain never folds back over itself.
+    if (t == s + 1) return;
     const Vec2 p0 = out.points[s], p1 = out.points[s + 1];
     const Sign o1 = orient(p0, p1, out.points[t]);
     const Sign o2 = orient(p0, p1, out.points[t + 1]);
@@ -345,6 +349,8 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       ++out.rounds;
       items.clear();
       keys.clear();
+      items.reserve(out.points.size() + hot.size());  // at most one per piece and pixel
+      keys.reserve(items.capacity());
       auto piece_item = [&](std::uint32_t k) {
         const Vec2 a = out.points[k], b = out.points[k + 1];
         items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
@@ -520,10 +526,31 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
     if (splits.empty()) return out;
     // Insert the splits, ordered along their piece; the pieces they make are new, and so are
     // their points (events).
-    std::sort(splits.begin(), splits.end(), [&](const Split& l, const Split& r) {
-      if (l.piece != r.piece) return l.piece < r.piece;
-      return before_along(out.points[l.piece], out.points[l.piece + 1], l.at, r.at);
-    });
+    // By piece, then along each piece's (short) run by insertion: before_along is the costly part.
+    std::sort(splits.begin(), splits.end(),
+              [](const Split& l, const Split& r) { return l.piece < r.piece; });
+    for (std::size_t lo = 0; lo < splits.size();) {
+      const std::uint32_t k = splits[lo].piece;
+      std::size_t hi = lo + 1;
+      while (hi < splits.size() && splits[hi].piece == k)
+        ++hi;
+      const Vec2 a = out.points[k], b = out.points[k + 1];
+      if (hi - lo > 16) {
+        std::sort(splits.begin() + static_cast<std::ptrdiff_t>(lo),
+                  splits.begin() + static_cast<std::ptrdiff_t>(hi),
+                  [&](const Split& l, const Split& r) { return before_along(a, b, l.at, r.at); });
+        lo = hi;
+        continue;
+      }
+      for (std::size_t i = lo + 1; i < hi; ++i) {
+        const Split v = splits[i];
+        std::size_t j = i;
+        for (; j > lo && before_along(a, b, v.at, splits[j - 1].at); --j)
+          splits[j] = splits[j - 1];
+        splits[j] = v;
+      }
+      lo = hi;
+    }
     // The accepted split points, grouped by piece (none equal to the piece's ends or to the one
     // before), then an in-place insertion from the back: unchanged runs of points move by
     // memmove, so few splits cost no second copy of the arrays.
