@@ -349,8 +349,11 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
       ++out.rounds;
       items.clear();
       keys.clear();
-      items.reserve(out.points.size() + hot.size());  // at most one per piece and pixel
-      keys.reserve(items.capacity());
+      if (round == 0) {
+        // Every piece and pixel (later rounds reserve so only when they list most pieces: a
+        // large reserve for a few items would cost fresh pages on every call).
+        items.reserve(out.points.size() + hot.size());
+      }
       auto piece_item = [&](std::uint32_t k) {
         const Vec2 a = out.points[k], b = out.points[k + 1];
         items.push_back({std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y),
@@ -383,6 +386,7 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
           std::sort(spans.begin(), spans.end());
         } else {
           // Most pieces are new: every old one is listed.
+          items.reserve(out.points.size() + hot.size());
           const double inf = std::numeric_limits<double>::infinity();
           spans.push_back({-inf, inf});
         }
@@ -473,6 +477,7 @@ Noded node_segments(std::span<const NodingInput> segments, std::span<const char>
           if (meets(hot[i].x - radius, hot[i].x + radius)) pixel_item(i);
         }
       }
+      keys.reserve(items.size());
       for (std::uint32_t i = 0; i < items.size(); ++i)
         keys.push_back({i, 0});
       splits.clear();
