@@ -26,6 +26,22 @@ struct Builder {
 
   static double axis_of(Vec3 v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 
+  // Equal bins over [lo, hi] on halved values: hi - lo overflows for coordinates near DBL_MAX
+  // and bins / (hi - lo) for a subnormal span, and either made an infinite or NaN bin index
+  // (undefined behaviour in the conversion to int; found by fuzz_point_in_mesh). The bins only
+  // steer the SAH, so halving's rounding among subnormals does no harm.
+  struct Binning {
+    double lo_half, span_half, bins;
+    Binning(double lo, double hi, int n)
+        : lo_half(lo * 0.5), span_half(hi * 0.5 - lo * 0.5), bins(n) {}
+    [[nodiscard]] bool usable() const { return span_half > 0.0 && span_half < kInfinity; }
+    [[nodiscard]] int bin_of(double c) const {
+      const double f = (c * 0.5 - lo_half) / span_half * bins;
+      return f >= 0.0 ? static_cast<int>(std::min(f, bins - 1.0)) : 0;  // NaN -> 0
+    }
+    static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  };
+
   void make_leaf(std::size_t node, std::size_t begin, std::size_t end) {
     nodes[node].first = static_cast<std::int32_t>(begin);
     nodes[node].count = static_cast<std::int32_t>(end - begin);
@@ -50,14 +66,12 @@ struct Builder {
     int best_axis = -1, best_split = 0;
     const double parent_area = surface_area(box);
     for (int axis = 0; axis < 3; ++axis) {
-      const double lo = axis_of(cbox.min, axis), hi = axis_of(cbox.max, axis);
-      if (!(hi > lo)) continue;
-      const double scale = bins / (hi - lo);
+      const Binning binning(axis_of(cbox.min, axis), axis_of(cbox.max, axis), bins);
+      if (!binning.usable()) continue;
       std::array<Box3, 256> bin_box;
       std::array<std::size_t, 256> bin_count{};
       for (std::size_t k = begin; k < end; ++k) {
-        const int b =
-            std::min(bins - 1, static_cast<int>((axis_of(centroid(items[k]), axis) - lo) * scale));
+        const int b = binning.bin_of(axis_of(centroid(items[k]), axis));
         bin_count[static_cast<std::size_t>(b)]++;
         bin_box[static_cast<std::size_t>(b)].expand(boxes[static_cast<std::size_t>(items[k])]);
       }
@@ -93,15 +107,12 @@ struct Builder {
         make_leaf(node, begin, end);
         return;
       }
-      const double lo = axis_of(cbox.min, best_axis), hi = axis_of(cbox.max, best_axis);
-      const double scale = bins / (hi - lo);
-      const auto it = std::partition(
-          items.begin() + static_cast<std::ptrdiff_t>(begin),
-          items.begin() + static_cast<std::ptrdiff_t>(end), [&](std::int32_t i) {
-            const int b = std::min(
-                bins - 1, static_cast<int>((axis_of(centroid(i), best_axis) - lo) * scale));
-            return b < best_split;
-          });
+      const Binning binning(axis_of(cbox.min, best_axis), axis_of(cbox.max, best_axis), bins);
+      const auto it =
+          std::partition(items.begin() + static_cast<std::ptrdiff_t>(begin),
+                         items.begin() + static_cast<std::ptrdiff_t>(end), [&](std::int32_t i) {
+                           return binning.bin_of(axis_of(centroid(i), best_axis)) < best_split;
+                         });
       mid = static_cast<std::size_t>(it - items.begin());
     }
     if (mid == begin || mid == end) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 #include <utility>
@@ -128,6 +129,30 @@ TEST(Bvh, CoincidentBoxesStillGiveALogarithmicDepth) {
                        return Visit::proceed;
                      });
   EXPECT_EQ(count, boxes.size());
+}
+
+// Centroid spans that overflow (near +-DBL_MAX) or are subnormal made the SAH bin index infinite
+// (undefined behaviour, found by fuzz_point_in_mesh): every item must still land in one leaf.
+TEST(Bvh, CentroidSpansBeyondDblMaxOrSubnormalStillPlaceEveryItemOnce) {
+  const double big = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (const double scale : {big, big / 3, tiny, 1e-310}) {
+    std::vector<Box3> boxes;
+    for (int i = 0; i < 300; ++i) {
+      const double c = scale * ((i % 2) ? 1.0 : -1.0) * ((i % 7) / 6.0);
+      boxes.push_back(Box3{{c, -c, c}, {c, -c, c}});
+    }
+    const Bvh bvh(boxes);
+    std::vector<int> seen(boxes.size(), 0);
+    (void)bvh.traverse([](const Node&, std::int32_t) { return true; },
+                       [&](std::int32_t item) {
+                         ++seen[static_cast<std::size_t>(item)];
+                         return Visit::proceed;
+                       });
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }))
+        << "scale " << scale;
+    EXPECT_LE(bvh.depth(), 64) << "scale " << scale;
+  }
 }
 
 TEST(Bvh, EmptyHierarchyVisitsNothingAndEmptyBoxesNeverOverlap) {
