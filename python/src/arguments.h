@@ -29,55 +29,33 @@ struct ShapeLike {
 
 namespace pybind11::detail {
 
-// Each caster accepts every object (the function checks it and raises a clear error).
-template <>
-struct type_caster<contain::python::ArrayLike> {
-  PYBIND11_TYPE_CASTER(contain::python::ArrayLike, const_name("numpy.typing.ArrayLike"));
+// Every caster accepts every object (the function checks it and raises a clear error); they
+// differ only in the name help() shows.
+template <typename T, auto Name>
+struct any_object_caster {
+  PYBIND11_TYPE_CASTER(T, Name);
   bool load(handle source, bool) {
     value.object = reinterpret_borrow<object>(source);
     return true;
   }
-  static handle cast(const contain::python::ArrayLike& v, return_value_policy, handle) {
-    return v.object.inc_ref();
-  }
+  static handle cast(const T& v, return_value_policy, handle) { return v.object.inc_ref(); }
 };
 
 template <>
-struct type_caster<contain::python::RegionLike> {
-  PYBIND11_TYPE_CASTER(contain::python::RegionLike,
-                       const_name("contain.Region | str | Sequence[numpy.typing.ArrayLike]"));
-  bool load(handle source, bool) {
-    value.object = reinterpret_borrow<object>(source);
-    return true;
-  }
-  static handle cast(const contain::python::RegionLike& v, return_value_policy, handle) {
-    return v.object.inc_ref();
-  }
-};
-
+struct type_caster<contain::python::ArrayLike>
+    : any_object_caster<contain::python::ArrayLike, const_name("numpy.typing.ArrayLike")> {};
 template <>
-struct type_caster<contain::python::TransformLike> {
-  PYBIND11_TYPE_CASTER(contain::python::TransformLike, const_name("numpy.typing.ArrayLike | None"));
-  bool load(handle source, bool) {
-    value.object = reinterpret_borrow<object>(source);
-    return true;
-  }
-  static handle cast(const contain::python::TransformLike& v, return_value_policy, handle) {
-    return v.object.inc_ref();
-  }
-};
-
+struct type_caster<contain::python::RegionLike>
+    : any_object_caster<contain::python::RegionLike,
+                        const_name("contain.Region | str | Sequence[numpy.typing.ArrayLike]")> {};
 template <>
-struct type_caster<contain::python::ShapeLike> {
-  PYBIND11_TYPE_CASTER(contain::python::ShapeLike,
-                       const_name("contain.Mesh | contain.Region | str | numpy.typing.ArrayLike"));
-  bool load(handle source, bool) {
-    value.object = reinterpret_borrow<object>(source);
-    return true;
-  }
-  static handle cast(const contain::python::ShapeLike& v, return_value_policy, handle) {
-    return v.object.inc_ref();
-  }
-};
+struct type_caster<contain::python::TransformLike>
+    : any_object_caster<contain::python::TransformLike,
+                        const_name("numpy.typing.ArrayLike | None")> {};
+template <>
+struct type_caster<contain::python::ShapeLike>
+    : any_object_caster<contain::python::ShapeLike,
+                        const_name(
+                            "contain.Mesh | contain.Region | str | numpy.typing.ArrayLike")> {};
 
 }  // namespace pybind11::detail
