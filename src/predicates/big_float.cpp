@@ -152,4 +152,28 @@ BigFloat operator*(const BigFloat& a, const BigFloat& b) {
   return r;
 }
 
+double BigFloat::frexp(long& exponent) const {
+  exponent = 0;
+  if (limbs_.empty()) return 0.0;
+  // The top three limbs (at least 65 significant bits, the top limb being nonzero) summed in
+  // double: two roundings, a relative error below 2^-52.
+  const std::size_t n = limbs_.size();
+  double top = 0.0;
+  long shift = 32L * static_cast<long>(n);
+  for (std::size_t k = 0; k < 3; ++k) {
+    top = top * 0x1p32 + (k < n ? static_cast<double>(limbs_[n - 1 - k]) : 0.0);
+    shift -= 32;
+  }
+  int e = 0;
+  const double f = std::frexp(top, &e);  // top = f * 2^e, f in [0.5, 1)
+  exponent = shift + e + static_cast<long>(exponent_);
+  return negative_ ? -f : f;
+}
+
+BigFloat BigFloat::scaled(long k) const {
+  BigFloat r = *this;
+  if (!r.limbs_.empty()) r.exponent_ += static_cast<int>(k);
+  return r;
+}
+
 }  // namespace contain::predicates::detail

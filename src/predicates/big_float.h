@@ -26,6 +26,14 @@ class BigFloat {
   friend BigFloat operator-(const BigFloat& a, const BigFloat& b);
   friend BigFloat operator*(const BigFloat& a, const BigFloat& b);
 
+  /// The value as m * 2^exponent with m a double, 0.5 <= |m| <= 1, within a relative 2^-52 of
+  /// the value; m = 0 and exponent = 0 for zero. For rounding
+  /// quotients and square roots of exact values (predicates/rounding.h), whose exponents may lie
+  /// far outside the double range.
+  [[nodiscard]] double frexp(long& exponent) const;
+  /// This value times 2^k, exactly.
+  [[nodiscard]] BigFloat scaled(long k) const;
+
  private:
   void normalize();
 
