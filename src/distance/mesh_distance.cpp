@@ -9,6 +9,7 @@
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/squared_distance.h"
 #include "distance/flat_answer.h"
+#include "distance/morton_order.h"
 #include "distance/triangle_search.h"
 
 namespace contain::distance {
@@ -98,6 +99,10 @@ std::size_t MeshDistance::size() const {
 }
 
 Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
+  return query_with_hint(p, query, -1);
+}
+
+Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const {
   ++t_stats.queries;
   Closest3 out;
   if (!is_finite(p)) {
@@ -111,7 +116,7 @@ Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
   // One buffer per thread: queries allocate nothing once it has grown.
   thread_local std::vector<detail::Contender> contenders;
   detail::SearchStats stats;
-  search_->contenders(p, contenders, &stats);
+  search_->contenders(p, contenders, &stats, hint);
   t_stats.nodes += stats.nodes;
   t_stats.triangles += stats.triangles;
   t_stats.contenders += contenders.size();
@@ -131,9 +136,17 @@ Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
 void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& q,
                          const BatchOptions& options) const {
   const std::size_t n = std::min(points.size(), out.size());
+  // Points in Morton order of their position, so that neighbours in the order are neighbours in
+  // space and each query starts from the previous one's closest triangle (a hint: it bounds the
+  // search early and never changes an answer, which is exact).
+  const std::vector<std::uint32_t> order = detail::morton_order(points.first(n));
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = query(points[i], q);
+    std::int32_t hint = -1;
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = order[k];
+      out[i] = query_with_hint(points[i], q, hint);
+      hint = out[i].feature;
+    }
   });
 }
 

@@ -54,8 +54,11 @@ class TriangleSearch {
   [[nodiscard]] const bvh::Bvh& hierarchy() const { return bvh_; }
 
   /// The contenders for the closest triangle of p (every triangle whose squared distance may be
-  /// the least), into `out` (cleared first). Never empty for a non-empty set.
-  void contenders(Vec3 p, std::vector<Contender>& out, SearchStats* stats = nullptr) const;
+  /// the least), into `out` (cleared first). Never empty for a non-empty set. `hint`, a triangle
+  /// index or -1, is bounded first: a near triangle (the previous point's closest, in a batch of
+  /// nearby points) prunes the search from the start. It never changes the contenders' decision.
+  void contenders(Vec3 p, std::vector<Contender>& out, SearchStats* stats = nullptr,
+                  std::int32_t hint = -1) const;
 
   /// Three-valued "some triangle within squared distance d2" from the bounds: +1 proven (some hi
   /// <= d2), -1 disproven (every lo > d2), 0 undecided; the undecided triangles go to `out`.
@@ -66,9 +69,23 @@ class TriangleSearch {
     Vec3 a, b, c;
     std::int32_t index;
   };
-  std::vector<Triangle3> triangles_;  // in the order given
-  std::vector<Tri> tris_;             // in the hierarchy's leaf order
+  // The hierarchy again, as one node per inner node holding both children's boxes (rounded
+  // outward to float): one cache line per step of the descent.
+  struct PairNode {
+    float lo[2][3];
+    float hi[2][3];
+    std::int32_t child[2];  // inner: PairNode index; leaf: first position in tris_
+    std::int32_t count[2];  // leaf: number of triangles; inner: 0
+  };
+  void build_pair_nodes();
+  void bound_leaf(Vec3 p, std::int32_t first, std::int32_t count, std::int32_t skip, double& best,
+                  std::vector<Contender>& out, std::size_t& bounded) const;
+
+  std::vector<Triangle3> triangles_;    // in the order given
+  std::vector<Tri> tris_;               // in the hierarchy's leaf order
+  std::vector<std::int32_t> position_;  // triangle index -> position in tris_
   bvh::Bvh bvh_;
+  std::vector<PairNode> pairs_;  // empty when the root is a leaf
   double slack_ =
       0.0;  // bound on a computed closest point's distance from its triangle, squared, inflated
 };

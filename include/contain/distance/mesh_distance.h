@@ -104,6 +104,8 @@ class MeshDistance {
   static void reset_stats();
 
  private:
+  [[nodiscard]] Closest3 query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const;
+
   std::unique_ptr<detail::TriangleSearch> search_;
   inside::MeshIndex index_;
   bool signs_ = true;
