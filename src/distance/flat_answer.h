@@ -1,6 +1,11 @@
 #pragma once
 // Private to contain::distance: turning an exactly chosen pair of flats into an answer.
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
 #include "contain/distance/closest.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
@@ -28,6 +33,20 @@ void apply_sign(C& c, Location location) {
   c.location = location;
   if (location == Location::inside) c.distance = -c.distance;
   if (location == Location::boundary) c.distance = 0.0;
+}
+
+/// Bounds lo <= d^2 <= hi for the floating-point stage of a `within d` test: d * d rounded,
+/// widened by four ulps each way and by two subnormal units (the product may underflow); d * d
+/// may overflow, and the exact d^2 is then above DBL_MAX.
+struct SquaredBounds {
+  double lo;
+  double hi;
+};
+[[nodiscard]] inline SquaredBounds squared_bounds(double d) {
+  const double d2 = d * d;
+  const double tiny = 2 * std::numeric_limits<double>::denorm_min();
+  return {std::isfinite(d2) ? std::max(0.0, d2 * (1 - 0x1p-50) - tiny) : DBL_MAX,
+          d2 * (1 + 0x1p-50) + tiny};
 }
 
 }  // namespace contain::distance::detail

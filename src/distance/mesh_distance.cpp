@@ -59,22 +59,20 @@ Winner resolve(Vec3 p, const detail::TriangleSearch& search,
                std::vector<detail::Contender>& contenders) {
   // Lowest index first, so that a tie keeps the first one met.
   std::sort(contenders.begin(), contenders.end(),
-            [](const detail::Contender& a, const detail::Contender& b) {
-              return a.triangle < b.triangle;
-            });
+            [](const detail::Contender& a, const detail::Contender& b) { return a.item < b.item; });
   Winner best;
   for (const detail::Contender& c : contenders) {
-    const Triangle3& t = search.triangle(c.triangle);
+    const Triangle3& t = search.triangle(c.item);
     const Flat3 flat = predicates::feature_flat(t, predicates::closest_feature(p, t));
     const FlatPair3 pair{predicates::point_flat(p), flat};
     if (best.triangle < 0) {
-      best = {c.triangle, pair};
+      best = {c.item, pair};
       continue;
     }
     if (same_flat(flat, best.pair.b)) continue;
     ++t_stats.exact_comparisons;
     if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
-      best = {c.triangle, pair};
+      best = {c.item, pair};
     }
   }
   return best;
@@ -118,7 +116,7 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   detail::SearchStats stats;
   search_->contenders(p, contenders, &stats, hint);
   t_stats.nodes += stats.nodes;
-  t_stats.triangles += stats.triangles;
+  t_stats.triangles += stats.items;
   t_stats.contenders += contenders.size();
   const Winner w = resolve(p, *search_, contenders);
   out = detail::answer(w.pair, query.closest_point);
@@ -153,20 +151,12 @@ void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, 
 bool MeshDistance::within(Vec3 p, double d) const {
   if (!(d >= 0) || !is_finite(p)) return false;
   if (search_->empty()) return false;
-  // Bounds of d^2 for the floating-point stage: d * d rounded, widened by four ulps each way and
-  // by twice the smallest subnormal (the product may underflow).
-  const double d2 = d * d;
-  // (d * d may overflow: the exact d^2 is then above DBL_MAX.)
-  const double d2_lo =
-      std::isfinite(d2)
-          ? std::max(0.0, d2 * (1 - 0x1p-50) - 2 * std::numeric_limits<double>::denorm_min())
-          : DBL_MAX;
-  const double d2_hi = d2 * (1 + 0x1p-50) + 2 * std::numeric_limits<double>::denorm_min();
+  const detail::SquaredBounds d2 = detail::squared_bounds(d);
   thread_local std::vector<detail::Contender> undecided;
-  const int fast = search_->within(p, d2_lo, d2_hi, undecided);
+  const int fast = search_->within(p, d2.lo, d2.hi, undecided);
   if (fast != 0) return fast > 0;
   for (const detail::Contender& c : undecided) {
-    const Triangle3& t = search_->triangle(c.triangle);
+    const Triangle3& t = search_->triangle(c.item);
     const FlatPair3 pair{predicates::point_flat(p),
                          predicates::feature_flat(t, predicates::closest_feature(p, t))};
     if (predicates::compare_squared_distance(pair, d) != Sign::positive) return true;
