@@ -58,6 +58,10 @@ inline double separation_lower(Vec3 p, Vec3 v, Vec3 w) {
 
 }  // namespace
 
+Vec3 approximate_closest_point(Vec3 p, const Triangle3& t) {
+  return approximate_closest(p, t.a, t.b, t.c);
+}
+
 double triangle_slack(double max_abs) {
   // A computed point a + ab v + ac w (or a vertex, or on an edge) lies within
   // 4 eps (|a| + |ab| + |ac|) <= 20 eps M per coordinate of the exact a + v (b - a) + w (c - a)

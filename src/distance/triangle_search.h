@@ -52,6 +52,9 @@ class TriangleSearch {
   double slack_ = 0.0;  // bound on a computed closest point's distance from its triangle, squared
 };
 
+/// Ericson's closest point of the triangle to p in doubles (only a guess; see above).
+[[nodiscard]] Vec3 approximate_closest_point(Vec3 p, const Triangle3& t);
+
 /// The bounds of one triangle (exposed for the tests).
 void triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi);
 

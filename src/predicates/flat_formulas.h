@@ -98,6 +98,7 @@ Quotient<T> squared_distance(const FlatPair3& pair) {
       }
     }
   }
+  if (x.b.size == 3) return {T(0.0), T(1.0)};  // a line crossing a plane
   // line a0 a1, line b0 b1
   const V3<T> m = cross(sub<T>(x.a.points[1], x.a.points[0]), sub<T>(q[1], q[0]));
   const T s = dot(sub<T>(q[0], x.a.points[0]), m);
@@ -113,6 +114,7 @@ Quotient<T> squared_distance(const FlatPair2& pair) {
     const V2<T> d = sub<T>(p, q[0]);
     return {dot(d, d), T(1.0)};
   }
+  if (x.a.size == 2) return {T(0.0), T(1.0)};  // two crossing lines
   const V2<T> u = sub<T>(q[1], q[0]);
   const T c = cross(u, sub<T>(p, q[0]));
   return {c * c, dot(u, u)};
@@ -163,6 +165,17 @@ ClosestQuotients3<T> closest_points(const FlatPair3& pair) {
         break;
       }
     }
+  } else if (x.b.size == 3) {
+    // The line p -> p1 crosses the plane: x = p + (p1 - p) s, s = ((a - p) . n) / ((p1 - p) . n),
+    // the denominator positive by the pair's precondition.
+    const Vec3 p0 = x.a.points[0];
+    const V3<T> d = sub<T>(x.a.points[1], p0);
+    const V3<T> n = cross(sub<T>(q[1], q[0]), sub<T>(q[2], q[0]));
+    const T num = dot(sub<T>(q[0], p0), n);
+    out.den = dot(d, n);
+    out.a = {T(p0.x) * out.den + d.x * num, T(p0.y) * out.den + d.y * num,
+             T(p0.z) * out.den + d.z * num};
+    out.b = out.a;
   } else {
     const Vec3 a0 = x.a.points[0];
     const Vec3 c0 = q[0];
@@ -198,6 +211,15 @@ ClosestQuotients2<T> closest_points(const FlatPair2& pair) {
     out.den = T(1.0);
     out.a = {T(p.x), T(p.y)};
     out.b = {T(q[0].x), T(q[0].y)};
+  } else if (x.a.size == 2) {
+    // Crossing lines: x = a + s (a1 - a), s = cross(c - a, v) / cross(u, v), u = a1 - a,
+    // v = c1 - c, the denominator positive by the pair's precondition.
+    const V2<T> u = sub<T>(x.a.points[1], p);
+    const V2<T> v = sub<T>(q[1], q[0]);
+    const T num = cross(sub<T>(q[0], p), v);
+    out.den = cross(u, v);
+    out.a = {T(p.x) * out.den + u.x * num, T(p.y) * out.den + u.y * num};
+    out.b = out.a;
   } else {
     const V2<T> u = sub<T>(q[1], q[0]);
     const T t = dot(sub<T>(p, q[0]), u);

@@ -1,6 +1,6 @@
 #include "contain/predicates/squared_distance.h"
 
-#include "predicates/big_float.h"
+#include "predicates/filtered_sign.h"
 #include "predicates/flat_formulas.h"
 #include "predicates/running_error.h"
 
@@ -8,18 +8,9 @@ namespace contain::predicates {
 
 namespace {
 
-using detail::BigFloat;
-using detail::Err;
 using detail::Quotient;
 
-// Sign of the expression `f` over T, filter first: f(Err<double>) answers unless its value lies
-// within its proven error bound; then f(BigFloat), exact.
-template <class F>
-Sign filtered_sign(F&& f) {
-  const Err<double> fast = f(Err<double>{});
-  if (fast.decided()) return fast.sign();
-  return f(BigFloat{}).sign();
-}
+using detail::filtered_sign;
 
 template <class Pair>
 Sign compare_pairs(const Pair& x, const Pair& y) {

@@ -58,4 +58,28 @@ enum class SegmentFeature : std::uint8_t { vertex_a, vertex_b, interior };
 [[nodiscard]] Flat3 feature_flat(const Segment3& s, SegmentFeature f);
 [[nodiscard]] Flat2 feature_flat(const Segment2& s, SegmentFeature f);
 
+/// The flats carrying the closest points of two closed segments (the first flat on s, the
+/// second on t), exactly: the least of the four end-to-segment distances and, when the lines
+/// are not parallel and the feet of their common perpendicular lie strictly inside both
+/// segments, the line-line distance; equal distances keep the first in that order (s.a, s.b,
+/// t.a, t.b, interior). In the plane, segments that cross properly (each end strictly on either
+/// side of the other's line) give their crossing (a pair of crossing lines, distance 0).
+/// Segments of zero length are points.
+[[nodiscard]] FlatPair3 closest_flats(const Segment3& s, const Segment3& t);
+[[nodiscard]] FlatPair2 closest_flats(const Segment2& s, const Segment2& t);
+
+/// The flats carrying the closest points of two closed triangles (first on s, second on t),
+/// exactly. Where an edge of one passes through the interior of the other (both ends strictly on
+/// either side of its plane, the line strictly inside its three edges), that edge's line and the
+/// other's plane (distance 0, their crossing). Otherwise the least of the six vertex-triangle and
+/// nine edge-edge distances (the triangles are convex, so the closest points lie on a vertex and
+/// a triangle or on two edges); equal distances keep the first in the order: s's vertices against
+/// t, t's vertices against s, then edge pairs (ab, bc, ca of s against ab, bc, ca of t).
+/// Degenerate triangles are their segment hulls. O(1); exact for every finite double.
+[[nodiscard]] FlatPair3 closest_flats(const Triangle3& s, const Triangle3& t);
+
+/// True when the closed segment p q crosses the interior of triangle t: p and q strictly on
+/// either side of its plane and the line p q strictly inside its three edges (exact orient3d).
+[[nodiscard]] bool segment_crosses_triangle(Vec3 p, Vec3 q, const Triangle3& t);
+
 }  // namespace contain::predicates

@@ -15,6 +15,7 @@
 /// | point p, plane a b c | ((p - a) . n)^2, n = (b - a) x (c - a) | \|n\|^2 |
 /// | line a b, line c d | ((c - a) . m)^2, m = (b - a) x (d - c) | \|m\|^2 |
 /// | 2D point p, line a b | ((b - a) x (p - a))^2 | \|b - a\|^2 |
+/// | line crossing a plane, 2D lines crossing | 0 | 1 |
 ///
 /// Comparisons are signs of N1 D2 - N2 D1 (degree up to 10) and of N - d^2 D, exact on the given
 /// doubles: a running-error filter (a proven bound carried through the evaluation), then
@@ -44,11 +45,16 @@ struct Flat2 {
 
 /// Two flats whose squared distance is meant: point-point, point-line, point-plane (either
 /// order) or line-line; two lines must not be parallel (their distance is then a point-line
-/// distance, which the callers use).
+/// distance, which the callers use). A line and a plane (in this order) stand for a segment
+/// crossing a triangle: their distance is 0 and their closest point the crossing; precondition:
+/// the line's first point lies strictly below the plane and its second strictly above
+/// (orient3d < 0, resp. > 0, with the plane's three points).
 struct FlatPair3 {
   Flat3 a;
   Flat3 b;
 };
+/// In the plane: point-point, point-line (either order), or two lines that cross (distance 0,
+/// the closest point their crossing; precondition: cross(a1 - a0, b1 - b0) > 0).
 struct FlatPair2 {
   Flat2 a;
   Flat2 b;

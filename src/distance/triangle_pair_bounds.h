@@ -1,0 +1,31 @@
+#pragma once
+// Private to contain::distance: proven floating-point bounds on the squared distance between two
+// triangles (and two segments in the plane), for the pair searches.
+//
+// Approximate closest points x on A and y on B (the least of the six vertex-triangle and nine
+// segment-segment closest pairs, Ericson 5.1.5 and 5.1.9, in doubles) give
+//   hi: |x - y|^2 plus the slack of both computed points (as triangle_search.h);
+//   lo: the separation along w = x - y: for any points x' of A and y' of B,
+//       |x' - y'| >= (x' - y') . w / |w| >= (min over A's corners v of (v - y) . w
+//                                          - max over B's corners u of (u - y) . w) / |w|,
+//       for any w; tight when x, y are the exact closest pair; <= 0 when the triangles meet.
+
+#include "contain/geometry/segment.h"
+#include "contain/geometry/triangle.h"
+#include "contain/geometry/vec.h"
+
+namespace contain::distance::detail {
+
+/// lo <= dist^2(s, t) <= hi; `slack` covers both computed points (triangle_slack of the larger
+/// coordinate magnitude).
+void triangle_pair_bounds(const Triangle3& s, const Triangle3& t, double slack, double& lo,
+                          double& hi);
+
+/// The same for two segments in the plane.
+void segment_pair_bounds(const Segment2& s, const Segment2& t, double slack, double& lo,
+                         double& hi);
+
+/// Ericson's closest points of two segments (5.1.9), in doubles: c1 on s, c2 on t.
+void approximate_closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Vec3& c1, Vec3& c2);
+
+}  // namespace contain::distance::detail
