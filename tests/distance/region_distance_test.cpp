@@ -2,6 +2,7 @@
 // ties to the lowest (ring, edge), rounded once; the sign from the exact location.
 
 #include "contain/distance/region_distance.h"
+#include "contain/distance/region_pair_distance.h"
 
 #include <gtest/gtest.h>
 
@@ -191,6 +192,74 @@ TEST(RegionDistance, EmptyRegionAndNonFinitePoints) {
   EXPECT_FALSE(square.within({0.5, 0.5}, -1));
   EXPECT_TRUE(square.within({0.5, 0.5}, 0.5));
   EXPECT_FALSE(square.within({0.5, 0.5}, std::nextafter(0.5, 0.0)));
+}
+
+}  // namespace
+}  // namespace contain::distance
+
+namespace contain::distance {
+namespace {
+
+Polygon square(double x0, double y0, double side) {
+  return {{{{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}}}};
+}
+
+TEST(RegionPairDistance, SeparatedTouchingCrossingAndNestedSquares) {
+  const MultiPolygon big{{square(0, 0, 4)}};
+  EXPECT_EQ(region_region(big, MultiPolygon{{square(6, 0, 1)}}).distance, 2.0);
+  const PairDistance2 touch = region_region(big, MultiPolygon{{square(4, 1, 1)}});
+  EXPECT_EQ(touch.distance, 0.0);
+  EXPECT_EQ(touch.contact, PairContact::touching);
+  const PairDistance2 cross = region_region(big, MultiPolygon{{square(3.5, 1, 1)}});
+  EXPECT_EQ(cross.contact, PairContact::touching);
+  const PairDistance2 nested = region_region(big, MultiPolygon{{square(1, 1, 1)}});
+  EXPECT_EQ(nested.contact, PairContact::b_in_a);
+  EXPECT_EQ(nested.distance, 0.0);
+  EXPECT_EQ(region_region(MultiPolygon{{square(1, 1, 1)}}, big).contact, PairContact::a_in_b);
+  // inside the hole: not nested, the distance to the hole's ring
+  Polygon holed = square(0, 0, 10);
+  holed.rings.push_back({{2, 2}, {2, 8}, {8, 8}, {8, 2}});
+  const PairDistance2 in_hole =
+      region_region(MultiPolygon{{holed}}, MultiPolygon{{square(4, 4, 1)}});
+  EXPECT_EQ(in_hole.distance, 2.0);
+  EXPECT_EQ(in_hole.ring_a, 1);
+  EXPECT_TRUE(region_region_within(MultiPolygon{{holed}}, MultiPolygon{{square(4, 4, 1)}}, 2.0));
+  EXPECT_FALSE(region_region_within(MultiPolygon{{holed}}, MultiPolygon{{square(4, 4, 1)}},
+                                    std::nextafter(2.0, 0.0)));
+  EXPECT_TRUE(region_region_within(big, MultiPolygon{{square(1, 1, 1)}}, 0.0));
+}
+
+TEST(RegionPairDistance, RandomStarsMatchTheExactOracle) {
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(-3, 3);
+  for (int i = 0; i < 60; ++i) {
+    const Ring ra = scenes::star_ring(12, {0, 0}, 0.4, 1.0, static_cast<std::uint64_t>(i));
+    const Ring rb =
+        scenes::star_ring(9, {u(rng), u(rng)}, 0.3, 0.8, static_cast<std::uint64_t>(i + 100));
+    const PairDistance2 got =
+        region_region(MultiPolygon{{Polygon{{ra}}}}, MultiPolygon{{Polygon{{rb}}}});
+    mpq_class best = -1;
+    int ka = -1, kb = -1;
+    for (std::size_t x = 0; x < ra.size(); ++x) {
+      for (std::size_t y = 0; y < rb.size(); ++y) {
+        const mpq_class d = test::exact_squared_distance(Segment2{ra[x], ra[(x + 1) % ra.size()]},
+                                                         Segment2{rb[y], rb[(y + 1) % rb.size()]});
+        if (best < 0 || d < best) {
+          best = d;
+          ka = static_cast<int>(x);
+          kb = static_cast<int>(y);
+        }
+      }
+    }
+    const inside::PolygonIndex ia(std::vector<Ring>{ra}), ib(std::vector<Ring>{rb});
+    const bool nested =
+        best > 0 && (ia.locate(rb[0]) == Location::inside || ib.locate(ra[0]) == Location::inside);
+    ASSERT_EQ(got.distance, nested ? 0.0 : test::nearest_double_sqrt(best)) << i;
+    if (!nested) {
+      ASSERT_EQ(got.edge_a, ka) << i;
+      ASSERT_EQ(got.edge_b, kb) << i;
+    }
+  }
 }
 
 }  // namespace
