@@ -343,3 +343,49 @@ TEST(BadInputCli, BinaryGarbageIsExitThreeForEveryFormat) {
 
 }  // namespace
 }  // namespace contain::test
+
+namespace contain::test {
+namespace {
+
+// The rows of the bad-input table for `contain distance` (issue 12).
+TEST(BadInputCli, DistanceRefusesNonFiniteInputAndDocumentsEmptyShapes) {
+  TempDir dir;
+  const std::string cube =
+      dir.write("cube.off",
+                "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 2 3 7\n3 2 7 6\n"
+                "3 1 2 6\n3 1 6 5\n3 0 4 7\n3 0 7 3\n");
+  for (const char* bad : {"nan 0 0\n", "0 inf 0\n", "0 0 1e400\n"}) {
+    const CliRun run = run_contain({"distance", "--mesh", cube}, std::string("0 0 0\n") + bad);
+    EXPECT_EQ(run.exit_code, 3) << bad;
+    EXPECT_TRUE(run.out.empty());
+    EXPECT_TRUE(has(run.err, ":2")) << run.err;
+  }
+  const std::string nan_mesh = dir.write("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(run_contain({"distance", "--mesh", nan_mesh}, "0 0 0\n").exit_code, 3);
+  EXPECT_EQ(run_contain({"distance", nan_mesh, cube}).exit_code, 3);
+  const std::string empty = dir.write("empty.off", "");
+  EXPECT_EQ(run_contain({"distance", "--mesh", empty}, "0 0 0\n").exit_code, 3);
+  // --within D: D must be finite and >= 0 (a usage error otherwise)
+  for (const char* d : {"nan", "inf", "-1"})
+    EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", d}, "0 0 0\n").exit_code, 2);
+  const std::string poses = dir.write("poses.txt", "1 0 0 nan 0 1 0 0 0 0 1 0\n");
+  const CliRun p = run_contain({"distance", cube, cube, "--poses", poses});
+  EXPECT_EQ(p.exit_code, 3);
+  EXPECT_TRUE(has(p.err, "poses.txt:1")) << p.err;
+  // documented result: the distance to an empty region is infinite, and nothing is within D
+  const std::string none = dir.write("none.wkt", "POLYGON EMPTY");
+  const CliRun e = run_contain({"distance", "--polygon", none}, "0 0\n");
+  EXPECT_EQ(e.exit_code, 0);
+  EXPECT_EQ(e.out, "inf\n");
+  EXPECT_EQ(run_contain({"distance", "--polygon", none, "--within", "1e300"}, "0 0\n").out, "no\n");
+  // 1e300 and 1e-300 coordinates: exact
+  const CliRun huge =
+      run_contain({"distance", "--polygon",
+                   dir.write("big.wkt", "POLYGON ((0 0, 1e300 0, 1e300 1e300, 0 1e300))")},
+                  "-3e299 0\n2e-300 1e-300\n");
+  EXPECT_EQ(huge.out, "3.0000000000000002e+299\n1e-300\n");  // the doubles 3e299 and 1e-300
+}
+
+}  // namespace
+}  // namespace contain::test
