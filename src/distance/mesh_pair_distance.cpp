@@ -7,6 +7,7 @@
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/geometry/mesh_validation.h"
 #include "contain/predicates/closest_feature.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
@@ -42,46 +43,6 @@ Triangle3 triangle_of(const std::vector<Vec3>& v, const TriangleIndices& t) {
           v[static_cast<std::size_t>(t[2])]};
 }
 
-// World boxes of B's local boxes under a transform: centre and half extents mapped through R
-// (|R| for the extents), widened by bounds on the rounding of this computation and of the
-// vertices' own placement fl(R v + t) (4 eps (sum |R_ij| |v_j| + |t_i|) per coordinate, with
-// |v_j| <= the largest coordinate of B), generously.
-class Placement {
- public:
-  Placement(const Transform& t, double b_max_abs) : t_(t) {
-    for (int i = 0; i < 3; ++i) {
-      double row = 0;
-      for (int j = 0; j < 3; ++j)
-        row += std::fabs(t.r[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]);
-      const double ti = i == 0 ? t.t.x : (i == 1 ? t.t.y : t.t.z);
-      margin_[i] =
-          16 * kEps * (row * b_max_abs + std::fabs(ti)) + std::numeric_limits<double>::denorm_min();
-    }
-  }
-  [[nodiscard]] Box3 operator()(const Box3& b) const {
-    const double c[3] = {b.min.x * 0.5 + b.max.x * 0.5, b.min.y * 0.5 + b.max.y * 0.5,
-                         b.min.z * 0.5 + b.max.z * 0.5};
-    const double e[3] = {b.max.x * 0.5 - b.min.x * 0.5, b.max.y * 0.5 - b.min.y * 0.5,
-                         b.max.z * 0.5 - b.min.z * 0.5};
-    double lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      const auto& r = t_.r[static_cast<std::size_t>(i)];
-      const double ti = i == 0 ? t_.t.x : (i == 1 ? t_.t.y : t_.t.z);
-      const double wc = ((r[0] * c[0] + r[1] * c[1]) + r[2] * c[2]) + ti;
-      const double we = (std::fabs(r[0]) * e[0] + std::fabs(r[1]) * e[1]) + std::fabs(r[2]) * e[2];
-      // the halves and sums above round too: 8 eps of their magnitudes
-      const double slop = 8 * kEps * (std::fabs(wc) + we) + margin_[i];
-      lo[i] = wc - we - slop;
-      hi[i] = wc + we + slop;
-    }
-    return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
-  }
-
- private:
-  const Transform& t_;
-  double margin_[3];
-};
-
 double box_box_lower_bound(const Box3& a, const Box3& b) {
   const double dx = std::max({a.min.x - b.max.x, b.min.x - a.max.x, 0.0});
   const double dy = std::max({a.min.y - b.max.y, b.min.y - a.max.y, 0.0});
@@ -100,10 +61,10 @@ const char* to_string(PairContact contact) {
   switch (contact) {
     case PairContact::touching:
       return "touching";
-    case PairContact::a_in_b:
-      return "a_in_b";
-    case PairContact::b_in_a:
-      return "b_in_a";
+    case PairContact::vertex_of_a_in_b:
+      return "vertex_of_a_in_b";
+    case PairContact::vertex_of_b_in_a:
+      return "vertex_of_b_in_a";
     case PairContact::separate:
       break;
   }
@@ -153,9 +114,77 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   for (const Vec3& v : wb)
     placed_max = std::max({placed_max, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
   const double slack = detail::triangle_slack(std::max(a_max_abs_, placed_max));
-  const Placement place(tb, b_max_abs_);
+  // 1. Overlap first: a vertex of one inside the other solid makes the distance 0 whatever the
+  // surfaces do (and settles nested solids, whose surfaces may be far apart, at once).
+  if (a_solid_) {
+    for (const std::int32_t v : b_components_) {
+      if (index_a_.locate(wb[static_cast<std::size_t>(v)]) == Location::inside) {
+        out.contact = PairContact::vertex_of_b_in_a;
+        out.vertex = v;
+        out.point_a = out.point_b = wb[static_cast<std::size_t>(v)];
+        out.distance = 0.0;
+        if (within_out) *within_out = true;
+        return out;
+      }
+    }
+  }
+  // B's hierarchy refitted to B as placed: the same tree, each box the exact box of its placed
+  // triangles (children come after their parent, so one backward pass). O(n), and no box grows
+  // with the rotation as a mapped local box would.
+  const std::span<const bvh::Node> nb_local = bvh_b_.nodes();
+  thread_local std::vector<Box3> refit;
+  refit.assign(nb_local.size(), Box3{});
+  for (std::size_t k = nb_local.size(); k-- > 0;) {
+    const bvh::Node& node = nb_local[k];
+    Box3 box;
+    if (node.is_leaf()) {
+      for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
+        const TriangleIndices& t =
+            b_.triangles[static_cast<std::size_t>(bvh_b_.items()[static_cast<std::size_t>(i)])];
+        for (const std::int32_t v : t)
+          box.expand(wb[static_cast<std::size_t>(v)]);
+      }
+    } else {
+      box = refit[k + 1];
+      box.expand(refit[static_cast<std::size_t>(node.first)]);
+    }
+    refit[k] = box;
+  }
 
-  // 1. The descent: pairs of nodes, nearer first, pruned against the best upper bound.
+  if (b_solid_) {
+    for (const std::int32_t v : a_components_) {
+      const Vec3 q = a_world_.vertices[static_cast<std::size_t>(v)];
+      bool odd = false;
+      bool on_surface = false;
+      // The perturbed ray along +x against B as placed, culled by B's placed boxes; a vertex on
+      // B's surface is a touching pair, which the descent finds.
+      (void)bvh_b_.traverse(
+          [&](const bvh::Node&, std::int32_t index) {
+            const Box3& w = refit[static_cast<std::size_t>(index)];
+            return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
+                   q.z <= w.max.z;
+          },
+          [&](std::int32_t t) {
+            const Triangle3 tri = triangle_of(wb, b_.triangles[static_cast<std::size_t>(t)]);
+            if (predicates::closest_feature(q, tri) == predicates::TriangleFeature::face &&
+                predicates::orient3d(tri.a, tri.b, tri.c, q) == Sign::zero) {
+              on_surface = true;
+            }
+            if (predicates::perturbed_ray_crosses(tri.a, tri.b, tri.c, q)) odd = !odd;
+            return bvh::Visit::proceed;
+          });
+      if (odd && !on_surface) {
+        out.contact = PairContact::vertex_of_a_in_b;
+        out.vertex = v;
+        out.point_a = out.point_b = q;
+        out.distance = 0.0;
+        if (within_out) *within_out = true;
+        return out;
+      }
+    }
+  }
+
+  // 2. The descent: pairs of nodes, nearer first, pruned against the best upper bound.
   const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b_.nodes();
   const std::span<const std::int32_t> ia = bvh_a_.items(), ib = bvh_b_.items();
   struct Entry {
@@ -168,12 +197,21 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   stack.clear();
   contenders.clear();
   double best = kInf;
-  const Box3 root_b = place(nb[0].box);
-  stack.push_back({0, 0, box_box_lower_bound(na[0].box, root_b), root_b});
+  const Box3 root_b = refit[0];
+  // Best first: the pair of nodes with the least lower bound is expanded next (a min-heap), so
+  // that the first leaf pairs reached are near the closest ones and the upper bound falls fast.
+  const auto farther = [](const Entry& x, const Entry& y) { return x.lb > y.lb; };
+  auto push = [&](const Entry& e) {
+    if (e.lb > best) return;
+    stack.push_back(e);
+    std::push_heap(stack.begin(), stack.end(), farther);
+  };
+  push({0, 0, box_box_lower_bound(na[0].box, root_b), root_b});
   while (!stack.empty()) {
+    std::pop_heap(stack.begin(), stack.end(), farther);
     const Entry e = stack.back();
     stack.pop_back();
-    if (e.lb > best) continue;
+    if (e.lb > best) break;  // every other entry is farther still
     ++out.node_pairs;
     const bvh::Node& p = na[static_cast<std::size_t>(e.a)];
     const bvh::Node& q = nb[static_cast<std::size_t>(e.b)];
@@ -205,19 +243,18 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     } else {
       c1.b = e.b + 1;
       c2.b = q.first;
-      c1.box_b = place(nb[static_cast<std::size_t>(c1.b)].box);
-      c2.box_b = place(nb[static_cast<std::size_t>(c2.b)].box);
+      c1.box_b = refit[static_cast<std::size_t>(c1.b)];
+      c2.box_b = refit[static_cast<std::size_t>(c2.b)];
       c1.lb = box_box_lower_bound(p.box, c1.box_b);
       c2.lb = box_box_lower_bound(p.box, c2.box_b);
     }
-    if (c1.lb > c2.lb) std::swap(c1, c2);  // c1 nearer: pushed last, popped first
-    if (c2.lb <= best) stack.push_back(c2);
-    if (c1.lb <= best) stack.push_back(c1);
+    push(c1);
+    push(c2);
   }
   std::erase_if(contenders, [&](const PairContender& c) { return c.lo > best; });
   out.contenders = contenders.size();
 
-  // 2. The exact stage: the least exact distance among the contenders, ties to the lowest
+  // 3. The exact stage: the least exact distance among the contenders, ties to the lowest
   // triangle of A, then of B.
   std::sort(contenders.begin(), contenders.end(),
             [](const PairContender& x, const PairContender& y) {
@@ -243,49 +280,6 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     return out;
   }
 
-  // 3. Nesting: with no surface contact, a component of one inside the other solid.
-  if (!touching) {
-    if (a_solid_) {
-      for (const std::int32_t v : b_components_) {
-        if (index_a_.locate(wb[static_cast<std::size_t>(v)]) == Location::inside) {
-          out.contact = PairContact::b_in_a;
-          out.vertex = v;
-          out.point_a = out.point_b = wb[static_cast<std::size_t>(v)];
-          out.triangle_a = out.triangle_b = -1;
-          out.distance = 0.0;
-          if (within_out) *within_out = true;
-          return out;
-        }
-      }
-    }
-    if (b_solid_) {
-      for (const std::int32_t v : a_components_) {
-        const Vec3 q = a_world_.vertices[static_cast<std::size_t>(v)];
-        bool odd = false;
-        // The perturbed ray along +x against B as placed, culled by B's placed boxes.
-        (void)bvh_b_.traverse(
-            [&](const bvh::Node& node, std::int32_t) {
-              const Box3 w = place(node.box);
-              return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
-                     q.z <= w.max.z;
-            },
-            [&](std::int32_t t) {
-              const Triangle3 tri = triangle_of(wb, b_.triangles[static_cast<std::size_t>(t)]);
-              if (predicates::perturbed_ray_crosses(tri.a, tri.b, tri.c, q)) odd = !odd;
-              return bvh::Visit::proceed;
-            });
-        if (odd) {
-          out.contact = PairContact::a_in_b;
-          out.vertex = v;
-          out.point_a = out.point_b = q;
-          out.triangle_a = out.triangle_b = -1;
-          out.distance = 0.0;
-          if (within_out) *within_out = true;
-          return out;
-        }
-      }
-    }
-  }
   if (within_out) {
     *within_out = touching;
     return out;

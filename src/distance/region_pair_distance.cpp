@@ -166,13 +166,13 @@ PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
   const bool touching = predicates::flats_meet(f.pair);
   if (!touching) {
     if (const std::int32_t v = nested_vertex(eb, ea, options.fill); v >= 0) {
-      out.contact = PairContact::b_in_a;
+      out.contact = PairContact::vertex_of_b_in_a;
       out.vertex = v;
       out.point_a = out.point_b = vertex_at(eb, v);
       return out;
     }
     if (const std::int32_t v = nested_vertex(ea, eb, options.fill); v >= 0) {
-      out.contact = PairContact::a_in_b;
+      out.contact = PairContact::vertex_of_a_in_b;
       out.vertex = v;
       out.point_a = out.point_b = vertex_at(ea, v);
       return out;

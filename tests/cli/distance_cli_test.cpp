@@ -85,7 +85,7 @@ TEST(DistanceCli, TwoMeshesSeparatedTouchingAndNestedWithPosesAndJson) {
   const CliRun json = run_contain({"distance", cube, cube, "--poses", poses, "--json"});
   EXPECT_TRUE(has(json.out, "\"distance\":2,\"contact\":\"separate\"")) << json.out;
   EXPECT_TRUE(has(json.out, "\"distance\":0,\"contact\":\"touching\"")) << json.out;
-  EXPECT_TRUE(has(json.out, "\"distance\":0,\"contact\":\"b_in_a\"")) << json.out;
+  EXPECT_TRUE(has(json.out, "\"distance\":0,\"contact\":\"vertex_of_b_in_a\"")) << json.out;
   const CliRun within = run_contain({"distance", cube, cube, "--poses", poses, "--within", "1.5"});
   EXPECT_EQ(within.out, "no\nyes\nyes\n");
 }

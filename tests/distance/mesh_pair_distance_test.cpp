@@ -191,9 +191,18 @@ void check_pose(const MeshPairDistance& pair, const Mesh& a, const Mesh& b, cons
   }
   const double d = nested ? 0.0 : test::nearest_double_sqrt(want.d2);
   bool ok = got.distance == d;
-  if (!nested) ok = ok && got.triangle_a == want.a && got.triangle_b == want.b;
-  if (nested) ok = ok && (got.contact == PairContact::a_in_b || got.contact == PairContact::b_in_a);
-  if (!nested && want.d2 == 0) ok = ok && got.contact == PairContact::touching;
+  if (got.contact == PairContact::vertex_of_b_in_a ||
+      got.contact == PairContact::vertex_of_a_in_b) {
+    // a vertex witness: distance 0, and the vertex strictly inside the other solid
+    const bool of_b = got.contact == PairContact::vertex_of_b_in_a;
+    const Vec3 v = of_b ? wb.vertices[static_cast<std::size_t>(got.vertex)]
+                        : a.vertices[static_cast<std::size_t>(got.vertex)];
+    ok = ok && (nested || want.d2 == 0) &&
+         inside::point_in_mesh(of_b ? a : wb, v) == Location::inside && got.point_a == v;
+  } else {
+    ok = ok && !nested && got.triangle_a == want.a && got.triangle_b == want.b;
+    if (want.d2 == 0) ok = ok && got.contact == PairContact::touching;
+  }
   if (!ok) {
     char buf[200];
     std::snprintf(buf, sizeof buf, "got %a (%d, %d, %s) want %a (%d, %d, nested %d)", got.distance,
@@ -238,10 +247,10 @@ TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   }
   EXPECT_EQ(failures, 0);
   t.t = {1.5, 1.5, 1.5};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::b_in_a);
+  EXPECT_EQ(pair.distance(t).contact, PairContact::vertex_of_b_in_a);
   const MeshPairDistance inverse(small, big);
   t.t = {-1.5, -1.5, -1.5};
-  EXPECT_EQ(inverse.distance(t).contact, PairContact::a_in_b);
+  EXPECT_EQ(inverse.distance(t).contact, PairContact::vertex_of_a_in_b);
   t.t = {4, 0, 0};
   EXPECT_EQ(pair.distance(t).contact, PairContact::touching);
   EXPECT_EQ(pair.distance(t).distance, 0.0);

@@ -213,9 +213,10 @@ TEST(RegionPairDistance, SeparatedTouchingCrossingAndNestedSquares) {
   const PairDistance2 cross = region_region(big, MultiPolygon{{square(3.5, 1, 1)}});
   EXPECT_EQ(cross.contact, PairContact::touching);
   const PairDistance2 nested = region_region(big, MultiPolygon{{square(1, 1, 1)}});
-  EXPECT_EQ(nested.contact, PairContact::b_in_a);
+  EXPECT_EQ(nested.contact, PairContact::vertex_of_b_in_a);
   EXPECT_EQ(nested.distance, 0.0);
-  EXPECT_EQ(region_region(MultiPolygon{{square(1, 1, 1)}}, big).contact, PairContact::a_in_b);
+  EXPECT_EQ(region_region(MultiPolygon{{square(1, 1, 1)}}, big).contact,
+            PairContact::vertex_of_a_in_b);
   // inside the hole: not nested, the distance to the hole's ring
   Polygon holed = square(0, 0, 10);
   holed.rings.push_back({{2, 2}, {2, 8}, {8, 8}, {8, 2}});

@@ -20,13 +20,13 @@ namespace contain::distance {
 
 /// How two meshes relate at the answer of a `MeshPairDistance` query.
 enum class PairContact : std::uint8_t {
-  separate,  ///< distance > 0
-  touching,  ///< the surfaces share a point (distance 0): `triangle_a`, `triangle_b` meet
-  a_in_b,    ///< no surface contact, but A lies inside the solid B (distance 0; `vertex` of A)
-  b_in_a,    ///< no surface contact, but B lies inside the solid A (distance 0; `vertex` of B)
+  separate,          ///< distance > 0
+  touching,          ///< the surfaces share a point (distance 0): `triangle_a`, `triangle_b` meet
+  vertex_of_a_in_b,  ///< `vertex` of A lies inside the solid B: they overlap or nest (distance 0)
+  vertex_of_b_in_a,  ///< `vertex` of B lies inside the solid A: they overlap or nest (distance 0)
 };
 
-/// "separate", "touching", "a_in_b", "b_in_a".
+/// "separate", "touching", "vertex_of_a_in_b", "vertex_of_b_in_a" (collide's witness names).
 [[nodiscard]] const char* to_string(PairContact contact);
 
 /// The answer of a mesh pair distance query.
@@ -70,15 +70,18 @@ struct MeshPairDistanceOptions {
 /// then of B: **distance-tie rule**), the distance is rounded once to the nearest double, and
 /// the closest points per coordinate.
 ///
-/// Algorithm per query: a simultaneous descent of both hierarchies (A's built in world
+/// Algorithm per query: first one vertex per component of B is located in A (exact,
+/// inside::MeshIndex) and one vertex per component of A in B as placed (exact perturbed +x ray
+/// parity): a vertex strictly inside makes the distance 0 (overlapping or nested solids). Then a
+/// simultaneous descent of both hierarchies (A's built in world
 /// coordinates; B's in its own frame, its boxes mapped to enclosing world boxes widened by a bound
 /// on the rounding), nearer pairs first, pruned by a box-box lower bound against the best upper
 /// bound so far; each triangle pair is bounded in floating point (approximate closest points, an
 /// upper bound, and a lower bound from the separation along their difference, proven for any
 /// direction); the exact stage decides among the triangle pairs that can be closest
-/// (predicates::closest_flats: crossing edges, six vertex-triangle and nine edge-edge pairs). If
-/// no surfaces meet, one vertex per component of B is located in A (inside::MeshIndex) and one
-/// vertex per component of A in B as placed (exact perturbed +x ray parity).
+/// (predicates::closest_flats: crossing edges, six vertex-triangle and nine edge-edge pairs).
+/// If no vertex lies inside and no surfaces meet, the solids are apart (the boundary of their
+/// intersection would consist of whole components).
 ///
 /// Complexity: build O(n log n); a query O(node pairs + triangle pairs near the closest
 /// distance) + O(V_B) to place B's vertices + a ray per component for separated solids.
