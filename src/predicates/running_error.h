@@ -42,19 +42,19 @@ struct Err {
   Err(F value, F error) : v(value), e(error) {}
 
   friend Err operator+(const Err& a, const Err& b) {
-    const F v = a.v + b.v;
+    const F r = a.v + b.v;
     // Exact operands and an exact sum keep e = 0: for |a| >= |b| the difference v - a is
     // computed exactly (Dekker's Fast-Two-Sum), for |b| >= |a| v - b is; so both tests pass only
     // when no rounding happened.
-    if (a.e == 0 && b.e == 0 && v - a.v == b.v && v - b.v == a.v) return {v, 0};
-    return {v, (a.e + b.e + u * std::fabs(v)) * grow};
+    if (a.e == 0 && b.e == 0 && r - a.v == b.v && r - b.v == a.v) return {r, 0};
+    return {r, (a.e + b.e + u * std::fabs(r)) * grow};
   }
   friend Err operator-(const Err& a, const Err& b) { return a + Err{-b.v, b.e}; }
   friend Err operator-(const Err& a) { return {-a.v, a.e}; }
   friend Err operator*(const Err& a, const Err& b) {
-    const F v = a.v * b.v;
+    const F r = a.v * b.v;
     if ((a.e == 0 && a.v == 0) || (b.e == 0 && b.v == 0)) return {F(0), F(0)};
-    return {v, (std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + u * std::fabs(v) + tiny) *
+    return {r, (std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + u * std::fabs(r) + tiny) *
                    grow};
   }
 
