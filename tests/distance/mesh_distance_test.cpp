@@ -214,7 +214,7 @@ TEST(MeshDistance, HugeAndTinyCoordinatesStayExact) {
     const double s = std::ldexp(1.0, k);
     const Mesh m = scaled(cube, s);
     std::vector<Vec3> points;
-    for (const Vec3& p : probe_points(cube, 60, static_cast<std::uint64_t>(k + 2000)))
+    for (const Vec3& p : probe_points(cube, 60 / kDivisor, static_cast<std::uint64_t>(k + 2000)))
       points.push_back(s * p);
     EXPECT_EQ(check_mesh(m, points, true), 0) << "scale 2^" << k;
   }
@@ -255,7 +255,7 @@ TEST(MeshDistance, EmptyMeshIsInfinitelyFarAndNonFinitePointsGetNaN) {
 TEST(MeshDistance, OneShotEqualsPrepared) {
   const Mesh torus = scenes::torus(2.0, 0.7, 16, 10);
   const MeshDistance prepared(torus);
-  for (const Vec3& p : probe_points(torus, 50, 5)) {
+  for (const Vec3& p : probe_points(torus, 50 / kDivisor, 5)) {
     const Closest3 a = point_mesh(torus, p, {.signed_distance = true});
     const Closest3 b = prepared.query(p, {.signed_distance = true});
     EXPECT_EQ(a.distance, b.distance);

@@ -22,6 +22,12 @@
 namespace contain::distance {
 namespace {
 
+#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
+constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
+#else
+constexpr int kDivisor = 1;
+#endif
+
 mpq_class exact_triangle_pair(const Triangle3& s, const Triangle3& t) {
   if (test::exact_tri_tri_3d(s, t)) return 0;
   mpq_class best = test::exact_closest(s.a, t).squared_distance;
@@ -75,7 +81,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
   std::mt19937_64 rng(21);
   std::uniform_real_distribution<double> u(-1, 1);
   int failures = 0;
-  for (int i = 0; i < 3000 && failures < 10; ++i) {
+  for (int i = 0; i < 3000 / kDivisor && failures < 10; ++i) {
     const bool lat = i % 2 == 0;
     auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Triangle3 s{pick(), pick(), pick()}, t{pick(), pick(), pick()};
@@ -101,7 +107,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
 TEST(ClosestFlats, SegmentPairsMatchTheExactOracleIn3DAnd2D) {
   std::mt19937_64 rng(22);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (int i = 0; i < 5000; ++i) {
+  for (int i = 0; i < 5000 / kDivisor; ++i) {
     const bool lat = i % 2 == 0;
     auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Segment3 s{pick(), pick()}, t{pick(), pick()};
@@ -229,7 +235,7 @@ TEST(MeshPairDistance, RandomPosesOfTwoTorimatchTheExactOracle) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-2.5, 2.5), ang(0, 6.28);
   int failures = 0;
-  for (int i = 0; i < 24 && failures < 5; ++i)
+  for (int i = 0; i < 24 / kDivisor && failures < 5; ++i)
     check_pose(pair, a, b, rotation(ang(rng), {u(rng), u(rng), 0.3 * u(rng)}), failures);
   EXPECT_EQ(failures, 0);
 }

@@ -156,7 +156,7 @@ TEST(RegionDistance, SpikyStarAndHugeAndTinyScales) {
     for (const Vec2& v : star)
       scaled.push_back(s * v);
     std::vector<Vec2> points;
-    for (const Vec2& p : probes({star}, 200 / kDivisor, 5))
+    for (const Vec2& p : probes({star}, 200 / kDivisor / kDivisor, 5))
       points.push_back(s * p);
     EXPECT_EQ(check_region({scaled}, points, Fill::even_odd, true), 0) << "2^" << k;
   }
