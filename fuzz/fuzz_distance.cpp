@@ -53,8 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(got.point.x == test::nearest_double(best_point.x));
   FUZZ_CHECK(got.point.y == test::nearest_double(best_point.y));
   FUZZ_CHECK(got.point.z == test::nearest_double(best_point.z));
-  for (const double d : {got.distance, std::nextafter(got.distance, 0.0),
-                         std::nextafter(got.distance, DBL_MAX)}) {
+  for (const double d :
+       {got.distance, std::nextafter(got.distance, 0.0), std::nextafter(got.distance, DBL_MAX)}) {
     if (!std::isfinite(d)) continue;
     const mpq_class q(d);
     FUZZ_CHECK(prepared.within(p, d) == (best <= q * q));

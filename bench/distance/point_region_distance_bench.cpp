@@ -126,10 +126,11 @@ void run(const char* name, const std::vector<Ring>& rings, std::size_t count) {
               t_contain, static_cast<double>(points.size()) / t_contain);
   std::printf("  %-44s %8.4f s %12.3e points/s\n", "contain RegionDistance (+ closest point)",
               t_contain_point, static_cast<double>(points.size()) / t_contain_point);
-  std::printf("  %-44s %8.4f s %12.3e points/s  x %.2f  distances differing > 1e-12: %zu (worst "
-              "%.1e)\n",
-              "GEOS 3.11 GEOSPreparedDistance (boundary)", t_geos,
-              static_cast<double>(points.size()) / t_geos, t_geos / t_contain, differ, worst);
+  std::printf(
+      "  %-44s %8.4f s %12.3e points/s  x %.2f  distances differing > 1e-12: %zu (worst "
+      "%.1e)\n",
+      "GEOS 3.11 GEOSPreparedDistance (boundary)", t_geos,
+      static_cast<double>(points.size()) / t_geos, t_geos / t_contain, differ, worst);
   std::printf("  %-44s %8.4f s %12.3e points/s\n", "contain RegionDistance::within (exact)",
               t_contain_within, static_cast<double>(points.size()) / t_contain_within);
   std::printf("  %-44s %8.4f s %12.3e points/s  x %.2f  answers differing: %zu\n",
