@@ -21,7 +21,7 @@
 #include "contain/core/location.h"
 #include "contain/geometry/mesh.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::python {
 

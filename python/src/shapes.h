@@ -11,7 +11,7 @@
 
 #include "contain/core/location.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/transform.h"
+#include "contain/values/transform.h"
 
 namespace contain::python {
 

@@ -14,12 +14,12 @@
 #include <cfloat>
 #include <cmath>
 
-#include "contain/geometry/plane.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/side_of_plane.h"
+#include "contain/values/plane.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 #include "predicates/big_float.h"
 
 namespace contain::clip::detail {

@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/plane.h"
 #include "contain/predicates/side_of_plane.h"
+#include "contain/values/plane.h"
 
 namespace contain::collide {
 

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <tuple>
 
-#include "contain/geometry/box.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/values/box.h"
 
 // Outline: one record per (edge, triangle) sorted by edge gives border, non-manifold and
 // inconsistent edges; the same groups join triangle corners at both end vertices (a vertex whose

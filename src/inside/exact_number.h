@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside::detail {
 

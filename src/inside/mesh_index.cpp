@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "contain/bvh/triangle_boxes.h"
-#include "contain/geometry/triangle.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
+#include "contain/values/triangle.h"
 #include "inside/mesh_ray.h"
 
 // Outline (derivation in mesh_index.h and mesh_ray.h):

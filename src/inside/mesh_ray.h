@@ -18,9 +18,9 @@
 
 #include <algorithm>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside::detail {
 

@@ -20,8 +20,8 @@
 
 #include "contain/core/location.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside::detail {
 

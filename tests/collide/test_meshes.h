@@ -4,7 +4,7 @@
 #include <random>
 
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/values/transform.h"
 
 namespace contain::test {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::bound {
 

@@ -5,12 +5,12 @@
 
 #include <optional>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/convex_polyhedron.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip {
 

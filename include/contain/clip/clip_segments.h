@@ -6,12 +6,12 @@
 #include <span>
 
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/sphere.h"
 #include "contain/inside/convex_polyhedron.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
+#include "contain/values/sphere.h"
 
 namespace contain::clip {
 

@@ -8,10 +8,10 @@
 #include <span>
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/plane.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
 #include "contain/inside/convex_polyhedron.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 

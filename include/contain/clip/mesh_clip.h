@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <span>
 
-#include "contain/geometry/box.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
 #include "contain/inside/convex_polyhedron.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
 
 namespace contain::clip {
 

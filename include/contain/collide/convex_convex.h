@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/convex_polyhedron.h"
+#include "contain/values/box.h"
+#include "contain/values/sphere.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide {
 

@@ -13,8 +13,8 @@
 #include "contain/collide/contact.h"
 #include "contain/core/parallel.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide {
 

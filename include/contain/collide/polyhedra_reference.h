@@ -7,7 +7,7 @@
 
 #include "contain/collide/contact.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain {
 

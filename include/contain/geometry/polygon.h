@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain {
 

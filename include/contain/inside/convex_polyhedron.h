@@ -9,9 +9,9 @@
 #include "contain/core/parallel.h"
 #include "contain/core/result.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/plane.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

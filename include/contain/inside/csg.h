@@ -65,14 +65,14 @@
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
 #include "contain/core/result.h"
-#include "contain/geometry/box.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/convex_polyhedron.h"
 #include "contain/inside/implicit.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

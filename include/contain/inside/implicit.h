@@ -6,10 +6,10 @@
 #include <functional>
 
 #include "contain/core/location.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -12,12 +12,12 @@
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
 #include "contain/geometry/mesh.h"
 #include "contain/geometry/mesh_validation.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/fast_winding_number.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -4,8 +4,8 @@
 
 #include "contain/core/location.h"
 #include "contain/geometry/mesh.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

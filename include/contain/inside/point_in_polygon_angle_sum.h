@@ -6,8 +6,8 @@
 
 #include "contain/core/location.h"
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -5,7 +5,7 @@
 #include <span>
 
 #include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -5,9 +5,9 @@
 /// are taken as given; they need not be normalised, and the exact predicates decide the sign of
 /// the expression on the given doubles.
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::values {
 
 /// The closed half-space { p : a p.x + b p.y + c p.z + d >= 0 }; its boundary is the plane.
 struct Plane {
@@ -30,4 +30,10 @@ struct HalfPlane {
   friend constexpr bool operator==(const HalfPlane&, const HalfPlane&) = default;
 };
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::HalfPlane;
+using values::Plane;
 }  // namespace contain

@@ -2,9 +2,9 @@
 /// \file
 /// Balls and discs, closed: a point at distance exactly `radius` is on the boundary.
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::values {
 
 /// A closed ball { p : |p - center| <= radius }.
 struct Sphere {
@@ -20,4 +20,10 @@ struct Circle {
   friend constexpr bool operator==(const Circle&, const Circle&) = default;
 };
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::Circle;
+using values::Sphere;
 }  // namespace contain

@@ -2,9 +2,9 @@
 /// \file
 /// Closed line segments.
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::values {
 
 struct Segment2 {
   Vec2 a;
@@ -18,4 +18,10 @@ struct Segment3 {
   friend constexpr bool operator==(const Segment3&, const Segment3&) = default;
 };
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::Segment2;
+using values::Segment3;
 }  // namespace contain

@@ -2,9 +2,9 @@
 /// \file
 /// Closed triangles in 2D and 3D (the convex hull of the three vertices).
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::values {
 
 struct Triangle2 {
   Vec2 a;
@@ -23,4 +23,10 @@ struct Triangle3 {
   friend constexpr bool operator==(const Triangle3&, const Triangle3&) = default;
 };
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::Triangle2;
+using values::Triangle3;
 }  // namespace contain

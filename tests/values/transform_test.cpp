@@ -1,4 +1,4 @@
-#include "contain/geometry/transform.h"
+#include "contain/values/transform.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-#include "contain/geometry/transform.h"
+#include "contain/values/transform.h"
 
 #include <cmath>
 #include <string>
 
-namespace contain {
+namespace contain::values {
 
 Result<Transform> Transform::from_row_major(std::span<const double> numbers) {
   if (numbers.size() != 12) {
@@ -25,4 +25,4 @@ Result<Transform> Transform::from_row_major(std::span<const double> numbers) {
   return out;
 }
 
-}  // namespace contain
+}  // namespace contain::values

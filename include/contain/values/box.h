@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <limits>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::values {
 
 /// A closed 2D axis-aligned box. The default box is empty (min > max), the identity of `expand`.
 struct Box2 {
@@ -63,4 +63,10 @@ struct Box3 {
   friend constexpr bool operator==(const Box3&, const Box3&) = default;
 };
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::Box2;
+using values::Box3;
 }  // namespace contain

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace contain {
+namespace contain::values {
 
 struct Vec2 {
   double x = 0.0;
@@ -87,4 +87,15 @@ struct Vec3 {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
 
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::cross;
+using values::dot;
+using values::is_finite;
+using values::length;
+using values::squared_length;
+using values::Vec2;
+using values::Vec3;
 }  // namespace contain
