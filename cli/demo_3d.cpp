@@ -12,10 +12,10 @@
 #include "contain/bound/bounding_sphere.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/collide/mesh_mesh.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/inside/csg.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "demo_scenes.h"
 #include "scenes/scenes.h"
 

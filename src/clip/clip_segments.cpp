@@ -98,7 +98,7 @@ void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Se
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
   each(s, out, kept, options, [&](const Segment2& x) { return segment_sphere(x, disc); });
 }
-void clip_segments(std::span<const Segment3> s, const inside::ConvexPolyhedron& polyhedron,
+void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,
                    const BatchOptions& options) {
   if (!polyhedron.faces().empty()) {

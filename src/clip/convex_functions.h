@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "clip/exact_value.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::clip::detail {
 

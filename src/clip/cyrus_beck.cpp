@@ -12,7 +12,7 @@ ClippedSegment3 cyrus_beck(const Segment3& segment, std::span<const Plane> half_
   return detail::cyrus_beck_clip<Vec3, detail::PlaneFunction>(segment.a, segment.b, functions);
 }
 
-ClippedSegment3 cyrus_beck(const Segment3& segment, const inside::ConvexPolyhedron& polyhedron) {
+ClippedSegment3 cyrus_beck(const Segment3& segment, const ConvexPolyhedron& polyhedron) {
   if (!polyhedron.faces().empty()) {
     const auto functions = detail::face_functions(polyhedron.faces());
     return detail::cyrus_beck_clip<Vec3, detail::FaceFunction>(segment.a, segment.b, functions);

@@ -215,7 +215,7 @@ Mesh mesh_clip(const Mesh& mesh, const Box3& box, const MeshClipOptions& options
   return mesh_clip(mesh, box_halfspaces(box), options);
 }
 
-Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
+Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                const MeshClipOptions& options) {
   if (!polyhedron.faces().empty()) {
     // One cut per plane: a face coplanar with an earlier one (a quad split in two) would cut

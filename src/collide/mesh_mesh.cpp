@@ -7,7 +7,7 @@
 #include "collide/placed_boxes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 #include "inside/mesh_ray.h"
 
 namespace contain::collide {

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 #include <type_traits>
 
+#include "contain/inside/implicit.h"
+#include "contain/inside/point_in_convex.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
@@ -70,24 +74,34 @@ std::string check_leaf(const CsgLeaf& leaf, ErrorKind& kind) {
           [](const ImplicitFunction& f) -> std::string {
             return f ? "" : "implicit leaf holds no function";
           },
-          [&](const CsgMesh& m) -> std::string {
-            if (!m.problem().empty() && m.index().regime() != MeshRegime::closed_exact) {
-              kind = ErrorKind::degenerate;
+          [](const CsgMesh& m) -> std::string {
+            const Mesh& mesh = m.mesh();
+            const auto n = static_cast<std::int64_t>(mesh.vertices.size());
+            for (const TriangleIndices& t : mesh.triangles) {
+              if (std::any_of(t.begin(), t.end(),
+                              [&](std::int32_t i) { return i < 0 || i >= n; })) {
+                return "mesh has a vertex index out of range";
+              }
             }
-            return m.problem();
+            if (!std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
+                             [](Vec3 v) { return is_finite(v); })) {
+              return "mesh has a NaN or infinite coordinate";
+            }
+            return "";  // closedness is checked on its index (prepare)
           },
       },
       leaf);
 }
 
-Location locate_leaf(const CsgLeaf& leaf, Vec3 p) {
+// `mesh_index`: the index of a mesh leaf (null for other leaves).
+Location locate_leaf(const CsgLeaf& leaf, const MeshIndex* mesh_index, Vec3 p) {
   return std::visit(Overloaded{
                         [&](const Sphere& s) { return point_in_sphere(s, p); },
                         [&](const Box3& b) { return point_in_box(b, p); },
                         [&](const Plane& h) { return point_in_halfspace(h, p); },
-                        [&](const ConvexPolyhedron& c) { return c.locate(p); },
+                        [&](const ConvexPolyhedron& c) { return point_in_convex(c, p); },
                         [&](const ImplicitFunction& f) { return point_in_implicit(f, p); },
-                        [&](const CsgMesh& m) { return m.index().locate(p); },
+                        [&](const CsgMesh&) { return mesh_index->locate(p); },
                     },
                     leaf);
 }
@@ -269,52 +283,7 @@ void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>
 
 }  // namespace
 
-CsgMesh::CsgMesh(Mesh mesh, const MeshIndexOptions& options) {
-  std::string problem;
-  if (!std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
-                   [](Vec3 v) { return is_finite(v); })) {
-    problem = "mesh has a NaN or infinite coordinate";
-  }
-  const auto n = static_cast<std::int64_t>(mesh.vertices.size());
-  for (const TriangleIndices& t : mesh.triangles) {
-    if (std::any_of(t.begin(), t.end(), [&](std::int32_t i) { return i < 0 || i >= n; })) {
-      problem = "mesh has a vertex index out of range";
-    }
-  }
-  if (problem.empty()) {
-    index_ = std::make_shared<const MeshIndex>(mesh, options);
-    if (index_->regime() != MeshRegime::closed_exact) {
-      problem = "mesh is not closed, a closed mesh is required (" + index_->warning() + ")";
-    }
-  } else {
-    index_ = std::make_shared<const MeshIndex>();
-  }
-  mesh_ = std::make_shared<const Mesh>(std::move(mesh));
-  problem_ = std::make_shared<const std::string>(std::move(problem));
-}
-
-Csg Csg::leaf(CsgLeaf solid) {
-  return Csg(CsgOp::leaf, {}, std::make_shared<const CsgLeaf>(std::move(solid)));
-}
-Csg Csg::unite(std::vector<Csg> operands) {
-  return Csg(CsgOp::unite, std::move(operands), {});
-}
-Csg Csg::intersect(std::vector<Csg> operands) {
-  return Csg(CsgOp::intersect, std::move(operands), {});
-}
-Csg Csg::subtract(Csg a, Csg b) {
-  std::vector<Csg> operands;
-  operands.push_back(std::move(a));
-  operands.push_back(std::move(b));
-  return Csg(CsgOp::subtract, std::move(operands), {});
-}
-Csg Csg::complement(Csg a) {
-  std::vector<Csg> operands;
-  operands.push_back(std::move(a));
-  return Csg(CsgOp::complement, std::move(operands), {});
-}
-
-Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
+Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh_options) {
   CsgSolid solid;
   // Breadth-first, so that children of a node are contiguous in children_.
   struct Pending {
@@ -322,6 +291,7 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
     std::string path;
   };
   std::vector<Pending> queue{{&tree, ""}};
+  std::map<const Mesh*, std::shared_ptr<const MeshIndex>> indexes;  // one per mesh, however shared
   solid.nodes_.push_back({});
   for (std::size_t at = 0; at < queue.size(); ++at) {
     // Copies: queue and nodes_ grow below.
@@ -332,8 +302,21 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree) {
       ErrorKind kind = ErrorKind::invalid_value;
       const std::string problem = check_leaf(t.solid(), kind);
       if (!problem.empty()) return Error{kind, (path.empty() ? "" : path + ": ") + problem};
+      std::shared_ptr<const MeshIndex> index;
+      if (const auto* m = std::get_if<CsgMesh>(&t.solid())) {
+        std::shared_ptr<const MeshIndex>& shared = indexes[&m->mesh()];
+        if (!shared) shared = std::make_shared<const MeshIndex>(m->mesh(), mesh_options);
+        if (shared->regime() != MeshRegime::closed_exact) {
+          return Error{ErrorKind::degenerate,
+                       (path.empty() ? "" : path + ": ") +
+                           "mesh is not closed, a closed mesh is required (" + shared->warning() +
+                           ")"};
+        }
+        index = shared;
+      }
       solid.nodes_[at].first = static_cast<std::int32_t>(solid.leaves_.size());
       solid.leaves_.push_back(t.solid());
+      solid.mesh_indexes_.push_back(std::move(index));
       continue;
     }
     const std::size_t arity = t.operands().size();
@@ -397,7 +380,7 @@ Location CsgSolid::locate(Vec3 p) const {
   std::vector<Location> at(leaves_.size());
   bool any_boundary = false;
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
-    at[i] = locate_leaf(leaves_[i], p);
+    at[i] = locate_leaf(leaves_[i], mesh_indexes_[i].get(), p);
     any_boundary = any_boundary || at[i] == Location::boundary;
   }
   const int known = evaluate(0, [&](std::int32_t leaf) {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/plane.h"
 #include "contain/values/segment.h"

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/transform.h"
 
 namespace contain::test {

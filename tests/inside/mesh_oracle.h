@@ -7,7 +7,7 @@
 // symbolic one.
 
 #include "contain/core/location.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 

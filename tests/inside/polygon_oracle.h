@@ -7,7 +7,7 @@
 #include <span>
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/vec.h"
 
 namespace contain::test {

@@ -7,7 +7,7 @@
 
 #include "contain/bound/sphere_method.h"
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/sphere.h"
 #include "contain/values/vec.h"
 

@@ -8,7 +8,7 @@
 #include "contain/bound/mesh_vertices.h"
 #include "contain/bound/sphere_method.h"
 #include "contain/core/result.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/sphere.h"
 #include "contain/values/vec.h"
 

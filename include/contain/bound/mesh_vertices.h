@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/vec.h"
 
 namespace contain::bound {

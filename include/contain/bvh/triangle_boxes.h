@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 
 namespace contain::bvh {

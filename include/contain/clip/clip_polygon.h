@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <span>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/plane.h"
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/plane.h"
 #include "contain/values/vec.h"
 

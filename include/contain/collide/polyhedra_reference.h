@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "contain/collide/contact.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/transform.h"
 
 namespace contain::collide {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 

@@ -12,10 +12,10 @@
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/inside/fast_winding_number.h"
 #include "contain/predicates/sign.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/mesh_validation.h"
 #include "contain/values/box.h"
 #include "contain/values/vec.h"
 

@@ -3,8 +3,8 @@
 /// Point in a polyhedron given by a triangle mesh, one query (seed section 22.4, figure 22.22).
 
 #include "contain/core/location.h"
-#include "contain/geometry/mesh.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/vec.h"
 
 namespace contain::inside {

@@ -5,8 +5,8 @@
 #include <span>
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/vec.h"
 
 namespace contain::inside {

@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/vec.h"
 
 namespace contain::inside {

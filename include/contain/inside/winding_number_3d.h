@@ -4,7 +4,7 @@
 /// Sorkine-Hornung, "Robust Inside-Outside Segmentation using Generalized Winding Numbers",
 /// SIGGRAPH 2013): the signed solid angle of the surface seen from the point over 4 pi.
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 

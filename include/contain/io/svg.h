@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/segment.h"
 

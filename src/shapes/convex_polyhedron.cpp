@@ -1,4 +1,4 @@
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
 
 #include <cmath>
 #include <cstdint>
@@ -8,9 +8,8 @@
 
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
-#include "contain/predicates/side_of_plane.h"
 
-namespace contain::inside {
+namespace contain::shapes {
 namespace {
 
 bool finite(const Plane& p) {
@@ -123,31 +122,4 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   return result;
 }
 
-Location ConvexPolyhedron::locate(Vec3 p) const {
-  Location result = Location::inside;
-  for (const Plane& plane : planes_) {
-    const Sign s = predicates::side_of_plane(plane, p);
-    if (s == Sign::negative) return Location::outside;
-    if (s == Sign::zero) result = Location::boundary;
-  }
-  for (const Triangle3& face : faces_) {
-    const Sign s = inner_side(face, p);
-    if (s == Sign::negative) return Location::outside;
-    if (s == Sign::zero) result = Location::boundary;
-  }
-  return result;
-}
-
-void ConvexPolyhedron::locate(std::span<const Vec3> points, std::span<Location> out,
-                              const BatchOptions& options) const {
-  parallel_for(points.size(), options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = locate(points[i]);
-  });
-}
-
-Location point_in_convex(const ConvexPolyhedron& polyhedron, Vec3 p) {
-  return polyhedron.locate(p);
-}
-
-}  // namespace contain::inside
+}  // namespace contain::shapes

@@ -16,7 +16,7 @@
 #include "contain/values/box.h"
 #include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::shapes {
 
 /// A closed path: consecutive points are joined, and the last joins the first. The closing point
 /// of WKT/GeoJSON is not stored.
@@ -74,4 +74,15 @@ struct MultiPolygon {
 /// Twice the signed area of a ring (positive for counter-clockwise), in floating point.
 [[nodiscard]] double signed_area2(const Ring& ring);
 
+}  // namespace contain::shapes
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::bounding_box;
+using shapes::Fill;
+using shapes::is_filled;
+using shapes::MultiPolygon;
+using shapes::Polygon;
+using shapes::Ring;
+using shapes::signed_area2;
 }  // namespace contain

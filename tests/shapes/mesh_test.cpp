@@ -1,4 +1,4 @@
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 #include <gtest/gtest.h>
 

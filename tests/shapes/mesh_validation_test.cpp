@@ -1,4 +1,4 @@
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include "contain/core/result.h"
 #include "contain/values/vec.h"
 
-namespace contain {
+namespace contain::shapes {
 
 /// Indices of a triangle's three vertices; counter-clockwise seen from outside for an outward
 /// oriented closed mesh.
@@ -28,4 +28,10 @@ struct Mesh {
   friend bool operator==(const Mesh&, const Mesh&) = default;
 };
 
+}  // namespace contain::shapes
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::Mesh;
+using shapes::TriangleIndices;
 }  // namespace contain

@@ -1,8 +1,8 @@
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 #include <string>
 
-namespace contain {
+namespace contain::shapes {
 
 Result<Mesh> Mesh::from_arrays(std::vector<Vec3> vertices, std::vector<TriangleIndices> triangles) {
   for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -24,4 +24,4 @@ Result<Mesh> Mesh::from_arrays(std::vector<Vec3> vertices, std::vector<TriangleI
   return Mesh{std::move(vertices), std::move(triangles)};
 }
 
-}  // namespace contain
+}  // namespace contain::shapes

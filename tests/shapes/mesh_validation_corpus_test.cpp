@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "contain/geometry/mesh_validation.h"
 #include "contain/io/mesh_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "support/shared_corpus.h"
 
 namespace contain {

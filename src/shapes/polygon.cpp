@@ -1,8 +1,8 @@
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 #include <string>
 
-namespace contain {
+namespace contain::shapes {
 
 Result<Polygon> Polygon::from_rings(std::vector<Ring> rings) {
   for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -53,4 +53,4 @@ double signed_area2(const Ring& ring) {
   return sum;
 }
 
-}  // namespace contain
+}  // namespace contain::shapes

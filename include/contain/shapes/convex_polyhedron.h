@@ -1,25 +1,23 @@
 #pragma once
 /// \file
-/// Point in a convex polyhedron, the intersection of half-spaces (seed section 22.4, figure 22.22).
+/// Convex polyhedra as data: the intersection of half-spaces (seed section 22.4, figure 22.22),
+/// validated; inside::point_in_convex locates points in them.
 
-#include <span>
 #include <vector>
 
-#include "contain/core/location.h"
-#include "contain/core/parallel.h"
 #include "contain/core/result.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/plane.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
-namespace contain::inside {
+namespace contain::shapes {
 
 /// A convex polyhedron (or any intersection of closed half-spaces), validated and ready for
-/// queries. Built either from planes (a x + b y + c z + d >= 0 each, normals inward) or from a
-/// closed convex triangle mesh, whose faces are kept as triangles so that every side test is
-/// predicates::orient3d on three input vertices: a plane through them computed in floating point
-/// would not be exact.
+/// queries (inside::point_in_convex). Built either from planes (a x + b y + c z + d >= 0 each,
+/// normals inward) or from a closed convex triangle mesh, whose faces are kept as triangles so that
+/// every side test is predicates::orient3d on three input vertices: a plane through them computed
+/// in floating point would not be exact.
 ///
 /// A point is `inside` when it is strictly inside every half-space, `boundary` when it is on some
 /// of the planes and inside the others, `outside` otherwise. The answer is about the closed set
@@ -46,14 +44,6 @@ class ConvexPolyhedron {
   /// O(F V) for the convexity check, fine for the small convex shapes this is meant for.
   [[nodiscard]] static Result<ConvexPolyhedron> from_mesh(const Mesh& mesh);
 
-  /// Where `p` lies. Exact. O(number of planes or faces); stops at the first outside.
-  [[nodiscard]] Location locate(Vec3 p) const;
-
-  /// locate() for every point, in parallel; out[i] is the answer for points[i] whatever the
-  /// thread count. Precondition: out.size() == points.size().
-  void locate(std::span<const Vec3> points, std::span<Location> out,
-              const BatchOptions& options = {}) const;
-
   /// The half-spaces given to from_planes (empty for a mesh-based polyhedron).
   [[nodiscard]] const std::vector<Plane>& planes() const { return planes_; }
   /// The faces of a mesh-based polyhedron, counter-clockwise seen from outside (empty otherwise).
@@ -64,7 +54,9 @@ class ConvexPolyhedron {
   std::vector<Triangle3> faces_;
 };
 
-/// One-shot form of ConvexPolyhedron::locate.
-[[nodiscard]] Location point_in_convex(const ConvexPolyhedron& polyhedron, Vec3 p);
+}  // namespace contain::shapes
 
-}  // namespace contain::inside
+// Users and every layer above spell this name contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::ConvexPolyhedron;
+}  // namespace contain

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
-namespace contain {
+namespace contain::shapes {
 
 /// The facts `validate_mesh` finds. Edges are unordered pairs of vertex indices (by index, not
 /// by position: weld first if a file repeats positions); a triangle with a repeated index has
@@ -85,4 +85,12 @@ struct WeldResult {
 /// vertices are kept (welded like the others). O(n log n).
 [[nodiscard]] WeldResult weld_vertices(const Mesh& mesh);
 
+}  // namespace contain::shapes
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::MeshReport;
+using shapes::validate_mesh;
+using shapes::weld_vertices;
+using shapes::WeldResult;
 }  // namespace contain

@@ -1,4 +1,4 @@
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 
 #include <algorithm>
 #include <array>
@@ -15,7 +15,7 @@
 // corners fall into several groups is a pinch vertex); vertices joined by edges give the
 // components; sorted vertex triples give duplicates; exact orientations give degenerate faces.
 
-namespace contain {
+namespace contain::shapes {
 
 namespace {
 
@@ -243,4 +243,4 @@ WeldResult weld_vertices(const Mesh& mesh) {
   return w;
 }
 
-}  // namespace contain
+}  // namespace contain::shapes
