@@ -13,14 +13,15 @@
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/side_of_plane.h"
-#include "csg_local.h"
+#include "inside/csg_local.h"
 
 namespace contain::inside {
 namespace {
 
-using detail::ExactNumber;
-using detail::ExactVec3;
 using detail::LocalConstraint;
+using predicates::BigFloat;
+using predicates::BigVec3;
+using predicates::to_big;
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -120,8 +121,8 @@ void mesh_constraints(const Mesh& mesh, Vec3 p, std::vector<LocalConstraint>& ou
     box.expand(tri.b);
     box.expand(tri.c);
     if (!box.contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
-    const ExactVec3 a = detail::exact(tri.a);
-    ExactVec3 normal = cross(detail::exact(tri.b) - a, detail::exact(tri.c) - a);
+    const BigVec3 a = to_big(tri.a);
+    BigVec3 normal = cross(to_big(tri.b) - a, to_big(tri.c) - a);
     if (!is_zero(normal)) out.push_back({std::move(normal), false, false});
   }
 }
@@ -134,7 +135,7 @@ class MeshRay {
  public:
   MeshRay() = default;
   MeshRay(const Mesh& mesh, Vec3 p) {
-    const ExactVec3 ep = detail::exact(p);
+    const BigVec3 ep = to_big(p);
     for (const TriangleIndices& t : mesh.triangles) {
       const Vec3 a = vertex(mesh, t[0]), b = vertex(mesh, t[1]), c = vertex(mesh, t[2]);
       // Triangles that the ray from a point near p cannot reach (exact comparisons of inputs).
@@ -152,16 +153,16 @@ class MeshRay {
                             predicates::orient2d(pc, pa, pp)};
       if (std::any_of(edge, edge + 3, [&](Sign e) { return e != Sign::zero && e != turn; }))
         continue;
-      const ExactVec3 ea = detail::exact(a), eb = detail::exact(b), ec = detail::exact(c);
-      const ExactVec3 normal = cross(eb - ea, ec - ea);
+      const BigVec3 ea = to_big(a), eb = to_big(b), ec = to_big(c);
+      const BigVec3 normal = cross(eb - ea, ec - ea);
       Candidate k;
       k.s = normal.x.sign();  // the (y, z) projection's orientation, = turn
       // Edge tests in the (y, z) plane: (B − A) x (O − A) = g . (o − a), g = (0, −dz, dy).
-      const ExactVec3* from[3] = {&ea, &eb, &ec};
-      const ExactVec3* to[3] = {&eb, &ec, &ea};
+      const BigVec3* from[3] = {&ea, &eb, &ec};
+      const BigVec3* to[3] = {&eb, &ec, &ea};
       for (int e = 0; e < 3; ++e) {
-        const ExactVec3 d = *to[e] - *from[e];
-        k.g[e] = ExactVec3{ExactNumber(), -d.z, d.y};
+        const BigVec3 d = *to[e] - *from[e];
+        k.g[e] = BigVec3{BigFloat(), -d.z, d.y};
         k.c[e] = dot(k.g[e], ep - *from[e]);
       }
       // The plane is met ahead (t > 0) when sign(N . (a − o)) == sign(N.x).
@@ -201,11 +202,11 @@ class MeshRay {
  private:
   struct Candidate {
     Sign s = Sign::zero;
-    ExactNumber c[4];
-    ExactVec3 g[4];
+    BigFloat c[4];
+    BigVec3 g[4];
   };
 
-  static Sign sign(const ExactNumber& c, const ExactVec3& g, const detail::SymbolicOffset& at) {
+  static Sign sign(const BigFloat& c, const BigVec3& g, const detail::SymbolicOffset& at) {
     if (const Sign s = detail::sign_at(c, g, at); s != Sign::zero) return s;
     if (const Sign s = g.y.sign(); s != Sign::zero) return s;
     return g.z.sign();
@@ -215,8 +216,8 @@ class MeshRay {
   std::vector<Candidate> open_;  // triangles whose tests vanish at p
 };
 
-ExactVec3 axis(int k, double s) {
-  return detail::exact(Vec3{k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0});
+BigVec3 axis(int k, double s) {
+  return to_big(Vec3{k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0});
 }
 
 // Central-difference gradient estimate of an implicit function (documented as approximate).
@@ -233,7 +234,7 @@ LocalConstraint implicit_constraint(const ImplicitFunction& f, Vec3 p) {
     *parts[k] = ahead - behind;
   }
   LocalConstraint c;
-  if (is_finite(gradient)) c.normal = detail::exact(gradient);
+  if (is_finite(gradient)) c.normal = to_big(gradient);
   c.fixed_value = all_nonnegative;  // used when the normal is zero
   return c;
 }
@@ -247,7 +248,7 @@ void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>
           [&](const Sphere& s) {
             // Tangent plane with inward normal c − p; |c − p| = r exactly since p is on it. A
             // ball of radius 0 has no interior: its zero normal with fixed_value false.
-            out.push_back({detail::exact(s.center) - detail::exact(p), true, false});
+            out.push_back({to_big(s.center) - to_big(p), true, false});
           },
           [&](const Box3& b) {
             const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
@@ -258,20 +259,19 @@ void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>
             }
           },
           [&](const Plane& h) {
-            out.push_back({detail::exact(h.normal()), false, false});
+            out.push_back({to_big(h.normal()), false, false});
           },
           [&](const ConvexPolyhedron& c) {
             for (const Plane& h : c.planes()) {
               if (predicates::side_of_plane(h, p) == Sign::zero) {
-                out.push_back({detail::exact(h.normal()), false, false});
+                out.push_back({to_big(h.normal()), false, false});
               }
             }
             for (const Triangle3& t : c.faces()) {
               if (predicates::orient3d(t.a, t.b, t.c, p) == Sign::zero) {
-                const ExactVec3 a = detail::exact(t.a);
+                const BigVec3 a = to_big(t.a);
                 // Faces are counter-clockwise from outside: (b − a) × (c − a) points out.
-                out.push_back(
-                    {-cross(detail::exact(t.b) - a, detail::exact(t.c) - a), false, false});
+                out.push_back({-cross(to_big(t.b) - a, to_big(t.c) - a), false, false});
               }
             }
           },
