@@ -50,9 +50,10 @@ struct MeshIndexOptions {
 /// Regime `closed_exact` (every edge shared by exactly two triangles: a closed surface; its
 /// orientation does not matter). Answer: `boundary` if p lies on a triangle (orient3d == 0 and
 /// the exact point in triangle), else the parity of the crossings of the **perturbed +x ray
-/// rule** (docs/robustness.md; src/inside/mesh_ray.h): the ray from p along +x, its origin moved
-/// symbolically by (0, e, e^2), so that it never meets an edge or a vertex; odd is `inside`.
-/// Exact on the given doubles for every point (checked against a GMP oracle), deterministic.
+/// rule** (docs/robustness.md; include/contain/predicates/perturbed_ray.h): the ray from p along
+/// +x, its origin moved symbolically by (0, e, e^2), so that it never meets an edge or a vertex;
+/// odd is `inside`. Exact on the given doubles for every point (checked against a GMP oracle),
+/// deterministic.
 ///
 /// Structure: a uniform grid over the bounding box; a point is assigned its cell by exact
 /// comparisons with the grid lines (half-open cells, the last closed). Cells that no triangle's
