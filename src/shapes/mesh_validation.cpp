@@ -7,6 +7,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/values/box.h"
 
@@ -18,26 +19,6 @@
 namespace contain::shapes {
 
 namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
-    }
-    return x;
-  }
-  void join(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 struct EdgeUse {
   std::int32_t lo, hi;  // lo < hi
@@ -91,13 +72,13 @@ MeshReport validate_mesh(const Mesh& mesh) {
   });
 
   // Corners: 3 t + k. A triangle with a repeated index joins its own corners at that vertex.
-  UnionFind corners(3 * nt);
-  UnionFind vertices(mesh.vertices.size());
+  UnionFind<std::size_t> corners(3 * nt);
+  UnionFind<std::size_t> vertices(mesh.vertices.size());
   for (std::size_t t = 0; t < nt; ++t) {
     const TriangleIndices& tri = mesh.triangles[t];
     for (std::size_t k = 0; k < 3; ++k) {
       for (std::size_t l = k + 1; l < 3; ++l) {
-        if (tri[k] == tri[l]) corners.join(3 * t + k, 3 * t + l);
+        if (tri[k] == tri[l]) corners.unite(3 * t + k, 3 * t + l);
       }
     }
   }
@@ -111,13 +92,13 @@ MeshReport validate_mesh(const Mesh& mesh) {
     if (count >= 3) ++r.nonmanifold_edges;
     if (count == 2 && uses[g].forward == uses[g + 1].forward) ++r.inconsistent_edges;
     const EdgeUse& first = uses[g];
-    vertices.join(static_cast<std::size_t>(first.lo), static_cast<std::size_t>(first.hi));
+    vertices.unite(static_cast<std::size_t>(first.lo), static_cast<std::size_t>(first.hi));
     const auto tf = static_cast<std::size_t>(first.triangle);
     for (std::size_t q = g + 1; q < h; ++q) {
       const auto tq = static_cast<std::size_t>(uses[q].triangle);
       for (std::int32_t v : {first.lo, first.hi}) {
-        corners.join(3 * tf + corner_of(mesh.triangles[tf], v),
-                     3 * tq + corner_of(mesh.triangles[tq], v));
+        corners.unite(3 * tf + corner_of(mesh.triangles[tf], v),
+                      3 * tq + corner_of(mesh.triangles[tq], v));
       }
     }
     g = h;
