@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collide/components.h"
 #include "collide/placed_boxes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/mesh_validation.h"
-#include "inside/mesh_ray.h"
+#include "contain/predicates/perturbed_ray.h"
+#include "contain/shapes/mesh_components.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 namespace {
@@ -41,8 +41,8 @@ MeshPair::MeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options)
     a_solid_ = index_a_.regime() == inside::MeshRegime::closed_exact;
   }
   b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
-  a_components_ = detail::component_vertices(a_world_);
-  b_components_ = detail::component_vertices(b_);
+  a_components_ = component_vertices(a_world_);
+  b_components_ = component_vertices(b_);
   b_max_abs_ = max_abs(b_);
 }
 
@@ -62,7 +62,7 @@ bool MeshPair::a_component_in_b(Vec3 q, const Transform& tb) const {
         const Vec3 p0 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[0])]);
         const Vec3 p1 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[1])]);
         const Vec3 p2 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[2])]);
-        if (inside::detail::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
+        if (predicates::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
         return bvh::Visit::proceed;
       });
   return odd;

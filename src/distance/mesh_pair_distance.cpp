@@ -5,13 +5,13 @@
 #include <limits>
 
 #include "contain/bvh/triangle_boxes.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
-#include "distance/components.h"
+#include "contain/shapes/mesh_components.h"
+#include "contain/shapes/mesh_validation.h"
 #include "distance/flat_answer.h"
 #include "distance/search_tree.h"
 #include "distance/triangle_pair_bounds.h"
@@ -81,8 +81,8 @@ MeshPairDistance::MeshPairDistance(const Mesh& a, const Mesh& b,
     a_solid_ = index_a_.regime() == inside::MeshRegime::closed_exact;
   }
   b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
-  a_components_ = detail::component_vertices(a_world_);
-  b_components_ = detail::component_vertices(b_);
+  a_components_ = component_vertices(a_world_);
+  b_components_ = component_vertices(b_);
   a_max_abs_ = max_abs(a_world_);
   b_max_abs_ = max_abs(b_);
 }

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "contain/geometry/box.h"
+#include "contain/values/box.h"
 
 namespace contain::distance::detail {
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance::detail {
 

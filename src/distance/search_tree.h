@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance::detail {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/vec.h"
 #include "distance/search_tree.h"
 
 namespace contain::distance::detail {

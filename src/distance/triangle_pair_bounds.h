@@ -10,9 +10,9 @@
 //                                          - max over B's corners u of (u - y) . w) / |w|,
 //       for any w; tight when x, y are the exact closest pair; <= 0 when the triangles meet.
 
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance::detail {
 

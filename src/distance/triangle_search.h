@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 #include "distance/search_tree.h"
 
 namespace contain::distance::detail {

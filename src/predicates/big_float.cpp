@@ -1,19 +1,19 @@
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
-namespace contain::predicates::detail {
+namespace contain::predicates {
 
 namespace {
 
 using Limbs = std::vector<std::uint32_t>;
 
 // a << bits, as a new magnitude.
-Limbs shifted_left(const Limbs& a, int bits) {
-  const int limbs = bits / 32;
-  const int rest = bits % 32;
+Limbs shifted_left(const Limbs& a, std::int64_t bits) {
+  const std::int64_t limbs = bits / 32;
+  const int rest = static_cast<int>(bits % 32);
   Limbs out(a.size() + static_cast<std::size_t>(limbs) + 1, 0);
   for (std::size_t i = 0; i < a.size(); ++i) {
     const std::uint64_t v = static_cast<std::uint64_t>(a[i]) << rest;
@@ -64,7 +64,7 @@ Limbs subtract(const Limbs& a, const Limbs& b) {
 }  // namespace
 
 BigFloat::BigFloat(double x) {
-  assert(std::isfinite(x) && "predicates take finite doubles only");
+  assert(std::isfinite(x) && "BigFloat takes finite doubles only");
   if (x == 0.0) return;
   negative_ = x < 0.0;
   int e = 0;
@@ -99,7 +99,7 @@ void BigFloat::normalize() {
     ++zeros;
   if (zeros > 0) {
     limbs_.erase(limbs_.begin(), limbs_.begin() + static_cast<std::ptrdiff_t>(zeros));
-    exponent_ += 32 * static_cast<int>(zeros);
+    exponent_ += 32 * static_cast<std::int64_t>(zeros);
   }
 }
 
@@ -107,7 +107,7 @@ BigFloat operator+(const BigFloat& a, const BigFloat& b) {
   if (a.limbs_.empty()) return b;
   if (b.limbs_.empty()) return a;
   // Align both magnitudes on the smaller exponent; shifting left is exact.
-  const int e = std::min(a.exponent_, b.exponent_);
+  const std::int64_t e = std::min(a.exponent_, b.exponent_);
   const Limbs ma = shifted_left(a.limbs_, a.exponent_ - e);
   const Limbs mb = shifted_left(b.limbs_, b.exponent_ - e);
   BigFloat r;
@@ -127,9 +127,19 @@ BigFloat operator+(const BigFloat& a, const BigFloat& b) {
 }
 
 BigFloat operator-(const BigFloat& a, const BigFloat& b) {
-  BigFloat nb = b;
-  nb.negative_ = !nb.negative_;
-  return a + nb;
+  return a + -b;
+}
+
+std::strong_ordering operator<=>(const BigFloat& a, const BigFloat& b) {
+  switch ((a - b).sign()) {
+    case Sign::negative:
+      return std::strong_ordering::less;
+    case Sign::positive:
+      return std::strong_ordering::greater;
+    case Sign::zero:
+      break;
+  }
+  return std::strong_ordering::equal;
 }
 
 BigFloat operator*(const BigFloat& a, const BigFloat& b) {
@@ -152,28 +162,53 @@ BigFloat operator*(const BigFloat& a, const BigFloat& b) {
   return r;
 }
 
-double BigFloat::frexp(long& exponent) const {
+double BigFloat::frexp(std::int64_t& exponent) const {
   exponent = 0;
   if (limbs_.empty()) return 0.0;
   // The top three limbs (at least 65 significant bits, the top limb being nonzero) summed in
   // double: two roundings, a relative error below 2^-52.
   const std::size_t n = limbs_.size();
   double top = 0.0;
-  long shift = 32L * static_cast<long>(n);
+  std::int64_t shift = 32 * static_cast<std::int64_t>(n);
   for (std::size_t k = 0; k < 3; ++k) {
     top = top * 0x1p32 + (k < n ? static_cast<double>(limbs_[n - 1 - k]) : 0.0);
     shift -= 32;
   }
   int e = 0;
   const double f = std::frexp(top, &e);  // top = f * 2^e, f in [0.5, 1)
-  exponent = shift + e + static_cast<long>(exponent_);
+  exponent = shift + e + exponent_;
   return negative_ ? -f : f;
 }
 
-BigFloat BigFloat::scaled(long k) const {
+BigFloat BigFloat::scaled(std::int64_t k) const {
   BigFloat r = *this;
-  if (!r.limbs_.empty()) r.exponent_ += static_cast<int>(k);
+  if (!r.limbs_.empty()) r.exponent_ += k;
   return r;
 }
 
-}  // namespace contain::predicates::detail
+BigVec3 to_big(Vec3 v) {
+  return {BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)};
+}
+BigVec3 operator+(const BigVec3& a, const BigVec3& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+BigVec3 operator-(const BigVec3& a, const BigVec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+BigVec3 operator-(const BigVec3& a) {
+  return {-a.x, -a.y, -a.z};
+}
+BigVec3 operator*(const BigFloat& s, const BigVec3& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+BigFloat dot(const BigVec3& a, const BigVec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+BigVec3 cross(const BigVec3& a, const BigVec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+bool is_zero(const BigVec3& a) {
+  return a.x.is_zero() && a.y.is_zero() && a.z.is_zero();
+}
+
+}  // namespace contain::predicates

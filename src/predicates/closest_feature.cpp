@@ -2,10 +2,10 @@
 
 #include <array>
 
+#include "contain/predicates/big_float.h"
 #include "contain/predicates/cross_dot.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
-#include "predicates/big_float.h"
 #include "predicates/filtered_sign.h"
 #include "predicates/flat_formulas.h"
 #include "predicates/running_error.h"
@@ -14,7 +14,6 @@ namespace contain::predicates {
 
 namespace {
 
-using detail::BigFloat;
 using detail::Err;
 
 template <class T, class V>

@@ -3,7 +3,7 @@
 // (Err<double>: answers unless the value lies within its proven error bound, or is an exact
 // zero), then BigFloat (exact for every finite double).
 
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 #include "predicates/running_error.h"
 
 namespace contain::predicates::detail {

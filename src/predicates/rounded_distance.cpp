@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 #include "predicates/flat_formulas.h"
 #include "predicates/running_error.h"
 
@@ -15,7 +15,6 @@ namespace contain::predicates {
 
 namespace {
 
-using detail::BigFloat;
 using detail::Err;
 using LD = long double;
 using ErrLD = Err<LD>;
@@ -91,18 +90,19 @@ bool sqrt_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
 // Stage B: exact N >= 0, D > 0.
 double sqrt_stage_b(const BigFloat& n, const BigFloat& d) {
   if (n.sign() == Sign::zero) return 0.0;
-  long en = 0;
-  long ed = 0;
+  std::int64_t en = 0;
+  std::int64_t ed = 0;
   const double fn = n.frexp(en);
   const double fd = d.frexp(ed);
-  long e = en - ed;
+  std::int64_t e = en - ed;
   double r = fn / fd;
   if (e % 2 != 0) {
     r *= 2;
     e -= 1;
   }
-  const long half = e / 2;
-  double c = std::ldexp(std::sqrt(r), static_cast<int>(std::clamp<long>(half, -2000, 2000)));
+  const std::int64_t half = e / 2;
+  double c =
+      std::ldexp(std::sqrt(r), static_cast<int>(std::clamp<std::int64_t>(half, -2000, 2000)));
   // The candidate is within a few ulps (or at the end of the range): step to the nearest.
   for (int step = 0; step < 64; ++step) {
     if (c > 0) {
@@ -154,11 +154,11 @@ bool quotient_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
 
 double quotient_stage_b(const BigFloat& n, const BigFloat& d) {
   if (n.sign() == Sign::zero) return 0.0;
-  long en = 0;
-  long ed = 0;
+  std::int64_t en = 0;
+  std::int64_t ed = 0;
   const double fn = n.frexp(en);
   const double fd = d.frexp(ed);
-  double c = std::ldexp(fn / fd, static_cast<int>(std::clamp<long>(en - ed, -2200, 2200)));
+  double c = std::ldexp(fn / fd, static_cast<int>(std::clamp<std::int64_t>(en - ed, -2200, 2200)));
   for (int step = 0; step < 64; ++step) {
     if (c != -kInf) {
       const Sign s = (n - lower_mid_big(c) * d).sign();

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "contain/distance/closest.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 #include "support/exact_distance.h"
 
 namespace contain::test {

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 #include "predicates/cases.h"
 
 namespace contain::test {

@@ -7,9 +7,9 @@
 
 #include <gmpxx.h>
 
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 #include "support/exact.h"
 
 namespace contain::test {

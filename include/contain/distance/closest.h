@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "contain/core/location.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

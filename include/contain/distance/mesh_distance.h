@@ -12,9 +12,9 @@
 #include "contain/core/parallel.h"
 #include "contain/distance/closest.h"
 #include "contain/distance/point_query.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

@@ -11,10 +11,10 @@
 
 #include "contain/bvh/bvh.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

@@ -4,10 +4,10 @@
 
 #include "contain/distance/closest.h"
 #include "contain/distance/point_query.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

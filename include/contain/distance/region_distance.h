@@ -14,9 +14,9 @@
 #include "contain/core/parallel.h"
 #include "contain/distance/closest.h"
 #include "contain/distance/point_query.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/polygon_index.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

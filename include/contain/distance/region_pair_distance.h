@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "contain/distance/mesh_pair_distance.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::distance {
 

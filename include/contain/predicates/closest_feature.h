@@ -6,9 +6,9 @@
 
 #include <cstdint>
 
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 #include "contain/predicates/sign.h"
 #include "contain/predicates/squared_distance.h"
 

@@ -14,7 +14,7 @@
 /// exactly in big-number arithmetic, stepping c by one ulp until both hold; an exact tie goes to
 /// the even neighbour. Derivation: docs/robustness.md, "Distance".
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 #include "contain/predicates/squared_distance.h"
 
 namespace contain::predicates {

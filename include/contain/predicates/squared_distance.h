@@ -25,7 +25,7 @@
 #include <array>
 #include <cstdint>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 #include "contain/predicates/sign.h"
 
 namespace contain::predicates {
