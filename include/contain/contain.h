@@ -5,6 +5,7 @@
 #include "contain/bound/aabb.h"
 #include "contain/bound/bounding_circle.h"
 #include "contain/bound/bounding_sphere.h"
+#include "contain/bound/gjk.h"
 #include "contain/bound/mesh_vertices.h"
 #include "contain/bound/sphere_method.h"
 #include "contain/bvh/bvh.h"
