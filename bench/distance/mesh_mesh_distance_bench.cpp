@@ -45,23 +45,6 @@ double timed_ms(const std::function<void()>& f) {
   return thread_ms() - t0;
 }
 
-Transform random_pose(std::mt19937_64& rng, double reach) {
-  std::normal_distribution<double> n(0, 1);
-  // a random rotation from a random unit quaternion
-  double q[4] = {n(rng), n(rng), n(rng), n(rng)};
-  const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  for (double& x : q)
-    x /= len;
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  Transform t;
-  t.r = {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
-  std::uniform_real_distribution<double> u(-reach, reach);
-  t.t = {u(rng), u(rng), u(rng)};
-  return t;
-}
-
 #ifdef CONTAIN_BENCH_HAS_FCL
 std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl_model(const Mesh& m) {
   auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
@@ -179,10 +162,7 @@ int main(int argc, char** argv) {
   for (Vec3& v : a.vertices)
     v = v - c;
   const Mesh b = contain::scenes::torus(0.25 * s, 0.08 * s, 500, 100);
-  std::mt19937_64 rng(11);
-  std::vector<Transform> poses;
-  for (std::size_t i = 0; i < count; ++i)
-    poses.push_back(random_pose(rng, 0.8 * s));
+  const std::vector<Transform> poses = contain::scenes::random_poses(count, 0.8 * s, 11);
   run((name + " and a 100k torus, random rigid poses").c_str(), a, b, poses);
 
   // Nested: a closed torus A' (100k triangles) with B shrunk inside its tube, no contact.

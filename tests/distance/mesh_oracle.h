@@ -31,4 +31,16 @@ struct MeshOracleAnswer {
 
 [[nodiscard]] std::string hex3(Vec3 p);
 
+/// The exact squared distance between two closed triangles: 0 if they meet (the collide tests'
+/// independent GMP test), else the least of the 6 vertex-triangle and 9 edge-edge distances.
+[[nodiscard]] mpq_class exact_triangle_pair(const Triangle3& s, const Triangle3& t);
+
+/// The closest triangle pair of two meshes' surfaces (least exact squared distance, ties to the
+/// lowest triangle of a, then of b), brute force.
+struct PairOracle {
+  mpq_class d2;
+  int a = -1, b = -1;
+};
+[[nodiscard]] PairOracle pair_oracle(const Mesh& a, const Mesh& b);
+
 }  // namespace contain::test

@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <random>
 
-#include "collide/tri_tri_oracle.h"
 #include "contain/inside/point_in_mesh.h"
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
@@ -27,21 +26,6 @@ constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
 #else
 constexpr int kDivisor = 1;
 #endif
-
-mpq_class exact_triangle_pair(const Triangle3& s, const Triangle3& t) {
-  if (test::exact_tri_tri_3d(s, t)) return 0;
-  mpq_class best = test::exact_closest(s.a, t).squared_distance;
-  for (const Vec3& v : {s.b, s.c})
-    best = std::min(best, test::exact_closest(v, t).squared_distance);
-  for (const Vec3& v : {t.a, t.b, t.c})
-    best = std::min(best, test::exact_closest(v, s).squared_distance);
-  const Segment3 es[3] = {{s.a, s.b}, {s.b, s.c}, {s.c, s.a}};
-  const Segment3 et[3] = {{t.a, t.b}, {t.b, t.c}, {t.c, t.a}};
-  for (const Segment3& x : es)
-    for (const Segment3& y : et)
-      best = std::min(best, test::exact_squared_distance(x, y));
-  return best;
-}
 
 // The flat pair's exact squared distance, from its definition (crossing pairs are 0).
 mpq_class flat_pair_distance(const predicates::FlatPair3& x) {
@@ -88,7 +72,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
     if (i % 7 == 0) t.a = s.b;                // shared vertex
     if (i % 11 == 0) t = {s.b, s.a, pick()};  // shared edge
     const predicates::FlatPair3 pair = predicates::closest_flats(s, t);
-    const mpq_class want = exact_triangle_pair(s, t);
+    const mpq_class want = test::exact_triangle_pair(s, t);
     if (flat_pair_distance(pair) != want) {
       ADD_FAILURE() << "triangle pair " << i << " " << test::hex3(s.a) << test::hex3(s.b)
                     << test::hex3(s.c) << " / " << test::hex3(t.a) << test::hex3(t.b)
@@ -131,63 +115,11 @@ Transform rotation(double angle, Vec3 t) {
   return x;
 }
 
-Mesh placed(const Mesh& m, const Transform& t) {
-  Mesh out = m;
-  for (Vec3& v : out.vertices)
-    v = t.apply(v);
-  return out;
-}
-
-struct PairOracle {
-  mpq_class d2;
-  int a = -1, b = -1;
-};
-
-// Exact squared distance between the boxes of two triangles: a lower bound of theirs, so that
-// the oracle skips pairs that cannot beat the best so far (still exact).
-mpq_class box_gap(const Triangle3& s, const Triangle3& t) {
-  Box3 x, y;
-  for (const Vec3& v : {s.a, s.b, s.c})
-    x.expand(v);
-  for (const Vec3& v : {t.a, t.b, t.c})
-    y.expand(v);
-  mpq_class sum = 0;
-  const double lo1[3] = {x.min.x, x.min.y, x.min.z}, hi1[3] = {x.max.x, x.max.y, x.max.z};
-  const double lo2[3] = {y.min.x, y.min.y, y.min.z}, hi2[3] = {y.max.x, y.max.y, y.max.z};
-  for (int k = 0; k < 3; ++k) {
-    mpq_class g = 0;
-    if (lo1[k] > hi2[k]) g = mpq_class(lo1[k]) - mpq_class(hi2[k]);
-    if (lo2[k] > hi1[k]) g = mpq_class(lo2[k]) - mpq_class(hi1[k]);
-    sum += g * g;
-  }
-  return sum;
-}
-
-PairOracle pair_oracle(const Mesh& a, const Mesh& b) {
-  PairOracle best;
-  for (std::size_t i = 0; i < a.triangles.size(); ++i) {
-    const auto& ta = a.triangles[i];
-    const Triangle3 s{a.vertices[static_cast<std::size_t>(ta[0])],
-                      a.vertices[static_cast<std::size_t>(ta[1])],
-                      a.vertices[static_cast<std::size_t>(ta[2])]};
-    for (std::size_t j = 0; j < b.triangles.size(); ++j) {
-      const auto& tb = b.triangles[j];
-      const Triangle3 t{b.vertices[static_cast<std::size_t>(tb[0])],
-                        b.vertices[static_cast<std::size_t>(tb[1])],
-                        b.vertices[static_cast<std::size_t>(tb[2])]};
-      if (best.a >= 0 && box_gap(s, t) > best.d2) continue;
-      const mpq_class d = exact_triangle_pair(s, t);
-      if (best.a < 0 || d < best.d2) best = {d, static_cast<int>(i), static_cast<int>(j)};
-    }
-  }
-  return best;
-}
-
 void check_pose(const MeshPairDistance& pair, const Mesh& a, const Mesh& b, const Transform& tb,
                 int& failures) {
   const PairDistance3 got = pair.distance(tb);
-  const Mesh wb = placed(b, tb);
-  const PairOracle want = pair_oracle(a, wb);
+  const Mesh wb = scenes::placed(b, tb);
+  const test::PairOracle want = test::pair_oracle(a, wb);
   bool nested = false;
   if (want.d2 > 0) {
     nested = inside::point_in_mesh(a, wb.vertices[static_cast<std::size_t>(wb.triangles[0][0])]) ==
