@@ -36,6 +36,7 @@
 #include "contain/core/parallel.h"
 #include "contain/core/result.h"
 #include "contain/distance/closest.h"
+#include "contain/distance/convex_distance.h"
 #include "contain/distance/mesh_distance.h"
 #include "contain/distance/mesh_pair_distance.h"
 #include "contain/distance/point_primitive.h"

@@ -18,20 +18,6 @@ double clamp01(double x) {
   return x > 0 ? (x < 1 ? x : 1.0) : 0.0;  // NaN -> 0
 }
 
-// (v - y) . w with its rounding error bound subtracted (lower) or added (upper).
-template <class V>
-double separation(V v, V y, V w, double sign) {
-  const V d = v - y;
-  const double s = dot(d, w);
-  double perm = 0;
-  if constexpr (requires { d.z; }) {
-    perm = (std::fabs(d.x * w.x) + std::fabs(d.y * w.y)) + std::fabs(d.z * w.z);
-  } else {
-    perm = std::fabs(d.x * w.x) + std::fabs(d.y * w.y);
-  }
-  return s - sign * 8 * kEps * perm;
-}
-
 template <class V, std::size_t N>
 void bounds_from_points(const std::array<V, N>& sa, const std::array<V, N>& sb, V x, V y,
                         double slack, double& lo, double& hi) {
@@ -41,18 +27,22 @@ void bounds_from_points(const std::array<V, N>& sa, const std::array<V, N>& sb, 
   if (!std::isfinite(hi)) hi = kInf;
   double amin = kInf, bmax = -kInf;
   for (const V& v : sa)
-    amin = std::min(amin, separation(v, y, w, 1.0));
+    amin = std::min(amin, separation_bound(v, y, w, 1.0));
   for (const V& u : sb)
-    bmax = std::max(bmax, separation(u, y, w, -1.0));
-  const double l = (amin - bmax) * (1 - 2 * kEps);  // the subtraction's rounding
-  lo = 0.0;
-  if (l > 0 && ww >= 0x1p-900 && std::isfinite(ww)) {
-    const double r = l / ww;
-    if (r >= 0x1p-1000 && std::isfinite(r)) lo = l * r * (1 - 8 * kEps);
-  }
+    bmax = std::max(bmax, separation_bound(u, y, w, -1.0));
+  lo = squared_separation_lower(amin - bmax, ww);
 }
 
 }  // namespace
+
+double squared_separation_lower(double gap, double ww) {
+  const double l = gap * (1 - 2 * kEps);  // the subtraction that made the gap
+  if (!(l > 0 && ww >= 0x1p-900 && std::isfinite(ww))) return 0.0;
+  const double r = l / ww;
+  // l^2 / ww with three roundings (quotient, product, the factor); ww's own rounding (3 eps)
+  // is inside the 8 eps too.
+  return r >= 0x1p-1000 && std::isfinite(r) ? l * r * (1 - 8 * kEps) : 0.0;
+}
 
 void approximate_closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Vec3& c1, Vec3& c2) {
   const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
