@@ -45,6 +45,11 @@ class SvgCanvas {
               const LocationColours& colours = {});
   /// Draws points as dots in one colour.
   void points(std::span<const Vec2> points, std::string_view colour, double radius_px);
+  /// Draws a grid of `columns` x `rows` equal cells filling `area`, cell (i, j) (column i from
+  /// area.min.x, row j from area.min.y) in colours[j * columns + i]; an empty colour leaves the
+  /// cell blank. Runs of equal colours along a row become one rectangle, so a colour map with a
+  /// few dozen levels stays small. Fewer colours than cells: the rest are blank.
+  void cells(const Box2& area, int columns, int rows, std::span<const std::string> colours);
   /// Writes a caption at the top left.
   void title(std::string_view text);
   /// Adds a legend entry (a swatch and its label) at the top right, in call order.
