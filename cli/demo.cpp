@@ -61,9 +61,10 @@ int run_demo(const DemoOptions& o) {
   fmt::print("contain demo: built-in scenes, exact answers\n\n");
   using Scene = Status (*)(const demo::Context&);
   const Scene scenes[] = {
-      demo::polygon_scene, demo::csg_scene,       demo::mesh_scene,
-      demo::collide_scene, demo::segment_scene,   demo::sutherland_hodgman_scene,
-      demo::boolean_scene, demo::mesh_clip_scene, demo::bound_scene};
+      demo::polygon_scene,        demo::csg_scene,       demo::mesh_scene,
+      demo::collide_scene,        demo::segment_scene,   demo::sutherland_hodgman_scene,
+      demo::boolean_scene,        demo::mesh_clip_scene, demo::bound_scene,
+      demo::distance_slice_scene, demo::clearance_scene};
   for (Scene scene : scenes) {
     const Status status = scene(context);
     if (!status) return report(status.error());
