@@ -1,5 +1,5 @@
 #pragma once
-// The uniform grid of candidate pairs of a noding round (boolean_noding.cpp). Private to the
+// The uniform grid of candidate pairs of a noding round (noding.cpp). Private to the
 // polygon booleans.
 
 #include <algorithm>
