@@ -14,6 +14,7 @@
 #include <numeric>
 #include <optional>
 
+#include "clip/box_cut.h"
 #include "clip/convex_functions.h"
 #include "clip/ring_clip.h"
 #include "contain/clip/box_halfspaces.h"
@@ -311,6 +312,7 @@ MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane>
 MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
                           const PolygonClipOptions& options) {
   if (box.empty()) return {};
+  if (options.output == PolygonClipOutput::pieces) return detail::clip_by_box(region, box);
   const auto planes = box_halfspaces(box);
   return clip_polygon(region, planes, options);
 }

@@ -32,7 +32,7 @@ TEST(ClipPolygonCli, BoxAndRepeatedHalfspacesAndEmptyResult) {
       dir.write("f.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 8 2, 2 2))");
   CliRun run = run_contain({"clip", "--polygon", file, "--box", "1,1,9,9"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_EQ(run.out, "POLYGON ((1 9, 1 1, 9 1, 9 9, 1 9), (2 2, 2 8, 8 8, 8 2, 2 2))\n");
+  EXPECT_EQ(run.out, "POLYGON ((1 1, 9 1, 9 9, 1 9, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2))\n");
   run = run_contain({"clip", "--polygon", file, "--halfspace=1,0,-1", "--halfspace=-1,0,9",
                      "--halfspace=0,1,-1", "--halfspace=0,-1,9"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
