@@ -32,9 +32,9 @@ int v_before_h(Vec2 p, Vec2 q, double x, double y) {
   return s_yv == s_p ? -1 : 1;
 }
 
-// Orientation of a ring at its lowest vertex (convex there): 1 counter-clockwise, 0 clockwise,
-// -1 when the lowest vertex is a spike (zero turn; not OGC-valid).
-int orientation(std::span<const Vec2> ring) {
+}  // namespace
+
+int ring_orientation(std::span<const Vec2> ring) {
   const std::size_t n = ring.size();
   std::size_t m = 0;
   for (std::size_t i = 1; i < n; ++i) {
@@ -49,6 +49,8 @@ int orientation(std::span<const Vec2> ring) {
   return s == Sign::positive ? 1 : (s == Sign::negative ? 0 : -1);
 }
 
+namespace {
+
 // w in the closed triangle u v z (any orientation; a degenerate triangle holds the points of its
 // line: callers check the box of the points first).
 bool in_triangle(Vec2 u, Vec2 v, Vec2 z, Vec2 w) {
@@ -60,17 +62,22 @@ bool in_triangle(Vec2 u, Vec2 v, Vec2 z, Vec2 w) {
 
 }  // namespace
 
-BoxCut::BoxCut(const Box2& box)
-    : x0_(box.min.x),
-      y0_(box.min.y),
-      x1_(box.max.x),
-      y1_(box.max.y),
-      cx_(0.5 * box.min.x + 0.5 * box.max.x),
-      cy_(0.5 * box.min.y + 0.5 * box.max.y) {
+BoxCut::BoxCut(const Box2& box) {
+  set_box(box);
+}
+
+void BoxCut::set_box(const Box2& box) {
+  x0_ = box.min.x;
+  y0_ = box.min.y;
+  x1_ = box.max.x;
+  y1_ = box.max.y;
+  cx_ = 0.5 * box.min.x + 0.5 * box.max.x;
+  cy_ = 0.5 * box.min.y + 0.5 * box.max.y;
   corner_[0] = {x0_, y0_};
   corner_[1] = {x1_, y0_};
   corner_[2] = {x1_, y1_};
   corner_[3] = {x0_, y1_};
+  reset();
 }
 
 void BoxCut::scan(std::span<const Vec2> ring, std::vector<std::uint32_t>& active,
@@ -266,26 +273,40 @@ void BoxCut::add_end(Vec2 p, double err, std::uint32_t chain, bool exit) {
   all_ends_.push_back(e);
 }
 
-void BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active,
-                      bool parity, bool hole, int ccw) {
+bool BoxCut::active_parity(std::span<const Vec2> ring,
+                           std::span<const std::uint32_t> active) const {
   const std::size_t n = ring.size();
-  if (!ok_ || n < 3) return;
+  bool odd = false;
+  const Vec2 c{cx_, cy_};
+  for (const std::uint32_t e : active) {
+    const Vec2 p = ring[e], q = ring[e + 1 < n ? e + 1 : 0];
+    if ((p.y > cy_) == (q.y > cy_)) continue;
+    const Vec2 lo = p.y < q.y ? p : q, hi = p.y < q.y ? q : p;
+    if (orient2d(lo, hi, c) == Sign::positive) odd = !odd;
+  }
+  return odd;
+}
+
+bool BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active, bool hole,
+                      int ccw) {
+  const std::size_t n = ring.size();
+  if (!ok_ || n < 3) return true;  // fewer than 3 points enclose nothing
   pieces_.clear();
   for (const std::uint32_t e : active) {
     const Vec2 p = ring[e], q = ring[e + 1 < n ? e + 1 : 0];
     if (p == q) continue;
     Piece piece;
     if (!cut_edge(p, q, code(p), code(q), piece)) {
-      if (!ok_) return;
+      if (!ok_) return true;
       continue;
     }
     piece.edge = e;
     pieces_.push_back(piece);
   }
-  if (!pieces_.empty() && ccw < 0) ccw = orientation(ring);
+  if (!pieces_.empty() && ccw < 0) ccw = ring_orientation(ring);
   if (!pieces_.empty() && ccw < 0) {
     ok_ = false;
-    return;
+    return true;
   }
   // Shells counter-clockwise and holes clockwise leave the region on the left of every edge.
   const bool reversed = !pieces_.empty() && (ccw == 1) == hole;
@@ -308,20 +329,7 @@ void BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t>
     pieces_[m++] = piece;
   }
   pieces_.resize(m);
-  if (m == 0) {
-    // The ring does not reach into the box: it counts for the centre's parity. Its active
-    // edges cross the ray exactly where orient2d says (the centre lies on none of them).
-    bool odd = parity;
-    const Vec2 c{cx_, cy_};
-    for (const std::uint32_t e : active) {
-      const Vec2 p = ring[e], q = ring[e + 1 < n ? e + 1 : 0];
-      if ((p.y > cy_) == (q.y > cy_)) continue;
-      const Vec2 lo = p.y < q.y ? p : q, hi = p.y < q.y ? q : p;
-      if (orient2d(lo, hi, c) == Sign::positive) odd = !odd;
-    }
-    parity_ = parity_ != odd;
-    return;
-  }
+  if (m == 0) return false;  // the ring counts for the centre's parity only
   // Pieces i and i + 1 are linked when they meet at a vertex of the ring (zero-length edges
   // between them aside).
   auto linked = [&](const Piece& u, const Piece& v) {
@@ -347,7 +355,7 @@ void BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t>
         const int turn = to_int(orient2d(u.p, t, v.q));
         if ((reversed ? -turn : turn) <= 0) {
           ok_ = false;
-          return;
+          return true;
         }
       }
     }
@@ -367,7 +375,7 @@ void BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t>
       closed_points_.push_back(piece.a);
     if (reversed) std::reverse(closed_points_.begin() + first, closed_points_.end());
     closed_.push_back({first, static_cast<std::uint32_t>(closed_points_.size()), hole});
-    return;
+    return true;
   }
   std::size_t s = 0;
   while (link[(s + m - 1) % m])
@@ -395,6 +403,7 @@ void BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t>
       add_end(points_.back(), exit_err, chain, true);
     }
   }
+  return true;
 }
 
 Ring BoxCut::box_ring() const {
@@ -627,9 +636,12 @@ MultiPolygon clip_by_box(const MultiPolygon& region, const Box2& given) {
   for (const Polygon& polygon : region.polygons) {
     cut.begin_polygon();
     for (std::size_t r = 0; r < polygon.rings.size() && cut.ok(); ++r) {
+      const Ring& ring = polygon.rings[r];
       bool parity = false;
-      cut.scan(polygon.rings[r], active, parity);
-      cut.add_ring(polygon.rings[r], active, parity, r > 0, -1);
+      cut.scan(ring, active, parity);
+      if (!cut.add_ring(ring, active, r > 0, -1)) {
+        cut.add_parity(parity != cut.active_parity(ring, active));
+      }
     }
     cut.end_polygon();
     if (!cut.ok()) break;

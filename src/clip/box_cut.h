@@ -39,6 +39,8 @@ class BoxCut {
  public:
   /// `box`: finite, min < max on both axes.
   explicit BoxCut(const Box2& box);
+  /// Starts over with another box (keeps the buffers).
+  void set_box(const Box2& box);
 
   [[nodiscard]] unsigned code(Vec2 p) const {
     return (p.x < x0_ ? kLeft : 0u) | (p.x > x1_ ? kRight : 0u) | (p.y < y0_ ? kBelow : 0u) |
@@ -53,11 +55,20 @@ class BoxCut {
   /// Starts a new region (clears everything, keeps the buffers).
   void reset();
   void begin_polygon();
-  /// A ring of the current polygon: the shell (hole false) or a hole; `active` as from scan (any
-  /// superset of the edges that reach the box, in ring order); `parity` of the others;
-  /// `ccw`: its orientation when known (1 counter-clockwise, 0 clockwise), -1 to compute it.
-  void add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active, bool parity,
-                bool hole, int ccw);
+  /// A ring of the current polygon: the shell (hole false) or a hole; `active`: every edge of
+  /// the ring that is not strictly outside one side, in ring order (as from scan); `ccw`: its
+  /// orientation when known (1 counter-clockwise, 0 clockwise), -1 to compute it. False when the
+  /// ring does not reach into the box: then the caller gives its parity (add_parity).
+  bool add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active, bool hole,
+                int ccw);
+  /// The parity of the crossings of the +x ray from the box's centre with a ring that does not
+  /// reach into the box (whether the centre is inside it).
+  void add_parity(bool odd) { parity_ = parity_ != odd; }
+  /// The parity of the crossings of that ray with the `active` edges of a ring that does not
+  /// reach into the box (exact: the centre lies on none of them).
+  [[nodiscard]] bool active_parity(std::span<const Vec2> ring,
+                                   std::span<const std::uint32_t> active) const;
+  [[nodiscard]] Vec2 centre() const { return {cx_, cy_}; }
   void end_polygon();
 
   /// False when a decision was left to the boolean engine (see the file comment).
@@ -143,6 +154,10 @@ class BoxCut {
   std::vector<Vec2> vertices_;  // input vertices in the box
   MultiPolygon out_;
 };
+
+/// Orientation of a ring at its lowest vertex (convex there): 1 counter-clockwise, 0 clockwise,
+/// -1 when the lowest vertex is a spike (zero turn; not OGC-valid). Exact.
+[[nodiscard]] int ring_orientation(std::span<const Vec2> ring);
 
 /// The region clipped by the box: the one-pass cut, or the boolean engine where the cut gives
 /// up. Valid output (OGC) for OGC-valid input.

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "clip/boolean_checks.h"
+#include "contain/clip/box_clipper.h"
 #include "contain/clip/clip_polygon.h"
 #include "contain/clip/polygon_boolean.h"
 #include "scenes/scenes.h"
@@ -184,6 +185,69 @@ TEST(BoxClip, TouchingPolygonsOfAMultiPolygon) {
                           Box2{{0.25, -1}, {1, 1}}}) {
     ASSERT_TRUE(same_region(checker, box, true)) << box.min.x << " " << box.min.y;
   }
+}
+
+}  // namespace
+}  // namespace contain::test
+
+namespace contain::test {
+namespace {
+
+TEST(BoxClipper, PreparedRegionGivesClipPolygonsResultBitForBit) {
+  const Polygon demo = scenes::demo_polygon();
+  const MultiPolygon region{{demo, Polygon{{scenes::star_ring(300, {5, 5}, 0.5, 2.0, 3)}}}};
+  const clip::BoxClipper prepared(region);
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-3, 8), s(0.01, 4);
+  for (int t = 0; t < 800; ++t) {
+    const double x = u(rng), y = u(rng), w = s(rng), h = s(rng);
+    const Box2 box{{x, y}, {x + w, y + h}};
+    ASSERT_EQ(prepared.clip(box), clip::clip_polygon(region, box)) << t;
+  }
+  // Lattice boxes: vertices on the sides, fallbacks to the engine.
+  const Polygon frame{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {4, 2}, {6, 2}}}};
+  const clip::BoxClipper lattice(MultiPolygon{{frame}});
+  for (int x0 = -1; x0 <= 10; ++x0) {
+    for (int y0 = -1; y0 <= 10; ++y0) {
+      const Box2 box{{double(x0), double(y0)}, {x0 + 3.0, y0 + 2.0}};
+      ASSERT_EQ(lattice.clip(box), clip::clip_polygon(MultiPolygon{{frame}}, box));
+    }
+  }
+}
+
+TEST(BoxClipper, BoxesInsideOrOutsideWithoutAnyEdgeUseTheRayParity) {
+  // A ring with a hole: boxes wholly in the hole, in the material, outside.
+  const Polygon ring{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 3}, {3, 7}, {7, 7}, {7, 3}}}};
+  const clip::BoxClipper prepared(MultiPolygon{{ring}});
+  EXPECT_TRUE(prepared.clip(Box2{{4, 4}, {6, 6}}).polygons.empty());
+  EXPECT_TRUE(prepared.clip(Box2{{11, 4}, {12, 6}}).polygons.empty());
+  const MultiPolygon solid = prepared.clip(Box2{{1, 1}, {2, 9}});
+  ASSERT_EQ(solid.polygons.size(), 1u);
+  EXPECT_EQ(exact_signed_area(solid), 8);
+}
+
+TEST(Tile, GridTilesCoverTheRegionAndEqualClipPolygonPerTile) {
+  const MultiPolygon region{{scenes::demo_polygon()}};
+  const Box2 bounds = bounding_box(region.all_rings());
+  const clip::TileGrid grid{.bounds = bounds, .columns = 7, .rows = 5};
+  const std::vector<MultiPolygon> tiles = clip::tile(region, grid, {.threads = 3});
+  ASSERT_EQ(tiles.size(), 35u);
+  mpq_class sum = 0;
+  for (int row = 0; row < 5; ++row) {
+    for (int column = 0; column < 7; ++column) {
+      const MultiPolygon& t = tiles[static_cast<std::size_t>(row * 7 + column)];
+      ASSERT_TRUE(is_valid_ogc(t));
+      EXPECT_EQ(t, clip::clip_polygon(region, grid.tile(column, row)));
+      sum += exact_signed_area(t);
+    }
+  }
+  // The tiles partition the region up to the rounding of crossing points.
+  EXPECT_NEAR(sum.get_d(), exact_signed_area(region).get_d(), 1e-12);
+  EXPECT_EQ(clip::tile(region, grid, {.threads = 1}), tiles);
+  // Neighbours share their sides exactly; the last side is the bounds' side.
+  EXPECT_EQ(grid.tile(2, 1).max.x, grid.tile(3, 1).min.x);
+  EXPECT_EQ(grid.tile(6, 4).max, bounds.max);
+  EXPECT_TRUE(clip::tile(region, {.bounds = bounds, .columns = 0, .rows = 3}).empty());
 }
 
 }  // namespace
