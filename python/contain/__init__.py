@@ -24,6 +24,7 @@ once per worker process. See docs/python.md and docs/scale.md.
 """
 
 from ._contain import (
+    BoxClipper,
     Contact,
     ContainError,
     ContainIOError,
@@ -36,6 +37,7 @@ from ._contain import (
     aabb,
     bounding_circle,
     bounding_sphere,
+    clip_polygon,
     clip_segments,
     collide,
     format_mesh,
@@ -46,12 +48,14 @@ from ._contain import (
     polygon_boolean,
     read_mesh,
     read_region,
+    tile,
     write_mesh,
     write_wkt,
 )
 from ._contain import __version__
 
 __all__ = [
+    "BoxClipper",
     "Contact",
     "ContainError",
     "ContainIOError",
@@ -64,6 +68,7 @@ __all__ = [
     "aabb",
     "bounding_circle",
     "bounding_sphere",
+    "clip_polygon",
     "clip_segments",
     "collide",
     "format_mesh",
@@ -74,6 +79,7 @@ __all__ = [
     "polygon_boolean",
     "read_mesh",
     "read_region",
+    "tile",
     "write_mesh",
     "write_wkt",
 ]

@@ -2,7 +2,7 @@
 
 import enum
 import os
-from typing import Literal, Optional, Sequence, Tuple, Union, overload
+from typing import List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -114,6 +114,19 @@ class PolygonIndex:
     @property
     def stats(self) -> dict[str, int]: ...
 
+class BoxClipper:
+    """A region prepared for clipping by many boxes (map tiles, viewports)."""
+
+    def __init__(self, region: _RegionLike) -> None: ...
+    def clip(self, box: Tuple[npt.ArrayLike, npt.ArrayLike]) -> Region: ...
+    def tile(self, columns: int, rows: int, *,
+             bounds: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
+             threads: int = 0) -> List[List[Region]]: ...
+    @property
+    def bounds(self) -> Tuple[_Float64Array, _Float64Array]: ...
+    @property
+    def region(self) -> Region: ...
+
 class Contact:
     """The answer of a collision query with its witness."""
 
@@ -172,6 +185,17 @@ def polygon_boolean(a: str, b: str, op: _Op = "intersection", *,
 @overload
 def polygon_boolean(a: _RegionLike, b: _RegionLike, op: _Op = "intersection", *,
                     fill: _Fill = "even_odd") -> Region: ...
+@overload
+def clip_polygon(region: str, *, box: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
+                 halfspace: Optional[npt.ArrayLike] = None,
+                 convex: Optional[npt.ArrayLike] = None, keep_bridges: bool = False) -> str: ...
+@overload
+def clip_polygon(region: _RegionLike, *, box: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
+                 halfspace: Optional[npt.ArrayLike] = None,
+                 convex: Optional[npt.ArrayLike] = None, keep_bridges: bool = False) -> Region: ...
+def tile(region: _RegionLike, columns: int, rows: int, *,
+         bounds: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
+         threads: int = 0) -> List[List[Region]]: ...
 @overload
 def aabb(shape: Union[Mesh, Region, str]) -> Tuple[_Float64Array, _Float64Array]: ...
 @overload

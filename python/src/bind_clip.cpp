@@ -1,7 +1,9 @@
-// contain.clip_segments (the batch segment clippers) and contain.polygon_boolean.
+// contain.clip_segments (the batch segment clippers), contain.polygon_boolean, contain.clip_polygon
+// (Sutherland-Hodgman into valid pieces), contain.BoxClipper and contain.tile (many boxes).
 
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
@@ -10,6 +12,8 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/clip/box_clipper.h"
+#include "contain/clip/clip_polygon.h"
 #include "contain/clip/clip_segments.h"
 #include "contain/clip/polygon_boolean.h"
 #include "contain/io/wkt.h"
@@ -162,6 +166,49 @@ py::tuple clip2(const Doubles& array, const py::handle& box, const py::handle& h
   });
 }
 
+// box=(min, max) in 2D, min at or below max on both axes.
+Box2 box_of(const py::handle& box) {
+  const py::sequence pair = box.cast<py::sequence>();
+  if (pair.size() != 2) throw py::value_error("box must be (min, max)");
+  const Doubles lo = as_vector(pair[0], 2, "box min"), hi = as_vector(pair[1], 2, "box max");
+  const Box2 b{{lo.at(0), lo.at(1)}, {hi.at(0), hi.at(1)}};
+  if (std::isnan(b.min.x) || std::isnan(b.min.y) || std::isnan(b.max.x) || std::isnan(b.max.y)) {
+    throw py::value_error("box holds NaN");
+  }
+  if (b.min.x > b.max.x || b.min.y > b.max.y) {
+    throw py::value_error("box: the min corner is above the max corner; give (min, max)");
+  }
+  return b;
+}
+
+// The result as the caller gave the region: WKT for WKT, else a Region.
+py::object region_result(const RegionLike& given, MultiPolygon result) {
+  if (py::isinstance<py::str>(given.object)) return py::str(io::write_wkt(result));
+  return py::cast(std::move(result));
+}
+
+py::list tiles_to_lists(std::vector<MultiPolygon> tiles, const clip::TileGrid& grid) {
+  py::list rows;
+  for (int row = 0; row < grid.rows; ++row) {
+    py::list columns;
+    for (int column = 0; column < grid.columns; ++column)
+      columns.append(
+          py::cast(std::move(tiles[static_cast<std::size_t>(row) * grid.columns + column])));
+    rows.append(columns);
+  }
+  return rows;
+}
+
+clip::TileGrid grid_of(int columns, int rows, const py::object& bounds, const Box2& fallback) {
+  if (columns < 1 || rows < 1) throw py::value_error("columns and rows must be at least 1");
+  clip::TileGrid grid{
+      .bounds = bounds.is_none() ? fallback : box_of(bounds), .columns = columns, .rows = rows};
+  if (grid.bounds.empty()) {
+    throw py::value_error("the region is empty: give the grid's bounds=(min, max)");
+  }
+  return grid;
+}
+
 }  // namespace
 
 void bind_clip(py::module_& m) {
@@ -227,6 +274,148 @@ gives the OGC meaning for valid polygons; 'nonzero', 'positive', 'negative' as C
 Returns OGC-valid polygons (shells counter-clockwise, holes clockwise) as a Region, or as WKT
 when both a and b are WKT strings. Every topological decision is exact; input vertices are
 kept bit for bit, crossing points are rounded (docs/clipping.md). Runs without the GIL.
+)doc");
+
+  m.def(
+      "clip_polygon",
+      [](const RegionLike& region, const py::object& box, const py::object& halfspace,
+         const py::object& convex, bool keep_bridges) -> py::object {
+        const MultiPolygon r = to_region(region.object, "region");
+        const int given = !box.is_none() + !halfspace.is_none() + !convex.is_none();
+        if (given != 1) {
+          throw py::value_error("clip_polygon: give exactly one of box=, halfspace=, convex=");
+        }
+        const clip::PolygonClipOptions options{.output = keep_bridges
+                                                             ? clip::PolygonClipOutput::bridged
+                                                             : clip::PolygonClipOutput::pieces};
+        MultiPolygon result;
+        if (!box.is_none()) {
+          const Box2 b = box_of(box);
+          py::gil_scoped_release release;
+          result = clip::clip_polygon(r, b, options);
+        } else if (!halfspace.is_none()) {
+          const py::array array = py::array::ensure(halfspace);
+          const bool one = array && array.ndim() == 1;
+          const Doubles rows = one ? as_vector(halfspace, 3, "halfspace")
+                                   : as_matrix(halfspace, 3, "halfspace planes");
+          require_finite(rows, "halfspace", 1);
+          std::vector<HalfPlane> planes;
+          const std::size_t count = one ? 1 : static_cast<std::size_t>(rows.shape(0));
+          for (std::size_t i = 0; i < count; ++i) {
+            const double* c = rows.data() + 3 * i;
+            planes.push_back({c[0], c[1], c[2]});
+          }
+          py::gil_scoped_release release;
+          result = clip::clip_polygon(r, planes, options);
+        } else {
+          const Doubles ring_points = as_matrix(convex, 2, "convex ring");
+          require_finite(ring_points, "convex ring", 1);
+          const auto span = as_vec2(ring_points);
+          const Ring ring(span.begin(), span.end());
+          if (ring.size() < 3) fail(ErrorKind::degenerate, "convex ring needs at least 3 points");
+          py::gil_scoped_release release;
+          result = clip::clip_polygon(r, ring, options);
+        }
+        return region_result(region, std::move(result));
+      },
+      "region"_a, py::kw_only(), "box"_a = py::none(), "halfspace"_a = py::none(),
+      "convex"_a = py::none(), "keep_bridges"_a = false, R"doc(
+The part of a region inside a convex region (Sutherland-Hodgman), as valid pieces.
+
+region: Region, WKT string, or sequence of (K, 2) rings (OGC polygons: shell, then holes).
+Exactly one region to clip by:
+  box=(min, max)          a closed box: one pass with outcodes, exact decisions
+  halfspace=(a, b, c)     a x + b y + c >= 0; or an (M, 3) array of several (their intersection)
+  convex=ring             a convex (K, 2) ring, either direction
+Returns OGC-valid polygons (shells counter-clockwise, holes clockwise): a hole whose edge lies
+on the boundary becomes a notch of the shell. keep_bridges=True returns instead the section's
+one ring per input ring with its degenerate bridging edges. WKT in gives WKT out. Runs without
+the GIL. Many boxes against one region: contain.BoxClipper, contain.tile.
+)doc");
+
+  py::class_<clip::BoxClipper>(m, "BoxClipper", R"doc(
+A region prepared for clipping by many boxes (map tiles, viewports).
+
+BoxClipper(region) indexes each ring's edge ranges once; clip(box) then reads only the edges
+near the box and gives exactly clip_polygon(region, box=box), bit for bit; tile(columns, rows)
+cuts a grid of boxes on every core. Thread-safe; clip and tile release the GIL.
+
+Example:
+    >>> parcel = contain.BoxClipper("POLYGON ((0 0, 10 0, 10 10, 0 10), (2 3, 2 6, 4 6, 4 3))")
+    >>> parcel.clip(([0, 0], [4, 10])).area
+    34.0
+)doc")
+      .def(py::init([](const RegionLike& region) {
+             MultiPolygon polygons = to_region(region.object, "region");
+             py::gil_scoped_release release;
+             return clip::BoxClipper(std::move(polygons));
+           }),
+           "region"_a, "Prepares a region (Region, WKT string or sequence of rings).")
+      .def(
+          "clip",
+          [](const clip::BoxClipper& clipper, const py::object& box) {
+            const Box2 b = box_of(box);
+            py::gil_scoped_release release;
+            return clipper.clip(b);
+          },
+          "box"_a, "The region inside the closed box=(min, max), as a Region of valid polygons.")
+      .def(
+          "tile",
+          [](const clip::BoxClipper& clipper, int columns, int rows, const py::object& bounds,
+             int threads) {
+            const clip::TileGrid grid = grid_of(columns, rows, bounds, clipper.bounds());
+            std::vector<MultiPolygon> tiles;
+            {
+              py::gil_scoped_release release;
+              tiles = clip::tile(clipper, grid, {.threads = threads});
+            }
+            return tiles_to_lists(std::move(tiles), grid);
+          },
+          "columns"_a, "rows"_a, py::kw_only(), "bounds"_a = py::none(), "threads"_a = 0,
+          "The region cut into a grid of columns x rows tiles over bounds=(min, max) (default:\n"
+          "the region's bounding box): a list of rows (row 0 at the least y), each a list of\n"
+          "Regions by column. Neighbouring tiles share their side exactly. threads=0: every core.")
+      .def_property_readonly(
+          "bounds",
+          [](const clip::BoxClipper& clipper) {
+            const Box2& b = clipper.bounds();
+            return py::make_tuple(py::array_t<double>(2, &b.min.x),
+                                  py::array_t<double>(2, &b.max.x));
+          },
+          "(min, max): the bounding box of the region's vertices.")
+      .def_property_readonly(
+          "region", [](const clip::BoxClipper& clipper) { return clipper.region(); },
+          "The prepared region (a copy).")
+      .def("__repr__", [](const clip::BoxClipper& clipper) {
+        std::size_t rings = 0;
+        for (const Polygon& p : clipper.region().polygons)
+          rings += p.rings.size();
+        return "contain.BoxClipper(" + std::to_string(clipper.region().polygons.size()) +
+               " polygons, " + std::to_string(rings) + " rings)";
+      });
+
+  m.def(
+      "tile",
+      [](const RegionLike& region, int columns, int rows, const py::object& bounds, int threads) {
+        MultiPolygon polygons = to_region(region.object, "region");
+        const clip::TileGrid grid =
+            grid_of(columns, rows, bounds, bounding_box(polygons.all_rings()));
+        std::vector<MultiPolygon> tiles;
+        {
+          py::gil_scoped_release release;
+          tiles = clip::tile(polygons, grid, {.threads = threads});
+        }
+        return tiles_to_lists(std::move(tiles), grid);
+      },
+      "region"_a, "columns"_a, "rows"_a, py::kw_only(), "bounds"_a = py::none(), "threads"_a = 0,
+      R"doc(
+A region cut into a grid of boxes (map tiles) on every core.
+
+region: Region, WKT string, or sequence of rings. The grid has `columns` x `rows` tiles over
+bounds=(min, max) (default: the region's bounding box); neighbouring tiles share their side
+exactly. Returns a list of rows (row 0 at the least y), each a list of Regions by column: tile
+(column, row) is clip_polygon(region, box=that tile). threads=0: every core; the results do not
+depend on the thread count. For several grids of one region, prepare it once: BoxClipper.
 )doc");
 }
 
