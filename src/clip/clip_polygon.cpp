@@ -157,6 +157,20 @@ void cut_ring(const Ring& ring, const std::vector<Sign>& side, const F& f,
   }
 }
 
+// Whether the region left of the edge p -> q, which lies on f's line, is outside the half-plane:
+// the edge runs against the line's direction (inside on the left). Exact: the edge is parallel
+// to the line, so the sign of one coordinate difference decides.
+bool faces_out(const detail::LineFunction& f, Vec2 p, Vec2 q) {
+  // The line's direction with the inside on its left is (b, -a).
+  const double b = f.line.b, a = f.line.a;
+  if (b != 0.0) return (q.x > p.x) != (b > 0.0);
+  return (q.y > p.y) != (-a > 0.0);
+}
+bool faces_out(const detail::EdgeFunction& f, Vec2 p, Vec2 q) {
+  if (f.q.x != f.p.x) return (q.x > p.x) != (f.q.x > f.p.x);
+  return (q.y > p.y) != (f.q.y > f.p.y);
+}
+
 template <class F>
 std::vector<Polygon> split(const Polygon& polygon, const F& f) {
   std::vector<Chain> chains;
@@ -171,6 +185,31 @@ std::vector<Polygon> split(const Polygon& polygon, const F& f) {
       side[i] = f.side(ring[i]);
       any_in |= side[i] == Sign::positive;
       any_out |= side[i] == Sign::negative;
+    }
+    // An edge on the line with the region outside the half-plane beside it bounds nothing that
+    // is kept: a point strictly outside is put between its ends, so the ring is cut there and a
+    // hole whose edge lies on the line becomes a notch of the shell (never a hole touching it
+    // along the edge). The point is never used for a crossing: its neighbours lie on the line.
+    bool along_out = false;
+    for (std::size_t i = 0; i < ring.size() && !along_out; ++i) {
+      const std::size_t j = (i + 1) % ring.size();
+      along_out = side[i] == Sign::zero && side[j] == Sign::zero && faces_out(f, ring[i], ring[j]);
+    }
+    if (along_out) {
+      Ring cut;
+      std::vector<Sign> cut_side;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::size_t j = (i + 1) % ring.size();
+        cut.push_back(ring[i]);
+        cut_side.push_back(side[i]);
+        if (side[i] == Sign::zero && side[j] == Sign::zero && faces_out(f, ring[i], ring[j])) {
+          cut.push_back(ring[i]);
+          cut_side.push_back(Sign::negative);
+        }
+      }
+      ring = std::move(cut);
+      side = std::move(cut_side);
+      any_out = true;
     }
     if (!any_in) continue;
     if (!any_out) {

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <random>
 
+#include "clip/boolean_checks.h"
 #include "clip/polygon_checks.h"
 #include "contain/clip/clip_polygon.h"
+#include "contain/clip/polygon_boolean.h"
 #include "contain/clip/sutherland_hodgman.h"
 #include "scenes/scenes.h"
 
@@ -95,6 +97,45 @@ TEST(ClipPolygon, DemoPolygonWithHolesByAConvexRing) {
   MultiPolygon bridged =
       clip::clip_polygon(of(demo), window, {.output = clip::PolygonClipOutput::bridged});
   EXPECT_NEAR(area(r), area(bridged), 1e-12);
+}
+
+// The class of issue 13's instance on half-planes and convex rings: a hole edge on the line.
+// Inside the half-plane it becomes a notch of the shell; outside, the shell runs along it.
+// Every result is valid (exact check) with the area the boolean engine gives for the same
+// region written as a polygon whose edge lies on the line.
+TEST(ClipPolygon, HoleEdgeOnAHalfPlaneLineOrConvexEdgeBecomesANotch) {
+  const Polygon frame{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                       {{2, 3}, {2, 6}, {4, 6}, {4, 3}},
+                       {{7, 9}, {9, 7}, {7, 7}}}};  // the triangle's long edge lies on x + y = 16
+  struct Case {
+    HalfPlane h;
+    Ring as_polygon;  // the half-plane within [-100, 120]^2, corners exactly on its line
+  };
+  const Case cases[] = {
+      {{-1, 0, 4}, {{-100, -100}, {4, -100}, {4, 110}, {-100, 110}}},  // x <= 4
+      {{1, 0, -4}, {{4, -100}, {110, -100}, {110, 110}, {4, 110}}},    // x >= 4
+      {{1, 0, -2}, {{2, -100}, {110, -100}, {110, 110}, {2, 110}}},    // x >= 2
+      {{0, 1, -3}, {{-100, 3}, {110, 3}, {110, 110}, {-100, 110}}},    // y >= 3
+      {{0, -1, 6}, {{-100, -100}, {110, -100}, {110, 6}, {-100, 6}}},  // y <= 6
+      {{0, -1, 3}, {{-100, -100}, {110, -100}, {110, 3}, {-100, 3}}},  // y <= 3
+      {{-1, -1, 8}, {{-100, -100}, {108, -100}, {-100, 108}}},         // x + y <= 8
+      {{1, 1, -8}, {{108, -100}, {110, -100}, {110, 110}, {-100, 110}, {-100, 108}}}};
+  for (const Case& c : cases) {
+    const std::vector<HalfPlane> planes{c.h};
+    const MultiPolygon r = clip::clip_polygon(of(frame), planes);
+    ASSERT_TRUE(is_valid_ogc(r)) << c.h.a << " " << c.h.b << " " << c.h.c;
+    const MultiPolygon engine = clip::polygon_boolean(frame.rings, std::vector<Ring>{c.as_polygon},
+                                                      {.op = clip::Op::intersection});
+    EXPECT_EQ(exact_signed_area(r), exact_signed_area(engine)) << c.h.a << " " << c.h.c;
+    // The convex ring of the same region gives the same pieces' area and validity.
+    const MultiPolygon by_ring = clip::clip_polygon(of(frame), c.as_polygon);
+    ASSERT_TRUE(is_valid_ogc(by_ring)) << c.h.a << " " << c.h.c;
+    EXPECT_EQ(exact_signed_area(by_ring), exact_signed_area(engine));
+  }
+  // The instance: x <= 4 keeps the square hole as a notch, no hole touching the shell.
+  const MultiPolygon notch = clip::clip_polygon(of(frame), std::vector<HalfPlane>{{-1, 0, 4}});
+  ASSERT_EQ(notch.polygons.size(), 1u);
+  EXPECT_EQ(notch.polygons[0].rings.size(), 1u);  // the shell with the notch
 }
 
 }  // namespace
