@@ -22,6 +22,7 @@
 #include "clip/boolean/noding.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -60,6 +61,8 @@ class Noder {
     for (int round = 0; round < kMaxRounds; ++round) {
       if (chains_done && round == 0) {
         hot_fresh_from_ = 0;  // every crossing of the chain round is new
+      } else if (round == 1 && near_ok_) {
+        near_round();
       } else {
         grid_round(round, chains_done);
       }
@@ -161,7 +164,124 @@ class Noder {
     } else {
       list_items_near_fresh(round == 1 && chains_done);
     }
+    // The first grid round (whole segments) keeps its pairs for near_round, which needs the
+    // grid's widening to exceed the pieces' drift and the pixels by a margin (see there).
+    record_ = round == 0;
     visit_grid_pairs();
+    near_ok_ = record_ && std::min(grid_.widening_x(), grid_.widening_y()) >= 16.0 * radius_;
+    record_ = false;
+    hot_fresh_from_ = hot_before;
+  }
+
+  // The segments s and t are apart by more than 16 ulps of the largest coordinate (the unit of
+  // the hot pixels' radius): one lies strictly on one side of the other's line, farther than
+  // that, decided in floating point with the error bound of orient2d's filter (the margin is
+  // 8 pixel radii times |dx| + |dy| >= the length).
+  [[nodiscard]] bool apart(std::uint32_t s, std::uint32_t t) const {
+    const NodingInput& g = segments_[s];
+    const NodingInput& h = segments_[t];
+    auto beyond = [&](Vec2 p, Vec2 q, Vec2 u, Vec2 v) {
+      const double dx = q.x - p.x, dy = q.y - p.y;
+      const double lu = dx * (u.y - p.y), ru = dy * (u.x - p.x);
+      const double lv = dx * (v.y - p.y), rv = dy * (v.x - p.x);
+      const double ou = lu - ru, ov = lv - rv;
+      const double eu = 4e-16 * (std::fabs(lu) + std::fabs(ru)) + DBL_MIN;
+      const double ev = 4e-16 * (std::fabs(lv) + std::fabs(rv)) + DBL_MIN;
+      const double margin = 8.0 * radius_ * (std::fabs(dx) + std::fabs(dy)) * (1.0 + 1e-12);
+      if (ou > 0 && ov > 0) return ou - eu > margin && ov - ev > margin;
+      if (ou < 0 && ov < 0) return -ou - eu > margin && -ov - ev > margin;
+      return false;
+    };
+    return beyond(g.a, g.b, h.a, h.b) || beyond(h.a, h.b, g.a, g.b);
+  }
+
+  // The round after the first grid round, without a grid. Round 1's split points lie within
+  // 4 ulps (2 pixel radii) of their segment's line, in its box (a rounded or snapped crossing),
+  // so every piece lies within that of its segment, and a hot pixel's square within 3 more of
+  // the crossing's two segments. Two pieces that meet, or a piece through a pixel, therefore
+  // belong to segments that pass within 11 ulps of each other at a point of both boxes: the
+  // grid listed both in that point's cell (its widening is at least 32 ulps, checked), the
+  // round recorded them as a pair, and they are not `apart` (16 ulps). So the pieces of the
+  // recorded pairs that are not apart, and each pixel against the pieces of its two segments and
+  // of their common close partners, are every test of a grid round that can find anything; the
+  // others would find nothing (rule clip-noding).
+  void near_round() {
+    ++out_.rounds;
+    const std::size_t hot_before = hot_.size();
+    splits_.clear();
+    const std::vector<std::uint32_t>& first = out_.first;
+    const std::vector<Vec2>& pts = out_.points;
+    std::size_t m = 0;
+    for (const auto& pair : near_) {
+      if (!apart(pair.first, pair.second)) near_[m++] = pair;
+    }
+    near_.resize(m);
+    for (const auto& [s, t] : near_) {
+      const std::uint32_t s0 = first[s], s1 = first[s + 1] - 1;
+      const std::uint32_t t0 = first[t], t1 = first[t + 1] - 1;
+      if (s1 - s0 == 1 && t1 - t0 == 1) continue;  // neither was split: tested already
+      for (std::uint32_t i = s0; i < s1; ++i) {
+        const Vec2 a = pts[i], b = pts[i + 1];
+        const double ax0 = std::min(a.x, b.x), ax1 = std::max(a.x, b.x);
+        const double ay0 = std::min(a.y, b.y), ay1 = std::max(a.y, b.y);
+        for (std::uint32_t j = t0; j < t1; ++j) {
+          if (!fresh_[i] && !fresh_[j]) continue;
+          const Vec2 c = pts[j], d = pts[j + 1];
+          if (std::max(c.x, d.x) < ax0 || std::min(c.x, d.x) > ax1 || std::max(c.y, d.y) < ay0 ||
+              std::min(c.y, d.y) > ay1)
+            continue;
+          test(i, j);
+        }
+      }
+    }
+    // Pixels (all new): the pieces of the crossing's segments and of their common partners.
+    std::vector<std::uint32_t> adjacency_first(n_ + 1, 0), adjacency;
+    for (const auto& [s, t] : near_) {
+      ++adjacency_first[s + 1];
+      ++adjacency_first[t + 1];
+    }
+    for (std::uint32_t c = 0; c < n_; ++c)
+      adjacency_first[c + 1] += adjacency_first[c];
+    adjacency.resize(adjacency_first[n_]);
+    {
+      std::vector<std::uint32_t> fill(adjacency_first.begin(), adjacency_first.end() - 1);
+      for (const auto& [s, t] : near_) {
+        adjacency[fill[s]++] = t;
+        adjacency[fill[t]++] = s;
+      }
+    }
+    for (std::uint32_t c = 0; c < n_; ++c) {
+      std::sort(adjacency.begin() + adjacency_first[c], adjacency.begin() + adjacency_first[c + 1]);
+    }
+    for (std::size_t h = 0; h < hot_before; ++h) {
+      const Vec2 x = hot_[h];
+      auto segment = [&](std::uint32_t u) {
+        for (std::uint32_t k = first[u]; k + 1 < first[u + 1]; ++k) {
+          // test_pixel splits only pieces whose box holds x.
+          const Vec2 a = pts[k], b = pts[k + 1];
+          if (x.x < std::min(a.x, b.x) || x.x > std::max(a.x, b.x) || x.y < std::min(a.y, b.y) ||
+              x.y > std::max(a.y, b.y))
+            continue;
+          pieces::test_pixel(pts, k, x, radius_, splits_);
+        }
+      };
+      const auto [s, t] = hot_from_[h];
+      segment(s);
+      if (t != s) segment(t);
+      std::uint32_t i = adjacency_first[s], j = adjacency_first[t];
+      const std::uint32_t ie = adjacency_first[s + 1], je = adjacency_first[t + 1];
+      while (i < ie && j < je) {
+        if (adjacency[i] < adjacency[j]) {
+          ++i;
+        } else if (adjacency[j] < adjacency[i]) {
+          ++j;
+        } else {
+          if (adjacency[i] != s && adjacency[i] != t) segment(adjacency[i]);
+          ++i;
+          ++j;
+        }
+      }
+    }
     hot_fresh_from_ = hot_before;
   }
 
@@ -325,6 +445,12 @@ class Noder {
         pieces::test_pixel(out_.points, jt.piece, hot_[it.piece], radius_, splits_);
       } else if (jt.pixel) {
         pieces::test_pixel(out_.points, it.piece, hot_[jt.piece], radius_, splits_);
+      } else if (record_) {
+        // Round 1: every piece is a whole segment, starting at point 2 c.
+        test(it.piece, jt.piece);
+        const std::pair<std::uint32_t, std::uint32_t> segments{it.piece / 2, jt.piece / 2};
+        near_.push_back(segments);
+        hot_from_.resize(hot_.size(), segments);
       } else {
         test(it.piece, jt.piece);
       }
@@ -466,6 +592,12 @@ class Noder {
   CellGrid grid_;
   std::vector<std::uint32_t> stamp_;
   std::vector<Split> splits_;
+  // The first grid round's pairs of segments with overlapping boxes, the pair of segments whose
+  // crossing made each hot pixel, and whether near_round may use them.
+  bool record_ = false;
+  bool near_ok_ = false;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> near_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> hot_from_;
 };
 
 }  // namespace
