@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -431,6 +432,39 @@ MultiPolygon clip_with(const MultiPolygon& region, std::span<const F> functions,
 
 MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane> half_planes,
                           const PolygonClipOptions& options) {
+  if (options.output == PolygonClipOutput::pieces) {
+    // Half-planes x >= k, x <= k, y >= k, y <= k (unit coefficients: the bound k is exact) form
+    // a box: the one-pass box cut takes them all at once, and the others cut its result.
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Box2 box{{-inf, -inf}, {inf, inf}};
+    std::vector<HalfPlane> others;
+    bool any_box = false;
+    for (const HalfPlane& h : half_planes) {
+      if (h.b == 0.0 && (h.a == 1.0 || h.a == -1.0)) {
+        if (h.a > 0)
+          box.min.x = std::max(box.min.x, -h.c);
+        else
+          box.max.x = std::min(box.max.x, h.c);
+        any_box = true;
+      } else if (h.a == 0.0 && (h.b == 1.0 || h.b == -1.0)) {
+        if (h.b > 0)
+          box.min.y = std::max(box.min.y, -h.c);
+        else
+          box.max.y = std::min(box.max.y, h.c);
+        any_box = true;
+      } else {
+        others.push_back(h);
+      }
+    }
+    if (any_box) {
+      // A box without interior (or NaN bounds) leaves no area.
+      if (!(box.min.x < box.max.x && box.min.y < box.max.y)) return {};
+      const MultiPolygon cut = detail::clip_by_box(region, box);
+      if (others.empty()) return cut;
+      const auto functions = detail::line_functions(others);
+      return clip_with(cut, std::span<const detail::LineFunction>(functions), options);
+    }
+  }
   const auto functions = detail::line_functions(half_planes);
   return clip_with(region, std::span<const detail::LineFunction>(functions), options);
 }
@@ -447,6 +481,13 @@ MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
                           const PolygonClipOptions& options) {
   const auto edges = detail::edge_functions(convex_ring);
   if (!edges) return {};
+  if (options.output == PolygonClipOutput::pieces) {
+    // The ring lies in its box: the one-pass box cut leaves the part of the region near it,
+    // valid, and the ring's edges cut that.
+    const MultiPolygon near =
+        detail::clip_by_box(region, bounding_box(std::span<const Ring>(&convex_ring, 1)));
+    return clip_with(near, std::span<const detail::EdgeFunction>(*edges), options);
+  }
   return clip_with(region, std::span<const detail::EdgeFunction>(*edges), options);
 }
 

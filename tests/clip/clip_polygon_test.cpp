@@ -138,5 +138,42 @@ TEST(ClipPolygon, HoleEdgeOnAHalfPlaneLineOrConvexEdgeBecomesANotch) {
   EXPECT_EQ(notch.polygons[0].rings.size(), 1u);  // the shell with the notch
 }
 
+// Convex rings (cut by their box first, then their edges) and half-plane sets with and without
+// axis-parallel members (their box first, then the others): valid pieces with the area of the
+// section's bridged result, on stars and on the demo polygon with holes.
+TEST(ClipPolygon, ConvexRingsAndMixedHalfPlanesGiveValidPiecesOfTheBridgedArea) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const MultiPolygon region =
+        trial % 2 ? of(scenes::demo_polygon())
+                  : of(Polygon{{scenes::star_ring(60 + trial, {0, 0}, 0.2, 1.0,
+                                                  static_cast<std::uint64_t>(trial))}});
+    const double s = trial % 2 ? 2.5 : 1.0;
+    Ring convex;
+    const double cx = 0.5 * s * u(rng), cy = 0.5 * s * u(rng), r = s * (0.2 + std::fabs(u(rng)));
+    const int k = 3 + trial % 6;
+    for (int i = 0; i < k; ++i) {
+      const double a = 2 * M_PI * i / k + trial;
+      convex.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+    }
+    const MultiPolygon by_ring = clip::clip_polygon(region, convex);
+    ASSERT_TRUE(is_valid_ogc(by_ring)) << trial;
+    const MultiPolygon bridged_ring =
+        clip::clip_polygon(region, convex, {.output = clip::PolygonClipOutput::bridged});
+    EXPECT_NEAR(area(by_ring), area(bridged_ring), 1e-12 * s * s) << trial;
+    std::vector<HalfPlane> planes = {{1, 0, s * 0.3 * u(rng)}, {0, -1, s * 0.5}};
+    for (int i = 0; i < trial % 3; ++i) {
+      const double a = u(rng) * M_PI;
+      planes.push_back({std::cos(a), std::sin(a), 0.4 * s * u(rng)});
+    }
+    const MultiPolygon by_planes = clip::clip_polygon(region, planes);
+    ASSERT_TRUE(is_valid_ogc(by_planes)) << trial;
+    const MultiPolygon bridged_planes =
+        clip::clip_polygon(region, planes, {.output = clip::PolygonClipOutput::bridged});
+    EXPECT_NEAR(area(by_planes), area(bridged_planes), 1e-12 * s * s) << trial;
+  }
+}
+
 }  // namespace
 }  // namespace contain::test
