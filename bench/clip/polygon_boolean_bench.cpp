@@ -11,8 +11,9 @@
 //   tiles       the same star cut into a 32 x 32 grid of tiles over its bounding box (1,024
 //               boxes, one call each; contain's `tile` does the grid in one call).
 // contain: polygon_boolean (every scene); on the box scenes also clip_polygon(region, Box2) (the
-// one-pass box cut), BoxClipper (prepared once inside the timed loop, then one clip per box) and
-// tile (tiles only; one thread, and all cores by wall time).
+// one-pass box cut), clip_polygon by the box's four half-planes and by the box as a convex ring,
+// BoxClipper (prepared once inside the timed loop, then one clip per box) and tile (tiles only;
+// one thread, and all cores by wall time).
 // Peers: Clipper2 2.0.1 when built (CONTAIN_CLIPPER2_DIR; -O3 by its build.sh): Intersect on
 // Paths64 (coordinates scaled by 2^29 and rounded) and on PathsD (precision 8, the finest it
 // takes), RectClip on Paths64 and PathsD on the box scenes; Clipper 1 (libpolyclipping 6.4,
@@ -257,6 +258,37 @@ void BM_contain_clip_box(benchmark::State& state) {
   for (auto _ : state) {
     for (std::size_t i = 0; i < c.boxes.size(); ++i)
       results[i] = clip::clip_polygon(region, c.boxes[i]);
+    benchmark::DoNotOptimize(results);
+  }
+  check_boxes(state, id, results);
+}
+
+// The same boxes as four half-planes, and as convex rings (clip_polygon's other forms).
+void BM_contain_clip_halfplanes(benchmark::State& state) {
+  const int id = static_cast<int>(state.range(0));
+  const Case& c = scene(id);
+  const MultiPolygon region{{contain::Polygon{c.a}}};
+  std::vector<std::vector<contain::HalfPlane>> planes;
+  for (const Box2& b : c.boxes) {
+    planes.push_back({{1, 0, -b.min.x}, {-1, 0, b.max.x}, {0, 1, -b.min.y}, {0, -1, b.max.y}});
+  }
+  std::vector<MultiPolygon> results(c.boxes.size());
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < c.boxes.size(); ++i)
+      results[i] = clip::clip_polygon(region, planes[i]);
+    benchmark::DoNotOptimize(results);
+  }
+  check_boxes(state, id, results);
+}
+
+void BM_contain_clip_convex(benchmark::State& state) {
+  const int id = static_cast<int>(state.range(0));
+  const Case& c = scene(id);
+  const MultiPolygon region{{contain::Polygon{c.a}}};
+  std::vector<MultiPolygon> results(c.boxes.size());
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < c.boxes.size(); ++i)
+      results[i] = clip::clip_polygon(region, c.b[i][0]);
     benchmark::DoNotOptimize(results);
   }
   check_boxes(state, id, results);
@@ -561,7 +593,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
   void Finalize() override {
     ConsoleReporter::Finalize();
     std::printf("\nRatios contain / peer (CPU time; < 1: contain is faster)\n");
-    const char* contains[] = {"BM_contain", "BM_contain_clip_box", "BM_contain_box_clipper"};
+    const char* contains[] = {"BM_contain", "BM_contain_clip_box", "BM_contain_clip_halfplanes",
+                              "BM_contain_clip_convex", "BM_contain_box_clipper"};
     const char* peers[] = {"BM_clipper2_intersect64",
                            "BM_clipper2_intersectD",
                            "BM_clipper2_rect64",
@@ -596,6 +629,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 BENCHMARK(BM_contain)->Apply(all_cases);
 BENCHMARK(BM_contain_clip_box)->Apply(box_cases);
+BENCHMARK(BM_contain_clip_halfplanes)->Apply(box_cases);
+BENCHMARK(BM_contain_clip_convex)->Apply(box_cases);
 BENCHMARK(BM_contain_box_clipper)->Apply(box_cases);
 BENCHMARK(BM_contain_tile)
     ->ArgNames({"scene", "threads"})
