@@ -17,7 +17,6 @@ namespace {
 using predicates::orient2d;
 
 constexpr double kU = 0x1p-53;  // unit roundoff
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // Along p -> q, which comes first: the crossing of the line x = X (-1), that of y = Y (+1), or
 // both at the corner (X, Y) (0). At x = X the line is at y_V with sign(y_V - Y) =
