@@ -47,65 +47,69 @@ BoxClipper::RingIndex build_index(const Ring& ring) {
 
 // The edges of the leaves that overlap the box and are not strictly outside one side, in ring
 // order (a depth-first walk from the left).
+// Calls leaf(first, end) for the edge ranges of the leaves whose box `wanted` accepts (any node
+// whose box it rejects is skipped with its subtree), from the left: in ring order.
+template <class Wanted, class Leaf>
+void visit_leaves(std::size_t n, const BoxClipper::RingIndex& index,
+                  std::vector<std::size_t>& stack, Wanted wanted, Leaf leaf) {
+  if (index.leaves == 0) return;
+  stack.assign(1, 1);
+  while (!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    if (!wanted(index.nodes[v])) continue;
+    if (v < index.first_leaf) {
+      stack.push_back(2 * v + 1);
+      stack.push_back(2 * v);
+      continue;
+    }
+    const std::size_t k = v - index.first_leaf;
+    leaf(k * kLeaf, std::min(n, (k + 1) * kLeaf));
+  }
+}
+
+// The edges of the leaves that overlap the box and are not strictly outside one side, in ring
+// order.
 void active_edges(const Ring& ring, const BoxClipper::RingIndex& index, const Box2& box,
                   const detail::BoxCut& cut, std::vector<std::uint32_t>& active,
                   std::vector<std::size_t>& stack) {
   active.clear();
-  if (index.leaves == 0) return;
   const std::size_t n = ring.size();
-  stack.assign(1, 1);
-  while (!stack.empty()) {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    if (!index.nodes[v].overlaps(box)) continue;
-    if (v < index.first_leaf) {
-      stack.push_back(2 * v + 1);
-      stack.push_back(2 * v);
-      continue;
-    }
-    const std::size_t k = v - index.first_leaf;
-    const std::size_t end = std::min(n, (k + 1) * kLeaf);
-    unsigned cp = cut.code(ring[k * kLeaf]);
-    for (std::size_t i = k * kLeaf; i < end; ++i) {
-      const unsigned cq = cut.code(ring[i + 1 < n ? i + 1 : 0]);
-      if ((cp & cq & 15u) == 0) active.push_back(static_cast<std::uint32_t>(i));
-      cp = cq;
-    }
-  }
+  visit_leaves(
+      n, index, stack, [&](const Box2& b) { return b.overlaps(box); },
+      [&](std::size_t first, std::size_t end) {
+        unsigned cp = cut.code(ring[first]);
+        for (std::size_t i = first; i < end; ++i) {
+          const unsigned cq = cut.code(ring[i + 1 < n ? i + 1 : 0]);
+          if ((cp & cq & 15u) == 0) active.push_back(static_cast<std::uint32_t>(i));
+          cp = cq;
+        }
+      });
 }
 
 // Whether the +x ray from c crosses the ring an odd number of times (half-open in y: a point
-// counts as above when y > c.y), c on none of its edges.
+// counts as above when y > c.y), c on none of its edges. Only nodes reaching right of c and
+// straddling its line can hold a crossing.
 bool ray_parity(const Ring& ring, const BoxClipper::RingIndex& index, Vec2 c,
                 std::vector<std::size_t>& stack) {
-  if (index.leaves == 0) return false;
   const std::size_t n = ring.size();
   bool odd = false;
-  stack.assign(1, 1);
-  while (!stack.empty()) {
-    const std::size_t v = stack.back();
-    stack.pop_back();
-    const Box2& b = index.nodes[v];
-    if (b.empty() || !(b.max.x > c.x && b.max.y > c.y && b.min.y <= c.y)) continue;
-    if (v < index.first_leaf) {
-      stack.push_back(2 * v + 1);
-      stack.push_back(2 * v);
-      continue;
-    }
-    const std::size_t k = v - index.first_leaf;
-    const std::size_t end = std::min(n, (k + 1) * kLeaf);
-    for (std::size_t i = k * kLeaf; i < end; ++i) {
-      const Vec2 p = ring[i], q = ring[i + 1 < n ? i + 1 : 0];
-      if ((p.y > c.y) == (q.y > c.y)) continue;
-      if (std::min(p.x, q.x) > c.x) {
-        odd = !odd;
-        continue;
-      }
-      if (std::max(p.x, q.x) <= c.x) continue;
-      const Vec2 lo = p.y < q.y ? p : q, hi = p.y < q.y ? q : p;
-      if (predicates::orient2d(lo, hi, c) == Sign::positive) odd = !odd;
-    }
-  }
+  visit_leaves(
+      n, index, stack,
+      [&](const Box2& b) { return !b.empty() && b.max.x > c.x && b.max.y > c.y && b.min.y <= c.y; },
+      [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+          const Vec2 p = ring[i], q = ring[i + 1 < n ? i + 1 : 0];
+          if ((p.y > c.y) == (q.y > c.y)) continue;
+          if (std::min(p.x, q.x) > c.x) {
+            odd = !odd;
+            continue;
+          }
+          if (std::max(p.x, q.x) <= c.x) continue;
+          const Vec2 lo = p.y < q.y ? p : q, hi = p.y < q.y ? q : p;
+          if (predicates::orient2d(lo, hi, c) == Sign::positive) odd = !odd;
+        }
+      });
   return odd;
 }
 

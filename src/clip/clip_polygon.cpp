@@ -73,18 +73,8 @@ struct Chain {
 // Exact orientation of a ring: at its lowest (then leftmost) vertex, which is convex; the float
 // area where that vertex is a spike.
 bool counter_clockwise(const Ring& ring) {
-  const std::size_t n = ring.size();
-  std::size_t m = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (ring[i].y < ring[m].y || (ring[i].y == ring[m].y && ring[i].x < ring[m].x)) m = i;
-  }
-  std::size_t prev = (m + n - 1) % n, next = (m + 1) % n;
-  while (prev != m && ring[prev] == ring[m])
-    prev = (prev + n - 1) % n;
-  while (next != m && ring[next] == ring[m])
-    next = (next + 1) % n;
-  const Sign s = predicates::orient2d(ring[prev], ring[m], ring[next]);
-  if (s != Sign::zero) return s == Sign::positive;
+  const int o = detail::ring_orientation(ring);
+  if (o >= 0) return o == 1;
   return signed_area2(ring) > 0.0;
 }
 
