@@ -25,15 +25,15 @@
 namespace contain::clip {
 namespace {
 
-using detail::big;
-using detail::BigFloat;
+using predicates::BigFloat;
 
 // Position along the boundary's direction d, exactly: pi(v) = d . v.
-BigFloat position(const detail::LineFunction& f, Vec2 v) {
-  return big(f.line.b) * big(v.x) - big(f.line.a) * big(v.y);  // d = (b, -a)
+BigFloat position(const predicates::LineFunction& f, Vec2 v) {
+  return BigFloat(f.line.b) * BigFloat(v.x) - BigFloat(f.line.a) * BigFloat(v.y);  // d = (b, -a)
 }
-BigFloat position(const detail::EdgeFunction& f, Vec2 v) {
-  return (big(f.q.x) - big(f.p.x)) * big(v.x) + (big(f.q.y) - big(f.p.y)) * big(v.y);
+BigFloat position(const predicates::EdgeFunction& f, Vec2 v) {
+  return (BigFloat(f.q.x) - BigFloat(f.p.x)) * BigFloat(v.x) +
+         (BigFloat(f.q.y) - BigFloat(f.p.y)) * BigFloat(v.y);
 }
 
 // A chain end on the line at position num / den (den > 0), exactly.
@@ -152,13 +152,13 @@ void cut_ring(const Ring& ring, const std::vector<Sign>& side, const F& f,
 // Whether the region left of the edge p -> q, which lies on f's line, is outside the half-plane:
 // the edge runs against the line's direction (inside on the left). Exact: the edge is parallel
 // to the line, so the sign of one coordinate difference decides.
-bool faces_out(const detail::LineFunction& f, Vec2 p, Vec2 q) {
+bool faces_out(const predicates::LineFunction& f, Vec2 p, Vec2 q) {
   // The line's direction with the inside on its left is (b, -a).
   const double b = f.line.b, a = f.line.a;
   if (b != 0.0) return (q.x > p.x) != (b > 0.0);
   return (q.y > p.y) != (-a > 0.0);
 }
-bool faces_out(const detail::EdgeFunction& f, Vec2 p, Vec2 q) {
+bool faces_out(const predicates::EdgeFunction& f, Vec2 p, Vec2 q) {
   if (f.q.x != f.p.x) return (q.x > p.x) != (f.q.x > f.p.x);
   return (q.y > p.y) != (f.q.y > f.p.y);
 }
@@ -191,7 +191,7 @@ void reduce(const RingView& ring, const F& f, Ring& out, std::vector<Sign>& side
   side.clear();
   const std::size_t n = ring.size();
   auto clearly_outside = [&](Vec2 v) {
-    const detail::Approx a = f.approx(v);
+    const predicates::Approx a = f.approx(v);
     return a.value < -a.error;
   };
   for (std::size_t i = 0; i < n;) {
@@ -452,11 +452,11 @@ MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane>
       const MultiPolygon cut = detail::clip_by_box(region, box);
       if (others.empty()) return cut;
       const auto functions = detail::line_functions(others);
-      return clip_with(cut, std::span<const detail::LineFunction>(functions), options);
+      return clip_with(cut, std::span<const predicates::LineFunction>(functions), options);
     }
   }
   const auto functions = detail::line_functions(half_planes);
-  return clip_with(region, std::span<const detail::LineFunction>(functions), options);
+  return clip_with(region, std::span<const predicates::LineFunction>(functions), options);
 }
 
 MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
@@ -476,9 +476,9 @@ MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
     // valid, and the ring's edges cut that.
     const MultiPolygon near =
         detail::clip_by_box(region, bounding_box(std::span<const Ring>(&convex_ring, 1)));
-    return clip_with(near, std::span<const detail::EdgeFunction>(*edges), options);
+    return clip_with(near, std::span<const predicates::EdgeFunction>(*edges), options);
   }
-  return clip_with(region, std::span<const detail::EdgeFunction>(*edges), options);
+  return clip_with(region, std::span<const predicates::EdgeFunction>(*edges), options);
 }
 
 }  // namespace contain::clip

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
 
 namespace contain::clip {
 

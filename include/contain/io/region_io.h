@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
 #include "contain/io/wkt.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::io {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::io {
 

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "clip/boolean/graph_helpers.h"
+#include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 
 namespace contain::clip::detail {
@@ -368,7 +369,7 @@ std::vector<Arrangement::Lowest> Arrangement::lowest_points(std::vector<std::uin
   // Components of the graph, and the lowest (x, y) point of each, a vertex or a point inside a
   // run (ids of the lowest vertex, or kNone and the run's edge and point index).
   const std::size_t nv = vertex_.size();
-  graph::UnionFind comp(nv);
+  UnionFind<std::uint32_t> comp(nv);
   for (const Edge& e : edge_)
     comp.unite(e.u, e.v);
   std::vector<Lowest> lowest(nv);

@@ -15,6 +15,7 @@
 
 #include "clip/boolean/arrangement.h"
 #include "clip/boolean/graph_helpers.h"
+#include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 
 namespace contain::clip::detail {
@@ -44,7 +45,7 @@ std::vector<std::uint32_t> Arrangement::regions(const std::vector<char>& in) con
   // the face of the component around it).
   const std::size_t nf = in.size();
   const std::size_t nh = face_.size();
-  graph::UnionFind region(nf);
+  UnionFind<std::uint32_t> region(nf);
   for (const auto& [f, g] : face_links_) {
     if (in[f]) region.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
   }

@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "clip/boolean/arrangement.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::detail {
 

@@ -1,14 +1,13 @@
 #pragma once
-// Small helpers shared by the arrangement's stages (arrangement.cpp, extract.cpp). Private to
-// the boolean engine.
+// Small helpers shared by the arrangement's stages (arrangement.cpp, extract.cpp); their
+// union-find is core's. Private to the boolean engine.
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip::detail::graph {
 
@@ -22,22 +21,5 @@ inline bool lex_less(Vec2 a, Vec2 b) {
 inline int half_of(Vec2 o, Vec2 p) {
   return (p.y > o.y || (p.y == o.y && p.x > o.x)) ? 0 : 1;
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 }  // namespace contain::clip::detail::graph

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip::detail::pieces {
 using predicates::orient2d;
