@@ -40,7 +40,13 @@ import contain
 __all__ = ["Shape", "locate", "locate_dataframe", "index_builds", "clear_cache"]
 
 _REGION_SUFFIXES = (".wkt", ".geojson", ".json")
-_WKT_PREFIXES = ("POLYGON", "MULTIPOLYGON", "SRID=")
+_MESH_SUFFIXES = (".obj", ".off", ".stl", ".ply")
+
+
+def _is_path_text(text: str) -> bool:
+    """A str names a file when it ends in a mesh or region extension and is no WKT or JSON."""
+    suffix = os.path.splitext(text)[1].lower()
+    return suffix in _REGION_SUFFIXES + _MESH_SUFFIXES and "(" not in text and "{" not in text
 
 
 @dataclass(frozen=True)
@@ -91,22 +97,31 @@ class Shape:
 
     @staticmethod
     def of(shape: Any, *, fill: str = "even_odd") -> "Shape":
-        """A Shape from a Shape, a path, WKT text, a contain.Mesh or a contain.Region."""
+        """A Shape from anything contain takes as a mesh or a region.
+
+        A path (a str with a mesh or region file extension, or an os.PathLike such as
+        pathlib.Path) travels as the path. Anything else goes through the module's one rule
+        (contain.as_mesh / contain.as_region) and travels as bytes: a mesh (contain.Mesh,
+        (vertices, faces), trimesh or Open3D meshes) as binary PLY, bit for bit; a region
+        (contain.Region, WKT / GeoJSON / WKB text or bytes, shapely geometries, GeoPandas
+        objects, rings) as WKT with shortest round-trip decimals, also exact.
+        """
         if isinstance(shape, Shape):
             return shape
-        if isinstance(shape, contain.Mesh):
-            # Binary PLY stores the doubles: the workers get the mesh bit for bit.
-            return Shape.from_bytes(contain.format_mesh(shape, "ply"), "ply")
-        if isinstance(shape, contain.Region):
-            return Shape.from_bytes(shape.to_wkt().encode(), "wkt", fill=fill)
-        if isinstance(shape, str) and shape.lstrip().upper().startswith(_WKT_PREFIXES):
-            return Shape.from_bytes(shape.encode(), "wkt", fill=fill)
-        if isinstance(shape, (str, os.PathLike)):
+        if isinstance(shape, os.PathLike) or (isinstance(shape, str) and _is_path_text(shape)):
             return Shape.from_path(shape, fill=fill)
-        raise TypeError(
-            "shape must be a path, WKT text, a contain.Mesh, a contain.Region or a "
-            f"contain.dask.Shape, got {type(shape).__name__}"
-        )
+        if contain.is_mesh_like(shape):
+            # Binary PLY stores the doubles: the workers get the mesh bit for bit.
+            return Shape.from_bytes(contain.format_mesh(contain.as_mesh(shape), "ply"), "ply")
+        try:
+            region = contain.as_region(shape)
+        except TypeError:
+            raise TypeError(
+                "shape must be a path, a mesh (contain.Mesh, (vertices, faces), trimesh, Open3D) "
+                "or a region (contain.Region, WKT, GeoJSON, WKB, shapely, GeoPandas, rings), "
+                f"got {type(shape).__name__}"
+            ) from None
+        return Shape.from_bytes(region.to_wkt().encode(), "wkt", fill=fill)
 
     @property
     def dimension(self) -> int:
@@ -196,9 +211,10 @@ def locate(
 
     points: a dask.array (or anything dask.array.asarray takes) of shape (N, 3) for a mesh or
         (N, 2) for a region, chunked along the rows (column chunks are merged).
-    shape: a mesh or region file path, WKT text, a contain.Mesh, a contain.Region or a Shape.
-        Only the path or the bytes are sent to the workers; each worker process builds the
-        index once (see the module documentation).
+    shape: a mesh or region file path (str or pathlib.Path), anything contain takes as a mesh
+        or a region (contain.Mesh, (vertices, faces), trimesh, shapely, GeoPandas, WKT, ...:
+        see Shape.of) or a Shape. Only the path or the bytes are sent to the workers; each
+        worker process builds the index once (see the module documentation).
     fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
     boundary: None gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
         'outside' or 'raise' give booleans under that boundary policy.
