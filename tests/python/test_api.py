@@ -74,6 +74,24 @@ def test_stubs_declare_every_public_name_of_the_module():
     declared = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
     assert set(public_names()) <= declared, set(public_names()) - declared
     assert (STUBS.parent / "py.typed").exists()
+    # Every public member of every class, too (methods, properties, static builders).
+    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
+    for name in public_names():
+        item = getattr(contain, name)
+        if not isinstance(item, type) or issubclass(item, BaseException) or name == "Location":
+            continue
+        members = set()
+        for node in classes[name].body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                members.add(node.name)
+            elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+                members.add(node.target.id)
+        runtime = {m for m in vars(item) if not m.startswith("_") or m in ("_repr_svg_", "__geo_interface__")}
+        assert runtime <= members, (name, runtime - members)
+    # The shape aliases the signatures name.
+    assigned = {t.id for node in tree.body if isinstance(node, ast.Assign) for t in node.targets
+                if isinstance(t, ast.Name)}
+    assert {"MeshLike", "RegionLike"} <= assigned
 
 
 def test_regions_from_rings_wkt_and_polygons_agree():

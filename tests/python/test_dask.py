@@ -115,3 +115,25 @@ def test_column_chunks_numpy_input_and_all_core_chunks_give_the_same_answers(cli
     by_columns = da.from_array(local, chunks=(50_000, 1))  # merged into whole rows
     assert np.array_equal(contain.dask.locate(by_columns, mesh_file).compute(), expected)
     assert np.array_equal(contain.dask.locate(local, mesh_file, threads=0).compute(), expected)
+
+
+def test_tuples_duck_meshes_and_shapely_regions_travel_by_the_module_rule(client, points):
+    mesh = torus(major=1.2, minor=0.35)
+
+    class TrimeshLike:
+        vertices = np.array(mesh.vertices)
+        faces = np.array(mesh.faces, dtype=np.int64)
+
+    sample = points[:500_000]
+    expected = contain.MeshIndex(mesh).locate(sample.compute())
+    for shape in ((mesh.vertices, mesh.faces), TrimeshLike()):
+        source = contain.dask.Shape.of(shape)
+        assert source.kind == "mesh" and source.key == contain.dask.Shape.of(mesh).key
+        assert np.array_equal(contain.dask.locate(sample, shape).compute(), expected)
+    shapely = pytest.importorskip("shapely.geometry")
+    park = shapely.box(0, 0, 4, 4).difference(shapely.box(1, 1, 3, 3))
+    xy = da.random.RandomState(6).uniform(-1, 5, size=(200_000, 2), chunks=(50_000, 2))
+    wanted = contain.PolygonIndex(park).locate(xy.compute())
+    for region in (park, park.wkb, park.wkb_hex, shapely.mapping(park)):
+        assert contain.dask.Shape.of(region).kind == "region"
+        assert np.array_equal(contain.dask.locate(xy, region).compute(), wanted)
