@@ -194,6 +194,9 @@ Example:
           "'closed-exact' (ray parity, every answer exact) or 'winding-number' (open or\n"
           "non-manifold mesh: generalized winding number, boundary still exact).")
       .def_property_readonly(
+          "report", [](const inside::MeshIndex& index) { return index.report(); },
+          "The contain.MeshReport of the mesh (what validate_mesh gives), which chose the regime.")
+      .def_property_readonly(
           "warning", [](const inside::MeshIndex& index) { return index.warning(); },
           "'' for a plain closed 2-manifold; otherwise one line naming the regime and why.")
       .def_property_readonly(

@@ -383,6 +383,14 @@ def test_validate_mesh_reports_the_corpus_facts(shared):
     # The same counts the command's warning gives for the open meshes.
     index = contain.MeshIndex.from_file(meshes / "stanford-bunny.obj")
     assert f"{bunny.border_edges} border edges" in index.warning
+    assert index.report.to_dict() == bunny.to_dict()
+    # Bounds of the surface (the command's answer) or of every vertex of the file.
+    mesh = contain.read_mesh(meshes / "stanford-bunny.obj")
+    used = mesh.vertices[np.unique(mesh.faces)]
+    assert contain.aabb(mesh)[0].tolist() == used.min(axis=0).tolist()
+    assert contain.aabb(mesh, vertices="all")[0].tolist() == mesh.vertices.min(axis=0).tolist()
+    center, radius = contain.bounding_sphere(mesh, vertices="all", method="ritter")
+    assert np.linalg.norm(mesh.vertices - center, axis=1).max() <= radius
 
 
 def test_validate_mesh_reports_defects_as_data_and_text():

@@ -284,3 +284,19 @@ def test_paths_are_accepted_wherever_a_path_is(tmp_path):
     assert contain.PolygonIndex.from_file(tmp_path / "r.wkt").locate_point([0.5, 0.5]) == 1
     (tmp_path / "s.json").write_text('{"sphere": {"center": [0, 0, 0], "radius": 1}}')
     assert contain.CsgSolid(tmp_path / "s.json").locate_point([0, 0, 1]) == 0
+
+
+def test_real_open3d_meshes_where_python3_open3d_is_installed():
+    o3d = pytest.importorskip("open3d", reason="python3-open3d is not installed (the duck-typed "
+                              "Open3D tests above cover its interface)")
+    legacy = o3d.geometry.TriangleMesh.create_box(1.0, 1.0, 1.0)
+    tensor = o3d.t.geometry.TriangleMesh.from_legacy(legacy)
+    for mesh in (legacy, tensor):
+        assert contain.is_mesh_like(mesh)
+        assert contain.validate_mesh(mesh).watertight
+        assert contain.MeshIndex(mesh).locate([[0.5, 0.5, 0.5], [1, 1, 1], [2, 0, 0]]).tolist() == [1, 0, -1]
+    ours = contain.as_mesh(legacy)
+    assert np.array_equal(ours.vertices, np.asarray(legacy.vertices))
+    assert np.array_equal(ours.faces, np.asarray(legacy.triangles))
+    torus_mesh = o3d.geometry.TriangleMesh.create_torus()
+    assert contain.validate_mesh(torus_mesh).genus == 1
