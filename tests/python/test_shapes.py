@@ -151,6 +151,20 @@ def test_geodataframes_series_and_rows_are_regions(boroughs):
     assert np.array_equal(ring, np.asarray(first.exterior.coords)[:-1])
 
 
+def test_geopandas_frames_go_through_wkb_skip_missing_geometries_and_keep_row_order(boroughs):
+    frame = boroughs.copy()
+    frame.loc[1, "geometry"] = None
+    region = contain.as_region(frame)
+    expected = [p for g in frame.geometry if g is not None for p in contain.as_region(g).polygons]
+    assert region == contain.Region.from_polygons(expected)
+
+    class Instance:  # __geo_interface__ set on the instance, not the class
+        def __init__(self):
+            self.__geo_interface__ = mapping(SQUARE_WITH_HOLE)
+
+    assert contain.as_region(Instance()) == contain.as_region(SQUARE_WITH_HOLE)
+
+
 def test_points_in_the_boroughs_agree_with_geos_away_from_the_boundary(boroughs):
     rng = np.random.default_rng(5)
     low, high = boroughs.total_bounds[:2], boroughs.total_bounds[2:]
