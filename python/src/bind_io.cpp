@@ -141,6 +141,18 @@ triangles shaded and drawn back to front. Past `max_triangles` (0: no limit) fac
 are left out, then every k-th, and the title says how many were drawn.
 )doc")
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def(py::pickle(
+          // Binary PLY: the doubles bit for bit (multiprocessing, joblib, dask ship meshes).
+          [](const Mesh& mesh) {
+            return py::make_tuple(
+                py::bytes(io::format_mesh(mesh, io::MeshFormat::ply_binary_little_endian)));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.Mesh: bad pickle state");
+            const std::string bytes = state[0].cast<std::string>();
+            return take(io::parse_mesh(bytes, io::MeshFormat::ply_binary_little_endian, "<pickle>"))
+                .mesh;
+          }))
       .def("__repr__", [](const Mesh& mesh) {
         return "contain.Mesh(" + std::to_string(mesh.vertices.size()) + " vertices, " +
                std::to_string(mesh.triangles.size()) + " triangles)";
@@ -241,6 +253,27 @@ through WKB, so every coordinate is the same double. Needs shapely (python3-shap
           "__len__", [](const MultiPolygon& region) { return region.polygons.size(); },
           "The number of polygons.")
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def(py::pickle(
+          // Polygon by polygon (WKB), so that rings and polygons come back as they were.
+          [](const MultiPolygon& region) {
+            py::list polygons;
+            for (const Polygon& polygon : region.polygons)
+              polygons.append(py::bytes(io::write_wkb(polygon)));
+            return py::make_tuple(polygons);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.Region: bad pickle state");
+            MultiPolygon region;
+            for (const py::handle item : state[0]) {
+              MultiPolygon part = take(io::parse_wkb(item.cast<std::string>(), "<pickle>"));
+              if (part.polygons.empty()) {
+                region.polygons.emplace_back();  // a polygon without rings stays one
+              } else {
+                region.polygons.push_back(std::move(part.polygons.front()));
+              }
+            }
+            return region;
+          }))
       .def("__repr__", [](const MultiPolygon& region) {
         std::size_t rings = 0;
         for (const Polygon& polygon : region.polygons)

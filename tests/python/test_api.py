@@ -206,3 +206,15 @@ def test_bounding_volumes():
     assert contain.bounding_circle("POLYGON ((0 0, 2 0, 2 2, 0 2))")[1] == pytest.approx(2**0.5)
     with pytest.raises(ValueError, match="method must be"):
         contain.bounding_sphere(points, method="best")
+
+
+def test_meshes_and_regions_pickle_bit_for_bit_and_indexes_refuse_with_the_way_out():
+    import pickle
+    rng = np.random.default_rng(1)
+    mesh = contain.Mesh(rng.normal(size=(50, 3)) * 1e-300, rng.integers(0, 50, (40, 3)))
+    assert pickle.loads(pickle.dumps(mesh)) == mesh
+    region = contain.Region.from_polygons([[rng.normal(size=(7, 2))],
+                                           [rng.normal(size=(5, 2)) + 9, rng.normal(size=(4, 2)) * 0.1 + 9]])
+    assert pickle.loads(pickle.dumps(region)) == region
+    with pytest.raises(TypeError, match="not picklable: ship the mesh"):
+        pickle.dumps(contain.MeshIndex(cube()))
