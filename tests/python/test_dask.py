@@ -2,6 +2,8 @@
 answers equal the single-process ones on a few million points, each worker builds its index
 once, and only the shape's path or bytes travel (one graph key, never an index)."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -137,3 +139,18 @@ def test_tuples_duck_meshes_and_shapely_regions_travel_by_the_module_rule(client
     for region in (park, park.wkb, park.wkb_hex, shapely.mapping(park)):
         assert contain.dask.Shape.of(region).kind == "region"
         assert np.array_equal(contain.dask.locate(xy, region).compute(), wanted)
+
+
+def test_csg_solids_travel_as_their_json_form(client, points, tmp_path):
+    tree = {"difference": [{"sphere": {"center": [0, 0, 0], "radius": 1.2}},
+                           {"implicit": "0.25 - x^2 - y^2"}]}  # a ball with a shaft bored out
+    sample = points[:400_000]
+    expected = contain.CsgSolid(tree).locate(sample.compute())
+    source = contain.dask.Shape.of(tree)
+    assert source.kind == "csg" and source.dimension == 3 and source.key.startswith("csg:sha256:")
+    assert np.array_equal(contain.dask.locate(sample, tree).compute(), expected)
+    path = tmp_path / "part.json"
+    path.write_text(json.dumps(tree))
+    assert np.array_equal(contain.dask.locate(sample, contain.dask.Shape.csg(path)).compute(), expected)
+    with pytest.raises(contain.ContainError):
+        contain.dask.Shape.csg({"sphere": {"center": [0, 0], "radius": 1}})
