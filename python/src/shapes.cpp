@@ -339,6 +339,12 @@ std::pair<Doubles, Doubles> box_corners(const py::handle& object, const char* na
     if (!std::isfinite(lo.at(k)) || !std::isfinite(hi.at(k))) {
       fail(ErrorKind::invalid_value, std::string(name) + " has a NaN or infinite coordinate");
     }
+    // As the command (exit 3): an inverted box is a mistake, not the empty set.
+    if (lo.at(k) > hi.at(k)) {
+      fail(ErrorKind::invalid_value, std::string(name) +
+                                         ": the min corner is above the max corner on axis " +
+                                         std::to_string(k) + "; give (min, max)");
+    }
   }
   return {std::move(lo), std::move(hi)};
 }

@@ -118,8 +118,8 @@ class MeshRef {
 [[nodiscard]] std::vector<HalfPlane> to_half_planes(const py::handle& object, const char* name);
 /// Half-spaces a x + b y + c z + d >= 0: one (4,) or several (M, 4). Finite.
 [[nodiscard]] std::vector<Plane> to_planes(const py::handle& object, const char* name);
-/// A box (min, max) of 2 or 3 numbers each, finite (ContainError otherwise); min > max on some
-/// axis is the empty box, as in the library.
+/// A box (min, max) of 2 or 3 numbers each, finite, min <= max on every axis (ContainError
+/// otherwise, as the command's exit 3 for an inverted --box).
 [[nodiscard]] Box2 to_box2(const py::handle& object, const char* name);
 [[nodiscard]] Box3 to_box3(const py::handle& object, const char* name);
 /// A convex ring: (K, 2) points, K >= 3, finite.

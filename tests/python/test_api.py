@@ -218,3 +218,12 @@ def test_meshes_and_regions_pickle_bit_for_bit_and_indexes_refuse_with_the_way_o
     assert pickle.loads(pickle.dumps(region)) == region
     with pytest.raises(TypeError, match="not picklable: ship the mesh"):
         pickle.dumps(contain.MeshIndex(cube()))
+
+
+def test_no_module_function_is_registered_twice():
+    # Bindings live in several files (bind_*.cpp); a name defined in two of them would silently
+    # become a pybind11 overload, the first registration shadowing the other.
+    for name in public_names():
+        item = getattr(contain, name)
+        if callable(item) and not isinstance(item, type):
+            assert "Overloaded function" not in (item.__doc__ or ""), name

@@ -160,6 +160,8 @@ def test_clip_polygon_pieces_and_bridges_on_a_concave_region():
     assert contain.parse_wkt(square).area == pytest.approx(1.0)
     with pytest.raises(ValueError, match="exactly one of"):
         contain.clip_polygon(u, box=([0, 0], [1, 1]), halfspace=[1, 0, 0])
+    with pytest.raises(ValueError, match="min corner"):
+        contain.clip_polygon(u, box=([3, 0], [1, 1]))
 
 
 def test_clip_mesh_equals_the_contain_command_and_caps_close_the_cut(shared, cli, tmp_path):
