@@ -13,8 +13,8 @@
 #include "contain/clip/mesh_clip.h"
 #include "contain/clip/polyline_clip.h"
 #include "contain/clip/sutherland_hodgman.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/io/wkt.h"
+#include "contain/shapes/mesh_validation.h"
 #include "errors.h"
 #include "shapes.h"
 
@@ -129,7 +129,7 @@ points are rounded (a few ulps), exact on box sides. Runs without the GIL.
           py::gil_scoped_release release;
           return clip::mesh_clip(*subject, b, options);
         }
-        const inside::ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
+        const ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
         py::gil_scoped_release release;
         return clip::mesh_clip(*subject, polyhedron, options);
       },

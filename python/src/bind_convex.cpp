@@ -11,7 +11,8 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/collide/convex_convex.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/inside/point_in_convex.h"
+#include "contain/shapes/convex_polyhedron.h"
 #include "errors.h"
 #include "shapes.h"
 
@@ -27,13 +28,13 @@ Vec3 vec3(const py::handle& object, const char* name) {
   return p;
 }
 
-std::vector<Location> locate_all(const inside::ConvexPolyhedron& polyhedron,
-                                 const py::handle& points, int threads) {
+std::vector<Location> locate_all(const ConvexPolyhedron& polyhedron, const py::handle& points,
+                                 int threads) {
   const Doubles array = as_matrix(points, 3, "points");
   require_finite(array, "points", threads);
   std::vector<Location> out(static_cast<std::size_t>(array.shape(0)));
   py::gil_scoped_release release;
-  polyhedron.locate(as_vec3(array), out, BatchOptions{.threads = threads});
+  inside::point_in_convex(polyhedron, as_vec3(array), out, BatchOptions{.threads = threads});
   return out;
 }
 
@@ -45,7 +46,7 @@ collide::ConvexShape to_convex_shape(const py::handle& object, const char* name)
 }  // namespace
 
 void bind_convex(py::module_& m) {
-  py::class_<inside::ConvexPolyhedron>(m, "ConvexPolyhedron", R"doc(
+  py::class_<ConvexPolyhedron>(m, "ConvexPolyhedron", R"doc(
 A convex polyhedron, the intersection of closed half-spaces, prepared for exact point location
 (the section's figure 22.22).
 
@@ -63,15 +64,15 @@ ConvexPolyhedron, planes or a convex mesh may be given.
            "planes_or_mesh"_a, "From (M, 4) half-space planes or a closed convex mesh.")
       .def(
           "locate",
-          [](const inside::ConvexPolyhedron& p, const ArrayLike& points, int threads) {
+          [](const ConvexPolyhedron& p, const ArrayLike& points, int threads) {
             return to_numpy(locate_all(p, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0,
           "Where each (N, 3) point lies: int8 -1 outside, 0 boundary, 1 inside, exactly.")
       .def(
           "contains",
-          [](const inside::ConvexPolyhedron& p, const ArrayLike& points,
-             const std::string& boundary, int threads) {
+          [](const ConvexPolyhedron& p, const ArrayLike& points, const std::string& boundary,
+             int threads) {
             check_boundary_policy(boundary);
             return to_booleans(locate_all(p, points.object, threads), boundary);
           },
@@ -79,13 +80,13 @@ ConvexPolyhedron, planes or a convex mesh may be given.
           "True where inside; `boundary` ('inside', 'outside', 'raise') decides the boundary.")
       .def(
           "locate_point",
-          [](const inside::ConvexPolyhedron& p, const ArrayLike& point) {
-            return location_object(p.locate(vec3(point.object, "point")));
+          [](const ConvexPolyhedron& p, const ArrayLike& point) {
+            return location_object(inside::point_in_convex(p, vec3(point.object, "point")));
           },
           "point"_a, "Where one point lies, as a contain.Location.")
       .def_property_readonly(
           "planes",
-          [](const inside::ConvexPolyhedron& p) {
+          [](const ConvexPolyhedron& p) {
             std::vector<double> values;
             for (const Plane& plane : p.planes())
               values.insert(values.end(), {plane.a, plane.b, plane.c, plane.d});
@@ -94,7 +95,7 @@ ConvexPolyhedron, planes or a convex mesh may be given.
           "The (M, 4) planes it was made from (empty for a mesh-based polyhedron).")
       .def_property_readonly(
           "faces",
-          [](const inside::ConvexPolyhedron& p) {
+          [](const ConvexPolyhedron& p) {
             std::vector<double> values;
             for (const Triangle3& t : p.faces())
               values.insert(values.end(),
@@ -104,7 +105,7 @@ ConvexPolyhedron, planes or a convex mesh may be given.
             return flat.attr("reshape")(p.faces().size(), 3, 3);
           },
           "The (F, 3, 3) outward faces of a mesh-based polyhedron (empty otherwise).")
-      .def("__repr__", [](const inside::ConvexPolyhedron& p) {
+      .def("__repr__", [](const ConvexPolyhedron& p) {
         return p.faces().empty()
                    ? "contain.ConvexPolyhedron(" + std::to_string(p.planes().size()) + " planes)"
                    : "contain.ConvexPolyhedron(" + std::to_string(p.faces().size()) + " faces)";

@@ -24,7 +24,6 @@ namespace contain::python {
 namespace {
 
 using namespace pybind11::literals;
-using inside::Csg;
 
 // The first exception raised by a Python implicit function during a query: the leaf answers
 // NaN (outside) meanwhile, and the query raises it when done.
@@ -40,7 +39,7 @@ void raise_implicit_error() {
   if (error) std::rethrow_exception(error);
 }
 
-inside::ImplicitFunction python_implicit(py::function function) {
+ImplicitFunction python_implicit(py::function function) {
   // Dropped with the GIL held whichever thread lets go of the last copy.
   const std::shared_ptr<py::function> held(new py::function(std::move(function)),
                                            [](py::function* f) {
@@ -107,23 +106,23 @@ std::vector<Csg> operands_of(const py::args& args) {
   return operands;
 }
 
-const char* op_name(inside::CsgOp op) {
+const char* op_name(CsgOp op) {
   switch (op) {
-    case inside::CsgOp::leaf:
+    case CsgOp::leaf:
       return "leaf";
-    case inside::CsgOp::unite:
+    case CsgOp::unite:
       return "union";
-    case inside::CsgOp::intersect:
+    case CsgOp::intersect:
       return "intersection";
-    case inside::CsgOp::subtract:
+    case CsgOp::subtract:
       return "difference";
-    case inside::CsgOp::complement:
+    case CsgOp::complement:
       return "complement";
   }
   return "leaf";
 }
 
-std::string leaf_name(const inside::CsgLeaf& leaf) {
+std::string leaf_name(const CsgLeaf& leaf) {
   static constexpr const char* kNames[] = {"sphere", "box",      "halfspace",
                                            "convex", "implicit", "mesh"};
   return kNames[leaf.index()];
@@ -193,9 +192,7 @@ Example:
           "mesh (anything mesh-like) or a ConvexPolyhedron.")
       .def_static(
           "mesh",
-          [](const MeshLike& mesh) {
-            return Csg::leaf(inside::CsgMesh(*to_mesh(mesh.object, "mesh")));
-          },
+          [](const MeshLike& mesh) { return Csg::leaf(CsgMesh(*to_mesh(mesh.object, "mesh"))); },
           "mesh"_a,
           "The solid bounded by a closed triangle mesh (anything mesh-like), located exactly by\n"
           "ray parity; CsgSolid refuses an open mesh.")
@@ -261,13 +258,13 @@ or text). Errors name the JSON path of the offending value.
       .def_property_readonly(
           "leaf",
           [](const Csg& c) -> py::object {
-            if (c.op() != inside::CsgOp::leaf) return py::none();
+            if (c.op() != CsgOp::leaf) return py::none();
             return py::str(leaf_name(c.solid()));
           },
           "The kind of a leaf ('sphere', 'box', 'halfspace', 'convex', 'implicit', 'mesh'),\n"
           "None for an operation.")
       .def("__repr__", [](const Csg& c) {
-        if (c.op() == inside::CsgOp::leaf) return "contain.Csg." + leaf_name(c.solid()) + "(...)";
+        if (c.op() == CsgOp::leaf) return "contain.Csg." + leaf_name(c.solid()) + "(...)";
         return "contain.Csg(" + std::string(op_name(c.op())) + " of " +
                std::to_string(c.operands().size()) + ")";
       });

@@ -8,7 +8,7 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 #include "shapes.h"
 
 namespace contain::python {

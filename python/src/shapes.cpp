@@ -10,12 +10,12 @@
 
 #include "arguments.h"
 #include "arrays.h"
-#include "contain/inside/convex_polyhedron.h"
 #include "contain/io/geojson.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/region_io.h"
 #include "contain/io/wkb.h"
 #include "contain/io/wkt.h"
+#include "contain/shapes/convex_polyhedron.h"
 #include "errors.h"
 
 namespace contain::python {
@@ -288,12 +288,12 @@ MultiPolygon to_region(const py::handle& object, const char* name) {
   return region;
 }
 
-inside::ConvexPolyhedron to_convex_polyhedron(const py::handle& object, const char* name) {
-  if (py::isinstance<inside::ConvexPolyhedron>(object)) {
-    return object.cast<inside::ConvexPolyhedron>();
+ConvexPolyhedron to_convex_polyhedron(const py::handle& object, const char* name) {
+  if (py::isinstance<ConvexPolyhedron>(object)) {
+    return object.cast<ConvexPolyhedron>();
   }
   if (is_mesh_like(object)) {
-    return take(inside::ConvexPolyhedron::from_mesh(*to_mesh(object, name)));
+    return take(ConvexPolyhedron::from_mesh(*to_mesh(object, name)));
   }
   const Doubles rows = as_matrix(object, 4, name);
   std::vector<Plane> planes;
@@ -301,7 +301,7 @@ inside::ConvexPolyhedron to_convex_polyhedron(const py::handle& object, const ch
     const double* r = rows.data() + 4 * i;
     planes.push_back({r[0], r[1], r[2], r[3]});
   }
-  return take(inside::ConvexPolyhedron::from_planes(std::move(planes)));
+  return take(ConvexPolyhedron::from_planes(std::move(planes)));
 }
 
 namespace {

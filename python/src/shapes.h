@@ -28,12 +28,12 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/transform.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/transform.h"
 
 namespace contain::python {
 
@@ -111,8 +111,7 @@ class MeshRef {
 /// A convex region in 3D: a contain.ConvexPolyhedron, a closed convex mesh (anything
 /// mesh-like; ConvexPolyhedron::from_mesh checks it exactly), or an (M, 4) array of half-space
 /// planes a b c d (inside where a x + b y + c z + d >= 0).
-[[nodiscard]] inside::ConvexPolyhedron to_convex_polyhedron(const py::handle& object,
-                                                            const char* name);
+[[nodiscard]] ConvexPolyhedron to_convex_polyhedron(const py::handle& object, const char* name);
 
 /// Half-planes a x + b y + c >= 0: one (3,) or several (M, 3). Finite (ContainError otherwise).
 [[nodiscard]] std::vector<HalfPlane> to_half_planes(const py::handle& object, const char* name);
