@@ -1,21 +1,24 @@
-// contain.clip_segments (the batch segment clippers), contain.polygon_boolean, contain.clip_polygon
-// (Sutherland-Hodgman into valid pieces), contain.BoxClipper and contain.tile (many boxes).
+// contain.clip_segments (the batch segment clippers) and contain.polygon_boolean.
 
 #include <pybind11/stl.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
-#include "contain/clip/box_clipper.h"
-#include "contain/clip/clip_polygon.h"
+#include "contain/clip/box_halfspaces.h"
 #include "contain/clip/clip_segments.h"
+#include "contain/clip/cohen_sutherland.h"
+#include "contain/clip/cyrus_beck.h"
+#include "contain/clip/liang_barsky.h"
 #include "contain/clip/polygon_boolean.h"
+#include "contain/core/parallel.h"
 #include "contain/io/wkt.h"
 #include "errors.h"
 #include "shapes.h"
@@ -82,131 +85,90 @@ py::tuple run(const Doubles& array, int threads, Clip&& clip) {
 
 static_assert(sizeof(Segment3) == 6 * sizeof(double) && sizeof(Segment2) == 4 * sizeof(double));
 
-py::tuple clip3(const Doubles& array, const py::handle& box, const py::handle& halfspace,
-                const py::handle& ball, const py::handle& convex, int threads) {
-  const std::string region = chosen_region(box, halfspace, ball, convex);
-  if (region == "box") {
-    const py::sequence pair = box.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("box must be (min, max)");
-    const Doubles lo = as_vector(pair[0], 3, "box min"), hi = as_vector(pair[1], 3, "box max");
-    const Box3 b{{lo.at(0), lo.at(1), lo.at(2)}, {hi.at(0), hi.at(1), hi.at(2)}};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, b, o, k, opt);
+// Clips every segment with `clip(segment) -> ClippedSegment`, without the GIL, in parallel.
+template <class Segment, class One>
+py::tuple run_each(const Doubles& array, int threads, One&& one) {
+  return run<Segment>(array, threads, [&](auto in, auto out, auto kept, auto options) {
+    parallel_for(in.size(), options, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto r = one(in[i]);
+        kept[i] = r.kept ? 1 : 0;
+        if (r.kept) out[i] = r.segment;
+      }
     });
-  }
-  if (region == "halfspace") {
-    const Doubles c = as_vector(halfspace, 4, "halfspace");
-    const Plane p{c.at(0), c.at(1), c.at(2), c.at(3)};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, p, o, k, opt);
-    });
-  }
-  if (region == "ball") {
-    const py::sequence pair = ball.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("ball must be (center, radius)");
-    const Doubles c = as_vector(pair[0], 3, "ball center");
-    const Sphere sphere{{c.at(0), c.at(1), c.at(2)}, pair[1].cast<double>()};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, sphere, o, k, opt);
-    });
-  }
-  std::vector<Plane> planes;
-  if (py::isinstance<Mesh>(convex)) {
-    const auto polyhedron = take(ConvexPolyhedron::from_mesh(convex.cast<const Mesh&>()));
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, polyhedron, o, k, opt);
-    });
-  }
-  const Doubles rows = as_matrix(convex, 4, "convex planes");
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    const double* r = rows.data() + 4 * i;
-    planes.push_back({r[0], r[1], r[2], r[3]});
-  }
-  const auto polyhedron = take(ConvexPolyhedron::from_planes(std::move(planes)));
-  return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-    clip::clip_segments(s, polyhedron, o, k, opt);
   });
 }
 
-py::tuple clip2(const Doubles& array, const py::handle& box, const py::handle& halfspace,
-                const py::handle& ball, const py::handle& convex, int threads) {
+// The segments of dimension D (Segment2 or Segment3) against the one region given.
+template <int D>
+py::tuple clip_dim(const Doubles& array, const py::handle& box, const py::handle& halfspace,
+                   const py::handle& ball, const py::handle& convex, const std::string& algorithm,
+                   int threads) {
+  using Segment = std::conditional_t<D == 2, Segment2, Segment3>;
   const std::string region = chosen_region(box, halfspace, ball, convex);
-  if (region == "box") {
-    const py::sequence pair = box.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("box must be (min, max)");
-    const Doubles lo = as_vector(pair[0], 2, "box min"), hi = as_vector(pair[1], 2, "box max");
-    const Box2 b{{lo.at(0), lo.at(1)}, {hi.at(0), hi.at(1)}};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, b, o, k, opt);
+  if (algorithm != "auto" && region != "box" && algorithm != "cyrus-beck") {
+    throw py::value_error("algorithm='" + algorithm + "' clips by a box only");
+  }
+  const auto batch = [&](const auto& shape) {
+    return run<Segment>(array, threads, [&](auto s, auto o, auto k, auto opt) {
+      clip::clip_segments(s, shape, o, k, opt);
     });
+  };
+  if (region == "box") {
+    const auto b = [&] {
+      if constexpr (D == 2) {
+        return to_box2(box, "box");
+      } else {
+        return to_box3(box, "box");
+      }
+    }();
+    if (algorithm == "auto") return batch(b);
+    if (algorithm == "cohen-sutherland") {
+      return run_each<Segment>(array, threads,
+                               [&](const Segment& s) { return clip::cohen_sutherland(s, b); });
+    }
+    if (algorithm == "liang-barsky") {
+      return run_each<Segment>(array, threads,
+                               [&](const Segment& s) { return clip::liang_barsky(s, b); });
+    }
+    const auto planes = clip::box_halfspaces(b);
+    return run_each<Segment>(array, threads,
+                             [&](const Segment& s) { return clip::cyrus_beck(s, planes); });
   }
   if (region == "halfspace") {
-    const Doubles c = as_vector(halfspace, 3, "halfspace");
-    const HalfPlane p{c.at(0), c.at(1), c.at(2)};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, p, o, k, opt);
-    });
+    const auto planes = [&] {
+      if constexpr (D == 2) {
+        return to_half_planes(halfspace, "halfspace");
+      } else {
+        return to_planes(halfspace, "halfspace");
+      }
+    }();
+    if (planes.size() == 1 && algorithm == "auto") return batch(planes.front());
+    return run_each<Segment>(array, threads,
+                             [&](const Segment& s) { return clip::cyrus_beck(s, planes); });
   }
   if (region == "ball") {
-    const py::sequence pair = ball.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("ball must be (center, radius)");
-    const Doubles c = as_vector(pair[0], 2, "ball center");
-    const Circle circle{{c.at(0), c.at(1)}, pair[1].cast<double>()};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, circle, o, k, opt);
-    });
+    if (!py::isinstance<py::sequence>(ball) || py::len(ball) != 2) {
+      throw py::type_error("ball must be (center, radius)");
+    }
+    const auto pair = py::reinterpret_borrow<py::sequence>(ball);
+    const Doubles c = as_vector(pair[0], D, "ball center");
+    const double radius = pair[1].cast<double>();
+    require_finite(c, "ball center", 1);
+    if (!std::isfinite(radius) || radius < 0) {
+      fail(ErrorKind::invalid_value, "ball radius must be finite and >= 0");
+    }
+    if constexpr (D == 2) {
+      return batch(Circle{{c.at(0), c.at(1)}, radius});
+    } else {
+      return batch(Sphere{{c.at(0), c.at(1), c.at(2)}, radius});
+    }
   }
-  const Doubles ring_points = as_matrix(convex, 2, "convex ring");
-  require_finite(ring_points, "convex ring", 1);
-  const auto span = as_vec2(ring_points);
-  const Ring ring(span.begin(), span.end());
-  if (ring.size() < 3) fail(ErrorKind::degenerate, "convex ring needs at least 3 points");
-  return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-    clip::clip_segments(s, ring, o, k, opt);
-  });
-}
-
-// box=(min, max) in 2D, min at or below max on both axes.
-Box2 box_of(const py::handle& box) {
-  const py::sequence pair = box.cast<py::sequence>();
-  if (pair.size() != 2) throw py::value_error("box must be (min, max)");
-  const Doubles lo = as_vector(pair[0], 2, "box min"), hi = as_vector(pair[1], 2, "box max");
-  const Box2 b{{lo.at(0), lo.at(1)}, {hi.at(0), hi.at(1)}};
-  if (std::isnan(b.min.x) || std::isnan(b.min.y) || std::isnan(b.max.x) || std::isnan(b.max.y)) {
-    throw py::value_error("box holds NaN");
+  if constexpr (D == 2) {
+    return batch(to_convex_ring(convex, "convex ring"));
+  } else {
+    return batch(to_convex_polyhedron(convex, "convex"));
   }
-  if (b.min.x > b.max.x || b.min.y > b.max.y) {
-    throw py::value_error("box: the min corner is above the max corner; give (min, max)");
-  }
-  return b;
-}
-
-// The result as the caller gave the region: WKT for WKT, else a Region.
-py::object region_result(const RegionLike& given, MultiPolygon result) {
-  if (py::isinstance<py::str>(given.object)) return py::str(io::write_wkt(result));
-  return py::cast(std::move(result));
-}
-
-py::list tiles_to_lists(std::vector<MultiPolygon> tiles, const clip::TileGrid& grid) {
-  py::list rows;
-  for (int row = 0; row < grid.rows; ++row) {
-    py::list columns;
-    for (int column = 0; column < grid.columns; ++column)
-      columns.append(
-          py::cast(std::move(tiles[static_cast<std::size_t>(row) * grid.columns + column])));
-    rows.append(columns);
-  }
-  return rows;
-}
-
-clip::TileGrid grid_of(int columns, int rows, const py::object& bounds, const Box2& fallback) {
-  if (columns < 1 || rows < 1) throw py::value_error("columns and rows must be at least 1");
-  clip::TileGrid grid{
-      .bounds = bounds.is_none() ? fallback : box_of(bounds), .columns = columns, .rows = rows};
-  if (grid.bounds.empty()) {
-    throw py::value_error("the region is empty: give the grid's bounds=(min, max)");
-  }
-  return grid;
 }
 
 }  // namespace
@@ -215,7 +177,15 @@ void bind_clip(py::module_& m) {
   m.def(
       "clip_segments",
       [](const ArrayLike& segments, const py::object& box, const py::object& halfspace,
-         const py::object& ball, const py::object& convex, int threads) {
+         const py::object& ball, const py::object& convex, const std::string& algorithm,
+         int threads) {
+        if (algorithm != "auto" && algorithm != "cohen-sutherland" && algorithm != "liang-barsky" &&
+            algorithm != "cyrus-beck") {
+          throw py::value_error(
+              "algorithm must be 'auto', 'cohen-sutherland', 'liang-barsky' or 'cyrus-beck', "
+              "got '" +
+              algorithm + "'");
+        }
         py::array array = py::array::ensure(segments.object);
         if (!array) {
           PyErr_Clear();
@@ -228,21 +198,26 @@ void bind_clip(py::module_& m) {
         const bool three = array.ndim() == 2 && array.shape(1) == 6;
         const Doubles rows = as_matrix(array, three ? 6 : 4, "segments (N, 4) for 2D or");
         require_finite(rows, "segments", threads);
-        return three ? clip3(rows, box, halfspace, ball, convex, threads)
-                     : clip2(rows, box, halfspace, ball, convex, threads);
+        return three ? clip_dim<3>(rows, box, halfspace, ball, convex, algorithm, threads)
+                     : clip_dim<2>(rows, box, halfspace, ball, convex, algorithm, threads);
       },
       "segments"_a, py::kw_only(), "box"_a = py::none(), "halfspace"_a = py::none(),
-      "ball"_a = py::none(), "convex"_a = py::none(), "threads"_a = 0, R"doc(
+      "ball"_a = py::none(), "convex"_a = py::none(), "algorithm"_a = "auto", "threads"_a = 0,
+      R"doc(
 Clips every segment to a closed region; returns (clipped, kept).
 
 segments: (N, 4) rows x0 y0 x1 y1 (2D) or (N, 6) rows x0 y0 z0 x1 y1 z1 (3D), or (N, 2, d).
 Exactly one region:
   box=(min, max)            an axis-aligned box (Liang-Barsky, exact decisions)
-  halfspace=(a, b, c[, d])  a x + b y [+ c z] + d >= 0 (3 numbers in 2D, 4 in 3D)
+  halfspace=(a, b, c[, d])  a x + b y [+ c z] + d >= 0 (3 numbers in 2D, 4 in 3D), or an
+                            (M, 3) / (M, 4) array: the intersection (Cyrus-Beck)
   ball=(center, radius)     a closed disc / ball
-  convex=...                2D: a convex ring (K, 2), counter-clockwise;
-                            3D: (M, 4) planes a b c d (inside where >= 0) or a convex Mesh
-                            (Cyrus-Beck).
+  convex=...                2D: a convex ring (K, 2), either direction;
+                            3D: (M, 4) planes a b c d (inside where >= 0), a convex mesh
+                            (anything mesh-like) or a ConvexPolyhedron (Cyrus-Beck).
+algorithm (box only): 'auto' (a branch-free batch kernel with an exact certificate),
+'cohen-sutherland', 'liang-barsky' or 'cyrus-beck' (the section's algorithms one segment at a
+time; the same decisions, points to rounding), as the CLI's --algorithm.
 clipped: an array like segments (N, 2 d), the part left of each, in the input's direction
 (zero-length when it only touches; NaN rows where nothing is left); kept: (N,) bool.
 Whether a segment misses, touches or crosses is decided exactly. Runs on `threads` threads
@@ -274,148 +249,6 @@ gives the OGC meaning for valid polygons; 'nonzero', 'positive', 'negative' as C
 Returns OGC-valid polygons (shells counter-clockwise, holes clockwise) as a Region, or as WKT
 when both a and b are WKT strings. Every topological decision is exact; input vertices are
 kept bit for bit, crossing points are rounded (docs/clipping.md). Runs without the GIL.
-)doc");
-
-  m.def(
-      "clip_polygon",
-      [](const RegionLike& region, const py::object& box, const py::object& halfspace,
-         const py::object& convex, bool keep_bridges) -> py::object {
-        const MultiPolygon r = to_region(region.object, "region");
-        const int given = !box.is_none() + !halfspace.is_none() + !convex.is_none();
-        if (given != 1) {
-          throw py::value_error("clip_polygon: give exactly one of box=, halfspace=, convex=");
-        }
-        const clip::PolygonClipOptions options{.output = keep_bridges
-                                                             ? clip::PolygonClipOutput::bridged
-                                                             : clip::PolygonClipOutput::pieces};
-        MultiPolygon result;
-        if (!box.is_none()) {
-          const Box2 b = box_of(box);
-          py::gil_scoped_release release;
-          result = clip::clip_polygon(r, b, options);
-        } else if (!halfspace.is_none()) {
-          const py::array array = py::array::ensure(halfspace);
-          const bool one = array && array.ndim() == 1;
-          const Doubles rows = one ? as_vector(halfspace, 3, "halfspace")
-                                   : as_matrix(halfspace, 3, "halfspace planes");
-          require_finite(rows, "halfspace", 1);
-          std::vector<HalfPlane> planes;
-          const std::size_t count = one ? 1 : static_cast<std::size_t>(rows.shape(0));
-          for (std::size_t i = 0; i < count; ++i) {
-            const double* c = rows.data() + 3 * i;
-            planes.push_back({c[0], c[1], c[2]});
-          }
-          py::gil_scoped_release release;
-          result = clip::clip_polygon(r, planes, options);
-        } else {
-          const Doubles ring_points = as_matrix(convex, 2, "convex ring");
-          require_finite(ring_points, "convex ring", 1);
-          const auto span = as_vec2(ring_points);
-          const Ring ring(span.begin(), span.end());
-          if (ring.size() < 3) fail(ErrorKind::degenerate, "convex ring needs at least 3 points");
-          py::gil_scoped_release release;
-          result = clip::clip_polygon(r, ring, options);
-        }
-        return region_result(region, std::move(result));
-      },
-      "region"_a, py::kw_only(), "box"_a = py::none(), "halfspace"_a = py::none(),
-      "convex"_a = py::none(), "keep_bridges"_a = false, R"doc(
-The part of a region inside a convex region (Sutherland-Hodgman), as valid pieces.
-
-region: Region, WKT string, or sequence of (K, 2) rings (OGC polygons: shell, then holes).
-Exactly one region to clip by:
-  box=(min, max)          a closed box: one pass with outcodes, exact decisions
-  halfspace=(a, b, c)     a x + b y + c >= 0; or an (M, 3) array of several (their intersection)
-  convex=ring             a convex (K, 2) ring, either direction
-Returns OGC-valid polygons (shells counter-clockwise, holes clockwise): a hole whose edge lies
-on the boundary becomes a notch of the shell. keep_bridges=True returns instead the section's
-one ring per input ring with its degenerate bridging edges. WKT in gives WKT out. Runs without
-the GIL. Many boxes against one region: contain.BoxClipper, contain.tile.
-)doc");
-
-  py::class_<clip::BoxClipper>(m, "BoxClipper", R"doc(
-A region prepared for clipping by many boxes (map tiles, viewports).
-
-BoxClipper(region) indexes each ring's edge ranges once; clip(box) then reads only the edges
-near the box and gives exactly clip_polygon(region, box=box), bit for bit; tile(columns, rows)
-cuts a grid of boxes on every core. Thread-safe; clip and tile release the GIL.
-
-Example:
-    >>> parcel = contain.BoxClipper("POLYGON ((0 0, 10 0, 10 10, 0 10), (2 3, 2 6, 4 6, 4 3))")
-    >>> parcel.clip(([0, 0], [4, 10])).area
-    34.0
-)doc")
-      .def(py::init([](const RegionLike& region) {
-             MultiPolygon polygons = to_region(region.object, "region");
-             py::gil_scoped_release release;
-             return clip::BoxClipper(std::move(polygons));
-           }),
-           "region"_a, "Prepares a region (Region, WKT string or sequence of rings).")
-      .def(
-          "clip",
-          [](const clip::BoxClipper& clipper, const py::object& box) {
-            const Box2 b = box_of(box);
-            py::gil_scoped_release release;
-            return clipper.clip(b);
-          },
-          "box"_a, "The region inside the closed box=(min, max), as a Region of valid polygons.")
-      .def(
-          "tile",
-          [](const clip::BoxClipper& clipper, int columns, int rows, const py::object& bounds,
-             int threads) {
-            const clip::TileGrid grid = grid_of(columns, rows, bounds, clipper.bounds());
-            std::vector<MultiPolygon> tiles;
-            {
-              py::gil_scoped_release release;
-              tiles = clip::tile(clipper, grid, {.threads = threads});
-            }
-            return tiles_to_lists(std::move(tiles), grid);
-          },
-          "columns"_a, "rows"_a, py::kw_only(), "bounds"_a = py::none(), "threads"_a = 0,
-          "The region cut into a grid of columns x rows tiles over bounds=(min, max) (default:\n"
-          "the region's bounding box): a list of rows (row 0 at the least y), each a list of\n"
-          "Regions by column. Neighbouring tiles share their side exactly. threads=0: every core.")
-      .def_property_readonly(
-          "bounds",
-          [](const clip::BoxClipper& clipper) {
-            const Box2& b = clipper.bounds();
-            return py::make_tuple(py::array_t<double>(2, &b.min.x),
-                                  py::array_t<double>(2, &b.max.x));
-          },
-          "(min, max): the bounding box of the region's vertices.")
-      .def_property_readonly(
-          "region", [](const clip::BoxClipper& clipper) { return clipper.region(); },
-          "The prepared region (a copy).")
-      .def("__repr__", [](const clip::BoxClipper& clipper) {
-        std::size_t rings = 0;
-        for (const Polygon& p : clipper.region().polygons)
-          rings += p.rings.size();
-        return "contain.BoxClipper(" + std::to_string(clipper.region().polygons.size()) +
-               " polygons, " + std::to_string(rings) + " rings)";
-      });
-
-  m.def(
-      "tile",
-      [](const RegionLike& region, int columns, int rows, const py::object& bounds, int threads) {
-        MultiPolygon polygons = to_region(region.object, "region");
-        const clip::TileGrid grid =
-            grid_of(columns, rows, bounds, bounding_box(polygons.all_rings()));
-        std::vector<MultiPolygon> tiles;
-        {
-          py::gil_scoped_release release;
-          tiles = clip::tile(polygons, grid, {.threads = threads});
-        }
-        return tiles_to_lists(std::move(tiles), grid);
-      },
-      "region"_a, "columns"_a, "rows"_a, py::kw_only(), "bounds"_a = py::none(), "threads"_a = 0,
-      R"doc(
-A region cut into a grid of boxes (map tiles) on every core.
-
-region: Region, WKT string, or sequence of rings. The grid has `columns` x `rows` tiles over
-bounds=(min, max) (default: the region's bounding box); neighbouring tiles share their side
-exactly. Returns a list of rows (row 0 at the least y), each a list of Regions by column: tile
-(column, row) is clip_polygon(region, box=that tile). threads=0: every core; the results do not
-depend on the thread count. For several grids of one region, prepare it once: BoxClipper.
 )doc");
 }
 
