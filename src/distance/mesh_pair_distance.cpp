@@ -50,6 +50,44 @@ double box_box_lower_bound(const Box3& a, const Box3& b) {
   return ((dx * dx + dy * dy) + dz * dz) * (1 - 8 * kEps);
 }
 
+// B's node box placed by `tb`, from the local box: an interval product per coordinate,
+// widened so that it holds every vertex of the box as tb.apply computes it. Both that and this
+// computation are sums of four terms (three products and t_i): each within gamma_4 < 4.01 eps
+// of s_i = sum_j |r_ij| max(|lo_j|, |hi_j|) + |t_i| from the exact value; the widening and s_i's
+// own rounding fit in 10 eps; 16 denorm_min cover underflowed products. O(1) per node instead
+// of refitting B's hierarchy to every pose: only the nodes the descent meets are placed.
+Box3 placed_box(const Box3& local, const Transform& tb) {
+  const double lo[3] = {local.min.x, local.min.y, local.min.z};
+  const double hi[3] = {local.max.x, local.max.y, local.max.z};
+  const double t[3] = {tb.t.x, tb.t.y, tb.t.z};
+  double mn[3], mx[3];
+  for (int i = 0; i < 3; ++i) {
+    double a = t[i], b = t[i], s = std::fabs(t[i]);
+    for (int j = 0; j < 3; ++j) {
+      const double r = tb.r[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+      const double p = r * lo[j], q = r * hi[j];
+      a += std::min(p, q);
+      b += std::max(p, q);
+      s += std::fabs(r) * std::max(std::fabs(lo[j]), std::fabs(hi[j]));
+    }
+    const double pad = 10 * kEps * s + 16 * std::numeric_limits<double>::denorm_min();
+    mn[i] = a - pad;
+    mx[i] = b + pad;
+  }
+  return {{mn[0], mn[1], mn[2]}, {mx[0], mx[1], mx[2]}};
+}
+
+Box3 triangle_box(const Triangle3& t) {
+  Box3 box;
+  box.expand(t.a);
+  box.expand(t.b);
+  box.expand(t.c);
+  return box;
+}
+
+// Leaves of up to this many triangles have their placed triangles gathered once per leaf pair.
+constexpr std::int32_t kMaxLeaf = 8;
+
 struct PairContender {
   std::int32_t a, b;
   double lo, hi;
@@ -128,29 +166,6 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       }
     }
   }
-  // B's hierarchy refitted to B as placed: the same tree, each box the exact box of its placed
-  // triangles (children come after their parent, so one backward pass). O(n), and no box grows
-  // with the rotation as a mapped local box would.
-  const std::span<const bvh::Node> nb_local = bvh_b_.nodes();
-  thread_local std::vector<Box3> refit;
-  refit.assign(nb_local.size(), Box3{});
-  for (std::size_t k = nb_local.size(); k-- > 0;) {
-    const bvh::Node& node = nb_local[k];
-    Box3 box;
-    if (node.is_leaf()) {
-      for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
-        const TriangleIndices& t =
-            b_.triangles[static_cast<std::size_t>(bvh_b_.items()[static_cast<std::size_t>(i)])];
-        for (const std::int32_t v : t)
-          box.expand(wb[static_cast<std::size_t>(v)]);
-      }
-    } else {
-      box = refit[k + 1];
-      box.expand(refit[static_cast<std::size_t>(node.first)]);
-    }
-    refit[k] = box;
-  }
-
   if (b_solid_) {
     for (const std::int32_t v : a_components_) {
       const Vec3 q = a_world_.vertices[static_cast<std::size_t>(v)];
@@ -159,8 +174,9 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       // The perturbed ray along +x against B as placed, culled by B's placed boxes; a vertex on
       // B's surface is a touching pair, which the descent finds.
       (void)bvh_b_.traverse(
-          [&](const bvh::Node&, std::int32_t index) {
-            const Box3& w = refit[static_cast<std::size_t>(index)];
+          [&](const bvh::Node& node, std::int32_t index) {
+            (void)index;
+            const Box3 w = placed_box(node.box, tb);
             return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
                    q.z <= w.max.z;
           },
@@ -187,17 +203,28 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   // 2. The descent: pairs of nodes, nearer first, pruned against the best upper bound.
   const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b_.nodes();
   const std::span<const std::int32_t> ia = bvh_a_.items(), ib = bvh_b_.items();
-  struct Entry {
+  // B's node boxes as placed: a leaf's is the exact box of its placed triangles (tight where
+  // most pairs are met), an inner node's its local box placed (placed_box).
+  const auto node_box_b = [&](std::int32_t k) {
+    const bvh::Node& node = nb[static_cast<std::size_t>(k)];
+    if (!node.is_leaf()) return placed_box(node.box, tb);
+    Box3 box;
+    for (std::int32_t i = node.first; i < node.first + node.count; ++i)
+      for (const std::int32_t v :
+           b_.triangles[static_cast<std::size_t>(ib[static_cast<std::size_t>(i)])])
+        box.expand(wb[static_cast<std::size_t>(v)]);
+    return box;
+  };
+  struct Entry {  // small: the heap moves entries around
     std::int32_t a, b;
     double lb;
-    Box3 box_b;  // node b placed
   };
   thread_local std::vector<Entry> stack;
   thread_local std::vector<PairContender> contenders;
   stack.clear();
   contenders.clear();
   double best = kInf;
-  const Box3 root_b = refit[0];
+  const Box3 root_b = placed_box(nb[0].box, tb);
   // Best first: the pair of nodes with the least lower bound is expanded next (a min-heap), so
   // that the first leaf pairs reached are near the closest ones and the upper bound falls fast.
   const auto farther = [](const Entry& x, const Entry& y) { return x.lb > y.lb; };
@@ -206,7 +233,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     stack.push_back(e);
     std::push_heap(stack.begin(), stack.end(), farther);
   };
-  push({0, 0, box_box_lower_bound(na[0].box, root_b), root_b});
+  push({0, 0, box_box_lower_bound(na[0].box, root_b)});
   while (!stack.empty()) {
     std::pop_heap(stack.begin(), stack.end(), farther);
     const Entry e = stack.back();
@@ -216,13 +243,34 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     const bvh::Node& p = na[static_cast<std::size_t>(e.a)];
     const bvh::Node& q = nb[static_cast<std::size_t>(e.b)];
     if (p.is_leaf() && q.is_leaf()) {
+      // The triangles' own boxes first: a box gap beyond the best bound rules a pair out for a
+      // few comparisons, before the 15 closest-point computations of its bounds.
+      Triangle3 tris_b[kMaxLeaf];
+      Box3 boxes_b[kMaxLeaf];
+      const std::int32_t count_b = std::min<std::int32_t>(q.count, kMaxLeaf);
+      const Box3 leaf_box_b = node_box_b(e.b);
+      for (std::int32_t t = 0; t < count_b; ++t) {
+        const std::int32_t tbi = ib[static_cast<std::size_t>(q.first + t)];
+        tris_b[t] = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
+        boxes_b[t] = triangle_box(tris_b[t]);
+      }
       for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
         const std::int32_t ta = ia[static_cast<std::size_t>(s)];
         const Triangle3 tri_a =
             triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(ta)]);
+        const Box3 box_a = triangle_box(tri_a);
+        if (box_box_lower_bound(box_a, leaf_box_b) > best) continue;
         for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
           const std::int32_t tbi = ib[static_cast<std::size_t>(t)];
-          const Triangle3 tri_b = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
+          const std::int32_t k = t - q.first;
+          Triangle3 tri_b;
+          if (k < count_b) {
+            if (box_box_lower_bound(box_a, boxes_b[k]) > best) continue;
+            tri_b = tris_b[k];
+          } else {
+            tri_b = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
+          }
+          if (detail::triangle_pair_quick_lower(tri_a, tri_b) > best) continue;
           double lo = 0, hi = 0;
           detail::triangle_pair_bounds(tri_a, tri_b, slack, lo, hi);
           if (lo > best) continue;
@@ -232,21 +280,20 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       }
       continue;
     }
+    const Box3 box_b = node_box_b(e.b);
     const bool split_a =
-        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(e.box_b));
+        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(box_b));
     Entry c1 = e, c2 = e;
     if (split_a) {
       c1.a = e.a + 1;
       c2.a = p.first;
-      c1.lb = box_box_lower_bound(na[static_cast<std::size_t>(c1.a)].box, e.box_b);
-      c2.lb = box_box_lower_bound(na[static_cast<std::size_t>(c2.a)].box, e.box_b);
+      c1.lb = box_box_lower_bound(na[static_cast<std::size_t>(c1.a)].box, box_b);
+      c2.lb = box_box_lower_bound(na[static_cast<std::size_t>(c2.a)].box, box_b);
     } else {
       c1.b = e.b + 1;
       c2.b = q.first;
-      c1.box_b = refit[static_cast<std::size_t>(c1.b)];
-      c2.box_b = refit[static_cast<std::size_t>(c2.b)];
-      c1.lb = box_box_lower_bound(p.box, c1.box_b);
-      c2.lb = box_box_lower_bound(p.box, c2.box_b);
+      c1.lb = box_box_lower_bound(p.box, node_box_b(c1.b));
+      c2.lb = box_box_lower_bound(p.box, node_box_b(c2.b));
     }
     push(c1);
     push(c2);

@@ -75,6 +75,18 @@ void approximate_closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Vec3& c1, 
   c2 = p2 + t * d2;
 }
 
+double triangle_pair_quick_lower(const Triangle3& s, const Triangle3& t) {
+  // w's own rounding does not matter: any direction gives a valid bound.
+  const Vec3 w = ((s.a + s.b) + s.c) - ((t.a + t.b) + t.c);
+  const double amin =
+      std::min({separation_bound(s.a, t.a, w, 1.0), separation_bound(s.b, t.a, w, 1.0),
+                separation_bound(s.c, t.a, w, 1.0)});
+  const double bmax =
+      std::max({separation_bound(t.a, t.a, w, -1.0), separation_bound(t.b, t.a, w, -1.0),
+                separation_bound(t.c, t.a, w, -1.0)});
+  return squared_separation_lower(amin - bmax, dot(w, w));
+}
+
 void triangle_pair_bounds(const Triangle3& s, const Triangle3& t, double slack, double& lo,
                           double& hi) {
   const std::array<Vec3, 3> va{s.a, s.b, s.c}, vb{t.a, t.b, t.c};

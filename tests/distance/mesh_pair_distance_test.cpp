@@ -196,6 +196,32 @@ TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   EXPECT_EQ(pair.distance(t).distance, 2.0);
 }
 
+// Far from the origin the placed boxes of B's hierarchy carry rounding of the size of the
+// gaps: rotated poses that bring a corner of B within 1e-9 .. 1e-13 of A's face (or onto it, as
+// computed) must still find the exact closest pair.
+TEST(MeshPairDistance, RotatedPosesFarFromTheOriginWithGapsAtTheRoundingScale) {
+  const double far = 1e6;
+  const Mesh a = scenes::box_mesh({{far, far, far}, {far + 1, far + 1, far + 1}});
+  const Mesh b = scenes::torus(0.3, 0.1, 12, 6);
+  const MeshPairDistance pair(a, b);
+  int failures = 0;
+  int poses = 0;
+  for (Transform t : scenes::random_poses(12 / kDivisor + 2, 0.0, 17)) {
+    for (const double gap : {1e-9, 1e-11, 1e-13, 0.0}) {
+      // B placed with its lowest x just beyond A's face x = far + 1, opposite A's middle.
+      t.t = {0, far + 0.5, far + 0.5};
+      double min_x = INFINITY;
+      for (const Vec3& v : b.vertices)
+        min_x = std::min(min_x, t.apply(v).x);
+      t.t.x = far + 1 + gap - min_x;
+      check_pose(pair, a, b, t, failures);
+      ++poses;
+    }
+  }
+  EXPECT_GT(poses, 0);
+  EXPECT_EQ(failures, 0);
+}
+
 TEST(MeshPairDistance, BatchOfPosesEqualsSingleQueriesOnAnyThreadCount) {
   const Mesh a = scenes::torus(1.0, 0.35, 24, 12);
   const Mesh b = scenes::torus(0.6, 0.2, 16, 8);
