@@ -85,6 +85,10 @@ Box3 triangle_box(const Triangle3& t) {
   return box;
 }
 
+// B's nodes up to this many levels above their leaves get the exact box of their placed
+// triangles (tight where most pairs are met); higher ones their local box placed.
+constexpr int kExactLevels = 6;
+
 // Leaves of up to this many triangles have their placed triangles gathered once per leaf pair.
 constexpr std::int32_t kMaxLeaf = 8;
 
@@ -121,6 +125,13 @@ MeshPairDistance::MeshPairDistance(const Mesh& a, const Mesh& b,
   b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
   a_components_ = component_vertices(a_world_);
   b_components_ = component_vertices(b_);
+  const std::span<const bvh::Node> nb = bvh_b_.nodes();
+  b_height_.assign(nb.size(), 0);
+  for (std::size_t k = nb.size(); k-- > 0;) {  // children come after their parent
+    if (nb[k].is_leaf()) continue;
+    const int h = 1 + std::max(b_height_[k + 1], b_height_[static_cast<std::size_t>(nb[k].first)]);
+    b_height_[k] = static_cast<std::uint8_t>(std::min(h, 255));
+  }
   a_max_abs_ = max_abs(a_world_);
   b_max_abs_ = max_abs(b_);
 }
@@ -203,11 +214,17 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   // 2. The descent: pairs of nodes, nearer first, pruned against the best upper bound.
   const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b_.nodes();
   const std::span<const std::int32_t> ia = bvh_a_.items(), ib = bvh_b_.items();
-  // B's node boxes as placed: a leaf's is the exact box of its placed triangles (tight where
-  // most pairs are met), an inner node's its local box placed (placed_box).
-  const auto node_box_b = [&](std::int32_t k) {
-    const bvh::Node& node = nb[static_cast<std::size_t>(k)];
-    if (!node.is_leaf()) return placed_box(node.box, tb);
+  // B's node boxes as placed, each computed once per query (a stamp per node): exact (the box of
+  // the placed triangles) up to kExactLevels above the leaves, the local box placed above.
+  thread_local std::vector<Box3> box_cache;
+  thread_local std::vector<std::uint32_t> box_stamp;
+  thread_local std::uint32_t stamp = 0;
+  if (box_stamp.size() < nb.size() || ++stamp == 0) {
+    box_stamp.assign(std::max(box_stamp.size(), nb.size()), 0);
+    box_cache.resize(box_stamp.size());
+    stamp = 1;
+  }
+  const auto leaf_box = [&](const bvh::Node& node) {
     Box3 box;
     for (std::int32_t i = node.first; i < node.first + node.count; ++i)
       for (const std::int32_t v :
@@ -215,7 +232,25 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
         box.expand(wb[static_cast<std::size_t>(v)]);
     return box;
   };
-  struct Entry {  // small: the heap moves entries around
+  const auto node_box_b = [&](auto&& self, std::int32_t k) -> const Box3& {
+    const auto u = static_cast<std::size_t>(k);
+    if (box_stamp[u] == stamp) return box_cache[u];
+    const bvh::Node& node = nb[u];
+    Box3 box;
+    if (node.is_leaf()) {
+      box = leaf_box(node);
+    } else if (b_height_[u] <= kExactLevels) {
+      box = self(self, k + 1);
+      box.expand(self(self, node.first));
+    } else {
+      box = placed_box(node.box, tb);
+    }
+    box_stamp[u] = stamp;
+    box_cache[u] = box;
+    return box_cache[u];
+  };
+  const auto box_b = [&](std::int32_t k) -> const Box3& { return node_box_b(node_box_b, k); };
+  struct Entry {
     std::int32_t a, b;
     double lb;
   };
@@ -225,20 +260,19 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   contenders.clear();
   double best = kInf;
   const Box3 root_b = placed_box(nb[0].box, tb);
-  // Best first: the pair of nodes with the least lower bound is expanded next (a min-heap), so
-  // that the first leaf pairs reached are near the closest ones and the upper bound falls fast.
-  const auto farther = [](const Entry& x, const Entry& y) { return x.lb > y.lb; };
+  // Depth first, the nearer child pair first (pushed last), so that the first leaf pairs reached
+  // are near the closest ones and the upper bound falls fast. A best-first heap visits fewer
+  // pairs (22k against 35k per pose on the armadillo bench) but its upkeep costs more than they
+  // save (4.6 against 3.4 ms per pose).
   auto push = [&](const Entry& e) {
     if (e.lb > best) return;
     stack.push_back(e);
-    std::push_heap(stack.begin(), stack.end(), farther);
   };
   push({0, 0, box_box_lower_bound(na[0].box, root_b)});
   while (!stack.empty()) {
-    std::pop_heap(stack.begin(), stack.end(), farther);
     const Entry e = stack.back();
     stack.pop_back();
-    if (e.lb > best) break;  // every other entry is farther still
+    if (e.lb > best) continue;  // best fell since it was pushed
     ++out.node_pairs;
     const bvh::Node& p = na[static_cast<std::size_t>(e.a)];
     const bvh::Node& q = nb[static_cast<std::size_t>(e.b)];
@@ -248,7 +282,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       Triangle3 tris_b[kMaxLeaf];
       Box3 boxes_b[kMaxLeaf];
       const std::int32_t count_b = std::min<std::int32_t>(q.count, kMaxLeaf);
-      const Box3 leaf_box_b = node_box_b(e.b);
+      const Box3& leaf_box_b = box_b(e.b);
       for (std::int32_t t = 0; t < count_b; ++t) {
         const std::int32_t tbi = ib[static_cast<std::size_t>(q.first + t)];
         tris_b[t] = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
@@ -280,21 +314,22 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       }
       continue;
     }
-    const Box3 box_b = node_box_b(e.b);
+    const Box3& placed_b = box_b(e.b);
     const bool split_a =
-        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(box_b));
+        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(placed_b));
     Entry c1 = e, c2 = e;
     if (split_a) {
       c1.a = e.a + 1;
       c2.a = p.first;
-      c1.lb = box_box_lower_bound(na[static_cast<std::size_t>(c1.a)].box, box_b);
-      c2.lb = box_box_lower_bound(na[static_cast<std::size_t>(c2.a)].box, box_b);
+      c1.lb = box_box_lower_bound(na[static_cast<std::size_t>(c1.a)].box, placed_b);
+      c2.lb = box_box_lower_bound(na[static_cast<std::size_t>(c2.a)].box, placed_b);
     } else {
       c1.b = e.b + 1;
       c2.b = q.first;
-      c1.lb = box_box_lower_bound(p.box, node_box_b(c1.b));
-      c2.lb = box_box_lower_bound(p.box, node_box_b(c2.b));
+      c1.lb = box_box_lower_bound(p.box, box_b(c1.b));
+      c2.lb = box_box_lower_bound(p.box, box_b(c2.b));
     }
+    if (c1.lb < c2.lb) std::swap(c1, c2);  // the nearer pair on top
     push(c1);
     push(c2);
   }

@@ -121,6 +121,8 @@ class MeshPairDistance {
   inside::MeshIndex index_a_;
   std::vector<std::int32_t> a_components_;  // one vertex of each connected component
   std::vector<std::int32_t> b_components_;
+  // Per node of B's hierarchy: levels down to its deepest leaf, capped (0 for a leaf).
+  std::vector<std::uint8_t> b_height_;
   double a_max_abs_ = 0.0;
   double b_max_abs_ = 0.0;
 };
