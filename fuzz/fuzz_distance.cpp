@@ -3,12 +3,17 @@
 // fuzz_support.h), and a point and a segment in the plane. Claims checked: MeshDistance's
 // distance, closest point and closest triangle (ties to the lowest) are the oracle's rounded
 // once; `within` is exact at the rounded distance and its neighbours; point_triangle agrees;
-// the 2D segment distance is the oracle's rounded.
+// the 2D segment distance is the oracle's rounded. Then two meshes of 1-3 triangles, B placed by
+// a transform (rotation entries from a small set, any translation): MeshPairDistance's distance
+// is the rounded exact least triangle-pair distance, its triangles the oracle's (ties to the
+// lowest of A, then of B), and its `within` exact at the distance and its neighbours.
 #include <cfloat>
 #include <cmath>
 
 #include "contain/distance/mesh_distance.h"
+#include "contain/distance/mesh_pair_distance.h"
 #include "contain/distance/point_primitive.h"
+#include "distance/mesh_oracle.h"
 #include "fuzz_support.h"
 #include "support/exact_distance.h"
 
@@ -64,5 +69,44 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const test::ExactClosest2 c2 = test::exact_closest(q2, Segment2{a, b});
   FUZZ_CHECK(distance::point_segment(q2, Segment2{a, b}).distance ==
              test::nearest_double_sqrt(c2.squared_distance));
+
+  // Two small meshes, B placed.
+  const auto small_mesh = [&](int count) {
+    std::vector<Vec3> corners;
+    std::vector<TriangleIndices> faces;
+    for (int i = 0; i < 3 * count; ++i) {
+      const std::uint8_t how = in.byte();
+      corners.push_back((i > 0 && how % 5 == 0) ? corners[how / 5 % static_cast<unsigned>(i)]
+                                                : in.point3());
+    }
+    for (int i = 0; i < count; ++i)
+      faces.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    return Mesh::from_arrays(corners, faces);
+  };
+  const auto ma = small_mesh(1 + in.byte() % 3);
+  const auto mb = small_mesh(1 + in.byte() % 3);
+  FUZZ_CHECK(static_cast<bool>(ma) && static_cast<bool>(mb));
+  constexpr double kEntries[] = {0.0, 1.0, -1.0, 0.5, -0.5, 0.6, -0.8, 0x1p-30};
+  Transform tb;
+  for (auto& row : tb.r)
+    for (double& x : row)
+      x = kEntries[in.byte() % 8];
+  tb.t = in.point3();
+  Mesh placed = *mb;
+  for (Vec3& x : placed.vertices) {
+    x = tb.apply(x);
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return 0;
+  }
+  const test::PairOracle want = test::pair_oracle(*ma, placed);
+  const distance::MeshPairDistance pair(*ma, *mb);
+  const distance::PairDistance3 d = pair.distance(tb);
+  FUZZ_CHECK(d.distance == test::nearest_double_sqrt(want.d2));
+  FUZZ_CHECK(d.triangle_a == want.a && d.triangle_b == want.b);
+  for (const double x :
+       {d.distance, std::nextafter(d.distance, 0.0), std::nextafter(d.distance, DBL_MAX)}) {
+    if (!std::isfinite(x)) continue;
+    const mpq_class q(x);
+    FUZZ_CHECK(pair.within(tb, x) == (want.d2 <= q * q));
+  }
   return 0;
 }
