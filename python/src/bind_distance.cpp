@@ -1,5 +1,5 @@
-// contain.MeshDistance, contain.RegionDistance, contain.MeshPairDistance: distances, closest
-// points and features as numpy arrays, computed without the GIL on all cores.
+// contain.MeshDistance, contain.RegionDistance, contain.MeshPairDistance, contain.ConvexDistance:
+// distances, closest points and features as numpy arrays, computed without the GIL on all cores.
 
 #include <pybind11/stl.h>
 
@@ -9,6 +9,7 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/distance/convex_distance.h"
 #include "contain/distance/mesh_distance.h"
 #include "contain/distance/mesh_pair_distance.h"
 #include "contain/distance/region_distance.h"
@@ -35,8 +36,10 @@ py::array_t<bool> booleans(const std::vector<std::uint8_t>& yes) {
   return out;
 }
 
-py::dict mesh_query(const distance::MeshDistance& prepared, const py::handle& points,
-                    bool signed_distance, bool closest, int threads) {
+// MeshDistance and ConvexDistance alike (the feature is a triangle, or a face).
+template <class Prepared>
+py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool signed_distance,
+                    bool closest, int threads) {
   const Doubles array = as_matrix(points, 3, "points");
   require_finite(array, "points", threads);
   const std::span<const Vec3> p = as_vec3(array);
@@ -114,6 +117,33 @@ std::vector<Transform> poses_of(const py::handle& object) {
         take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
   }
   return poses;
+}
+
+py::dict pair_answers(const std::vector<distance::PairDistance3>& r) {
+  std::vector<double> d(r.size()), pa(3 * r.size()), pb(3 * r.size());
+  std::vector<std::int32_t> ta(r.size()), tb(r.size());
+  py::list contact;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    d[i] = r[i].distance;
+    pa[3 * i] = r[i].point_a.x;
+    pa[3 * i + 1] = r[i].point_a.y;
+    pa[3 * i + 2] = r[i].point_a.z;
+    pb[3 * i] = r[i].point_b.x;
+    pb[3 * i + 1] = r[i].point_b.y;
+    pb[3 * i + 2] = r[i].point_b.z;
+    ta[i] = r[i].triangle_a;
+    tb[i] = r[i].triangle_b;
+    contact.append(to_string(r[i].contact));
+  }
+  const auto n = static_cast<py::ssize_t>(r.size());
+  py::dict out;
+  out["distance"] = owned(std::move(d));
+  out["point_a"] = to_numpy(std::move(pa), n, 3);
+  out["point_b"] = to_numpy(std::move(pb), n, 3);
+  out["triangle_a"] = owned(std::move(ta));
+  out["triangle_b"] = owned(std::move(tb));
+  out["contact"] = contact;
+  return out;
 }
 
 constexpr const char* kQueryDoc = R"doc(
@@ -256,30 +286,7 @@ placed by a pose per query. Exact on the transformed doubles; distances rounded 
               py::gil_scoped_release release;
               pair.distance(t, r, {.threads = threads});
             }
-            std::vector<double> d(r.size()), pa(3 * r.size()), pb(3 * r.size());
-            std::vector<std::int32_t> ta(r.size()), tb(r.size());
-            py::list contact;
-            for (std::size_t i = 0; i < r.size(); ++i) {
-              d[i] = r[i].distance;
-              pa[3 * i] = r[i].point_a.x;
-              pa[3 * i + 1] = r[i].point_a.y;
-              pa[3 * i + 2] = r[i].point_a.z;
-              pb[3 * i] = r[i].point_b.x;
-              pb[3 * i + 1] = r[i].point_b.y;
-              pb[3 * i + 2] = r[i].point_b.z;
-              ta[i] = r[i].triangle_a;
-              tb[i] = r[i].triangle_b;
-              contact.append(to_string(r[i].contact));
-            }
-            const auto n = static_cast<py::ssize_t>(r.size());
-            py::dict out;
-            out["distance"] = owned(std::move(d));
-            out["point_a"] = to_numpy(std::move(pa), n, 3);
-            out["point_b"] = to_numpy(std::move(pb), n, 3);
-            out["triangle_a"] = owned(std::move(ta));
-            out["triangle_b"] = owned(std::move(tb));
-            out["contact"] = contact;
-            return out;
+            return pair_answers(r);
           },
           "poses"_a, py::kw_only(), "threads"_a = 0,
           "Distances for each pose of B: a dict of arrays 'distance' (N,), 'point_a', 'point_b' "
@@ -299,6 +306,82 @@ placed by a pose per query. Exact on the transformed doubles; distances rounded 
           },
           "poses"_a, "d"_a, py::kw_only(), "threads"_a = 0,
           "(N,) bool: is the distance at each pose at most d? Exact.");
+
+  py::class_<distance::ConvexDistance>(m, "ConvexDistance", R"doc(
+A convex polyhedron (given by a convex mesh) prepared for distance queries: points as
+MeshDistance answers them on its faces (signs from the exact convex containment), and the
+distance between two convex solids under poses of the second, GJK-guided and decided exactly.
+
+    >>> box = contain.ConvexDistance(contain.ConvexPolyhedron(cube_mesh))
+    >>> box.query([[2, 0.5, 0.5]], signed=True)["distance"]        # array([1.])
+    >>> box.pair_distance(other, poses)["distance"]                 # (N,) per pose of other
+)doc")
+      .def(py::init([](const py::handle& convex) {
+             const ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
+             py::gil_scoped_release release;
+             return take(distance::ConvexDistance::prepare(polyhedron));
+           }),
+           "convex"_a,
+           "Prepares a contain.ConvexPolyhedron or a closed convex mesh (a polyhedron given only "
+           "by planes has no faces to measure to: ContainError).")
+      .def(
+          "query",
+          [](const distance::ConvexDistance& prepared, const ArrayLike& points,
+             bool signed_distance, bool closest, int threads) {
+            return mesh_query(prepared, points.object, signed_distance, closest, threads);
+          },
+          "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
+          query3.c_str())
+      .def(
+          "within",
+          [](const distance::ConvexDistance& prepared, const ArrayLike& points, double d) {
+            const Doubles array = as_matrix(points.object, 3, "points");
+            require_finite(array, "points", 1);
+            const std::span<const Vec3> p = as_vec3(array);
+            std::vector<std::uint8_t> yes(p.size());
+            {
+              py::gil_scoped_release release;
+              for (std::size_t i = 0; i < p.size(); ++i)
+                yes[i] = prepared.within(p[i], d) ? 1 : 0;
+            }
+            return booleans(yes);
+          },
+          "points"_a, "d"_a, "(N,) bool: is each point's distance to the surface at most d? Exact.")
+      .def(
+          "pair_distance",
+          [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
+             const ArrayLike& poses) {
+            const std::vector<Transform> t = poses_of(poses.object);
+            std::vector<distance::PairDistance3> r(t.size());
+            {
+              py::gil_scoped_release release;
+              for (std::size_t i = 0; i < t.size(); ++i)
+                r[i] = distance::convex_convex(a, b, t[i]);
+            }
+            return pair_answers(r);
+          },
+          "other"_a, "poses"_a,
+          "Distances between this solid and `other` placed by each pose: the dict of "
+          "MeshPairDistance.distance ('triangle_a', 'triangle_b' are face indices).")
+      .def(
+          "pair_within",
+          [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
+             const ArrayLike& poses, double d) {
+            const std::vector<Transform> t = poses_of(poses.object);
+            std::vector<std::uint8_t> yes(t.size());
+            {
+              py::gil_scoped_release release;
+              for (std::size_t i = 0; i < t.size(); ++i)
+                yes[i] = distance::convex_convex_within(a, b, t[i], d) ? 1 : 0;
+            }
+            return booleans(yes);
+          },
+          "other"_a, "poses"_a, "d"_a,
+          "(N,) bool: is the distance to `other` at each pose at most d? Exact.")
+      .def(
+          "__len__",
+          [](const distance::ConvexDistance& prepared) { return prepared.faces().size(); },
+          "Number of faces.");
 }
 
 }  // namespace contain::python

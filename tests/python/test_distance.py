@@ -51,3 +51,29 @@ def test_mesh_pair_distance_poses_touching_and_nesting():
     assert r["contact"] == ["separate", "touching", "vertex_of_b_in_a"]
     assert list(pair.within(poses, 1.5)) == [False, True, True]
     assert r["point_a"].shape == (3, 3)
+
+
+def test_convex_distance_points_pairs_under_poses_and_planes_refused():
+    box = contain.ConvexDistance(contain.ConvexPolyhedron(cube()))
+    assert len(box) == 12
+    r = box.query([[2, 0.5, 0.5], [0.5, 0.5, 0.25], [1, 1, 1]], signed=True)
+    assert list(r["distance"]) == [1.0, -0.25, 0.0]
+    assert list(r["location"]) == [-1, 1, 0]
+    # The same answers as the mesh query on the same faces.
+    mesh = contain.MeshDistance(cube()).query([[2, 0.5, 0.5], [3, 2, -1]])
+    got = box.query([[2, 0.5, 0.5], [3, 2, -1]])
+    assert np.array_equal(mesh["distance"], got["distance"])
+    assert np.array_equal(mesh["triangle"], got["triangle"])
+    assert box.within([[2, 0.5, 0.5]], 1.0)[0] and not box.within([[2, 0.5, 0.5]], 0.5)[0]
+    poses = np.array([[1, 0, 0, 3, 0, 1, 0, 0, 0, 0, 1, 0],
+                      [1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0],
+                      [0.5, 0, 0, 0.25, 0, 0.5, 0, 0.25, 0, 0, 0.5, 0.25]], dtype=float)
+    pair = box.pair_distance(box, poses)
+    # Exactly MeshPairDistance's answers on the same solids.
+    meshes = contain.MeshPairDistance(cube(), cube()).distance(poses)
+    assert list(pair["distance"]) == list(meshes["distance"]) == [2.0, 0.0, 0.0]
+    assert pair["contact"][0] == "separate" and pair["contact"][1] == "touching"
+    assert list(box.pair_within(box, poses, 1.5)) == [False, True, True]
+    with pytest.raises(contain.ContainError):
+        contain.ConvexDistance(contain.ConvexPolyhedron(
+            [[1, 0, 0, 0], [-1, 0, 0, 1], [0, 1, 0, 0], [0, -1, 0, 1], [0, 0, 1, 0], [0, 0, -1, 1]]))
