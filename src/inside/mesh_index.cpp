@@ -25,42 +25,6 @@ namespace contain::inside {
 
 namespace {
 
-// Grid lines from lo to hi (both exact), n cells, monotone; no overflow for huge coordinates.
-std::vector<double> grid_lines(double lo, double hi, int n) {
-  std::vector<double> lines(static_cast<std::size_t>(n) + 1);
-  lines.front() = lo;
-  for (int i = 1; i < n; ++i) {
-    const double t = static_cast<double>(i) / n;
-    const double v = lo * (1.0 - t) + hi * t;
-    lines[static_cast<std::size_t>(i)] = std::clamp(v, lines[static_cast<std::size_t>(i) - 1], hi);
-  }
-  lines.back() = hi;
-  return lines;
-}
-
-int guess_cell(double v, double origin, double scale, int n) {
-  const double g = (0.5 * v - 0.5 * origin) * scale;
-  if (!(g >= 0.0)) return 0;
-  if (g >= static_cast<double>(n)) return n - 1;
-  return static_cast<int>(g);
-}
-
-// The cell i with lines[i] <= v < lines[i + 1] (the last cell closed); v within the lines.
-int exact_cell(const std::vector<double>& lines, int n, double v, int guess) {
-  const auto i = static_cast<std::size_t>(guess);
-  if (lines[i] <= v && (guess + 1 == n || v < lines[i + 1])) return guess;
-  const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, v);
-  return static_cast<int>(it - (lines.begin() + 1));
-}
-
-// The cells [first, last] whose closed spans meet the closed interval [lo, hi].
-std::pair<int, int> cell_range(const std::vector<double>& lines, int n, double lo, double hi) {
-  const auto first = std::lower_bound(lines.begin() + 1, lines.end(), lo) - (lines.begin() + 1);
-  const auto last = (std::upper_bound(lines.begin(), lines.end() - 1, hi) - lines.begin()) - 1;
-  return {static_cast<int>(std::min<std::ptrdiff_t>(first, n - 1)),
-          static_cast<int>(std::max<std::ptrdiff_t>(last, 0))};
-}
-
 // A point strictly below `hi` in [lo, hi) when the span is not empty.
 double inner_point(double lo, double hi) {
   const double m = 0.5 * lo + 0.5 * hi;
@@ -235,17 +199,12 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
       *largest -= 1;
     }
   }
+  x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
+  y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
+  z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
   nx_ = n[0];
   ny_ = n[1];
   nz_ = n[2];
-  xs_ = grid_lines(bounds_.min.x, bounds_.max.x, nx_);
-  ys_ = grid_lines(bounds_.min.y, bounds_.max.y, ny_);
-  zs_ = grid_lines(bounds_.min.z, bounds_.max.z, nz_);
-  auto scale = [](double h, int cells) {
-    const double s = h > 0.0 ? cells / h : 0.0;
-    return std::isfinite(s) ? s : 0.0;
-  };
-  scale_ = {scale(half[0], nx_), scale(half[1], ny_), scale(half[2], nz_)};
   const std::size_t cell_count =
       static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
   stats_.cells = cell_count;
@@ -260,9 +219,9 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
     for (std::size_t t = 0; t < tris_.size(); ++t) {
       const Vec3 lo = boxes[t].min;
-      const auto i = static_cast<std::size_t>(cell_range(xs_, nx_, lo.x, lo.x).first);
-      const auto j = static_cast<std::size_t>(cell_range(ys_, ny_, lo.y, lo.y).first);
-      const auto k = static_cast<std::size_t>(cell_range(zs_, nz_, lo.z, lo.z).first);
+      const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
+      const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
+      const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
       order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
                   static_cast<std::uint32_t>(t)};
     }
@@ -280,9 +239,9 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   std::vector<std::uint32_t> count(cell_count + 1, 0);
   auto for_cells = [&](std::size_t t, auto&& f) {
     const Box3& b = boxes[t];
-    const auto [i0, i1] = cell_range(xs_, nx_, b.min.x, b.max.x);
-    const auto [j0, j1] = cell_range(ys_, ny_, b.min.y, b.max.y);
-    const auto [k0, k1] = cell_range(zs_, nz_, b.min.z, b.max.z);
+    const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
+    const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
+    const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
     // A triangle whose box spans several cells is tested against each cell's box along its
     // normal, conservatively (separated_by_plane): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
@@ -291,8 +250,9 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
         for (int i = i0; i <= i1; ++i) {
           const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j),
                      ku = static_cast<std::size_t>(k);
-          if (big && separated_by_plane(tris_[t], {{xs_[iu], ys_[ju], zs_[ku]},
-                                                   {xs_[iu + 1], ys_[ju + 1], zs_[ku + 1]}})) {
+          if (big &&
+              separated_by_plane(tris_[t], {{x_.line(i), y_.line(j), z_.line(k)},
+                                            {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
             continue;
           }
           f((ku * static_cast<std::size_t>(ny_) + ju) * static_cast<std::size_t>(nx_) + iu);
@@ -325,17 +285,15 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
 
   // 3. Empty cells, right to left along each row.
   for (int k = 0; k < nz_; ++k) {
-    const double z =
-        inner_point(zs_[static_cast<std::size_t>(k)], zs_[static_cast<std::size_t>(k) + 1]);
+    const double z = inner_point(z_.line(k), z_.line(k + 1));
     for (int j = 0; j < ny_; ++j) {
-      const double y =
-          inner_point(ys_[static_cast<std::size_t>(j)], ys_[static_cast<std::size_t>(j) + 1]);
+      const double y = inner_point(y_.line(j), y_.line(j + 1));
       const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
                                static_cast<std::size_t>(j)) *
                               static_cast<std::size_t>(nx_);
       for (int i = nx_ - 1; i >= 0; --i) {
         if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
-        const Vec3 m{xs_[static_cast<std::size_t>(i)], y, z};
+        const Vec3 m{x_.line(i), y, z};
         const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
         state_[row + static_cast<std::size_t>(i)] = odd ? 1 : 0;
       }
@@ -366,8 +324,8 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
     // (no hit can lie in its closed box).
     const bool test_upper = i + 1 < nx_ && state_[row + static_cast<std::size_t>(i) + 1] == 2;
-    const Vec3 lower{xs_[static_cast<std::size_t>(i)], q.y, q.z};
-    const Vec3 upper{xs_[static_cast<std::size_t>(i) + 1], q.y, q.z};
+    const Vec3 lower{x_.line(i), q.y, q.z};
+    const Vec3 upper{x_.line(i + 1), q.y, q.z};
     const bool from_q = q_in_first && i == first;
     for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
       const CellRef& ref = refs_[r];
@@ -394,9 +352,9 @@ Location MeshIndex::locate(Vec3 p) const {
 
 Location MeshIndex::locate_exact(Vec3 p) const {
   if (state_.empty() || !bounds_.contains(p)) return Location::outside;
-  const int i = exact_cell(xs_, nx_, p.x, guess_cell(p.x, bounds_.min.x, scale_.x, nx_));
-  const int j = exact_cell(ys_, ny_, p.y, guess_cell(p.y, bounds_.min.y, scale_.y, ny_));
-  const int k = exact_cell(zs_, nz_, p.z, guess_cell(p.z, bounds_.min.z, scale_.z, nz_));
+  const int i = x_.cell_of(p.x);
+  const int j = y_.cell_of(p.y);
+  const int k = z_.cell_of(p.z);
   const std::size_t row =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
       static_cast<std::size_t>(nx_);
@@ -445,9 +403,9 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
     std::array<std::ptrdiff_t, kAhead> guessed{};
     auto guess = [&](Vec3 p) -> std::ptrdiff_t {
       if (!bounds_.contains(p)) return -1;
-      const int i = guess_cell(p.x, bounds_.min.x, scale_.x, nx_);
-      const int j = guess_cell(p.y, bounds_.min.y, scale_.y, ny_);
-      const int k = guess_cell(p.z, bounds_.min.z, scale_.z, nz_);
+      const int i = x_.guess(p.x);
+      const int j = y_.guess(p.y);
+      const int k = z_.guess(p.z);
       return (static_cast<std::ptrdiff_t>(k) * ny_ + j) * nx_ + i;
     };
     // The surface cell of the guessed cell of point q, or -1.

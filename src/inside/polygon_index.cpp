@@ -22,44 +22,6 @@ namespace {
 
 using detail::Edge;
 
-// Grid lines from lo to hi (both exact), n cells, monotone; no overflow for huge coordinates.
-std::vector<double> grid_lines(double lo, double hi, int n) {
-  std::vector<double> lines(static_cast<std::size_t>(n) + 1);
-  lines.front() = lo;
-  for (int i = 1; i < n; ++i) {
-    const double t = static_cast<double>(i) / n;
-    const double v = lo * (1.0 - t) + hi * t;
-    lines[static_cast<std::size_t>(i)] = std::clamp(v, lines[static_cast<std::size_t>(i) - 1], hi);
-  }
-  lines.back() = hi;
-  return lines;
-}
-
-// The cell i of `lines` (n cells) holding v: lines[i] <= v < lines[i + 1], the last cell closed.
-// `guess` comes from floating point and is usually right.
-int exact_cell(const std::vector<double>& lines, int n, double v, int guess) {
-  const auto i = static_cast<std::size_t>(guess);
-  if (lines[i] <= v && (guess + 1 == n || v < lines[i + 1])) return guess;
-  const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, v);
-  return static_cast<int>(it - (lines.begin() + 1));
-}
-
-int guess_cell(double v, double origin, double scale, int n) {
-  const double g = (0.5 * v - 0.5 * origin) * scale;
-  if (!(g >= 0.0)) return 0;  // also NaN
-  if (g >= static_cast<double>(n)) return n - 1;
-  return static_cast<int>(g);
-}
-
-// The cells [first, last] of `lines` whose closed spans meet the closed interval [lo, hi].
-std::pair<int, int> cell_range(const std::vector<double>& lines, int n, double lo, double hi) {
-  // first: the first cell whose upper line is >= lo; last: the last cell whose lower line <= hi.
-  const auto first = std::lower_bound(lines.begin() + 1, lines.end(), lo) - (lines.begin() + 1);
-  const auto last = (std::upper_bound(lines.begin(), lines.end() - 1, hi) - lines.begin()) - 1;
-  return {static_cast<int>(std::min<std::ptrdiff_t>(first, n - 1)),
-          static_cast<int>(std::max<std::ptrdiff_t>(last, 0))};
-}
-
 // A conservative x-range of the edge within y in [y0, y1] (a sub-range of its y-extent).
 std::pair<double, double> x_range_in_rows(const Edge& e, double y0, double y1) {
   const double minx = std::min(e.a.x, e.b.x), maxx = std::max(e.a.x, e.b.x);
@@ -157,15 +119,11 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
       ny = std::ceil(ny / 2);
     }
   }
-  nx_ = static_cast<int>(nx);
-  ny_ = static_cast<int>(ny);
-  xs_ = grid_lines(bounds_.min.x, bounds_.max.x, nx_);
-  ys_ = grid_lines(bounds_.min.y, bounds_.max.y, ny_);
-  scale_x_ = half_w > 0.0 ? nx_ / half_w : 0.0;
-  scale_y_ = half_h > 0.0 ? ny_ / half_h : 0.0;
-  if (!std::isfinite(scale_x_)) scale_x_ = 0.0;
-  if (!std::isfinite(scale_y_)) scale_y_ = 0.0;
-  const std::size_t cell_count = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  x_ = GridAxis(bounds_.min.x, bounds_.max.x, static_cast<int>(nx));
+  y_ = GridAxis(bounds_.min.y, bounds_.max.y, static_cast<int>(ny));
+  const int columns = x_.cells(), rows = y_.cells();
+  const std::span<const double> xs = x_.lines(), ys = y_.lines();
+  const std::size_t cell_count = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
   stats_.cells = cell_count;
 
   // 2. Conservative rasterisation into closed cells: (cell, edge) pairs, then bucketed by cell.
@@ -173,15 +131,15 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const Edge& e = edges[k];
     const double ylo = std::min(e.a.y, e.b.y), yhi = std::max(e.a.y, e.b.y);
-    const auto [j0, j1] = cell_range(ys_, ny_, ylo, yhi);
+    const auto [j0, j1] = y_.cells_meeting(ylo, yhi);
     for (int j = j0; j <= j1; ++j) {
-      const double y0 = std::max(ys_[static_cast<std::size_t>(j)], ylo);
-      const double y1 = std::min(ys_[static_cast<std::size_t>(j) + 1], yhi);
+      const double y0 = std::max(ys[static_cast<std::size_t>(j)], ylo);
+      const double y1 = std::min(ys[static_cast<std::size_t>(j) + 1], yhi);
       if (y0 > y1) continue;
       const auto [xl, xr] = x_range_in_rows(e, y0, y1);
-      const auto [i0, i1] = cell_range(xs_, nx_, xl, xr);
+      const auto [i0, i1] = x_.cells_meeting(xl, xr);
       for (int i = i0; i <= i1; ++i) {
-        pair_cell.push_back(static_cast<std::uint32_t>(j * nx_ + i));
+        pair_cell.push_back(static_cast<std::uint32_t>(j * columns + i));
         pair_edge.push_back(static_cast<std::uint32_t>(k));
       }
     }
@@ -205,59 +163,59 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   // corner[j * nx + (k - 1)] is the lower-right corner of cell (k - 1, j).
   std::vector<int> corner(cell_count, 0);
   {
-    std::vector<int> diff(static_cast<std::size_t>(ny_) + 1);
-    std::vector<std::vector<std::pair<int, int>>> by_line(static_cast<std::size_t>(nx_));
+    std::vector<int> diff(static_cast<std::size_t>(rows) + 1);
+    std::vector<std::vector<std::pair<int, int>>> by_line(static_cast<std::size_t>(columns));
     for (const Edge& e : edges) {
       const Vec2 l = e.a.x <= e.b.x ? e.a : e.b;
       const Vec2 r = e.a.x <= e.b.x ? e.b : e.a;
       if (l.x == r.x) continue;  // vertical edges cross no line x = X+
       const int dir = e.a.x < e.b.x ? 1 : -1;
       // lines with l.x <= X_k < r.x
-      const auto k0 = std::lower_bound(xs_.begin() + 1, xs_.end() - 1, l.x) - xs_.begin();
-      const auto k1 = std::lower_bound(xs_.begin() + 1, xs_.end() - 1, r.x) - xs_.begin();
+      const auto k0 = std::lower_bound(xs.begin() + 1, xs.end() - 1, l.x) - xs.begin();
+      const auto k1 = std::lower_bound(xs.begin() + 1, xs.end() - 1, r.x) - xs.begin();
       for (auto k = k0; k < k1; ++k) {
-        const double x = xs_[static_cast<std::size_t>(k)];
+        const double x = xs[static_cast<std::size_t>(k)];
         // the first corner row the edge passes below (monotone in j)
-        int lo = 0, hi = ny_;
+        int lo = 0, hi = rows;
         while (lo < hi) {
           const int mid = (lo + hi) / 2;
-          if (detail::passes_below(l, r, x, ys_[static_cast<std::size_t>(mid)])) {
+          if (detail::passes_below(l, r, x, ys[static_cast<std::size_t>(mid)])) {
             hi = mid;
           } else {
             lo = mid + 1;
           }
         }
-        if (lo < ny_) by_line[static_cast<std::size_t>(k)].push_back({lo, dir});
+        if (lo < rows) by_line[static_cast<std::size_t>(k)].push_back({lo, dir});
       }
     }
-    for (int k = 1; k < nx_; ++k) {
+    for (int k = 1; k < columns; ++k) {
       std::fill(diff.begin(), diff.end(), 0);
       for (const auto& [row, dir] : by_line[static_cast<std::size_t>(k)]) {
         diff[static_cast<std::size_t>(row)] += dir;
       }
       int w = 0;
-      for (int j = 0; j < ny_; ++j) {
+      for (int j = 0; j < rows; ++j) {
         w += diff[static_cast<std::size_t>(j)];
-        corner[static_cast<std::size_t>(j * nx_ + (k - 1))] = w;
+        corner[static_cast<std::size_t>(j * columns + (k - 1))] = w;
       }
     }
   }
 
   // 4. Cells.
   cells_.assign(cell_count, 0);
-  for (int j = 0; j < ny_; ++j) {
-    for (int i = 0; i < nx_; ++i) {
-      const auto c = static_cast<std::size_t>(j * nx_ + i);
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < columns; ++i) {
+      const auto c = static_cast<std::size_t>(j * columns + i);
       const int w = corner[c];
       if (start[c] == start[c + 1]) {
         cells_[c] = is_filled(fill_, w) ? 1u : 0u;
         continue;
       }
       EdgeCell cell{start[c], start[c + 1], static_cast<std::uint32_t>(side_edges_.size()), 0, w};
-      if (i + 1 < nx_) {
-        const double x = xs_[static_cast<std::size_t>(i) + 1];
-        const double y0 = ys_[static_cast<std::size_t>(j)];
-        const double y1 = ys_[static_cast<std::size_t>(j) + 1];
+      if (i + 1 < columns) {
+        const double x = xs[static_cast<std::size_t>(i) + 1];
+        const double y0 = ys[static_cast<std::size_t>(j)];
+        const double y1 = ys[static_cast<std::size_t>(j) + 1];
         for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
           const CellEdge& e = edges_[q];
           const Vec2 l = e.a.x <= e.b.x ? e.a : e.b;
@@ -275,29 +233,21 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   stats_.edge_cells = edge_cells_.size();
 }
 
-int PolygonIndex::column_of(double x) const {
-  return exact_cell(xs_, nx_, x, guess_cell(x, bounds_.min.x, scale_x_, nx_));
-}
-
-int PolygonIndex::row_of(double y) const {
-  return exact_cell(ys_, ny_, y, guess_cell(y, bounds_.min.y, scale_y_, ny_));
-}
-
 Location PolygonIndex::locate(Vec2 point) const {
   if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
         point.y <= bounds_.max.y)) {
     return Location::outside;
   }
-  const int i = column_of(point.x);
-  const int j = row_of(point.y);
-  const std::uint32_t code = cells_[static_cast<std::size_t>(j * nx_ + i)];
+  const int i = x_.cell_of(point.x);
+  const int j = y_.cell_of(point.y);
+  const std::uint32_t code = cells_[static_cast<std::size_t>(j * x_.cells() + i)];
   if (code < 2) return code == 1 ? Location::inside : Location::outside;
   return locate_in_edge_cell(point, i, edge_cells_[code - 2]);
 }
 
 Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const {
   // winding(p+) = winding(t+) + crossings of t -> s up the right side + sum c(p) - c(s).
-  const double x1 = xs_[static_cast<std::size_t>(column) + 1];
+  const double x1 = x_.line(column + 1);
   int winding = cell.corner_winding;
   for (std::uint32_t q = cell.side_begin; q < cell.side_end; ++q) {
     const SideEdge& e = side_edges_[q];
@@ -325,9 +275,9 @@ std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
         point.y <= bounds_.max.y)) {
     return -1;
   }
-  const int i = guess_cell(point.x, bounds_.min.x, scale_x_, nx_);
-  const int j = guess_cell(point.y, bounds_.min.y, scale_y_, ny_);
-  return static_cast<std::ptrdiff_t>(j) * nx_ + i;
+  const int i = x_.guess(point.x);
+  const int j = y_.guess(point.y);
+  return static_cast<std::ptrdiff_t>(j) * x_.cells() + i;
 }
 
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,

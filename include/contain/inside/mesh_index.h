@@ -13,6 +13,7 @@
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
 #include "contain/inside/fast_winding_number.h"
+#include "contain/inside/grid_axis.h"
 #include "contain/predicates/sign.h"
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/mesh_validation.h"
@@ -137,9 +138,8 @@ class MeshIndex {
   Box3 bounds_;
   std::vector<Tri> tris_;
   // Grid (exact regime).
-  int nx_ = 0, ny_ = 0, nz_ = 0;
-  Vec3 scale_{};  // cells per half unit along each axis, for the guess
-  std::vector<double> xs_, ys_, zs_;
+  GridAxis x_, y_, z_;
+  int nx_ = 0, ny_ = 0, nz_ = 0;  // their cell counts
   // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
   // most queries read stays small in cache).
   std::vector<std::uint8_t> state_;
