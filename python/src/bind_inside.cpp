@@ -16,6 +16,7 @@
 #include "contain/inside/point_in_polygon.h"
 #include "contain/inside/polygon_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/region_io.h"
 #include "errors.h"
 #include "shapes.h"
@@ -193,7 +194,10 @@ Example:
           "'closed-exact' (ray parity, every answer exact) or 'winding-number' (open or\n"
           "non-manifold mesh: generalized winding number, boundary still exact).")
       .def_property_readonly(
-          "warning", [](const inside::MeshIndex& index) { return index.warning(); },
+          "warning",
+          [](const inside::MeshIndex& index) {
+            return io::mesh_warning(index.regime(), index.report());
+          },
           "'' for a plain closed 2-manifold; otherwise one line naming the regime and why.")
       .def_property_readonly(
           "bounds", [](const inside::MeshIndex& index) { return box3(index.bounds()); },

@@ -284,10 +284,13 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh
         std::shared_ptr<const MeshIndex>& shared = indexes[&m->mesh()];
         if (!shared) shared = std::make_shared<const MeshIndex>(m->mesh(), mesh_options);
         if (shared->regime() != MeshRegime::closed_exact) {
+          const MeshReport& r = shared->report();
           return Error{ErrorKind::degenerate,
                        (path.empty() ? "" : path + ": ") +
-                           "mesh is not closed, a closed mesh is required (" + shared->warning() +
-                           ")"};
+                           "mesh is not closed, a closed mesh is required (triangles: " +
+                           std::to_string(r.triangles) +
+                           ", border edges: " + std::to_string(r.border_edges) +
+                           ", non-manifold edges: " + std::to_string(r.nonmanifold_edges) + ")"};
         }
         index = shared;
       }

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/inside/point_in_triangle.h"
@@ -13,7 +12,7 @@
 #include "contain/values/triangle.h"
 
 // Outline (derivation in mesh_index.h and predicates/perturbed_ray.h):
-//  1. validate, pick the regime, write the warning;
+//  1. validate and pick the regime;
 //  2. exact regime: grid size from the triangle count and the box's shape; each triangle's
 //     closed box marks the closed cells it meets (exact comparisons) -> surface cells and their
 //     triangle lists;
@@ -69,12 +68,6 @@ bool separated_by_plane(const Tri& t, const Box3& box) {
   return bmin > tmax + margin || bmax < tmin - margin;
 }
 
-std::string plural(std::size_t n, const char* word) {
-  std::ostringstream out;
-  out << n << " " << word << (n == 1 ? "" : "s");
-  return out.str();
-}
-
 }  // namespace
 
 const char* to_string(MeshRegime regime) {
@@ -105,55 +98,11 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   stats_.triangles = tris_.size();
 
-  // 1. Regime and warning.
-  std::vector<std::string> notes;
-  if (!report_.pinch_vertices.empty()) {
-    notes.push_back(plural(report_.pinch_vertices.size(), "pinch vertex") +
-                    " (not 2-manifold there; first: " +
-                    std::to_string(report_.pinch_vertices.front() + 1) + ", 1-based)");
-  }
-  if (report_.inconsistent_edges > 0) {
-    notes.push_back("inconsistent orientation (" + plural(report_.inconsistent_edges, "edge") +
-                    " used in the same direction)");
-  }
-  if (report_.degenerate_triangles > 0) {
-    notes.push_back(plural(report_.degenerate_triangles, "degenerate triangle"));
-  }
+  // 1. Regime.
   if (report_.closed()) {
     regime_ = MeshRegime::closed_exact;
-    // Two copies of a triangle with opposite orientations still close every edge: parity stays
-    // exact (the pair bounds no volume), but the user should hear of it.
-    if (report_.duplicated_triangles > 0) {
-      notes.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
-    }
-    if (!notes.empty()) {
-      std::string w = "mesh has ";
-      for (std::size_t i = 0; i < notes.size(); ++i)
-        w += (i ? ", " : "") + notes[i];
-      warning_ = w +
-                 "; every edge has exactly two triangles, so the answers (closed-exact ray "
-                 "parity) are still exact";
-    }
   } else {
     regime_ = MeshRegime::winding_number;
-    std::vector<std::string> why;
-    if (report_.triangles == 0) why.push_back("no triangles");
-    if (report_.border_edges > 0) why.push_back(plural(report_.border_edges, "border edge"));
-    if (report_.nonmanifold_edges > 0) {
-      why.push_back(plural(report_.nonmanifold_edges, "edge") + " of three or more triangles");
-    }
-    if (report_.duplicated_triangles > 0) {
-      why.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
-    }
-    for (const std::string& n : notes)
-      why.push_back(n);
-    std::string w = "mesh is not closed (";
-    for (std::size_t i = 0; i < why.size(); ++i)
-      w += (i ? ", " : "") + why[i];
-    warning_ = w +
-               "): answers come from the generalized winding number (winding-number regime: "
-               "inside where it is >= 0.5, approximate near the surface); points exactly on the "
-               "surface are still 'on'";
     winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
     return;
   }

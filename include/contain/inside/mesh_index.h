@@ -7,7 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "contain/core/location.h"
@@ -67,8 +66,9 @@ struct MeshIndexOptions {
 ///
 /// Regime `winding_number` (border or non-manifold edges): `boundary` exactly as above, else
 /// `inside` where the generalized winding number is >= 0.5 (FastWindingNumber; floating point).
-/// `warning()` says why this regime applies; it also names pinch vertices, inconsistent
-/// orientation and degenerate triangles of a closed mesh, which keep the exact regime.
+/// `regime()` and `report()` say which regime applies and why, as data (the command and the
+/// Python module word them with `io::mesh_warning`); pinch vertices, inconsistent orientation
+/// and degenerate or duplicated triangles of a closed mesh keep the exact regime.
 ///
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
 /// in an empty cell, else O(triangles met along the run of surface cells); winding regime about
@@ -93,9 +93,6 @@ class MeshIndex {
   [[nodiscard]] MeshRegime regime() const { return regime_; }
   /// The validation of the mesh.
   [[nodiscard]] const MeshReport& report() const { return report_; }
-  /// Empty when the mesh is a plain closed 2-manifold; otherwise one line naming the regime and
-  /// why ("not closed: 223 border edges ...").
-  [[nodiscard]] const std::string& warning() const { return warning_; }
   /// The bounding box of the triangles.
   [[nodiscard]] const Box3& bounds() const { return bounds_; }
 
@@ -134,7 +131,6 @@ class MeshIndex {
 
   MeshRegime regime_ = MeshRegime::closed_exact;
   MeshReport report_;
-  std::string warning_;
   Box3 bounds_;
   std::vector<Tri> tris_;
   // Grid (exact regime).
