@@ -5,8 +5,9 @@
 namespace contain::io {
 namespace {
 
-std::string plural(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+// "1 edge", "2 edges"; `many` where the plural is not the word and an s.
+std::string plural(std::size_t n, const std::string& word, const std::string& many = "") {
+  return std::to_string(n) + " " + (n == 1 ? word : many.empty() ? word + "s" : many);
 }
 
 std::string joined(const std::vector<std::string>& parts) {
@@ -22,7 +23,7 @@ std::string mesh_warning(inside::MeshRegime regime, const MeshReport& report) {
   // Facts that leave the exact regime exact (and are said in either regime).
   std::vector<std::string> notes;
   if (!report.pinch_vertices.empty()) {
-    notes.push_back(plural(report.pinch_vertices.size(), "pinch vertex") +
+    notes.push_back(plural(report.pinch_vertices.size(), "pinch vertex", "pinch vertices") +
                     " (not 2-manifold there; first: " +
                     std::to_string(report.pinch_vertices.front() + 1) + ", 1-based)");
   }

@@ -40,6 +40,13 @@ TEST(MeshWarning, OpenMeshNamesTheWindingNumberRegimeAndEveryReason) {
             "orientation (1 edge used in the same direction), 3 degenerate triangles");
 }
 
+TEST(MeshWarning, PinchVerticesArePluralNotVertexs) {
+  MeshReport r = closed_report();
+  r.pinch_vertices = {3, 8};
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r).substr(0, 74),
+            "mesh has 2 pinch vertices (not 2-manifold there; first: 4, 1-based); every");
+}
+
 TEST(MeshWarning, MeshWithoutTrianglesSaysSo) {
   EXPECT_EQ(mesh_warning(MeshRegime::winding_number, MeshReport{}).substr(0, 33),
             "mesh is not closed (no triangles)");
