@@ -11,14 +11,18 @@
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/values/triangle.h"
 
-// Outline (derivation in mesh_index.h and predicates/perturbed_ray.h):
-//  1. validate and pick the regime;
-//  2. exact regime: grid size from the triangle count and the box's shape; each triangle's
-//     closed box marks the closed cells it meets (exact comparisons) -> surface cells and their
-//     triangle lists;
-//  3. empty cells, row by row from +x to -x: the answer at one point of the cell, by the same
-//     run along the row that queries use (it stops at the next empty cell to the right, whose
-//     answer is already known, or at the end of the grid: outside).
+// Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
+//  validate_mesh             the report, which picks the regime (not closed: winding number);
+//  read_triangles            vertices, ray-crossing signs and float boxes of the triangles;
+//  grid_size                 exact regime: cells from the triangle count and the box's shape;
+//  sort_triangles_by_cell    triangles in the order of their boxes' low cells (memory locality);
+//  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
+//                            comparisons; big triangles tested against each cell's box along
+//                            their normal) -> surface cells and their triangle lists;
+//  settle_empty_cells        row by row from +x to -x, the answer at one point of each empty
+//                            cell, by the same run along the row that queries use (it stops at
+//                            the next empty cell to the right, whose answer is already known,
+//                            or at the end of the grid: outside).
 
 namespace contain::inside {
 
@@ -68,6 +72,52 @@ bool separated_by_plane(const Tri& t, const Box3& box) {
   return bmin > tmax + margin || bmax < tmin - margin;
 }
 
+// Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
+// max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
+// coordinates.
+std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
+                             const MeshIndexOptions& options) {
+  const std::array<double, 3> half{0.5 * bounds.max.x - 0.5 * bounds.min.x,
+                                   0.5 * bounds.max.y - 0.5 * bounds.min.y,
+                                   0.5 * bounds.max.z - 0.5 * bounds.min.z};
+  double target = std::max(options.cells_per_triangle * static_cast<double>(triangles),
+                           static_cast<double>(options.min_cells));
+  target =
+      std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
+  // cell edge = (volume / target)^(1/dims) in half units, in logarithms: the volume of a box of
+  // huge or tiny extents over- or underflows.
+  double log_volume = 0.0;
+  int dims = 0;
+  for (double h : half) {
+    if (h > 0.0) {
+      log_volume += std::log(h);
+      ++dims;
+    }
+  }
+  std::array<int, 3> n{1, 1, 1};
+  if (dims == 0) return n;
+  const double log_edge = (log_volume - std::log(target)) / dims;
+  double product = 1.0;
+  for (int d = 0; d < 3; ++d) {
+    const auto du = static_cast<std::size_t>(d);
+    if (half[du] > 0.0) {
+      const double cells = std::exp(std::log(half[du]) - log_edge);
+      n[du] = static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
+    }
+    product *= n[du];
+  }
+  // Rounding may overshoot the cap: shrink the largest dimension until it fits.
+  while (product > static_cast<double>(std::max<std::size_t>(options.max_cells, 1))) {
+    int* largest = &n[0];
+    for (int& v : n)
+      largest = v > *largest ? &v : largest;
+    if (*largest == 1) break;
+    product = product / *largest * (*largest - 1);
+    *largest -= 1;
+  }
+  return n;
+}
+
 }  // namespace
 
 const char* to_string(MeshRegime regime) {
@@ -76,6 +126,31 @@ const char* to_string(MeshRegime regime) {
 
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
+  read_triangles(mesh);
+  if (!report_.closed()) {
+    regime_ = MeshRegime::winding_number;
+    winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
+    return;
+  }
+  regime_ = MeshRegime::closed_exact;
+  if (tris_.empty()) return;
+  const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
+  x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
+  y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
+  z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
+  nx_ = n[0];
+  ny_ = n[1];
+  nz_ = n[2];
+  stats_.cells =
+      static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
+  stats_.nx = nx_;
+  stats_.ny = ny_;
+  stats_.nz = nz_;
+  list_triangles_by_cell(sort_triangles_by_cell(bvh::triangle_boxes(mesh)));
+  settle_empty_cells();
+}
+
+void MeshIndex::read_triangles(const Mesh& mesh) {
   tris_.reserve(mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles) {
     Tri tri{mesh.vertices[static_cast<std::size_t>(t[0])],
@@ -97,94 +172,34 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     tris_.push_back(tri);
   }
   stats_.triangles = tris_.size();
+}
 
-  // 1. Regime.
-  if (report_.closed()) {
-    regime_ = MeshRegime::closed_exact;
-  } else {
-    regime_ = MeshRegime::winding_number;
-    winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
-    return;
+// Triangles in the order of the cell of their box's low corner (rows along x are contiguous): a
+// query's run along a row then reads triangles that lie close together in memory.
+std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& boxes) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    const Vec3 lo = boxes[t].min;
+    const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
+    const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
+    const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
+    order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
+                static_cast<std::uint32_t>(t)};
   }
-  if (tris_.empty()) return;
+  std::sort(order.begin(), order.end());
+  std::vector<Tri> sorted_tris(tris_.size());
+  std::vector<Box3> sorted_boxes(tris_.size());
+  for (std::size_t t = 0; t < order.size(); ++t) {
+    sorted_tris[t] = tris_[order[t].second];
+    sorted_boxes[t] = boxes[order[t].second];
+  }
+  tris_ = std::move(sorted_tris);
+  return sorted_boxes;
+}
 
-  // 2. Grid. Half units keep the extents finite for any finite coordinates.
-  const std::array<double, 3> half{0.5 * bounds_.max.x - 0.5 * bounds_.min.x,
-                                   0.5 * bounds_.max.y - 0.5 * bounds_.min.y,
-                                   0.5 * bounds_.max.z - 0.5 * bounds_.min.z};
-  double target = std::max(options.cells_per_triangle * static_cast<double>(tris_.size()),
-                           static_cast<double>(options.min_cells));
-  target =
-      std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
-  // cell edge = (volume / target)^(1/dims) in half units, in logarithms: the volume of a box of
-  // huge or tiny extents over- or underflows.
-  double log_volume = 0.0;
-  int dims = 0;
-  for (double h : half) {
-    if (h > 0.0) {
-      log_volume += std::log(h);
-      ++dims;
-    }
-  }
-  std::array<int, 3> n{1, 1, 1};
-  if (dims > 0) {
-    const double log_edge = (log_volume - std::log(target)) / dims;
-    double product = 1.0;
-    for (int d = 0; d < 3; ++d) {
-      const auto du = static_cast<std::size_t>(d);
-      if (half[du] > 0.0) {
-        const double cells = std::exp(std::log(half[du]) - log_edge);
-        n[du] = static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
-      }
-      product *= n[du];
-    }
-    // Rounding may overshoot the cap: shrink the largest dimension until it fits.
-    while (product > static_cast<double>(std::max<std::size_t>(options.max_cells, 1))) {
-      int* largest = &n[0];
-      for (int& v : n)
-        largest = v > *largest ? &v : largest;
-      if (*largest == 1) break;
-      product = product / *largest * (*largest - 1);
-      *largest -= 1;
-    }
-  }
-  x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
-  y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
-  z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
-  nx_ = n[0];
-  ny_ = n[1];
-  nz_ = n[2];
-  const std::size_t cell_count =
-      static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
-  stats_.cells = cell_count;
-  stats_.nx = nx_;
-  stats_.ny = ny_;
-  stats_.nz = nz_;
-
-  // Triangles in the order of the cell of their box's low corner (rows along x are contiguous):
-  // a query's run along a row then reads triangles that lie close together in memory.
-  std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
-  {
-    std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
-    for (std::size_t t = 0; t < tris_.size(); ++t) {
-      const Vec3 lo = boxes[t].min;
-      const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
-      const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
-      const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
-      order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
-                  static_cast<std::uint32_t>(t)};
-    }
-    std::sort(order.begin(), order.end());
-    std::vector<Tri> sorted_tris(tris_.size());
-    std::vector<Box3> sorted_boxes(tris_.size());
-    for (std::size_t t = 0; t < order.size(); ++t) {
-      sorted_tris[t] = tris_[order[t].second];
-      sorted_boxes[t] = boxes[order[t].second];
-    }
-    tris_ = std::move(sorted_tris);
-    boxes = std::move(sorted_boxes);
-  }
-  // Triangle boxes -> closed cells (two passes: count, then fill).
+// Triangle boxes -> closed cells (two passes: count, then fill).
+void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
+  const std::size_t cell_count = stats_.cells;
   std::vector<std::uint32_t> count(cell_count + 1, 0);
   auto for_cells = [&](std::size_t t, auto&& f) {
     const Box3& b = boxes[t];
@@ -231,8 +246,10 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     });
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();
+}
 
-  // 3. Empty cells, right to left along each row.
+// Empty cells, right to left along each row.
+void MeshIndex::settle_empty_cells() {
   for (int k = 0; k < nz_; ++k) {
     const double z = inner_point(z_.line(k), z_.line(k + 1));
     for (int j = 0; j < ny_; ++j) {

@@ -120,6 +120,12 @@ class MeshIndex {
     std::uint32_t tri;   // into tris_
   };
 
+  // Construction, stage by stage (mesh_index.cpp).
+  void read_triangles(const Mesh& mesh);
+  [[nodiscard]] std::vector<Box3> sort_triangles_by_cell(const std::vector<Box3>& boxes);
+  void list_triangles_by_cell(const std::vector<Box3>& boxes);
+  void settle_empty_cells();
+
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
            (p.z > r.hi[2]);

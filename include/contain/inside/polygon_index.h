@@ -106,6 +106,9 @@ class PolygonIndex {
     int corner_winding;                    // at the lower-right corner, right-up perturbed
   };
 
+  // The last stage of construction (polygon_index.cpp): the cells' codes, edge cells and side
+  // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
+  void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
   [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const;  // -1 outside the box
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
 
