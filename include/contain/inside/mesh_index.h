@@ -73,7 +73,8 @@ struct MeshIndexOptions {
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
 /// in an empty cell, else O(triangles met along the run of surface cells); winding regime about
 /// O(log n). Thread safety: const queries may run concurrently; answers do not depend on the
-/// thread count. Reference: seed section 22.4 (ray parity), Edelsbrunner and Muecke 1990 (SoS).
+/// thread count. Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray parity), Edelsbrunner
+/// and Muecke 1990 (SoS).
 class MeshIndex {
  public:
   /// An empty index: every point is `outside`.
