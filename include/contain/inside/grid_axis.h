@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// One axis of a uniform grid whose cells are found exactly: the shared machinery of the
-/// prepared indexes (`PolygonIndex` in 2D, `MeshIndex` in 3D), one `GridAxis` per dimension.
+/// One axis of the library's one uniform grid (exact cell lookups): under `PolygonIndex`,
+/// `MeshIndex` and clip's boolean noding grid, one `GridAxis` per dimension.
 
 #include <algorithm>
 #include <cstddef>
