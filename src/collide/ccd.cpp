@@ -1,0 +1,33 @@
+#include "contain/collide/ccd.h"
+
+#include "collide/ccd_exact.h"
+
+namespace contain::collide {
+
+Impact vertex_face_ccd(const CcdQuery& query) {
+  return detail::exact_ccd(query, detail::PrimitivePair::vertex_face);
+}
+
+Impact edge_edge_ccd(const CcdQuery& query) {
+  return detail::exact_ccd(query, detail::PrimitivePair::edge_edge);
+}
+
+void vertex_face_ccd(std::span<const CcdQuery> queries, std::span<Impact> out,
+                     const BatchOptions& options) {
+  const std::size_t n = std::min(queries.size(), out.size());
+  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      out[i] = vertex_face_ccd(queries[i]);
+  });
+}
+
+void edge_edge_ccd(std::span<const CcdQuery> queries, std::span<Impact> out,
+                   const BatchOptions& options) {
+  const std::size_t n = std::min(queries.size(), out.size());
+  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      out[i] = edge_edge_ccd(queries[i]);
+  });
+}
+
+}  // namespace contain::collide
