@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "contain/predicates/moving_points.h"
 #include "contain/predicates/polynomial.h"
 
 namespace contain::collide::detail {
@@ -12,28 +13,9 @@ namespace {
 using predicates::Polynomial;
 using predicates::RealRoot;
 
-using PolyVec = std::array<Polynomial, 3>;
-
-PolyVec operator-(const PolyVec& a, const PolyVec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-
-PolyVec cross(const PolyVec& u, const PolyVec& v) {
-  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-Polynomial dot(const PolyVec& u, const PolyVec& v) {
-  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
 class ExactQuery {
  public:
-  ExactQuery(const CcdQuery& q, PrimitivePair pair) : pair_(pair) {
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 a = q[static_cast<std::size_t>(i)], b = q[static_cast<std::size_t>(i + 4)];
-      points_[static_cast<std::size_t>(i)] = {
-          Polynomial::linear(a.x, b.x), Polynomial::linear(a.y, b.y), Polynomial::linear(a.z, b.z)};
-    }
+  ExactQuery(const CcdQuery& q, PrimitivePair pair) : query_(q), pair_(pair) {
     const std::size_t count =
         pair == PrimitivePair::vertex_face ? kVertexFacePolys.size() : kEdgeEdgePolys.size();
     for (std::size_t k = 0; k < count; ++k) {
@@ -43,19 +25,7 @@ class ExactQuery {
   }
 
   [[nodiscard]] Polynomial build(const PolySpec& s) const {
-    const PolyVec& pi = point(s.i);
-    switch (s.kind) {
-      case PolyKind::orient3d:
-        return dot(cross(point(s.j) - pi, point(s.k) - pi), point(s.l) - pi);
-      case PolyKind::cross_dot: {
-        const PolyVec u = point(s.j) - pi;
-        return dot(cross(u, point(s.k) - pi), cross(u, point(s.l) - pi));
-      }
-      case PolyKind::dot:
-        break;
-    }
-    const PolyVec& x = point(s.k);
-    return dot(x - pi, x - point(s.j));
+    return predicates::exact_polynomial(query_, s);
   }
 
   // The rule at a time given as a root (or the double 0).
@@ -72,10 +42,8 @@ class ExactQuery {
   static Sign sign_of(const Polynomial& p, double t) { return p.sign_at(t); }
   static Sign sign_of(const Polynomial& p, const RealRoot& r) { return predicates::sign_at(p, r); }
 
-  [[nodiscard]] const PolyVec& point(int i) const { return points_[static_cast<std::size_t>(i)]; }
-
+  const CcdQuery& query_;
   PrimitivePair pair_;
-  std::array<PolyVec, 4> points_;
   std::vector<Polynomial> rule_;
 };
 

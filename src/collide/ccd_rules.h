@@ -13,23 +13,20 @@
 #include <array>
 #include <cstdint>
 
+#include "contain/predicates/moving_points.h"
 #include "contain/predicates/sign.h"
 
 namespace contain::collide::detail {
 
-enum class PolyKind : std::uint8_t { orient3d, cross_dot, dot };
-
+using predicates::MotionKind;
 /// One polynomial of a rule: kind and point indices (dot(k; i, j) is {dot, i, j, k, -}).
-struct PolySpec {
-  PolyKind kind;
-  std::int8_t i, j, k, l;
-};
+using PolySpec = predicates::MotionPolynomial;
 
 enum class PrimitivePair : std::uint8_t { vertex_face, edge_edge };
 
 // The coplanarity cubic.
-inline constexpr PolySpec kVertexFaceCubic{PolyKind::orient3d, 1, 2, 3, 0};
-inline constexpr PolySpec kEdgeEdgeCubic{PolyKind::orient3d, 0, 1, 2, 3};
+inline constexpr PolySpec kVertexFaceCubic{MotionKind::orient3d, 1, 2, 3, 0};
+inline constexpr PolySpec kEdgeEdgeCubic{MotionKind::orient3d, 0, 1, 2, 3};
 
 /// Vertex-face inclusion, with n = (b - a) x (c - a):
 ///   0-2: cross_dot(a, b, p, c), cross_dot(b, c, p, a), cross_dot(c, a, p, b): the edge functions
@@ -38,15 +35,15 @@ inline constexpr PolySpec kEdgeEdgeCubic{PolyKind::orient3d, 0, 1, 2, 3};
 ///   3-5: collinear(a, b, p), collinear(b, c, p), collinear(c, a, p);
 ///   6-8: dot(p; a, b), dot(p; b, c), dot(p; c, a): p between the ends where <= 0.
 inline constexpr std::array<PolySpec, 9> kVertexFacePolys{{
-    {PolyKind::cross_dot, 1, 2, 0, 3},
-    {PolyKind::cross_dot, 2, 3, 0, 1},
-    {PolyKind::cross_dot, 3, 1, 0, 2},
-    {PolyKind::cross_dot, 1, 2, 0, 0},
-    {PolyKind::cross_dot, 2, 3, 0, 0},
-    {PolyKind::cross_dot, 3, 1, 0, 0},
-    {PolyKind::dot, 1, 2, 0, 0},
-    {PolyKind::dot, 2, 3, 0, 0},
-    {PolyKind::dot, 3, 1, 0, 0},
+    {MotionKind::cross_dot, 1, 2, 0, 3},
+    {MotionKind::cross_dot, 2, 3, 0, 1},
+    {MotionKind::cross_dot, 3, 1, 0, 2},
+    {MotionKind::cross_dot, 1, 2, 0, 0},
+    {MotionKind::cross_dot, 2, 3, 0, 0},
+    {MotionKind::cross_dot, 3, 1, 0, 0},
+    {MotionKind::dot, 1, 2, 0, 0},
+    {MotionKind::dot, 2, 3, 0, 0},
+    {MotionKind::dot, 3, 1, 0, 0},
 }};
 
 /// Edge-edge inclusion:
@@ -55,16 +52,16 @@ inline constexpr std::array<PolySpec, 9> kVertexFacePolys{{
 ///   2-5: collinear(r, s, p), collinear(r, s, q), collinear(p, q, r), collinear(p, q, s);
 ///   6-9: dot(p; r, s), dot(q; r, s), dot(r; p, q), dot(s; p, q).
 inline constexpr std::array<PolySpec, 10> kEdgeEdgePolys{{
-    {PolyKind::cross_dot, 0, 1, 2, 3},
-    {PolyKind::cross_dot, 2, 3, 0, 1},
-    {PolyKind::cross_dot, 2, 3, 0, 0},
-    {PolyKind::cross_dot, 2, 3, 1, 1},
-    {PolyKind::cross_dot, 0, 1, 2, 2},
-    {PolyKind::cross_dot, 0, 1, 3, 3},
-    {PolyKind::dot, 2, 3, 0, 0},
-    {PolyKind::dot, 2, 3, 1, 0},
-    {PolyKind::dot, 0, 1, 2, 0},
-    {PolyKind::dot, 0, 1, 3, 0},
+    {MotionKind::cross_dot, 0, 1, 2, 3},
+    {MotionKind::cross_dot, 2, 3, 0, 1},
+    {MotionKind::cross_dot, 2, 3, 0, 0},
+    {MotionKind::cross_dot, 2, 3, 1, 1},
+    {MotionKind::cross_dot, 0, 1, 2, 2},
+    {MotionKind::cross_dot, 0, 1, 3, 3},
+    {MotionKind::dot, 2, 3, 0, 0},
+    {MotionKind::dot, 2, 3, 1, 0},
+    {MotionKind::dot, 0, 1, 2, 0},
+    {MotionKind::dot, 0, 1, 3, 0},
 }};
 
 /// Three-valued logic for the filtered stage: a sign that may be unknown.

@@ -1,0 +1,208 @@
+// Continuous collision of primitives: contain's exact vertex-face and edge-edge queries beside
+// Tight Inclusion (Wang et al. 2021; conservative, tolerance 1e-6, the settings of its own
+// benchmark: err = {-1, -1, -1}, minimum separation 0, t_max 1, 10^6 iterations) on the same
+// queries in one run, one thread: time per query and the contacts each reports where there is
+// none (false) or misses. Query sets: every scene of ../shared/corpus/ccd (expected answers in
+// the files) and generic random queries (expected answer: contain's exact one, which the test
+// suite checks against the GMP oracle). Times are medians of 5 runs over the whole set.
+//
+// Usage: ccd_bench [--quick]
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "contain/collide/ccd.h"
+#include "contain/io/ccd_queries.h"
+
+#ifdef CONTAIN_BENCH_HAS_TIGHT_INCLUSION
+#include <tight_inclusion/ccd.hpp>
+#endif
+
+using namespace contain;
+using collide::CcdQuery;
+
+namespace {
+
+struct QuerySet {
+  std::string name;
+  bool vertex_face = true;
+  std::vector<CcdQuery> queries;
+  std::vector<std::int8_t> expected;  // 1 contact, 0 none
+};
+
+template <class F>
+double median_seconds(int runs, F&& f) {
+  std::vector<double> t;
+  for (int i = 0; i < runs; ++i) {
+    const auto s = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+std::vector<QuerySet> corpus_sets() {
+  std::vector<QuerySet> sets;
+  const std::filesystem::path root = std::filesystem::path(CONTAIN_SHARED_DIR) / "corpus/ccd";
+  if (!std::filesystem::is_directory(root)) {
+    std::printf("../shared/corpus/ccd is absent: corpus sets skipped\n");
+    return sets;
+  }
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& e : std::filesystem::directory_iterator(root))
+    if (e.is_directory()) scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  for (const auto& scene : scenes) {
+    for (const char* kind : {"vertex-face", "edge-edge"}) {
+      QuerySet set{scene.filename().string() + " " + kind, std::strcmp(kind, "vertex-face") == 0,
+                   {}, {}};
+      std::vector<std::filesystem::path> files;
+      for (const auto& f : std::filesystem::directory_iterator(scene / kind))
+        files.push_back(f.path());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files) {
+        auto q = io::read_ccd_queries(f);
+        if (!q) {
+          std::printf("%s\n", q.error().what().c_str());
+          continue;
+        }
+        set.queries.insert(set.queries.end(), q->queries.begin(), q->queries.end());
+        set.expected.insert(set.expected.end(), q->expected.begin(), q->expected.end());
+      }
+      sets.push_back(std::move(set));
+    }
+  }
+  return sets;
+}
+
+// Generic queries: all eight points independent and uniform in the unit cube (the primitives'
+// boxes overlap most of the time and the cubic has roots in [0, 1] in about half of the
+// queries), and small primitives (size 0.1) moving by up to 0.3 in a unit cube.
+std::vector<QuerySet> random_sets(std::size_t n) {
+  std::vector<QuerySet> sets;
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-0.05, 0.05), m(-0.15, 0.15);
+  for (const bool vf : {true, false}) {
+    QuerySet dense{std::string("random-unit-cube ") + (vf ? "vertex-face" : "edge-edge"), vf, {}, {}};
+    QuerySet small{std::string("random-small-moving ") + (vf ? "vertex-face" : "edge-edge"), vf, {}, {}};
+    for (std::size_t i = 0; i < n; ++i) {
+      CcdQuery q;
+      for (Vec3& p : q)
+        p = {u(rng), u(rng), u(rng)};
+      dense.queries.push_back(q);
+      // Two primitives of size ~0.1 near random centres, each translated by its own motion.
+      const Vec3 c1{u(rng), u(rng), u(rng)};
+      const Vec3 c2 = c1 + Vec3{3 * s(rng), 3 * s(rng), 3 * s(rng)};
+      const Vec3 m1{m(rng), m(rng), m(rng)}, m2{m(rng), m(rng), m(rng)};
+      const int first_of_b = vf ? 1 : 2;
+      for (int k = 0; k < 4; ++k) {
+        const Vec3 c = k < first_of_b ? c1 : c2;
+        const Vec3 mv = k < first_of_b ? m1 : m2;
+        const Vec3 p = c + Vec3{s(rng), s(rng), s(rng)};
+        q[static_cast<std::size_t>(k)] = p;
+        q[static_cast<std::size_t>(k + 4)] = p + mv + Vec3{0.1 * s(rng), 0.1 * s(rng), 0.1 * s(rng)};
+      }
+      small.queries.push_back(q);
+    }
+    sets.push_back(std::move(dense));
+    sets.push_back(std::move(small));
+  }
+  for (QuerySet& set : sets) {
+    for (const CcdQuery& q : set.queries) {
+      const bool hit =
+          set.vertex_face ? collide::vertex_face_ccd(q).hit : collide::edge_edge_ccd(q).hit;
+      set.expected.push_back(hit ? 1 : 0);
+    }
+  }
+  return sets;
+}
+
+struct Row {
+  double seconds = 0;
+  int hits = 0, false_hits = 0, missed = 0;
+};
+
+template <class Method>
+Row measure(const QuerySet& set, Method&& method, int runs) {
+  Row row;
+  std::vector<char> answers(set.queries.size());
+  row.seconds = median_seconds(runs, [&] {
+    for (std::size_t i = 0; i < set.queries.size(); ++i)
+      answers[i] = method(set.queries[i]) ? 1 : 0;
+  });
+  for (std::size_t i = 0; i < set.queries.size(); ++i) {
+    row.hits += answers[i];
+    if (answers[i] && set.expected[i] != 1) ++row.false_hits;
+    if (!answers[i] && set.expected[i] == 1) ++row.missed;
+  }
+  return row;
+}
+
+#ifdef CONTAIN_BENCH_HAS_TIGHT_INCLUSION
+bool tight_inclusion(const CcdQuery& q, bool vertex_face) {
+  ticcd::Vector3 p[8];
+  for (int i = 0; i < 8; ++i)
+    p[i] = {q[static_cast<std::size_t>(i)].x, q[static_cast<std::size_t>(i)].y,
+            q[static_cast<std::size_t>(i)].z};
+  double toi = 0, output_tolerance = 0;
+  const ticcd::Array3 err(-1, -1, -1);
+  if (vertex_face) {
+    return ticcd::vertexFaceCCD(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], err, 0.0, toi,
+                                1e-6, 1.0, 1000000, output_tolerance);
+  }
+  return ticcd::edgeEdgeCCD(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], err, 0.0, toi, 1e-6,
+                            1.0, 1000000, output_tolerance);
+}
+#endif
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int runs = quick ? 1 : 5;
+  std::vector<QuerySet> sets = corpus_sets();
+  for (QuerySet& s : random_sets(quick ? 10000 : 100000))
+    sets.push_back(std::move(s));
+#ifndef CONTAIN_BENCH_HAS_TIGHT_INCLUSION
+  std::printf(
+      "Tight Inclusion not built in (configure with -DCONTAIN_TIGHT_INCLUSION_DIR=<folder of "
+      "libtight_inclusion.a from ../shared/peers/tight-inclusion/build.sh>): its columns are "
+      "empty\n");
+#endif
+  std::printf("%-44s %7s %5s | %10s %6s %6s | %10s %6s %6s %6s | %7s\n", "query set", "queries",
+              "hits", "contain us", "false", "missed", "TI us", "false", "missed", "hits",
+              "TI/cont");
+  for (const QuerySet& set : sets) {
+    const bool vf = set.vertex_face;
+    const Row c = measure(
+        set,
+        [vf](const CcdQuery& q) {
+          return vf ? collide::vertex_face_ccd(q).hit : collide::edge_edge_ccd(q).hit;
+        },
+        runs);
+    const double n = static_cast<double>(set.queries.size());
+    const int expected_hits =
+        static_cast<int>(std::count(set.expected.begin(), set.expected.end(), 1));
+#ifdef CONTAIN_BENCH_HAS_TIGHT_INCLUSION
+    // Tight Inclusion takes up to seconds per query on some degenerate sets: fewer runs there.
+    const Row t = measure(set, [vf](const CcdQuery& q) { return tight_inclusion(q, vf); }, 1);
+    std::printf("%-44s %7zu %5d | %10.3f %6d %6d | %10.3f %6d %6d %6d | %7.2f\n", set.name.c_str(),
+                set.queries.size(), expected_hits, 1e6 * c.seconds / n, c.false_hits, c.missed,
+                1e6 * t.seconds / n, t.false_hits, t.missed, t.hits, t.seconds / c.seconds);
+#else
+    std::printf("%-44s %7zu %5d | %10.3f %6d %6d |\n", set.name.c_str(), set.queries.size(),
+                expected_hits, 1e6 * c.seconds / n, c.false_hits, c.missed);
+#endif
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -1,0 +1,89 @@
+#include "collide/ccd_filter.h"
+
+#include <algorithm>
+
+#include "contain/predicates/coplanarity_cubic.h"
+#include "contain/predicates/moving_points.h"
+#include "contain/predicates/orient3d.h"
+
+namespace contain::collide::detail {
+namespace {
+
+using predicates::CoplanarityCubic;
+using predicates::IntervalSigns;
+using predicates::RootBracket;
+
+// The swept boxes of the two primitives (each point's path lies in the box of its ends) are
+// disjoint: exact comparisons of input doubles.
+bool swept_boxes_disjoint(const CcdQuery& q, int first_of_b) {
+  for (int c = 0; c < 3; ++c) {
+    const auto at = [&](int i) {
+      const Vec3& v = q[static_cast<std::size_t>(i)];
+      return c == 0 ? v.x : (c == 1 ? v.y : v.z);
+    };
+    double lo_a = at(0), hi_a = at(0), lo_b = at(first_of_b), hi_b = at(first_of_b);
+    for (int i = 0; i < 4; ++i) {
+      for (const int k : {i, i + 4}) {
+        const double x = at(k);
+        if (i < first_of_b) {
+          lo_a = std::min(lo_a, x);
+          hi_a = std::max(hi_a, x);
+        } else {
+          lo_b = std::min(lo_b, x);
+          hi_b = std::max(hi_b, x);
+        }
+      }
+    }
+    if (hi_a < lo_b || hi_b < lo_a) return true;
+  }
+  return false;
+}
+
+Tri contact_over(const CcdQuery& q, PrimitivePair pair, double lo, double hi) {
+  IntervalSigns signs(q, lo, hi);
+  const auto& polys = pair == PrimitivePair::vertex_face
+                          ? std::span<const PolySpec>(kVertexFacePolys)
+                          : std::span<const PolySpec>(kEdgeEdgePolys);
+  return contact_rule(pair, [&](int k) {
+    const std::optional<Sign> s = signs.sign(polys[static_cast<std::size_t>(k)]);
+    return s ? MaybeSign{*s, true} : MaybeSign{Sign::zero, false};
+  });
+}
+
+}  // namespace
+
+std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
+  const bool vf = pair == PrimitivePair::vertex_face;
+  if (swept_boxes_disjoint(q, vf ? 1 : 2)) return Impact{false, Impact{}.time, CcdStage::boxes};
+  const PolySpec spec = vf ? kVertexFaceCubic : kEdgeEdgeCubic;
+  const CoplanarityCubic f(q, spec);
+  if (f.sign_on_unit()) return Impact{false, Impact{}.time, CcdStage::coplanarity};
+
+  const auto at = [&](int i, int time) { return q[static_cast<std::size_t>(i + 4 * time)]; };
+  const Sign at0 = predicates::orient3d(at(spec.i, 0), at(spec.j, 0), at(spec.k, 0), at(spec.l, 0));
+  const Sign at1 = predicates::orient3d(at(spec.i, 1), at(spec.j, 1), at(spec.k, 1), at(spec.l, 1));
+  if (at0 == Sign::zero) {
+    const Tri c = contact_over(q, pair, 0.0, 0.0);
+    if (c == Tri::unknown) return std::nullopt;
+    if (c == Tri::yes) return Impact{true, 0.0, CcdStage::filter};
+  }
+  const std::optional<predicates::RootBrackets> roots = f.roots_in_open_unit(at0, at1);
+  if (!roots) return std::nullopt;
+  for (int r = 0; r < roots->count; ++r) {
+    const RootBracket b = f.narrow(roots->brackets[static_cast<std::size_t>(r)]);
+    const Tri c = contact_over(q, pair, b.lo, b.hi);
+    if (c == Tri::unknown) return std::nullopt;
+    if (c == Tri::no) continue;
+    const std::optional<double> t = f.floor(b);
+    if (!t) return std::nullopt;
+    return Impact{true, *t, CcdStage::filter};
+  }
+  if (at1 == Sign::zero) {
+    const Tri c = contact_over(q, pair, 1.0, 1.0);
+    if (c == Tri::unknown) return std::nullopt;
+    if (c == Tri::yes) return Impact{true, 1.0, CcdStage::filter};
+  }
+  return Impact{false, Impact{}.time, CcdStage::filter};
+}
+
+}  // namespace contain::collide::detail
