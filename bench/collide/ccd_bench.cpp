@@ -204,5 +204,18 @@ int main(int argc, char** argv) {
 #endif
     std::fflush(stdout);
   }
+  // Which stage decided the queries of each set (contain).
+  std::printf("\n%-44s %8s %8s %8s %8s\n", "stage that decided (contain)", "boxes", "cubic",
+              "filter", "exact");
+  for (const QuerySet& set : sets) {
+    int count[4] = {0, 0, 0, 0};
+    for (const CcdQuery& q : set.queries) {
+      const collide::Impact i =
+          set.vertex_face ? collide::vertex_face_ccd(q) : collide::edge_edge_ccd(q);
+      ++count[static_cast<int>(i.stage)];
+    }
+    std::printf("%-44s %8d %8d %8d %8d\n", set.name.c_str(), count[0], count[1], count[2],
+                count[3]);
+  }
   return 0;
 }

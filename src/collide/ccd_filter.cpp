@@ -70,10 +70,17 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
   const std::optional<predicates::RootBrackets> roots = f.roots_in_open_unit(at0, at1);
   if (!roots) return std::nullopt;
   for (int r = 0; r < roots->count; ++r) {
-    const RootBracket b = f.narrow(roots->brackets[static_cast<std::size_t>(r)]);
-    const Tri c = contact_over(q, pair, b.lo, b.hi);
+    // Decide the inclusion on a bracket of width 2^-10 first (a few certified Newton steps),
+    // then, if that is too wide, on the narrowest bracket doubles allow.
+    RootBracket b = f.narrow(roots->brackets[static_cast<std::size_t>(r)], 0x1p-10);
+    Tri c = contact_over(q, pair, b.lo, b.hi);
+    if (c == Tri::unknown) {
+      b = f.narrow(b);
+      c = contact_over(q, pair, b.lo, b.hi);
+    }
     if (c == Tri::unknown) return std::nullopt;
     if (c == Tri::no) continue;
+    b = f.narrow(b);
     const std::optional<double> t = f.floor(b);
     if (!t) return std::nullopt;
     return Impact{true, *t, CcdStage::filter};

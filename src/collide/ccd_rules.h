@@ -104,9 +104,16 @@ struct MaybeSign {
 template <class SignOf>
 [[nodiscard]] Tri contact_rule(PrimitivePair pair, SignOf&& sign) {
   if (pair == PrimitivePair::vertex_face) {
-    Tri inside = is_positive(sign(0));
-    if (inside != Tri::no) inside = tri_and(inside, is_positive(sign(1)));
-    if (inside != Tri::no) inside = tri_and(inside, is_positive(sign(2)));
+    // An edge function < 0 puts p strictly outside that edge's line (and the triangle is then
+    // not degenerate, as n != 0): the closed triangle lies on the other side, edges included.
+    const MaybeSign s0 = sign(0);
+    if (s0.known && s0.sign == Sign::negative) return Tri::no;
+    Tri inside = is_positive(s0);
+    for (int e = 1; e < 3; ++e) {
+      const MaybeSign se = sign(e);
+      if (se.known && se.sign == Sign::negative) return Tri::no;
+      inside = tri_and(inside, is_positive(se));
+    }
     if (inside == Tri::yes) return Tri::yes;
     Tri result = inside;
     for (int e = 0; e < 3 && result != Tri::yes; ++e) {
@@ -116,8 +123,14 @@ template <class SignOf>
     }
     return result;
   }
-  Tri crossing = is_negative(sign(0));
-  if (crossing != Tri::no) crossing = tri_and(crossing, is_negative(sign(1)));
+  // r and s strictly on one side of the line pq (or p and q of the line rs): the segment does
+  // not reach the other's line, so they cannot meet.
+  const MaybeSign s0 = sign(0);
+  if (s0.known && s0.sign == Sign::positive) return Tri::no;
+  const MaybeSign s1 = sign(1);
+  if (s1.known && s1.sign == Sign::positive) return Tri::no;
+  Tri crossing = is_negative(s0);
+  if (crossing != Tri::no) crossing = tri_and(crossing, is_negative(s1));
   if (crossing == Tri::yes) return Tri::yes;
   Tri result = crossing;
   for (int e = 0; e < 4 && result != Tri::yes; ++e) {

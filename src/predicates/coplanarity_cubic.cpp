@@ -210,6 +210,12 @@ CoplanarityCubic::CoplanarityCubic(const MovingPoints& points, MotionPolynomial 
   bernstein_[2] = {(d[1][1][0] + d[1][0][1]) + d[0][1][1],
                    11.0 * kUnit * ((pd[1][1][0] + pd[1][0][1]) + pd[0][1][1]) + guard};
   bernstein_[3] = {3.0 * d[1][1][1], 10.0 * kUnit * (3.0 * pd[1][1][1]) + guard};
+  double max_error = 0.0, max_value = 0.0;
+  for (const Coefficient& c : bernstein_) {
+    max_error = std::max(max_error, c.error);
+    max_value = std::max(max_value, std::fabs(c.value));
+  }
+  evaluation_error_ = (max_error + 10.0 * kUnit * max_value) * (1.0 + 4.0 * kUnit) + 6.0 * DBL_MIN;
 }
 
 std::optional<Sign> CoplanarityCubic::sign_on_unit() const {
@@ -235,62 +241,72 @@ std::optional<RootBrackets> CoplanarityCubic::roots_in_open_unit(Sign at0, Sign 
 }
 
 std::optional<Sign> CoplanarityCubic::sign_at(double t) const {
-  const Bounded s = exact(1.0) - exact(t), x = exact(t);
-  Bounded b[4];
+  // De Casteljau in doubles. Each coefficient's share picks up at most 9 roundings (1 - t, the
+  // product and the sum on each of the three levels), and the shares' weights B_k(t) sum to 1,
+  // so the value is within gamma_9 max |g_k| of the exact Bernstein sum of the rounded
+  // coefficients, itself within max e_k of 3 f(t): `evaluation_error_` holds both (with 10u, and
+  // DBL_MIN for the six products' underflow).
+  const double s = 1.0 - t;
+  double b[4];
   for (std::size_t k = 0; k < 4; ++k)
-    b[k] = {bernstein_[k].value, bernstein_[k].error};
+    b[k] = bernstein_[k].value;
   for (int level = 3; level > 0; --level) {
     for (int k = 0; k < level; ++k)
-      b[k] = b[k] * s + b[k + 1] * x;
+      b[k] = b[k] * s + b[k + 1] * t;
   }
-  return certified_sign(b[0]);
+  if (b[0] > evaluation_error_) return Sign::positive;
+  if (-b[0] > evaluation_error_) return Sign::negative;
+  return std::nullopt;
 }
 
-RootBracket CoplanarityCubic::narrow(RootBracket r) const {
+RootBracket CoplanarityCubic::narrow(RootBracket r, double width) const {
   // Plain double values of 3 f and its derivative, for Newton's guesses only.
-  const auto value_and_slope = [&](double t, double& f, double& df) {
+  const auto newton = [&](double t) {
     double b[4];
     for (std::size_t k = 0; k < 4; ++k)
       b[k] = bernstein_[k].value;
     const double s = 1.0 - t;
     const double d0 = b[1] - b[0], d1 = b[2] - b[1], d2 = b[3] - b[2];
-    df = 3.0 * ((d0 * s + d1 * t) * s + (d1 * s + d2 * t) * t);
+    const double df = 3.0 * ((d0 * s + d1 * t) * s + (d1 * s + d2 * t) * t);
     for (int level = 3; level > 0; --level) {
       for (int k = 0; k < level; ++k)
         b[k] = b[k] * s + b[k + 1] * t;
     }
-    f = b[0];
+    return t - b[0] / df;
   };
   double guess = r.lo + 0.5 * (r.hi - r.lo);
-  for (int step = 0; step < 12; ++step) {
-    if (order_key(r.hi) - order_key(r.lo) <= 1) break;
-    double f, df;
-    value_and_slope(guess, f, df);
-    double t = guess - f / df;
+  for (int step = 0; step < 16; ++step) {
+    if (r.hi - r.lo <= width || order_key(r.hi) - order_key(r.lo) <= 1) return r;
+    double t = newton(guess);
     if (!(t > r.lo && t < r.hi)) t = r.lo + 0.5 * (r.hi - r.lo);
     const std::optional<Sign> s = sign_at(t);
     if (s) {
+      // Newton lands on one side; a step of its last correction past the root usually lands
+      // on the other, which halves nothing but closes the bracket quadratically.
       (*s == r.sign_lo ? r.lo : r.hi) = t;
+      const double other = t + (t - guess);
+      if (other > r.lo && other < r.hi) {
+        const std::optional<Sign> so = sign_at(other);
+        if (so) (*so == r.sign_lo ? r.lo : r.hi) = other;
+      }
       guess = t;
       continue;
     }
     // t is within the filter's uncertainty of the root: certify a few ulps on either side,
     // widening until both sides are certified or the bracket is reached.
-    double width = std::max(std::fabs(t) * 4.0 * kUnit, DBL_MIN);
-    for (int k = 0; k < 8; ++k, width *= 8.0) {
-      const double a = t - width, b = t + width;
+    double w = std::max(std::fabs(t) * 4.0 * kUnit, DBL_MIN);
+    for (int k = 0; k < 10; ++k, w *= 8.0) {
+      const double a = t - w, b = t + w;
       bool done = true;
       if (a > r.lo) {
-        const std::optional<Sign> sa = sign_at(a);
-        if (sa == r.sign_lo) {
+        if (sign_at(a) == r.sign_lo) {
           r.lo = a;
         } else {
           done = false;
         }
       }
       if (b < r.hi) {
-        const std::optional<Sign> sb = sign_at(b);
-        if (sb == -r.sign_lo) {
+        if (sign_at(b) == -r.sign_lo) {
           r.hi = b;
         } else {
           done = false;
@@ -298,60 +314,40 @@ RootBracket CoplanarityCubic::narrow(RootBracket r) const {
       }
       if (done) break;
     }
-    break;
+    return r;
   }
   return r;
 }
 
 std::optional<double> CoplanarityCubic::floor(RootBracket r) const {
-  // Bernstein coefficients again, now as exact double-double differences and double-double
-  // determinants; then the monomial coefficients of f and Horner at doubles.
+  // f(t) = (U(t) x V(t)) . W(t) with U(t) = U0 + t (U1 - U0) etc., every difference of two
+  // input doubles exact in double-double, the rest with running bounds; bisection on the
+  // doubles of the bracket.
   const MotionPolynomial& p = p_;
-  const auto diff = [&](int to, int time, int c) {
-    return exact_difference(coord(points_[static_cast<std::size_t>(to + 4 * time)], c),
-                            coord(points_[static_cast<std::size_t>(p.i + 4 * time)], c));
-  };
-  Dd u[2][3], v[2][3], w[2][3];
-  for (int time = 0; time < 2; ++time) {
-    for (int c = 0; c < 3; ++c) {
-      u[time][c] = diff(p.j, time, c);
-      v[time][c] = diff(p.k, time, c);
-      w[time][c] = diff(p.l, time, c);
-    }
+  Dd u0[3], du[3], v0[3], dv[3], w0[3], dw[3];
+  for (int c = 0; c < 3; ++c) {
+    const auto diff = [&](int to, int time) {
+      return exact_difference(coord(points_[static_cast<std::size_t>(to + 4 * time)], c),
+                              coord(points_[static_cast<std::size_t>(p.i + 4 * time)], c));
+    };
+    u0[c] = diff(p.j, 0);
+    du[c] = sub(diff(p.j, 1), u0[c]);
+    v0[c] = diff(p.k, 0);
+    dv[c] = sub(diff(p.k, 1), v0[c]);
+    w0[c] = diff(p.l, 0);
+    dw[c] = sub(diff(p.l, 1), w0[c]);
   }
-  Dd cr[2][2][3];
-  for (int b = 0; b < 2; ++b) {
-    for (int c = 0; c < 2; ++c) {
-      const Dd *x = v[b], *y = w[c];
-      cr[b][c][0] = sub(mul(x[1], y[2]), mul(x[2], y[1]));
-      cr[b][c][1] = sub(mul(x[2], y[0]), mul(x[0], y[2]));
-      cr[b][c][2] = sub(mul(x[0], y[1]), mul(x[1], y[0]));
-    }
-  }
-  Dd d[2][2][2];
-  for (int a = 0; a < 2; ++a) {
-    for (int b = 0; b < 2; ++b) {
-      for (int c = 0; c < 2; ++c) {
-        d[a][b][c] = add(add(mul(u[a][0], cr[b][c][0]), mul(u[a][1], cr[b][c][1])),
-                         mul(u[a][2], cr[b][c][2]));
-      }
-    }
-  }
-  // f = D000 (1 - t)^3 + b1 t (1 - t)^2 + b2 t^2 (1 - t) + D111 t^3.
-  const Dd b1 = add(add(d[1][0][0], d[0][1][0]), d[0][0][1]);
-  const Dd b2 = add(add(d[1][1][0], d[1][0][1]), d[0][1][1]);
-  const Dd& d0 = d[0][0][0];
-  const Dd& d3 = d[1][1][1];
-  const Dd c0 = d0;
-  const Dd c1 = sub(b1, mul(d0, 3.0));
-  const Dd c2 = add(sub(mul(d0, 3.0), mul(b1, 2.0)), b2);
-  const Dd c3 = add(sub(sub(b1, d0), b2), d3);
   const auto sign_at_dd = [&](double t) {
-    Dd acc = c3;
-    acc = add(mul(acc, t), c2);
-    acc = add(mul(acc, t), c1);
-    acc = add(mul(acc, t), c0);
-    return certified_sign(acc);
+    Dd u[3], v[3], w[3];
+    for (int c = 0; c < 3; ++c) {
+      u[c] = add(u0[c], mul(du[c], t));
+      v[c] = add(v0[c], mul(dv[c], t));
+      w[c] = add(w0[c], mul(dw[c], t));
+    }
+    const Dd x = sub(mul(v[1], w[2]), mul(v[2], w[1]));
+    const Dd y = sub(mul(v[2], w[0]), mul(v[0], w[2]));
+    const Dd z = sub(mul(v[0], w[1]), mul(v[1], w[0]));
+    return certified_sign(add(add(mul(u[0], x), mul(u[1], y)), mul(u[2], z)));
   };
   std::int64_t lo = order_key(r.lo), hi = order_key(r.hi);
   while (hi - lo >= 2) {

@@ -52,9 +52,10 @@ class CoplanarityCubic {
   /// uncertain).
   [[nodiscard]] std::optional<RootBrackets> roots_in_open_unit(Sign at0, Sign at1) const;
 
-  /// The bracket narrowed by certified Newton and bisection steps to a few doubles, or to two
-  /// adjacent doubles when the bounds allow.
-  [[nodiscard]] RootBracket narrow(RootBracket bracket) const;
+  /// The bracket narrowed by certified Newton and bisection steps until it is at most `width`
+  /// wide; with width 0, as far as the double-precision bounds allow (a few doubles, or two
+  /// adjacent ones).
+  [[nodiscard]] RootBracket narrow(RootBracket bracket, double width = 0.0) const;
 
   /// The largest double <= the root of the bracket, decided in double-double arithmetic with
   /// running error bounds; nothing when that precision does not decide (the root within ~2^-100
@@ -73,6 +74,7 @@ class CoplanarityCubic {
   MotionPolynomial p_;
   // Bernstein coefficients of 3 f: 3 D000, D100 + D010 + D001, D110 + D101 + D011, 3 D111.
   std::array<Coefficient, 4> bernstein_{};
+  double evaluation_error_ = 0.0;  // bound of `sign_at`'s evaluation, for every t in [0, 1]
 };
 
 }  // namespace contain::predicates

@@ -36,11 +36,12 @@ struct MotionPolynomial {
 [[nodiscard]] Polynomial exact_polynomial(const MovingPoints& points, MotionPolynomial p);
 
 /// Filter over an interval of time [lo, hi] (doubles, 0 <= lo <= hi <= 1): the sign a motion
-/// polynomial has at every t of the interval, when floating-point evaluation with running error
-/// bounds (`bounded.h`) excludes zero there; nothing otherwise (the interval may hold a root, or
-/// the bounds are too wide). Never wrong. The differences P_j(t) - P_i(t) are formed once per
-/// pair of points and shared by the polynomials asked for. ~100-300 floating-point operations a
-/// polynomial. For [t, t] it is a filter for the sign at the double t.
+/// polynomial has at every t of the interval, when floating-point evaluation at the middle with
+/// a proven bound (rounding, and the variation over the interval) excludes zero there; nothing
+/// otherwise (the interval may hold a root, or the bound is too wide). Never wrong. The
+/// differences P_j(t) - P_i(t) are formed once per pair of points and shared by the polynomials
+/// asked for. ~100 floating-point operations a polynomial. For [t, t] it is a filter for the
+/// sign at the double t. Bound: docs/robustness.md ("Continuous collision").
 class IntervalSigns {
  public:
   IntervalSigns(const MovingPoints& points, double lo, double hi);
@@ -48,13 +49,19 @@ class IntervalSigns {
   [[nodiscard]] std::optional<Sign> sign(MotionPolynomial p);
 
  private:
-  struct BoundedVec;
-  [[nodiscard]] std::array<double, 6> difference(int from, int to);  // x, y, z values, errors
+  struct Bounded3 {
+    std::array<double, 3> value{}, bound{};
+  };
+  [[nodiscard]] const Bounded3& difference(int a, int b);  // P_b - P_a, a < b
+  [[nodiscard]] Bounded3 vector(int from, int to);         // P_to - P_from
+  [[nodiscard]] Bounded3 cross(int i, int j, int k);       // (P_j - P_i) x (P_k - P_i)
+  [[nodiscard]] static std::optional<Sign> dot_sign(const Bounded3& a, const Bounded3& b);
 
   const MovingPoints& points_;
-  double time_ = 0.0, time_error_ = 0.0;
-  std::array<std::array<double, 6>, 6> differences_{};  // per unordered pair
-  unsigned computed_ = 0;                               // bit per pair
+  double time_ = 0.0, half_width_ = 0.0;
+  std::array<Bounded3, 6> differences_;  // per unordered pair, computed on first use
+  std::array<Bounded3, 4> crosses_;      // per triple (indexed by the point left out)
+  unsigned computed_ = 0;                // bits 0-5: pairs, 8-11: triples
 };
 
 }  // namespace contain::predicates
