@@ -81,9 +81,7 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
     if (c == Tri::unknown) return std::nullopt;
     if (c == Tri::no) continue;
     b = f.narrow(b);
-    const std::optional<double> t = f.floor(b);
-    if (!t) return std::nullopt;
-    return Impact{true, *t, CcdStage::filter};
+    return Impact{true, f.floor(b), CcdStage::filter};
   }
   if (at1 == Sign::zero) {
     const Tri c = contact_over(q, pair, 1.0, 1.0);

@@ -319,7 +319,7 @@ RootBracket CoplanarityCubic::narrow(RootBracket r, double width) const {
   return r;
 }
 
-std::optional<double> CoplanarityCubic::floor(RootBracket r) const {
+double CoplanarityCubic::floor(RootBracket r) const {
   // f(t) = (U(t) x V(t)) . W(t) with U(t) = U0 + t (U1 - U0) etc., every difference of two
   // input doubles exact in double-double, the rest with running bounds; bisection on the
   // doubles of the bracket.
@@ -349,11 +349,19 @@ std::optional<double> CoplanarityCubic::floor(RootBracket r) const {
     const Dd z = sub(mul(v[0], w[1]), mul(v[1], w[0]));
     return certified_sign(add(add(mul(u[0], x), mul(u[1], y)), mul(u[2], z)));
   };
+  // Where double-double does not decide (a root exactly at a double, typical of hand-made and
+  // lattice input, or within ~2^-100 of one), the exact polynomial does, built once.
+  std::optional<Polynomial> exact;
   std::int64_t lo = order_key(r.lo), hi = order_key(r.hi);
   while (hi - lo >= 2) {
     const std::int64_t mid = lo + (hi - lo) / 2;
-    const std::optional<Sign> s = sign_at_dd(from_key(mid));
-    if (!s) return std::nullopt;
+    const double t = from_key(mid);
+    std::optional<Sign> s = sign_at_dd(t);
+    if (!s) {
+      if (!exact) exact = exact_polynomial(points_, p_);
+      s = exact->sign_at(t);
+      if (*s == Sign::zero) return t;  // the root is this double
+    }
     (*s == r.sign_lo ? lo : hi) = mid;
   }
   return from_key(lo);

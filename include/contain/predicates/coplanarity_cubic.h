@@ -57,10 +57,11 @@ class CoplanarityCubic {
   /// adjacent ones).
   [[nodiscard]] RootBracket narrow(RootBracket bracket, double width = 0.0) const;
 
-  /// The largest double <= the root of the bracket, decided in double-double arithmetic with
-  /// running error bounds; nothing when that precision does not decide (the root within ~2^-100
-  /// relative of a double, or exactly a double).
-  [[nodiscard]] std::optional<double> floor(RootBracket bracket) const;
+  /// The largest double <= the root of the bracket: bisection on the doubles of the bracket, each
+  /// sign decided in double-double arithmetic with running error bounds, or, where that does not
+  /// decide (the root exactly a double, or within ~2^-100 relative of one), by the exact
+  /// polynomial (`polynomial.h`). Always exact.
+  [[nodiscard]] double floor(RootBracket bracket) const;
 
   /// f(t) at a double t in [0, 1], certified sign (double precision); nothing when uncertain.
   [[nodiscard]] std::optional<Sign> sign_at(double t) const;
