@@ -3,7 +3,8 @@
 The Python face of the contain C++ library. Two layers, as in C++: one-shot functions
 (point_in_polygon, point_in_mesh, collide, polygon_boolean, bounding_sphere, ...) and prepared
 objects that own their acceleration structure and answer batches on every core with the GIL
-released (MeshIndex, PolygonIndex, MeshPair).
+released (MeshIndex, PolygonIndex, MeshPair, MovingMeshPair). Continuous collision:
+vertex_face_ccd and edge_edge_ccd on (N, 8, 3) arrays, mesh_mesh_ccd and MovingMeshPair.
 
 Points go in as (N, 3) or (N, 2) float64 arrays, read in place when C-contiguous (any other
 layout or real dtype is converted once); answers come out as int8 arrays of
@@ -29,8 +30,10 @@ from ._contain import (
     ContainIOError,
     Location,
     Mesh,
+    MeshImpact,
     MeshIndex,
     MeshPair,
+    MovingMeshPair,
     PolygonIndex,
     Region,
     aabb,
@@ -38,7 +41,9 @@ from ._contain import (
     bounding_sphere,
     clip_segments,
     collide,
+    edge_edge_ccd,
     format_mesh,
+    mesh_mesh_ccd,
     parse_mesh,
     parse_wkt,
     point_in_mesh,
@@ -46,6 +51,7 @@ from ._contain import (
     polygon_boolean,
     read_mesh,
     read_region,
+    vertex_face_ccd,
     write_mesh,
     write_wkt,
 )
@@ -57,8 +63,10 @@ __all__ = [
     "ContainIOError",
     "Location",
     "Mesh",
+    "MeshImpact",
     "MeshIndex",
     "MeshPair",
+    "MovingMeshPair",
     "PolygonIndex",
     "Region",
     "aabb",
@@ -66,7 +74,9 @@ __all__ = [
     "bounding_sphere",
     "clip_segments",
     "collide",
+    "edge_edge_ccd",
     "format_mesh",
+    "mesh_mesh_ccd",
     "parse_mesh",
     "parse_wkt",
     "point_in_mesh",
@@ -74,6 +84,7 @@ __all__ = [
     "polygon_boolean",
     "read_mesh",
     "read_region",
+    "vertex_face_ccd",
     "write_mesh",
     "write_wkt",
 ]

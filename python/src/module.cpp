@@ -17,6 +17,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_io(m);
   bind_inside(m);
   bind_collide(m);
+  bind_ccd(m);
   bind_clip(m);
   bind_bound(m);
   m.def("_reads_in_place", &reads_in_place, py::arg("array"),

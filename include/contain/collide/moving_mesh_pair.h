@@ -123,6 +123,9 @@ class MovingMeshPair {
   /// True when A (B) is closed, so a solid.
   [[nodiscard]] bool a_is_solid() const { return discrete_a_.a_is_solid(); }
   [[nodiscard]] bool b_is_solid() const { return discrete_a_.b_is_solid(); }
+  /// The number of vertices of A and B (the length of `a_at1` and `b_at1`).
+  [[nodiscard]] std::size_t a_vertex_count() const { return a_.vertices.size(); }
+  [[nodiscard]] std::size_t b_vertex_count() const { return b_.vertices.size(); }
 
  private:
   struct Side;
