@@ -1,6 +1,6 @@
 #pragma once
 // Private to collide: the polynomials in time that decide a continuous collision query and the
-// rule that combines their signs (docs/robustness.md, "Continuous collision"), shared by the
+// rule that combines their signs (docs/robustness.md, "Continuous collision", rule ccd-rule), shared by the
 // filtered and the exact stages so that both decide by the same rule.
 //
 // Points are numbered as in a CcdQuery: vertex-face p = 0, a = 1, b = 2, c = 3; edge-edge
@@ -100,7 +100,7 @@ struct MaybeSign {
 /// asked for). Vertex-face: strictly inside (three edge functions > 0) or on an edge (collinear
 /// and between its ends). Edge-edge: a proper crossing (both cross_dot < 0) or an end on the
 /// other segment. Both are exact characterisations of closed-set contact at a time where the four
-/// points are coplanar (docs/robustness.md, "Continuous collision").
+/// points are coplanar (docs/robustness.md, "Continuous collision", rule ccd-rule).
 template <class SignOf>
 [[nodiscard]] Tri contact_rule(PrimitivePair pair, SignOf&& sign) {
   if (pair == PrimitivePair::vertex_face) {

@@ -87,7 +87,7 @@ struct MovingMeshPairOptions {
 /// Semantics: at t = 0 the shapes are tested as `MeshPair` does (closed meshes are solids,
 /// nesting counts); if they touch there the answer is 0. Otherwise two solids that start apart
 /// first touch where their surfaces first meet, and two triangles moving continuously first
-/// meet at a vertex-face or an edge-edge contact (docs/robustness.md, "Continuous collision"),
+/// meet at a vertex-face or an edge-edge contact (docs/robustness.md, rule ccd-mesh-rule),
 /// so the answer is the least, over all vertex-face (both ways) and edge-edge pairs, of the
 /// exact primitive answers (`vertex_face_ccd`, `edge_edge_ccd`): the largest double <= the
 /// earliest contact time. The witness is the first primitive pair in the order (time, vertex of
