@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contain/predicates/coplanarity_cubic.h"
+#include "contain/predicates/cross_dot.h"
 #include "contain/predicates/moving_points.h"
 #include "contain/predicates/orient3d.h"
 
@@ -50,6 +51,26 @@ Tri contact_over(const CcdQuery& q, PrimitivePair pair, double lo, double hi) {
   });
 }
 
+// The rule at a double time, always decided: the filter first, then each sign it leaves open
+// exactly (at t = 0 and t = 1 the positions are the input doubles and cross_dot is the
+// `cross_dot` predicate; otherwise, and for dot, the exact polynomial's sign at t).
+bool contact_at(const CcdQuery& q, PrimitivePair pair, double t) {
+  IntervalSigns signs(q, t, t);
+  const auto& polys = pair == PrimitivePair::vertex_face
+                          ? std::span<const PolySpec>(kVertexFacePolys)
+                          : std::span<const PolySpec>(kEdgeEdgePolys);
+  return contact_rule(pair, [&](int k) {
+           const PolySpec& p = polys[static_cast<std::size_t>(k)];
+           if (const std::optional<Sign> s = signs.sign(p)) return MaybeSign{*s, true};
+           if (p.kind == MotionKind::cross_dot && (t == 0.0 || t == 1.0)) {
+             const std::size_t base = t == 0.0 ? 0 : 4;
+             const auto at = [&](int i) { return q[base + static_cast<std::size_t>(i)]; };
+             return MaybeSign{predicates::cross_dot(at(p.i), at(p.j), at(p.k), at(p.l)), true};
+           }
+           return MaybeSign{predicates::exact_polynomial(q, p).sign_at(t), true};
+         }) == Tri::yes;
+}
+
 }  // namespace
 
 std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
@@ -58,15 +79,17 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
   const PolySpec spec = vf ? kVertexFaceCubic : kEdgeEdgeCubic;
   const CoplanarityCubic f(q, spec);
   if (f.sign_on_unit()) return Impact{false, Impact{}.time, CcdStage::coplanarity};
+  // No relative motion (every point moved by the same vector): the configuration at t = 0 holds
+  // at every time, so the answer is the static test.
+  if (predicates::rigidly_translating(q)) {
+    return contact_at(q, pair, 0.0) ? Impact{true, 0.0, CcdStage::filter}
+                                    : Impact{false, Impact{}.time, CcdStage::filter};
+  }
 
   const auto at = [&](int i, int time) { return q[static_cast<std::size_t>(i + 4 * time)]; };
   const Sign at0 = predicates::orient3d(at(spec.i, 0), at(spec.j, 0), at(spec.k, 0), at(spec.l, 0));
   const Sign at1 = predicates::orient3d(at(spec.i, 1), at(spec.j, 1), at(spec.k, 1), at(spec.l, 1));
-  if (at0 == Sign::zero) {
-    const Tri c = contact_over(q, pair, 0.0, 0.0);
-    if (c == Tri::unknown) return std::nullopt;
-    if (c == Tri::yes) return Impact{true, 0.0, CcdStage::filter};
-  }
+  if (at0 == Sign::zero && contact_at(q, pair, 0.0)) return Impact{true, 0.0, CcdStage::filter};
   const std::optional<predicates::RootBrackets> roots = f.roots_in_open_unit(at0, at1);
   if (!roots) return std::nullopt;
   for (int r = 0; r < roots->count; ++r) {
@@ -83,11 +106,7 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
     b = f.narrow(b);
     return Impact{true, f.floor(b), CcdStage::filter};
   }
-  if (at1 == Sign::zero) {
-    const Tri c = contact_over(q, pair, 1.0, 1.0);
-    if (c == Tri::unknown) return std::nullopt;
-    if (c == Tri::yes) return Impact{true, 1.0, CcdStage::filter};
-  }
+  if (at1 == Sign::zero && contact_at(q, pair, 1.0)) return Impact{true, 1.0, CcdStage::filter};
   return Impact{false, Impact{}.time, CcdStage::filter};
 }
 

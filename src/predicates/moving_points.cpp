@@ -1,12 +1,50 @@
 #include "contain/predicates/moving_points.h"
 
+#include "predicates/expansion.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 namespace contain::predicates {
 
 // ---- exact ---------------------------------------------------------------------------------
+
+bool rigidly_translating(const MovingPoints& m) {
+  // Two-Diff gives each displacement exactly as (rounded, error); the rounded part of a real is
+  // unique and so is the error, so equal pairs mean equal displacements.
+  const auto displacement = [&](int i, int c) {
+    const auto at = [&](int k) {
+      const Vec3& v = m[static_cast<std::size_t>(k)];
+      return c == 0 ? v.x : (c == 1 ? v.y : v.z);
+    };
+    double hi, lo;
+    detail::two_diff(at(i + 4), at(i), hi, lo);
+    return std::pair{hi, lo};
+  };
+  for (int c = 0; c < 3; ++c) {
+    const auto first = displacement(0, c);
+    for (int i = 1; i < 4; ++i) {
+      if (displacement(i, c) != first) return false;
+    }
+  }
+  return true;
+}
+
+int shared_axis(const MovingPoints& m) {
+  for (int c = 0; c < 3; ++c) {
+    const auto at = [&](int k) {
+      const Vec3& v = m[static_cast<std::size_t>(k)];
+      return c == 0 ? v.x : (c == 1 ? v.y : v.z);
+    };
+    if (at(0) == at(1) && at(0) == at(2) && at(0) == at(3) && at(4) == at(5) && at(4) == at(6) &&
+        at(4) == at(7)) {
+      return c;
+    }
+  }
+  return -1;
+}
 
 namespace {
 

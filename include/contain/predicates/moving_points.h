@@ -32,6 +32,16 @@ struct MotionPolynomial {
   std::int8_t i = 0, j = 0, k = 0, l = 0;
 };
 
+/// True when every point moves by exactly the same vector (at1 - at0 equal for the four points,
+/// compared exactly): the relative configuration is then the same at every time, and every
+/// motion polynomial is constant.
+[[nodiscard]] bool rigidly_translating(const MovingPoints& points);
+
+/// The axis (0: x, 1: y, 2: z) on which all four points share one coordinate at t = 0 and one
+/// at t = 1 (then they share it at every time: they move in a plane perpendicular to that axis,
+/// and orient3d of them is identically zero), or -1. Exact (comparisons).
+[[nodiscard]] int shared_axis(const MovingPoints& points);
+
 /// The exact polynomial in t (big-number coefficients).
 [[nodiscard]] Polynomial exact_polynomial(const MovingPoints& points, MotionPolynomial p);
 
