@@ -25,6 +25,9 @@ class BigFloat {
   friend BigFloat operator+(const BigFloat& a, const BigFloat& b);
   friend BigFloat operator-(const BigFloat& a, const BigFloat& b);
   friend BigFloat operator*(const BigFloat& a, const BigFloat& b);
+  /// a / b when b divides a in the dyadic rationals (b's odd part divides a's): exact division
+  /// for the subresultant sequences of `polynomial.cpp`. Precondition: b != 0 and divides a.
+  friend BigFloat exact_quotient(const BigFloat& a, const BigFloat& b);
 
  private:
   void normalize();

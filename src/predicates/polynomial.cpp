@@ -83,9 +83,10 @@ Sign sign_at(const Coeffs& c, const BigFloat& x) {
   return acc.sign();
 }
 
-// c * rem(a, b) with c > 0: the pseudo-remainder lc(b)^(m - n + 1) a - q b, negated when that
-// power is negative, so that signed remainder sequences keep their sign variations.
-Coeffs positive_pseudo_remainder(const Coeffs& a, const Coeffs& b) {
+namespace {
+
+// The pseudo-remainder lc(b)^(m - n + 1) a - q b (m, n the degrees of a and b).
+Coeffs pseudo_remainder(const Coeffs& a, const Coeffs& b) {
   assert(!b.empty());
   const int n = degree_of(b);
   const int m = degree_of(a);
@@ -103,8 +104,64 @@ Coeffs positive_pseudo_remainder(const Coeffs& a, const Coeffs& b) {
     r.pop_back();  // coefficient k is now exactly zero
   }
   trim(r);
-  if (lc.sign() == Sign::negative && (m - n + 1) % 2 == 1) r = negate(r);
   return r;
+}
+
+int sign_int(const BigFloat& x) {
+  return static_cast<int>(x.sign());
+}
+
+BigFloat power(const BigFloat& x, int e) {
+  BigFloat r(1.0);
+  for (int k = 0; k < e; ++k)
+    r = r * x;
+  return r;
+}
+
+}  // namespace
+
+// c * rem(a, b) with c > 0: the pseudo-remainder, negated when lc(b)^(m - n + 1) is negative,
+// so that signed remainder sequences keep their sign variations.
+Coeffs positive_pseudo_remainder(const Coeffs& a, const Coeffs& b) {
+  Coeffs r = pseudo_remainder(a, b);
+  const int m = degree_of(a), n = degree_of(b);
+  if (m >= n && b.back().sign() == Sign::negative && (m - n + 1) % 2 == 1) r = negate(r);
+  return r;
+}
+
+// Collins' subresultant PRS: T_0 = a, T_1 = b, T_{k+1} = prem(T_{k-1}, T_k) / (g h^d) with
+// g = lc(T_{k-1}) and h = g^d / h^(d-1) from the step before (g = h = 1 at first); every division
+// is exact (Knuth, TAOCP vol. 2, 4.6.1, Algorithm C; Brown 1971), so coefficient sizes grow
+// linearly instead of exponentially. T_k = c_k sRem_k for the signed remainder sequence
+// sRem_{k+1} = -rem(sRem_{k-1}, sRem_k); from rem(T_{k-1}, T_k) = -c_{k-1} sRem_{k+1},
+// c_{k+1} = -lc(T_k)^(d+1) c_{k-1} / (g h^d), whose sign is tracked and divided out, so every
+// element returned is a positive multiple of sRem_k. Precondition: deg a >= deg b.
+std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b) {
+  std::vector<Coeffs> out{a};
+  if (b.empty()) return out;
+  out.push_back(b);
+  Coeffs prev = a, cur = b;
+  int c_prev = 1, c_cur = 1;
+  BigFloat g(1.0), h(1.0);
+  for (;;) {
+    const int d = degree_of(prev) - degree_of(cur);
+    assert(d >= 0);
+    Coeffs r = pseudo_remainder(prev, cur);
+    if (r.empty()) break;
+    const BigFloat divisor = g * power(h, d);
+    for (BigFloat& x : r)
+      x = exact_quotient(x, divisor);
+    const int lc_sign = sign_int(cur.back());
+    const int c_next = -((d + 1) % 2 == 0 ? 1 : lc_sign) * c_prev * sign_int(divisor);
+    g = cur.back();
+    h = d == 0 ? h : (d == 1 ? g : exact_quotient(power(g, d), power(h, d - 1)));
+    prev = std::move(cur);
+    cur = std::move(r);
+    c_prev = c_cur;
+    c_cur = c_next;
+    out.push_back(c_cur > 0 ? cur : negate(cur));
+  }
+  return out;
 }
 
 // q with lc(g)^(m - n + 1) a = q g, for g dividing a exactly.
@@ -133,12 +190,9 @@ Coeffs pseudo_quotient(const Coeffs& a, const Coeffs& g) {
 }
 
 Coeffs gcd(Coeffs a, Coeffs b) {
-  while (!b.empty()) {
-    Coeffs r = positive_pseudo_remainder(a, b);
-    a = std::move(b);
-    b = std::move(r);
-  }
-  return a;
+  if (degree_of(a) < degree_of(b)) std::swap(a, b);
+  if (b.empty()) return a;
+  return signed_remainder_sequence(a, b).back();
 }
 
 // The squarefree part a / gcd(a, a') up to a constant factor: the same distinct roots, all simple.
@@ -160,12 +214,7 @@ Coeffs deflate(const Coeffs& a, const BigFloat& x) {
 }
 
 std::vector<Coeffs> sturm_sequence(const Coeffs& p) {
-  std::vector<Coeffs> s{p, derivative(p)};
-  while (!s.back().empty()) {
-    s.push_back(negate(positive_pseudo_remainder(s[s.size() - 2], s.back())));
-  }
-  s.pop_back();
-  return s;
+  return signed_remainder_sequence(p, derivative(p));
 }
 
 // Sign variations of a sequence of polynomials at x (zeros skipped).
@@ -386,14 +435,9 @@ Sign sign_at(const Polynomial& q, const RealRoot& root) {
   // and P' q may be replaced by its remainder modulo P (the Cauchy index of P' q / P does not
   // change) scaled by a positive constant. One root lies in (lo, hi): its sign is the sum.
   const detail::Coeffs& p = s.p;
-  std::vector<detail::Coeffs> seq{
+  const std::vector<detail::Coeffs> seq = detail::signed_remainder_sequence(
       p, detail::positive_pseudo_remainder(
-             detail::multiply(detail::derivative(p), PolynomialAccess::coefficients(q)), p)};
-  while (!seq.back().empty()) {
-    seq.push_back(
-        detail::negate(detail::positive_pseudo_remainder(seq[seq.size() - 2], seq.back())));
-  }
-  seq.pop_back();
+             detail::multiply(detail::derivative(p), PolynomialAccess::coefficients(q)), p));
   const int taq = detail::variations(seq, s.lo) - detail::variations(seq, s.hi);
   assert(taq >= -1 && taq <= 1);
   return taq > 0 ? Sign::positive : (taq < 0 ? Sign::negative : Sign::zero);

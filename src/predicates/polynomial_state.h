@@ -32,6 +32,9 @@ void trim(Coeffs& c);
 [[nodiscard]] Coeffs squarefree(const Coeffs& a);
 /// a / (t - x) for a root x.
 [[nodiscard]] Coeffs deflate(const Coeffs& a, const BigFloat& x);
+/// a, b, then minus the remainders, each a positive multiple of the signed remainder sequence's
+/// element (subresultant PRS with exact divisions), up to the last non-zero one. deg a >= deg b.
+[[nodiscard]] std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b);
 /// P, P', then minus the remainders (positively scaled), up to the last non-zero one.
 [[nodiscard]] std::vector<Coeffs> sturm_sequence(const Coeffs& p);
 /// Sign changes of the sequence's values at x, zeros skipped.
