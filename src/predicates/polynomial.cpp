@@ -435,9 +435,12 @@ Sign sign_at(const Polynomial& q, const RealRoot& root) {
   // and P' q may be replaced by its remainder modulo P (the Cauchy index of P' q / P does not
   // change) scaled by a positive constant. One root lies in (lo, hi): its sign is the sum.
   const detail::Coeffs& p = s.p;
+  // q is reduced modulo P first (its value at the root is the remainder's, up to the positive
+  // factor), so that P' q stays of degree < 2 deg P before the second reduction.
+  const detail::Coeffs reduced =
+      detail::positive_pseudo_remainder(PolynomialAccess::coefficients(q), p);
   const std::vector<detail::Coeffs> seq = detail::signed_remainder_sequence(
-      p, detail::positive_pseudo_remainder(
-             detail::multiply(detail::derivative(p), PolynomialAccess::coefficients(q)), p));
+      p, detail::positive_pseudo_remainder(detail::multiply(detail::derivative(p), reduced), p));
   const int taq = detail::variations(seq, s.lo) - detail::variations(seq, s.hi);
   assert(taq >= -1 && taq <= 1);
   return taq > 0 ? Sign::positive : (taq < 0 ? Sign::negative : Sign::zero);
