@@ -130,13 +130,17 @@ class MovingMeshPair {
  private:
   struct Side;
   [[nodiscard]] MeshImpact surfaces(const Side& b_side, MeshImpact result) const;
+  struct Tested;
+  void leaf_pair(const Side& b_side, std::int32_t ta, std::int32_t tb, double& limit,
+                 MeshImpact& best, Tested& tested) const;
 
   Mesh a_;
   Mesh b_;
   std::vector<Vec3> a0_, a1_;          // A's vertices at t = 0 and t = 1, world
   bvh::Bvh bvh_a_;                     // over A's swept triangle boxes
   std::vector<Box3> a_box0_, a_box1_;  // per node of bvh_a_: boxes at t = 0 and t = 1
-  bvh::Bvh bvh_b_;                     // over B's triangle boxes in its own frame
+  std::vector<std::array<std::int32_t, 3>> a_edges_, b_edges_;  // per triangle: its edges' ids
+  bvh::Bvh bvh_b_;  // over B's triangle boxes in its own frame
   double b_max_abs_ = 0.0;
   MeshPair discrete_a_;  // the test at t = 0: A placed at t = 0, B by the query's t = 0 pose
   bvh::BuildOptions bvh_options_;
