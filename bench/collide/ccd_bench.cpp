@@ -193,9 +193,9 @@ void moving_meshes(bool quick) {
   std::vector<collide::Motion> motions;
   for (int i = 0; i < 24; ++i) {
     // B (lying in the plane z = 0 around the z axis) moves along x from -6 to +6 at a height
-    // and sideways offset that varies: some paths pass through A's tube, some through its hole,
-    // some miss it altogether.
-    const double y = -3.0 + 0.25 * i, z = (i % 3 == 0) ? 0.0 : 0.3 * (i % 3);
+    // and sideways offset that varies: most paths run into A's tube; those at height 0.9 pass
+    // over it (B's tube reaches down to 0.65, A's up to 0.6) and miss.
+    const double y = -3.0 + 0.25 * i, z = 0.3 * (i % 4);
     collide::Motion m;
     m.from.t = {-6.0, y, z};
     m.to.t = {6.0, y, z};
@@ -205,7 +205,7 @@ void moving_meshes(bool quick) {
   const collide::MovingMeshPair pair(a, b);
   const double build_ms = 1e3 * (thread_seconds() - s0);
   const collide::MeshPair discrete(a, b);
-  std::vector<double> ccd_ms, discrete_ms;
+  std::vector<double> ccd_ms, discrete_ms, discrete_mid_ms;
   int hits = 0;
   std::size_t node_pairs = 0, tests = 0;
   for (const collide::Motion& m : motions) {
@@ -215,17 +215,24 @@ void moving_meshes(bool quick) {
     node_pairs += impact.node_pairs;
     tests += impact.primitive_tests;
     discrete_ms.push_back(1e3 * median_seconds(3, [&] { (void)discrete.collide(m.from); }));
+    // The pose halfway, where the shapes overlap or nearly touch: the discrete test's hard case.
+    Transform mid = m.from;
+    mid.t = 0.5 * (m.from.t + m.to.t);
+    discrete_mid_ms.push_back(1e3 * median_seconds(3, [&] { (void)discrete.collide(mid); }));
   }
   std::sort(ccd_ms.begin(), ccd_ms.end());
   std::sort(discrete_ms.begin(), discrete_ms.end());
+  std::sort(discrete_mid_ms.begin(), discrete_mid_ms.end());
   std::printf(
       "\nmoving meshes: torus %zu x torus %zu triangles, %zu straight motions of B, %d hit\n"
       "  MovingMeshPair build %.1f ms; first_contact per motion: median %.2f ms, max %.2f ms "
       "(%zu box pairs, %zu primitive tests in all)\n"
-      "  discrete MeshPair::collide of the start pose: median %.3f ms, max %.3f ms\n",
+      "  discrete MeshPair::collide: start pose median %.3f ms, max %.3f ms; pose at t = 1/2 "
+      "median %.3f ms, max %.3f ms\n",
       a.triangles.size(), b.triangles.size(), motions.size(), hits, build_ms,
       ccd_ms[ccd_ms.size() / 2], ccd_ms.back(), node_pairs, tests,
-      discrete_ms[discrete_ms.size() / 2], discrete_ms.back());
+      discrete_ms[discrete_ms.size() / 2], discrete_ms.back(),
+      discrete_mid_ms[discrete_mid_ms.size() / 2], discrete_mid_ms.back());
 }
 
 int main(int argc, char** argv) {
