@@ -17,7 +17,6 @@
 namespace contain::collide {
 namespace {
 
-constexpr double kUnit = 0x1p-53;
 
 double max_abs(std::span<const Vec3> points) {
   double m = 0.0;
