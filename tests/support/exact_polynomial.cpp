@@ -189,21 +189,18 @@ std::vector<QRoot> isolate_roots(const QPoly& p, const mpq_class& lo, const mpq_
 
 Sign sign_at(const QPoly& q, QRoot root) {
   if (root.exact) return sign_at(q, root.lo);
+  if (q.empty()) return Sign::zero;
   const QPoly g = gcd(root.p, q);
   if (degree(g) >= 1 && sgn(evaluate(g, root.lo)) * sgn(evaluate(g, root.hi)) < 0) {
     return Sign::zero;
   }
+  // q has no root at the root: bisect until q has none in the interval either.
+  const std::vector<QPoly> s = sturm(squarefree(q));
   const int s_lo = sgn(evaluate(root.p, root.lo));
   for (;;) {
-    if (!q.empty()) {
-      const QPoly sq = squarefree(q);
-      const std::vector<QPoly> s = sturm(sq);
-      if (sgn(evaluate(q, root.lo)) != 0 && sgn(evaluate(q, root.hi)) != 0 &&
-          variations(s, root.lo) == variations(s, root.hi)) {
-        return sign_at(q, root.lo);
-      }
-    } else {
-      return Sign::zero;
+    if (sgn(evaluate(q, root.lo)) != 0 && sgn(evaluate(q, root.hi)) != 0 &&
+        variations(s, root.lo) == variations(s, root.hi)) {
+      return sign_at(q, root.lo);
     }
     const mpq_class m = (root.lo + root.hi) / 2;
     const int sm = sgn(evaluate(root.p, m));
