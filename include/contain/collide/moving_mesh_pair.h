@@ -93,13 +93,15 @@ struct MovingMeshPairOptions {
 /// earliest contact time. The witness is the first primitive pair in the order (time, vertex of
 /// A on a face of B, vertex of B on a face of A, edges; then indices) among those with that time.
 ///
-/// Algorithm: A's triangles in a hierarchy over their swept boxes (the box of their corners at
-/// t = 0 and t = 1: a point moving on a segment stays in the box of its ends); B's hierarchy in
-/// its own frame, its boxes mapped by both placements (enclosing, with a rounding margin) or,
-/// for a deforming B, built per query. The two hierarchies are descended together; a node pair
-/// is entered only where the boxes swept up to the best time found so far overlap (the box of a
-/// point's path over [0, T] holds its positions at 0 and at T), and at leaf pairs the 6
-/// vertex-face and 9 edge-edge primitives whose own swept boxes overlap are decided exactly.
+/// Algorithm: A's triangles in a hierarchy over their swept boxes (the boxes of their corners at
+/// t = 0 and t = 1); B's hierarchy in its own frame, its boxes mapped by both placements
+/// (enclosing, with a rounding margin) or, for a deforming B, built per query. A box whose
+/// corners move linearly holds its points at time t in (1 - t) b0 + t b1, so two moving boxes
+/// can first overlap at a time found from six linear inequalities; node pairs are opened best
+/// first in the order of that time, and none that can only meet after the best contact found so
+/// far is opened. At leaf pairs, each vertex-face and edge-edge primitive whose own boxes can meet
+/// in time is decided exactly, once per query (a vertex or an edge is shared by several
+/// triangles).
 /// Complexity: build O(n log n); a query O(node pairs entered + primitives tested).
 /// Thread safety: const; queries may run concurrently.
 class MovingMeshPair {
