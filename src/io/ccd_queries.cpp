@@ -43,7 +43,7 @@ bool is_integer(std::string_view s) {
 Result<CcdQueries> parse_benchmark(std::string_view text, const std::string& source) {
   text = detail::skip_bom(text);
   CcdQueries out;
-  collide::CcdQuery query{};
+  CcdPoints query{};
   int row_in_query = 0;
   std::int64_t line = 0;
   std::int64_t first_line = 0;

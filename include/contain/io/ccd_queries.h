@@ -10,16 +10,22 @@
 #include <string_view>
 #include <vector>
 
-#include "contain/collide/ccd.h"
+#include <array>
+
 #include "contain/core/result.h"
+#include "contain/geometry/vec.h"
 
 namespace contain::io {
+
+/// Eight points of a query in the benchmark's order (four at t = 0, then the same four at t = 1;
+/// the same layout as `collide::CcdQuery`).
+using CcdPoints = std::array<Vec3, 8>;
 
 /// Queries in file order, each with the 1-based line where it starts and, for the benchmark
 /// format, the value of the last column of its first row (the benchmark's expected answer:
 /// 1 contact, 0 none; -1 in the 24-number format).
 struct CcdQueries {
-  std::vector<collide::CcdQuery> queries;
+  std::vector<CcdPoints> queries;
   std::vector<std::int64_t> lines;
   std::vector<std::int8_t> expected;
 };
