@@ -6,6 +6,7 @@
 #include "contain/predicates/cross_dot.h"
 #include "contain/predicates/moving_points.h"
 #include "contain/predicates/orient3d.h"
+#include "contain/predicates/polynomial.h"
 
 namespace contain::collide::detail {
 namespace {
@@ -71,6 +72,21 @@ bool contact_at(const CcdQuery& q, PrimitivePair pair, double t) {
          }) == Tri::yes;
 }
 
+// The rule at a root of the cubic: the filter over its bracket first, each sign it leaves open
+// exactly at the root.
+Tri contact_at_root(const CcdQuery& q, PrimitivePair pair, const RootBracket& b,
+                    const predicates::RealRoot& root) {
+  IntervalSigns signs(q, b.lo, b.hi);
+  const auto& polys = pair == PrimitivePair::vertex_face
+                          ? std::span<const PolySpec>(kVertexFacePolys)
+                          : std::span<const PolySpec>(kEdgeEdgePolys);
+  return contact_rule(pair, [&](int k) {
+    const PolySpec& p = polys[static_cast<std::size_t>(k)];
+    if (const std::optional<Sign> s = signs.sign(p)) return MaybeSign{*s, true};
+    return MaybeSign{predicates::sign_at(predicates::exact_polynomial(q, p), root), true};
+  });
+}
+
 }  // namespace
 
 std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
@@ -92,6 +108,7 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
   if (at0 == Sign::zero && contact_at(q, pair, 0.0)) return Impact{true, 0.0, CcdStage::filter};
   const std::optional<predicates::RootBrackets> roots = f.roots_in_open_unit(at0, at1);
   if (!roots) return std::nullopt;
+  CcdStage stage = CcdStage::filter;
   for (int r = 0; r < roots->count; ++r) {
     // Decide the inclusion on a bracket of width 2^-10 first (a few certified Newton steps),
     // then, if that is too wide, on the narrowest bracket doubles allow.
@@ -101,13 +118,20 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
       b = f.narrow(b);
       c = contact_over(q, pair, b.lo, b.hi);
     }
-    if (c == Tri::unknown) return std::nullopt;
+    if (c == Tri::unknown) {
+      // A sign the rule needs is (nearly) zero at the root, as where a vertex meets an edge: the
+      // certified bracket isolates the root, so only that sign goes to the exact stage.
+      const predicates::RealRoot root =
+          predicates::root_between(predicates::exact_polynomial(q, spec), b.lo, b.hi);
+      c = contact_at_root(q, pair, b, root);
+      stage = CcdStage::exact;
+    }
     if (c == Tri::no) continue;
     b = f.narrow(b);
-    return Impact{true, f.floor(b), CcdStage::filter};
+    return Impact{true, f.floor(b), stage};
   }
-  if (at1 == Sign::zero && contact_at(q, pair, 1.0)) return Impact{true, 1.0, CcdStage::filter};
-  return Impact{false, Impact{}.time, CcdStage::filter};
+  if (at1 == Sign::zero && contact_at(q, pair, 1.0)) return Impact{true, 1.0, stage};
+  return Impact{false, Impact{}.time, stage};
 }
 
 }  // namespace contain::collide::detail

@@ -428,6 +428,16 @@ std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
   return out;
 }
 
+RealRoot root_between(const Polynomial& p, double lo, double hi) {
+  auto s = std::make_shared<RealRoot::State>();
+  s->p = PolynomialAccess::coefficients(p);
+  s->lo = BigFloat(lo);
+  s->hi = BigFloat(hi);
+  s->sign_lo = detail::sign_at(s->p, s->lo);
+  assert(lo < hi && s->sign_lo != Sign::zero && detail::sign_at(s->p, s->hi) == -s->sign_lo);
+  return RealRoot(std::move(s), lo, hi, false);
+}
+
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);

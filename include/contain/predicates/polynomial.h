@@ -102,6 +102,12 @@ class RealRoot {
 /// apart, which are separated on dyadic numbers).
 [[nodiscard]] std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi);
 
+/// The root of p in (lo, hi), given that (lo, hi) holds exactly one root of p, that root simple
+/// (p(lo) and p(hi) of opposite signs), as a certified filter brackets a root: the exact stage
+/// can then decide signs at it without isolating p's other roots. Precondition (checked in debug
+/// builds): lo < hi finite, p(lo) p(hi) < 0.
+[[nodiscard]] RealRoot root_between(const Polynomial& p, double lo, double hi);
+
 /// The exact sign of q at the root: q's value there is an algebraic number, decided by a Tarski
 /// query (Sylvester's theorem: sign variations of the signed remainder sequence of the root's
 /// squarefree polynomial P and P' q mod P at the interval's ends) without refining the root.
