@@ -63,6 +63,7 @@ TEST(CollideCcdCli, EveryCorpusFileGivesTheExpectedAnswersAndTheLibrarysTimes) {
   EXPECT_EQ(queries, 2824);
 #else
   EXPECT_EQ(files, 12);
+  EXPECT_GT(queries, 1000);
 #endif
 }
 
