@@ -13,10 +13,10 @@
 #include "common.h"
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/region_region.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "progress.h"
 #include "verbs.h"
 

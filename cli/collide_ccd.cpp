@@ -10,7 +10,7 @@
 #include "common.h"
 #include "contain/collide/ccd.h"
 #include "contain/collide/moving_mesh_pair.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 #include "contain/io/ccd_queries.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"

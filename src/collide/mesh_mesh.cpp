@@ -7,8 +7,8 @@
 #include "collide/placed_boxes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/mesh_validation.h"
-#include "inside/mesh_ray.h"
+#include "contain/predicates/perturbed_ray.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 namespace {
@@ -62,7 +62,7 @@ bool MeshPair::a_component_in_b(Vec3 q, const Transform& tb) const {
         const Vec3 p0 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[0])]);
         const Vec3 p1 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[1])]);
         const Vec3 p2 = tb.apply(b_.vertices[static_cast<std::size_t>(tri[2])]);
-        if (inside::detail::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
+        if (predicates::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
         return bvh::Visit::proceed;
       });
   return odd;

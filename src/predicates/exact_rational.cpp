@@ -7,12 +7,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 
 namespace contain::predicates {
 namespace {
 
-using detail::BigFloat;
+using predicates::BigFloat;
 
 struct Integer {
   BigFloat value;

@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <utility>
 
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 #include "predicates/polynomial_state.h"
 
 namespace contain::predicates {
 
-using detail::BigFloat;
+using predicates::BigFloat;
 using detail::Coeffs;
 
 // ---- coefficient vectors --------------------------------------------------------------------

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "contain/predicates/polynomial.h"
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 
 namespace contain::predicates {
 
@@ -46,7 +46,7 @@ void trim(Coeffs& c);
 /// lo and hi not roots (sign_lo = sign of p(lo)); or, `exact`, the root lo == hi itself.
 struct RealRoot::State {
   detail::Coeffs p;
-  detail::BigFloat lo, hi;
+  BigFloat lo, hi;
   Sign sign_lo = Sign::zero;
   bool exact = false;
 };

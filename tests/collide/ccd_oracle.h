@@ -11,7 +11,7 @@
 #include <array>
 #include <optional>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

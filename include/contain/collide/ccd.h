@@ -11,7 +11,7 @@
 #include <span>
 
 #include "contain/core/parallel.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide {
 

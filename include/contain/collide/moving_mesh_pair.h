@@ -14,8 +14,8 @@
 #include "contain/collide/contact.h"
 #include "contain/collide/mesh_mesh.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide {
 

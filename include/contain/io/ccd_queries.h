@@ -13,7 +13,7 @@
 #include <array>
 
 #include "contain/core/result.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::io {
 

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 #include "contain/predicates/polynomial.h"
 #include "contain/predicates/sign.h"
 

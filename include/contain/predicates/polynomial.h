@@ -27,9 +27,7 @@
 
 namespace contain::predicates {
 
-namespace detail {
 class BigFloat;
-}  // namespace detail
 
 /// c0 + c1 t + c2 t^2 + ... with exact dyadic coefficients. The zero polynomial has degree -1.
 class Polynomial {
@@ -67,7 +65,7 @@ class Polynomial {
 
  private:
   friend class PolynomialAccess;
-  std::vector<detail::BigFloat> c_;  // lowest degree first, no zero leading coefficient
+  std::vector<BigFloat> c_;  // lowest degree first, no zero leading coefficient
 };
 
 /// One real root of a polynomial, isolated: `lower() <= root <= upper()` (doubles), equal when
