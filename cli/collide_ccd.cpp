@@ -10,10 +10,10 @@
 #include "common.h"
 #include "contain/collide/ccd.h"
 #include "contain/collide/moving_mesh_pair.h"
-#include "contain/shapes/mesh_validation.h"
 #include "contain/io/ccd_queries.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
+#include "contain/shapes/mesh_validation.h"
 #include "progress.h"
 
 namespace contain::cli {

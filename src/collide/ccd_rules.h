@@ -1,7 +1,7 @@
 #pragma once
 // Private to collide: the polynomials in time that decide a continuous collision query and the
-// rule that combines their signs (docs/robustness.md, "Continuous collision", rule ccd-rule), shared by the
-// filtered and the exact stages so that both decide by the same rule.
+// rule that combines their signs (docs/robustness.md, "Continuous collision", rule ccd-rule),
+// shared by the filtered and the exact stages so that both decide by the same rule.
 //
 // Points are numbered as in a CcdQuery: vertex-face p = 0, a = 1, b = 2, c = 3; edge-edge
 // p = 0, q = 1 (edge a), r = 2, s = 3 (edge b). With P_i(t) the moving points:

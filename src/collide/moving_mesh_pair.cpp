@@ -17,7 +17,6 @@
 namespace contain::collide {
 namespace {
 
-
 double max_abs(std::span<const Vec3> points) {
   double m = 0.0;
   for (const Vec3& v : points)

@@ -11,8 +11,8 @@
 
 namespace contain::predicates {
 
-using predicates::BigFloat;
 using detail::Coeffs;
+using predicates::BigFloat;
 
 // ---- coefficient vectors --------------------------------------------------------------------
 

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "contain/predicates/polynomial.h"
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/polynomial.h"
 
 namespace contain::predicates {
 

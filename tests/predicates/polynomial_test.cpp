@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "contain/predicates/big_float.h"
 #include "support/exact_polynomial.h"
 
 namespace contain::predicates {
@@ -216,6 +217,25 @@ TEST(Polynomial, MixedMagnitudeCoefficientsAgreeWithTheOracle) {
     const double hi = std::ldexp(1.0, rnd.integer(-70, 70));
     check(p, lo, hi, {factor(0.0), constant(std::ldexp(-1.0, rnd.integer(-1000, 1000)))});
     if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, ExactQuotientOfBigFloatsIsTheRationalQuotient) {
+  // Products of random doubles divided by one of their factors (and by powers of two times an
+  // odd factor), the divisions the subresultant sequences make.
+  Random rnd(5);
+  for (int i = 0; i < 3000 / kDivisor; ++i) {
+    const double x = rnd.any_magnitude(), y = rnd.any_magnitude(), z = rnd.any_magnitude();
+    const BigFloat bx(x), by(y), bz(z);
+    const BigFloat product = bx * by * bz;
+    if (y == 0.0) continue;
+    const BigFloat q = exact_quotient(product, by);
+    ASSERT_TRUE(q == bx * bz) << x << " " << y << " " << z;
+    ASSERT_TRUE(exact_quotient(product, by * bz) == bx);
+    const double power = std::ldexp(1.0, rnd.integer(-60, 60));
+    ASSERT_TRUE(exact_quotient(-product, BigFloat(power) * by) ==
+                -(bx * bz) * BigFloat(1.0 / power));
+    ASSERT_TRUE(exact_quotient(BigFloat(), by).is_zero());
   }
 }
 

@@ -15,9 +15,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "contain/values/vec.h"
 #include "contain/predicates/polynomial.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 
