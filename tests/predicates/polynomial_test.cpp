@@ -165,7 +165,7 @@ TEST(Polynomial, RootsCloserThanADoubleApartAreSeparatedOnDyadicNumbers) {
 
 TEST(Polynomial, RandomPolynomialsAgreeWithTheOracle) {
   Random rnd(2);
-  for (int i = 0; i < 1500 / kDivisor; ++i) {
+  for (int i = 0; i < 800 / kDivisor; ++i) {
     const int degree = rnd.integer(1, 4);
     Both p = constant(rnd.uniform(-1, 1));
     for (int k = 0; k < degree; ++k) {
@@ -192,7 +192,7 @@ TEST(Polynomial, RandomPolynomialsAgreeWithTheOracle) {
 
 TEST(Polynomial, SharedAndNearlySharedRootsAgreeWithTheOracle) {
   Random rnd(3);
-  for (int i = 0; i < 2000 / kDivisor; ++i) {
+  for (int i = 0; i < 1000 / kDivisor; ++i) {
     const double r = rnd.uniform(0.0, 1.0);
     const double s = rnd.uniform(0.0, 1.0);
     const int ulps = rnd.integer(-3, 3);
@@ -209,7 +209,7 @@ TEST(Polynomial, SharedAndNearlySharedRootsAgreeWithTheOracle) {
 
 TEST(Polynomial, MixedMagnitudeCoefficientsAgreeWithTheOracle) {
   Random rnd(4);
-  for (int i = 0; i < 500 / kDivisor; ++i) {
+  for (int i = 0; i < 250 / kDivisor; ++i) {
     Both p = constant(std::ldexp(1.0, rnd.integer(-1000, 1000)));
     for (int k = rnd.integer(1, 4); k > 0; --k)
       p = p * (variable() * constant(rnd.any_magnitude()) + constant(rnd.any_magnitude()));
