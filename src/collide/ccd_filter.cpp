@@ -95,15 +95,15 @@ std::optional<Impact> filtered_ccd(const CcdQuery& q, PrimitivePair pair) {
   const PolySpec spec = vf ? kVertexFaceCubic : kEdgeEdgeCubic;
   const CoplanarityCubic f(q, spec);
   if (f.sign_on_unit()) return Impact{false, Impact{}.time, CcdStage::coplanarity};
-  // No relative motion (every point moved by the same vector): the configuration at t = 0 holds
-  // at every time, so the answer is the static test.
-  if (predicates::rigidly_translating(q)) {
-    return contact_at(q, pair, 0.0) ? Impact{true, 0.0, CcdStage::filter}
-                                    : Impact{false, Impact{}.time, CcdStage::filter};
-  }
-
   const auto at = [&](int i, int time) { return q[static_cast<std::size_t>(i + 4 * time)]; };
   const Sign at0 = predicates::orient3d(at(spec.i, 0), at(spec.j, 0), at(spec.k, 0), at(spec.l, 0));
+  // No relative motion (every point moved by the same vector): the configuration at t = 0 holds
+  // at every time, so the answer is the static test: coplanar at 0 and the inclusion rule.
+  if (predicates::rigidly_translating(q)) {
+    return at0 == Sign::zero && contact_at(q, pair, 0.0)
+               ? Impact{true, 0.0, CcdStage::filter}
+               : Impact{false, Impact{}.time, CcdStage::filter};
+  }
   const Sign at1 = predicates::orient3d(at(spec.i, 1), at(spec.j, 1), at(spec.k, 1), at(spec.l, 1));
   if (at0 == Sign::zero && contact_at(q, pair, 0.0)) return Impact{true, 0.0, CcdStage::filter};
   const std::optional<predicates::RootBrackets> roots = f.roots_in_open_unit(at0, at1);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -92,6 +93,18 @@ TEST(CcdVertexFace, ZeroMotionIsTheStaticTest) {
   // Everything moving together is no relative motion either.
   const Vec3 d{3, -1, 2};
   expect_vf(query({{0.25, 0.25, 0}, kA, kB, kC}, {{3.25, -0.75, 2}, kA + d, kB + d, kC + d}), 0.0);
+}
+
+TEST(CcdVertexFace, ZeroMotionFarFromTheOriginStillNeedsCoplanarity) {
+  // Found by fuzz_ccd: at 2^700 the cubic's Bernstein filter overflows, and the no-motion
+  // shortcut decided by the inclusion rule alone, which holds for a vertex right above the
+  // triangle's interior: a false hit at 0. The static test needs orient3d == 0 first. (The
+  // triangle lies in the plane z = x and the vertex below it, inside the triangle's box.)
+  const double s = std::ldexp(1.0, 700);
+  const Vec3 p{0.25 * s, 0.25 * s, 0.125 * s}, a{0, 0, 0}, b{s, 0, s}, c{0, s, 0};
+  expect_vf(query({p, a, b, c}, {p, a, b, c}), std::nullopt);
+  const Vec3 on{0.25 * s, 0.25 * s, 0.25 * s};
+  expect_vf(query({on, a, b, c}, {on, a, b, c}), 0.0);
 }
 
 TEST(CcdVertexFace, CoplanarMotionHitsWhenTheVertexReachesAnEdge) {
@@ -199,6 +212,18 @@ TEST(CcdEdgeEdge, TouchingEndsAtTimeZeroAndOne) {
   expect_ee(query({{0, 0, 0}, {1, 0, 0}, {5, 0, 5}, {5, 1, 5}},
                   {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}}),
             1.0);
+}
+
+TEST(CcdEdgeEdge, ZeroMotionFarFromTheOriginStillNeedsCoplanarity) {
+  // The fuzz_ccd reproducer (regression_static_not_coplanar): two static edges near 2^712 that
+  // are not coplanar, though each pair of ends lies on both sides of the other's line in the
+  // sense of cross_dot.
+  const auto h = [](const char* x) { return std::strtod(x, nullptr); };
+  const Vec3 p{h("0x1.8p+697"), h("-0x1.73cdp+712"), h("0x1p+698")};
+  const Vec3 q{h("0x1.f97ep+711"), h("0x1.f97ep+711"), h("0x1.f97ep+711")};
+  const Vec3 r{h("0x1.f97ep+711"), h("-0x1.8p+698"), h("0x1.c864p+712")};
+  const Vec3 s{h("-0x1.fc9p+710"), h("0x1.fcffp+712"), h("-0x1p+699")};
+  expect_ee(query({p, q, r, s}, {p, q, r, s}), std::nullopt);
 }
 
 TEST(CcdEdgeEdge, ZeroMotionIsTheStaticTest) {
