@@ -218,7 +218,8 @@ class MeshImpact:
 class MovingMeshPair:
     """Two meshes prepared for continuous collision: A with a fixed motion, B moved per query."""
 
-    def __init__(self, a: Mesh, b: Mesh, *, from_a: _Transform = None, to_a: _Transform = None,
+    def __init__(self, a: MeshLike, b: MeshLike, *, from_a: _Transform = None,
+                 to_a: _Transform = None,
                  a_at1: Optional[npt.ArrayLike] = None) -> None: ...
     def first_contact(self, from_b: _Transform = None, to_b: _Transform = None) -> MeshImpact: ...
     def first_contact_deforming(self, b_at1: npt.ArrayLike) -> MeshImpact: ...
@@ -234,7 +235,8 @@ def vertex_face_ccd(queries: npt.ArrayLike, *, threads: int = 0
                     ) -> Tuple[Union[_BoolArray, bool], Union[_Float64Array, float]]: ...
 def edge_edge_ccd(queries: npt.ArrayLike, *, threads: int = 0
                   ) -> Tuple[Union[_BoolArray, bool], Union[_Float64Array, float]]: ...
-def mesh_mesh_ccd(a: Mesh, b: Mesh, *, from_a: _Transform = None, to_a: _Transform = None,
+def mesh_mesh_ccd(a: MeshLike, b: MeshLike, *, from_a: _Transform = None,
+                  to_a: _Transform = None,
                   from_b: _Transform = None, to_b: _Transform = None,
                   a_at1: Optional[npt.ArrayLike] = None,
                   b_at1: Optional[npt.ArrayLike] = None) -> MeshImpact: ...

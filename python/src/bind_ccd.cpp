@@ -209,13 +209,15 @@ a double, with the witness pair of primitives.
     >>> pair.first_contact(from_b=start, to_b=end).time
     >>> hit, time = pair.first_contact_many(motions)   # (N, 2, 3, 4) -> (N,), (N,)
 )doc")
-      .def(py::init([](const Mesh& a, const Mesh& b, const TransformLike& from_a,
+      .def(py::init([](const MeshLike& a, const MeshLike& b, const TransformLike& from_a,
                        const TransformLike& to_a, const py::object& a_at1) {
+             const MeshRef ma = to_mesh(a.object, "a"), mb = to_mesh(b.object, "b");
              collide::MovingMeshPairOptions options;
              options.motion_a = to_motion(from_a.object, to_a.object, "from_a", "to_a");
-             if (!a_at1.is_none()) options.a_at1 = to_positions(a_at1, a.vertices.size(), "a_at1");
+             if (!a_at1.is_none())
+               options.a_at1 = to_positions(a_at1, ma->vertices.size(), "a_at1");
              py::gil_scoped_release release;
-             return collide::MovingMeshPair(a, b, options);
+             return collide::MovingMeshPair(*ma, *mb, options);
            }),
            "a"_a, "b"_a, py::kw_only(), "from_a"_a = py::none(), "to_a"_a = py::none(),
            "a_at1"_a = py::none(),
@@ -272,9 +274,11 @@ threads (0: every core) without the GIL.
 
   m.def(
       "mesh_mesh_ccd",
-      [](const Mesh& a, const Mesh& b, const TransformLike& from_a, const TransformLike& to_a,
-         const TransformLike& from_b, const TransformLike& to_b, const py::object& a_at1,
-         const py::object& b_at1) {
+      [](const MeshLike& a_like, const MeshLike& b_like, const TransformLike& from_a,
+         const TransformLike& to_a, const TransformLike& from_b, const TransformLike& to_b,
+         const py::object& a_at1, const py::object& b_at1) {
+        const MeshRef a_ref = to_mesh(a_like.object, "a"), b_ref = to_mesh(b_like.object, "b");
+        const Mesh &a = *a_ref, &b = *b_ref;
         if (!a_at1.is_none() || !b_at1.is_none()) {
           if (!from_a.object.is_none() || !to_a.object.is_none() || !from_b.object.is_none() ||
               !to_b.object.is_none()) {

@@ -119,3 +119,24 @@ def test_moving_mesh_pairs_one_shot_prepared_batched_and_deforming():
     assert contain.MovingMeshPair(plate, b_at0).first_contact_deforming(at1 + [0.1, 0.2, 3]).time == 0.49
     with pytest.raises(ValueError):
         contain.mesh_mesh_ccd(plate, bullet, from_b=start, b_at1=at1)
+
+
+def test_moving_mesh_pairs_take_every_mesh_the_shape_rule_takes(tmp_path):
+    plate = contain.Mesh(cube().vertices * [2, 2, 0.02] - [1, 1, 0.01], cube().faces)
+    bullet = contain.Mesh(cube().vertices * 0.1 - 0.05, cube().faces)
+    start, end = translation(0.1, 0.2, 3), translation(0.1, 0.2, -3)
+    path = tmp_path / "bullet.off"
+    contain.write_mesh(bullet, path)
+
+    class Trimeshlike:  # trimesh.Trimesh's duck type
+        vertices, faces = bullet.vertices, bullet.faces
+
+    for b in ((bullet.vertices, bullet.faces), {"vertices": bullet.vertices, "faces": bullet.faces},
+              str(path), path, Trimeshlike()):
+        assert contain.mesh_mesh_ccd(plate, b, from_b=start, to_b=end).time == 0.49
+        assert contain.MovingMeshPair((plate.vertices, plate.faces), b).first_contact(
+            start, end).time == 0.49
+    with pytest.raises(TypeError, match="b"):
+        contain.mesh_mesh_ccd(plate, 42, from_b=start, to_b=end)
+    with pytest.raises(OSError):
+        contain.MovingMeshPair(plate, tmp_path / "missing.off")
