@@ -40,7 +40,7 @@
 #include <tight_inclusion/ccd.hpp>
 #endif
 #ifdef CONTAIN_BENCH_HAS_FCL
-#include <fcl/fcl.h>
+#include "fcl_mesh.h"
 #endif
 
 using namespace contain;
@@ -193,20 +193,7 @@ bool tight_inclusion(const CcdQuery& q, bool vertex_face) {
 #endif
 
 #ifdef CONTAIN_BENCH_HAS_FCL
-template <class BV>
-std::shared_ptr<fcl::BVHModel<BV>> fcl_model(const Mesh& m) {
-  auto bvh = std::make_shared<fcl::BVHModel<BV>>();
-  std::vector<fcl::Vector3d> v;
-  std::vector<fcl::Triangle> t;
-  for (const Vec3& p : m.vertices)
-    v.emplace_back(p.x, p.y, p.z);
-  for (const auto& f : m.triangles)
-    t.emplace_back(f[0], f[1], f[2]);
-  bvh->beginModel();
-  bvh->addSubModel(v, t);
-  bvh->endModel();
-  return bvh;
-}
+using bench::fcl_model;
 
 fcl::Transform3d fcl_translation(const Vec3& t) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
@@ -243,27 +230,34 @@ void fcl_report(const char* name, const std::vector<double>& ms,
   std::fflush(stdout);
 }
 
+// One call of fcl::continuousCollide, B translated from m.from to m.to (A at rest), timed; the
+// request keeps FCL's defaults (10 iterations, toc_err 1e-4) but for the motion and the solver.
+template <class Model>
+std::pair<bool, double> fcl_first_contact(const Model& a, const Model& b, const collide::Motion& m,
+                                          fcl::CCDSolverType solver, std::vector<double>& ms) {
+  const fcl::Transform3d identity = fcl::Transform3d::Identity();
+  fcl::ContinuousCollisionRequestd request;
+  request.ccd_motion_type = fcl::CCDM_TRANS;
+  request.ccd_solver_type = solver;
+  fcl::ContinuousCollisionResultd result;
+  const double s = thread_seconds();
+  fcl::continuousCollide(a.get(), identity, identity, b.get(), fcl_translation(m.from.t),
+                         fcl_translation(m.to.t), request, result);
+  ms.push_back(1e3 * (thread_seconds() - s));
+  return {result.is_collide, result.time_of_contact};
+}
+
 void fcl_moving_meshes(const Mesh& a, const Mesh& b, const std::vector<collide::Motion>& motions,
                        const std::vector<collide::MeshImpact>& exact) {
   std::printf("  FCL 0.7 continuous collision of the same meshes and motions (CCDM_TRANS):\n");
-  const fcl::Transform3d identity = fcl::Transform3d::Identity();
   double s0 = thread_seconds();
   auto oa = fcl_model<fcl::OBBRSSd>(a), ob = fcl_model<fcl::OBBRSSd>(b);
   const double obbrss_build_ms = 1e3 * (thread_seconds() - s0);
   for (const fcl::CCDSolverType solver : {fcl::CCDC_NAIVE, fcl::CCDC_CONSERVATIVE_ADVANCEMENT}) {
     std::vector<double> ms;
     std::vector<std::pair<bool, double>> answers;
-    for (const collide::Motion& m : motions) {
-      fcl::ContinuousCollisionRequestd request;  // defaults: 10 iterations, toc_err 1e-4
-      request.ccd_motion_type = fcl::CCDM_TRANS;
-      request.ccd_solver_type = solver;
-      fcl::ContinuousCollisionResultd result;
-      const double s = thread_seconds();
-      fcl::continuousCollide(oa.get(), identity, identity, ob.get(), fcl_translation(m.from.t),
-                             fcl_translation(m.to.t), request, result);
-      ms.push_back(1e3 * (thread_seconds() - s));
-      answers.emplace_back(result.is_collide, result.time_of_contact);
-    }
+    for (const collide::Motion& m : motions)
+      answers.push_back(fcl_first_contact(oa, ob, m, solver, ms));
     fcl_report(solver == fcl::CCDC_NAIVE ? "naive (10 sampled poses), OBBRSS"
                                          : "conservative advancement, OBBRSS",
                ms, answers, exact, obbrss_build_ms);
@@ -277,15 +271,7 @@ void fcl_moving_meshes(const Mesh& a, const Mesh& b, const std::vector<collide::
     s0 = thread_seconds();
     auto pa = fcl_model<fcl::AABBd>(a), pb = fcl_model<fcl::AABBd>(b);
     aabb_build_ms = 1e3 * (thread_seconds() - s0);
-    fcl::ContinuousCollisionRequestd request;
-    request.ccd_motion_type = fcl::CCDM_TRANS;
-    request.ccd_solver_type = fcl::CCDC_POLYNOMIAL_SOLVER;
-    fcl::ContinuousCollisionResultd result;
-    const double s = thread_seconds();
-    fcl::continuousCollide(pa.get(), identity, identity, pb.get(), fcl_translation(m.from.t),
-                           fcl_translation(m.to.t), request, result);
-    ms.push_back(1e3 * (thread_seconds() - s));
-    answers.emplace_back(result.is_collide, result.time_of_contact);
+    answers.push_back(fcl_first_contact(pa, pb, m, fcl::CCDC_POLYNOMIAL_SOLVER, ms));
   }
   fcl_report("polynomial solver, AABB (fresh models)", ms, answers, exact, aabb_build_ms);
 }
