@@ -31,8 +31,9 @@ std::string resolve(const std::filesystem::path& dir, const std::string& arg) {
 }  // namespace
 
 std::optional<std::string> RegressionCase::option(const std::string& flag) const {
-  for (std::size_t i = 0; i + 1 < run.size(); ++i) {
-    if (run[i] == flag) return run[i + 1];
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (run[i] == flag && i + 1 < run.size()) return run[i + 1];
+    if (run[i].rfind(flag + "=", 0) == 0) return run[i].substr(flag.size() + 1);
   }
   return std::nullopt;
 }

@@ -27,7 +27,7 @@ struct RegressionCase {
   std::vector<std::string> out;
   std::vector<std::string> err;
 
-  /// The value after `flag` in `run` (e.g. "--points"), if the command has it.
+  /// The value of `flag` in `run` (e.g. "--points" FILE or "--box=..."), if the command has it.
   [[nodiscard]] std::optional<std::string> option(const std::string& flag) const;
   /// The verb (first argument of `run`), or "" for a `lib` case.
   [[nodiscard]] std::string verb() const { return run.empty() ? std::string{} : run.front(); }
