@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "collide_ccd.h"
 #include "common.h"
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/region_region.h"
@@ -174,17 +175,36 @@ int run_meshes(const CollideOptions& o) {
 
 Verb add_collide(CLI::App& app) {
   auto o = std::make_shared<CollideOptions>();
+  auto c = std::make_shared<CcdCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
-  cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)")
-      ->required();
-  cmd->add_option("B", o->b, "the same kind of shape as A")->required();
+  cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
+  cmd->add_option("B", o->b, "the same kind of shape as A");
   cmd->add_option("--transform-a", o->transform_a,
                   "place A: 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2 (x' = R x + t)")
       ->option_text("T");
   cmd->add_option("--transform-b", o->transform_b, "place B (12 numbers, as --transform-a)")
       ->option_text("T");
   cmd->add_option("--poses", o->poses, "one transform of B a line: one answer a line")
+      ->option_text("FILE");
+  cmd->add_option("--from-a", c->from_a,
+                  "continuous: A's placement at t = 0 (12 numbers, as --transform-a); its vertices "
+                  "move on straight lines to --to-a")
+      ->option_text("T");
+  cmd->add_option("--to-a", c->to_a, "continuous: A's placement at t = 1")->option_text("T");
+  cmd->add_option("--from-b", c->from_b, "continuous: B's placement at t = 0")->option_text("T");
+  cmd->add_option("--to-b", c->to_b, "continuous: B's placement at t = 1")->option_text("T");
+  cmd->add_option("--motions", c->motions,
+                  "continuous: one motion of B a line (24 numbers: its placement at t = 0, then "
+                  "at t = 1); one answer a line")
+      ->option_text("FILE");
+  cmd->add_option("--ccd", c->kind,
+                  "continuous collision of primitives from --queries: vertex-face or edge-edge")
+      ->check(CLI::IsMember({"vertex-face", "edge-edge"}))
+      ->option_text("KIND");
+  cmd->add_option("--queries", c->queries,
+                  "with --ccd: the CCD benchmark's CSV (8 rows a query, exact rationals) or any "
+                  "other file with 24 numbers a line")
       ->option_text("FILE");
   cmd->add_flag("--json", o->json,
                 "one JSON object a result: intersect, a witness (a pair of triangles or a "
@@ -199,8 +219,36 @@ Verb add_collide(CLI::App& app) {
       "Examples:\n"
       "  contain collide gear.stl shaft.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0\n"
       "  contain collide a.off b.off --poses poses.txt --json\n"
-      "  contain collide parcel.wkt road.geojson");
-  return {cmd, [o]() { return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o); }};
+      "  contain collide parcel.wkt road.geojson\n"
+      "Continuous collision (the earliest time of contact, rounded down to a double):\n"
+      "  contain collide plate.off bullet.off --from-b 1,0,0,0,0,1,0,0,0,0,1,3 "
+      "--to-b 1,0,0,0,0,1,0,0,0,0,1,-3\n"
+      "  contain collide --ccd vertex-face --queries data_0_0.csv");
+  return {
+      cmd, [o, c]() {
+        c->a = o->a;
+        c->b = o->b;
+        c->transform_a = o->transform_a;
+        c->transform_b = o->transform_b;
+        c->json = o->json;
+        c->threads = o->threads;
+        c->quiet = o->quiet;
+        c->out = o->out;
+        if (!c->kind.empty() || !c->queries.empty()) return run_ccd_queries(*c);
+        if (o->a.empty() || o->b.empty()) {
+          return report(Error{ErrorKind::usage,
+                              "collide needs two shapes A and B (or --ccd KIND --queries FILE)"});
+        }
+        if (has_motion(*c)) {
+          if (is_region_path(o->a) || is_region_path(o->b) || !o->poses.empty()) {
+            return report(Error{ErrorKind::usage,
+                                "--from-X, --to-X and --motions move meshes (3D); --poses "
+                                "does not go with them"});
+          }
+          return run_moving_meshes(*c);
+        }
+        return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+      }};
 }
 
 }  // namespace contain::cli

@@ -3,7 +3,9 @@
 The Python face of the contain C++ library. Two layers, as in C++: one-shot functions
 (point_in_polygon, point_in_mesh, collide, polygon_boolean, bounding_sphere, ...) and prepared
 objects that own their acceleration structure and answer batches on every core with the GIL
-released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, WindingNumber).
+released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, WindingNumber,
+MovingMeshPair). Continuous collision: vertex_face_ccd and edge_edge_ccd on (N, 8, 3) arrays,
+mesh_mesh_ccd and MovingMeshPair.
 
 Shapes come as users hold them, by one rule (contain.as_mesh, contain.as_region): a mesh is a
 contain.Mesh, a trimesh.Trimesh, an Open3D TriangleMesh, a (vertices, faces) pair or a mesh
@@ -44,10 +46,12 @@ from ._contain import (
     Location,
     Mesh,
     MeshDistance,
+    MeshImpact,
     MeshIndex,
     MeshPair,
     MeshPairDistance,
     MeshReport,
+    MovingMeshPair,
     PolygonIndex,
     Region,
     RegionDistance,
@@ -63,9 +67,11 @@ from ._contain import (
     clip_segments,
     collide,
     convex_collide,
+    edge_edge_ccd,
     format_mesh,
     generalized_winding_number,
     is_mesh_like,
+    mesh_mesh_ccd,
     orient2d,
     orient3d,
     pair_search,
@@ -85,6 +91,7 @@ from ._contain import (
     tri_tri,
     tri_tri_2d,
     validate_mesh,
+    vertex_face_ccd,
     weld_vertices,
     winding_number,
     write_mesh,
@@ -106,10 +113,12 @@ __all__ = [
     "Location",
     "Mesh",
     "MeshDistance",
+    "MeshImpact",
     "MeshIndex",
     "MeshPair",
     "MeshPairDistance",
     "MeshReport",
+    "MovingMeshPair",
     "PolygonIndex",
     "Region",
     "RegionDistance",
@@ -125,9 +134,11 @@ __all__ = [
     "clip_segments",
     "collide",
     "convex_collide",
+    "edge_edge_ccd",
     "format_mesh",
     "generalized_winding_number",
     "is_mesh_like",
+    "mesh_mesh_ccd",
     "orient2d",
     "orient3d",
     "pair_search",
@@ -147,6 +158,7 @@ __all__ = [
     "tri_tri",
     "tri_tri_2d",
     "validate_mesh",
+    "vertex_face_ccd",
     "weld_vertices",
     "winding_number",
     "write_mesh",

@@ -18,6 +18,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_io(m);
   bind_inside(m);
   bind_collide(m);
+  bind_ccd(m);
   bind_clip(m);
   bind_bound(m);
   bind_convex(m);  // before the users of ConvexPolyhedron's Python type in their signatures

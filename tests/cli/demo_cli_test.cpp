@@ -39,9 +39,9 @@ TEST_F(DemoCli, RunsEveryCapabilityAndWritesThePicturesAndMeshesItNames) {
   const CliRun& run = *run_;
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* name : {"inside-polygon.svg", "inside-csg.svg", "inside-mesh.svg", "collide.svg",
-                           "clip-segments.svg", "clip-sutherland-hodgman.svg", "clip-boolean.svg",
-                           "clip-mesh.svg", "clip-mesh.obj", "clip-mesh.ply", "bound-torus.svg",
-                           "distance-slice.svg", "distance-clearance.svg"}) {
+                           "collide-ccd.svg", "clip-segments.svg", "clip-sutherland-hodgman.svg",
+                           "clip-boolean.svg", "clip-mesh.svg", "clip-mesh.obj", "clip-mesh.ply",
+                           "bound-torus.svg", "distance-slice.svg", "distance-clearance.svg"}) {
     EXPECT_NE(run.out.find(name), std::string::npos) << name;
     const std::filesystem::path file = std::filesystem::path(out_) / name;
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
@@ -53,6 +53,8 @@ TEST_F(DemoCli, RunsEveryCapabilityAndWritesThePicturesAndMeshesItNames) {
   EXPECT_NE(run.out.find("cube nested in the tube      intersect"), std::string::npos);
   EXPECT_NE(run.out.find("bar through the hole         disjoint"), std::string::npos);
   EXPECT_NE(run.out.find("closed and consistently oriented"), std::string::npos);
+  EXPECT_NE(run.out.find("bullet through a thin plate: t = 0 disjoint, t = 1 disjoint; swept: hit"),
+            std::string::npos);
 }
 
 TEST_F(DemoCli, DistanceScenesReportSignsTheClosestPairTouchingAndNesting) {
