@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "contain/clip/mesh_clip.h"
 #include "contain/distance/mesh_distance.h"
 #include "contain/distance/mesh_pair_distance.h"
 #include "demo_scenes.h"
@@ -49,25 +50,6 @@ std::string distance_colour(double d, double step, double reach) {
   if (d < 0)
     return hex(shade * (0.85 - 0.80 * t), shade * (0.90 - 0.62 * t), shade * (0.97 - 0.45 * t));
   return hex(shade * (0.99 - 0.45 * t), shade * (0.90 - 0.85 * t), shade * (0.85 - 0.80 * t));
-}
-
-// The mesh's section by the plane z = h, drawn in floating point: it is the zero contour of
-// the slice (the signs themselves are exact).
-std::vector<Segment2> section(const Mesh& mesh, double h) {
-  std::vector<Segment2> out;
-  for (const TriangleIndices& t : mesh.triangles) {
-    Vec2 ends[2];
-    int n = 0;
-    for (int k = 0; k < 3 && n < 2; ++k) {
-      const Vec3 a = mesh.vertices[static_cast<std::size_t>(t[k])];
-      const Vec3 b = mesh.vertices[static_cast<std::size_t>(t[(k + 1) % 3])];
-      if ((a.z < h) == (b.z < h)) continue;
-      const double s = (h - a.z) / (b.z - a.z);
-      ends[n++] = {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)};
-    }
-    if (n == 2) out.push_back({ends[0], ends[1]});
-  }
-  return out;
 }
 
 Transform pose(double about_z, double about_x, Vec3 at) {
@@ -122,7 +104,11 @@ Status distance_slice_scene(const Context& context) {
   io::SvgCanvas canvas({{-kHalf, -kHalf}, {kHalf, kHalf}}, 760);
   canvas.title("contain distance --signed: torus, slice z = 0.3, bands of 0.1");
   canvas.cells({{-kHalf, -kHalf}, {kHalf, kHalf}}, kCells, kCells, colours);
-  const std::vector<Segment2> contour = section(torus, kHeight);
+  // The zero contour is the torus's section by the plane (its rounded crossing points; the
+  // signs themselves are exact), drawn seen from above.
+  std::vector<Segment2> contour;
+  for (const Segment3& s : clip::mesh_section(torus, {0, 0, -1, kHeight}))
+    contour.push_back({{s.a.x, s.a.y}, {s.b.x, s.b.y}});
   canvas.segments(contour, {.stroke = "#000000", .stroke_width = 1.6});
   canvas.legend(distance_colour(-0.45, 0.1, 1.6), "inside (< 0)");
   canvas.legend("#000000", "zero contour");

@@ -54,6 +54,16 @@ Key edge_key(std::int32_t i, std::int32_t j) {
   return (static_cast<Key>(static_cast<std::uint32_t>(i)) << 32) | static_cast<std::uint32_t>(j);
 }
 
+std::unordered_set<Key> directed_edges(const Mesh& mesh) {
+  std::unordered_set<Key> directed;
+  for (const auto& t : mesh.triangles) {
+    for (int e = 0; e < 3; ++e)
+      directed.insert(
+          edge_key(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]));
+  }
+  return directed;
+}
+
 // Points on the plane with equal coordinates become one vertex. Crossing points of edges that
 // leave a vertex lying within rounding distance of the plane round to the same point (spot.obj
 // has vertices at x = 4e-19 next to the cut x = 0): as two vertices they leave a zero-length
@@ -95,8 +105,10 @@ void weld_on_plane(Mesh& mesh, const std::vector<bool>& on_plane) {
   mesh.triangles.resize(m);
 }
 
+// `on_plane_out`, when given, receives which of the result's vertices lie on the plane (exactly,
+// or as rounded crossing points), before any welding.
 template <class F>
-Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
+Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_plane_out = nullptr) {
   const Gradient g = gradient(f);
   Mesh out;
   out.vertices = mesh.vertices;
@@ -149,16 +161,12 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
     for (int m = 1; m + 1 < n; ++m)
       out.triangles.push_back({poly[0], poly[m], poly[m + 1]});
   }
+  if (on_plane_out != nullptr) *on_plane_out = on_plane;
   if (!cap) return out;
   weld_on_plane(out, on_plane);
 
   // Border edges on the plane (directed as the mesh uses them), chained into loops.
-  std::unordered_set<Key> directed;
-  for (const auto& t : out.triangles) {
-    for (int e = 0; e < 3; ++e)
-      directed.insert(
-          edge_key(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]));
-  }
+  const std::unordered_set<Key> directed = directed_edges(out);
   std::vector<std::pair<std::int32_t, std::int32_t>> border;
   for (const auto& t : out.triangles) {
     for (int e = 0; e < 3; ++e) {
@@ -310,6 +318,25 @@ Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
     return clip_all(mesh, faces, options);
   }
   return mesh_clip(mesh, std::span<const Plane>(polyhedron.planes()), options);
+}
+
+std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane) {
+  std::vector<bool> on_plane;
+  const Mesh cut = clip_step(mesh, predicates::PlaneFunction{plane}, false, &on_plane);
+  const std::unordered_set<Key> directed = directed_edges(cut);
+  std::vector<Segment3> out;
+  for (const auto& t : cut.triangles) {
+    for (int e = 0; e < 3; ++e) {
+      const std::int32_t u = t[static_cast<std::size_t>(e)],
+                         v = t[static_cast<std::size_t>((e + 1) % 3)];
+      if (on_plane[static_cast<std::size_t>(u)] && on_plane[static_cast<std::size_t>(v)] &&
+          !directed.contains(edge_key(v, u))) {
+        out.push_back(
+            {cut.vertices[static_cast<std::size_t>(u)], cut.vertices[static_cast<std::size_t>(v)]});
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace contain::clip

@@ -6,11 +6,13 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 #include "contain/values/plane.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 
@@ -58,5 +60,15 @@ struct MeshClipOptions {
 /// By a convex polyhedron: its planes, or the faces of the convex mesh it was made from.
 [[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                              const MeshClipOptions& options = {});
+
+/// The section of a mesh by a plane: the border edges, lying on the plane, of the part of the
+/// surface in the closed half-space (the cut of `mesh_clip` by that one half-space, without
+/// caps), directed as that part uses them. The side of every vertex is exact; crossing points
+/// are rounded as in `mesh_clip` (exact on axis-aligned planes in the plane's own coordinate).
+/// For a closed, consistently oriented mesh the segments chain into the closed loops a cap
+/// would fill. A closed mesh touching the plane along faces has no border there (those faces are
+/// kept whole or dropped, as in `mesh_clip`), so only transversal cuts give segments. An open
+/// mesh gives its section's pieces. O(n).
+[[nodiscard]] std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane);
 
 }  // namespace contain::clip
