@@ -296,10 +296,26 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
         tris_b[t] = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
         boxes_b[t] = triangle_box(tris_b[t]);
       }
+      Triangle3 tris_a[kMaxLeaf];
+      const std::int32_t count_a = std::min<std::int32_t>(p.count, kMaxLeaf);
+      for (std::int32_t s = 0; s < count_a; ++s)
+        tris_a[s] = triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(
+                                                       ia[static_cast<std::size_t>(p.first + s)])]);
+      // The two leaves' corners along the line between the boxes' centres: boxes near each other
+      // often hold patches that face apart (most leaf pairs end here).
+      if (count_a == p.count && count_b == q.count) {
+        const Vec3 w = (p.box.min + p.box.max) - (leaf_box_b.min + leaf_box_b.max);
+        if (detail::triangle_sets_quick_lower(std::span<const Triangle3>(tris_a, count_a),
+                                              std::span<const Triangle3>(tris_b, count_b),
+                                              w) > best)
+          continue;
+      }
       for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
         const std::int32_t ta = ia[static_cast<std::size_t>(s)];
         const Triangle3 tri_a =
-            triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(ta)]);
+            s - p.first < count_a
+                ? tris_a[s - p.first]
+                : triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(ta)]);
         const Box3 box_a = triangle_box(tri_a);
         if (box_box_lower_bound(box_a, leaf_box_b) > best) continue;
         for (std::int32_t t = q.first; t < q.first + q.count; ++t) {

@@ -87,6 +87,20 @@ double triangle_pair_quick_lower(const Triangle3& s, const Triangle3& t) {
   return squared_separation_lower(amin - bmax, dot(w, w));
 }
 
+double triangle_sets_quick_lower(std::span<const Triangle3> s, std::span<const Triangle3> t,
+                                 Vec3 w) {
+  if (s.empty() || t.empty()) return 0.0;
+  const Vec3 y = t.front().a;
+  double amin = kInf, bmax = -kInf;
+  for (const Triangle3& x : s)
+    amin = std::min({amin, separation_bound(x.a, y, w, 1.0), separation_bound(x.b, y, w, 1.0),
+                     separation_bound(x.c, y, w, 1.0)});
+  for (const Triangle3& x : t)
+    bmax = std::max({bmax, separation_bound(x.a, y, w, -1.0), separation_bound(x.b, y, w, -1.0),
+                     separation_bound(x.c, y, w, -1.0)});
+  return squared_separation_lower(amin - bmax, dot(w, w));
+}
+
 void triangle_pair_bounds(const Triangle3& s, const Triangle3& t, double slack, double& lo,
                           double& hi) {
   const std::array<Vec3, 3> va{s.a, s.b, s.c}, vb{t.a, t.b, t.c};

@@ -11,6 +11,7 @@
 //       for any w; tight when x, y are the exact closest pair; <= 0 when the triangles meet.
 
 #include <cmath>
+#include <span>
 
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"
@@ -47,6 +48,13 @@ template <class V>
 /// exact value for triangles small against their distance; 0 when they are close or meet.
 /// Six dot products, against the 15 closest-point computations of triangle_pair_bounds.
 [[nodiscard]] double triangle_pair_quick_lower(const Triangle3& s, const Triangle3& t);
+
+/// The same bound for two sets of triangles (the corners of two leaves of the hierarchies),
+/// along any direction `w` (the leaves' box centres' difference is a good one; its rounding does
+/// not matter); 0 for an empty set or no separation. Every point of a triangle lies between its
+/// corners' extremes along w.
+[[nodiscard]] double triangle_sets_quick_lower(std::span<const Triangle3> s,
+                                               std::span<const Triangle3> t, Vec3 w);
 
 void triangle_pair_bounds(const Triangle3& s, const Triangle3& t, double slack, double& lo,
                           double& hi);
