@@ -16,6 +16,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
+#include "many.h"
 #include "progress.h"
 #include "verbs.h"
 
@@ -24,6 +25,7 @@ namespace {
 
 struct CollideOptions {
   std::string a, b;
+  std::string scene;
   std::string transform_a, transform_b, poses;
   bool json = false;
   int threads = 0;
@@ -176,9 +178,13 @@ Verb add_collide(CLI::App& app) {
   auto o = std::make_shared<CollideOptions>();
   CLI::App* cmd = app.add_subcommand(
       "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
-  cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)")
-      ->required();
-  cmd->add_option("B", o->b, "the same kind of shape as A")->required();
+  cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
+  cmd->add_option("B", o->b, "the same kind of shape as A");
+  cmd->add_option("--scene", o->scene,
+                  "many solids instead of A and B: {\"objects\": [{\"id\": ..., \"mesh\": "
+                  "\"part.stl\", \"transform\": [12 numbers]}, ...]} (mesh paths relative to the "
+                  "file); prints every intersecting pair 'ID1 ID2' in file order")
+      ->option_text("FILE");
   cmd->add_option("--transform-a", o->transform_a,
                   "place A: 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2 (x' = R x + t)")
       ->option_text("T");
@@ -199,8 +205,23 @@ Verb add_collide(CLI::App& app) {
       "Examples:\n"
       "  contain collide gear.stl shaft.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0\n"
       "  contain collide a.off b.off --poses poses.txt --json\n"
-      "  contain collide parcel.wkt road.geojson");
-  return {cmd, [o]() { return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o); }};
+      "  contain collide parcel.wkt road.geojson\n"
+      "  contain collide --scene assembly.json --json --threads 2");
+  return {cmd, [o]() {
+            if (!o->scene.empty()) {
+              if (!o->a.empty() || !o->transform_a.empty() || !o->transform_b.empty() ||
+                  !o->poses.empty()) {
+                return report({ErrorKind::usage,
+                               "collide: --scene takes no shapes A B, transforms or poses (the "
+                               "scene file places its objects)"});
+              }
+              return run_collide_scene(o->scene, o->json, o->threads, o->out);
+            }
+            if (o->a.empty() || o->b.empty()) {
+              return report({ErrorKind::usage, "collide: give two shapes A B, or --scene FILE"});
+            }
+            return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+          }};
 }
 
 }  // namespace contain::cli

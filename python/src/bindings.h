@@ -13,5 +13,6 @@ void bind_inside(py::module_& m);   // MeshIndex, PolygonIndex, point_in_polygon
 void bind_collide(py::module_& m);  // Contact, MeshPair, collide
 void bind_clip(py::module_& m);     // clip_segments, polygon_boolean
 void bind_bound(py::module_& m);    // aabb, bounding_sphere, bounding_circle
+void bind_layer(py::module_& m);    // RegionLayer, SolidScene (many shapes at once)
 
 }  // namespace contain::python

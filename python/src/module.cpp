@@ -19,6 +19,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_collide(m);
   bind_clip(m);
   bind_bound(m);
+  bind_layer(m);
   m.def("_reads_in_place", &reads_in_place, py::arg("array"),
         "True when the batch calls read `array` without a copy (C-contiguous aligned float64).");
 #ifdef CONTAIN_VERSION

@@ -273,6 +273,9 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
     }
   }
   stats_.edge_cells = edge_cells_.size();
+  // Grown by push_back: give back the slack (layers hold many indexes).
+  edge_cells_.shrink_to_fit();
+  side_edges_.shrink_to_fit();
 }
 
 int PolygonIndex::column_of(double x) const {
@@ -318,6 +321,12 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
     if (detail::on_segment(e.a, e.b, point)) through.push_back({e.a, e.b});
   }
   return detail::classify_on_edges(point, winding, through, fill_);
+}
+
+std::size_t PolygonIndex::memory_bytes() const {
+  return sizeof(*this) + (xs_.capacity() + ys_.capacity()) * sizeof(double) +
+         cells_.capacity() * sizeof(std::uint32_t) + edge_cells_.capacity() * sizeof(EdgeCell) +
+         edges_.capacity() * sizeof(CellEdge) + side_edges_.capacity() * sizeof(SideEdge);
 }
 
 std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
