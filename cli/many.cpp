@@ -69,11 +69,23 @@ std::string locate_lines(const Locator& locator, const std::vector<Point>& point
   return text;
 }
 
+// Ids are separated by spaces on an output line: warn when an id holds white space.
+void warn_about_spaces(const std::vector<std::string>& ids, const std::string& what) {
+  for (const std::string& id : ids) {
+    if (id.find_first_of(" \t\n\r") == std::string::npos) continue;
+    warn(what + " ids hold white space (e.g. '" + id +
+         "'), so an output line does not tell where one ends: choose an --id attribute without "
+         "spaces");
+    return;
+  }
+}
+
 }  // namespace
 
 int run_layer(const ManyOptions& o) {
   auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
   if (!layer) return report(layer.error());
+  warn_about_spaces(layer->ids, "the layer's");
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
@@ -91,6 +103,7 @@ std::vector<inside::SceneObject> scene_objects(const io::Scene& scene) {
 int run_scene_inside(const ManyOptions& o) {
   auto scene = io::read_scene_json(o.scene);
   if (!scene) return report(scene.error());
+  warn_about_spaces(scene->ids, "the scene's");
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   const inside::SolidScene index(scene->meshes, scene_objects(*scene));

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -113,7 +114,7 @@ TEST(RegionLayer, MatchesEachRegionAloneOnRandomDegenerateLayers) {
   for (int round = 0; round < 30; ++round) {
     std::vector<MultiPolygon> regions;
     std::vector<Vec2> points;
-    const int count = 1 + round * 3;
+    const int count = 1 + round * 2;
     for (int r = 0; r < count; ++r) {
       // Small integer coordinates: shared vertices, collinear and overlapping edges.
       std::vector<Ring> rings = test::random_integer_rings(rng, 3, 9, 12);
@@ -121,6 +122,9 @@ TEST(RegionLayer, MatchesEachRegionAloneOnRandomDegenerateLayers) {
       points.insert(points.end(), more.begin(), more.end());
       regions.push_back(MultiPolygon{{Polygon{std::move(rings)}}});
     }
+    // A sample of them (the brute force is regions x points) and half-integer points.
+    std::shuffle(points.begin(), points.end(), rng);
+    points.resize(std::min<std::size_t>(points.size(), 800));
     std::uniform_int_distribution<int> c(-1, 13);
     for (int k = 0; k < 200; ++k)
       points.push_back({c(rng) * 0.5, c(rng) * 0.5});
@@ -144,7 +148,7 @@ TEST(RegionLayer, GridCellsOfLargeRegionsGiveTheSameAnswersAsSingleCells) {
   const RegionLayer flat(regions, {.single_cell_edges = 1u << 30});
   EXPECT_GT(gridded.stats().cells, 10 * flat.stats().cells);
   std::uniform_real_distribution<double> x(-1.5, 5.5), y(-1.5, 4.5);
-  std::vector<Vec2> points(20000);
+  std::vector<Vec2> points(8000);
   for (Vec2& p : points)
     p = {x(rng), y(rng)};
   for (const MultiPolygon& region : regions) {
@@ -161,7 +165,7 @@ TEST(RegionLayer, BatchTableIsTheSameForEveryThreadCountAndEqualsSingleQueries) 
   const RegionLayer layer(regions);
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<int> q(-4, 4 * 40 + 4);  // quarter steps: many on the edges
-  std::vector<Vec2> points(100000);
+  std::vector<Vec2> points(40000);
   for (Vec2& p : points)
     p = {q(rng) * 0.25, q(rng) * 0.25};
   const HolderTable one = layer.locate(points, {.threads = 1});
@@ -175,7 +179,7 @@ TEST(RegionLayer, BatchTableIsTheSameForEveryThreadCountAndEqualsSingleQueries) 
     ASSERT_EQ(std::vector<Holder>(row.begin(), row.end()), layer.locate(points[k]));
     shared += row.size() >= 2;
   }
-  EXPECT_GT(shared, 10000u);  // the points on shared edges and corners were there
+  EXPECT_GT(shared, 4000u);  // the points on shared edges and corners were there
 }
 
 TEST(RegionLayer, OneShotFunctionEqualsThePreparedLayer) {
