@@ -42,13 +42,13 @@ struct MeshSceneOptions {
 ///
 /// Algorithm: each distinct mesh gets its hierarchy, connected components and solidity once,
 /// in its own frame (objects sharing a mesh share them: 500 objects of 8 meshes cost 8
-/// hierarchies). Each object's world box is the exact box of its placed vertices; sweep and
+/// hierarchies). Each object's world box holds its placed triangles (`bounds`); sweep and
 /// prune (`pair_search`) over those boxes gives the candidate pairs; each candidate is tested
 /// exactly: both hierarchies under their transforms (boxes widened by a rounding bound, so no
 /// pair is missed), exact triangle tests at the leaves, then one vertex per component located
 /// in the other solid by exact perturbed ray parity.
 ///
-/// Complexity: build O(n log n) for n distinct triangles plus O(v) per object for its box;
+/// Complexity: build O(n log n) for n distinct triangles plus O(1) per object for its box;
 /// `pairs` O(m log m + candidates x pair test). Thread safety: const; `pairs` runs candidates
 /// on `options.threads` threads and its answer does not depend on the thread count.
 class MeshScene {
@@ -64,7 +64,9 @@ class MeshScene {
   [[nodiscard]] std::size_t size() const { return objects_.size(); }
   /// True when object k is a solid (its mesh closed), false for a surface.
   [[nodiscard]] bool is_solid(std::size_t k) const;
-  /// The exact world box of object k (empty for an empty object).
+  /// A closed world box holding every placed triangle of object k (empty for an empty
+  /// object): the union of the placed boxes of its hierarchy's nodes 8 levels down, widened by
+  /// the rounding bound, so slightly larger than the exact box.
   [[nodiscard]] const Box3& bounds(std::size_t k) const { return boxes_[k]; }
 
   /// Every intersecting pair (a < b), sorted by a then b.
@@ -72,8 +74,8 @@ class MeshScene {
   /// The exact test of objects i and j (i != j).
   [[nodiscard]] Contact collide(std::size_t i, std::size_t j) const;
 
-  /// The candidates of the broad phase: pairs of objects whose closed world boxes share a
-  /// point, sorted (a superset of `pairs`).
+  /// The candidates of the broad phase: pairs of objects whose `bounds` share a point, sorted
+  /// (a superset of `pairs`).
   [[nodiscard]] std::vector<std::pair<std::int32_t, std::int32_t>> candidates() const;
 
  private:
