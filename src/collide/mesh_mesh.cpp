@@ -47,9 +47,10 @@ MeshPair::MeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options)
 Contact MeshPair::collide(const Transform& tb) const {
   const detail::Side a{a_world_, bvh_a_, a_components_, a_solid_};
   const detail::Side b{b_, bvh_b_, b_components_, b_solid_};
-  return detail::collide_sides(a, detail::InWorld{}, b,
-                               detail::Placed{detail::PlacedBoxes(tb, b_max_abs_)},
-                               [&](Vec3 p) { return index_a_.locate(p) != Location::outside; });
+  const detail::Placed pb{detail::PlacedBoxes(tb, b_max_abs_)};
+  return detail::collide_sides(
+      a, detail::InWorld{}, b, pb, [&](const Box3& x, const Box3& y) { return x.overlaps(pb(y)); },
+      [&](Vec3 p) { return index_a_.locate(p) != Location::outside; });
 }
 
 void MeshPair::collide(std::span<const Transform> poses, std::span<Contact> out,

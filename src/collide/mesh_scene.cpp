@@ -8,6 +8,7 @@
 #include "collide/components.h"
 #include "collide/mesh_sides.h"
 #include "collide/placed_boxes.h"
+#include "collide/separating_axes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/pair_search.h"
 #include "contain/geometry/mesh_validation.h"
@@ -82,8 +83,10 @@ Contact MeshScene::collide(std::size_t i, std::size_t j) const {
   const detail::Side b{meshes_[mj], models_[mj].bvh, models_[mj].components, models_[mj].solid};
   const detail::Placed pa{detail::PlacedBoxes(oi.transform, models_[mi].max_abs)};
   const detail::Placed pb{detail::PlacedBoxes(oj.transform, models_[mj].max_abs)};
-  return detail::collide_sides(a, pa, b, pb,
-                               [&](Vec3 p) { return detail::odd_crossings(a, pa, p); });
+  const detail::SeparatingAxes axes(pa.boxes, pb.boxes);
+  return detail::collide_sides(
+      a, pa, b, pb, [&](const Box3& x, const Box3& y) { return axes.may_meet(x, y); },
+      [&](Vec3 p) { return detail::odd_crossings(a, pa, p); });
 }
 
 std::vector<ScenePair> MeshScene::pairs(const BatchOptions& options) const {

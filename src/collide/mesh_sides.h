@@ -62,11 +62,12 @@ bool odd_crossings(const Side& s, const Place& place, Vec3 q) {
 }
 
 // Does A placed by pa meet B placed by pb? Closed solids, surfaces where not closed (see
-// MeshPair). `b_vertex_in_a(p)` decides whether the world point p, on no triangle of A, lies in
-// the solid A (MeshPair asks A's MeshIndex; a scene casts the ray).
-template <class PlaceA, class PlaceB, class InA>
+// MeshPair). `nodes_may_meet(box_a, box_b)` is false only when the placed images of two local
+// node boxes are apart (conservative). `b_vertex_in_a(p)` decides whether the world point p, on
+// no triangle of A, lies in the solid A (MeshPair asks A's MeshIndex; a scene casts the ray).
+template <class PlaceA, class PlaceB, class NodesMayMeet, class InA>
 Contact collide_sides(const Side& a, const PlaceA& pa, const Side& b, const PlaceB& pb,
-                      InA&& b_vertex_in_a) {
+                      NodesMayMeet&& nodes_may_meet, InA&& b_vertex_in_a) {
   Contact contact;
   if (a.bvh.empty() || b.bvh.empty()) return contact;
   const std::vector<Vec3>& va = a.mesh.vertices;
@@ -75,7 +76,7 @@ Contact collide_sides(const Side& a, const PlaceA& pa, const Side& b, const Plac
   // 1. Surfaces: hierarchy against hierarchy, exact triangle pairs at the leaves.
   const bvh::TraversalStats stats = bvh::traverse_pairs(
       a.bvh, b.bvh,
-      [&](const bvh::Node& na, const bvh::Node& nb) { return pa(na.box).overlaps(pb(nb.box)); },
+      [&](const bvh::Node& na, const bvh::Node& nb) { return nodes_may_meet(na.box, nb.box); },
       [&](std::int32_t ta, std::int32_t tb) {
         const TriangleIndices& x = a.mesh.triangles[static_cast<std::size_t>(ta)];
         const TriangleIndices& y = b.mesh.triangles[static_cast<std::size_t>(tb)];

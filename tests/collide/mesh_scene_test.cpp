@@ -85,6 +85,31 @@ TEST(MeshScene, NestedTouchingAndSeparatedCubesEqualThePairwiseTest) {
   EXPECT_TRUE(scene.is_solid(0));
 }
 
+TEST(MeshScene, QuarterTurnsThatTouchAtAFaceAnEdgeOrACornerIntersectExactly) {
+  // Exact rotations (entries 0 and +-1) keep the coordinates exact, so the contacts are exact:
+  // the separating axis test of the rotated node boxes must never cull them.
+  const std::vector<Mesh> meshes{test::box_mesh({0, 0, 0}, {1, 2, 3})};
+  auto turned = [](Vec3 t, int quarter) {
+    Transform r = test::translation(t);
+    if (quarter == 1) r.r = {{{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};  // about z
+    if (quarter == 2) r.r = {{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}};  // about x
+    return r;
+  };
+  // The box [0,1]x[0,2]x[0,3] turned about z and moved by t spans [t.x-2, t.x] x [t.y, t.y+1] x
+  // [t.z, t.z+3]; turned about x, [t.x, t.x+1] x [t.y-3, t.y] x [t.z, t.z+2].
+  const std::vector<SceneObject> objects{
+      {0, turned({0, 0, 0}, 0)},  // 0: [0,1]x[0,2]x[0,3]
+      {0, turned({3, 0, 0}, 1)},  // 1: [1,3]x[0,1]x[0,3]: on the face x = 1 of 0
+      {0, turned({5, 1, 3}, 1)},  // 2: [3,5]x[1,2]x[3,6]: the corner (3,1,3) of 1
+      {0, turned({1, 2, 3}, 2)},  // 3: [1,2]x[-1,2]x[3,5]: the edge x=1, z=3 of 0, the top of 1
+      {0, turned({-1, -0.5, -4}, 0)},  // 4: [-1,0]x[-0.5,1.5]x[-4,-1]: apart
+  };
+  const MeshScene scene(meshes, objects);
+  EXPECT_EQ(ids(scene.pairs()),
+            (std::vector<std::pair<std::int32_t, std::int32_t>>{{0, 1}, {0, 3}, {1, 2}, {1, 3}}));
+  EXPECT_EQ(ids(scene.pairs()), pairwise(meshes, objects));
+}
+
 TEST(MeshScene, RandomPosesOfSharedMeshesEqualThePairwiseTestOnEveryThreadCount) {
   std::mt19937_64 rng(14);
   const std::vector<Mesh> meshes{scenes::torus(1.0, 0.3, 16, 8),

@@ -44,9 +44,10 @@ struct MeshSceneOptions {
 /// in its own frame (objects sharing a mesh share them: 500 objects of 8 meshes cost 8
 /// hierarchies). Each object's world box holds its placed triangles (`bounds`); sweep and
 /// prune (`pair_search`) over those boxes gives the candidate pairs; each candidate is tested
-/// exactly: both hierarchies under their transforms (boxes widened by a rounding bound, so no
-/// pair is missed), exact triangle tests at the leaves, then one vertex per component located
-/// in the other solid by exact perturbed ray parity.
+/// exactly: both hierarchies under their transforms, node pairs culled by the separating axis
+/// test of the two placed boxes (15 axes, Gottschalk et al. 1996; widened by a rounding bound,
+/// so no pair is missed), exact triangle tests at the leaves, then one vertex per component
+/// located in the other solid by exact perturbed ray parity.
 ///
 /// Complexity: build O(n log n) for n distinct triangles plus O(1) per object for its box;
 /// `pairs` O(m log m + candidates x pair test). Thread safety: const; `pairs` runs candidates
