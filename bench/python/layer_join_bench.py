@@ -26,8 +26,11 @@ Each tool runs as a whole process, reading the layer and the points and writing 
   PostGIS   a PostgreSQL 15 server of its own (as `nobody` under root) on a socket in --work;
             layer by ogr2ogr (GiST index), points by COPY into a table, then ST_MakePoint and a
             GiST index; timed: CREATE TABLE AS the join ON ST_Intersects(region, point) with
-            parallel workers off (one thread) and on (max_parallel_workers_per_gather = 2); the
-            load and index times are printed apart
+            parallel workers off (one thread) and on (max_parallel_workers_per_gather = 2), on
+            the layer as loaded and on its polygons cut by ST_Subdivide(geom, 256) (PostGIS'
+            advice for large polygons; DISTINCT pairs); JIT off; a join running past
+            --postgis-timeout seconds is stopped and reported as such; the load, index and
+            subdivision times are printed apart
 Answers: the pair counts of the three must agree with contain's (boundary points included, as
 ST_Intersects and predicate='intersects' count them); disagreements are printed.
 """
@@ -209,7 +212,7 @@ class Postgis:
         shutil.rmtree(self.dir, ignore_errors=True)
 
 
-def run_postgis(server, name, layer, id_field, points):
+def run_postgis(server, name, layer, id_field, points, timeout):
     table = f"layer_{name}"
     start = time.perf_counter()
     subprocess.run(["ogr2ogr", "-f", "PostgreSQL", server.connection, str(layer), "-nln", table,
@@ -224,13 +227,32 @@ def run_postgis(server, name, layer, id_field, points):
                            f"UPDATE {pts} SET geom = ST_SetSRID(ST_MakePoint(x, y), {srid});")
     t_index, _ = server.sql(f"CREATE INDEX ON {pts} USING GIST (geom); ANALYZE {pts}; ANALYZE {table};")
     region = f'"{id_field.lower()}"' if id_field else "ogc_fid"
+    # PostGIS' own advice for large polygons: ST_Subdivide them (at most 256 vertices a piece),
+    # so that each point is tested against a small piece. A point on a cut lies in two pieces of
+    # one region: DISTINCT. GEOS cannot subdivide the few invalid polygons: kept whole.
+    t_sub, _ = server.sql(
+        f"DROP TABLE IF EXISTS sub_{name}; CREATE UNLOGGED TABLE sub_{name} AS "
+        f"SELECT {region} AS region, ST_Subdivide(geom, 256) AS geom FROM {table} WHERE ST_IsValid(geom) "
+        f"UNION ALL SELECT {region}, geom FROM {table} WHERE NOT ST_IsValid(geom);"
+        f"CREATE INDEX ON sub_{name} USING GIST (geom); ANALYZE sub_{name};")
     joins = {}
-    for label, workers in (("1 thread", 0), ("2 workers", 2)):
-        wall, count = server.sql(
-            f"SET max_parallel_workers_per_gather = {workers}; DROP TABLE IF EXISTS joined;"
-            f"CREATE UNLOGGED TABLE joined AS SELECT p.id, l.{region} AS region FROM {pts} p "
-            f"JOIN {table} l ON ST_Intersects(l.geom, p.geom); SELECT count(*) FROM joined;")
-        joins[label] = (wall, int(count.split()[-1]))
+    queries = {
+        "plain": f"SELECT p.id, l.{region} AS region FROM {pts} p JOIN {table} l ON ST_Intersects(l.geom, p.geom)",
+        "subdivided": f"SELECT DISTINCT p.id, l.region FROM {pts} p JOIN sub_{name} l ON ST_Intersects(l.geom, p.geom)",
+    }
+    for kind, query in queries.items():
+        for label, workers in (("1 thread", 0), ("2 workers", 2)):
+            try:
+                wall, count = server.sql(
+                    f"SET jit = off; SET statement_timeout = '{timeout}s'; "
+                    f"SET max_parallel_workers_per_gather = {workers}; DROP TABLE IF EXISTS joined;"
+                    f"CREATE UNLOGGED TABLE joined AS {query}; SELECT count(*) FROM joined;")
+                joins[f"{kind}, {label}"] = (wall, int(count.split()[-1]))
+            except RuntimeError as error:
+                if "statement timeout" not in str(error):
+                    raise
+                joins[f"{kind}, {label}"] = (None, None)
+    joins["subdivide"] = (t_sub, None)
     return layer_load, t_copy, t_geom, t_index, joins
 
 
@@ -245,6 +267,7 @@ def main():
     parser.add_argument("--gshhg-resolution", default="i")
     parser.add_argument("--layers", default="countries,gshhg,boroughs")
     parser.add_argument("--no-postgis", action="store_true")
+    parser.add_argument("--postgis-timeout", type=int, default=900, help="seconds allowed to one PostGIS join")
     parser.add_argument("--work", type=pathlib.Path, default=pathlib.Path("/tmp/contain-layer-bench"))
     parser.add_argument("--out", type=pathlib.Path)
     args = parser.parse_args()
@@ -301,10 +324,16 @@ def main():
                          f"{n_gpd / wall / 1e3:.1f} k points/s; {gpd_pairs} pairs (contain: {head}); "
                          f"scaled to {args.points}: {scaled:.0f} s; contain 1 thread is {scaled / results[1]:.0f}x faster")
             if server is not None:
-                layer_load, t_copy, t_geom, t_index, joins = run_postgis(server, name, path, id_field, points)
+                layer_load, t_copy, t_geom, t_index, joins = run_postgis(server, name, path, id_field, points,
+                                                                         args.postgis_timeout)
+                t_sub = joins.pop("subdivide")[0]
                 log(out, f"PostGIS load: layer {layer_load:.1f} s, COPY points {t_copy:.1f} s, ST_MakePoint "
-                         f"{t_geom:.1f} s, GiST index + ANALYZE {t_index:.1f} s")
+                         f"{t_geom:.1f} s, GiST index + ANALYZE {t_index:.1f} s; ST_Subdivide + index {t_sub:.1f} s")
                 for label, (wall, count) in joins.items():
+                    if wall is None:
+                        log(out, f"PostGIS join ST_Intersects, {label}: stopped after {args.postgis_timeout} s "
+                                 f"(statement_timeout): contain 1 thread is > {args.postgis_timeout / results[1]:.0f}x faster")
+                        continue
                     log(out, f"PostGIS join ST_Intersects, {label}: {wall:.2f} s, {count} pairs "
                              f"({'equal' if count == contain_pairs else 'DIFFERENT from'} contain's {contain_pairs}); "
                              f"contain 1 thread is {wall / results[1]:.1f}x faster (join alone), "
