@@ -206,6 +206,39 @@ class Postgis:
             raise RuntimeError(f"psql failed: {result.stderr.strip()}\n  in: {statement}")
         return time.perf_counter() - start, result.stdout.strip()
 
+    def timed_sql(self, statement):
+        """Runs SQL in a session of its own; returns (wall s, backend CPU s, output). The CPU
+        time is the backend's user + system time from /proc (parallel workers not included)."""
+        session = subprocess.Popen(["psql", "-h", str(self.dir), "-U", "postgres", "-d", "postgres", "-v",
+                                    "ON_ERROR_STOP=1", "-q", "-t", "-A"], stdin=subprocess.PIPE,
+                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1)
+
+        def ask(sql):
+            session.stdin.write(sql + "\n\\echo __done__\n")
+            session.stdin.flush()
+            lines = []
+            for line in session.stdout:
+                if line.strip() == "__done__":
+                    return "\n".join(lines)
+                lines.append(line.rstrip("\n"))
+            raise RuntimeError(f"psql failed: {session.stderr.read().strip()}\n  in: {sql}")
+
+        def cpu(pid):
+            fields = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
+            return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+        try:
+            pid = int(ask("SELECT pg_backend_pid();").split()[-1])
+            before = cpu(pid)
+            start = time.perf_counter()
+            out = ask(statement)
+            wall = time.perf_counter() - start
+            used = cpu(pid) - before
+        finally:
+            session.stdin.close()
+            session.wait()
+        return wall, used, out.strip()
+
     def close(self):
         if self.started:
             self._server([str(PG_BIN / "pg_ctl"), "-D", str(self.dir / "data"), "-m", "immediate", "-w", "stop"])
@@ -243,16 +276,16 @@ def run_postgis(server, name, layer, id_field, points, timeout):
     for kind, query in queries.items():
         for label, workers in (("1 thread", 0), ("2 workers", 2)):
             try:
-                wall, count = server.sql(
+                wall, cpu, count = server.timed_sql(
                     f"SET jit = off; SET statement_timeout = '{timeout}s'; "
                     f"SET max_parallel_workers_per_gather = {workers}; DROP TABLE IF EXISTS joined;"
                     f"CREATE UNLOGGED TABLE joined AS {query}; SELECT count(*) FROM joined;")
-                joins[f"{kind}, {label}"] = (wall, int(count.split()[-1]))
+                joins[f"{kind}, {label}"] = (wall, cpu if workers == 0 else None, int(count.split()[-1]))
             except RuntimeError as error:
                 if "statement timeout" not in str(error):
                     raise
-                joins[f"{kind}, {label}"] = (None, None)
-    joins["subdivide"] = (t_sub, None)
+                joins[f"{kind}, {label}"] = (None, None, None)
+    joins["subdivide"] = (t_sub, None, None)
     return layer_load, t_copy, t_geom, t_index, joins
 
 
@@ -305,11 +338,12 @@ def main():
             log(out, f"## {name}: {path}")
             log(out, f"# {stats['regions']} regions, {stats['edges']} edges, {stats['bytes'] / stats['edges']:.0f} bytes "
                      f"per edge; {args.points} points ({args.points // 100} layer vertices), load {load()}")
-            results = {}
+            results, cpu_results = {}, {}
             for threads in (1, 0):
                 wall, cpu, pairs, on = run_contain(args.contain, path, id_field, points,
                                                    args.work / f"out_{name}.txt", threads)
                 results[threads] = wall
+                cpu_results[threads] = cpu
                 log(out, f"contain --threads {threads or 'all'}: {wall:.2f} s wall, {cpu:.2f} s CPU, "
                          f"{args.points / wall / 1e6:.2f} M points/s; {pairs} pairs ({on} on a boundary)")
             contain_pairs = pairs
@@ -322,21 +356,24 @@ def main():
                 scaled = wall * args.points / n_gpd
                 log(out, f"GeoPandas sjoin (whole process, {n_gpd} points): {wall:.1f} s wall, {cpu:.1f} s CPU, "
                          f"{n_gpd / wall / 1e3:.1f} k points/s; {gpd_pairs} pairs (contain: {head}); "
-                         f"scaled to {args.points}: {scaled:.0f} s; contain 1 thread is {scaled / results[1]:.0f}x faster")
+                         f"scaled to {args.points}: {scaled:.0f} s; contain 1 thread is {scaled / results[1]:.0f}x faster "
+                         f"(wall), {cpu * args.points / n_gpd / cpu_results[1]:.0f}x less CPU")
             if server is not None:
                 layer_load, t_copy, t_geom, t_index, joins = run_postgis(server, name, path, id_field, points,
                                                                          args.postgis_timeout)
                 t_sub = joins.pop("subdivide")[0]
                 log(out, f"PostGIS load: layer {layer_load:.1f} s, COPY points {t_copy:.1f} s, ST_MakePoint "
                          f"{t_geom:.1f} s, GiST index + ANALYZE {t_index:.1f} s; ST_Subdivide + index {t_sub:.1f} s")
-                for label, (wall, count) in joins.items():
+                for label, (wall, cpu, count) in joins.items():
                     if wall is None:
                         log(out, f"PostGIS join ST_Intersects, {label}: stopped after {args.postgis_timeout} s "
                                  f"(statement_timeout): contain 1 thread is > {args.postgis_timeout / results[1]:.0f}x faster")
                         continue
-                    log(out, f"PostGIS join ST_Intersects, {label}: {wall:.2f} s, {count} pairs "
+                    cpu_text = (f", backend CPU {cpu:.2f} s (contain 1 thread: {cpu / cpu_results[1]:.1f}x less CPU)"
+                                if cpu is not None else "")
+                    log(out, f"PostGIS join ST_Intersects, {label}: {wall:.2f} s wall{cpu_text}, {count} pairs "
                              f"({'equal' if count == contain_pairs else 'DIFFERENT from'} contain's {contain_pairs}); "
-                             f"contain 1 thread is {wall / results[1]:.1f}x faster (join alone), "
+                             f"contain 1 thread is {wall / results[1]:.1f}x faster (join alone, wall), "
                              f"{(wall + t_copy + t_geom + t_index) / results[1]:.1f}x with loading")
     finally:
         if server is not None:
