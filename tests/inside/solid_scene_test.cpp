@@ -61,7 +61,7 @@ TEST(SolidScene, EachObjectAnswersAsItsPlacedMeshAloneOnEveryThreadCount) {
     alone.emplace_back(world);
   }
   std::vector<Vec3> points =
-      scenes::uniform_points(Box3{{-3.5, -3.5, -1.5}, {3.5, 3.5, 1.5}}, 30000, 3);
+      scenes::uniform_points(Box3{{-3.5, -3.5, -1.5}, {3.5, 3.5, 1.5}}, 10000, 3);
   // Exactly on surfaces: the placed vertices.
   for (std::size_t k = 0; k < objects.size(); ++k) {
     const Mesh& m = meshes[static_cast<std::size_t>(objects[k].mesh)];
@@ -84,7 +84,7 @@ TEST(SolidScene, EachObjectAnswersAsItsPlacedMeshAloneOnEveryThreadCount) {
     for (const Holder& h : expected)
       boundary += h.location == Location::boundary;
   }
-  EXPECT_GT(held, 1000u);
+  EXPECT_GT(held, 300u);
   EXPECT_GT(boundary, 100u);
 }
 
