@@ -149,6 +149,13 @@ def sjoin(
     boundary = {"intersects": "inside", "covered_by": "inside", "within": "outside"}.get(predicate)
     if boundary is None:
         raise ValueError(f"predicate must be 'intersects', 'covered_by' or 'within', got {predicate!r}")
+    if not isinstance(regions, contain.RegionLayer):
+        left_crs, right_crs = getattr(points, "crs", None), getattr(regions, "crs", None)
+        if left_crs != right_crs:
+            import warnings
+
+            warnings.warn(f"the points' CRS ({left_crs}) and the regions' ({right_crs}) differ: the coordinates are "
+                          "joined as they are (reproject with to_crs first)", UserWarning, stacklevel=2)
     layer = regions if isinstance(regions, contain.RegionLayer) else layer_from_geodataframe(regions, fill=fill)
     xy = points_of(points.geometry)
     pairs = layer.locate(xy, boundary=boundary, threads=threads)

@@ -86,6 +86,8 @@ def test_sjoin_equals_geopandas_on_natural_earth_countries(geopandas):
         assert list(ours.columns) == list(theirs.columns)
         theirs = theirs.assign(_n=theirs.index).sort_values(["_n", "index_right"]).drop(columns="_n")
         assert ours["name"].tolist() == theirs["name"].tolist()
+    with pytest.warns(UserWarning, match="CRS"):
+        contain.layers.sjoin(points.set_crs("EPSG:3857", allow_override=True), world)
     left = contain.layers.sjoin(points, world, how="left")
     assert len(left) == len(geopandas.sjoin(points, world, how="left"))
     assert left["index_right"].isna().sum() > 1000  # the oceans
