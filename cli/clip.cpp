@@ -19,12 +19,12 @@
 #include "contain/clip/liang_barsky.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/clip/segment_halfspace.h"
-#include "contain/geometry/mesh_validation.h"
-#include "contain/inside/convex_polyhedron.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 #include "contain/io/wkt.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/mesh_validation.h"
 #include "progress.h"
 #include "verbs.h"
 
@@ -111,10 +111,10 @@ Result<Ring> convex_ring_of(const std::string& path) {
 }
 
 // --convex in 3D: a closed convex mesh.
-Result<inside::ConvexPolyhedron> convex_solid_of(const std::string& path) {
+Result<ConvexPolyhedron> convex_solid_of(const std::string& path) {
   auto file = io::read_mesh(path);
   if (!file) return file.error();
-  auto solid = inside::ConvexPolyhedron::from_mesh(file->mesh);
+  auto solid = ConvexPolyhedron::from_mesh(file->mesh);
   if (!solid) {
     Error e = solid.error();
     if (e.source.empty()) e.source = path;

@@ -11,7 +11,7 @@
 
 #include "contain/core/location.h"
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::cli {
 

@@ -12,10 +12,10 @@
 #include "contain/bound/bounding_sphere.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/collide/mesh_mesh.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/inside/csg.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "demo_scenes.h"
 #include "scenes/scenes.h"
 
@@ -51,7 +51,6 @@ Mesh demo_torus() {
 // CSG: (ball ∪ box) − small ball, on a grid in the plane z = 0; grid lines meet the box faces
 // exactly, so the regularised boundary shows.
 Status csg_scene(const Context& context) {
-  using inside::Csg;
   const Csg tree = Csg::subtract(Csg::unite({Csg::leaf(Sphere{{0, 0, 0}, 1.0}),
                                              Csg::leaf(Box3{{0, -0.5, -0.5}, {1.75, 0.5, 0.5}})}),
                                  Csg::leaf(Sphere{{0.25, 0.25, 0}, 0.375}));

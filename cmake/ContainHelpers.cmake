@@ -12,7 +12,7 @@ function(contain_warnings target)
   endif()
 endfunction()
 
-# contain_library(NAME SOURCES a.cpp b.cpp DEPS contain_geometry ...)
+# contain_library(NAME SOURCES a.cpp b.cpp DEPS contain_values ...)
 # A static library contain_<NAME> from src/<NAME>/ with the public headers of include/.
 function(contain_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})

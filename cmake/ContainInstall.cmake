@@ -40,7 +40,10 @@ set(contain_pc_libs "")
 set(reversed ${contain_installed_libraries})
 list(REVERSE reversed)
 foreach(library IN LISTS reversed)
-  string(APPEND contain_pc_libs " -l${library}")
+  get_target_property(type ${library} TYPE)
+  if(type STREQUAL "STATIC_LIBRARY")  # header-only layers (core) have no archive
+    string(APPEND contain_pc_libs " -l${library}")
+  endif()
 endforeach()
 # Relocatable: the prefix is found from where the .pc file lies.
 file(RELATIVE_PATH contain_pc_up /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)

@@ -31,7 +31,6 @@ int main() {
   }
 
   // Solids: a unit ball united with a box, minus a half-space; regularised set operations.
-  using inside::Csg;
   const Csg tree = Csg::subtract(
       Csg::unite({Csg::leaf(Sphere{{0, 0, 0}, 1}), Csg::leaf(Box3{{0, -1, -1}, {2, 1, 1}})}),
       Csg::leaf(Plane{0, 0, 1, -0.5}));  // removes z >= 0.5

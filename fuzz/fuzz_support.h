@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 // Aborts with the failed condition: libFuzzer reports a crash and writes the input out.
 #define FUZZ_CHECK(cond)                                                                \

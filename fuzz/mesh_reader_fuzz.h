@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "contain/geometry/mesh_validation.h"
 #include "contain/io/mesh_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "fuzz_support.h"
 
 namespace contain::fuzz {

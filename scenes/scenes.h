@@ -5,11 +5,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
+#include "contain/values/vec.h"
 
 namespace contain::scenes {
 

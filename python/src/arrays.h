@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::python {
 

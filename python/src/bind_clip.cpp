@@ -108,7 +108,7 @@ py::tuple clip3(const Doubles& array, const py::handle& box, const py::handle& h
   }
   std::vector<Plane> planes;
   if (py::isinstance<Mesh>(convex)) {
-    const auto polyhedron = take(inside::ConvexPolyhedron::from_mesh(convex.cast<const Mesh&>()));
+    const auto polyhedron = take(ConvexPolyhedron::from_mesh(convex.cast<const Mesh&>()));
     return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
       clip::clip_segments(s, polyhedron, o, k, opt);
     });
@@ -118,7 +118,7 @@ py::tuple clip3(const Doubles& array, const py::handle& box, const py::handle& h
     const double* r = rows.data() + 4 * i;
     planes.push_back({r[0], r[1], r[2], r[3]});
   }
-  const auto polyhedron = take(inside::ConvexPolyhedron::from_planes(std::move(planes)));
+  const auto polyhedron = take(ConvexPolyhedron::from_planes(std::move(planes)));
   return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
     clip::clip_segments(s, polyhedron, o, k, opt);
   });

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/transform.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/transform.h"
 
 namespace contain::python {
 

@@ -36,6 +36,7 @@
 #include <utility>
 #include <vector>
 
+#include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 
 namespace contain::clip::detail {
@@ -53,23 +54,6 @@ bool lex_less(Vec2 a, Vec2 b) {
 int half_of(Vec2 o, Vec2 p) {
   return (p.y > o.y || (p.y == o.y && p.x > o.x)) ? 0 : 1;
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // Both pieces cross the line y = c (lo.y <= c < hi.y) and meet at most in endpoints: true when
 // t crosses it right of s. The higher of the two lower endpoints lies within the other's y span,
@@ -343,7 +327,7 @@ void Arrangement::label_faces() {
   // Components of the graph, and the lowest (x, y) point of each, a vertex or a point inside a
   // run (ids of the lowest vertex, or kNone and the run's edge and point index).
   const std::size_t nv = vertex_.size();
-  UnionFind comp(nv);
+  UnionFind<std::uint32_t> comp(nv);
   for (const Edge& e : edge_)
     comp.unite(e.u, e.v);
   struct Lowest {
@@ -469,7 +453,7 @@ MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) con
     in[f] = keep(face_a_[f], face_b_[f]) ? 1 : 0;
   auto boundary = [&](std::int32_t h) { return in[face_[h]] && !in[face_[h ^ 1]]; };
   // Regions: kept faces connected across kept-kept edges.
-  UnionFind region(nf);
+  UnionFind<std::uint32_t> region(nf);
   for (const auto& [f, g] : face_links_) {
     if (in[f]) region.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
   }

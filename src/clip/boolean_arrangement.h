@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "clip/boolean_noding.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::clip::detail {
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip::detail {
 

@@ -17,8 +17,8 @@
 #include <algorithm>
 
 #include "clip/segment_common.h"
-#include "contain/geometry/box.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::detail {
 

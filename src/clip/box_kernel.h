@@ -24,8 +24,8 @@
 #include <span>
 
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/segment.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip::detail {
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "contain/geometry/polygon.h"
 #include "contain/inside/point_in_polygon.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::clip::detail {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip::detail {
 

@@ -1,5 +1,6 @@
 #include "contain/clip/clip_point.h"
 
+#include "contain/inside/point_in_convex.h"
 #include "contain/inside/point_in_polygon.h"
 #include "contain/predicates/compare_distance.h"
 #include "contain/predicates/side_of_plane.h"
@@ -33,8 +34,8 @@ std::optional<Vec3> clip_point(Vec3 p, const Sphere& ball) {
 std::optional<Vec2> clip_point(Vec2 p, const Circle& disc) {
   return keep_if(predicates::side_of_circle(disc, p) != Sign::negative, p);
 }
-std::optional<Vec3> clip_point(Vec3 p, const inside::ConvexPolyhedron& polyhedron) {
-  return keep_if(polyhedron.locate(p) != Location::outside, p);
+std::optional<Vec3> clip_point(Vec3 p, const ConvexPolyhedron& polyhedron) {
+  return keep_if(inside::point_in_convex(polyhedron, p) != Location::outside, p);
 }
 std::optional<Vec2> clip_point(Vec2 p, const Polygon& polygon) {
   return keep_if(inside::point_in_polygon(polygon, p) != Location::outside, p);

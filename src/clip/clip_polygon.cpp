@@ -22,15 +22,15 @@
 namespace contain::clip {
 namespace {
 
-using detail::big;
-using detail::BigFloat;
+using predicates::BigFloat;
 
 // Position along the boundary's direction d, exactly: pi(v) = d . v.
-BigFloat position(const detail::LineFunction& f, Vec2 v) {
-  return big(f.line.b) * big(v.x) - big(f.line.a) * big(v.y);  // d = (b, -a)
+BigFloat position(const predicates::LineFunction& f, Vec2 v) {
+  return BigFloat(f.line.b) * BigFloat(v.x) - BigFloat(f.line.a) * BigFloat(v.y);  // d = (b, -a)
 }
-BigFloat position(const detail::EdgeFunction& f, Vec2 v) {
-  return (big(f.q.x) - big(f.p.x)) * big(v.x) + (big(f.q.y) - big(f.p.y)) * big(v.y);
+BigFloat position(const predicates::EdgeFunction& f, Vec2 v) {
+  return (BigFloat(f.q.x) - BigFloat(f.p.x)) * BigFloat(v.x) +
+         (BigFloat(f.q.y) - BigFloat(f.p.y)) * BigFloat(v.y);
 }
 
 // A chain end on the line at position num / den (den > 0), exactly.
@@ -305,7 +305,7 @@ MultiPolygon clip_with(const MultiPolygon& region, std::span<const F> functions,
 MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane> half_planes,
                           const PolygonClipOptions& options) {
   const auto functions = detail::line_functions(half_planes);
-  return clip_with(region, std::span<const detail::LineFunction>(functions), options);
+  return clip_with(region, std::span<const predicates::LineFunction>(functions), options);
 }
 
 MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
@@ -319,7 +319,7 @@ MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
                           const PolygonClipOptions& options) {
   const auto edges = detail::edge_functions(convex_ring);
   if (!edges) return {};
-  return clip_with(region, std::span<const detail::EdgeFunction>(*edges), options);
+  return clip_with(region, std::span<const predicates::EdgeFunction>(*edges), options);
 }
 
 }  // namespace contain::clip

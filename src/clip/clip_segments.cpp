@@ -98,19 +98,19 @@ void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Se
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
   each(s, out, kept, options, [&](const Segment2& x) { return segment_sphere(x, disc); });
 }
-void clip_segments(std::span<const Segment3> s, const inside::ConvexPolyhedron& polyhedron,
+void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,
                    const BatchOptions& options) {
   if (!polyhedron.faces().empty()) {
     const auto f = detail::face_functions(polyhedron.faces());
     each(s, out, kept, options, [&](const Segment3& x) {
-      return detail::cyrus_beck_clip<Vec3, detail::FaceFunction>(x.a, x.b, f);
+      return detail::cyrus_beck_clip<Vec3, predicates::FaceFunction>(x.a, x.b, f);
     });
     return;
   }
   const auto f = detail::plane_functions(polyhedron.planes());
   each(s, out, kept, options, [&](const Segment3& x) {
-    return detail::cyrus_beck_clip<Vec3, detail::PlaneFunction>(x.a, x.b, f);
+    return detail::cyrus_beck_clip<Vec3, predicates::PlaneFunction>(x.a, x.b, f);
   });
 }
 void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::span<Segment2> out,
@@ -122,7 +122,7 @@ void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::sp
     return;
   }
   each(s, out, kept, options, [&](const Segment2& x) {
-    return detail::cyrus_beck_clip<Vec2, detail::EdgeFunction>(x.a, x.b, *edges);
+    return detail::cyrus_beck_clip<Vec2, predicates::EdgeFunction>(x.a, x.b, *edges);
   });
 }
 

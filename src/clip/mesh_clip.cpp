@@ -16,31 +16,32 @@
 namespace contain::clip {
 namespace {
 
-using detail::big;
-using detail::BigFloat;
+using predicates::BigFloat;
 
 struct Gradient {
   BigFloat x, y, z;  // exact
   Vec3 approx;
 };
 
-Gradient gradient(const detail::PlaneFunction& f) {
-  return {big(f.plane.a), big(f.plane.b), big(f.plane.c), f.plane.normal()};
+Gradient gradient(const predicates::PlaneFunction& f) {
+  return {BigFloat(f.plane.a), BigFloat(f.plane.b), BigFloat(f.plane.c), f.plane.normal()};
 }
-Gradient gradient(const detail::FaceFunction& f) {
+Gradient gradient(const predicates::FaceFunction& f) {
   // s(p) = ((c - a) x (b - a)) . (p - a)
   const Triangle3& t = f.face;
-  const BigFloat ux = big(t.c.x) - big(t.a.x), uy = big(t.c.y) - big(t.a.y),
-                 uz = big(t.c.z) - big(t.a.z);
-  const BigFloat wx = big(t.b.x) - big(t.a.x), wy = big(t.b.y) - big(t.a.y),
-                 wz = big(t.b.z) - big(t.a.z);
+  const BigFloat ux = BigFloat(t.c.x) - BigFloat(t.a.x), uy = BigFloat(t.c.y) - BigFloat(t.a.y),
+                 uz = BigFloat(t.c.z) - BigFloat(t.a.z);
+  const BigFloat wx = BigFloat(t.b.x) - BigFloat(t.a.x), wy = BigFloat(t.b.y) - BigFloat(t.a.y),
+                 wz = BigFloat(t.b.z) - BigFloat(t.a.z);
   return {uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx, cross(t.c - t.a, t.b - t.a)};
 }
 
 // Sign of the triangle's normal (b - a) x (c - a) dotted with the gradient, exactly.
 Sign facing(const Vec3& a, const Vec3& b, const Vec3& c, const Gradient& g) {
-  const BigFloat ux = big(b.x) - big(a.x), uy = big(b.y) - big(a.y), uz = big(b.z) - big(a.z);
-  const BigFloat wx = big(c.x) - big(a.x), wy = big(c.y) - big(a.y), wz = big(c.z) - big(a.z);
+  const BigFloat ux = BigFloat(b.x) - BigFloat(a.x), uy = BigFloat(b.y) - BigFloat(a.y),
+                 uz = BigFloat(b.z) - BigFloat(a.z);
+  const BigFloat wx = BigFloat(c.x) - BigFloat(a.x), wy = BigFloat(c.y) - BigFloat(a.y),
+                 wz = BigFloat(c.z) - BigFloat(a.z);
   return ((uy * wz - uz * wy) * g.x + (uz * wx - ux * wz) * g.y + (ux * wy - uy * wx) * g.z).sign();
 }
 
@@ -215,12 +216,12 @@ Mesh mesh_clip(const Mesh& mesh, const Box3& box, const MeshClipOptions& options
   return mesh_clip(mesh, box_halfspaces(box), options);
 }
 
-Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
+Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                const MeshClipOptions& options) {
   if (!polyhedron.faces().empty()) {
     // One cut per plane: a face coplanar with an earlier one (a quad split in two) would cut
     // again through the rounded crossings of the first.
-    std::vector<detail::FaceFunction> faces;
+    std::vector<predicates::FaceFunction> faces;
     for (const Triangle3& t : polyhedron.faces()) {
       const bool repeated = std::any_of(faces.begin(), faces.end(), [&](const auto& f) {
         return f.side(t.a) == Sign::zero && f.side(t.b) == Sign::zero && f.side(t.c) == Sign::zero;

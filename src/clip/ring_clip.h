@@ -5,20 +5,20 @@
 #include <algorithm>
 #include <vector>
 
-#include "clip/exact_value.h"
+#include "contain/predicates/halfspace_function.h"
 
 namespace contain::clip::detail {
 
 /// An axis-parallel boundary with a unit coefficient puts its crossings on it exactly.
-inline void snap(const LineFunction& f, Vec2& x) {
+inline void snap(const predicates::LineFunction& f, Vec2& x) {
   if (f.line.b == 0.0 && (f.line.a == 1.0 || f.line.a == -1.0)) x.x = -f.line.c * f.line.a;
   if (f.line.a == 0.0 && (f.line.b == 1.0 || f.line.b == -1.0)) x.y = -f.line.c * f.line.b;
 }
-inline void snap(const EdgeFunction& f, Vec2& x) {
+inline void snap(const predicates::EdgeFunction& f, Vec2& x) {
   if (f.p.x == f.q.x) x.x = f.p.x;
   if (f.p.y == f.q.y) x.y = f.p.y;
 }
-inline void snap(const PlaneFunction& f, Vec3& x) {
+inline void snap(const predicates::PlaneFunction& f, Vec3& x) {
   const Plane& h = f.plane;
   auto unit = [](double v) { return v == 1.0 || v == -1.0; };
   if (h.b == 0.0 && h.c == 0.0 && unit(h.a)) x.x = -h.d * h.a;
@@ -26,7 +26,7 @@ inline void snap(const PlaneFunction& f, Vec3& x) {
   if (h.a == 0.0 && h.b == 0.0 && unit(h.c)) x.z = -h.d * h.c;
 }
 
-inline void snap(const FaceFunction& f, Vec3& x) {
+inline void snap(const predicates::FaceFunction& f, Vec3& x) {
   const Triangle3& t = f.face;
   if (t.a.x == t.b.x && t.a.x == t.c.x) x.x = t.a.x;
   if (t.a.y == t.b.y && t.a.y == t.c.y) x.y = t.a.y;

@@ -6,8 +6,8 @@
 #include <type_traits>
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip::detail {
 

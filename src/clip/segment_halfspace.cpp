@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "clip/exact_value.h"
 #include "clip/segment_common.h"
+#include "contain/predicates/halfspace_function.h"
 
 namespace contain::clip {
 namespace {
@@ -46,22 +46,22 @@ typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const F& f) 
 }  // namespace
 
 SegmentCase segment_case(const Segment3& s, const Plane& h) {
-  return case_of(s.a, s.b, detail::PlaneFunction{h});
+  return case_of(s.a, s.b, predicates::PlaneFunction{h});
 }
 SegmentCase segment_case(const Segment2& s, const HalfPlane& h) {
-  return case_of(s.a, s.b, detail::LineFunction{h});
+  return case_of(s.a, s.b, predicates::LineFunction{h});
 }
 double crossing_parameter(const Segment3& s, const Plane& h) {
-  return parameter(s.a, s.b, detail::PlaneFunction{h});
+  return parameter(s.a, s.b, predicates::PlaneFunction{h});
 }
 double crossing_parameter(const Segment2& s, const HalfPlane& h) {
-  return parameter(s.a, s.b, detail::LineFunction{h});
+  return parameter(s.a, s.b, predicates::LineFunction{h});
 }
 ClippedSegment3 segment_halfspace(const Segment3& s, const Plane& h) {
-  return clip(s.a, s.b, detail::PlaneFunction{h});
+  return clip(s.a, s.b, predicates::PlaneFunction{h});
 }
 ClippedSegment2 segment_halfspace(const Segment2& s, const HalfPlane& h) {
-  return clip(s.a, s.b, detail::LineFunction{h});
+  return clip(s.a, s.b, predicates::LineFunction{h});
 }
 
 }  // namespace contain::clip

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "clip/exact_value.h"
 #include "clip/segment_common.h"
 #include "contain/predicates/compare_distance.h"
+#include "contain/predicates/halfspace_function.h"
 
 namespace contain::clip {
 namespace {
@@ -26,16 +26,16 @@ struct Tangency {
 
 template <class V>
 Tangency tangency(const V& a, const V& b, const V& c, double radius) {
-  using detail::big;
-  detail::BigFloat wd, dd, ww;
+  using predicates::BigFloat;
+  BigFloat wd, dd, ww;
   for (int k = 0; k < detail::dimension<V>; ++k) {
-    const auto w = big(detail::coord(c, k)) - big(detail::coord(a, k));
-    const auto d = big(detail::coord(b, k)) - big(detail::coord(a, k));
+    const auto w = BigFloat(detail::coord(c, k)) - BigFloat(detail::coord(a, k));
+    const auto d = BigFloat(detail::coord(b, k)) - BigFloat(detail::coord(a, k));
     wd = wd + w * d;
     dd = dd + d * d;
     ww = ww + w * w;
   }
-  const auto r2 = big(radius) * big(radius);
+  const auto r2 = BigFloat(radius) * BigFloat(radius);
   return {wd.sign(), (dd - wd).sign(), ((r2 - ww) * dd + wd * wd).sign()};
 }
 

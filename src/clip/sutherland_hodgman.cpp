@@ -6,14 +6,14 @@
 namespace contain::clip {
 
 Ring sutherland_hodgman(const Ring& ring, const HalfPlane& half_plane) {
-  return detail::sutherland_hodgman_ring(ring, detail::LineFunction{half_plane});
+  return detail::sutherland_hodgman_ring(ring, predicates::LineFunction{half_plane});
 }
 
 Ring sutherland_hodgman(const Ring& ring, std::span<const HalfPlane> half_planes) {
   Ring out = ring;
   for (const HalfPlane& h : half_planes) {
     if (out.empty()) break;
-    out = detail::sutherland_hodgman_ring(out, detail::LineFunction{h});
+    out = detail::sutherland_hodgman_ring(out, predicates::LineFunction{h});
   }
   return out;
 }
@@ -31,7 +31,7 @@ Ring sutherland_hodgman(const Ring& ring, const Ring& convex_ring) {
 
 std::vector<Vec3> sutherland_hodgman(std::span<const Vec3> polygon, const Plane& half_space) {
   return detail::sutherland_hodgman_ring(std::vector<Vec3>(polygon.begin(), polygon.end()),
-                                         detail::PlaneFunction{half_space});
+                                         predicates::PlaneFunction{half_space});
 }
 
 std::vector<Vec3> sutherland_hodgman(std::span<const Vec3> polygon,
@@ -39,7 +39,7 @@ std::vector<Vec3> sutherland_hodgman(std::span<const Vec3> polygon,
   std::vector<Vec3> out(polygon.begin(), polygon.end());
   for (const Plane& h : half_spaces) {
     if (out.empty()) break;
-    out = detail::sutherland_hodgman_ring(out, detail::PlaneFunction{h});
+    out = detail::sutherland_hodgman_ring(out, predicates::PlaneFunction{h});
   }
   return out;
 }

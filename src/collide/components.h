@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::collide::detail {
 

@@ -6,8 +6,9 @@
 #include <utility>
 
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/plane.h"
+#include "contain/inside/point_in_convex.h"
 #include "contain/predicates/side_of_plane.h"
+#include "contain/values/plane.h"
 
 namespace contain::collide {
 
@@ -17,10 +18,10 @@ struct ConvexAccess {
   static Sphere& sphere(ConvexShape& s) { return s.sphere_; }
   static std::vector<Vec3>& vertices(ConvexShape& s) { return s.vertices_; }
   static std::vector<Triangle3>& faces(ConvexShape& s) { return s.faces_; }
-  static inside::ConvexPolyhedron& solid(ConvexShape& s) { return s.solid_; }
+  static ConvexPolyhedron& solid(ConvexShape& s) { return s.solid_; }
   static const std::vector<Vec3>& vertices(const ConvexShape& s) { return s.vertices_; }
   static const std::vector<Triangle3>& faces(const ConvexShape& s) { return s.faces_; }
-  static const inside::ConvexPolyhedron& solid(const ConvexShape& s) { return s.solid_; }
+  static const ConvexPolyhedron& solid(const ConvexShape& s) { return s.solid_; }
 };
 
 namespace {
@@ -232,14 +233,14 @@ ConvexShape ConvexShape::box(const Box3& box) {
     s.faces_.push_back({c[q[0]], c[q[2]], c[q[3]]});
   }
   // Inward half-spaces x - min.x >= 0, max.x - x >= 0, ...: exact coefficients.
-  auto solid = inside::ConvexPolyhedron::from_planes(
+  auto solid = ConvexPolyhedron::from_planes(
       {Plane{1, 0, 0, -box.min.x}, Plane{-1, 0, 0, box.max.x}, Plane{0, 1, 0, -box.min.y},
        Plane{0, -1, 0, box.max.y}, Plane{0, 0, 1, -box.min.z}, Plane{0, 0, -1, box.max.z}});
   if (solid) s.solid_ = std::move(*solid);
   return s;
 }
 
-Result<ConvexShape> ConvexShape::polyhedron(const inside::ConvexPolyhedron& polyhedron) {
+Result<ConvexShape> ConvexShape::polyhedron(const ConvexPolyhedron& polyhedron) {
   if (polyhedron.faces().empty()) {
     return Error{ErrorKind::unsupported,
                  "a convex polyhedron given by planes has no vertices: build it from a mesh"};

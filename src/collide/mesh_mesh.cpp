@@ -6,7 +6,7 @@
 #include "collide/components.h"
 #include "collide/mesh_sides.h"
 #include "contain/bvh/triangle_boxes.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 namespace {

@@ -11,7 +11,7 @@
 #include "collide/separating_axes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/pair_search.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 

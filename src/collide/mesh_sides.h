@@ -12,8 +12,8 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/mesh.h"
-#include "inside/mesh_ray.h"
+#include "contain/predicates/perturbed_ray.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::collide::detail {
 
@@ -55,7 +55,7 @@ bool odd_crossings(const Side& s, const Place& place, Vec3 q) {
         const Vec3 p0 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[0])]);
         const Vec3 p1 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[1])]);
         const Vec3 p2 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[2])]);
-        if (inside::detail::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
+        if (predicates::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
         return bvh::Visit::proceed;
       });
   return odd;

@@ -6,8 +6,8 @@
 #include <cfloat>
 #include <cmath>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/transform.h"
+#include "contain/values/box.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide::detail {
 

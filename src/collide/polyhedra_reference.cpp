@@ -8,8 +8,8 @@
 #include "contain/bound/bounding_sphere.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/geometry/mesh_validation.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 namespace {

@@ -17,9 +17,9 @@
 #include <cmath>
 
 #include "collide/placed_boxes.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/transform.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/box.h"
+#include "contain/values/transform.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide::detail {
 

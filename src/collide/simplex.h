@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide::detail {
 

@@ -1,4 +1,4 @@
-#include "csg_local.h"
+#include "inside/csg_local.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -35,8 +35,8 @@ namespace {
 
 struct Line {
   std::size_t constraint;
-  ExactVec3 a;
-  ExactNumber b;
+  BigVec3 a;
+  BigFloat b;
 };
 
 class Sampler {
@@ -67,7 +67,7 @@ class Sampler {
       record({});
       return answer();
     }
-    for (const ExactVec3& v : rays()) {
+    for (const BigVec3& v : rays()) {
       around_ray(v);
       if (seen_in_ && seen_out_) break;
     }
@@ -75,9 +75,9 @@ class Sampler {
   }
 
  private:
-  const ExactVec3& n(std::size_t i) const { return constraints_[i].normal; }
+  const BigVec3& n(std::size_t i) const { return constraints_[i].normal; }
 
-  static bool same_direction(const ExactVec3& a, const ExactVec3& b) {
+  static bool same_direction(const BigVec3& a, const BigVec3& b) {
     return is_zero(cross(a, b)) && dot(a, b).sign() == Sign::positive;
   }
 
@@ -88,24 +88,24 @@ class Sampler {
     return same_direction(n(i), n(j));
   }
 
-  std::vector<ExactVec3> rays() const {
-    std::vector<ExactVec3> out;
+  std::vector<BigVec3> rays() const {
+    std::vector<BigVec3> out;
     for (std::size_t x = 0; x < geometric_.size(); ++x) {
       for (std::size_t y = x + 1; y < geometric_.size(); ++y) {
-        ExactVec3 v = cross(n(geometric_[x]), n(geometric_[y]));
+        BigVec3 v = cross(n(geometric_[x]), n(geometric_[y]));
         if (is_zero(v)) continue;
         const bool seen = std::any_of(out.begin(), out.end(),
-                                      [&](const ExactVec3& w) { return same_direction(v, w); });
+                                      [&](const BigVec3& w) { return same_direction(v, w); });
         if (seen) continue;  // both v and -v are there already
         out.push_back(-v);
         out.push_back(std::move(v));
       }
     }
     if (out.empty()) {  // rank 1: all normals parallel; any direction in their common plane
-      const ExactVec3& m = n(geometric_.front());
-      const ExactVec3 axes[3] = {exact(Vec3{1, 0, 0}), exact(Vec3{0, 1, 0}), exact(Vec3{0, 0, 1})};
-      for (const ExactVec3& e : axes) {
-        ExactVec3 v = cross(m, e);
+      const BigVec3& m = n(geometric_.front());
+      const BigVec3 axes[3] = {to_big(Vec3{1, 0, 0}), to_big(Vec3{0, 1, 0}), to_big(Vec3{0, 0, 1})};
+      for (const BigVec3& e : axes) {
+        BigVec3 v = cross(m, e);
         if (is_zero(v)) continue;
         out.push_back(-v);
         out.push_back(std::move(v));
@@ -115,9 +115,9 @@ class Sampler {
     return out;
   }
 
-  void around_ray(const ExactVec3& v) {
+  void around_ray(const BigVec3& v) {
     current_v_ = v;
-    const ExactNumber v2 = dot(v, v);
+    const BigFloat v2 = dot(v, v);
     std::vector<Line> lines;
     for (std::size_t i : geometric_) {
       const Sign s = dot(n(i), v).sign();
@@ -129,26 +129,26 @@ class Sampler {
       if (c.curved) {
         lines.push_back({i, c.normal + c.normal, v2});
       } else {
-        lines.push_back({i, c.normal, ExactNumber()});
+        lines.push_back({i, c.normal, BigFloat()});
       }
     }
     // Sample points (W, h) with h > 0.
-    at_point(lines, exact(Vec3{}), ExactNumber(1.0));
+    at_point(lines, to_big(Vec3{}), BigFloat(1.0));
     for (const Line& l : lines) {
       if (!l.b.is_zero()) {
         // Foot of a ball's line: W = |v|² n, h = 2 |n|², so that 2 n . W = |v|² h.
-        const ExactVec3& m = n(l.constraint);
-        at_point(lines, v2 * m, ExactNumber(2.0) * dot(m, m));
+        const BigVec3& m = n(l.constraint);
+        at_point(lines, v2 * m, BigFloat(2.0) * dot(m, m));
       }
       if (seen_in_ && seen_out_) return;
     }
     for (std::size_t x = 0; x < lines.size(); ++x) {
       for (std::size_t y = x + 1; y < lines.size(); ++y) {
         // Cramer on rows a_x, a_y, v with right-hand side (b_x, b_y, 0).
-        const ExactVec3 ay_v = cross(lines[y].a, v);
-        ExactNumber h = dot(lines[x].a, ay_v);
+        const BigVec3 ay_v = cross(lines[y].a, v);
+        BigFloat h = dot(lines[x].a, ay_v);
         if (h.is_zero()) continue;  // parallel lines
-        ExactVec3 w = lines[x].b * ay_v + lines[y].b * cross(v, lines[x].a);
+        BigVec3 w = lines[x].b * ay_v + lines[y].b * cross(v, lines[x].a);
         if (h.sign() == Sign::negative) {
           h = -h;
           w = -w;
@@ -159,7 +159,7 @@ class Sampler {
     }
   }
 
-  void at_point(const std::vector<Line>& lines, const ExactVec3& w, const ExactNumber& h) {
+  void at_point(const std::vector<Line>& lines, const BigVec3& w, const BigFloat& h) {
     std::vector<std::size_t> through;
     for (std::size_t k = 0; k < lines.size(); ++k) {
       const Sign s = (dot(lines[k].a, w) - lines[k].b * h).sign();
@@ -175,8 +175,8 @@ class Sampler {
     }
     std::vector<Sign> along(through.size()), across(through.size());
     for (std::size_t l : through) {
-      const ExactVec3 dir = cross(current_v_, lines[l].a);
-      const ExactVec3 u1[2] = {dir, -dir}, u2[2] = {lines[l].a, -lines[l].a};
+      const BigVec3 dir = cross(current_v_, lines[l].a);
+      const BigVec3 u1[2] = {dir, -dir}, u2[2] = {lines[l].a, -lines[l].a};
       for (std::size_t k = 0; k < through.size(); ++k) {
         along[k] = dot(lines[through[k]].a, dir).sign();
         across[k] = dot(lines[through[k]].a, lines[l].a).sign();
@@ -215,16 +215,16 @@ class Sampler {
   std::vector<char> positive_;
   std::vector<std::size_t> geometric_;                        // one constraint per distinct surface
   std::vector<std::pair<std::size_t, std::size_t>> aliases_;  // (constraint, its representative)
-  ExactVec3 current_v_;
+  BigVec3 current_v_;
   bool seen_in_ = false;
   bool seen_out_ = false;
 };
 
 }  // namespace
 
-Sign sign_at(const ExactNumber& c, const ExactVec3& g, const SymbolicOffset& at) {
+Sign sign_at(const BigFloat& c, const BigVec3& g, const SymbolicOffset& at) {
   if (const Sign s = c.sign(); s != Sign::zero) return s;
-  for (const ExactVec3* term : {at.v, at.w, at.u1, at.u2}) {
+  for (const BigVec3* term : {at.v, at.w, at.u1, at.u2}) {
     if (term == nullptr) continue;
     if (const Sign s = dot(g, *term).sign(); s != Sign::zero) return s;
   }

@@ -8,16 +8,20 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "exact_number.h"
+#include "contain/predicates/big_float.h"
 
 namespace contain::inside::detail {
+
+using predicates::BigFloat;
+using predicates::BigVec3;
+using predicates::to_big;
 
 /// One plane through p that bounds a leaf near p: the leaf's side is normal . (q - p) > 0.
 /// `curved`: the tangent plane of a ball whose centre is p + normal (so |normal| = radius), whose
 /// surface bends towards the normal at second order. A zero normal is a constraint without
 /// geometry whose value is `fixed_value` at every point near p.
 struct LocalConstraint {
-  ExactVec3 normal;
+  BigVec3 normal;
   bool curved = false;
   bool fixed_value = false;
 };
@@ -26,15 +30,15 @@ struct LocalConstraint {
 /// given: only signs matter). Null members are zero: no v when there is no geometric
 /// constraint, no u1, u2 when w lies on no second-order line.
 struct SymbolicOffset {
-  const ExactVec3* v = nullptr;
-  const ExactVec3* w = nullptr;
-  const ExactVec3* u1 = nullptr;
-  const ExactVec3* u2 = nullptr;
+  const BigVec3* v = nullptr;
+  const BigVec3* w = nullptr;
+  const BigVec3* u1 = nullptr;
+  const BigVec3* u2 = nullptr;
 };
 
 /// The sign of c + g . (q − p) for the sample q: the first non-zero of c, g . v, g . w, g . u1,
 /// g . u2 (zero if all are).
-[[nodiscard]] Sign sign_at(const ExactNumber& c, const ExactVec3& g, const SymbolicOffset& at);
+[[nodiscard]] Sign sign_at(const BigFloat& c, const BigVec3& g, const SymbolicOffset& at);
 
 /// What a sample tells the solid: for each constraint, whether the region is on its positive
 /// side, and the sample point itself (for leaves that classify it themselves).

@@ -7,12 +7,12 @@
 #include <sstream>
 
 #include "contain/bvh/triangle_boxes.h"
-#include "contain/geometry/triangle.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
-#include "inside/mesh_ray.h"
+#include "contain/predicates/perturbed_ray.h"
+#include "contain/values/triangle.h"
 
-// Outline (derivation in mesh_index.h and mesh_ray.h):
+// Outline (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  1. validate, pick the regime, write the warning;
 //  2. exact regime: grid size from the triangle count and the box's shape; each triangle's
 //     closed box marks the closed cells it meets (exact comparisons) -> surface cells and their
@@ -127,7 +127,7 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
             {},
             {},
             Sign::zero};
-    tri.s = detail::projected_sign(tri.a, tri.b, tri.c);
+    tri.s = predicates::projected_sign(tri.a, tri.b, tri.c);
     tri.lo[0] = float_below(std::min({tri.a.x, tri.b.x, tri.c.x}));
     tri.lo[1] = float_below(std::min({tri.a.y, tri.b.y, tri.c.y}));
     tri.lo[2] = float_below(std::min({tri.a.z, tri.b.z, tri.c.z}));
@@ -373,14 +373,14 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
       const CellRef& ref = refs_[r];
       if ((q.y < ref.lo[1]) | (q.y > ref.hi[1]) | (q.z < ref.lo[2]) | (q.z > ref.hi[2])) continue;
       const Tri& t = tris_[ref.tri];
-      if (t.s == Sign::zero || !detail::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, q)) {
+      if (t.s == Sign::zero || !predicates::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, q)) {
         continue;
       }
-      if (from_q ? detail::hit_side(t.a, t.b, t.c, t.s, q) <= 0
-                 : detail::hit_side(t.a, t.b, t.c, t.s, lower) < 0) {
+      if (from_q ? predicates::hit_side(t.a, t.b, t.c, t.s, q) <= 0
+                 : predicates::hit_side(t.a, t.b, t.c, t.s, lower) < 0) {
         continue;
       }
-      if (test_upper && detail::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
+      if (test_upper && predicates::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
       odd = !odd;
     }
   }

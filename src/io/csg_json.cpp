@@ -8,13 +8,23 @@
 #include <utility>
 #include <vector>
 
+#include "contain/inside/mesh_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "muparser_function.h"
 
 namespace contain::io {
 namespace {
 
-using inside::Csg;
+// Why a mesh read for a leaf cannot be one (empty if it can). The reader has checked its numbers
+// and indices; a leaf must be closed, as inside::CsgSolid::prepare requires. The wording is
+// MeshIndex's, whose index is built only on this error path.
+std::string mesh_leaf_problem(const Mesh& mesh) {
+  if (validate_mesh(mesh).closed()) return "";
+  return "mesh is not closed, a closed mesh is required (" + inside::MeshIndex(mesh).warning() +
+         ")";
+}
+
 using nlohmann::json;
 
 class Reader {
@@ -202,7 +212,7 @@ class Reader {
       if (!p) return p.error();
       planes.push_back(*p);
     }
-    auto polyhedron = inside::ConvexPolyhedron::from_planes(std::move(planes));
+    auto polyhedron = ConvexPolyhedron::from_planes(std::move(planes));
     if (!polyhedron) return fail(path, polyhedron.error().message, polyhedron.error().kind);
     return Csg::leaf(std::move(polyhedron).value());
   }
@@ -220,13 +230,10 @@ class Reader {
     Result<MeshFile> read = read_mesh(file);
     // The mesh reader's error names the mesh file (and its line); the path names the leaf.
     if (!read) return fail(path, read.error().what(), read.error().kind);
-    inside::CsgMesh leaf(std::move(read->mesh));
-    if (!leaf.problem().empty()) {
-      const bool open = leaf.index().regime() != inside::MeshRegime::closed_exact;
-      return fail(path, file.string() + ": " + leaf.problem(),
-                  open ? ErrorKind::degenerate : ErrorKind::invalid_value);
+    if (const std::string problem = mesh_leaf_problem(read->mesh); !problem.empty()) {
+      return fail(path, file.string() + ": " + problem, ErrorKind::degenerate);
     }
-    return Csg::leaf(std::move(leaf));
+    return Csg::leaf(CsgMesh(std::move(read->mesh)));
   }
 
   const CsgJsonOptions& options_;
@@ -249,7 +256,7 @@ std::int64_t line_of(std::string_view text, std::size_t byte) {
 
 }  // namespace
 
-Result<inside::Csg> parse_csg_json(std::string_view text, const CsgJsonOptions& options) {
+Result<Csg> parse_csg_json(std::string_view text, const CsgJsonOptions& options) {
   json document;
   try {
     document = json::parse(text.begin(), text.end());
@@ -267,7 +274,7 @@ Result<inside::Csg> parse_csg_json(std::string_view text, const CsgJsonOptions& 
   }
 }
 
-Result<inside::Csg> read_csg_json(const std::filesystem::path& file) {
+Result<Csg> read_csg_json(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return Error{ErrorKind::io, "cannot open the file", file.string(), 0};
   std::ostringstream buffer;

@@ -51,7 +51,7 @@ struct Pool {
 
 }  // namespace
 
-Result<inside::ImplicitFunction> compile_expression(const std::string& expression) {
+Result<ImplicitFunction> compile_expression(const std::string& expression) {
   auto pool = std::make_shared<Pool>();
   pool->expression = expression;
   try {
@@ -66,7 +66,7 @@ Result<inside::ImplicitFunction> compile_expression(const std::string& expressio
     return Error{ErrorKind::parse, e.GetMsg() + " (at position " + std::to_string(e.GetPos()) +
                                        " of \"" + expression + "\")"};
   }
-  return inside::ImplicitFunction([pool](Vec3 p) {
+  return ImplicitFunction([pool](Vec3 p) {
     std::unique_ptr<Evaluator> e;
     double value = std::numeric_limits<double>::quiet_NaN();
     try {

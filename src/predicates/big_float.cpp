@@ -1,19 +1,19 @@
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
-namespace contain::predicates::detail {
+namespace contain::predicates {
 
 namespace {
 
 using Limbs = std::vector<std::uint32_t>;
 
 // a << bits, as a new magnitude.
-Limbs shifted_left(const Limbs& a, int bits) {
-  const int limbs = bits / 32;
-  const int rest = bits % 32;
+Limbs shifted_left(const Limbs& a, std::int64_t bits) {
+  const std::int64_t limbs = bits / 32;
+  const int rest = static_cast<int>(bits % 32);
   Limbs out(a.size() + static_cast<std::size_t>(limbs) + 1, 0);
   for (std::size_t i = 0; i < a.size(); ++i) {
     const std::uint64_t v = static_cast<std::uint64_t>(a[i]) << rest;
@@ -64,7 +64,7 @@ Limbs subtract(const Limbs& a, const Limbs& b) {
 }  // namespace
 
 BigFloat::BigFloat(double x) {
-  assert(std::isfinite(x) && "predicates take finite doubles only");
+  assert(std::isfinite(x) && "BigFloat takes finite doubles only");
   if (x == 0.0) return;
   negative_ = x < 0.0;
   int e = 0;
@@ -99,7 +99,7 @@ void BigFloat::normalize() {
     ++zeros;
   if (zeros > 0) {
     limbs_.erase(limbs_.begin(), limbs_.begin() + static_cast<std::ptrdiff_t>(zeros));
-    exponent_ += 32 * static_cast<int>(zeros);
+    exponent_ += 32 * static_cast<std::int64_t>(zeros);
   }
 }
 
@@ -107,7 +107,7 @@ BigFloat operator+(const BigFloat& a, const BigFloat& b) {
   if (a.limbs_.empty()) return b;
   if (b.limbs_.empty()) return a;
   // Align both magnitudes on the smaller exponent; shifting left is exact.
-  const int e = std::min(a.exponent_, b.exponent_);
+  const std::int64_t e = std::min(a.exponent_, b.exponent_);
   const Limbs ma = shifted_left(a.limbs_, a.exponent_ - e);
   const Limbs mb = shifted_left(b.limbs_, b.exponent_ - e);
   BigFloat r;
@@ -127,9 +127,19 @@ BigFloat operator+(const BigFloat& a, const BigFloat& b) {
 }
 
 BigFloat operator-(const BigFloat& a, const BigFloat& b) {
-  BigFloat nb = b;
-  nb.negative_ = !nb.negative_;
-  return a + nb;
+  return a + -b;
+}
+
+std::strong_ordering operator<=>(const BigFloat& a, const BigFloat& b) {
+  switch ((a - b).sign()) {
+    case Sign::negative:
+      return std::strong_ordering::less;
+    case Sign::positive:
+      return std::strong_ordering::greater;
+    case Sign::zero:
+      break;
+  }
+  return std::strong_ordering::equal;
 }
 
 BigFloat operator*(const BigFloat& a, const BigFloat& b) {
@@ -152,4 +162,29 @@ BigFloat operator*(const BigFloat& a, const BigFloat& b) {
   return r;
 }
 
-}  // namespace contain::predicates::detail
+BigVec3 to_big(Vec3 v) {
+  return {BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)};
+}
+BigVec3 operator+(const BigVec3& a, const BigVec3& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+BigVec3 operator-(const BigVec3& a, const BigVec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+BigVec3 operator-(const BigVec3& a) {
+  return {-a.x, -a.y, -a.z};
+}
+BigVec3 operator*(const BigFloat& s, const BigVec3& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+BigFloat dot(const BigVec3& a, const BigVec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+BigVec3 cross(const BigVec3& a, const BigVec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+bool is_zero(const BigVec3& a) {
+  return a.x.is_zero() && a.y.is_zero() && a.z.is_zero();
+}
+
+}  // namespace contain::predicates

@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-#include "predicates/big_float.h"
+#include "contain/predicates/big_float.h"
 #include "predicates/expansion.h"
 #include "predicates/stages.h"
 

@@ -13,12 +13,12 @@
 
 #include <cfloat>
 
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates::detail {
 

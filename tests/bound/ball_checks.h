@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <span>
 
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::test {
 

@@ -7,7 +7,7 @@
 
 #include <span>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::test {
 

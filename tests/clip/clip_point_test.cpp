@@ -17,7 +17,7 @@ TEST(ClipPoint, KeepsPointsOfTheClosedRegionAndRemovesTheOthers) {
   const Polygon square{{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}}};
   EXPECT_TRUE(clip::clip_point(Vec2{2, 1}, square).has_value());
   EXPECT_FALSE(clip::clip_point(Vec2{3, 1}, square).has_value());
-  const auto cube = inside::ConvexPolyhedron::from_planes({{1, 0, 0, 0}, {-1, 0, 0, 1}});
+  const auto cube = ConvexPolyhedron::from_planes({{1, 0, 0, 0}, {-1, 0, 0, 1}});
   ASSERT_TRUE(cube.ok());
   EXPECT_EQ(clip::clip_point(Vec3{0.5, 9, 9}, *cube), (Vec3{0.5, 9, 9}));
 }

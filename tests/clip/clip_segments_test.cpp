@@ -167,8 +167,7 @@ TEST(ClipSegments, OtherRegionsMatchTheOneShotClippers) {
       EXPECT_EQ(out[i], r.segment);
     }
   }
-  const auto poly =
-      inside::ConvexPolyhedron::from_planes({{1, 1, 0, 1}, {-1, 0, 0, 1}, {0, -1, 1, 1}});
+  const auto poly = ConvexPolyhedron::from_planes({{1, 1, 0, 1}, {-1, 0, 0, 1}, {0, -1, 1, 1}});
   ASSERT_TRUE(poly.ok());
   clip::clip_segments(in, *poly, out, kept, {.threads = 2});
   for (std::size_t i = 0; i < in.size(); ++i) {

@@ -74,7 +74,7 @@ TEST(CyrusBeck, FlatRingKeepsNothing) {
 TEST(CyrusBeck, CubeMeshAgreesWithLiangBarskyOnTheSameBox) {
   const Box3 box{{0, 0, 0}, {1, 1, 1}};
   const Mesh cube = scenes::box_mesh(box);
-  const auto solid = inside::ConvexPolyhedron::from_mesh(cube);
+  const auto solid = ConvexPolyhedron::from_mesh(cube);
   ASSERT_TRUE(solid.ok());
   SegmentGenerator gen(13);
   for (int i = 0; i < 5000; ++i) {

@@ -6,7 +6,7 @@
 
 #include "contain/clip/box_halfspaces.h"
 #include "contain/clip/mesh_clip.h"
-#include "contain/geometry/mesh_validation.h"
+#include "contain/shapes/mesh_validation.h"
 #include "scenes/scenes.h"
 #include "support/exact.h"
 
@@ -71,7 +71,7 @@ TEST(MeshClip, TorusCutThroughItsHoleGetsAnnularCapsAndStaysClosed) {
 }
 
 TEST(MeshClip, ConvexMeshRegionGivesTheSameSolidAsItsPlanes) {
-  const auto solid = inside::ConvexPolyhedron::from_mesh(cube());
+  const auto solid = ConvexPolyhedron::from_mesh(cube());
   ASSERT_TRUE(solid.ok());
   const Mesh torus = scenes::torus(0.4, 0.15, 24, 12);
   Mesh moved = torus;

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::test {
 

@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
 
 namespace contain::test {
 

@@ -7,8 +7,8 @@
 #include <random>
 
 #include "contain/collide/polyhedra_reference.h"
-#include "contain/geometry/mesh.h"
 #include "contain/predicates/orient3d.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::collide {
 namespace {
@@ -31,7 +31,7 @@ Mesh tetrahedron(std::mt19937_64& rng, int lo, int hi, Vec3 offset) {
 }
 
 ConvexShape shape_of(const Mesh& mesh) {
-  auto solid = inside::ConvexPolyhedron::from_mesh(mesh);
+  auto solid = ConvexPolyhedron::from_mesh(mesh);
   EXPECT_TRUE(solid.ok());
   auto shape = ConvexShape::polyhedron(*solid);
   EXPECT_TRUE(shape.ok());
@@ -156,7 +156,7 @@ TEST(ConvexConvex, TouchingSpheresCountAsIntersecting) {
 }
 
 TEST(ConvexConvex, PolyhedronGivenByPlanesIsUnsupported) {
-  const auto solid = inside::ConvexPolyhedron::from_planes({Plane{1, 0, 0, 0}});
+  const auto solid = ConvexPolyhedron::from_planes({Plane{1, 0, 0, 0}});
   ASSERT_TRUE(solid.ok());
   const auto shape = ConvexShape::polyhedron(*solid);
   ASSERT_FALSE(shape.ok());

@@ -3,8 +3,8 @@
 
 #include <random>
 
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
 
 namespace contain::test {
 

@@ -4,7 +4,7 @@
 // convex intersection lies on their edges); an edge meets a triangle where the exactly computed
 // crossing point lies in it, or, coplanar, where it crosses an edge or has an endpoint inside.
 
-#include "contain/geometry/triangle.h"
+#include "contain/values/triangle.h"
 
 namespace contain::test {
 

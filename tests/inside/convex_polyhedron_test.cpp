@@ -1,4 +1,4 @@
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/inside/point_in_convex.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST(ConvexPolyhedron, PlanesAndMeshAgreeOnFacesEdgesVerticesInsideAndOutside) {
                                              {{0.5, 0.5, -1e-300}, Location::outside},
                                              {{1, 1, 1.0000000000000002}, Location::outside}};
   for (const auto& [p, want] : cases) {
-    EXPECT_EQ(from_planes->locate(p), want);
+    EXPECT_EQ(point_in_convex(*from_planes, p), want);
     EXPECT_EQ(point_in_convex(*from_mesh, p), want);
   }
 }
@@ -52,14 +52,14 @@ TEST(ConvexPolyhedron, PlanesAndMeshAgreeOnFacesEdgesVerticesInsideAndOutside) {
 TEST(ConvexPolyhedron, EmptyPlaneListIsAllOfSpace) {
   const auto all = ConvexPolyhedron::from_planes({});
   ASSERT_TRUE(all.ok());
-  EXPECT_EQ(all->locate({1e300, -1e300, 0}), Location::inside);
+  EXPECT_EQ(point_in_convex(*all, {1e300, -1e300, 0}), Location::inside);
 }
 
 TEST(ConvexPolyhedron, IntersectionWithoutInteriorIsAllBoundary) {
   const auto slab = ConvexPolyhedron::from_planes({{1, 0, 0, 0}, {-1, 0, 0, 0}});
   ASSERT_TRUE(slab.ok());
-  EXPECT_EQ(slab->locate({0, 5, 5}), Location::boundary);
-  EXPECT_EQ(slab->locate({1e-300, 5, 5}), Location::outside);
+  EXPECT_EQ(point_in_convex(*slab, {0, 5, 5}), Location::boundary);
+  EXPECT_EQ(point_in_convex(*slab, {1e-300, 5, 5}), Location::outside);
 }
 
 TEST(ConvexPolyhedron, RejectsZeroNormalAndNonFinitePlanes) {
@@ -78,8 +78,8 @@ TEST(ConvexPolyhedron, InwardOrientedMeshIsFlipped) {
     std::swap(t[1], t[2]);
   const auto c = ConvexPolyhedron::from_mesh(m);
   ASSERT_TRUE(c.ok());
-  EXPECT_EQ(c->locate({0.5, 0.5, 0.5}), Location::inside);
-  EXPECT_EQ(c->locate({2, 0.5, 0.5}), Location::outside);
+  EXPECT_EQ(point_in_convex(*c, {0.5, 0.5, 0.5}), Location::inside);
+  EXPECT_EQ(point_in_convex(*c, {2, 0.5, 0.5}), Location::outside);
 }
 
 TEST(ConvexPolyhedron, RejectsANonConvexMesh) {
@@ -158,7 +158,7 @@ TEST(ConvexPolyhedron, MeshAndPlaneFormsAgreeWithTheGmpOracleOnRandomAndDegenera
         if (side == Sign::zero && truth != Location::outside) truth = Location::boundary;
       }
       boundary += truth == Location::boundary;
-      EXPECT_EQ(poly->locate(p), truth);
+      EXPECT_EQ(point_in_convex(*poly, p), truth);
       if (integer) {
         Location plane_truth = Location::inside;
         for (const Plane& h : planes) {
@@ -168,7 +168,7 @@ TEST(ConvexPolyhedron, MeshAndPlaneFormsAgreeWithTheGmpOracleOnRandomAndDegenera
             plane_truth = Location::boundary;
           }
         }
-        EXPECT_EQ(from_planes->locate(p), plane_truth);
+        EXPECT_EQ(point_in_convex(*from_planes, p), plane_truth);
         EXPECT_EQ(plane_truth, truth);  // integer planes are exact: same solid
       }
     }
@@ -186,11 +186,11 @@ TEST(ConvexPolyhedron, BatchAnswersEqualSingleAnswersWhateverTheThreadCount) {
     }
   }
   std::vector<Location> one(points.size()), three(points.size());
-  c->locate(points, one, {.threads = 1});
-  c->locate(points, three, {.threads = 3});
+  point_in_convex(*c, points, one, {.threads = 1});
+  point_in_convex(*c, points, three, {.threads = 3});
   EXPECT_EQ(one, three);
   for (std::size_t i = 0; i < points.size(); ++i)
-    EXPECT_EQ(one[i], c->locate(points[i]));
+    EXPECT_EQ(one[i], point_in_convex(*c, points[i]));
 }
 
 }  // namespace

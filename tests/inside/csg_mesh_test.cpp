@@ -195,14 +195,14 @@ TEST(CsgMesh, PolycubeWithSaddleAndReflexVerticesEqualsTheUnionOfItsCubes) {
   // a vertex whose neighbourhood no intersection of half-spaces describes.
   const std::vector<std::array<int, 3>> cells = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const Mesh mesh = polycube(cells);
-  ASSERT_EQ(CsgMesh(mesh).index().regime(), MeshRegime::closed_exact);
+  ASSERT_EQ(MeshIndex(mesh).regime(), MeshRegime::closed_exact);
   for (const auto& [what, tree] : trees())
     expect_same(tree(mesh_leaf(mesh)), tree(union_of_cubes(cells)), what);
   // A staircase: cells touching (1, 1, 1) in alternate octants make a saddle there.
   const std::vector<std::array<int, 3>> stairs = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
                                                   {1, 1, 1}, {0, 0, 1}, {0, 1, 1}};
   const Mesh stair_mesh = polycube(stairs);
-  ASSERT_EQ(CsgMesh(stair_mesh).index().regime(), MeshRegime::closed_exact);
+  ASSERT_EQ(MeshIndex(stair_mesh).regime(), MeshRegime::closed_exact);
   for (const auto& [what, tree] : trees())
     expect_same(tree(mesh_leaf(stair_mesh)), tree(union_of_cubes(stairs)), what);
 }
@@ -258,10 +258,11 @@ TEST(CsgMesh, MeshMinusBallLeavesTheCutSurfaceOnTheBoundary) {
 }
 
 TEST(CsgMesh, MeshLeafAloneAgreesWithMeshIndex) {
-  const CsgMesh leaf(l_mesh());
-  const CsgSolid solid = prepared(Csg::leaf(leaf));
+  const Mesh mesh = l_mesh();
+  const MeshIndex index(mesh);
+  const CsgSolid solid = prepared(Csg::leaf(CsgMesh(mesh)));
   for (const Vec3 p : grid())
-    EXPECT_EQ(solid.locate(p), leaf.index().locate(p));
+    EXPECT_EQ(solid.locate(p), index.locate(p));
 }
 
 TEST(CsgMesh, OpenMeshIsADegenerateLeafNamedByItsPosition) {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "contain/geometry/mesh_validation.h"
 #include "contain/inside/point_in_mesh.h"
+#include "contain/shapes/mesh_validation.h"
 #include "inside/mesh_oracle.h"
 #include "inside/mesh_test_meshes.h"
 #include "scenes/scenes.h"

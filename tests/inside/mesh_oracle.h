@@ -7,9 +7,9 @@
 // symbolic one.
 
 #include "contain/core/location.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

@@ -1,7 +1,7 @@
-// The exact ray-triangle decision of point in polyhedron (src/inside/mesh_ray.h) against the GMP
-// oracle, on random and on constructed degenerate configurations.
+// The exact ray-triangle decision of point in polyhedron (contain/predicates/perturbed_ray.h)
+// against the GMP oracle, on random and on constructed degenerate configurations.
 
-#include "inside/mesh_ray.h"
+#include "contain/predicates/perturbed_ray.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ using test::oracle_on_triangle;
 using test::oracle_ray_crosses;
 
 bool crosses(const Triangle3& t, Vec3 q) {
-  return detail::perturbed_ray_crosses(t.a, t.b, t.c, q);
+  return predicates::perturbed_ray_crosses(t.a, t.b, t.c, q);
 }
 
 TEST(MeshRay, RandomTrianglesAndPointsMatchTheExactOracle) {
@@ -91,16 +91,17 @@ TEST(MeshRay, HitSideOnAGridPlaneIsTheLimitOfTheHitsAroundIt) {
   // A triangle through x = 2 at (y, z) = (1, 1): the hit of the line at (., 1, 1) is x = 2
   // exactly; the perturbed hit lies beyond or before x = 2 by the triangle's slope, consistently.
   const Vec3 a{2, 0, 0}, b{2, 3, 0}, c{2 + 3, 0, 3};  // x = 2 + z
-  const Sign s = detail::projected_sign(a, b, c);
+  const Sign s = predicates::projected_sign(a, b, c);
   ASSERT_NE(s, Sign::zero);
-  EXPECT_TRUE(detail::perturbed_line_hits(a, b, c, s, {0, 1, 1}));
+  EXPECT_TRUE(predicates::perturbed_line_hits(a, b, c, s, {0, 1, 1}));
   // x(e) = 2 + (1 + e^2) > 3 = m.x? At m.x = 3: hit exactly at 3 + e^2: beyond.
-  EXPECT_EQ(detail::hit_side(a, b, c, s, {3, 1, 1}), 1);
-  EXPECT_EQ(detail::hit_side(a, b, c, s, {3.0000000000000004, 1, 1}), -1);
+  EXPECT_EQ(predicates::hit_side(a, b, c, s, {3, 1, 1}), 1);
+  EXPECT_EQ(predicates::hit_side(a, b, c, s, {3.0000000000000004, 1, 1}), -1);
   // A triangle in the plane x = 3: the hit is at 3 exactly, whatever the perturbation.
-  EXPECT_EQ(detail::hit_side({3, 0, 0}, {3, 3, 0}, {3, 0, 3},
-                             detail::projected_sign({3, 0, 0}, {3, 3, 0}, {3, 0, 3}), {3, 1, 1}),
-            0);
+  EXPECT_EQ(
+      predicates::hit_side({3, 0, 0}, {3, 3, 0}, {3, 0, 3},
+                           predicates::projected_sign({3, 0, 0}, {3, 3, 0}, {3, 0, 3}), {3, 1, 1}),
+      0);
 }
 
 }  // namespace

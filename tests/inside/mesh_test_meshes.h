@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::test {
 

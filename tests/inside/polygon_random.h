@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::test {
 

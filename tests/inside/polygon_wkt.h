@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::test {
 

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <vector>
 
+#include "contain/inside/csg.h"
+
 namespace contain::io {
 namespace {
 

@@ -15,8 +15,8 @@
 #include <random>
 #include <string>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 #ifndef CONTAIN_PREDICATES_CASE_DIVISOR
 #define CONTAIN_PREDICATES_CASE_DIVISOR 1

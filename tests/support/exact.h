@@ -5,10 +5,10 @@
 
 #include <gmpxx.h>
 
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::test {
 

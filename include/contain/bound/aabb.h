@@ -5,10 +5,10 @@
 #include <span>
 
 #include "contain/bound/mesh_vertices.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain::bound {
 

@@ -7,9 +7,9 @@
 
 #include "contain/bound/sphere_method.h"
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::bound {
 

@@ -8,9 +8,9 @@
 #include "contain/bound/mesh_vertices.h"
 #include "contain/bound/sphere_method.h"
 #include "contain/core/result.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::bound {
 

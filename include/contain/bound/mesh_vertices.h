@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/vec.h"
 
 namespace contain::bound {
 

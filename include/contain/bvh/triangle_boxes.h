@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
 
 namespace contain::bvh {
 

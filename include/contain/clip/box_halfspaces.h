@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
 
 namespace contain::clip {
 

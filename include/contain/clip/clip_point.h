@@ -5,12 +5,12 @@
 
 #include <optional>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip {
 
@@ -24,7 +24,7 @@ namespace contain::clip {
 [[nodiscard]] std::optional<Vec2> clip_point(Vec2 p, const HalfPlane& half_plane);
 [[nodiscard]] std::optional<Vec3> clip_point(Vec3 p, const Sphere& ball);
 [[nodiscard]] std::optional<Vec2> clip_point(Vec2 p, const Circle& disc);
-[[nodiscard]] std::optional<Vec3> clip_point(Vec3 p, const inside::ConvexPolyhedron& polyhedron);
+[[nodiscard]] std::optional<Vec3> clip_point(Vec3 p, const ConvexPolyhedron& polyhedron);
 /// Against a polygon read under the even-odd rule (any polygon, convex or not).
 [[nodiscard]] std::optional<Vec2> clip_point(Vec2 p, const Polygon& polygon);
 

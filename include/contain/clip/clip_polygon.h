@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <span>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
 
 namespace contain::clip {
 

@@ -6,12 +6,12 @@
 #include <span>
 
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/sphere.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
+#include "contain/values/sphere.h"
 
 namespace contain::clip {
 
@@ -44,7 +44,7 @@ void clip_segments(std::span<const Segment3> segments, const Sphere& ball, std::
                    std::span<std::uint8_t> kept, const BatchOptions& options = {});
 void clip_segments(std::span<const Segment2> segments, const Circle& disc, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options = {});
-void clip_segments(std::span<const Segment3> segments, const inside::ConvexPolyhedron& polyhedron,
+void clip_segments(std::span<const Segment3> segments, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,
                    const BatchOptions& options = {});
 void clip_segments(std::span<const Segment2> segments, const Ring& convex_ring,

@@ -2,7 +2,7 @@
 /// \file
 /// What is left of a segment after clipping: the answer of every segment clipper in `clip::`.
 
-#include "contain/geometry/segment.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/segment.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 

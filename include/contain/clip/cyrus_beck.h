@@ -8,10 +8,10 @@
 #include <span>
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 
@@ -44,7 +44,7 @@ namespace contain::clip {
 /// Against a convex polyhedron: its planes, or for one made from a mesh its faces, whose side
 /// tests are predicates::orient3d on the three face vertices (exact, no rounded plane).
 [[nodiscard]] ClippedSegment3 cyrus_beck(const Segment3& segment,
-                                         const inside::ConvexPolyhedron& polyhedron);
+                                         const ConvexPolyhedron& polyhedron);
 
 /// 2D: against the intersection of closed half-planes.
 [[nodiscard]] ClippedSegment2 cyrus_beck(const Segment2& segment,

@@ -4,8 +4,8 @@
 /// "A new concept and method for line clipping", ACM TOG 3(1), 1984).
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/segment.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <span>
 
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
 
 namespace contain::clip {
 
@@ -51,7 +51,7 @@ struct MeshClipOptions {
                              const MeshClipOptions& options = {});
 
 /// By a convex polyhedron: its planes, or the faces of the convex mesh it was made from.
-[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const inside::ConvexPolyhedron& polyhedron,
+[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                              const MeshClipOptions& options = {});
 
 }  // namespace contain::clip

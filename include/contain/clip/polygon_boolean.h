@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::clip {
 

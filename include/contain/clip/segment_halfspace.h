@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/segment.h"
+#include "contain/values/plane.h"
+#include "contain/values/segment.h"
 
 namespace contain::clip {
 

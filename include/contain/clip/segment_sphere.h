@@ -3,8 +3,8 @@
 /// A segment clipped by a ball or a disc (exercise 22.4-7 of the seed section).
 
 #include "contain/clip/clipped_segment.h"
-#include "contain/geometry/segment.h"
-#include "contain/geometry/sphere.h"
+#include "contain/values/segment.h"
+#include "contain/values/sphere.h"
 
 namespace contain::clip {
 

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "contain/geometry/plane.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/plane.h"
+#include "contain/values/vec.h"
 
 namespace contain::clip {
 

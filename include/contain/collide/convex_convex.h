@@ -6,17 +6,17 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
-#include "contain/inside/convex_polyhedron.h"
+#include "contain/shapes/convex_polyhedron.h"
+#include "contain/values/box.h"
+#include "contain/values/sphere.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide {
 
 /// A closed convex shape given by its support function (the farthest point in a direction):
 /// a sphere, an axis-aligned box, or a convex polyhedron built from a closed convex mesh
-/// (inside::ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: they keep their
+/// (ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: they keep their
 /// vertices, their triangulated faces and an exact point locator for `convex_intersect`'s exact
 /// stage.
 class ConvexShape {
@@ -28,7 +28,7 @@ class ConvexShape {
   [[nodiscard]] static ConvexShape box(const Box3& box);
   /// A convex polyhedron built from a mesh (its faces()); ErrorKind::unsupported for a
   /// polyhedron given only by planes (it has no vertices to support a direction with). O(F).
-  [[nodiscard]] static Result<ConvexShape> polyhedron(const inside::ConvexPolyhedron& polyhedron);
+  [[nodiscard]] static Result<ConvexShape> polyhedron(const ConvexPolyhedron& polyhedron);
 
   /// A point of the shape farthest in `direction` (any point for direction 0). O(1) for spheres
   /// and boxes, O(V) for polyhedra. Floating point for spheres (a rounded centre + r d / |d|).
@@ -40,9 +40,9 @@ class ConvexShape {
   friend struct ConvexAccess;
   ConvexShape() = default;
   Sphere sphere_{};
-  std::vector<Vec3> vertices_;      // polytopes
-  std::vector<Triangle3> faces_;    // polytopes, outward
-  inside::ConvexPolyhedron solid_;  // polytopes: exact point location
+  std::vector<Vec3> vertices_;    // polytopes
+  std::vector<Triangle3> faces_;  // polytopes, outward
+  ConvexPolyhedron solid_;        // polytopes: exact point location
 };
 
 /// What `convex_intersect` found.

@@ -12,9 +12,9 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide {
 

@@ -12,9 +12,9 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
 #include "contain/inside/solid_scene.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
 
 namespace contain::collide {
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "contain/geometry/box.h"
+#include "contain/values/box.h"
 
 namespace contain::collide {
 

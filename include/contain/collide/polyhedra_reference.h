@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "contain/collide/contact.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
 
 namespace contain::collide {
 

@@ -3,7 +3,7 @@
 /// Collision of two 2D regions (polygons with holes, several polygons).
 
 #include "contain/collide/contact.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::collide {
 

@@ -2,8 +2,8 @@
 /// \file
 /// Do two closed triangles in space share a point? The exact narrow-phase test of mesh collision.
 
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
 
 namespace contain::collide {
 

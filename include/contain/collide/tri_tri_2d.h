@@ -2,9 +2,9 @@
 /// \file
 /// Do two closed triangles in the plane share a point? (seed section 22.4, exercise 22.4-5)
 
-#include "contain/geometry/segment.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::collide {
 

@@ -14,7 +14,7 @@
 /// swaps `inside` and `outside` and keeps `boundary`; solids without interior (a flat box, a
 /// ball of radius 0) are empty.
 ///
-/// Algorithm. Each leaf is located exactly (inside/implicit.h, inside/convex_polyhedron.h). If no
+/// Algorithm. Each leaf is located exactly (inside/implicit.h, inside/point_in_convex.h). If no
 /// leaf that matters (three-valued evaluation of the tree) reports `boundary`, the tree is
 /// evaluated on in/out. Otherwise p lies on the boundary of some leaves, and the neighbourhood of
 /// p is analysed: each such leaf contributes its local constraints at p, the planes through p
@@ -57,84 +57,23 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <string>
-#include <utility>
-#include <variant>
 #include <vector>
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
 #include "contain/core/result.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
-#include "contain/inside/convex_polyhedron.h"
-#include "contain/inside/implicit.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/csg.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 
-/// A closed triangle mesh as a CSG leaf: the solid it bounds under the ray parity rule of
-/// MeshIndex (its orientation does not matter). Holds the mesh and its MeshIndex, shared by
-/// copies; built once, O(n log n + grid) as MeshIndex. CsgSolid::prepare refuses a mesh with a
-/// NaN/Inf coordinate or an index out of range (invalid_value) and a mesh that is not closed
-/// (degenerate: border or non-manifold edges make the parity rule meaningless).
-class CsgMesh {
- public:
-  /// Prepares `mesh` (any contents; problems are reported by CsgSolid::prepare).
-  explicit CsgMesh(Mesh mesh, const MeshIndexOptions& options = {});
-
-  [[nodiscard]] const Mesh& mesh() const { return *mesh_; }
-  [[nodiscard]] const MeshIndex& index() const { return *index_; }
-  /// Empty when the mesh may be used as a leaf, else why not.
-  [[nodiscard]] const std::string& problem() const { return *problem_; }
-
- private:
-  std::shared_ptr<const Mesh> mesh_;
-  std::shared_ptr<const MeshIndex> index_;
-  std::shared_ptr<const std::string> problem_;
-};
-
-/// A leaf solid: a closed ball, a closed box, a closed half-space (a x + b y + c z + d >= 0), a
-/// convex polyhedron (from planes or a convex mesh), { p : f(p) >= 0 }, or a closed mesh.
-using CsgLeaf = std::variant<Sphere, Box3, Plane, ConvexPolyhedron, ImplicitFunction, CsgMesh>;
-
-/// The kind of a CSG node.
-enum class CsgOp : std::uint8_t {
-  leaf,
-  unite,       ///< union of the operands; of none: the empty set
-  intersect,   ///< intersection of the operands; of none: all of space
-  subtract,    ///< first operand minus the second
-  complement,  ///< the (closure of the) complement of the one operand
-};
-
-/// A CSG tree as a value: leaves and operations, built bottom-up. Not validated: prepare it with
-/// CsgSolid::prepare. Copies share their leaves.
-class Csg {
- public:
-  /// A leaf: Csg::leaf(Sphere{{0, 0, 0}, 1}), Csg::leaf(Box3{min, max}), ...
-  [[nodiscard]] static Csg leaf(CsgLeaf solid);
-  [[nodiscard]] static Csg unite(std::vector<Csg> operands);
-  [[nodiscard]] static Csg intersect(std::vector<Csg> operands);
-  [[nodiscard]] static Csg subtract(Csg a, Csg b);
-  [[nodiscard]] static Csg complement(Csg a);
-
-  [[nodiscard]] CsgOp op() const { return op_; }
-  /// The operands of an operation (two for subtract, one for complement, none for a leaf).
-  [[nodiscard]] std::span<const Csg> operands() const { return operands_; }
-  /// The solid of a leaf. Precondition: op() == CsgOp::leaf.
-  [[nodiscard]] const CsgLeaf& solid() const { return *leaf_; }
-
- private:
-  Csg(CsgOp op, std::vector<Csg> operands, std::shared_ptr<const CsgLeaf> leaf)
-      : op_(op), operands_(std::move(operands)), leaf_(std::move(leaf)) {}
-
-  CsgOp op_;
-  std::vector<Csg> operands_;
-  std::shared_ptr<const CsgLeaf> leaf_;
-};
+/// The types' old spellings, from before the tree moved to the shapes layer
+/// (docs/architecture.md).
+using shapes::Csg;
+using shapes::CsgLeaf;
+using shapes::CsgMesh;
+using shapes::CsgOp;
 
 /// A validated CSG tree flattened for queries (the prepared object). Immutable; locate() may be
 /// called from several threads at once, provided implicit leaves' functions allow it.
@@ -144,8 +83,11 @@ class CsgSolid {
   /// box min <= max on every axis (invalid_value), half-space normal not zero (degenerate),
   /// an implicit leaf holding a function (invalid_value), a mesh with valid numbers and indices
   /// (invalid_value) that is closed (degenerate); messages name the leaf by its position in the
-  /// tree ("intersect[1].subtract[0]: radius is negative"). O(size of the tree).
-  [[nodiscard]] static Result<CsgSolid> prepare(const Csg& tree);
+  /// tree ("intersect[1].subtract[0]: radius is negative"). Each mesh leaf is indexed once
+  /// (inside::MeshIndex with `mesh_options`, O(n log n + grid)), also when it appears in several
+  /// leaves. O(size of the tree) for the rest.
+  [[nodiscard]] static Result<CsgSolid> prepare(const Csg& tree,
+                                                const MeshIndexOptions& mesh_options = {});
 
   /// Where p lies, with the semantics of this header. Cost: one exact locate per leaf; at points
   /// on some leaf's boundary, the neighbourhood analysis (exact arithmetic, polynomial in the
@@ -175,6 +117,8 @@ class CsgSolid {
   std::vector<Node> nodes_;  // nodes_[0] is the root; children precede nothing in particular
   std::vector<std::int32_t> children_;
   std::vector<CsgLeaf> leaves_;
+  // Per leaf: the prepared index of a mesh leaf (shared between leaves of one mesh), else null.
+  std::vector<std::shared_ptr<const MeshIndex>> mesh_indexes_;
 };
 
 /// One-shot form of CsgSolid::locate.

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -3,21 +3,17 @@
 /// Containment in solids defined by a function, f(p) >= 0 (seed section 22.4, equation 22.1):
 /// balls, half-spaces, axis-aligned boxes and user-supplied functions.
 
-#include <functional>
-
 #include "contain/core/location.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/plane.h"
-#include "contain/geometry/sphere.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/implicit_function.h"
+#include "contain/values/box.h"
+#include "contain/values/plane.h"
+#include "contain/values/sphere.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 
-/// A user-supplied implicit function: the solid is { p : f(p) >= 0 }.
-/// Batch callers (`inside::CsgSolid::locate` on many points) call it from several threads at
-/// once, so it must be safe to call concurrently (a pure function is; see io::read_csg_json for
-/// the muparser adaptor, which keeps one parser per concurrent caller).
-using ImplicitFunction = std::function<double(Vec3)>;
+/// The type's old spelling, from before it moved to the shapes layer (docs/architecture.md).
+using shapes::ImplicitFunction;
 
 /// Where `p` lies relative to the closed ball. Exact: predicates::side_of_sphere decides the sign
 /// of r^2 - |p - c|^2 on the given doubles, so (3, 4, 0) is `boundary` of the ball of radius 5

@@ -12,12 +12,12 @@
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/mesh_validation.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/fast_winding_number.h"
 #include "contain/predicates/sign.h"
+#include "contain/shapes/mesh.h"
+#include "contain/shapes/mesh_validation.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 
@@ -50,9 +50,10 @@ struct MeshIndexOptions {
 /// Regime `closed_exact` (every edge shared by exactly two triangles: a closed surface; its
 /// orientation does not matter). Answer: `boundary` if p lies on a triangle (orient3d == 0 and
 /// the exact point in triangle), else the parity of the crossings of the **perturbed +x ray
-/// rule** (docs/robustness.md; src/inside/mesh_ray.h): the ray from p along +x, its origin moved
-/// symbolically by (0, e, e^2), so that it never meets an edge or a vertex; odd is `inside`.
-/// Exact on the given doubles for every point (checked against a GMP oracle), deterministic.
+/// rule** (docs/robustness.md; include/contain/predicates/perturbed_ray.h): the ray from p along
+/// +x, its origin moved symbolically by (0, e, e^2), so that it never meets an edge or a vertex;
+/// odd is `inside`. Exact on the given doubles for every point (checked against a GMP oracle),
+/// deterministic.
 ///
 /// Structure: a uniform grid over the bounding box; a point is assigned its cell by exact
 /// comparisons with the grid lines (half-open cells, the last closed). Cells that no triangle's

@@ -3,9 +3,9 @@
 /// The same-side test for convex polygons.
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -3,9 +3,9 @@
 /// Point in a polyhedron given by a triangle mesh, one query (seed section 22.4, figure 22.22).
 
 #include "contain/core/location.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -5,8 +5,8 @@
 #include <span>
 
 #include "contain/core/location.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

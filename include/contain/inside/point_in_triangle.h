@@ -5,8 +5,8 @@
 #include <cstdint>
 
 #include "contain/core/location.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -10,9 +10,9 @@
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -9,12 +9,12 @@
 
 #include "contain/bvh/bvh.h"
 #include "contain/core/parallel.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
-#include "contain/geometry/vec.h"
 #include "contain/inside/holders.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
+#include "contain/values/transform.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -4,8 +4,8 @@
 
 #include <span>
 
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

@@ -4,9 +4,9 @@
 /// Sorkine-Hornung, "Robust Inside-Outside Segmentation using Generalized Winding Numbers",
 /// SIGGRAPH 2013): the signed solid angle of the surface seen from the point over 4 pi.
 
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/triangle.h"
-#include "contain/geometry/vec.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/triangle.h"
+#include "contain/values/vec.h"
 
 namespace contain::inside {
 

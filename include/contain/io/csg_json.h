@@ -10,16 +10,14 @@
 ///   {"implicit": "1 - x^2 - y^2 - z^2"}  (inside where >= 0; muparser syntax, variables x, y, z)
 ///   {"mesh": "file.obj"}  (relative to the JSON file)
 ///
-/// Note on layering: the result is an inside::Csg, so this reader uses contain::inside, not only
-/// core and geometry; a CSG file describes exactly that type and a copy of the tree in io would
-/// only have to be converted.
+/// The result is a shapes::Csg, the tree as data; inside::CsgSolid::prepare locates points in it.
 
 #include <filesystem>
 #include <string>
 #include <string_view>
 
 #include "contain/core/result.h"
-#include "contain/inside/csg.h"
+#include "contain/shapes/csg.h"
 
 namespace contain::io {
 
@@ -39,7 +37,7 @@ struct CsgJsonOptions {
 ///   out of the double range, negative radius, box min > max, wrong array length, unknown key,
 ///   an object with no or several keys, empty union/intersection;
 /// - ErrorKind::degenerate: a half-space (or convex plane) with a zero normal;
-/// - mesh leaves (`{"mesh": "f.obj"}`, read with io::read_mesh into an inside::CsgMesh): the
+/// - mesh leaves (`{"mesh": "f.obj"}`, read with io::read_mesh into a CsgMesh): the
 ///   mesh reader's errors with its kind ("mesh: dir/f.obj:12: ..."), and ErrorKind::degenerate
 ///   for a mesh that is not closed (a CSG leaf needs a solid); messages name the resolved file.
 ///
@@ -49,11 +47,10 @@ struct CsgJsonOptions {
 /// CsgSolid's batch locate does. An evaluation error at run time (none is expected after
 /// compilation) gives NaN, which is `outside`.
 /// Complexity: linear in the size of the text.
-[[nodiscard]] Result<inside::Csg> parse_csg_json(std::string_view text,
-                                                 const CsgJsonOptions& options = {});
+[[nodiscard]] Result<Csg> parse_csg_json(std::string_view text, const CsgJsonOptions& options = {});
 
 /// Reads and parses a CSG file; mesh paths are relative to the file's folder. ErrorKind::io when
 /// the file cannot be read.
-[[nodiscard]] Result<inside::Csg> read_csg_json(const std::filesystem::path& file);
+[[nodiscard]] Result<Csg> read_csg_json(const std::filesystem::path& file);
 
 }  // namespace contain::io

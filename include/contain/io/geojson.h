@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::io {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::io {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "contain/core/result.h"
-#include "contain/geometry/mesh.h"
+#include "contain/shapes/mesh.h"
 
 namespace contain::io {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/vec.h"
+#include "contain/values/vec.h"
 
 namespace contain::io {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "contain/core/result.h"
-#include "contain/geometry/polygon.h"
+#include "contain/shapes/polygon.h"
 
 namespace contain::io {
 

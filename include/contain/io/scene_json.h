@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "contain/core/result.h"
-#include "contain/geometry/mesh.h"
-#include "contain/geometry/transform.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
 
 namespace contain::io {
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "contain/core/location.h"
-#include "contain/geometry/box.h"
-#include "contain/geometry/polygon.h"
-#include "contain/geometry/segment.h"
+#include "contain/shapes/polygon.h"
+#include "contain/values/box.h"
+#include "contain/values/segment.h"
 
 namespace contain::io {
 

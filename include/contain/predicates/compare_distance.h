@@ -2,8 +2,8 @@
 /// \file
 /// Exact comparison of a squared distance with a squared radius (containment in balls and discs).
 
-#include "contain/geometry/sphere.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/sphere.h"
 
 namespace contain::predicates {
 

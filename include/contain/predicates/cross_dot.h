@@ -2,8 +2,8 @@
 /// \file
 /// Exact sign of a dot product of two cross products, the same-side test of the seed section.
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 

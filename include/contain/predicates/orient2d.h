@@ -5,8 +5,8 @@
 #include <cfloat>
 #include <cmath>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 

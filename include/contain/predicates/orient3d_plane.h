@@ -6,9 +6,9 @@
 #include <cfloat>
 #include <cmath>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 

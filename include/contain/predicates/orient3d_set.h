@@ -10,9 +10,9 @@
 #include <cstddef>
 #include <utility>
 
-#include "contain/geometry/vec.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 

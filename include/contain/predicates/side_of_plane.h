@@ -2,8 +2,8 @@
 /// \file
 /// Exact side of a half-space or half-plane given by its coefficients.
 
-#include "contain/geometry/plane.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/plane.h"
 
 namespace contain::predicates {
 

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// Indexed triangle meshes: a vertex array and a triangle index array (flat data). Readers
+/// triangulate polygonal faces as fans and keep the count of the faces they read.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "contain/core/result.h"
+#include "contain/values/vec.h"
+
+namespace contain::shapes {
+
+/// Indices of a triangle's three vertices; counter-clockwise seen from outside for an outward
+/// oriented closed mesh.
+using TriangleIndices = std::array<std::int32_t, 3>;
+
+struct Mesh {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+
+  /// Validates: rejects NaN/Inf coordinates and indices out of range (ErrorKind::invalid_value).
+  /// Triangles may be degenerate and the mesh may be open: `validate_mesh` reports those.
+  [[nodiscard]] static Result<Mesh> from_arrays(std::vector<Vec3> vertices,
+                                                std::vector<TriangleIndices> triangles);
+
+  friend bool operator==(const Mesh&, const Mesh&) = default;
+};
+
+}  // namespace contain::shapes
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::Mesh;
+using shapes::TriangleIndices;
+}  // namespace contain

@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Closed triangles in 2D and 3D (the convex hull of the three vertices).
+
+#include "contain/values/vec.h"
+
+namespace contain::values {
+
+struct Triangle2 {
+  Vec2 a;
+  Vec2 b;
+  Vec2 c;
+  friend constexpr bool operator==(const Triangle2&, const Triangle2&) = default;
+};
+
+struct Triangle3 {
+  Vec3 a;
+  Vec3 b;
+  Vec3 c;
+  /// Not normalised; (b - a) x (c - a), so it points to the side from which a, b, c turn
+  /// counter-clockwise. Floating point: use `predicates/` for decisions.
+  [[nodiscard]] constexpr Vec3 normal() const { return cross(b - a, c - a); }
+  friend constexpr bool operator==(const Triangle3&, const Triangle3&) = default;
+};
+
+}  // namespace contain::values
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using values::Triangle2;
+using values::Triangle3;
+}  // namespace contain

@@ -1,0 +1,227 @@
+#include "contain/shapes/mesh_validation.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <tuple>
+
+#include "contain/core/union_find.h"
+#include "contain/predicates/orient2d.h"
+#include "contain/values/box.h"
+
+// Outline: one record per (edge, triangle) sorted by edge gives border, non-manifold and
+// inconsistent edges; the same groups join triangle corners at both end vertices (a vertex whose
+// corners fall into several groups is a pinch vertex); vertices joined by edges give the
+// components; sorted vertex triples give duplicates; exact orientations give degenerate faces.
+
+namespace contain::shapes {
+
+namespace {
+
+struct EdgeUse {
+  std::int32_t lo, hi;  // lo < hi
+  std::int32_t triangle;
+  bool forward;  // the triangle runs lo -> hi
+};
+
+bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
+  using predicates::orient2d;
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+}
+
+std::size_t corner_of(const TriangleIndices& t, std::int32_t v) {
+  return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+}
+
+}  // namespace
+
+MeshReport validate_mesh(const Mesh& mesh) {
+  MeshReport r;
+  r.vertices = mesh.vertices.size();
+  r.triangles = mesh.triangles.size();
+  const std::size_t nt = mesh.triangles.size();
+
+  std::vector<char> used(mesh.vertices.size(), 0);
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * nt);
+  Box3 box;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const TriangleIndices& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = tri[static_cast<std::size_t>(k)];
+      const std::int32_t b = tri[static_cast<std::size_t>((k + 1) % 3)];
+      used[static_cast<std::size_t>(a)] = 1;
+      box.expand(mesh.vertices[static_cast<std::size_t>(a)]);
+      if (a == b) continue;
+      uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(t), a < b});
+    }
+    const Vec3 a = mesh.vertices[static_cast<std::size_t>(tri[0])];
+    const Vec3 b = mesh.vertices[static_cast<std::size_t>(tri[1])];
+    const Vec3 c = mesh.vertices[static_cast<std::size_t>(tri[2])];
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] || zero_area(a, b, c)) {
+      ++r.degenerate_triangles;
+    }
+  }
+  r.referenced_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
+  });
+
+  // Corners: 3 t + k. A triangle with a repeated index joins its own corners at that vertex.
+  UnionFind<std::size_t> corners(3 * nt);
+  UnionFind<std::size_t> vertices(mesh.vertices.size());
+  for (std::size_t t = 0; t < nt; ++t) {
+    const TriangleIndices& tri = mesh.triangles[t];
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t l = k + 1; l < 3; ++l) {
+        if (tri[k] == tri[l]) corners.unite(3 * t + k, 3 * t + l);
+      }
+    }
+  }
+  for (std::size_t g = 0; g < uses.size();) {
+    std::size_t h = g;
+    while (h < uses.size() && uses[h].lo == uses[g].lo && uses[h].hi == uses[g].hi)
+      ++h;
+    const std::size_t count = h - g;
+    ++r.edges;
+    if (count == 1) ++r.border_edges;
+    if (count >= 3) ++r.nonmanifold_edges;
+    if (count == 2 && uses[g].forward == uses[g + 1].forward) ++r.inconsistent_edges;
+    const EdgeUse& first = uses[g];
+    vertices.unite(static_cast<std::size_t>(first.lo), static_cast<std::size_t>(first.hi));
+    const auto tf = static_cast<std::size_t>(first.triangle);
+    for (std::size_t q = g + 1; q < h; ++q) {
+      const auto tq = static_cast<std::size_t>(uses[q].triangle);
+      for (std::int32_t v : {first.lo, first.hi}) {
+        corners.unite(3 * tf + corner_of(mesh.triangles[tf], v),
+                      3 * tq + corner_of(mesh.triangles[tq], v));
+      }
+    }
+    g = h;
+  }
+
+  // Fans per vertex: distinct corner groups.
+  std::vector<std::pair<std::int32_t, std::size_t>> fans;
+  fans.reserve(3 * nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    for (std::size_t k = 0; k < 3; ++k)
+      fans.emplace_back(mesh.triangles[t][k], corners.find(3 * t + k));
+  }
+  std::sort(fans.begin(), fans.end());
+  fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
+  for (std::size_t i = 1; i < fans.size(); ++i) {
+    if (fans[i].first == fans[i - 1].first &&
+        (r.pinch_vertices.empty() || r.pinch_vertices.back() != fans[i].first)) {
+      r.pinch_vertices.push_back(fans[i].first);
+    }
+  }
+
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (used[v] && vertices.find(v) == v) ++r.components;
+  }
+
+  std::vector<std::array<std::int32_t, 3>> sorted(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    sorted[t] = mesh.triangles[t];
+    std::sort(sorted[t].begin(), sorted[t].end());
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t t = 1; t < nt; ++t) {
+    if (sorted[t] == sorted[t - 1]) ++r.duplicated_triangles;
+  }
+
+  r.euler_characteristic = static_cast<std::int64_t>(r.referenced_vertices) -
+                           static_cast<std::int64_t>(r.edges) + static_cast<std::int64_t>(nt);
+  if (r.closed() && r.manifold() && r.consistently_oriented()) {
+    r.genus = (2 * static_cast<std::int64_t>(r.components) - r.euler_characteristic) / 2;
+  }
+
+  // Signed volume: sum of a . (b x c) / 6, relative to the box centre, Neumaier summation.
+  if (!box.empty()) {
+    const Vec3 o = 0.5 * box.min + 0.5 * box.max;
+    double sum = 0.0, compensation = 0.0;
+    for (const TriangleIndices& tri : mesh.triangles) {
+      const Vec3 a = mesh.vertices[static_cast<std::size_t>(tri[0])] - o;
+      const Vec3 b = mesh.vertices[static_cast<std::size_t>(tri[1])] - o;
+      const Vec3 c = mesh.vertices[static_cast<std::size_t>(tri[2])] - o;
+      const double term = dot(a, cross(b, c));
+      const double s = sum + term;
+      compensation += std::abs(sum) >= std::abs(term) ? (sum - s) + term : (term - s) + sum;
+      sum = s;
+    }
+    r.signed_volume = (sum + compensation) / 6.0;
+  }
+  return r;
+}
+
+std::string MeshReport::summary() const {
+  std::ostringstream out;
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  out << vertices << " vertices (" << referenced_vertices << " referenced), " << triangles
+      << " triangles, " << edges << " edges, " << components
+      << (components == 1 ? " component\n" : " components\n");
+  out << "closed: " << yes(closed()) << "; 2-manifold: " << yes(manifold())
+      << "; consistently oriented: " << yes(consistently_oriented())
+      << "; outward: " << yes(outward()) << " (signed volume " << signed_volume << ")\n";
+  out << "Euler characteristic " << euler_characteristic;
+  if (genus) out << ", genus " << *genus;
+  out << "\n";
+  out << "border edges: " << border_edges << "; non-manifold edges: " << nonmanifold_edges
+      << "; inconsistently oriented edges: " << inconsistent_edges
+      << "; pinch vertices: " << pinch_vertices.size();
+  if (!pinch_vertices.empty()) {
+    out << " (0-based:";
+    for (std::size_t i = 0; i < pinch_vertices.size() && i < 5; ++i)
+      out << " " << pinch_vertices[i];
+    if (pinch_vertices.size() > 5) out << " ...";
+    out << ")";
+  }
+  out << "; degenerate triangles: " << degenerate_triangles
+      << "; duplicated triangles: " << duplicated_triangles << "\n";
+  return out.str();
+}
+
+WeldResult weld_vertices(const Mesh& mesh) {
+  WeldResult w;
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::int32_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  // +0 and -0 compare equal as doubles, so they sort together and are welded.
+  auto key = [&](std::int32_t i) {
+    const Vec3 p = mesh.vertices[static_cast<std::size_t>(i)];
+    return std::make_tuple(p.x, p.y, p.z);
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::int32_t a, std::int32_t b) { return key(a) < key(b); });
+  std::vector<std::int32_t> representative(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int32_t i = order[k];
+    representative[static_cast<std::size_t>(i)] =
+        (k > 0 && key(order[k - 1]) == key(i))
+            ? representative[static_cast<std::size_t>(order[k - 1])]
+            : i;
+  }
+  w.remap.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto rep = static_cast<std::size_t>(representative[i]);
+    if (w.remap[rep] < 0) {
+      w.remap[rep] = static_cast<std::int32_t>(w.mesh.vertices.size());
+      w.mesh.vertices.push_back(mesh.vertices[rep]);
+    }
+    w.remap[i] = w.remap[rep];
+  }
+  w.mesh.triangles.reserve(mesh.triangles.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    w.mesh.triangles.push_back({w.remap[static_cast<std::size_t>(t[0])],
+                                w.remap[static_cast<std::size_t>(t[1])],
+                                w.remap[static_cast<std::size_t>(t[2])]});
+  }
+  w.merged = n - w.mesh.vertices.size();
+  return w;
+}
+
+}  // namespace contain::shapes

@@ -1,0 +1,86 @@
+// The one big number (contain/predicates/big_float.h) against GMP rationals: exact sums,
+// differences and products of doubles of every magnitude, comparison, negation, and the 3D
+// helpers used by the CSG analysis and the perturbed ray.
+
+#include "contain/predicates/big_float.h"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "support/exact.h"
+
+namespace contain::predicates {
+namespace {
+
+using test::sign_of;
+
+// Doubles across the whole range: signs, huge, tiny, subnormal, and random mantissas.
+std::vector<double> samples() {
+  std::vector<double> v = {
+      0.0,    1.0,     -1.0,     0.1,     -0.3,          1e308,
+      -1e308, DBL_MAX, -DBL_MAX, DBL_MIN, DBL_TRUE_MIN,  -DBL_TRUE_MIN,
+      1e-310, 3.0,     0x1p-60,  0x1p60,  1.0 + 0x1p-52, 0x1.fffffffffffffp1000};
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1070, 1020);
+  for (int k = 0; k < 24; ++k)
+    v.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  return v;
+}
+
+mpq_class q(double x) {
+  return mpq_class(x);
+}
+
+TEST(BigFloat, SumsDifferencesAndProductsOfDoublesHaveTheExactSign) {
+  const auto v = samples();
+  for (double a : v) {
+    for (double b : v) {
+      for (double c : v) {
+        const BigFloat x = BigFloat(a) * BigFloat(b) - BigFloat(c);
+        ASSERT_EQ(x.sign(), sign_of(q(a) * q(b) - q(c))) << a << " " << b << " " << c;
+        const BigFloat y = BigFloat(a) + BigFloat(b) - BigFloat(c);
+        ASSERT_EQ(y.sign(), sign_of(q(a) + q(b) - q(c))) << a << " " << b << " " << c;
+      }
+    }
+  }
+}
+
+TEST(BigFloat, ComparisonIsExactWhereDoublesWouldRound) {
+  const BigFloat one(1.0), tiny(DBL_TRUE_MIN), huge(1e308);
+  EXPECT_LT(one, one + tiny);  // 1 + 2^-1074 rounds to 1 in double
+  EXPECT_GT(huge + one, huge);
+  EXPECT_EQ(huge + one - huge, one);
+  EXPECT_EQ(BigFloat(2.0), BigFloat(1.0) + BigFloat(1.0));  // different digits, same value
+  EXPECT_LT(-one, BigFloat());
+  EXPECT_TRUE((one - one).is_zero());
+  EXPECT_EQ((-(one - one)).sign(), Sign::zero);
+  EXPECT_EQ((-one).sign(), Sign::negative);
+}
+
+TEST(BigFloat, VectorHelpersMatchRationalCrossAndDot) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 a{u(rng), u(rng) * 1e200, u(rng) * 1e-200}, b{u(rng), u(rng), u(rng) * 1e-300},
+        c{u(rng) * 1e100, u(rng), u(rng)};
+    const BigVec3 n = cross(to_big(b) - to_big(a), to_big(c) - to_big(a));
+    const auto qa = test::exact(a), qb = test::exact(b), qc = test::exact(c);
+    const mpq_class ux = qb.x - qa.x, uy = qb.y - qa.y, uz = qb.z - qa.z;
+    const mpq_class wx = qc.x - qa.x, wy = qc.y - qa.y, wz = qc.z - qa.z;
+    const mpq_class nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+    ASSERT_EQ(n.x.sign(), sign_of(nx));
+    ASSERT_EQ(n.y.sign(), sign_of(ny));
+    ASSERT_EQ(n.z.sign(), sign_of(nz));
+    ASSERT_EQ(dot(n, to_big(a)).sign(), sign_of(nx * qa.x + ny * qa.y + nz * qa.z));
+    ASSERT_EQ((-n).x.sign(), -sign_of(nx));
+    ASSERT_TRUE(is_zero(n - n));
+  }
+}
+
+}  // namespace
+}  // namespace contain::predicates

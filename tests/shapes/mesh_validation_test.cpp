@@ -1,0 +1,152 @@
+#include "contain/shapes/mesh_validation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenes/scenes.h"
+
+namespace contain {
+namespace {
+
+// The unit cube [0,1]^3, outward (counter-clockwise seen from outside), 12 triangles.
+Mesh cube(Vec3 o = {0, 0, 0}) {
+  Mesh m;
+  for (int i = 0; i < 8; ++i)
+    m.vertices.push_back(o + Vec3{double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return m;
+}
+
+Mesh two_cubes() {
+  Mesh a = cube(), b = cube({3, 0, 0});
+  for (auto& t : b.triangles)
+    for (auto& v : t)
+      v += 8;
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+  return a;
+}
+
+TEST(MeshValidation, CubeIsAClosedOutwardGenusZeroManifold) {
+  const MeshReport r = validate_mesh(cube());
+  EXPECT_TRUE(r.closed());
+  EXPECT_TRUE(r.manifold());
+  EXPECT_TRUE(r.consistently_oriented());
+  EXPECT_TRUE(r.outward());
+  EXPECT_TRUE(r.watertight());
+  EXPECT_EQ(r.edges, 18u);
+  EXPECT_EQ(r.euler_characteristic, 2);
+  EXPECT_EQ(r.genus, 0);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_DOUBLE_EQ(r.signed_volume, 1.0);
+  EXPECT_NE(r.summary().find("closed: yes"), std::string::npos);
+}
+
+TEST(MeshValidation, InvertedCubeIsClosedButNotOutward) {
+  Mesh m = cube();
+  for (auto& t : m.triangles)
+    std::swap(t[1], t[2]);
+  const MeshReport r = validate_mesh(m);
+  EXPECT_TRUE(r.closed());
+  EXPECT_TRUE(r.consistently_oriented());
+  EXPECT_FALSE(r.outward());
+  EXPECT_LT(r.signed_volume, 0.0);
+}
+
+TEST(MeshValidation, OneFlippedFaceMakesThreeEdgesInconsistent) {
+  Mesh m = cube();
+  std::swap(m.triangles[0][1], m.triangles[0][2]);
+  const MeshReport r = validate_mesh(m);
+  EXPECT_TRUE(r.closed());
+  EXPECT_EQ(r.inconsistent_edges, 3u);
+  EXPECT_FALSE(r.consistently_oriented());
+  EXPECT_FALSE(r.genus.has_value());
+}
+
+TEST(MeshValidation, MissingFaceLeavesFourBorderEdges) {
+  Mesh m = cube();
+  m.triangles.resize(10);  // the face x = 1 is gone
+  const MeshReport r = validate_mesh(m);
+  EXPECT_FALSE(r.closed());
+  EXPECT_EQ(r.border_edges, 4u);
+  EXPECT_TRUE(r.manifold());
+  EXPECT_NE(r.summary().find("border edges: 4"), std::string::npos);
+}
+
+TEST(MeshValidation, DuplicatedFaceIsCountedAndItsEdgesAreNonManifold) {
+  Mesh m = cube();
+  m.triangles.push_back({0, 1, 2});  // the first face again, reversed order
+  const MeshReport r = validate_mesh(m);
+  EXPECT_EQ(r.duplicated_triangles, 1u);
+  EXPECT_EQ(r.nonmanifold_edges, 3u);
+  EXPECT_FALSE(r.closed());
+}
+
+TEST(MeshValidation, TwoCubesTouchingAtAVertexMakeAPinchVertex) {
+  Mesh m = two_cubes();
+  // Move the second cube so that its vertex 8 + 0 coincides with the first cube's vertex 7, then
+  // weld: one vertex joins two fans.
+  for (std::size_t i = 8; i < 16; ++i)
+    m.vertices[i] = m.vertices[i] - Vec3{2, -1, -1};
+  const WeldResult w = weld_vertices(m);
+  EXPECT_EQ(w.merged, 1u);
+  const MeshReport r = validate_mesh(w.mesh);
+  EXPECT_TRUE(r.closed());
+  EXPECT_FALSE(r.manifold());
+  ASSERT_EQ(r.pinch_vertices.size(), 1u);
+  EXPECT_EQ(r.pinch_vertices[0], 7);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.euler_characteristic, 3);
+}
+
+TEST(MeshValidation, TwoSeparateCubesAreTwoComponentsOfGenusZero) {
+  const MeshReport r = validate_mesh(two_cubes());
+  EXPECT_EQ(r.components, 2u);
+  EXPECT_EQ(r.euler_characteristic, 4);
+  EXPECT_EQ(r.genus, 0);
+}
+
+TEST(MeshValidation, ZeroAreaIsDecidedExactly) {
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0.5, 0.5, 0.5}};
+  m.triangles = {{0, 1, 2}, {0, 0, 1}, {1, 3, 2}};
+  EXPECT_EQ(validate_mesh(m).degenerate_triangles, 3u) << "collinear, repeated index";
+  Mesh off;
+  off.vertices = {{0, 0, 0}, {1, 1, 1}, {2, 2, std::nextafter(2.0, 3.0)}};
+  off.triangles = {{0, 1, 2}};
+  EXPECT_EQ(validate_mesh(off).degenerate_triangles, 0u) << "one ulp off the line has area";
+  Mesh tiny;  // area ~1e-300: not zero
+  tiny.vertices = {{0, 0, 0}, {1e-150, 0, 0}, {0, 1e-150, 0}};
+  tiny.triangles = {{0, 1, 2}};
+  EXPECT_EQ(validate_mesh(tiny).degenerate_triangles, 0u);
+}
+
+TEST(MeshValidation, WeldingMergesExactlyEqualPositionsIncludingSignedZeros) {
+  Mesh soup;
+  soup.vertices = {{0, 0, 0},
+                   {1, 0, 0},
+                   {0, 1, 0},
+                   {-0.0, 0, 0},
+                   {1, 0, 0},
+                   {0, 0, 1},
+                   {0, 1, std::nextafter(0.0, 1.0)}};
+  soup.triangles = {{0, 1, 2}, {3, 4, 5}, {0, 6, 5}};
+  const WeldResult w = weld_vertices(soup);
+  EXPECT_EQ(w.merged, 2u);
+  EXPECT_EQ(w.mesh.vertices.size(), 5u);
+  EXPECT_EQ(w.mesh.triangles[1], (TriangleIndices{0, 1, 3}));
+  EXPECT_EQ(w.remap[6], 4);
+}
+
+TEST(MeshValidation, TorusSceneHasGenusOne) {
+  const MeshReport r = validate_mesh(scenes::torus(1.0, 0.4, 30, 12));
+  EXPECT_TRUE(r.watertight());
+  EXPECT_EQ(r.genus, 1);
+  EXPECT_TRUE(r.outward());
+}
+
+}  // namespace
+}  // namespace contain
