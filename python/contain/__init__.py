@@ -21,6 +21,10 @@ raise TypeError and wrong shapes ValueError, naming the expected shape.
 
 contain.dask classifies Dask arrays and dataframes of points on a cluster, building each index
 once per worker process. See docs/python.md and docs/scale.md.
+
+Many shapes at once: RegionLayer (which regions of a GIS layer hold each point, as (point,
+region) index pairs), SolidScene (which solids hold each point, which solids touch), and
+contain.layers.sjoin for GeoDataFrames; see docs/layers.md.
 """
 
 from ._contain import (
