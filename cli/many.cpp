@@ -52,20 +52,28 @@ void append_lines(std::string& out, const inside::HolderTable& table,
   }
 }
 
-// Locates the points chunk by chunk (progress on a terminal) and formats each chunk's lines.
-template <class Locator, class Point>
-std::string locate_lines(const Locator& locator, const std::vector<Point>& points,
-                         const std::vector<std::string>& ids, const ManyOptions& o) {
+// Reads the points a piece at a time (2^20 lines), locates each piece and appends its lines:
+// memory is the point file's text and one piece, not every point and its holders at once.
+// Nothing is written before the whole file has been read, so a bad line late in the file still
+// gives exit 3 and no output.
+template <class Point, class Locator, class Read>
+Result<std::string> locate_lines(const Locator& locator, const std::vector<std::string>& ids,
+                                 const ManyOptions& o, Read&& read) {
   std::string text;
-  text.reserve(points.size() * 4);
-  Progress progress("points", points.size(), !o.quiet && stderr_is_terminal());
-  progress.run(
-      [&](std::size_t begin, std::size_t end) {
-        const inside::HolderTable table = locator.locate(
-            std::span<const Point>(points).subspan(begin, end - begin), {.threads = o.threads});
-        append_lines(text, table, ids, o.boundary);
-      },
-      std::size_t{1} << 20);
+  std::size_t done = 0;
+  Progress progress("points", 0, !o.quiet && stderr_is_terminal());
+  const Status status =
+      read(o.points, std::size_t{1} << 20, [&](std::span<const Point> points, double share) {
+        append_lines(text, locator.locate(points, {.threads = o.threads}), ids, o.boundary);
+        // Room for all the lines, estimated from the first piece: the string then does not
+        // copy itself as it grows.
+        if (done == 0 && share > 0.0 && share < 1.0) {
+          text.reserve(static_cast<std::size_t>(1.1 * static_cast<double>(text.size()) / share));
+        }
+        done += points.size();
+        progress.update_share(share, done);
+      });
+  if (!status) return status.error();
   return text;
 }
 
@@ -86,10 +94,10 @@ int run_layer(const ManyOptions& o) {
   auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
   if (!layer) return report(layer.error());
   warn_about_spaces(layer->ids, "the layer's");
-  auto points = io::read_points2(o.points);
-  if (!points) return report(points.error());
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
-  return emit(locate_lines(index, points->points, layer->ids, o), o.out);
+  auto text = locate_lines<Vec2>(index, layer->ids, o, io::read_points2_chunked);
+  if (!text) return report(text.error());
+  return emit(*text, o.out);
 }
 
 std::vector<inside::SceneObject> scene_objects(const io::Scene& scene) {
@@ -104,8 +112,6 @@ int run_scene_inside(const ManyOptions& o) {
   auto scene = io::read_scene_json(o.scene);
   if (!scene) return report(scene.error());
   warn_about_spaces(scene->ids, "the scene's");
-  auto points = io::read_points3(o.points);
-  if (!points) return report(points.error());
   const inside::SolidScene index(scene->meshes, scene_objects(*scene));
   // An object whose mesh is not closed is answered by the winding number: say so, once a mesh.
   std::vector<char> warned(scene->meshes.size(), 0);
@@ -115,7 +121,9 @@ int run_scene_inside(const ManyOptions& o) {
     warned[m] = 1;
     warn(scene->mesh_files[m] + " (object " + scene->ids[k] + "): " + index.object(k).warning());
   }
-  return emit(locate_lines(index, points->points, scene->ids, o), o.out);
+  auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);
+  if (!text) return report(text.error());
+  return emit(*text, o.out);
 }
 
 int run_collide_scene(const std::string& file, bool json, int threads, const std::string& out) {

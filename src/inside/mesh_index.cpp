@@ -11,6 +11,7 @@
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/values/triangle.h"
+#include "inside/grid_lines.h"
 
 // Outline (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  1. validate, pick the regime, write the warning;
@@ -25,41 +26,10 @@ namespace contain::inside {
 
 namespace {
 
-// Grid lines from lo to hi (both exact), n cells, monotone; no overflow for huge coordinates.
-std::vector<double> grid_lines(double lo, double hi, int n) {
-  std::vector<double> lines(static_cast<std::size_t>(n) + 1);
-  lines.front() = lo;
-  for (int i = 1; i < n; ++i) {
-    const double t = static_cast<double>(i) / n;
-    const double v = lo * (1.0 - t) + hi * t;
-    lines[static_cast<std::size_t>(i)] = std::clamp(v, lines[static_cast<std::size_t>(i) - 1], hi);
-  }
-  lines.back() = hi;
-  return lines;
-}
-
-int guess_cell(double v, double origin, double scale, int n) {
-  const double g = (0.5 * v - 0.5 * origin) * scale;
-  if (!(g >= 0.0)) return 0;
-  if (g >= static_cast<double>(n)) return n - 1;
-  return static_cast<int>(g);
-}
-
-// The cell i with lines[i] <= v < lines[i + 1] (the last cell closed); v within the lines.
-int exact_cell(const std::vector<double>& lines, int n, double v, int guess) {
-  const auto i = static_cast<std::size_t>(guess);
-  if (lines[i] <= v && (guess + 1 == n || v < lines[i + 1])) return guess;
-  const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, v);
-  return static_cast<int>(it - (lines.begin() + 1));
-}
-
-// The cells [first, last] whose closed spans meet the closed interval [lo, hi].
-std::pair<int, int> cell_range(const std::vector<double>& lines, int n, double lo, double hi) {
-  const auto first = std::lower_bound(lines.begin() + 1, lines.end(), lo) - (lines.begin() + 1);
-  const auto last = (std::upper_bound(lines.begin(), lines.end() - 1, hi) - lines.begin()) - 1;
-  return {static_cast<int>(std::min<std::ptrdiff_t>(first, n - 1)),
-          static_cast<int>(std::max<std::ptrdiff_t>(last, 0))};
-}
+using detail::cell_range;
+using detail::exact_cell;
+using detail::grid_lines;
+using detail::guess_cell;
 
 // A point strictly below `hi` in [lo, hi) when the span is not empty.
 double inner_point(double lo, double hi) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "inside/grid_lines.h"
 #include "inside/holder_batch.h"
 
 namespace contain::inside {
@@ -41,6 +42,7 @@ RegionLayer::RegionLayer(std::span<const MultiPolygon> regions, const RegionLaye
     const PolygonIndex& index =
         indexes_.emplace_back(region, index_options(edge_count(region), options));
     const Box2& b = index.bounds();
+    boxes_.push_back(b);
     // Flat boxes at z = 0: the hierarchy is 3D; its surface area heuristic then weighs areas.
     boxes.push_back(b.empty() ? Box3{} : Box3{{b.min.x, b.min.y, 0.0}, {b.max.x, b.max.y, 0.0}});
     bounds_.expand(b);
@@ -51,14 +53,97 @@ RegionLayer::RegionLayer(std::span<const MultiPolygon> regions, const RegionLaye
     stats_.bytes += index.memory_bytes() - sizeof(PolygonIndex);
   }
   tree_ = bvh::Bvh(boxes, {.max_leaf_items = 2});
+  build_grid(options.cells_per_region);
   stats_.regions = indexes_.size();
   stats_.tree_nodes = tree_.nodes().size();
+  stats_.grid_cells = grid_tree_.size();
+  stats_.grid_refs = grid_regions_.size();
   stats_.bytes += sizeof(*this) + indexes_.capacity() * sizeof(PolygonIndex) +
-                  tree_.nodes().size() * sizeof(bvh::Node) +
-                  tree_.items().size() * sizeof(std::int32_t);
+                  boxes_.capacity() * sizeof(Box2) + tree_.nodes().size() * sizeof(bvh::Node) +
+                  tree_.items().size() * sizeof(std::int32_t) +
+                  (xs_.capacity() + ys_.capacity()) * sizeof(double) +
+                  grid_start_.capacity() * sizeof(std::uint32_t) +
+                  grid_regions_.capacity() * sizeof(std::int32_t) + grid_tree_.capacity();
 }
 
-void RegionLayer::locate(Vec2 point, std::vector<Holder>& out) const {
+void RegionLayer::build_grid(double cells_per_region) {
+  std::size_t live = 0;
+  for (const Box2& b : boxes_)
+    live += b.empty() ? 0 : 1;
+  if (live == 0 || !(cells_per_region > 0.0)) return;
+  // Cells: about cells_per_region a region, shaped like the layer's box (half units: no
+  // overflow near DBL_MAX).
+  const double half_w = 0.5 * bounds_.max.x - 0.5 * bounds_.min.x;
+  const double half_h = 0.5 * bounds_.max.y - 0.5 * bounds_.min.y;
+  const double target =
+      std::clamp(cells_per_region * static_cast<double>(live), 1.0, static_cast<double>(1 << 22));
+  double nx = 1.0, ny = 1.0;
+  if (half_w > 0.0 && half_h > 0.0) {
+    nx = std::clamp(std::round(std::sqrt(target * half_w / half_h)), 1.0, target);
+    ny = std::clamp(std::round(target / nx), 1.0, target);
+  } else if (half_w > 0.0) {
+    nx = std::round(target);
+  } else if (half_h > 0.0) {
+    ny = std::round(target);
+  }
+  // Coarser until the lists hold at most 8 entries a region (a few huge boxes, a continent and
+  // an ocean basin, cover most cells); one cell always fits.
+  const double budget = 8.0 * static_cast<double>(live) + nx * ny;
+  for (;;) {
+    nx_ = static_cast<int>(nx);
+    ny_ = static_cast<int>(ny);
+    xs_ = detail::grid_lines(bounds_.min.x, bounds_.max.x, nx_);
+    ys_ = detail::grid_lines(bounds_.min.y, bounds_.max.y, ny_);
+    double entries = 0.0;
+    for (const Box2& b : boxes_) {
+      if (b.empty()) continue;
+      const auto [i0, i1] = detail::cell_range(xs_, nx_, b.min.x, b.max.x);
+      const auto [j0, j1] = detail::cell_range(ys_, ny_, b.min.y, b.max.y);
+      entries += static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1);
+    }
+    if (entries <= budget || nx * ny <= 1.0) break;
+    nx = std::ceil(nx / 2);
+    ny = std::ceil(ny / 2);
+  }
+  scale_x_ = half_w > 0.0 ? nx_ / half_w : 0.0;
+  scale_y_ = half_h > 0.0 ? ny_ / half_h : 0.0;
+  if (!std::isfinite(scale_x_)) scale_x_ = 0.0;
+  if (!std::isfinite(scale_y_)) scale_y_ = 0.0;
+  const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  grid_start_.assign(cells + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {  // count, then fill in region order (ascending lists)
+    std::vector<std::uint32_t> next;
+    if (pass == 1) {
+      for (std::size_t c = 0; c < cells; ++c)
+        grid_start_[c + 1] += grid_start_[c];
+      grid_regions_.resize(grid_start_[cells]);
+      next.assign(grid_start_.begin(), grid_start_.end() - 1);
+    }
+    for (std::size_t r = 0; r < boxes_.size(); ++r) {
+      const Box2& b = boxes_[r];
+      if (b.empty()) continue;
+      const auto [i0, i1] = detail::cell_range(xs_, nx_, b.min.x, b.max.x);
+      const auto [j0, j1] = detail::cell_range(ys_, ny_, b.min.y, b.max.y);
+      for (int j = j0; j <= j1; ++j) {
+        for (int i = i0; i <= i1; ++i) {
+          const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
+                         static_cast<std::size_t>(i);
+          if (pass == 0) {
+            ++grid_start_[c + 1];
+          } else {
+            grid_regions_[next[c]++] = static_cast<std::int32_t>(r);
+          }
+        }
+      }
+    }
+  }
+  constexpr std::uint32_t kLongList = 32;
+  grid_tree_.assign(cells, 0);
+  for (std::size_t c = 0; c < cells; ++c)
+    grid_tree_[c] = grid_start_[c + 1] - grid_start_[c] > kLongList ? 1 : 0;
+}
+
+void RegionLayer::locate_in_tree(Vec2 point, std::vector<Holder>& out) const {
   detail::append_holders(
       tree_, indexes_, point,
       [&](const Box3& box) {
@@ -66,6 +151,36 @@ void RegionLayer::locate(Vec2 point, std::vector<Holder>& out) const {
                point.y <= box.max.y;
       },
       out);
+}
+
+void RegionLayer::locate(Vec2 point, std::vector<Holder>& out) const {
+  // Every region's box lies in bounds_ (also NaN-safe: no comparison holds).
+  if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
+        point.y <= bounds_.max.y)) {
+    return;
+  }
+  if (grid_tree_.empty()) {
+    locate_in_tree(point, out);
+    return;
+  }
+  const int i = detail::exact_cell(xs_, nx_, point.x,
+                                   detail::guess_cell(point.x, bounds_.min.x, scale_x_, nx_));
+  const int j = detail::exact_cell(ys_, ny_, point.y,
+                                   detail::guess_cell(point.y, bounds_.min.y, scale_y_, ny_));
+  const auto c =
+      static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+  if (grid_tree_[c] != 0) {
+    locate_in_tree(point, out);
+    return;
+  }
+  // The cell lists every region whose box holds the point (a box meeting the point meets the
+  // closed cell), ascending: the holders come out in order.
+  for (std::uint32_t k = grid_start_[c]; k < grid_start_[c + 1]; ++k) {
+    const std::int32_t r = grid_regions_[k];
+    if (!boxes_[static_cast<std::size_t>(r)].contains(point)) continue;
+    const Location where = indexes_[static_cast<std::size_t>(r)].locate(point);
+    if (where != Location::outside) out.push_back({r, where});
+  }
 }
 
 std::vector<Holder> RegionLayer::locate(Vec2 point) const {

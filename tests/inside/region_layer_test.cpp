@@ -182,6 +182,40 @@ TEST(RegionLayer, BatchTableIsTheSameForEveryThreadCountAndEqualsSingleQueries) 
   EXPECT_GT(shared, 4000u);  // the points on shared edges and corners were there
 }
 
+TEST(RegionLayer, GridInFrontOfTheTreeGivesTheTreesAnswersWithDenseClustersAndHugeBoxes) {
+  // A dense city of 60 x 60 tiny parcels in one corner (cells listing more than 32 regions go
+  // down the tree), a few regions spanning the whole layer, and scattered squares.
+  std::vector<MultiPolygon> regions;
+  for (int j = 0; j < 60; ++j) {
+    for (int i = 0; i < 60; ++i)
+      regions.push_back(square(i * 1e-3, j * 1e-3, (i + 1) * 1e-3, (j + 1) * 1e-3));
+  }
+  regions.push_back(square(0, 0, 100, 100));
+  regions.push_back(square(-1, 40, 101, 60));
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> at(0, 98);
+  for (int k = 0; k < 200; ++k) {
+    const double x = at(rng), y = at(rng);
+    regions.push_back(square(x, y, x + 1, y + 1));
+  }
+  const RegionLayer gridded(regions);
+  const RegionLayer tree_only(regions, {.cells_per_region = 0.0});
+  EXPECT_GT(gridded.stats().grid_cells, 100u);
+  EXPECT_EQ(tree_only.stats().grid_cells, 0u);
+  std::vector<Vec2> points;
+  std::uniform_real_distribution<double> u(-2, 102), city(0, 0.06);
+  std::uniform_int_distribution<int> grid(0, 60);
+  for (int k = 0; k < 20000; ++k) {
+    points.push_back({u(rng), u(rng)});
+    points.push_back({city(rng), city(rng)});
+    points.push_back({grid(rng) * 1e-3, grid(rng) * 1e-3});  // corners of the city's parcels
+    points.push_back({static_cast<double>(at(rng)), static_cast<double>(at(rng))});
+  }
+  EXPECT_EQ(gridded.locate(points, {.threads = 1}), tree_only.locate(points, {.threads = 1}));
+  for (std::size_t k = 0; k < points.size(); k += 101)
+    ASSERT_EQ(gridded.locate(points[k]), brute_force(regions, points[k], Fill::even_odd));
+}
+
 TEST(RegionLayer, OneShotFunctionEqualsThePreparedLayer) {
   const std::vector<MultiPolygon> regions = square_grid(4);
   const RegionLayer layer(regions, {.fill = Fill::nonzero});

@@ -33,6 +33,9 @@ struct RegionLayerOptions {
   /// Regions of at most this many edges get a single cell: the point is tested against each
   /// edge, which for a few edges is as fast as a grid and smaller.
   std::size_t single_cell_edges = 8;
+  /// The first level over the regions' boxes: a uniform grid of about this many cells per
+  /// region whose cells list the regions whose boxes meet them (0: the tree alone).
+  double cells_per_region = 4.0;
 };
 
 /// Many regions, each its own set of closed paths under the layer's fill rule, prepared for
@@ -48,8 +51,13 @@ struct RegionLayerOptions {
 /// Structure: one `PolygonIndex` per region (a grid of at most `max_cells_per_edge` cells per
 /// edge), and a bounding volume hierarchy over the regions' boxes (`bvh::Bvh`, flat, binned
 /// SAH), so a point descends only into the boxes that hold it (exact comparisons; closed
-/// boxes, so a point on a box side still meets the region). Regions that hold no edge (empty,
-/// or all edges of zero length) hold no point.
+/// boxes, so a point on a box side still meets the region). In front of the tree a uniform grid
+/// over the layer's box (about `cells_per_region` cells a region, coarsened until its lists
+/// hold at most 8 entries a region) lists in each cell the regions whose boxes meet it, in
+/// order: a point finds its cell by exact comparisons and tests those boxes, with no descent and
+/// no sorting; a cell listing more than 32 regions (a dense city of parcels in one cell) sends
+/// its points down the tree instead. Regions that hold no edge (empty, or all edges of zero
+/// length) hold no point.
 ///
 /// Memory (`stats().bytes`), per edge e and region r: each region's grid has at most
 /// max(1, 16 e) cells of 4 bytes, its edges are kept once per cell they touch (32 bytes, plus
@@ -99,15 +107,29 @@ class RegionLayer {
     std::size_t cells = 0;       ///< grid cells over all regions
     std::size_t edge_refs = 0;   ///< edge-cell incidences over all regions
     std::size_t tree_nodes = 0;  ///< nodes of the hierarchy over the regions' boxes
+    std::size_t grid_cells = 0;  ///< cells of the first-level grid (0: none)
+    std::size_t grid_refs = 0;   ///< region-cell entries of the grid
     std::size_t bytes = 0;       ///< memory held by the layer (indexes, tree, this object)
   };
   [[nodiscard]] Stats stats() const { return stats_; }
 
  private:
+  void build_grid(double cells_per_region);
+  void locate_in_tree(Vec2 point, std::vector<Holder>& out) const;
+
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
   std::vector<PolygonIndex> indexes_;
+  std::vector<Box2> boxes_;  // boxes_[r] = indexes_[r].bounds(), in one array
   bvh::Bvh tree_;
+  // The first-level grid: cell c lists regions grid_regions_[grid_start_[c] .. [c + 1]),
+  // ascending; grid_tree_[c] != 0 sends its points down the tree.
+  int nx_ = 0, ny_ = 0;
+  double scale_x_ = 0.0, scale_y_ = 0.0;
+  std::vector<double> xs_, ys_;
+  std::vector<std::uint32_t> grid_start_;
+  std::vector<std::int32_t> grid_regions_;
+  std::vector<std::uint8_t> grid_tree_;
   Stats stats_;
 };
 
