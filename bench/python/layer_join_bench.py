@@ -43,6 +43,7 @@ import platform
 import pwd
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -327,6 +328,8 @@ def main():
     if "boroughs" in wanted:
         layers["boroughs"] = (gis_layers.boroughs(), "BoroCode")
 
+    # A run stopped with SIGTERM still stops its server (the finally below).
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     server = None if args.no_postgis else Postgis(args.work)
     try:
         for name, (path, id_field) in layers.items():
