@@ -168,16 +168,10 @@ Status mesh_clip_scene(const Context& context) {
     if (Status s = io::write_mesh(cut, context.dir / name); !s) return s;
     record(name);
   }
-  std::vector<Segment2> edges;
-  for (const TriangleIndices& t : cut.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 a = cut.vertices[t[k]], b = cut.vertices[t[(k + 1) % 3]];
-      edges.push_back({{a.x + 0.35 * a.y, a.z + 0.25 * a.y}, {b.x + 0.35 * b.y, b.z + 0.25 * b.y}});
-    }
-  }
-  io::SvgCanvas canvas({{-2.2, -1.5}, {3.6, 1.5}}, 800);
-  canvas.title("contain clip --mesh --cap: torus with z <= 0.25 and x >= -1 (oblique view)");
-  canvas.segments(edges, {.stroke = "#1f77b4", .stroke_width = 0.4});
+  const io::View3 view{.azimuth_deg = -70.0, .elevation_deg = 30.0};
+  io::SvgCanvas canvas(io::projected_bounds(cut.vertices, view), 800);
+  canvas.title("contain clip --mesh --cap: torus with z <= 0.25 and x >= -1");
+  canvas.mesh(cut, view);
   return save(context, "clip-mesh.svg", canvas.str());
 }
 

@@ -30,6 +30,7 @@ import pathlib
 import shutil
 import subprocess
 import sys
+import tempfile
 import zipfile
 from typing import Dict, List, Optional, Tuple
 
@@ -60,8 +61,9 @@ def _gmt_pieces(resolution: str) -> List[Tuple[int, List[Point]]]:
     gmt = shutil.which("gmt")
     if gmt is None:
         raise SystemExit("gmt is missing: install gmt and gmt-gshhg-low (or -high, -full)")
-    text = subprocess.run([gmt, "coast", "-Rd", f"-D{resolution}", "-W", "-M"], check=True,
-                          capture_output=True, text=True).stdout
+    with tempfile.TemporaryDirectory() as scratch:  # GMT leaves gmt.history in its folder
+        text = subprocess.run([gmt, "coast", "-Rd", f"-D{resolution}", "-W", "-M"], check=True,
+                              capture_output=True, text=True, cwd=scratch).stdout
     pieces: List[Tuple[int, List[Point]]] = []
     for line in text.splitlines():
         if line.startswith(">"):

@@ -27,6 +27,7 @@ per machine with one thread).
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import threading
 from collections import OrderedDict
@@ -40,14 +41,22 @@ import contain
 __all__ = ["Shape", "locate", "locate_dataframe", "index_builds", "clear_cache", "LayerSource", "join_layer"]
 
 _REGION_SUFFIXES = (".wkt", ".geojson", ".json")
-_WKT_PREFIXES = ("POLYGON", "MULTIPOLYGON", "SRID=")
+_MESH_SUFFIXES = (".obj", ".off", ".stl", ".ply")
+_CSG_KEYS = ("union", "intersection", "difference", "complement", "sphere", "box", "halfspace",
+             "convex", "implicit", "mesh")
+
+
+def _is_path_text(text: str) -> bool:
+    """A str names a file when it ends in a mesh or region extension and is no WKT or JSON."""
+    suffix = os.path.splitext(text)[1].lower()
+    return suffix in _REGION_SUFFIXES + _MESH_SUFFIXES and "(" not in text and "{" not in text
 
 
 @dataclass(frozen=True)
 class Shape:
     """A mesh or region as it travels to the workers: a file path or bytes, never an index.
 
-    kind: 'mesh' (3D points) or 'region' (2D points).
+    kind: 'mesh' or 'csg' (3D points) or 'region' (2D points).
     key: what the worker cache is keyed by: 'path:<absolute path>:<size>:<mtime ns>' for a
         file (a changed file gets a new key), 'sha256:<hex>' for bytes.
     path / data: exactly one is set. format: the mesh format of `data` ('ply', 'obj', 'off',
@@ -90,31 +99,67 @@ class Shape:
         return Shape(kind=kind, key=key, data=data, format=format, fill=fill)
 
     @staticmethod
+    def csg(tree: Any) -> "Shape":
+        """A CSG solid in the JSON form of `contain inside --csg`: a dict or JSON text (sent as
+        bytes), or a .json file path (each worker reads it; mesh leaves relative to it).
+
+        A tree built with contain.Csg helpers cannot travel (it may hold Python functions):
+        give its JSON form. Each worker prepares one contain.CsgSolid.
+        """
+        if isinstance(tree, os.PathLike) or (isinstance(tree, str) and not tree.lstrip().startswith("{")):
+            text = os.path.abspath(os.fspath(tree))
+            try:
+                stat = os.stat(text)
+                key = f"csg:path:{text}:{stat.st_size}:{stat.st_mtime_ns}"
+            except OSError:
+                key = f"csg:path:{text}"
+            return Shape(kind="csg", key=key, path=text, format="csg")
+        data = (tree if isinstance(tree, str) else json.dumps(tree)).encode()
+        contain.Csg.from_json(data.decode())  # refuse a malformed tree here, not on the workers
+        return Shape(kind="csg", key="csg:sha256:" + hashlib.sha256(data).hexdigest(), data=data,
+                     format="csg")
+
+    @staticmethod
     def of(shape: Any, *, fill: str = "even_odd") -> "Shape":
-        """A Shape from a Shape, a path, WKT text, a contain.Mesh or a contain.Region."""
+        """A Shape from anything contain takes as a mesh or a region.
+
+        A path (a str with a mesh or region file extension, or an os.PathLike such as
+        pathlib.Path) travels as the path. Anything else goes through the module's one rule
+        (contain.as_mesh / contain.as_region) and travels as bytes: a mesh (contain.Mesh,
+        (vertices, faces), trimesh or Open3D meshes) as binary PLY, bit for bit; a region
+        (contain.Region, WKT / GeoJSON / WKB text or bytes, shapely geometries, GeoPandas
+        objects, rings) as WKT with shortest round-trip decimals, also exact. A dict of the CSG
+        JSON form ({"difference": [...]}, ...) travels as its JSON (see Shape.csg).
+        """
         if isinstance(shape, Shape):
             return shape
-        if isinstance(shape, contain.Mesh):
-            # Binary PLY stores the doubles: the workers get the mesh bit for bit.
-            return Shape.from_bytes(contain.format_mesh(shape, "ply"), "ply")
-        if isinstance(shape, contain.Region):
-            return Shape.from_bytes(shape.to_wkt().encode(), "wkt", fill=fill)
-        if isinstance(shape, str) and shape.lstrip().upper().startswith(_WKT_PREFIXES):
-            return Shape.from_bytes(shape.encode(), "wkt", fill=fill)
-        if isinstance(shape, (str, os.PathLike)):
+        if isinstance(shape, dict) and len(shape) == 1 and next(iter(shape)) in _CSG_KEYS:
+            return Shape.csg(shape)
+        if isinstance(shape, os.PathLike) or (isinstance(shape, str) and _is_path_text(shape)):
             return Shape.from_path(shape, fill=fill)
-        raise TypeError(
-            "shape must be a path, WKT text, a contain.Mesh, a contain.Region or a "
-            f"contain.dask.Shape, got {type(shape).__name__}"
-        )
+        if contain.is_mesh_like(shape):
+            # Binary PLY stores the doubles: the workers get the mesh bit for bit.
+            return Shape.from_bytes(contain.format_mesh(contain.as_mesh(shape), "ply"), "ply")
+        try:
+            region = contain.as_region(shape)
+        except TypeError:
+            raise TypeError(
+                "shape must be a path, a mesh (contain.Mesh, (vertices, faces), trimesh, Open3D) "
+                "or a region (contain.Region, WKT, GeoJSON, WKB, shapely, GeoPandas, rings), "
+                "or a CSG tree's JSON form (a dict, or Shape.csg), "
+                f"got {type(shape).__name__}"
+            ) from None
+        return Shape.from_bytes(region.to_wkt().encode(), "wkt", fill=fill)
 
     @property
     def dimension(self) -> int:
-        """3 for a mesh, 2 for a region."""
-        return 3 if self.kind == "mesh" else 2
+        """3 for a mesh or a CSG solid, 2 for a region."""
+        return 2 if self.kind == "region" else 3
 
     def build(self) -> Any:
-        """The prepared index (MeshIndex or PolygonIndex): what each worker builds once."""
+        """The prepared object (MeshIndex, PolygonIndex or CsgSolid): built once per worker."""
+        if self.kind == "csg":
+            return contain.CsgSolid(self.path if self.path is not None else self.data.decode())
         if self.kind == "mesh":
             if self.path is not None:
                 return contain.MeshIndex.from_file(self.path)
@@ -196,9 +241,11 @@ def locate(
 
     points: a dask.array (or anything dask.array.asarray takes) of shape (N, 3) for a mesh or
         (N, 2) for a region, chunked along the rows (column chunks are merged).
-    shape: a mesh or region file path, WKT text, a contain.Mesh, a contain.Region or a Shape.
-        Only the path or the bytes are sent to the workers; each worker process builds the
-        index once (see the module documentation).
+    shape: a mesh or region file path (str or pathlib.Path), anything contain takes as a mesh
+        or a region (contain.Mesh, (vertices, faces), trimesh, shapely, GeoPandas, WKT, ...:
+        see Shape.of), a CSG tree's JSON form (a dict; Shape.csg for text and files) or a
+        Shape. Only the path or the bytes are sent to the workers; each worker process builds
+        the index once (see the module documentation).
     fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
     boundary: None gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
         'outside' or 'raise' give booleans under that boundary policy.

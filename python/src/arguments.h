@@ -12,15 +12,21 @@ namespace contain::python {
 struct ArrayLike {
   pybind11::object object;
 };
-/// A contain.Region, a WKT string or a sequence of (K, 2) rings.
+/// Anything the region rule takes (shapes.h, to_region): a Region, WKT/GeoJSON/WKB, a path,
+/// shapely and GeoPandas objects, rings.
 struct RegionLike {
+  pybind11::object object;
+};
+/// Anything the mesh rule takes (shapes.h, to_mesh): a Mesh, a path, (vertices, faces),
+/// trimesh and Open3D meshes.
+struct MeshLike {
   pybind11::object object;
 };
 /// None, 12 numbers, a (3, 4) or a (4, 4) matrix.
 struct TransformLike {
   pybind11::object object;
 };
-/// A shape of the bounding functions or of collide: a Mesh, a Region or WKT, or points/rings.
+/// A shape of the bounding functions or of collide: mesh-like, region-like, or points.
 struct ShapeLike {
   pybind11::object object;
 };
@@ -46,8 +52,10 @@ struct type_caster<contain::python::ArrayLike>
     : any_object_caster<contain::python::ArrayLike, const_name("numpy.typing.ArrayLike")> {};
 template <>
 struct type_caster<contain::python::RegionLike>
-    : any_object_caster<contain::python::RegionLike,
-                        const_name("contain.Region | str | Sequence[numpy.typing.ArrayLike]")> {};
+    : any_object_caster<contain::python::RegionLike, const_name("contain.RegionLike")> {};
+template <>
+struct type_caster<contain::python::MeshLike>
+    : any_object_caster<contain::python::MeshLike, const_name("contain.MeshLike")> {};
 template <>
 struct type_caster<contain::python::TransformLike>
     : any_object_caster<contain::python::TransformLike,
@@ -56,6 +64,6 @@ template <>
 struct type_caster<contain::python::ShapeLike>
     : any_object_caster<contain::python::ShapeLike,
                         const_name(
-                            "contain.Mesh | contain.Region | str | numpy.typing.ArrayLike")> {};
+                            "contain.MeshLike | contain.RegionLike | numpy.typing.ArrayLike")> {};
 
 }  // namespace pybind11::detail

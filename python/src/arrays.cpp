@@ -100,6 +100,60 @@ Doubles as_vector(const py::handle& object, py::ssize_t count, const char* name)
   return to_doubles(array);
 }
 
+Items as_items(const py::handle& object, py::ssize_t rows, py::ssize_t columns, const char* name) {
+  py::array array = to_array(object, name);
+  const std::string flat = "(N, " + std::to_string(rows * columns) + ")";
+  const std::string item = rows == 1
+                               ? "(" + std::to_string(columns) + ",)"
+                               : "(" + std::to_string(rows) + ", " + std::to_string(columns) + ")";
+  require_real(array, name, "(N, " + std::to_string(rows) + ", " + std::to_string(columns) + ")");
+  Items items;
+  const bool one_point = rows == 1 && array.ndim() == 1 && array.shape(0) == columns;
+  const bool one_item =
+      rows > 1 && array.ndim() == 2 && array.shape(0) == rows && array.shape(1) == columns;
+  if (one_point || one_item) {
+    items.single = true;
+    array = array.attr("reshape")(1, rows * columns);
+  } else if (array.ndim() == 3 && array.shape(1) == rows && array.shape(2) == columns) {
+    array = array.attr("reshape")(array.shape(0), rows * columns);
+  } else if (!(array.ndim() == 2 && array.shape(1) == rows * columns) &&
+             !(array.ndim() == 1 && array.shape(0) == 0)) {
+    throw py::value_error(std::string(name) + " must have shape (N, " + std::to_string(rows) +
+                          ", " + std::to_string(columns) + "), " + flat + " or " + item + ", got " +
+                          shape_text(array));
+  }
+  items.values = as_matrix(array, rows * columns, name);
+  require_finite(items.values, name, 0);
+  return items;
+}
+
+std::size_t paired_count(const Items& a, const Items& b, const char* what) {
+  if (a.size() == 1 && a.single) return b.size();
+  if (b.size() == 1 && b.single) return a.size();
+  if (a.size() != b.size()) {
+    throw py::value_error(std::string(what) + ": the two batches differ in length (" +
+                          std::to_string(a.size()) + " and " + std::to_string(b.size()) +
+                          "); give equal lengths, or one single item to pair with all");
+  }
+  return a.size();
+}
+
+py::object to_bools(std::vector<std::uint8_t>&& flags, bool single) {
+  if (single) return py::bool_(!flags.empty() && flags.front() != 0);
+  py::array_t<bool> out(static_cast<py::ssize_t>(flags.size()));
+  bool* data = out.mutable_data();
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    data[i] = flags[i] != 0;
+  return out;
+}
+
+py::object to_int8s(std::vector<std::int8_t>&& values, bool single) {
+  if (single) return py::int_(values.empty() ? 0 : values.front());
+  auto* owned = new std::vector<std::int8_t>(std::move(values));
+  py::capsule base(owned, [](void* p) { delete static_cast<std::vector<std::int8_t>*>(p); });
+  return py::array_t<std::int8_t>({static_cast<py::ssize_t>(owned->size())}, owned->data(), base);
+}
+
 bool reads_in_place(const py::handle& object) {
   const py::array array = py::array::ensure(object);
   if (!array) {

@@ -38,6 +38,35 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// `object` as a float64 vector of exactly `count` values (count == -1: any length).
 [[nodiscard]] Doubles as_vector(const py::handle& object, py::ssize_t count, const char* name);
 
+/// A batch of small fixed-shape items (triangles, segments, boxes), flat: row i of `values` is
+/// item i's `rows * columns` numbers in row-major order. `single` is true when the caller gave
+/// one item (shape (rows, columns)), so that answers can come back as a scalar.
+struct Items {
+  Doubles values;
+  bool single = false;
+  [[nodiscard]] std::size_t size() const { return static_cast<std::size_t>(values.shape(0)); }
+  [[nodiscard]] const double* item(std::size_t i) const {
+    return values.data() + i * static_cast<std::size_t>(values.shape(1));
+  }
+};
+
+/// `object` as items of shape (rows, columns): an array of shape (N, rows, columns), (N, rows *
+/// columns) or one item (rows, columns) (for rows == 1: (N, columns) or one (columns,)). Real
+/// dtypes only, checked finite (ContainError naming
+/// the item otherwise); ValueError naming the accepted shapes.
+[[nodiscard]] Items as_items(const py::handle& object, py::ssize_t rows, py::ssize_t columns,
+                             const char* name);
+
+/// The item count of a pair of batches, one of which may be a single item that pairs with every
+/// item of the other; ValueError when both are batches of different lengths.
+[[nodiscard]] std::size_t paired_count(const Items& a, const Items& b, const char* what);
+
+/// A new bool array (N,) or, for single items, a Python bool.
+[[nodiscard]] py::object to_bools(std::vector<std::uint8_t>&& flags, bool single);
+
+/// A new int8 array (N,) of signs or locations, or, for single items, a Python int.
+[[nodiscard]] py::object to_int8s(std::vector<std::int8_t>&& values, bool single);
+
 /// True when `as_matrix` would read `object` in place (for the tests of the zero-copy claim).
 [[nodiscard]] bool reads_in_place(const py::handle& object);
 

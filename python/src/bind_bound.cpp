@@ -24,6 +24,12 @@ bound::SphereMethod parse_method(const std::string& method) {
   throw py::value_error("method must be 'exact' or 'ritter', got '" + method + "'");
 }
 
+bound::MeshVertices parse_vertices(const std::string& vertices) {
+  if (vertices == "referenced") return bound::MeshVertices::referenced;
+  if (vertices == "all") return bound::MeshVertices::all;
+  throw py::value_error("vertices must be 'referenced' or 'all', got '" + vertices + "'");
+}
+
 py::tuple ball(Vec3 center, double radius) {
   return py::make_tuple(py::array_t<double>(3, &center.x), radius);
 }
@@ -37,14 +43,15 @@ py::tuple disc(Vec2 center, double radius) {
 void bind_bound(py::module_& m) {
   m.def(
       "aabb",
-      [](const ShapeLike& argument) {
+      [](const ShapeLike& argument, const std::string& vertices) {
         const py::handle shape = argument.object;
-        if (py::isinstance<Mesh>(shape)) {
-          const Box3 box = bound::aabb(shape.cast<const Mesh&>());
+        const bound::MeshVertices which = parse_vertices(vertices);
+        if (is_mesh_like(shape)) {
+          const Box3 box = bound::aabb(*to_mesh(shape, "shape"), {.vertices = which});
           return py::make_tuple(py::array_t<double>(3, &box.min.x),
                                 py::array_t<double>(3, &box.max.x));
         }
-        if (py::isinstance<MultiPolygon>(shape) || py::isinstance<py::str>(shape)) {
+        if (is_region_like(shape)) {
           const Box2 box = bound::aabb(to_region(shape, "shape"));
           return py::make_tuple(py::array_t<double>(2, &box.min.x),
                                 py::array_t<double>(2, &box.max.x));
@@ -62,18 +69,22 @@ void bind_bound(py::module_& m) {
         return py::make_tuple(py::array_t<double>(3, &box.min.x),
                               py::array_t<double>(3, &box.max.x));
       },
-      "shape"_a, R"doc(
+      "shape"_a, py::kw_only(), "vertices"_a = "referenced", R"doc(
 The smallest closed axis-aligned box, exactly (comparisons only), as (min, max) arrays.
-shape: (N, 3) or (N, 2) points, a Mesh (its referenced vertices) or a Region / WKT string.
+vertices (meshes): 'referenced' (those a triangle uses: the surface; the CLI's answer) or
+'all' (the whole vertex array).
+shape: (N, 3) or (N, 2) points, anything mesh-like (its referenced vertices) or region-like.
 Empty input gives min = +inf, max = -inf.
 )doc");
   m.def(
       "bounding_sphere",
-      [](const ShapeLike& argument, const std::string& method) {
+      [](const ShapeLike& argument, const std::string& method, const std::string& vertices) {
         const py::handle shape = argument.object;
-        const bound::SphereOptions options{.method = parse_method(method)};
-        if (py::isinstance<Mesh>(shape)) {
-          const Mesh& mesh = shape.cast<const Mesh&>();
+        const bound::SphereOptions options{.method = parse_method(method),
+                                           .vertices = parse_vertices(vertices)};
+        if (is_mesh_like(shape)) {
+          const MeshRef ref = to_mesh(shape, "shape");
+          const Mesh& mesh = *ref;
           Result<Sphere> sphere = [&] {
             py::gil_scoped_release release;
             return bound::bounding_sphere(mesh, options);
@@ -90,18 +101,19 @@ Empty input gives min = +inf, max = -inf.
         const Sphere s = take(std::move(sphere));
         return ball(s.center, s.radius);
       },
-      "shape"_a, py::kw_only(), "method"_a = "exact", R"doc(
+      "shape"_a, py::kw_only(), "method"_a = "exact", "vertices"_a = "referenced", R"doc(
 A closed ball holding every point, as (center, radius): center a float64 array of 3.
-shape: (N, 3) points or a Mesh (its referenced vertices). method: 'exact' (the minimal ball,
+shape: (N, 3) points or anything mesh-like (its referenced vertices). method: 'exact' (the minimal ball,
 Welzl with move-to-front; radius within ~1e-14 relative) or 'ritter' (fast, larger). Every
 point is inside the returned ball, checked exactly. No points or NaN/Inf raise ContainError.
+vertices (meshes): 'referenced' (default) or 'all', as in aabb.
 )doc");
   m.def(
       "bounding_circle",
       [](const ShapeLike& argument, const std::string& method) {
         const py::handle shape = argument.object;
         const bound::CircleOptions options{.method = parse_method(method)};
-        if (py::isinstance<MultiPolygon>(shape) || py::isinstance<py::str>(shape)) {
+        if (is_region_like(shape)) {
           const Circle c = take(bound::bounding_circle(to_region(shape, "shape"), options));
           return disc(c.center, c.radius);
         }
@@ -111,7 +123,7 @@ point is inside the returned ball, checked exactly. No points or NaN/Inf raise C
       },
       "shape"_a, py::kw_only(), "method"_a = "exact", R"doc(
 A closed disc holding every point, as (center, radius): the 2D bounding_sphere.
-shape: (N, 2) points or a Region / WKT string (its ring points).
+shape: (N, 2) points or anything region-like (its ring points).
 )doc");
 }
 

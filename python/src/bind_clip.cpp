@@ -2,16 +2,23 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/clip/box_halfspaces.h"
 #include "contain/clip/clip_segments.h"
+#include "contain/clip/cohen_sutherland.h"
+#include "contain/clip/cyrus_beck.h"
+#include "contain/clip/liang_barsky.h"
 #include "contain/clip/polygon_boolean.h"
+#include "contain/core/parallel.h"
 #include "contain/io/wkt.h"
 #include "errors.h"
 #include "shapes.h"
@@ -78,88 +85,90 @@ py::tuple run(const Doubles& array, int threads, Clip&& clip) {
 
 static_assert(sizeof(Segment3) == 6 * sizeof(double) && sizeof(Segment2) == 4 * sizeof(double));
 
-py::tuple clip3(const Doubles& array, const py::handle& box, const py::handle& halfspace,
-                const py::handle& ball, const py::handle& convex, int threads) {
-  const std::string region = chosen_region(box, halfspace, ball, convex);
-  if (region == "box") {
-    const py::sequence pair = box.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("box must be (min, max)");
-    const Doubles lo = as_vector(pair[0], 3, "box min"), hi = as_vector(pair[1], 3, "box max");
-    const Box3 b{{lo.at(0), lo.at(1), lo.at(2)}, {hi.at(0), hi.at(1), hi.at(2)}};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, b, o, k, opt);
+// Clips every segment with `clip(segment) -> ClippedSegment`, without the GIL, in parallel.
+template <class Segment, class One>
+py::tuple run_each(const Doubles& array, int threads, One&& one) {
+  return run<Segment>(array, threads, [&](auto in, auto out, auto kept, auto options) {
+    parallel_for(in.size(), options, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto r = one(in[i]);
+        kept[i] = r.kept ? 1 : 0;
+        if (r.kept) out[i] = r.segment;
+      }
     });
-  }
-  if (region == "halfspace") {
-    const Doubles c = as_vector(halfspace, 4, "halfspace");
-    const Plane p{c.at(0), c.at(1), c.at(2), c.at(3)};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, p, o, k, opt);
-    });
-  }
-  if (region == "ball") {
-    const py::sequence pair = ball.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("ball must be (center, radius)");
-    const Doubles c = as_vector(pair[0], 3, "ball center");
-    const Sphere sphere{{c.at(0), c.at(1), c.at(2)}, pair[1].cast<double>()};
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, sphere, o, k, opt);
-    });
-  }
-  std::vector<Plane> planes;
-  if (py::isinstance<Mesh>(convex)) {
-    const auto polyhedron = take(ConvexPolyhedron::from_mesh(convex.cast<const Mesh&>()));
-    return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, polyhedron, o, k, opt);
-    });
-  }
-  const Doubles rows = as_matrix(convex, 4, "convex planes");
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    const double* r = rows.data() + 4 * i;
-    planes.push_back({r[0], r[1], r[2], r[3]});
-  }
-  const auto polyhedron = take(ConvexPolyhedron::from_planes(std::move(planes)));
-  return run<Segment3>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-    clip::clip_segments(s, polyhedron, o, k, opt);
   });
 }
 
-py::tuple clip2(const Doubles& array, const py::handle& box, const py::handle& halfspace,
-                const py::handle& ball, const py::handle& convex, int threads) {
+// The segments of dimension D (Segment2 or Segment3) against the one region given.
+template <int D>
+py::tuple clip_dim(const Doubles& array, const py::handle& box, const py::handle& halfspace,
+                   const py::handle& ball, const py::handle& convex, const std::string& algorithm,
+                   int threads) {
+  using Segment = std::conditional_t<D == 2, Segment2, Segment3>;
   const std::string region = chosen_region(box, halfspace, ball, convex);
-  if (region == "box") {
-    const py::sequence pair = box.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("box must be (min, max)");
-    const Doubles lo = as_vector(pair[0], 2, "box min"), hi = as_vector(pair[1], 2, "box max");
-    const Box2 b{{lo.at(0), lo.at(1)}, {hi.at(0), hi.at(1)}};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, b, o, k, opt);
+  if (algorithm != "auto" && region != "box" && algorithm != "cyrus-beck") {
+    throw py::value_error("algorithm='" + algorithm + "' clips by a box only");
+  }
+  const auto batch = [&](const auto& shape) {
+    return run<Segment>(array, threads, [&](auto s, auto o, auto k, auto opt) {
+      clip::clip_segments(s, shape, o, k, opt);
     });
+  };
+  if (region == "box") {
+    const auto b = [&] {
+      if constexpr (D == 2) {
+        return to_box2(box, "box");
+      } else {
+        return to_box3(box, "box");
+      }
+    }();
+    if (algorithm == "auto") return batch(b);
+    if (algorithm == "cohen-sutherland") {
+      return run_each<Segment>(array, threads,
+                               [&](const Segment& s) { return clip::cohen_sutherland(s, b); });
+    }
+    if (algorithm == "liang-barsky") {
+      return run_each<Segment>(array, threads,
+                               [&](const Segment& s) { return clip::liang_barsky(s, b); });
+    }
+    const auto planes = clip::box_halfspaces(b);
+    return run_each<Segment>(array, threads,
+                             [&](const Segment& s) { return clip::cyrus_beck(s, planes); });
   }
   if (region == "halfspace") {
-    const Doubles c = as_vector(halfspace, 3, "halfspace");
-    const HalfPlane p{c.at(0), c.at(1), c.at(2)};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, p, o, k, opt);
-    });
+    const auto planes = [&] {
+      if constexpr (D == 2) {
+        return to_half_planes(halfspace, "halfspace");
+      } else {
+        return to_planes(halfspace, "halfspace");
+      }
+    }();
+    if (planes.size() == 1 && algorithm == "auto") return batch(planes.front());
+    return run_each<Segment>(array, threads,
+                             [&](const Segment& s) { return clip::cyrus_beck(s, planes); });
   }
   if (region == "ball") {
-    const py::sequence pair = ball.cast<py::sequence>();
-    if (pair.size() != 2) throw py::value_error("ball must be (center, radius)");
-    const Doubles c = as_vector(pair[0], 2, "ball center");
-    const Circle circle{{c.at(0), c.at(1)}, pair[1].cast<double>()};
-    return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-      clip::clip_segments(s, circle, o, k, opt);
-    });
+    if (!py::isinstance<py::sequence>(ball) || py::len(ball) != 2) {
+      throw py::type_error("ball must be (center, radius)");
+    }
+    const auto pair = py::reinterpret_borrow<py::sequence>(ball);
+    const Doubles c = as_vector(pair[0], D, "ball center");
+    const double radius = pair[1].cast<double>();
+    require_finite(c, "ball center", 1);
+    if (!std::isfinite(radius) || radius < 0) {
+      fail(ErrorKind::invalid_value, "ball radius must be finite and >= 0");
+    }
+    if constexpr (D == 2) {
+      return batch(Circle{{c.at(0), c.at(1)}, radius});
+    } else {
+      return batch(Sphere{{c.at(0), c.at(1), c.at(2)}, radius});
+    }
   }
-  const Doubles ring_points = as_matrix(convex, 2, "convex ring");
-  require_finite(ring_points, "convex ring", 1);
-  const auto span = as_vec2(ring_points);
-  const Ring ring(span.begin(), span.end());
-  if (ring.size() < 3) fail(ErrorKind::degenerate, "convex ring needs at least 3 points");
-  return run<Segment2>(array, threads, [&](auto s, auto o, auto k, auto opt) {
-    clip::clip_segments(s, ring, o, k, opt);
-  });
+  if constexpr (D == 2) {
+    return batch(to_convex_ring(convex, "convex ring"));
+  } else {
+    return batch(to_convex_polyhedron(convex, "convex"));
+  }
 }
 
 }  // namespace
@@ -168,7 +177,15 @@ void bind_clip(py::module_& m) {
   m.def(
       "clip_segments",
       [](const ArrayLike& segments, const py::object& box, const py::object& halfspace,
-         const py::object& ball, const py::object& convex, int threads) {
+         const py::object& ball, const py::object& convex, const std::string& algorithm,
+         int threads) {
+        if (algorithm != "auto" && algorithm != "cohen-sutherland" && algorithm != "liang-barsky" &&
+            algorithm != "cyrus-beck") {
+          throw py::value_error(
+              "algorithm must be 'auto', 'cohen-sutherland', 'liang-barsky' or 'cyrus-beck', "
+              "got '" +
+              algorithm + "'");
+        }
         py::array array = py::array::ensure(segments.object);
         if (!array) {
           PyErr_Clear();
@@ -181,21 +198,26 @@ void bind_clip(py::module_& m) {
         const bool three = array.ndim() == 2 && array.shape(1) == 6;
         const Doubles rows = as_matrix(array, three ? 6 : 4, "segments (N, 4) for 2D or");
         require_finite(rows, "segments", threads);
-        return three ? clip3(rows, box, halfspace, ball, convex, threads)
-                     : clip2(rows, box, halfspace, ball, convex, threads);
+        return three ? clip_dim<3>(rows, box, halfspace, ball, convex, algorithm, threads)
+                     : clip_dim<2>(rows, box, halfspace, ball, convex, algorithm, threads);
       },
       "segments"_a, py::kw_only(), "box"_a = py::none(), "halfspace"_a = py::none(),
-      "ball"_a = py::none(), "convex"_a = py::none(), "threads"_a = 0, R"doc(
+      "ball"_a = py::none(), "convex"_a = py::none(), "algorithm"_a = "auto", "threads"_a = 0,
+      R"doc(
 Clips every segment to a closed region; returns (clipped, kept).
 
 segments: (N, 4) rows x0 y0 x1 y1 (2D) or (N, 6) rows x0 y0 z0 x1 y1 z1 (3D), or (N, 2, d).
 Exactly one region:
   box=(min, max)            an axis-aligned box (Liang-Barsky, exact decisions)
-  halfspace=(a, b, c[, d])  a x + b y [+ c z] + d >= 0 (3 numbers in 2D, 4 in 3D)
+  halfspace=(a, b, c[, d])  a x + b y [+ c z] + d >= 0 (3 numbers in 2D, 4 in 3D), or an
+                            (M, 3) / (M, 4) array: the intersection (Cyrus-Beck)
   ball=(center, radius)     a closed disc / ball
-  convex=...                2D: a convex ring (K, 2), counter-clockwise;
-                            3D: (M, 4) planes a b c d (inside where >= 0) or a convex Mesh
-                            (Cyrus-Beck).
+  convex=...                2D: a convex ring (K, 2), either direction;
+                            3D: (M, 4) planes a b c d (inside where >= 0), a convex mesh
+                            (anything mesh-like) or a ConvexPolyhedron (Cyrus-Beck).
+algorithm (box only): 'auto' (a branch-free batch kernel with an exact certificate),
+'cohen-sutherland', 'liang-barsky' or 'cyrus-beck' (the section's algorithms one segment at a
+time; the same decisions, points to rounding), as the CLI's --algorithm.
 clipped: an array like segments (N, 2 d), the part left of each, in the input's direction
 (zero-length when it only touches; NaN rows where nothing is left); kept: (N,) bool.
 Whether a segment misses, touches or crosses is decided exactly. Runs on `threads` threads

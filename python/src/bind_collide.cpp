@@ -86,11 +86,12 @@ Example:
     >>> pair.collide(pose).intersect
     >>> hits = pair.collide_many(poses)   # (N, 3, 4) -> (N,) bool, on every core
 )doc")
-      .def(py::init([](const Mesh& a, const Mesh& b, const TransformLike& transform_a) {
+      .def(py::init([](const MeshLike& a, const MeshLike& b, const TransformLike& transform_a) {
+             const MeshRef ma = to_mesh(a.object, "a"), mb = to_mesh(b.object, "b");
              const collide::MeshPairOptions options{
                  .transform_a = to_transform(transform_a.object, "transform_a")};
              py::gil_scoped_release release;
-             return collide::MeshPair(a, b, options);
+             return collide::MeshPair(*ma, *mb, options);
            }),
            "a"_a, "b"_a, py::kw_only(), "transform_a"_a = py::none(),
            "Prepares A (placed once by transform_a) and B.")
@@ -131,15 +132,15 @@ Runs on `threads` threads (0: every core) without the GIL.
       [](const ShapeLike& shape_a, const ShapeLike& shape_b, const TransformLike& transform_a,
          const TransformLike& transform_b, const std::string& fill) {
         const py::handle a = shape_a.object, b = shape_b.object;
-        if (py::isinstance<Mesh>(a) && py::isinstance<Mesh>(b)) {
-          const Mesh& ma = a.cast<const Mesh&>();
-          const Mesh& mb = b.cast<const Mesh&>();
+        const bool mesh_a = is_mesh_like(a), mesh_b = is_mesh_like(b);
+        if (mesh_a && mesh_b) {
+          const MeshRef ma = to_mesh(a, "a"), mb = to_mesh(b, "b");
           const Transform ta = to_transform(transform_a.object, "transform_a");
           const Transform tb = to_transform(transform_b.object, "transform_b");
           py::gil_scoped_release release;
-          return collide::mesh_mesh(ma, mb, ta, tb);
+          return collide::mesh_mesh(*ma, *mb, ta, tb);
         }
-        if (py::isinstance<Mesh>(a) || py::isinstance<Mesh>(b)) {
+        if (mesh_a || mesh_b) {
           throw py::type_error("collide: a and b must both be meshes or both be regions");
         }
         if (!transform_a.object.is_none() || !transform_b.object.is_none()) {
@@ -155,9 +156,11 @@ Runs on `threads` threads (0: every core) without the GIL.
       "fill"_a = "even_odd", R"doc(
 Do two shapes meet? One query, a Contact.
 
-Meshes (contain.Mesh): closed ones are solids (touching and nesting count), open ones surfaces;
-each placed by an optional transform (see MeshPair; use MeshPair for many poses).
-Regions (Region, WKT or rings): the closed filled regions under `fill` share a point.
+Meshes (anything mesh-like: contain.Mesh, trimesh, Open3D, (vertices, faces), a mesh path):
+closed ones are solids (touching and nesting count), open ones surfaces; each placed by an
+optional transform (see MeshPair; use MeshPair for many poses).
+Regions (anything region-like: shapely, GeoJSON, WKT, WKB, rings): the closed filled regions
+under `fill` share a point.
 )doc");
 }
 

@@ -14,6 +14,7 @@
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/point_in_mesh.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/inside/point_in_polygon_angle_sum.h"
 #include "contain/inside/polygon_index.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/region_io.h"
@@ -124,7 +125,8 @@ ray (docs/robustness.md). A mesh with border or non-manifold edges is answered b
 generalized winding number (inside where >= 0.5; floating point), still with exact 'boundary';
 `regime` and `warning` say which applies and why.
 
-Build: MeshIndex(mesh) or MeshIndex(vertices, faces), or MeshIndex.from_file(path); about
+Build: MeshIndex(mesh) for anything mesh-like (a Mesh, a path, a trimesh or Open3D mesh,
+(vertices, faces)), MeshIndex(vertices, faces), or MeshIndex.from_file(path); about
 O(n log n) for n triangles. Query: locate(points) -> int8 (-1/0/1), contains(points,
 boundary=...) -> bool, locate_point(p) -> Location. Not picklable: to use it on Dask workers
 ship the mesh (see contain.dask).
@@ -134,23 +136,22 @@ Example:
     >>> answers = index.locate(points)            # (N, 3) float64 -> (N,) int8
     >>> inside = index.contains(points, boundary="inside")
 )doc")
-      .def(py::init([](const Mesh& mesh, double cells_per_triangle, std::size_t min_cells,
+      .def(py::init([](const MeshLike& mesh, double cells_per_triangle, std::size_t min_cells,
                        std::size_t max_cells, double winding_accuracy) {
+             const MeshRef ref = to_mesh(mesh.object, "mesh");
              const auto options =
                  mesh_options(cells_per_triangle, min_cells, max_cells, winding_accuracy);
              py::gil_scoped_release release;
-             return inside::MeshIndex(mesh, options);
+             return inside::MeshIndex(*ref, options);
            }),
            "mesh"_a, py::kw_only(), "cells_per_triangle"_a = 16.0, "min_cells"_a = 4096,
            "max_cells"_a = std::size_t{1} << 24, "winding_accuracy"_a = 3.0,
-           "Prepares a contain.Mesh. Grid options: about cells_per_triangle cells per triangle,\n"
-           "between min_cells and max_cells; winding_accuracy for open meshes.")
+           "Prepares any mesh-like object (contain.as_mesh: a Mesh, a path, a trimesh or Open3D\n"
+           "mesh, (vertices, faces)). Grid options: about cells_per_triangle cells per\n"
+           "triangle, between min_cells and max_cells; winding_accuracy for open meshes.")
       .def(py::init([](const ArrayLike& vertices, const ArrayLike& faces, double cells_per_triangle,
                        std::size_t min_cells, std::size_t max_cells, double winding_accuracy) {
-             const Doubles v = as_matrix(vertices.object, 3, "vertices");
-             const auto points = as_vec3(v);
-             Mesh mesh = take(Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()),
-                                                as_triangles(faces.object)));
+             const Mesh mesh = mesh_from_arrays(vertices.object, faces.object);
              const auto options =
                  mesh_options(cells_per_triangle, min_cells, max_cells, winding_accuracy);
              py::gil_scoped_release release;
@@ -193,6 +194,9 @@ Example:
           "'closed-exact' (ray parity, every answer exact) or 'winding-number' (open or\n"
           "non-manifold mesh: generalized winding number, boundary still exact).")
       .def_property_readonly(
+          "report", [](const inside::MeshIndex& index) { return index.report(); },
+          "The contain.MeshReport of the mesh (what validate_mesh gives), which chose the regime.")
+      .def_property_readonly(
           "warning", [](const inside::MeshIndex& index) { return index.warning(); },
           "'' for a plain closed 2-manifold; otherwise one line naming the regime and why.")
       .def_property_readonly(
@@ -220,8 +224,9 @@ Same answers as contain.point_in_polygon for every point, exactly, with its tie-
 (half-open ray rule, right-up perturbation, filled-sector boundary rule; docs/robustness.md):
 'boundary' only for points exactly on the boundary of the filled region.
 
-Build: PolygonIndex(region, fill='even_odd') where region is a contain.Region, a WKT string or
-a sequence of (K, 2) rings (closed paths in the direction written). fill: 'even_odd' (OGC
+Build: PolygonIndex(region, fill='even_odd') where region is anything region-like (a Region,
+a shapely geometry or GeoPandas object, WKT/GeoJSON/WKB, a path, or (K, 2) rings: closed paths
+in the direction written; contain.as_region). fill: 'even_odd' (OGC
 meaning for valid polygons), 'nonzero', 'positive' or 'negative'.
 Query: locate(points) -> int8, contains(points, boundary=...) -> bool, locate_point(p).
 
@@ -242,7 +247,7 @@ Example:
            }),
            "region"_a, py::kw_only(), "fill"_a = "even_odd", "cells_per_edge"_a = 4.0,
            "min_cells"_a = 4096, "max_cells"_a = std::size_t{1} << 20,
-           "Prepares a region (Region, WKT string or sequence of rings) under `fill`.")
+           "Prepares a region (anything region-like: contain.as_region) under `fill`.")
       .def_static(
           "from_file",
           [](const std::filesystem::path& path, const std::string& fill) {
@@ -295,19 +300,33 @@ Example:
 
   m.def(
       "point_in_polygon",
-      [](const RegionLike& region, const ArrayLike& point, const std::string& fill) {
+      [](const RegionLike& region, const ArrayLike& point, const std::string& fill,
+         const std::string& method) {
         const MultiPolygon polygons = to_region(region.object, "region");
-        return location_object(
-            inside::point_in_polygon(polygons, point2(point.object), {.fill = parse_fill(fill)}));
+        const Vec2 p = point2(point.object);
+        const inside::PointInPolygonOptions options{.fill = parse_fill(fill)};
+        if (method == "crossing") {
+          return location_object(inside::point_in_polygon(polygons, p, options));
+        }
+        if (method == "angle_sum") {
+          return location_object(
+              inside::point_in_polygon_angle_sum(polygons.all_rings(), p, options));
+        }
+        throw py::value_error("method must be 'crossing' or 'angle_sum', got '" + method + "'");
       },
-      "region"_a, "point"_a, py::kw_only(), "fill"_a = "even_odd", R"doc(
-Where one point (x, y) lies relative to a region (Region, WKT or rings) under `fill`, exactly,
+      "region"_a, "point"_a, py::kw_only(), "fill"_a = "even_odd", "method"_a = "crossing",
+      R"doc(
+Where one point (x, y) lies relative to a region (anything region-like) under `fill`, exactly,
 as a contain.Location. O(n) for n edges; build a PolygonIndex for many points.
+method: 'crossing' (the exact ray crossing count, default) or 'angle_sum' (the section's
+textbook reference: the sum of subtended angles, floating point away from the boundary, exact on
+it; slower).
 )doc");
   m.def(
       "point_in_mesh",
-      [](const Mesh& mesh, const ArrayLike& point) {
-        return location_object(inside::point_in_mesh(mesh, point3(point.object)));
+      [](const MeshLike& mesh, const ArrayLike& point) {
+        return location_object(
+            inside::point_in_mesh(*to_mesh(mesh.object, "mesh"), point3(point.object)));
       },
       "mesh"_a, "point"_a, R"doc(
 Where one point (x, y, z) lies relative to the solid bounded by `mesh`, as a contain.Location:

@@ -11,8 +11,11 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/io/geojson.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/region_io.h"
+#include "contain/io/svg.h"
+#include "contain/io/wkb.h"
 #include "contain/io/wkt.h"
 #include "errors.h"
 #include "shapes.h"
@@ -21,6 +24,9 @@ namespace contain::python {
 namespace {
 
 using namespace pybind11::literals;
+
+// A notebook cell stays responsive with this many triangles drawn (a few MB of SVG).
+constexpr std::size_t kNotebookTriangles = 20000;
 
 io::MeshFormat parse_format(const std::string& format) {
   if (format == "obj") return io::MeshFormat::obj;
@@ -34,13 +40,6 @@ io::MeshFormat parse_format(const std::string& format) {
       "format must be 'obj', 'off', 'stl', 'stl_ascii', 'ply', 'ply_ascii' or "
       "'ply_big_endian', got '" +
       format + "'");
-}
-
-Mesh mesh_from_arrays(const ArrayLike& vertices, const ArrayLike& faces) {
-  const Doubles v = as_matrix(vertices.object, 3, "vertices");
-  const auto points = as_vec3(v);
-  return take(Mesh::from_arrays(std::vector<Vec3>(points.begin(), points.end()),
-                                as_triangles(faces.object)));
 }
 
 // Twice the signed area of a ring, relative to its first vertex (shoelace terms stay small for
@@ -82,8 +81,15 @@ Example:
     >>> cube.vertices.shape, cube.faces.shape
     ((8, 3), (12, 3))
 )doc")
-      .def(py::init(&mesh_from_arrays), "vertices"_a, "faces"_a,
+      .def(py::init([](const ArrayLike& vertices, const ArrayLike& faces) {
+             return mesh_from_arrays(vertices.object, faces.object);
+           }),
+           "vertices"_a, "faces"_a,
            "Validates and copies (V, 3) vertices (real numbers) and (M, 3) integer faces.")
+      .def(py::init([](const MeshLike& mesh) { return Mesh(*to_mesh(mesh.object, "mesh")); }),
+           "mesh"_a,
+           "A copy of any mesh-like object (contain.as_mesh): a trimesh.Trimesh, an Open3D\n"
+           "TriangleMesh, a (vertices, faces) pair, a mesh file path, another Mesh.")
       .def_property_readonly(
           "vertices",
           [](py::object self) {
@@ -112,7 +118,41 @@ Example:
       .def(
           "__len__", [](const Mesh& mesh) { return mesh.triangles.size(); },
           "The number of triangles.")
+      .def(
+          "_repr_svg_",
+          [](const Mesh& mesh) {
+            return io::mesh_svg(mesh, {.max_triangles = kNotebookTriangles});
+          },
+          "The mesh drawn shaded from the front right (the notebook view; see to_svg).")
+      .def(
+          "to_svg",
+          [](const Mesh& mesh, double width, double azimuth, double elevation,
+             const std::string& title, std::size_t max_triangles) {
+            return io::mesh_svg(mesh, {.width_px = width,
+                                       .title = title,
+                                       .view = {.azimuth_deg = azimuth, .elevation_deg = elevation},
+                                       .max_triangles = max_triangles});
+          },
+          py::kw_only(), "width"_a = 400.0, "azimuth"_a = -60.0, "elevation"_a = 25.0,
+          "title"_a = "", "max_triangles"_a = 0, R"doc(
+An SVG picture of the mesh (the writer of contain demo): an orthographic view from azimuth
+`azimuth` degrees (about +z from +x) and `elevation` degrees above the xy plane, +z up, the
+triangles shaded and drawn back to front. Past `max_triangles` (0: no limit) faces turned away
+are left out, then every k-th, and the title says how many were drawn.
+)doc")
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def(py::pickle(
+          // Binary PLY: the doubles bit for bit (multiprocessing, joblib, dask ship meshes).
+          [](const Mesh& mesh) {
+            return py::make_tuple(
+                py::bytes(io::format_mesh(mesh, io::MeshFormat::ply_binary_little_endian)));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.Mesh: bad pickle state");
+            const std::string bytes = state[0].cast<std::string>();
+            return take(io::parse_mesh(bytes, io::MeshFormat::ply_binary_little_endian, "<pickle>"))
+                .mesh;
+          }))
       .def("__repr__", [](const Mesh& mesh) {
         return "contain.Mesh(" + std::to_string(mesh.vertices.size()) + " vertices, " +
                std::to_string(mesh.triangles.size()) + " triangles)";
@@ -122,13 +162,16 @@ Example:
 A planar region: polygons of rings (the shell first, then holes, OGC), or under a fill rule
 simply a set of closed paths. Rings are (K, 2) float64 arrays without the closing point.
 
-Region(rings) makes one polygon of the given rings (a sequence of (K, 2) arrays);
-Region.from_polygons([[shell, hole, ...], ...]) several; Region.from_wkt(text) parses WKT.
-Wherever a region is expected, a Region, a WKT string or a sequence of rings is accepted.
+Region(region) takes anything region-like (contain.as_region): rings (a sequence of (K, 2)
+arrays, one polygon), WKT, GeoJSON, WKB, a shapely geometry or GeoPandas object;
+Region.from_polygons([[shell, hole, ...], ...]) several polygons of rings. Wherever a region
+is expected, all of these are accepted as they are. Back out: to_shapely(),
+__geo_interface__, to_wkb(), to_wkt(), to_geojson(); in a notebook it draws itself.
 )doc")
-      .def(py::init([](const RegionLike& rings) { return to_region(rings.object, "rings"); }),
-           "rings"_a,
-           "One polygon of `rings` (each a (K, 2) array of x, y; at least 3 points; finite).")
+      .def(py::init([](const RegionLike& region) { return to_region(region.object, "region"); }),
+           "region"_a,
+           "The region of anything region-like (contain.as_region); rings (each a (K, 2) array\n"
+           "of x, y; at least 3 points; finite) make one polygon.")
       .def_static(
           "from_polygons",
           [](const py::sequence& polygons) {
@@ -165,6 +208,38 @@ Wherever a region is expected, a Region, a WKT string or a sequence of rings is 
             return rings;
           },
           "Every ring of every polygon in order, as (K, 2) float64 arrays (copies).")
+      .def_property_readonly(
+          "__geo_interface__", &region_geo_interface,
+          "The region as a GeoJSON MultiPolygon mapping (exact doubles): shapely.geometry.shape,\n"
+          "GeoPandas and every __geo_interface__ reader take it.")
+      .def("to_shapely", &region_to_shapely, R"doc(
+The region as a shapely geometry (a Polygon when it is one polygon, else a MultiPolygon),
+through WKB, so every coordinate is the same double. Needs shapely (python3-shapely).
+)doc")
+      .def(
+          "to_wkb", [](const MultiPolygon& region) { return py::bytes(io::write_wkb(region)); },
+          "Little-endian WKB of a MULTIPOLYGON with closed rings (contain.as_region reads it).")
+      .def(
+          "to_geojson", [](const MultiPolygon& region) { return io::write_geojson(region); },
+          "GeoJSON text of a MultiPolygon, shortest round-trip decimals.")
+      .def(
+          "_repr_svg_", [](const MultiPolygon& region) { return io::region_svg(region); },
+          "The region drawn filled, holes as holes (the notebook view; see to_svg).")
+      .def(
+          "to_svg",
+          [](const MultiPolygon& region, double width, const std::string& title) {
+            return io::region_svg(region, {.width_px = width, .title = title});
+          },
+          py::kw_only(), "width"_a = 400.0, "title"_a = "",
+          "An SVG picture of the region (the writer of contain demo), `width` pixels wide.")
+      .def_property_readonly(
+          "bounds",
+          [](const MultiPolygon& region) {
+            const Box2 box = bounding_box(region.all_rings());
+            return py::make_tuple(py::array_t<double>(2, &box.min.x),
+                                  py::array_t<double>(2, &box.max.x));
+          },
+          "(min, max): the bounding box of every ring point, two float64 arrays of 2.")
       .def_property_readonly("area", &region_area,
                              "The signed area summed over the rings: the area for OGC-valid\n"
                              "polygons (shells counter-clockwise, holes clockwise), as\n"
@@ -178,6 +253,27 @@ Wherever a region is expected, a Region, a WKT string or a sequence of rings is 
           "__len__", [](const MultiPolygon& region) { return region.polygons.size(); },
           "The number of polygons.")
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def(py::pickle(
+          // Polygon by polygon (WKB), so that rings and polygons come back as they were.
+          [](const MultiPolygon& region) {
+            py::list polygons;
+            for (const Polygon& polygon : region.polygons)
+              polygons.append(py::bytes(io::write_wkb(polygon)));
+            return py::make_tuple(polygons);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.Region: bad pickle state");
+            MultiPolygon region;
+            for (const py::handle item : state[0]) {
+              MultiPolygon part = take(io::parse_wkb(item.cast<std::string>(), "<pickle>"));
+              if (part.polygons.empty()) {
+                region.polygons.emplace_back();  // a polygon without rings stays one
+              } else {
+                region.polygons.push_back(std::move(part.polygons.front()));
+              }
+            }
+            return region;
+          }))
       .def("__repr__", [](const MultiPolygon& region) {
         std::size_t rings = 0;
         for (const Polygon& polygon : region.polygons)
@@ -208,8 +304,8 @@ detected from the bytes). `source` names the bytes in error messages.
 )doc");
   m.def(
       "format_mesh",
-      [](const Mesh& mesh, const std::string& format) {
-        return py::bytes(io::format_mesh(mesh, parse_format(format)));
+      [](const MeshLike& mesh, const std::string& format) {
+        return py::bytes(io::format_mesh(*to_mesh(mesh.object, "mesh"), parse_format(format)));
       },
       "mesh"_a, "format"_a = "ply", R"doc(
 The bytes of `mesh` in `format`: 'obj', 'off', 'ply_ascii' (shortest round-trip decimals) and
@@ -217,11 +313,11 @@ The bytes of `mesh` in `format`: 'obj', 'off', 'ply_ascii' (shortest round-trip 
 )doc");
   m.def(
       "write_mesh",
-      [](const Mesh& mesh, const std::filesystem::path& path,
+      [](const MeshLike& mesh, const std::filesystem::path& path,
          const std::optional<std::string>& format) {
         io::MeshWriteOptions options;
         if (format) options.format = parse_format(*format);
-        (void)take(io::write_mesh(mesh, path, options));
+        (void)take(io::write_mesh(*to_mesh(mesh.object, "mesh"), path, options));
       },
       "mesh"_a, "path"_a, "format"_a = py::none(),
       "Writes `mesh` to `path` (replaced); the format defaults to the extension's.");

@@ -315,8 +315,9 @@ hold each point (locate, holders) and which objects touch or overlap (pairs), ex
 semantics of contain.MeshIndex and contain.collide: closed meshes bound solids (closed sets:
 touching and nesting count), other meshes are surfaces.
 
-Build: SolidScene(meshes, transforms=None, ids=None) with one contain.Mesh per object (pass
-the same Mesh object several times to share it), or SolidScene.from_file(path) for the scene
+Build: SolidScene(meshes, transforms=None, ids=None) with one mesh per object, each any mesh
+the module takes (contain.Mesh, a path, a trimesh or Open3D mesh, a (vertices, faces) pair:
+the rule of contain.as_mesh; pass the same object several times to share it), or SolidScene.from_file(path) for the scene
 JSON of `contain collide --scene`.
 
 Example:
@@ -330,13 +331,10 @@ Example:
                        std::optional<std::vector<std::string>> ids) {
              auto scene = std::make_unique<Scene>();
              const std::size_t n = py::len(meshes);
-             // The same Python Mesh object given twice is one mesh, prepared once.
+             // The same Python object given twice (a contain.Mesh, a trimesh, a path, ...) is
+             // one mesh, converted and prepared once.
              std::vector<PyObject*> seen;
              for (const py::handle mesh : meshes) {
-               if (!py::isinstance<Mesh>(mesh)) {
-                 throw py::type_error("meshes must hold contain.Mesh objects, got " +
-                                      std::string(py::str(py::type::of(mesh).attr("__name__"))));
-               }
                std::int32_t index = -1;
                for (std::size_t k = 0; k < seen.size(); ++k) {
                  if (seen[k] == mesh.ptr()) index = static_cast<std::int32_t>(k);
@@ -344,7 +342,7 @@ Example:
                if (index < 0) {
                  index = static_cast<std::int32_t>(seen.size());
                  seen.push_back(mesh.ptr());
-                 scene->meshes.push_back(mesh.cast<Mesh>());
+                 scene->meshes.push_back(*to_mesh(mesh, "meshes[k]"));
                }
                scene->objects.push_back({index, Transform{}});
              }
@@ -361,7 +359,8 @@ Example:
              return scene;
            }),
            "meshes"_a, "transforms"_a = py::none(), "ids"_a = py::none(),
-           "One contain.Mesh per object; transforms: None or one per object (None, 12 numbers,\n"
+           "One mesh per object (as contain.as_mesh takes it); transforms: None or one per object "
+           "(None, 12 numbers,\n"
            "(3, 4) or (4, 4)); ids: one string per object (default: positions).")
       .def_static(
           "from_file",

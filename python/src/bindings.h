@@ -8,11 +8,17 @@ namespace contain::python {
 
 namespace py = pybind11;
 
-void bind_io(py::module_& m);       // Mesh, Region, read_mesh, parse_wkt, ...
-void bind_inside(py::module_& m);   // MeshIndex, PolygonIndex, point_in_polygon, point_in_mesh
-void bind_collide(py::module_& m);  // Contact, MeshPair, collide
-void bind_clip(py::module_& m);     // clip_segments, polygon_boolean
-void bind_bound(py::module_& m);    // aabb, bounding_sphere, bounding_circle
-void bind_layer(py::module_& m);    // RegionLayer, SolidScene (many shapes at once)
+void bind_io(py::module_& m);            // Mesh, Region, read_mesh, parse_wkt, ...
+void bind_inside(py::module_& m);        // MeshIndex, PolygonIndex, point_in_polygon, point_in_mesh
+void bind_collide(py::module_& m);       // Contact, MeshPair, collide
+void bind_clip(py::module_& m);          // clip_segments, polygon_boolean
+void bind_bound(py::module_& m);         // aabb, bounding_sphere, bounding_circle
+void bind_csg(py::module_& m);           // Csg, CsgSolid
+void bind_convex(py::module_& m);        // ConvexPolyhedron, ConvexShape, convex_collide
+void bind_clip_regions(py::module_& m);  // clip_polygon, clip_mesh, clip_polylines, ...
+void bind_mesh_report(py::module_& m);   // validate_mesh, MeshReport, weld_vertices
+void bind_primitives(py::module_& m);    // tri_tri, tri_tri_2d, pair_search, orient2d, ...
+void bind_winding(py::module_& m);       // point_in_triangle, winding_number, WindingNumber, ...
+void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
 
 }  // namespace contain::python

@@ -74,6 +74,24 @@ def test_stubs_declare_every_public_name_of_the_module():
     declared = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
     assert set(public_names()) <= declared, set(public_names()) - declared
     assert (STUBS.parent / "py.typed").exists()
+    # Every public member of every class, too (methods, properties, static builders).
+    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
+    for name in public_names():
+        item = getattr(contain, name)
+        if not isinstance(item, type) or issubclass(item, BaseException) or name == "Location":
+            continue
+        members = set()
+        for node in classes[name].body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                members.add(node.name)
+            elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+                members.add(node.target.id)
+        runtime = {m for m in vars(item) if not m.startswith("_") or m in ("_repr_svg_", "__geo_interface__")}
+        assert runtime <= members, (name, runtime - members)
+    # The shape aliases the signatures name.
+    assigned = {t.id for node in tree.body if isinstance(node, ast.Assign) for t in node.targets
+                if isinstance(t, ast.Name)}
+    assert {"MeshLike", "RegionLike"} <= assigned
 
 
 def test_regions_from_rings_wkt_and_polygons_agree():
@@ -188,3 +206,24 @@ def test_bounding_volumes():
     assert contain.bounding_circle("POLYGON ((0 0, 2 0, 2 2, 0 2))")[1] == pytest.approx(2**0.5)
     with pytest.raises(ValueError, match="method must be"):
         contain.bounding_sphere(points, method="best")
+
+
+def test_meshes_and_regions_pickle_bit_for_bit_and_indexes_refuse_with_the_way_out():
+    import pickle
+    rng = np.random.default_rng(1)
+    mesh = contain.Mesh(rng.normal(size=(50, 3)) * 1e-300, rng.integers(0, 50, (40, 3)))
+    assert pickle.loads(pickle.dumps(mesh)) == mesh
+    region = contain.Region.from_polygons([[rng.normal(size=(7, 2))],
+                                           [rng.normal(size=(5, 2)) + 9, rng.normal(size=(4, 2)) * 0.1 + 9]])
+    assert pickle.loads(pickle.dumps(region)) == region
+    with pytest.raises(TypeError, match="not picklable: ship the mesh"):
+        pickle.dumps(contain.MeshIndex(cube()))
+
+
+def test_no_module_function_is_registered_twice():
+    # Bindings live in several files (bind_*.cpp); a name defined in two of them would silently
+    # become a pybind11 overload, the first registration shadowing the other.
+    for name in public_names():
+        item = getattr(contain, name)
+        if callable(item) and not isinstance(item, type):
+            assert "Overloaded function" not in (item.__doc__ or ""), name

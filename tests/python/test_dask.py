@@ -2,6 +2,8 @@
 answers equal the single-process ones on a few million points, each worker builds its index
 once, and only the shape's path or bytes travel (one graph key, never an index)."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -106,3 +108,40 @@ def test_column_chunks_numpy_input_and_all_core_chunks_give_the_same_answers(cli
     by_columns = da.from_array(local, chunks=(50_000, 1))  # merged into whole rows
     assert np.array_equal(contain.dask.locate(by_columns, mesh_file).compute(), expected)
     assert np.array_equal(contain.dask.locate(local, mesh_file, threads=0).compute(), expected)
+
+
+def test_tuples_duck_meshes_and_shapely_regions_travel_by_the_module_rule(client, points):
+    mesh = torus(major=1.2, minor=0.35)
+
+    class TrimeshLike:
+        vertices = np.array(mesh.vertices)
+        faces = np.array(mesh.faces, dtype=np.int64)
+
+    sample = points[:500_000]
+    expected = contain.MeshIndex(mesh).locate(sample.compute())
+    for shape in ((mesh.vertices, mesh.faces), TrimeshLike()):
+        source = contain.dask.Shape.of(shape)
+        assert source.kind == "mesh" and source.key == contain.dask.Shape.of(mesh).key
+        assert np.array_equal(contain.dask.locate(sample, shape).compute(), expected)
+    shapely = pytest.importorskip("shapely.geometry")
+    park = shapely.box(0, 0, 4, 4).difference(shapely.box(1, 1, 3, 3))
+    xy = da.random.RandomState(6).uniform(-1, 5, size=(200_000, 2), chunks=(50_000, 2))
+    wanted = contain.PolygonIndex(park).locate(xy.compute())
+    for region in (park, park.wkb, park.wkb_hex, shapely.mapping(park)):
+        assert contain.dask.Shape.of(region).kind == "region"
+        assert np.array_equal(contain.dask.locate(xy, region).compute(), wanted)
+
+
+def test_csg_solids_travel_as_their_json_form(client, points, tmp_path):
+    tree = {"difference": [{"sphere": {"center": [0, 0, 0], "radius": 1.2}},
+                           {"implicit": "0.25 - x^2 - y^2"}]}  # a ball with a shaft bored out
+    sample = points[:400_000]
+    expected = contain.CsgSolid(tree).locate(sample.compute())
+    source = contain.dask.Shape.of(tree)
+    assert source.kind == "csg" and source.dimension == 3 and source.key.startswith("csg:sha256:")
+    assert np.array_equal(contain.dask.locate(sample, tree).compute(), expected)
+    path = tmp_path / "part.json"
+    path.write_text(json.dumps(tree))
+    assert np.array_equal(contain.dask.locate(sample, contain.dask.Shape.csg(path)).compute(), expected)
+    with pytest.raises(contain.ContainError):
+        contain.dask.Shape.csg({"sphere": {"center": [0, 0], "radius": 1}})

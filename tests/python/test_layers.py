@@ -145,6 +145,28 @@ def test_solid_scene_pairs_and_holders():
         pickle.dumps(scene)
 
 
+def test_solid_scene_takes_meshes_by_the_one_rule():
+    """Every object a mesh argument takes (contain.as_mesh): a (vertices, faces) pair, an object
+    with vertices and faces arrays (trimesh.Trimesh), a mapping, a path; the same object twice is
+    one mesh."""
+
+    class TrimeshLike:
+        def __init__(self, mesh):
+            self.vertices = np.array(mesh.vertices)
+            self.faces = np.array(mesh.faces, dtype=np.int64)
+
+    box = cube()
+    pair = (np.array(box.vertices), np.array(box.faces))
+    duck = TrimeshLike(box)
+    mapping = {"vertices": box.vertices, "faces": box.faces}
+    shift = lambda x: [1, 0, 0, x, 0, 1, 0, 0, 0, 0, 1, 0]
+    scene = contain.SolidScene([pair, duck, mapping, duck], [None, shift(1), shift(2), shift(9)])
+    assert scene.pairs().tolist() == [[0, 1], [1, 2]]
+    assert scene.locate([[1.5, 0.5, 0.5], [9.5, 0.5, 0.5]]).tolist() == [[0, 1], [1, 3]]
+    with pytest.raises(TypeError, match="meshes"):
+        contain.SolidScene([box, 3.5])
+
+
 def test_solid_scene_from_the_file_of_the_command(tmp_path, cli):
     contain.write_mesh(cube(), tmp_path / "cube.obj")
     (tmp_path / "scene.json").write_text(

@@ -1,15 +1,19 @@
 #pragma once
 /// \file
 /// A small SVG drawing of 2D geometry (and of 3D results projected onto a plane): regions, points
-/// coloured by location, segments, labels and a legend. World y points up; the picture is scaled
-/// to fit the given world box with a margin.
+/// coloured by location, segments, shaded triangle meshes, labels and a legend. World y points
+/// up; the picture is scaled to fit the given world box with a margin. The pictures of
+/// `contain demo`, `contain clip --format svg` and the notebook views of the Python module
+/// (`_repr_svg_`) all come from here.
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "contain/core/location.h"
+#include "contain/shapes/mesh.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/segment.h"
@@ -31,6 +35,32 @@ struct LocationColours {
   std::string outside = "#d62728";
 };
 
+/// An orthographic view of 3D geometry: seen from the direction with azimuth `azimuth_deg`
+/// (degrees about +z from +x) and elevation `elevation_deg` (degrees above the xy plane), with +z
+/// pointing up in the picture. The default looks from the front right, a little from above.
+struct View3 {
+  double azimuth_deg = -60.0;
+  double elevation_deg = 25.0;
+};
+
+/// Where `p` lands in the picture plane of `view` (x to the right, y up). Floating point.
+[[nodiscard]] Vec2 project(Vec3 p, const View3& view);
+/// How near `p` is to the viewer along the view direction (larger is nearer).
+[[nodiscard]] double view_depth(Vec3 p, const View3& view);
+/// The box of the projections of `points`.
+[[nodiscard]] Box2 projected_bounds(std::span<const Vec3> points, const View3& view);
+
+/// How `SvgCanvas::mesh` draws.
+struct MeshStyle {
+  std::string colour = "#4c8dc9";  ///< the colour of a triangle facing the viewer
+  std::string edge = "none";       ///< triangle edges ("none": no edges)
+  double edge_width = 0.25;        ///< in pixels
+  /// Past this many triangles (0: no limit) the ones facing away are left out first (hidden
+  /// behind the front of a closed surface anyway), then every k-th of the rest is drawn; the
+  /// picture is then a sketch, which `SvgCanvas::mesh` returns the count of.
+  std::size_t max_triangles = 0;
+};
+
 class SvgCanvas {
  public:
   /// A canvas showing `world` (grown by 4% on each side) in a picture `width_px` wide.
@@ -45,6 +75,11 @@ class SvgCanvas {
               const LocationColours& colours = {});
   /// Draws points as dots in one colour.
   void points(std::span<const Vec2> points, std::string_view colour, double radius_px);
+  /// Draws the triangles of `mesh` seen in `view` (the canvas's world box is in the projected
+  /// plane: see `projected_bounds`), back to front (painter's order by the triangles' centroid
+  /// depth), each shaded by how squarely it faces a light above left of the viewer (either side
+  /// lit alike). Returns the number drawn.
+  std::size_t mesh(const Mesh& mesh, const View3& view, const MeshStyle& style = {});
   /// Writes a caption at the top left.
   void title(std::string_view text);
   /// Adds a legend entry (a swatch and its label) at the top right, in call order.
@@ -64,5 +99,22 @@ class SvgCanvas {
   std::vector<std::pair<std::string, std::string>> legend_;
   std::string title_;
 };
+
+/// What `region_svg` and `mesh_svg` draw.
+struct PictureOptions {
+  double width_px = 400.0;
+  std::string title;              ///< a caption at the top ("": none)
+  View3 view{};                   ///< meshes only
+  std::size_t max_triangles = 0;  ///< meshes only: see MeshStyle::max_triangles
+};
+
+/// A whole SVG document showing one region: filled under the even-odd rule of its rings (holes
+/// show as holes), outlined, scaled to its bounding box. The notebook view of contain.Region.
+[[nodiscard]] std::string region_svg(const MultiPolygon& region,
+                                     const PictureOptions& options = {});
+
+/// A whole SVG document showing one mesh in `options.view`, shaded (see `SvgCanvas::mesh`). The
+/// notebook view of contain.Mesh.
+[[nodiscard]] std::string mesh_svg(const Mesh& mesh, const PictureOptions& options = {});
 
 }  // namespace contain::io
