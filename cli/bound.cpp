@@ -49,7 +49,7 @@ int run_mesh(const BoundOptions& o) {
 }
 
 int run_region(const BoundOptions& o) {
-  auto region = io::read_region(o.file);
+  auto region = read_region_warned(o.file);
   if (!region) return report(region.error());
   const Box2 box = bound::aabb(*region);
   auto circle = bound::bounding_circle(*region, {.method = o.method});

@@ -4,13 +4,16 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clip_boolean.h"
 #include "common.h"
+#include "contain/clip/box_clipper.h"
 #include "contain/clip/box_halfspaces.h"
 #include "contain/clip/clip_polygon.h"
 #include "contain/clip/clip_segments.h"
@@ -43,6 +46,7 @@ struct ClipOptions {
   std::string circle;
   std::string algorithm;
   bool keep_bridges = false;
+  std::string tiles;
   bool cap = false;
   std::string out;
   int threads = 0;
@@ -88,21 +92,45 @@ Result<std::vector<HalfPlane>> half_planes_of(const ClipOptions& o) {
   return planes;
 }
 
+// A box whose min corner lies above its max corner is a mistake, not an empty region: exit 3.
+Status check_corners(const std::string& text, const std::vector<double>& v) {
+  const std::size_t d = v.size() / 2;
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  for (std::size_t i = 0; i < d; ++i) {
+    if (v[i] > v[d + i]) {
+      return Error{ErrorKind::invalid_value,
+                   fmt::format("clip: --box {}: the min corner is above the max corner in {} "
+                               "({} > {}); give the min corner first",
+                               text, kAxis[i], v[i], v[d + i])};
+    }
+  }
+  return Ok{};
+}
+
 Result<Box3> box3_of(const std::string& text) {
   auto v = numbers(text, "--box", {6});
   if (!v) return v.error();
+  if (auto s = check_corners(text, *v); !s) return s.error();
   return Box3{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
 }
 
 Result<Box2> box2_of(const std::string& text) {
   auto v = numbers(text, "--box", {4});
   if (!v) return v.error();
+  if (auto s = check_corners(text, *v); !s) return s.error();
   return Box2{{(*v)[0], (*v)[1]}, {(*v)[2], (*v)[3]}};
+}
+
+// A ball or disc of negative radius is a mistake (it was read as its absolute value): exit 3.
+Status check_radius(const char* option, const std::string& text, double radius) {
+  if (radius >= 0) return Ok{};
+  return Error{ErrorKind::invalid_value,
+               fmt::format("clip: {} {}: the radius is negative ({})", option, text, radius)};
 }
 
 // --convex in 2D: the shell of the first polygon of a region file.
 Result<Ring> convex_ring_of(const std::string& path) {
-  auto region = io::read_region(path);
+  auto region = read_region_warned(path);
   if (!region) return region.error();
   if (region->polygons.empty() || region->polygons.front().rings.empty()) {
     return Error{ErrorKind::degenerate, "the convex polygon is empty", path};
@@ -283,6 +311,7 @@ int run_segments(const ClipOptions& o) {
   } else if (!o.sphere.empty()) {
     auto s = numbers(o.sphere, "--sphere", {4});
     if (!s) return report(s.error());
+    if (auto r = check_radius("--sphere", o.sphere, (*s)[3]); !r) return report(r.error());
     const Sphere ball{{(*s)[0], (*s)[1], (*s)[2]}, (*s)[3]};
     clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
       clip::clip_segments(in_c, ball, out_c, kept_c, batch);
@@ -290,6 +319,7 @@ int run_segments(const ClipOptions& o) {
   } else {
     auto c = numbers(o.circle, "--circle", {3});
     if (!c) return report(c.error());
+    if (auto r = check_radius("--circle", o.circle, (*c)[2]); !r) return report(r.error());
     const Circle disc{{(*c)[0], (*c)[1]}, (*c)[2]};
     clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
       clip::clip_segments(in_c, disc, out_c, kept_c, batch);
@@ -306,12 +336,69 @@ std::string polygon_wkt(const MultiPolygon& result) {
   return io::write_wkt(result) + "\n";
 }
 
+// --tiles NX,NY: the region cut into a grid over --box (or its bounding box), one result per
+// tile: lines "COLUMN ROW WKT", or one file per tile when --out holds {column} and {row}.
+int run_tiles(const ClipOptions& o) {
+  if (!o.halfspaces.empty() || !o.convex.empty() || o.keep_bridges) {
+    return report(
+        usage("--tiles cuts by a grid of boxes: it takes --box (the grid's bounds), "
+              "not --halfspace, --convex or --keep-bridges"));
+  }
+  auto counts = numbers(o.tiles, "--tiles", {2});
+  if (!counts) return report(counts.error());
+  const double nx = (*counts)[0], ny = (*counts)[1];
+  if (!(nx >= 1 && ny >= 1 && nx == std::floor(nx) && ny == std::floor(ny) && nx * ny <= 1 << 24)) {
+    return report({ErrorKind::invalid_value,
+                   "clip: --tiles " + o.tiles +
+                       ": give two whole numbers of columns and rows, each at least 1, at most "
+                       "16,777,216 tiles in all"});
+  }
+  auto region = read_region_warned(o.polygon);
+  if (!region) return report(region.error());
+  clip::TileGrid grid{.columns = static_cast<int>(nx), .rows = static_cast<int>(ny)};
+  if (!o.box.empty()) {
+    auto box = box2_of(o.box);
+    if (!box) return report(box.error());
+    grid.bounds = *box;
+  } else {
+    grid.bounds = bounding_box(region->all_rings());
+    if (grid.bounds.empty()) {
+      return report({ErrorKind::degenerate,
+                     "the region is empty: give the grid's bounds with --box", o.polygon});
+    }
+  }
+  const std::vector<MultiPolygon> tiles = clip::tile(*region, grid, {.threads = o.threads});
+  const bool per_file =
+      o.out.find("{column}") != std::string::npos && o.out.find("{row}") != std::string::npos;
+  std::string lines;
+  for (int row = 0; row < grid.rows; ++row) {
+    for (int column = 0; column < grid.columns; ++column) {
+      const MultiPolygon& tile = tiles[static_cast<std::size_t>(row) * grid.columns + column];
+      if (per_file) {
+        std::string path = o.out;
+        for (const auto& [key, value] : {std::pair<std::string, int>{"{column}", column},
+                                         std::pair<std::string, int>{"{row}", row}}) {
+          for (std::size_t at = path.find(key); at != std::string::npos; at = path.find(key))
+            path.replace(at, key.size(), std::to_string(value));
+        }
+        const Status written = write_output(polygon_wkt(tile), path);
+        if (!written) return report(written.error());
+      } else {
+        lines += fmt::format("{} {} {}", column, row, polygon_wkt(tile));
+      }
+    }
+  }
+  if (per_file) return exit_ok;
+  return emit(lines, o.out);
+}
+
 int run_polygon(const ClipOptions& o) {
+  if (!o.tiles.empty()) return run_tiles(o);
   const int regions = !o.box.empty() + !o.halfspaces.empty() + !o.convex.empty();
   if (regions != 1) {
     return report(usage("--polygon needs one region: --halfspace (repeatable), --box or --convex"));
   }
-  auto region = io::read_region(o.polygon);
+  auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
   const clip::PolygonClipOptions options{.output = o.keep_bridges
                                                        ? clip::PolygonClipOutput::bridged
@@ -407,6 +494,11 @@ Verb add_clip(CLI::App& app) {
                   "segment clipper for --box (default: the "
                   "branch-free batch kernel, exact decisions)")
       ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "cyrus-beck"}));
+  cmd->add_option("--tiles", o->tiles,
+                  "polygons: cut into a grid of NX x NY boxes over --box (default: the region's "
+                  "bounding box), on all cores; one line 'COLUMN ROW WKT' per tile (row 0 at min "
+                  "y), or one file per tile when --out holds {column} and {row}")
+      ->option_text("NX,NY");
   cmd->add_flag("--keep-bridges", o->keep_bridges,
                 "polygons: the section's one ring per input ring, with degenerate bridging edges");
   cmd->add_flag("--cap", o->cap, "meshes: close the cut of a closed mesh with cap polygons");
@@ -421,6 +513,7 @@ Verb add_clip(CLI::App& app) {
       "  contain clip --segments lines.txt --box 0,0,0,1,1,1 --algorithm liang-barsky\n"
       "  contain clip --segments lines2d.txt --circle 0,0,1\n"
       "  contain clip --polygon parcels.wkt --box 0,0,100,100\n"
+      "  contain clip --polygon country.wkt --tiles 16,16 --out 'tiles/{column}_{row}.wkt'\n"
       "  contain clip --mesh bunny.obj --halfspace=0,0,1,-0.5 --cap --out top.ply\n"
       "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
       "touches the region prints a zero-length segment.");

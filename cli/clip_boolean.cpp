@@ -63,9 +63,9 @@ bool clip_boolean_requested(const ClipBooleanOptions& o) {
 }
 
 int run_clip_boolean(const ClipBooleanOptions& o, const std::string& out) {
-  auto subject = io::read_region(o.subject);
+  auto subject = read_region_warned(o.subject);
   if (!subject) return report(subject.error());
-  auto clip_region = io::read_region(o.clip);
+  auto clip_region = read_region_warned(o.clip);
   if (!clip_region) return report(clip_region.error());
   const MultiPolygon result =
       clip::polygon_boolean(*subject, *clip_region, {.op = o.op, .fill = o.fill});

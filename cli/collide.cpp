@@ -89,9 +89,9 @@ int run_regions(const CollideOptions& o) {
     return report(Error{ErrorKind::usage,
                         "--transform-a, --transform-b and --poses apply to meshes (3D) only"});
   }
-  auto a = io::read_region(o.a);
+  auto a = read_region_warned(o.a);
   if (!a) return report(a.error());
-  auto b = io::read_region(o.b);
+  auto b = read_region_warned(o.b);
   if (!b) return report(b.error());
   const collide::Contact c = collide::region_region(*a, *b);
   if (!o.json) return emit(answer(c.intersect), o.out);

@@ -8,6 +8,9 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <string>
+
+#include "contain/io/region_io.h"
 
 namespace contain::cli {
 
@@ -18,6 +21,18 @@ int report(const Error& error) {
 
 void warn(std::string_view message) {
   std::cerr << "contain: warning: " << message << '\n';
+}
+
+Result<MultiPolygon> read_region_warned(const std::string& path) {
+  io::WktNotes notes;
+  auto region = io::read_region(path, &notes);
+  if (region) {
+    for (const std::int64_t line : notes.unclosed_rings) {
+      warn(path + ":" + std::to_string(line) +
+           ": ring not closed (WKT repeats the first point at the end); read as closed");
+    }
+  }
+  return region;
 }
 
 Result<std::vector<double>> parse_numbers(std::string_view text, std::string_view option) {

@@ -43,6 +43,10 @@ void warn(std::string_view message);
 /// Writes the results (see `write_output`) and returns the exit code: 0, or 3 when writing failed.
 [[nodiscard]] int emit(std::string_view text, const std::string& path);
 
+/// io::read_region, with a warning on stderr for each WKT ring that is not closed (read as
+/// closed: "FILE:LINE: warning: ring not closed ...").
+[[nodiscard]] Result<MultiPolygon> read_region_warned(const std::string& path);
+
 /// True when stderr is a terminal (progress is shown only then).
 [[nodiscard]] bool stderr_is_terminal();
 

@@ -40,7 +40,7 @@ std::vector<Location> locate_all(const Locator& locator, const std::vector<Point
 }
 
 int run_polygon(const InsideOptions& o) {
-  auto region = io::read_region(o.polygon);
+  auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());

@@ -35,6 +35,7 @@ contain.layers.sjoin for GeoDataFrames; see docs/layers.md.
 """
 
 from ._contain import (
+    BoxClipper,
     Contact,
     ContainError,
     ContainIOError,
@@ -82,6 +83,7 @@ from ._contain import (
     segment_triangle,
     segments_intersect,
     sutherland_hodgman,
+    tile,
     tri_tri,
     tri_tri_2d,
     validate_mesh,
@@ -93,6 +95,7 @@ from ._contain import (
 from ._contain import __version__
 
 __all__ = [
+    "BoxClipper",
     "Contact",
     "ContainError",
     "ContainIOError",
@@ -140,6 +143,7 @@ __all__ = [
     "segment_triangle",
     "segments_intersect",
     "sutherland_hodgman",
+    "tile",
     "tri_tri",
     "tri_tri_2d",
     "validate_mesh",

@@ -11,9 +11,12 @@
 #include "contain/clip/clip_polygon.h"
 
 #include <algorithm>
+#include <deque>
+#include <limits>
 #include <numeric>
 #include <optional>
 
+#include "clip/box_cut.h"
 #include "clip/convex_functions.h"
 #include "clip/ring_clip.h"
 #include "contain/clip/box_halfspaces.h"
@@ -70,18 +73,8 @@ struct Chain {
 // Exact orientation of a ring: at its lowest (then leftmost) vertex, which is convex; the float
 // area where that vertex is a spike.
 bool counter_clockwise(const Ring& ring) {
-  const std::size_t n = ring.size();
-  std::size_t m = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (ring[i].y < ring[m].y || (ring[i].y == ring[m].y && ring[i].x < ring[m].x)) m = i;
-  }
-  std::size_t prev = (m + n - 1) % n, next = (m + 1) % n;
-  while (prev != m && ring[prev] == ring[m])
-    prev = (prev + n - 1) % n;
-  while (next != m && ring[next] == ring[m])
-    next = (next + 1) % n;
-  const Sign s = predicates::orient2d(ring[prev], ring[m], ring[next]);
-  if (s != Sign::zero) return s == Sign::positive;
+  const int o = detail::ring_orientation(ring);
+  if (o >= 0) return o == 1;
   return signed_area2(ring) > 0.0;
 }
 
@@ -156,24 +149,112 @@ void cut_ring(const Ring& ring, const std::vector<Sign>& side, const F& f,
   }
 }
 
+// Whether the region left of the edge p -> q, which lies on f's line, is outside the half-plane:
+// the edge runs against the line's direction (inside on the left). Exact: the edge is parallel
+// to the line, so the sign of one coordinate difference decides.
+bool faces_out(const predicates::LineFunction& f, Vec2 p, Vec2 q) {
+  // The line's direction with the inside on its left is (b, -a).
+  const double b = f.line.b, a = f.line.a;
+  if (b != 0.0) return (q.x > p.x) != (b > 0.0);
+  return (q.y > p.y) != (-a > 0.0);
+}
+bool faces_out(const predicates::EdgeFunction& f, Vec2 p, Vec2 q) {
+  if (f.q.x != f.p.x) return (q.x > p.x) != (f.q.x > f.p.x);
+  return (q.y > p.y) != (f.q.y > f.p.y);
+}
+
+// A ring read in place: its points forward, or backward when it must be reversed to be
+// oriented (shell counter-clockwise, hole clockwise).
+struct RingView {
+  std::span<const Vec2> points;
+  bool reversed = false;
+  [[nodiscard]] std::size_t size() const { return points.size(); }
+  [[nodiscard]] Vec2 operator[](std::size_t i) const {
+    return points[reversed ? points.size() - 1 - i : i];
+  }
+  [[nodiscard]] Ring materialised() const {
+    Ring out(points.begin(), points.end());
+    if (reversed) std::reverse(out.begin(), out.end());
+    return out;
+  }
+};
+
+// The ring's points with their exact sides, every run of consecutive points strictly outside
+// reduced to its first and last point: the chord between them lies strictly outside too (the
+// outside of a half-plane is convex), so the cut drops it whole like the run, and its chains,
+// their ends and the pieces are the same. Inside a run only the floating-point filter runs (one
+// evaluation a point), so a large region against a small clip region costs one light pass and
+// leaves a short ring.
 template <class F>
-std::vector<Polygon> split(const Polygon& polygon, const F& f) {
+void reduce(const RingView& ring, const F& f, Ring& out, std::vector<Sign>& side) {
+  out.clear();
+  side.clear();
+  const std::size_t n = ring.size();
+  auto clearly_outside = [&](Vec2 v) {
+    const predicates::Approx a = f.approx(v);
+    return a.value < -a.error;
+  };
+  for (std::size_t i = 0; i < n;) {
+    const Vec2 v = ring[i++];
+    const Sign s = clearly_outside(v) ? Sign::negative : f.side(v);
+    out.push_back(v);
+    side.push_back(s);
+    if (s != Sign::negative) continue;
+    std::size_t j = i;
+    while (j < n && clearly_outside(ring[j]))
+      ++j;
+    if (j > i) {
+      out.push_back(ring[j - 1]);
+      side.push_back(Sign::negative);
+    }
+    i = j;
+  }
+}
+
+// One half-plane's cut of a polygon whose rings are oriented (shell counter-clockwise, holes
+// clockwise) and free of repeated points; an empty ring is a shell that had no area.
+template <class F>
+std::vector<Polygon> split(std::span<const RingView> polygon, const F& f) {
   std::vector<Chain> chains;
   std::vector<Ring> shells, holes;
-  for (std::size_t r = 0; r < polygon.rings.size(); ++r) {
-    Ring ring = without_repeats(polygon.rings[r]);
-    if (ring.size() < 3 || !has_area(ring)) continue;
-    if (counter_clockwise(ring) != (r == 0)) std::reverse(ring.begin(), ring.end());
-    std::vector<Sign> side(ring.size());
+  Ring ring;
+  std::vector<Sign> side;
+  for (std::size_t r = 0; r < polygon.size(); ++r) {
+    if (polygon[r].size() < 3) continue;
+    reduce(polygon[r], f, ring, side);
     bool any_in = false, any_out = false;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      side[i] = f.side(ring[i]);
-      any_in |= side[i] == Sign::positive;
-      any_out |= side[i] == Sign::negative;
+    for (const Sign s : side) {
+      any_in |= s == Sign::positive;
+      any_out |= s == Sign::negative;
+    }
+    // An edge on the line with the region outside the half-plane beside it bounds nothing that
+    // is kept: a point strictly outside is put between its ends, so the ring is cut there and a
+    // hole whose edge lies on the line becomes a notch of the shell (never a hole touching it
+    // along the edge). The point is never used for a crossing: its neighbours lie on the line.
+    bool along_out = false;
+    for (std::size_t i = 0; i < ring.size() && !along_out; ++i) {
+      const std::size_t j = (i + 1) % ring.size();
+      along_out = side[i] == Sign::zero && side[j] == Sign::zero && faces_out(f, ring[i], ring[j]);
+    }
+    if (along_out) {
+      Ring cut;
+      std::vector<Sign> cut_side;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::size_t j = (i + 1) % ring.size();
+        cut.push_back(ring[i]);
+        cut_side.push_back(side[i]);
+        if (side[i] == Sign::zero && side[j] == Sign::zero && faces_out(f, ring[i], ring[j])) {
+          cut.push_back(ring[i]);
+          cut_side.push_back(Sign::negative);
+        }
+      }
+      ring = std::move(cut);
+      side = std::move(cut_side);
+      any_out = true;
     }
     if (!any_in) continue;
-    if (!any_out) {
-      (r == 0 ? shells : holes).push_back(std::move(ring));
+    if (!any_out) {  // nothing reduced: the ring as it is
+      (r == 0 ? shells : holes).push_back(polygon[r].materialised());
       continue;
     }
     cut_ring(ring, side, f, chains);
@@ -209,14 +290,14 @@ std::vector<Polygon> split(const Polygon& polygon, const F& f) {
   std::vector<bool> used(chains.size(), false);
   for (std::size_t c = 0; c < chains.size(); ++c) {
     if (used[c]) continue;
-    Ring ring;
+    Ring joined;
     for (std::size_t k = c; !used[k]; k = next[k]) {
       used[k] = true;
-      ring.insert(ring.end(), chains[k].points.begin(), chains[k].points.end());
+      joined.insert(joined.end(), chains[k].points.begin(), chains[k].points.end());
     }
-    ring = without_repeats(ring);
-    if (ring.size() < 3 || !has_area(ring)) continue;
-    (counter_clockwise(ring) ? shells : holes).push_back(std::move(ring));
+    joined = without_repeats(joined);
+    if (joined.size() < 3 || !has_area(joined)) continue;
+    (counter_clockwise(joined) ? shells : holes).push_back(std::move(joined));
   }
   std::vector<Polygon> out;
   for (Ring& s : shells)
@@ -241,18 +322,36 @@ std::vector<Polygon> split(const Polygon& polygon, const F& f) {
   return out;
 }
 
+// The region's polygons as oriented views (shells counter-clockwise, holes clockwise) without
+// repeated points and without rings of no area (a shell of no area stays as an empty view: its
+// holes still count as holes). Rings are read in place; one with repeated points is copied
+// without them into `storage`.
+std::vector<std::vector<RingView>> oriented(const MultiPolygon& region, std::deque<Ring>& storage) {
+  std::vector<std::vector<RingView>> out;
+  out.reserve(region.polygons.size());
+  for (const Polygon& polygon : region.polygons) {
+    if (polygon.rings.empty()) continue;
+    std::vector<RingView> p;
+    for (std::size_t r = 0; r < polygon.rings.size(); ++r) {
+      const Ring* ring = &polygon.rings[r];
+      const std::size_t n = ring->size();
+      bool repeats = n > 0 && (*ring)[0] == (*ring)[n - 1];
+      for (std::size_t i = 1; i < n && !repeats; ++i)
+        repeats = (*ring)[i] == (*ring)[i - 1];
+      if (repeats) ring = &storage.emplace_back(without_repeats(*ring));
+      if (ring->size() < 3 || !has_area(*ring)) {
+        if (r == 0) p.emplace_back();
+        continue;
+      }
+      p.push_back({*ring, counter_clockwise(*ring) != (r == 0)});
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 template <class F>
 MultiPolygon clip_pieces(const MultiPolygon& region, std::span<const F> functions) {
-  MultiPolygon current = region;
-  for (const F& f : functions) {
-    MultiPolygon next;
-    for (const Polygon& polygon : current.polygons) {
-      if (polygon.rings.empty()) continue;
-      for (Polygon& piece : split(polygon, f))
-        next.polygons.push_back(std::move(piece));
-    }
-    current = std::move(next);
-  }
   if (functions.empty()) {
     // No half-plane: still return valid pieces (oriented, zero-area rings gone).
     MultiPolygon out;
@@ -267,6 +366,25 @@ MultiPolygon clip_pieces(const MultiPolygon& region, std::span<const F> function
       if (!p.rings.empty()) out.polygons.push_back(std::move(p));
     }
     return out;
+  }
+  // The first cut reads the input in place; later ones their oriented pieces.
+  std::deque<Ring> storage;
+  MultiPolygon current;
+  for (const std::vector<RingView>& polygon : oriented(region, storage)) {
+    for (Polygon& piece : split(std::span<const RingView>(polygon), functions[0]))
+      current.polygons.push_back(std::move(piece));
+  }
+  std::vector<RingView> views;
+  for (std::size_t k = 1; k < functions.size(); ++k) {
+    MultiPolygon next;
+    for (const Polygon& polygon : current.polygons) {
+      views.clear();
+      for (const Ring& ring : polygon.rings)
+        views.push_back({ring, false});
+      for (Polygon& piece : split(std::span<const RingView>(views), functions[k]))
+        next.polygons.push_back(std::move(piece));
+    }
+    current = std::move(next);
   }
   return current;
 }
@@ -304,6 +422,39 @@ MultiPolygon clip_with(const MultiPolygon& region, std::span<const F> functions,
 
 MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane> half_planes,
                           const PolygonClipOptions& options) {
+  if (options.output == PolygonClipOutput::pieces) {
+    // Half-planes x >= k, x <= k, y >= k, y <= k (unit coefficients: the bound k is exact) form
+    // a box: the one-pass box cut takes them all at once, and the others cut its result.
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Box2 box{{-inf, -inf}, {inf, inf}};
+    std::vector<HalfPlane> others;
+    bool any_box = false;
+    for (const HalfPlane& h : half_planes) {
+      if (h.b == 0.0 && (h.a == 1.0 || h.a == -1.0)) {
+        if (h.a > 0)
+          box.min.x = std::max(box.min.x, -h.c);
+        else
+          box.max.x = std::min(box.max.x, h.c);
+        any_box = true;
+      } else if (h.a == 0.0 && (h.b == 1.0 || h.b == -1.0)) {
+        if (h.b > 0)
+          box.min.y = std::max(box.min.y, -h.c);
+        else
+          box.max.y = std::min(box.max.y, h.c);
+        any_box = true;
+      } else {
+        others.push_back(h);
+      }
+    }
+    if (any_box) {
+      // A box without interior (or NaN bounds) leaves no area.
+      if (!(box.min.x < box.max.x && box.min.y < box.max.y)) return {};
+      const MultiPolygon cut = detail::clip_by_box(region, box);
+      if (others.empty()) return cut;
+      const auto functions = detail::line_functions(others);
+      return clip_with(cut, std::span<const predicates::LineFunction>(functions), options);
+    }
+  }
   const auto functions = detail::line_functions(half_planes);
   return clip_with(region, std::span<const predicates::LineFunction>(functions), options);
 }
@@ -311,6 +462,7 @@ MultiPolygon clip_polygon(const MultiPolygon& region, std::span<const HalfPlane>
 MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
                           const PolygonClipOptions& options) {
   if (box.empty()) return {};
+  if (options.output == PolygonClipOutput::pieces) return detail::clip_by_box(region, box);
   const auto planes = box_halfspaces(box);
   return clip_polygon(region, planes, options);
 }
@@ -319,6 +471,13 @@ MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
                           const PolygonClipOptions& options) {
   const auto edges = detail::edge_functions(convex_ring);
   if (!edges) return {};
+  if (options.output == PolygonClipOutput::pieces) {
+    // The ring lies in its box: the one-pass box cut leaves the part of the region near it,
+    // valid, and the ring's edges cut that.
+    const MultiPolygon near =
+        detail::clip_by_box(region, bounding_box(std::span<const Ring>(&convex_ring, 1)));
+    return clip_with(near, std::span<const predicates::EdgeFunction>(*edges), options);
+  }
   return clip_with(region, std::span<const predicates::EdgeFunction>(*edges), options);
 }
 

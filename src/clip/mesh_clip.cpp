@@ -5,13 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "clip/cap_triangulation.h"
 #include "clip/convex_functions.h"
 #include "clip/ring_clip.h"
 #include "contain/clip/box_halfspaces.h"
+#include "contain/predicates/orient2d.h"
 
 namespace contain::clip {
 namespace {
@@ -48,6 +52,47 @@ Sign facing(const Vec3& a, const Vec3& b, const Vec3& c, const Gradient& g) {
 using Key = std::uint64_t;
 Key edge_key(std::int32_t i, std::int32_t j) {
   return (static_cast<Key>(static_cast<std::uint32_t>(i)) << 32) | static_cast<std::uint32_t>(j);
+}
+
+// Points on the plane with equal coordinates become one vertex. Crossing points of edges that
+// leave a vertex lying within rounding distance of the plane round to the same point (spot.obj
+// has vertices at x = 4e-19 next to the cut x = 0): as two vertices they leave a zero-length
+// edge in the cap's loop, which no triangulation can close. Triangles that repeat a vertex
+// after the welding (slivers between such points) are dropped: their other edges pair up.
+void weld_on_plane(Mesh& mesh, const std::vector<bool>& on_plane) {
+  struct Hash {
+    std::size_t operator()(const Vec3& v) const {
+      std::uint64_t h = 0;
+      for (const double c : {v.x, v.y, v.z}) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &c, sizeof bits);
+        h = (h ^ bits) * 0x100000001b3ull;
+      }
+      return static_cast<std::size_t>(h);
+    }
+  };
+  std::unordered_map<Vec3, std::int32_t, Hash> first;
+  std::vector<std::int32_t> to(mesh.vertices.size());
+  bool any = false;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    to[v] = static_cast<std::int32_t>(v);
+    if (!on_plane[v]) continue;
+    const Vec3 p = mesh.vertices[v] + Vec3{0.0, 0.0, 0.0};  // -0 and +0 alike
+    const auto [it, fresh] = first.try_emplace(p, static_cast<std::int32_t>(v));
+    if (!fresh) {
+      to[v] = it->second;
+      any = true;
+    }
+  }
+  if (!any) return;
+  std::size_t m = 0;
+  for (TriangleIndices t : mesh.triangles) {
+    for (auto& i : t)
+      i = to[static_cast<std::size_t>(i)];
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    mesh.triangles[m++] = t;
+  }
+  mesh.triangles.resize(m);
 }
 
 template <class F>
@@ -105,48 +150,28 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
       out.triangles.push_back({poly[0], poly[m], poly[m + 1]});
   }
   if (!cap) return out;
+  weld_on_plane(out, on_plane);
 
-  // Border edges on the plane, chained into loops (directed as the mesh uses them).
+  // Border edges on the plane (directed as the mesh uses them), chained into loops.
   std::unordered_set<Key> directed;
   for (const auto& t : out.triangles) {
     for (int e = 0; e < 3; ++e)
       directed.insert(
           edge_key(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]));
   }
-  std::unordered_map<std::int32_t, std::int32_t> next;
+  std::vector<std::pair<std::int32_t, std::int32_t>> border;
   for (const auto& t : out.triangles) {
     for (int e = 0; e < 3; ++e) {
       const std::int32_t u = t[static_cast<std::size_t>(e)],
                          v = t[static_cast<std::size_t>((e + 1) % 3)];
       if (on_plane[static_cast<std::size_t>(u)] && on_plane[static_cast<std::size_t>(v)] &&
           !directed.contains(edge_key(v, u))) {
-        next.try_emplace(u, v);
+        border.emplace_back(u, v);
       }
     }
   }
-  std::vector<std::vector<std::int32_t>> loops;
-  std::unordered_set<std::int32_t> seen;
-  for (const auto& [start, unused] : next) {
-    (void)unused;
-    if (seen.contains(start)) continue;
-    std::vector<std::int32_t> loop;
-    std::int32_t v = start;
-    bool closed = false;
-    while (!seen.contains(v)) {
-      seen.insert(v);
-      loop.push_back(v);
-      const auto it = next.find(v);
-      if (it == next.end()) break;
-      v = it->second;
-      if (v == start) {
-        closed = true;
-        break;
-      }
-    }
-    if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
-  }
-  if (loops.empty()) return out;
-  // Project along the gradient's largest component.
+  if (border.empty()) return out;
+  // Project along the gradient's largest component (exact: a choice of coordinates).
   const Vec3 n = g.approx;
   const int axis = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z)
                        ? 0
@@ -156,21 +181,75 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
     const Vec3 p = out.vertices[v];
     pts[v] = axis == 0 ? Vec2{p.y, p.z} : (axis == 1 ? Vec2{p.z, p.x} : Vec2{p.x, p.y});
   }
-  // The cap runs along each loop against the mesh's direction: if the outermost loop turns
-  // counter-clockwise in the projection as the mesh uses it, cap triangles turn clockwise.
-  std::size_t outer = 0;
-  double outer_area = 0.0;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    Ring r;
-    for (auto i : loops[l])
-      r.push_back(pts[static_cast<std::size_t>(i)]);
-    const double a = signed_area2(r);
-    if (std::fabs(a) > std::fabs(outer_area)) {
-      outer_area = a;
-      outer = l;
-    }
+  // The cap lies on one side of every border edge: the left when the edges' total signed area
+  // is positive (loops counter-clockwise around the cap, clockwise around its holes).
+  double total = 0.0;
+  for (const auto& [u, v] : border) {
+    const Vec2 a = pts[static_cast<std::size_t>(u)], b = pts[static_cast<std::size_t>(v)];
+    total += a.x * b.y - a.y * b.x;
   }
-  (void)outer;
+  const bool cap_left = total > 0.0;
+  // Chaining: where several border edges leave one vertex (the cut passes through a vertex at
+  // which the cap touches itself or another loop), take the first one turning from the reverse
+  // of the arriving edge towards the cap's side: clockwise for a cap on the left. This keeps the
+  // two sectors meeting there in separate loops (taking any one left edges without a twin).
+  std::unordered_map<std::int32_t, std::vector<std::size_t>> leaving;
+  for (std::size_t i = 0; i < border.size(); ++i)
+    leaving[border[i].first].push_back(i);
+  std::vector<char> used(border.size(), 0);
+  auto next_edge = [&](std::size_t in) -> std::size_t {
+    const std::int32_t u = border[in].first, v = border[in].second;
+    const std::vector<std::size_t>& out_edges = leaving[v];
+    std::size_t best = border.size();
+    for (const std::size_t c : out_edges) {
+      if (used[c]) continue;
+      if (best == border.size()) {
+        best = c;
+        continue;
+      }
+      // Directions swept from the reverse of the arriving edge, v -> u, clockwise for a cap on
+      // the left (counter-clockwise otherwise): 0 the first open half-plane, 1 straight on,
+      // 2 the second half-plane, 3 back along v -> u (last).
+      const Vec2 o = pts[static_cast<std::size_t>(v)], r = pts[static_cast<std::size_t>(u)];
+      const Vec2 wc = pts[static_cast<std::size_t>(border[c].second)];
+      const Vec2 wb = pts[static_cast<std::size_t>(border[best].second)];
+      const int turn = cap_left ? -1 : 1;  // the sign of orient2d(o, r, w) swept first
+      auto sector = [&](Vec2 w) {
+        const int s = to_int(predicates::orient2d(o, r, w)) * turn;
+        if (s != 0) return s > 0 ? 0 : 2;
+        const bool same = (w.x > o.x) == (r.x > o.x) && (w.x < o.x) == (r.x < o.x) &&
+                          (w.y > o.y) == (r.y > o.y) && (w.y < o.y) == (r.y < o.y);
+        return same ? 3 : 1;
+      };
+      const int sc = sector(wc), sb = sector(wb);
+      const bool earlier =
+          sc != sb ? sc < sb
+                   : (sc == 0 || sc == 2) && to_int(predicates::orient2d(o, wb, wc)) * turn < 0;
+      if (earlier) best = c;
+    }
+    return best;
+  };
+  std::vector<std::vector<std::int32_t>> loops;
+  for (std::size_t start = 0; start < border.size(); ++start) {
+    if (used[start]) continue;
+    std::vector<std::int32_t> loop;
+    std::size_t e = start;
+    bool closed = false;
+    while (e < border.size() && !used[e]) {
+      used[e] = 1;
+      loop.push_back(border[e].first);
+      if (border[e].second == border[start].first) {
+        closed = true;
+        break;
+      }
+      e = next_edge(e);
+    }
+    if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  if (loops.empty()) return out;
+  // The cap runs along each loop against the mesh's direction: loops counter-clockwise around
+  // the cap in the projection give clockwise cap triangles.
+  const double outer_area = total;
   const auto cap_triangles = detail::triangulate_loops(loops, pts, !(outer_area > 0.0));
   for (const auto& t : cap_triangles)
     out.triangles.push_back({t[0], t[1], t[2]});

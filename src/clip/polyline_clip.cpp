@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "clip/boolean_arrangement.h"
+#include "clip/boolean/arrangement.h"
 
 namespace contain::clip {
 

@@ -6,9 +6,9 @@
 
 namespace contain::io {
 
-Result<MultiPolygon> read_region(const std::filesystem::path& path) {
+Result<MultiPolygon> read_region(const std::filesystem::path& path, WktNotes* notes) {
   const std::string ext = detail::lower_extension(path);
-  if (ext == ".wkt") return read_wkt(path);
+  if (ext == ".wkt") return read_wkt(path, notes);
   if (ext == ".geojson" || ext == ".json") return read_geojson(path);
   return detail::make_error(
       ErrorKind::unsupported,

@@ -254,16 +254,20 @@ void put_polygon(std::string& out, const Polygon& polygon) {
   put_u32(out, kPolygon);
   put_u32(out, static_cast<std::uint32_t>(polygon.rings.size()));
   for (const Ring& ring : polygon.rings) {
-    const bool closed = !ring.empty() && ring.front() == ring.back();
-    put_u32(out, static_cast<std::uint32_t>(ring.size() + (ring.empty() || closed ? 0 : 1)));
+    // A stored ring is open: the closing point is always written, as the WKT writer does. A ring
+    // that still ends on its first point (read from a doubled closing point) thus reads back the
+    // same, bit for bit (fuzz_wkb found the writer dropping it).
+    if (ring.empty()) {
+      put_u32(out, 0);
+      continue;
+    }
+    put_u32(out, static_cast<std::uint32_t>(ring.size() + 1));
     for (const Vec2& p : ring) {
       put_f64(out, p.x);
       put_f64(out, p.y);
     }
-    if (!ring.empty() && !closed) {
-      put_f64(out, ring.front().x);
-      put_f64(out, ring.front().y);
-    }
+    put_f64(out, ring.front().x);
+    put_f64(out, ring.front().y);
   }
 }
 

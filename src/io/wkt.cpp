@@ -22,8 +22,8 @@ using detail::NumberStatus;
 // The line is counted while skipping white space (tokens never hold a newline).
 class WktReader {
  public:
-  WktReader(std::string_view text, const std::string& source)
-      : p_(text.data()), end_(text.data() + text.size()), source_(source) {}
+  WktReader(std::string_view text, const std::string& source, WktNotes* notes)
+      : p_(text.data()), end_(text.data() + text.size()), source_(source), notes_(notes) {}
 
   Result<MultiPolygon> read() {
     skip_space();
@@ -189,6 +189,7 @@ class WktReader {
         return fail(ErrorKind::parse, "expected ',' or ')' after a coordinate, found " +
                                           detail::quote_token(p_, end_));
       }
+      if (notes_ != nullptr && ring.front() != ring.back()) notes_->unclosed_rings.push_back(line_);
       rings.push_back(std::move(ring));
       skip_space();
       if (eat(',')) continue;
@@ -254,6 +255,7 @@ class WktReader {
   const char* p_;
   const char* end_;
   const std::string& source_;
+  WktNotes* notes_;
   std::int64_t line_ = 1;
   int ordinates_ = 0;  // per coordinate, fixed by the tag or by the first coordinate
 };
@@ -291,14 +293,14 @@ bool has_points(const Polygon& polygon) {
 
 }  // namespace
 
-Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source) {
-  return WktReader(detail::skip_bom(text), source).read();
+Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source, WktNotes* notes) {
+  return WktReader(detail::skip_bom(text), source, notes).read();
 }
 
-Result<MultiPolygon> read_wkt(const std::filesystem::path& path) {
+Result<MultiPolygon> read_wkt(const std::filesystem::path& path, WktNotes* notes) {
   auto text = detail::read_file(path);
   if (!text) return text.error();
-  return parse_wkt(*text, detail::source_name(path));
+  return parse_wkt(*text, detail::source_name(path), notes);
 }
 
 std::string write_wkt(const MultiPolygon& region) {

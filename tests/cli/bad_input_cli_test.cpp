@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "cli/run.h"
 
@@ -339,6 +340,64 @@ TEST(BadInputCli, BinaryGarbageIsExitThreeForEveryFormat) {
       {"inside", "--polygon", dir.write("sq.wkt", "POLYGON ((0 0, 1 0, 1 1))")}, garbage);
   EXPECT_EQ(points.exit_code, 3);
   EXPECT_TRUE(has(points.err, "<stdin>")) << points.err;
+}
+
+// Issue 13: three inputs that were accepted silently.
+TEST(BadInputCli, BoxWithItsMinCornerAboveItsMaxIsExitThreeNamingTheOption) {
+  TempDir dir;
+  const std::string square = dir.write("sq.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))");
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"clip", "--polygon", square, "--box", "3,0,1,1"},
+           {"clip", "--polygon", square, "--box", "0,3,1,1"},
+           {"clip", "--polygon", square, "--tiles", "2,2", "--box", "4,4,0,0"},
+           {"clip", "--segments", dir.write("s.txt", "0 0 1 1\n"), "--box", "0,0,1,-1"},
+           {"clip", "--mesh", dir.write("t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+            "--box", "0,0,2,1,1,1"}}) {
+    const CliRun run = run_contain(args);
+    EXPECT_EQ(run.exit_code, 3) << args[4];
+    EXPECT_TRUE(run.out.empty());
+    EXPECT_TRUE(has(run.err, "--box")) << run.err;
+    EXPECT_TRUE(has(run.err, "min corner")) << run.err;
+  }
+  // A box of zero width is a box: its intersection has no area.
+  const CliRun flat = run_contain({"clip", "--polygon", square, "--box", "1,0,1,4"});
+  EXPECT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_EQ(flat.out, "POLYGON EMPTY\n");
+}
+
+TEST(BadInputCli, NegativeSphereOrCircleRadiusIsExitThreeNamingTheOption) {
+  TempDir dir;
+  CliRun run =
+      run_contain({"clip", "--segments", dir.write("s2.txt", "0 0 1 1\n"), "--circle", "0,0,-1"});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "--circle")) << run.err;
+  EXPECT_TRUE(has(run.err, "negative")) << run.err;
+  run = run_contain(
+      {"clip", "--segments", dir.write("s3.txt", "0 0 0 1 1 1\n"), "--sphere", "0,0,0,-0.5"});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "--sphere")) << run.err;
+  EXPECT_TRUE(run.out.empty());
+  // Radius 0 is the ball of one point.
+  run = run_contain({"clip", "--segments", dir.write("s4.txt", "-1 0 1 0\n"), "--circle", "0,0,0"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, "0 0 0 0\n");
+}
+
+TEST(BadInputCli, UnclosedWktRingIsClosedWithAWarningNamingFileAndLine) {
+  TempDir dir;
+  const std::string open_ring =
+      dir.write("open.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0),\n (1 1, 1 2, 2 2, 2 1))");
+  const CliRun run = run_contain({"clip", "--polygon", open_ring, "--box", "0,0,4,4"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(has(run.err, "open.wkt:2")) << run.err;
+  EXPECT_TRUE(has(run.err, "warning")) << run.err;
+  EXPECT_TRUE(has(run.err, "not closed")) << run.err;
+  EXPECT_EQ(run.out, "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))\n");
+  // Closed rings give no warning.
+  const CliRun closed = run_contain({"clip", "--polygon",
+                                     dir.write("closed.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"),
+                                     "--box", "0,0,4,4"});
+  EXPECT_EQ(closed.err, "");
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <random>
 
+#include "clip/boolean_checks.h"
 #include "clip/polygon_checks.h"
 #include "contain/clip/clip_polygon.h"
+#include "contain/clip/polygon_boolean.h"
 #include "contain/clip/sutherland_hodgman.h"
 #include "scenes/scenes.h"
 
@@ -95,6 +97,82 @@ TEST(ClipPolygon, DemoPolygonWithHolesByAConvexRing) {
   MultiPolygon bridged =
       clip::clip_polygon(of(demo), window, {.output = clip::PolygonClipOutput::bridged});
   EXPECT_NEAR(area(r), area(bridged), 1e-12);
+}
+
+// The class of issue 13's instance on half-planes and convex rings: a hole edge on the line.
+// Inside the half-plane it becomes a notch of the shell; outside, the shell runs along it.
+// Every result is valid (exact check) with the area the boolean engine gives for the same
+// region written as a polygon whose edge lies on the line.
+TEST(ClipPolygon, HoleEdgeOnAHalfPlaneLineOrConvexEdgeBecomesANotch) {
+  const Polygon frame{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                       {{2, 3}, {2, 6}, {4, 6}, {4, 3}},
+                       {{7, 9}, {9, 7}, {7, 7}}}};  // the triangle's long edge lies on x + y = 16
+  struct Case {
+    HalfPlane h;
+    Ring as_polygon;  // the half-plane within [-100, 120]^2, corners exactly on its line
+  };
+  const Case cases[] = {
+      {{-1, 0, 4}, {{-100, -100}, {4, -100}, {4, 110}, {-100, 110}}},  // x <= 4
+      {{1, 0, -4}, {{4, -100}, {110, -100}, {110, 110}, {4, 110}}},    // x >= 4
+      {{1, 0, -2}, {{2, -100}, {110, -100}, {110, 110}, {2, 110}}},    // x >= 2
+      {{0, 1, -3}, {{-100, 3}, {110, 3}, {110, 110}, {-100, 110}}},    // y >= 3
+      {{0, -1, 6}, {{-100, -100}, {110, -100}, {110, 6}, {-100, 6}}},  // y <= 6
+      {{0, -1, 3}, {{-100, -100}, {110, -100}, {110, 3}, {-100, 3}}},  // y <= 3
+      {{-1, -1, 8}, {{-100, -100}, {108, -100}, {-100, 108}}},         // x + y <= 8
+      {{1, 1, -8}, {{108, -100}, {110, -100}, {110, 110}, {-100, 110}, {-100, 108}}}};
+  for (const Case& c : cases) {
+    const std::vector<HalfPlane> planes{c.h};
+    const MultiPolygon r = clip::clip_polygon(of(frame), planes);
+    ASSERT_TRUE(is_valid_ogc(r)) << c.h.a << " " << c.h.b << " " << c.h.c;
+    const MultiPolygon engine = clip::polygon_boolean(frame.rings, std::vector<Ring>{c.as_polygon},
+                                                      {.op = clip::Op::intersection});
+    EXPECT_EQ(exact_signed_area(r), exact_signed_area(engine)) << c.h.a << " " << c.h.c;
+    // The convex ring of the same region gives the same pieces' area and validity.
+    const MultiPolygon by_ring = clip::clip_polygon(of(frame), c.as_polygon);
+    ASSERT_TRUE(is_valid_ogc(by_ring)) << c.h.a << " " << c.h.c;
+    EXPECT_EQ(exact_signed_area(by_ring), exact_signed_area(engine));
+  }
+  // The instance: x <= 4 keeps the square hole as a notch, no hole touching the shell.
+  const MultiPolygon notch = clip::clip_polygon(of(frame), std::vector<HalfPlane>{{-1, 0, 4}});
+  ASSERT_EQ(notch.polygons.size(), 1u);
+  EXPECT_EQ(notch.polygons[0].rings.size(), 1u);  // the shell with the notch
+}
+
+// Convex rings (cut by their box first, then their edges) and half-plane sets with and without
+// axis-parallel members (their box first, then the others): valid pieces with the area of the
+// section's bridged result, on stars and on the demo polygon with holes.
+TEST(ClipPolygon, ConvexRingsAndMixedHalfPlanesGiveValidPiecesOfTheBridgedArea) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const MultiPolygon region =
+        trial % 2 ? of(scenes::demo_polygon())
+                  : of(Polygon{{scenes::star_ring(60 + trial, {0, 0}, 0.2, 1.0,
+                                                  static_cast<std::uint64_t>(trial))}});
+    const double s = trial % 2 ? 2.5 : 1.0;
+    Ring convex;
+    const double cx = 0.5 * s * u(rng), cy = 0.5 * s * u(rng), r = s * (0.2 + std::fabs(u(rng)));
+    const int k = 3 + trial % 6;
+    for (int i = 0; i < k; ++i) {
+      const double a = 2 * M_PI * i / k + trial;
+      convex.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+    }
+    const MultiPolygon by_ring = clip::clip_polygon(region, convex);
+    ASSERT_TRUE(is_valid_ogc(by_ring)) << trial;
+    const MultiPolygon bridged_ring =
+        clip::clip_polygon(region, convex, {.output = clip::PolygonClipOutput::bridged});
+    EXPECT_NEAR(area(by_ring), area(bridged_ring), 1e-12 * s * s) << trial;
+    std::vector<HalfPlane> planes = {{1, 0, s * 0.3 * u(rng)}, {0, -1, s * 0.5}};
+    for (int i = 0; i < trial % 3; ++i) {
+      const double a = u(rng) * M_PI;
+      planes.push_back({std::cos(a), std::sin(a), 0.4 * s * u(rng)});
+    }
+    const MultiPolygon by_planes = clip::clip_polygon(region, planes);
+    ASSERT_TRUE(is_valid_ogc(by_planes)) << trial;
+    const MultiPolygon bridged_planes =
+        clip::clip_polygon(region, planes, {.output = clip::PolygonClipOutput::bridged});
+    EXPECT_NEAR(area(by_planes), area(bridged_planes), 1e-12 * s * s) << trial;
+  }
 }
 
 }  // namespace

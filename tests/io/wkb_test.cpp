@@ -149,6 +149,20 @@ TEST(Wkb, WriterRoundTripsEveryDoubleBitForBitAndMatchesTheWktReading) {
   EXPECT_EQ(one->polygons[0].rings[0], kSquare);
 }
 
+// fuzz_wkb: a ring given with its closing point twice is stored ending on its first point; the
+// writer once took that for the closing point and dropped it, so the ring lost a point on the way
+// back.
+TEST(Wkb, ARingStillEndingOnItsFirstPointSurvivesTheWriter) {
+  const Ring ring{{0, 0}, {4, 0}, {2, 3}, {0, 0}};
+  const MultiPolygon region{{Polygon{{ring}}}};
+  auto back = parse_wkb(write_wkb(region), "w");
+  ASSERT_TRUE(back.ok()) << back.error().what();
+  EXPECT_EQ(back->all_rings(), region.all_rings());
+  auto via_wkt = parse_wkt(write_wkt(region), "t");
+  ASSERT_TRUE(via_wkt.ok());
+  EXPECT_EQ(*back, *via_wkt);
+}
+
 TEST(Wkb, NamesOtherGeometryTypesAsUnsupported) {
   Bytes point(false);
   point.order().u32(1).f64(1).f64(2);

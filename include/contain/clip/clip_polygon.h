@@ -46,18 +46,32 @@ struct PolygonClipOptions {
 /// `sutherland_hodgman`. For input that is not OGC-valid (self-intersecting rings) the pieces
 /// cover the clipped area but are not guaranteed valid.
 ///
-/// Complexity: O(n log n) per half-plane for n vertices, plus O(h s) for h uncut holes and s
-/// pieces.
+/// Half-planes x >= k, x <= k, y >= k, y <= k (coefficients 0 and +-1, so k is exact) are taken
+/// together as a box by the one-pass box cut below; the others then cut its pieces one after
+/// the other. Each cut reads every ring once; a run of points strictly outside costs one
+/// floating-point filter a point and is kept as its two ends (the chord lies outside too).
+///
+/// Complexity: O(n) per half-plane for n vertices (the box part: one pass with outcodes), plus
+/// O(c log c) for c chain ends and O(h s) for h uncut holes and s pieces.
 [[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region,
                                         std::span<const HalfPlane> half_planes,
                                         const PolygonClipOptions& options = {});
 
-/// By a closed box: its four half-planes (crossing coordinates on the box's sides exactly).
+/// By a closed box, in one pass over each ring with Cohen-Sutherland outcodes, all four sides at
+/// once (docs/clipping.md): runs of points beyond one side cost a comparison a point; the edges
+/// that can reach the box are cut with exact decisions (outcodes, orient2d with the corners);
+/// the pieces are linked into chains from entry to exit on the boundary, and each exit joins the
+/// next entry counter-clockwise through the corners between them. An edge lying on a side stays
+/// when the region is on the box's side of it, so a hole whose edge lies on a side becomes a
+/// notch of the shell. Crossing points lie on their side exactly (the other coordinate rounded,
+/// with a proven error bound); where rounding or a degeneracy could change the topology (see
+/// src/clip/box_cut.h) the region goes to `polygon_boolean` with the box, exact and valid in
+/// every case. O(n) for n vertices. For many boxes against one region, `BoxClipper`.
 [[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region, const Box2& box,
                                         const PolygonClipOptions& options = {});
 
-/// By a convex ring (either direction, see `sutherland_hodgman`); its edges' sides are exact
-/// orient2d tests.
+/// By a convex ring (either direction, see `sutherland_hodgman`): the box cut by the ring's
+/// bounding box first, then the ring's edges (exact orient2d sides) cut its pieces.
 [[nodiscard]] MultiPolygon clip_polygon(const MultiPolygon& region, const Ring& convex_ring,
                                         const PolygonClipOptions& options = {});
 

@@ -33,8 +33,12 @@ struct MeshClipOptions {
 /// made once per mesh edge (from its lower-index end), so neighbouring triangles share them and
 /// the result stays welded; they are rounded (a few ulps), and exact on box faces.
 ///
-/// With `MeshCut::cap`, the border edges that lie on the plane (ends on the plane or cut) are
-/// chained into loops, nested by the even-odd rule, and each region between them is
+/// With `MeshCut::cap`, points on the plane with equal coordinates are welded (crossing points
+/// of edges leaving a vertex within rounding distance of the plane round together; the slivers
+/// between them are dropped), the border edges that lie on the plane (ends on the plane or cut)
+/// are chained into loops (where two leave one vertex, the one turning first towards the cap,
+/// so a cap touching itself at a vertex gives separate loops), nested by the even-odd rule,
+/// and each region between them is
 /// triangulated (holes bridged to their outer loop, then ear clipping with exact orient2d in the
 /// plane's dominant projection), its triangles turned to face out of the half-space: for a
 /// closed, consistently oriented (2-manifold along the cut) mesh the result is again closed and

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "contain/core/result.h"
+#include "contain/io/wkt.h"
 #include "contain/shapes/polygon.h"
 
 namespace contain::io {
@@ -12,6 +13,8 @@ namespace contain::io {
 /// Reads a region: `.wkt` with `read_wkt`, `.geojson` (and `.json`) with `read_geojson`; the
 /// extension is compared case-insensitively. Another extension is ErrorKind::unsupported naming
 /// it; every reader error comes back as is (source = the path, line where one applies).
-[[nodiscard]] Result<MultiPolygon> read_region(const std::filesystem::path& path);
+/// `notes`, when given, receives what a WKT file held that OGC WKT does not allow.
+[[nodiscard]] Result<MultiPolygon> read_region(const std::filesystem::path& path,
+                                               WktNotes* notes = nullptr);
 
 }  // namespace contain::io

@@ -3,14 +3,23 @@
 /// Well-known text (OGC Simple Features, ISO 19125-1 §7) for 2D regions: POLYGON and
 /// MULTIPOLYGON, read and written.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "contain/core/result.h"
 #include "contain/shapes/polygon.h"
 
 namespace contain::io {
+
+/// What a WKT reader accepted that OGC WKT does not allow, as data (the CLI words it).
+struct WktNotes {
+  /// The 1-based line of each ring that ends without repeating its first point: it is read as
+  /// closed (a ring always joins its last point to its first).
+  std::vector<std::int64_t> unclosed_rings;
+};
 
 /// Parses one POLYGON or MULTIPOLYGON.
 ///
@@ -19,7 +28,7 @@ namespace contain::io {
 /// coordinates of 3 or 4 ordinates — every extra ordinate (z, m) is dropped, as the region is 2D;
 /// any white space and newlines between tokens; an EWKT `SRID=n;` prefix (ignored). A POLYGON gives
 /// a MultiPolygon of one polygon. Rings go through `Polygon::from_rings`: the closing point is
-/// dropped (an unclosed ring is accepted as closed).
+/// dropped (an unclosed ring is accepted as closed, and its line is added to `notes`).
 ///
 /// Errors, each naming `source` and the 1-based line: ErrorKind::parse (unknown keyword, missing
 /// parenthesis or comma, text that is not a number, trailing text, empty input, coordinates of
@@ -28,10 +37,12 @@ namespace contain::io {
 /// ErrorKind::degenerate (a ring of fewer than 3 distinct points). Numbers are read with
 /// std::from_chars, so the shortest round-trip decimal of a double reads back as exactly that
 /// double. Linear time.
-[[nodiscard]] Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source);
+[[nodiscard]] Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source,
+                                             WktNotes* notes = nullptr);
 
 /// Reads a WKT file (see `parse_wkt`); a missing or unreadable file is ErrorKind::io.
-[[nodiscard]] Result<MultiPolygon> read_wkt(const std::filesystem::path& path);
+[[nodiscard]] Result<MultiPolygon> read_wkt(const std::filesystem::path& path,
+                                            WktNotes* notes = nullptr);
 
 /// `MULTIPOLYGON (((x y, ...)), ...)`, or `MULTIPOLYGON EMPTY` when there is no polygon, with
 /// every ring closed (its first point repeated) and every coordinate written as the shortest

@@ -1,5 +1,5 @@
 #pragma once
-// The uniform grid of candidate pairs of a noding round (boolean_noding.cpp). Private to the
+// The uniform grid of candidate pairs of a noding round (noding.cpp). Private to the
 // polygon booleans.
 
 #include <algorithm>
@@ -84,6 +84,9 @@ class CellGrid {
     for (const auto& e : entries_)
       cell_items_[fill_[e.first]++] = e.second;
   }
+  /// How far beyond its line (and box) each item is listed, in x and in y.
+  [[nodiscard]] double widening_x() const { return ex_; }
+  [[nodiscard]] double widening_y() const { return ey_; }
   [[nodiscard]] std::span<const std::uint32_t> items_in(std::uint32_t cell) const {
     return {cell_items_.data() + cell_first_[cell], cell_first_[cell + 1] - cell_first_[cell]};
   }

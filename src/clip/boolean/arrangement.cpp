@@ -1,6 +1,7 @@
 // The arrangement behind the polygon booleans.
 //
-// 1. Noding (boolean_noding.cpp): every input edge becomes a chain of pieces that meet other
+// Stages, one function each (extraction in extract.cpp):
+// 1. Noding (noding.cpp): every input edge becomes a chain of pieces that meet other
 //    pieces only at shared endpoints.
 // 2. Graph: the points that something else meets (Noded::event), split points and path ends
 //    are vertices; equal ones merge (sorted by (x, y)). Every run of pieces from a vertex along
@@ -27,33 +28,24 @@
 //    are shells, clockwise ones holes, and a hole joins the shell whose kept faces are connected
 //    to its own across non-boundary edges.
 
-#include "clip/boolean_arrangement.h"
+#include "clip/boolean/arrangement.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
-#include <numeric>
 #include <utility>
 #include <vector>
 
+#include "clip/boolean/graph_helpers.h"
 #include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 
 namespace contain::clip::detail {
 namespace {
 
+using graph::half_of;
+using graph::kNone;
+using graph::lex_less;
 using predicates::orient2d;
-
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-bool lex_less(Vec2 a, Vec2 b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
-
-// 0 for directions in [0, pi), 1 for [pi, 2 pi).
-int half_of(Vec2 o, Vec2 p) {
-  return (p.y > o.y || (p.y == o.y && p.x > o.x)) ? 0 : 1;
-}
 
 // Both pieces cross the line y = c (lo.y <= c < hi.y) and meet at most in endpoints: true when
 // t crosses it right of s. The higher of the two lower endpoints lies within the other's y span,
@@ -69,7 +61,36 @@ bool crosses_right_of(Vec2 s_lo, Vec2 s_hi, Vec2 t_lo, Vec2 t_hi) {
   return o == Sign::positive;  // s left of t
 }
 
+// Consecutive segments of one path: the first ends where the next starts, with the same label.
+std::vector<char> links_by_labels(const ArrangementInput& input) {
+  const std::size_t n = input.segments.size();
+  std::vector<char> links(n, 0);
+  for (std::size_t c = 0; c + 1 < n; ++c) {
+    const SegmentLabel l = input.labels[c], r = input.labels[c + 1];
+    links[c] = (input.segments[c].b == input.segments[c + 1].a && l.a == r.a && l.b == r.b &&
+                l.open == r.open)
+                   ? 1
+                   : 0;
+  }
+  return links;
+}
+
 }  // namespace
+
+struct Arrangement::Piece {
+  std::uint64_t key;
+  std::uint32_t piece;
+  std::int32_t a, b;  // multiplicity along key's u -> v
+  bool open;
+  bool flipped;
+};
+
+struct Arrangement::Lowest {
+  Vec2 p;
+  std::uint32_t vertex = kNone;
+  std::uint32_t edge = kNone;
+  std::uint32_t k = 0;
+};
 
 void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label) {
   for (const Ring& ring : rings) {
@@ -85,33 +106,43 @@ void ArrangementInput::add_rings(std::span<const Ring> rings, SegmentLabel label
 }
 
 Arrangement::Arrangement(const ArrangementInput& input) {
-  // Consecutive segments of one path: the first ends where the next starts, with the same label.
-  const std::size_t n = input.segments.size();
   std::vector<char> computed;
-  if (input.links.size() != n) {
-    computed.assign(n, 0);
-    for (std::size_t c = 0; c + 1 < n; ++c) {
-      const SegmentLabel l = input.labels[c], r = input.labels[c + 1];
-      computed[c] = (input.segments[c].b == input.segments[c + 1].a && l.a == r.a && l.b == r.b &&
-                     l.open == r.open)
-                        ? 1
-                        : 0;
-    }
-  }
+  if (input.links.size() != input.segments.size()) computed = links_by_labels(input);
   const std::span<const char> links =
-      input.links.size() == n ? std::span<const char>(input.links) : computed;
+      input.links.size() == input.segments.size() ? std::span<const char>(input.links) : computed;
   noded_ = node_segments(input.segments, links, input.magnitude);
   crossings = noded_.crossings;
   rounds = noded_.rounds;
   converged = noded_.converged;
-  build_graph(input, links);
-  label_faces();
+  // The graph.
+  const std::vector<std::uint32_t> vid = number_vertices(input, links);
+  std::vector<Piece> pieces = collect_runs(input, links, vid);
+  merge_single_pieces(pieces, input.open_paths);
+  edges = static_cast<std::int64_t>(edge_.size());
+  sort_half_edges();
+  // Its faces and their winding numbers, component by component.
+  const std::vector<std::int32_t> face_start = trace_faces();
+  const std::size_t nf = face_start.size();
+  face_a_.assign(nf, 0);
+  face_b_.assign(nf, 0);
+  std::vector<std::uint32_t> edge_root;
+  std::vector<char> has;
+  const std::vector<Lowest> lowest = lowest_points(edge_root, has);
+  std::vector<char> done(nf, 0);
+  std::vector<std::int32_t> queue;
+  for (std::size_t root = 0; root < lowest.size(); ++root) {
+    if (!has[root]) continue;
+    const std::int32_t f0 = outer_face(lowest[root]);
+    label_outer_face(static_cast<std::uint32_t>(root), lowest[root], f0, edge_root);
+    done[f0] = 1;
+    spread_labels(f0, face_start, done, queue);
+  }
 }
 
-void Arrangement::build_graph(const ArrangementInput& input, std::span<const char> links) {
+std::vector<std::uint32_t> Arrangement::number_vertices(const ArrangementInput& input,
+                                                        std::span<const char> links) {
   const std::vector<Vec2>& pts = noded_.points;
   const std::vector<std::uint32_t>& first = noded_.first;
-  const std::size_t np = pts.size();
   const std::size_t nchains = input.segments.size();
   // Which points are vertices: the noding's events, the ends of paths, every point of an open
   // path (polyline_clip reads its pieces one by one). The end of a linked segment is the start
@@ -142,34 +173,38 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
   std::sort(order.begin(), order.end(), [](const Keyed& l, const Keyed& r) {
     return lex_less(l.p, r.p) || (l.p == r.p && l.i < r.i);
   });
-  // vid: the vertex of a point, kNone for the others and for aliases (see vertex_of).
-  std::vector<std::uint32_t> vid(np, kNone);
+  // vid: the vertex of a point, kNone for the others and for aliases (see collect_runs).
+  std::vector<std::uint32_t> vid(pts.size(), kNone);
   vertex_.clear();
   vertex_.reserve(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (i == 0 || order[i].p != order[i - 1].p) vertex_.push_back(order[i].p);
     vid[order[i].i] = static_cast<std::uint32_t>(vertex_.size() - 1);
   }
-  // The end of a linked segment (an alias) has the vertex of the next segment's start.
-  auto alias = [&](std::uint32_t k, std::size_t c) {
-    return k + 1 == first[c + 1] && links[c] != 0;
-  };
   origin_.assign(vertex_.size(), kNone);
   for (std::size_t c = nchains; c-- > 0;) {
     const std::uint32_t v = vid[first[c]];
     if (v != kNone) origin_[v] = static_cast<std::uint32_t>(c);
   }
+  return vid;
+}
+
+std::vector<Arrangement::Piece> Arrangement::collect_runs(const ArrangementInput& input,
+                                                          std::span<const char> links,
+                                                          const std::vector<std::uint32_t>& vid) {
+  const std::vector<Vec2>& pts = noded_.points;
+  const std::vector<std::uint32_t>& first = noded_.first;
+  const std::size_t np = pts.size();
+  const std::size_t nchains = input.segments.size();
+  const bool any_open = input.open_paths;
+  // The end of a linked segment (an alias) has the vertex of the next segment's start.
+  auto alias = [&](std::uint32_t k, std::size_t c) {
+    return k + 1 == first[c + 1] && links[c] != 0;
+  };
   // Runs: from a vertex along the path through points that are no vertex, to the next vertex.
   // A run of several pieces is an edge of its own (another piece equal to one of its pieces
   // would meet its inner points); single pieces, keyed by their vertex pair, merge into edges.
   // The pieces of a run have consecutive ids (point index - segment index).
-  struct Piece {
-    std::uint64_t key;
-    std::uint32_t piece;
-    std::int32_t a, b;  // multiplicity along key's u -> v
-    bool open;
-    bool flipped;
-  };
   std::vector<Piece> pieces;
   // Pieces to half-edges, for polyline_clip's open paths only.
   piece_half_.assign(any_open ? np - nchains : 0, -1);
@@ -223,6 +258,10 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     c = cc;
     k = h;
   }
+  return pieces;
+}
+
+void Arrangement::merge_single_pieces(std::vector<Piece>& pieces, bool any_open) {
   std::sort(pieces.begin(), pieces.end(),
             [](const Piece& l, const Piece& r) { return l.key < r.key; });
   for (std::size_t i = 0; i < pieces.size();) {
@@ -244,7 +283,9 @@ void Arrangement::build_graph(const ArrangementInput& input, std::span<const cha
     }
     i = j;
   }
-  edges = static_cast<std::int64_t>(edge_.size());
+}
+
+void Arrangement::sort_half_edges() {
   // Outgoing half-edges per vertex, sorted counter-clockwise from +x by the direction of their
   // first piece.
   const std::size_t nv = vertex_.size();
@@ -305,7 +346,7 @@ std::int32_t Arrangement::next(std::int32_t h) const {
   return out_[b + (p == 0 ? deg - 1 : p - 1)];
 }
 
-void Arrangement::label_faces() {
+std::vector<std::int32_t> Arrangement::trace_faces() {
   const std::size_t nh = 2 * edge_.size();
   face_.assign(nh, -1);
   std::vector<std::int32_t> face_start;
@@ -319,10 +360,11 @@ void Arrangement::label_faces() {
       g = next(g);
     } while (g != static_cast<std::int32_t>(h));
   }
-  const std::size_t nf = face_start.size();
-  face_a_.assign(nf, 0);
-  face_b_.assign(nf, 0);
-  std::vector<char> done(nf, 0);
+  return face_start;
+}
+
+std::vector<Arrangement::Lowest> Arrangement::lowest_points(std::vector<std::uint32_t>& edge_root,
+                                                            std::vector<char>& has) const {
   const std::vector<Vec2>& pts = noded_.points;
   // Components of the graph, and the lowest (x, y) point of each, a vertex or a point inside a
   // run (ids of the lowest vertex, or kNone and the run's edge and point index).
@@ -330,15 +372,9 @@ void Arrangement::label_faces() {
   UnionFind<std::uint32_t> comp(nv);
   for (const Edge& e : edge_)
     comp.unite(e.u, e.v);
-  struct Lowest {
-    Vec2 p;
-    std::uint32_t vertex = kNone;
-    std::uint32_t edge = kNone;
-    std::uint32_t k = 0;
-  };
   std::vector<Lowest> lowest(nv);
-  std::vector<char> has(nv, 0);
-  std::vector<std::uint32_t> edge_root(edge_.size());
+  has.assign(nv, 0);
+  edge_root.resize(edge_.size());
   for (std::uint32_t ei = 0; ei < edge_.size(); ++ei) {
     const Edge& e = edge_[ei];
     const std::uint32_t root = comp.find(e.u);
@@ -356,222 +392,100 @@ void Arrangement::label_faces() {
       has[root] = 1;
     }
   }
-  std::vector<std::int32_t> queue;
-  for (std::size_t root = 0; root < nv; ++root) {
-    if (!has[root]) continue;
-    const Lowest& low = lowest[root];
-    const Vec2 o = low.p;
-    std::int32_t f0 = -1;
-    if (low.vertex != kNone) {
-      // The outer face is left of the last half-edge of the upper half-plane (or the last one).
-      const std::uint32_t v0 = low.vertex;
-      const std::uint32_t deg = out_first_[v0 + 1] - out_first_[v0];
-      std::uint32_t upper = 0;
-      for (std::uint32_t i = 0; i < deg; ++i) {
-        const std::int32_t h = out_[out_first_[v0] + i];
-        if (half_of(o, (h & 1) ? edge_[h >> 1].dv : edge_[h >> 1].du) == 0) ++upper;
-      }
-      f0 = face_[out_[out_first_[v0] + (upper > 0 ? upper - 1 : deg - 1)]];
-    } else {
-      // A run passes a -> o -> b with a and b above o in (x, y) order: the direction -x from o
-      // is left of the run when b turns counter-clockwise from a.
-      const Vec2 a = pts[low.k - 1];
-      const Vec2 b = pts[low.k + 1] != o ? pts[low.k + 1] : pts[low.k + 2];
-      const bool left = orient2d(o, a, b) == Sign::positive;
-      f0 = face_[2 * low.edge + (left ? 0 : 1)];
-    }
-    // Winding numbers of o: pieces of the other components crossing the open ray towards -x
-    // (half-open rule: an endpoint on the ray's line counts as below it; none passes through o).
-    int wa = 0, wb = 0;
-    std::int32_t nearest = -1;  // the edge hit first by the ray: the face around C is beside it
-    Vec2 near_lo, near_hi;
-    bool near_up = false;
-    auto piece = [&](std::int32_t ei, const Edge& e, Vec2 p, Vec2 q) {
-      const bool pb = p.y <= o.y, qb = q.y <= o.y;
-      if (pb == qb) return;
-      if (p.x >= o.x && q.x >= o.x) return;
-      // Upward orientation lo -> hi; the crossing is left of o when o is right of lo -> hi.
-      const bool up = pb;  // p below: the edge goes up here
-      const Vec2 lo = up ? p : q, hi = up ? q : p;
-      if (orient2d(lo, hi, o) != Sign::negative) return;
-      // Crossing from far left to o over an upward edge goes from its left to its right.
-      wa += up ? -e.a : e.a;
-      wb += up ? -e.b : e.b;
-      if (nearest < 0 || crosses_right_of(near_lo, near_hi, lo, hi)) {
-        nearest = ei;
-        near_lo = lo;
-        near_hi = hi;
-        near_up = up;
-      }
-    };
-    for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
-      // All points of the component are at or after o in (x, y) order: none meets the ray.
-      if (edge_root[ei] == root) continue;
-      const Edge& e = edge_[ei];
-      const auto id = static_cast<std::int32_t>(ei);
-      if (e.i0 == kPlain) {
-        piece(id, e, vertex_[e.u], vertex_[e.v]);
-      } else {
-        for (std::uint32_t k = e.i0; k < e.i1; ++k)
-          piece(id, e, pts[k], pts[k + 1]);
-      }
-    }
-    if (nearest >= 0) {
-      // East of the upward piece lo -> hi is right of it: the face left of the reverse
-      // half-edge when the edge runs upward there.
-      face_links_.emplace_back(f0, face_[2 * nearest + (near_up ? 1 : 0)]);
-    }
-    face_a_[f0] = wa;
-    face_b_[f0] = wb;
-    done[f0] = 1;
-    queue.assign(1, f0);
-    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
-      const std::int32_t f = queue[qi];
-      const std::int32_t start = face_start[f];
-      std::int32_t g = start;
-      do {
-        const std::int32_t r = face_[g ^ 1];
-        if (!done[r]) {
-          const Edge& e = edge_[g >> 1];
-          const int s = (g & 1) ? -1 : 1;
-          face_a_[r] = face_a_[f] - s * e.a;
-          face_b_[r] = face_b_[f] - s * e.b;
-          done[r] = 1;
-          queue.push_back(r);
-        }
-        g = next(g);
-      } while (g != start);
-    }
-  }
+  return lowest;
 }
 
-MultiPolygon Arrangement::extract(const std::function<bool(int, int)>& keep) const {
-  const std::size_t nf = face_a_.size();
-  const std::size_t nh = face_.size();
-  std::vector<char> in(nf);
-  for (std::size_t f = 0; f < nf; ++f)
-    in[f] = keep(face_a_[f], face_b_[f]) ? 1 : 0;
-  auto boundary = [&](std::int32_t h) { return in[face_[h]] && !in[face_[h ^ 1]]; };
-  // Regions: kept faces connected across kept-kept edges.
-  UnionFind<std::uint32_t> region(nf);
-  for (const auto& [f, g] : face_links_) {
-    if (in[f]) region.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(g));
+std::int32_t Arrangement::outer_face(const Lowest& low) const {
+  const std::vector<Vec2>& pts = noded_.points;
+  const Vec2 o = low.p;
+  if (low.vertex != kNone) {
+    // The outer face is left of the last half-edge of the upper half-plane (or the last one).
+    const std::uint32_t v0 = low.vertex;
+    const std::uint32_t deg = out_first_[v0 + 1] - out_first_[v0];
+    std::uint32_t upper = 0;
+    for (std::uint32_t i = 0; i < deg; ++i) {
+      const std::int32_t h = out_[out_first_[v0] + i];
+      if (half_of(o, (h & 1) ? edge_[h >> 1].dv : edge_[h >> 1].du) == 0) ++upper;
+    }
+    return face_[out_[out_first_[v0] + (upper > 0 ? upper - 1 : deg - 1)]];
   }
-  for (std::size_t h = 0; h < nh; h += 2) {
-    if (in[face_[h]] && in[face_[h + 1]]) {
-      region.unite(static_cast<std::uint32_t>(face_[h]), static_cast<std::uint32_t>(face_[h + 1]));
+  // A run passes a -> o -> b with a and b above o in (x, y) order: the direction -x from o
+  // is left of the run when b turns counter-clockwise from a.
+  const Vec2 a = pts[low.k - 1];
+  const Vec2 b = pts[low.k + 1] != o ? pts[low.k + 1] : pts[low.k + 2];
+  const bool left = orient2d(o, a, b) == Sign::positive;
+  return face_[2 * low.edge + (left ? 0 : 1)];
+}
+
+void Arrangement::label_outer_face(std::uint32_t root, const Lowest& low, std::int32_t f0,
+                                   const std::vector<std::uint32_t>& edge_root) {
+  const std::vector<Vec2>& pts = noded_.points;
+  const Vec2 o = low.p;
+  // Winding numbers of o: pieces of the other components crossing the open ray towards -x
+  // (half-open rule: an endpoint on the ray's line counts as below it; none passes through o).
+  int wa = 0, wb = 0;
+  std::int32_t nearest = -1;  // the edge hit first by the ray: the face around C is beside it
+  Vec2 near_lo, near_hi;
+  bool near_up = false;
+  auto piece = [&](std::int32_t ei, const Edge& e, Vec2 p, Vec2 q) {
+    const bool pb = p.y <= o.y, qb = q.y <= o.y;
+    if (pb == qb) return;
+    if (p.x >= o.x && q.x >= o.x) return;
+    // Upward orientation lo -> hi; the crossing is left of o when o is right of lo -> hi.
+    const bool up = pb;  // p below: the edge goes up here
+    const Vec2 lo = up ? p : q, hi = up ? q : p;
+    if (orient2d(lo, hi, o) != Sign::negative) return;
+    // Crossing from far left to o over an upward edge goes from its left to its right.
+    wa += up ? -e.a : e.a;
+    wb += up ? -e.b : e.b;
+    if (nearest < 0 || crosses_right_of(near_lo, near_hi, lo, hi)) {
+      nearest = ei;
+      near_lo = lo;
+      near_hi = hi;
+      near_up = up;
+    }
+  };
+  for (std::size_t ei = 0; ei < edge_.size(); ++ei) {
+    // All points of the component are at or after o in (x, y) order: none meets the ray.
+    if (edge_root[ei] == root) continue;
+    const Edge& e = edge_[ei];
+    const auto id = static_cast<std::int32_t>(ei);
+    if (e.i0 == kPlain) {
+      piece(id, e, vertex_[e.u], vertex_[e.v]);
+    } else {
+      for (std::uint32_t k = e.i0; k < e.i1; ++k)
+        piece(id, e, pts[k], pts[k + 1]);
     }
   }
-  struct Loop {
-    Ring ring;
-    std::uint32_t region;
-    bool shell;
-    std::uint32_t key;  // earliest input segment starting at one of its points, else kNone
-  };
-  std::vector<Loop> loops;
-  std::vector<char> used(nh, 0);
-  std::vector<std::int32_t> stack;
-  std::vector<std::int32_t> mark(vertex_.size(), -1);
-  const std::vector<std::uint32_t>& first = noded_.first;
-  auto emit = [&](std::span<const std::int32_t> hs) {
-    Loop loop;
-    loop.region = region.find(static_cast<std::uint32_t>(face_[hs[0]]));
-    Ring& ring = loop.ring;
-    std::uint32_t key = kNone;
-    std::size_t k = 0;
-    for (const std::int32_t h : hs) {
-      const std::uint32_t t = tail(h);
-      if (origin_[t] < key) {
-        key = origin_[t];
-        k = ring.size();
-      }
-      const Edge& e = edge_[h >> 1];
-      const std::size_t before = ring.size();
-      append_points(h, ring);
-      if (e.i0 == kPlain) continue;
-      // Points inside a run are joints, each the start of the segment after the one that ends
-      // there: the earliest is the end of the segment holding i0, first in the run's direction.
-      if (ring.size() == before + 1) continue;
-      const auto seg = static_cast<std::uint32_t>(
-          std::upper_bound(first.begin(), first.end(), e.i0) - first.begin());
-      if (seg < key) {
-        key = seg;
-        k = (h & 1) ? ring.size() - 1 : before + 1;
-      }
-    }
-    // The lowest point is convex: its turn gives the orientation.
-    const std::size_t n = ring.size();
-    std::size_t m = 0;
-    for (std::size_t i = 1; i < n; ++i) {
-      if (lex_less(ring[i], ring[m])) m = i;
-    }
-    loop.shell = orient2d(ring[(m + n - 1) % n], ring[m], ring[(m + 1) % n]) == Sign::positive;
-    loop.key = key;
-    if (key == kNone) k = m;
-    std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(k), ring.end());
-    loops.push_back(std::move(loop));
-  };
-  for (std::size_t h0 = 0; h0 < nh; ++h0) {
-    const auto start = static_cast<std::int32_t>(h0);
-    if (used[h0] || !boundary(start)) continue;
-    stack.clear();
-    std::int32_t h = start;
+  if (nearest >= 0) {
+    // East of the upward piece lo -> hi is right of it: the face left of the reverse
+    // half-edge when the edge runs upward there.
+    face_links_.emplace_back(f0, face_[2 * nearest + (near_up ? 1 : 0)]);
+  }
+  face_a_[f0] = wa;
+  face_b_[f0] = wb;
+}
+
+void Arrangement::spread_labels(std::int32_t f0, const std::vector<std::int32_t>& face_start,
+                                std::vector<char>& done, std::vector<std::int32_t>& queue) {
+  queue.assign(1, f0);
+  for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+    const std::int32_t f = queue[qi];
+    const std::int32_t start = face_start[f];
+    std::int32_t g = start;
     do {
-      used[h] = 1;
-      const std::uint32_t x = tail(h);
-      if (mark[x] >= 0) {
-        const auto from = static_cast<std::size_t>(mark[x]);
-        emit(std::span<const std::int32_t>(stack).subspan(from));
-        for (std::size_t i = from; i < stack.size(); ++i)
-          mark[tail(stack[i])] = -1;
-        stack.resize(from);
+      const std::int32_t r = face_[g ^ 1];
+      if (!done[r]) {
+        const Edge& e = edge_[g >> 1];
+        const int s = (g & 1) ? -1 : 1;
+        face_a_[r] = face_a_[f] - s * e.a;
+        face_b_[r] = face_b_[f] - s * e.b;
+        done[r] = 1;
+        queue.push_back(r);
       }
-      mark[x] = static_cast<std::int32_t>(stack.size());
-      stack.push_back(h);
-      // Next boundary half-edge: the first clockwise from the reverse of h.
-      const std::uint32_t v = head(h);
-      const std::uint32_t b = out_first_[v], deg = out_first_[v + 1] - b;
-      std::uint32_t p = pos_[h ^ 1];
-      std::int32_t g = -1;
-      for (std::uint32_t i = 0; i < deg; ++i) {
-        p = p == 0 ? deg - 1 : p - 1;
-        if (boundary(out_[b + p])) {
-          g = out_[b + p];
-          break;
-        }
-      }
-      h = g;
-    } while (h != start && h >= 0);
-    emit(stack);
-    for (std::int32_t s : stack)
-      mark[tail(s)] = -1;
+      g = next(g);
+    } while (g != start);
   }
-  // Polygons: one shell per region, its holes after it.
-  std::vector<std::int32_t> shell_of(nf, -1);
-  for (std::size_t i = 0; i < loops.size(); ++i) {
-    if (loops[i].shell) shell_of[loops[i].region] = static_cast<std::int32_t>(i);
-  }
-  std::vector<std::size_t> order(loops.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  // By the earliest input vertex, then the first point: ties keep the order found.
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) {
-    if (loops[l].key != loops[r].key) return loops[l].key < loops[r].key;
-    return lex_less(loops[l].ring.front(), loops[r].ring.front());
-  });
-  MultiPolygon out;
-  std::vector<std::int32_t> polygon_of(loops.size(), -1);
-  for (std::size_t i : order) {
-    if (!loops[i].shell) continue;
-    polygon_of[i] = static_cast<std::int32_t>(out.polygons.size());
-    out.polygons.push_back(Polygon{{std::move(loops[i].ring)}});
-  }
-  for (std::size_t i : order) {
-    if (loops[i].shell) continue;
-    const std::int32_t s = shell_of[loops[i].region];
-    if (s < 0) continue;  // cannot happen for a bounded kept region
-    out.polygons[polygon_of[s]].rings.push_back(std::move(loops[i].ring));
-  }
-  return out;
 }
 
 }  // namespace contain::clip::detail

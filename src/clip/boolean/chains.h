@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "clip/boolean_noding.h"
+#include "clip/boolean/noding.h"
 
 namespace contain::clip::detail {
 

@@ -1,4 +1,4 @@
-#include "clip/boolean_chains.h"
+#include "clip/boolean/chains.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "clip/boolean_noding.h"
+#include "clip/boolean/noding.h"
 #include "contain/shapes/polygon.h"
 
 namespace contain::clip::detail {
@@ -94,8 +94,43 @@ class Arrangement {
     return (h & 1) ? edge_[h >> 1].u : edge_[h >> 1].v;
   }
   [[nodiscard]] std::int32_t next(std::int32_t h) const;
-  void build_graph(const ArrangementInput& input, std::span<const char> links);
-  void label_faces();
+
+  // Stages of the constructor (arrangement.cpp): the graph of the noded pieces ...
+  // The vertices (events, path ends, open paths' points), sorted and merged; vid per point.
+  [[nodiscard]] std::vector<std::uint32_t> number_vertices(const ArrangementInput& input,
+                                                           std::span<const char> links);
+  struct Piece;  // a run of one piece, keyed by its vertex pair
+  // The runs between vertices: several pieces become an edge at once, single ones are returned.
+  [[nodiscard]] std::vector<Piece> collect_runs(const ArrangementInput& input,
+                                                std::span<const char> links,
+                                                const std::vector<std::uint32_t>& vid);
+  // Equal single pieces merge into one edge, their multiplicities added.
+  void merge_single_pieces(std::vector<Piece>& pieces, bool any_open);
+  // The outgoing half-edges of each vertex, counter-clockwise.
+  void sort_half_edges();
+  // ... and its faces with their winding numbers (rule clip-faces).
+  [[nodiscard]] std::vector<std::int32_t> trace_faces();
+  struct Lowest;  // the lowest (x, y) point of a component
+  [[nodiscard]] std::vector<Lowest> lowest_points(std::vector<std::uint32_t>& edge_root,
+                                                  std::vector<char>& has) const;
+  // The face around a component, seen from its lowest point.
+  [[nodiscard]] std::int32_t outer_face(const Lowest& low) const;
+  // Winding numbers of the lowest point o of component `root` by a ray towards -x; records the
+  // face of the component around it.
+  void label_outer_face(std::uint32_t root, const Lowest& low, std::int32_t f0,
+                        const std::vector<std::uint32_t>& edge_root);
+  // Every face of the component from its outer face: w(left) = w(right) + multiplicity.
+  void spread_labels(std::int32_t f0, const std::vector<std::int32_t>& face_start,
+                     std::vector<char>& done, std::vector<std::int32_t>& queue);
+  // Stages of extract (extract.cpp, rule clip-rings): kept faces connected across kept edges
+  // form regions; boundary chains become simple rings; rings become polygons.
+  [[nodiscard]] std::vector<std::uint32_t> regions(const std::vector<char>& in) const;
+  struct Loop;  // a ring of the result, its region and orientation
+  [[nodiscard]] std::vector<Loop> trace_rings(const std::vector<char>& in,
+                                              const std::vector<std::uint32_t>& region) const;
+  [[nodiscard]] Loop make_loop(std::span<const std::int32_t> hs,
+                               const std::vector<std::uint32_t>& region) const;
+  [[nodiscard]] static MultiPolygon assemble(std::vector<Loop>& loops, std::size_t faces);
 
   Noded noded_;
   std::vector<Vec2> vertex_;           // sorted by (x, y)
