@@ -63,10 +63,10 @@ struct RegionLayerOptions {
 /// max(1, 16 e) cells of 4 bytes, its edges are kept once per cell they touch (32 bytes, plus
 /// 40 for an edge crossing a cell's right side), with the grid coarsened until the estimated
 /// edge-cell pairs are at most 32 per edge (`PolygonIndex`); a region costs about 400 bytes
-/// more (its index object, grid lines, tree node). Measured: Natural Earth's countries 145
-/// bytes per edge, GSHHG shorelines 150, New York's boroughs 61, unit squares 123 (4 edges a
-/// region), spiky stars 1.4 KB; the tests hold every layer they build to at most 4 KB per edge
-/// plus 1 KB per region.
+/// more (its index object, grid lines, tree node, its entries in the layer's grid). Measured:
+/// Natural Earth's countries 147 bytes per edge, GSHHG shorelines 162, New York's boroughs 61,
+/// unit squares 123 (4 edges a region), spiky stars 1.4 KB; the tests hold every layer they
+/// build to at most 4 KB per edge plus 1 KB per region.
 ///
 /// Complexity: build O(n log n) for n edges in all; a query O(log m + k) for m regions and k
 /// candidate regions whose boxes hold the point, each answered in O(1) in an empty grid cell
