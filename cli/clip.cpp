@@ -14,14 +14,9 @@
 #include "clip_boolean.h"
 #include "common.h"
 #include "contain/clip/box_clipper.h"
-#include "contain/clip/box_halfspaces.h"
 #include "contain/clip/clip_polygon.h"
-#include "contain/clip/clip_segments.h"
-#include "contain/clip/cohen_sutherland.h"
-#include "contain/clip/cyrus_beck.h"
-#include "contain/clip/liang_barsky.h"
 #include "contain/clip/mesh_clip.h"
-#include "contain/clip/segment_halfspace.h"
+#include "contain/clip/segment_region.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
@@ -153,10 +148,8 @@ Result<ConvexPolyhedron> convex_solid_of(const std::string& path) {
 
 // --- segments ------------------------------------------------------------------------------
 
-std::string format_segments(std::span<const double> flat, int columns,
-                            std::span<const Segment2> out2, std::span<const Segment3> out3,
-                            std::span<const std::uint8_t> kept) {
-  (void)flat;
+std::string format_segments(int columns, std::span<const Segment2> out2,
+                            std::span<const Segment3> out3, std::span<const std::uint8_t> kept) {
   std::string text;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     if (!kept[i]) {
@@ -172,26 +165,94 @@ std::string format_segments(std::span<const double> flat, int columns,
   return text;
 }
 
-template <class S, class Clip>
-void each_segment(std::span<const S> in, std::span<S> out, std::span<std::uint8_t> kept,
-                  Clip clip) {
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const auto r = clip(in[i]);
-    kept[i] = r.kept ? 1 : 0;
-    if (r.kept) out[i] = r.segment;
+// The rows of a table of 4 (2D) or 6 (3D) numbers as segments.
+std::vector<Segment2> segments2_of(const io::NumberTable& table) {
+  std::vector<Segment2> segments(table.rows());
+  const double* v = table.values.data();
+  for (Segment2& s : segments) {
+    s = {{v[0], v[1]}, {v[2], v[3]}};
+    v += 4;
   }
+  return segments;
+}
+std::vector<Segment3> segments3_of(const io::NumberTable& table) {
+  std::vector<Segment3> segments(table.rows());
+  const double* v = table.values.data();
+  for (Segment3& s : segments) {
+    s = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    v += 6;
+  }
+  return segments;
 }
 
-// Runs `clip(in, out, kept)` on chunks of the segments (subspans of the same indices), with
-// progress after each; the library's batch calls stay whole within a chunk.
-template <class S, class Clip>
-void clip_all(const std::vector<S>& in, std::vector<S>& out, std::span<std::uint8_t> kept,
-              const ClipOptions& o, Clip clip) {
+// The one region option given, for 2D segments.
+Result<clip::SegmentRegion2> region2_of(const ClipOptions& o) {
+  if (!o.box.empty()) {
+    auto box = box2_of(o.box);
+    if (!box) return box.error();
+    return clip::SegmentRegion2(*box);
+  }
+  if (!o.halfspaces.empty()) {
+    auto planes = half_planes_of(o);
+    if (!planes) return planes.error();
+    return clip::SegmentRegion2(std::move(*planes));
+  }
+  if (!o.convex.empty()) {
+    auto ring = convex_ring_of(o.convex);
+    if (!ring) return ring.error();
+    return clip::SegmentRegion2(std::move(*ring));
+  }
+  auto c = numbers(o.circle, "--circle", {3});
+  if (!c) return c.error();
+  if (auto r = check_radius("--circle", o.circle, (*c)[2]); !r) return r.error();
+  return clip::SegmentRegion2(Circle{{(*c)[0], (*c)[1]}, (*c)[2]});
+}
+
+// The one region option given, for 3D segments.
+Result<clip::SegmentRegion3> region3_of(const ClipOptions& o) {
+  if (!o.box.empty()) {
+    auto box = box3_of(o.box);
+    if (!box) return box.error();
+    return clip::SegmentRegion3(*box);
+  }
+  if (!o.halfspaces.empty()) {
+    auto planes = planes_of(o);
+    if (!planes) return planes.error();
+    return clip::SegmentRegion3(std::move(*planes));
+  }
+  if (!o.convex.empty()) {
+    auto solid = convex_solid_of(o.convex);
+    if (!solid) return solid.error();
+    return clip::SegmentRegion3(std::move(*solid));
+  }
+  auto s = numbers(o.sphere, "--sphere", {4});
+  if (!s) return s.error();
+  if (auto r = check_radius("--sphere", o.sphere, (*s)[3]); !r) return r.error();
+  return clip::SegmentRegion3(Sphere{{(*s)[0], (*s)[1], (*s)[2]}, (*s)[3]});
+}
+
+clip::SegmentClipper clipper_of(const std::string& algorithm) {
+  if (algorithm == "cohen-sutherland") return clip::SegmentClipper::cohen_sutherland;
+  if (algorithm == "liang-barsky") return clip::SegmentClipper::liang_barsky;
+  if (algorithm == "cyrus-beck") return clip::SegmentClipper::cyrus_beck;
+  return clip::SegmentClipper::automatic;
+}
+
+// Clips the segments by the region in chunks, with progress after each (one library call per
+// chunk, on all threads).
+template <class S, class Region>
+Status clip_all(const std::vector<S>& in, const Region& region, std::vector<S>& out,
+                std::span<std::uint8_t> kept, const ClipOptions& o) {
+  const clip::SegmentClipOptions options{.clipper = clipper_of(o.algorithm), .threads = o.threads};
+  Status status = Ok{};
   Progress progress("segments", in.size(), !o.quiet && stderr_is_terminal());
   progress.run([&](std::size_t begin, std::size_t end) {
-    clip(std::span<const S>(in).subspan(begin, end - begin),
-         std::span<S>(out).subspan(begin, end - begin), kept.subspan(begin, end - begin));
+    if (!status) return;
+    status = clip::clip_segments(std::span<const S>(in).subspan(begin, end - begin), region,
+                                 std::span<S>(out).subspan(begin, end - begin),
+                                 kept.subspan(begin, end - begin), options);
   });
+  return status;
 }
 
 int run_segments(const ClipOptions& o) {
@@ -207,7 +268,6 @@ int run_segments(const ClipOptions& o) {
   }
   auto table = io::read_number_table(o.segments, {.columns = {4, 6}});
   if (!table) return report(table.error());
-  const std::size_t n = table->rows();
   const int columns =
       table->columns == 0 ? (o.sphere.empty() && o.halfspaces.empty() ? 4 : 6) : table->columns;
   const bool three_d = columns == 6;
@@ -217,115 +277,23 @@ int run_segments(const ClipOptions& o) {
                            : "segments have 4 numbers (2D) but --sphere is 3D",
                    o.segments == "-" ? "<stdin>" : o.segments});
   }
-  std::vector<std::uint8_t> kept(n);
-  std::vector<Segment2> in2, out2;
-  std::vector<Segment3> in3, out3;
-  const double* v = table->values.data();
+  std::vector<std::uint8_t> kept(table->rows());
+  std::vector<Segment2> out2;
+  std::vector<Segment3> out3;
   if (three_d) {
-    in3.resize(n);
-    out3.resize(n);
-    for (std::size_t i = 0; i < n; ++i, v += 6)
-      in3[i] = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    const std::vector<Segment3> in = segments3_of(*table);
+    out3.resize(in.size());
+    auto region = region3_of(o);
+    if (!region) return report(region.error());
+    if (Status s = clip_all(in, *region, out3, kept, o); !s) return report(s.error());
   } else {
-    in2.resize(n);
-    out2.resize(n);
-    for (std::size_t i = 0; i < n; ++i, v += 4)
-      in2[i] = {{v[0], v[1]}, {v[2], v[3]}};
+    const std::vector<Segment2> in = segments2_of(*table);
+    out2.resize(in.size());
+    auto region = region2_of(o);
+    if (!region) return report(region.error());
+    if (Status s = clip_all(in, *region, out2, kept, o); !s) return report(s.error());
   }
-  const BatchOptions batch{.threads = o.threads};
-  if (!o.box.empty()) {
-    auto run_box = [&](const auto& box, auto& in, auto& out) {
-      if (o.algorithm.empty()) {
-        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          clip::clip_segments(in_c, box, out_c, kept_c, batch);
-        });
-      } else if (o.algorithm == "cohen-sutherland") {
-        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          each_segment(in_c, out_c, kept_c,
-                       [&](const auto& s) { return clip::cohen_sutherland(s, box); });
-        });
-      } else if (o.algorithm == "liang-barsky") {
-        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          each_segment(in_c, out_c, kept_c,
-                       [&](const auto& s) { return clip::liang_barsky(s, box); });
-        });
-      } else {
-        const auto planes = clip::box_halfspaces(box);
-        clip_all(in, out, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          each_segment(in_c, out_c, kept_c,
-                       [&](const auto& s) { return clip::cyrus_beck(s, planes); });
-        });
-      }
-    };
-    if (three_d) {
-      auto box = box3_of(o.box);
-      if (!box) return report(box.error());
-      run_box(*box, in3, out3);
-    } else {
-      auto box = box2_of(o.box);
-      if (!box) return report(box.error());
-      run_box(*box, in2, out2);
-    }
-  } else if (!o.halfspaces.empty()) {
-    if (three_d) {
-      auto planes = planes_of(o);
-      if (!planes) return report(planes.error());
-      if (planes->size() == 1) {
-        clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          clip::clip_segments(in_c, planes->front(), out_c, kept_c, batch);
-        });
-      } else {
-        clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          each_segment(in_c, out_c, kept_c,
-                       [&](const Segment3& s) { return clip::cyrus_beck(s, *planes); });
-        });
-      }
-    } else {
-      auto planes = half_planes_of(o);
-      if (!planes) return report(planes.error());
-      if (planes->size() == 1) {
-        clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          clip::clip_segments(in_c, planes->front(), out_c, kept_c, batch);
-        });
-      } else {
-        clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-          each_segment(in_c, out_c, kept_c,
-                       [&](const Segment2& s) { return clip::cyrus_beck(s, *planes); });
-        });
-      }
-    }
-  } else if (!o.convex.empty()) {
-    if (three_d) {
-      auto solid = convex_solid_of(o.convex);
-      if (!solid) return report(solid.error());
-      clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-        clip::clip_segments(in_c, *solid, out_c, kept_c, batch);
-      });
-    } else {
-      auto ring = convex_ring_of(o.convex);
-      if (!ring) return report(ring.error());
-      clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-        clip::clip_segments(in_c, *ring, out_c, kept_c, batch);
-      });
-    }
-  } else if (!o.sphere.empty()) {
-    auto s = numbers(o.sphere, "--sphere", {4});
-    if (!s) return report(s.error());
-    if (auto r = check_radius("--sphere", o.sphere, (*s)[3]); !r) return report(r.error());
-    const Sphere ball{{(*s)[0], (*s)[1], (*s)[2]}, (*s)[3]};
-    clip_all(in3, out3, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-      clip::clip_segments(in_c, ball, out_c, kept_c, batch);
-    });
-  } else {
-    auto c = numbers(o.circle, "--circle", {3});
-    if (!c) return report(c.error());
-    if (auto r = check_radius("--circle", o.circle, (*c)[2]); !r) return report(r.error());
-    const Circle disc{{(*c)[0], (*c)[1]}, (*c)[2]};
-    clip_all(in2, out2, kept, o, [&](auto in_c, auto out_c, auto kept_c) {
-      clip::clip_segments(in_c, disc, out_c, kept_c, batch);
-    });
-  }
-  return emit(format_segments(table->values, columns, out2, out3, kept), o.out);
+  return emit(format_segments(columns, out2, out3, kept), o.out);
 }
 
 // --- polygons --------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include "contain/inside/polygon_index.h"
 #include "contain/io/csg_json.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
 #include "many.h"
@@ -72,7 +73,8 @@ int run_mesh(const InsideOptions& o) {
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   const inside::MeshIndex index(file->mesh);
-  if (!index.warning().empty()) warn(o.mesh + ": " + index.warning());
+  const std::string warning = io::mesh_warning(index.regime(), index.report());
+  if (!warning.empty()) warn(o.mesh + ": " + warning);
   const std::vector<Location> locations = locate_all(index, points->points, o);
   return emit(format_locations(locations, o.boundary), o.out);
 }

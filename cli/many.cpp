@@ -11,6 +11,7 @@
 #include "contain/inside/region_layer.h"
 #include "contain/inside/solid_scene.h"
 #include "contain/io/layer_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
 #include "contain/io/scene_json.h"
 #include "progress.h"
@@ -117,9 +118,11 @@ int run_scene_inside(const ManyOptions& o) {
   std::vector<char> warned(scene->meshes.size(), 0);
   for (std::size_t k = 0; k < index.size(); ++k) {
     const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
-    if (index.object(k).warning().empty() || warned[m]) continue;
+    const std::string warning =
+        io::mesh_warning(index.object(k).regime(), index.object(k).report());
+    if (warning.empty() || warned[m]) continue;
     warned[m] = 1;
-    warn(scene->mesh_files[m] + " (object " + scene->ids[k] + "): " + index.object(k).warning());
+    warn(scene->mesh_files[m] + " (object " + scene->ids[k] + "): " + warning);
   }
   auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);
   if (!text) return report(text.error());

@@ -17,6 +17,7 @@
 #include "contain/inside/point_in_polygon_angle_sum.h"
 #include "contain/inside/polygon_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/region_io.h"
 #include "errors.h"
 #include "shapes.h"
@@ -197,7 +198,10 @@ Example:
           "report", [](const inside::MeshIndex& index) { return index.report(); },
           "The contain.MeshReport of the mesh (what validate_mesh gives), which chose the regime.")
       .def_property_readonly(
-          "warning", [](const inside::MeshIndex& index) { return index.warning(); },
+          "warning",
+          [](const inside::MeshIndex& index) {
+            return io::mesh_warning(index.regime(), index.report());
+          },
           "'' for a plain closed 2-manifold; otherwise one line naming the regime and why.")
       .def_property_readonly(
           "bounds", [](const inside::MeshIndex& index) { return box3(index.bounds()); },

@@ -15,18 +15,6 @@ namespace {
 static_assert(sizeof(Segment3) == 6 * sizeof(double) && std::is_standard_layout_v<Segment3>);
 static_assert(sizeof(Segment2) == 4 * sizeof(double) && std::is_standard_layout_v<Segment2>);
 
-template <class S, class Clip>
-void each(std::span<const S> segments, std::span<S> out, std::span<std::uint8_t> kept,
-          const BatchOptions& options, Clip clip) {
-  parallel_for(segments.size(), options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto r = clip(segments[i]);
-      kept[i] = r.kept ? 1 : 0;
-      if (r.kept) out[i] = r.segment;
-    }
-  });
-}
-
 template <int D, class Box>
 detail::KernelBox<D> kernel_box(const Box& box) {
   detail::KernelBox<D> kb{};
@@ -84,32 +72,36 @@ void clip_segments(std::span<const Segment2> s, const Box2& box, std::span<Segme
 }
 void clip_segments(std::span<const Segment3> s, const Plane& h, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  each(s, out, kept, options, [&](const Segment3& x) { return segment_halfspace(x, h); });
+  detail::clip_each(s, out, kept, options,
+                    [&](const Segment3& x) { return segment_halfspace(x, h); });
 }
 void clip_segments(std::span<const Segment2> s, const HalfPlane& h, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  each(s, out, kept, options, [&](const Segment2& x) { return segment_halfspace(x, h); });
+  detail::clip_each(s, out, kept, options,
+                    [&](const Segment2& x) { return segment_halfspace(x, h); });
 }
 void clip_segments(std::span<const Segment3> s, const Sphere& ball, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  each(s, out, kept, options, [&](const Segment3& x) { return segment_sphere(x, ball); });
+  detail::clip_each(s, out, kept, options,
+                    [&](const Segment3& x) { return segment_sphere(x, ball); });
 }
 void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  each(s, out, kept, options, [&](const Segment2& x) { return segment_sphere(x, disc); });
+  detail::clip_each(s, out, kept, options,
+                    [&](const Segment2& x) { return segment_sphere(x, disc); });
 }
 void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,
                    const BatchOptions& options) {
   if (!polyhedron.faces().empty()) {
     const auto f = detail::face_functions(polyhedron.faces());
-    each(s, out, kept, options, [&](const Segment3& x) {
+    detail::clip_each(s, out, kept, options, [&](const Segment3& x) {
       return detail::cyrus_beck_clip<Vec3, predicates::FaceFunction>(x.a, x.b, f);
     });
     return;
   }
   const auto f = detail::plane_functions(polyhedron.planes());
-  each(s, out, kept, options, [&](const Segment3& x) {
+  detail::clip_each(s, out, kept, options, [&](const Segment3& x) {
     return detail::cyrus_beck_clip<Vec3, predicates::PlaneFunction>(x.a, x.b, f);
   });
 }
@@ -121,7 +113,7 @@ void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::sp
       k = 0;
     return;
   }
-  each(s, out, kept, options, [&](const Segment2& x) {
+  detail::clip_each(s, out, kept, options, [&](const Segment2& x) {
     return detail::cyrus_beck_clip<Vec2, predicates::EdgeFunction>(x.a, x.b, *edges);
   });
 }

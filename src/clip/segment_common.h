@@ -1,15 +1,32 @@
 #pragma once
 // Private helpers of the segment clippers: coordinates by index, points on a segment, results,
-// and the inward adjustment of a rounded crossing point.
+// the inward adjustment of a rounded crossing point, and batches of one clipper per segment.
 
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <type_traits>
 
 #include "contain/clip/clipped_segment.h"
+#include "contain/core/parallel.h"
 #include "contain/values/segment.h"
 #include "contain/values/vec.h"
 
 namespace contain::clip::detail {
+
+// Runs `clip(segment)` (a ClippedSegment2/3) on every segment, on all threads: kept[i] and, where
+// kept, out[i].
+template <class S, class Clip>
+void clip_each(std::span<const S> segments, std::span<S> out, std::span<std::uint8_t> kept,
+               const BatchOptions& options, Clip clip) {
+  parallel_for(segments.size(), options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto r = clip(segments[i]);
+      kept[i] = r.kept ? 1 : 0;
+      if (r.kept) out[i] = r.segment;
+    }
+  });
+}
 
 template <class V>
 inline constexpr int dimension = std::is_same_v<V, Vec3> ? 3 : 2;

@@ -24,64 +24,65 @@ using predicates::BigFloat;
 using predicates::BigVec3;
 using predicates::to_big;
 
-template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
-template <class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
-bool finite(double v) { return std::isfinite(v); }
+bool finite(double v) {
+  return std::isfinite(v);
+}
 
 std::string op_name(CsgOp op) {
   switch (op) {
-  case CsgOp::leaf:
-    return "leaf";
-  case CsgOp::unite:
-    return "union";
-  case CsgOp::intersect:
-    return "intersection";
-  case CsgOp::subtract:
-    return "difference";
-  case CsgOp::complement:
-    return "complement";
+    case CsgOp::leaf:
+      return "leaf";
+    case CsgOp::unite:
+      return "union";
+    case CsgOp::intersect:
+      return "intersection";
+    case CsgOp::subtract:
+      return "difference";
+    case CsgOp::complement:
+      return "complement";
   }
   return "?";
 }
 
 // Empty string when the leaf is valid, else the reason; `kind` is set to what
 // the reason is.
-std::string check_leaf(const CsgLeaf &leaf, ErrorKind &kind) {
+std::string check_leaf(const CsgLeaf& leaf, ErrorKind& kind) {
   kind = ErrorKind::invalid_value;
   return std::visit(
       Overloaded{
-          [](const Sphere &s) -> std::string {
+          [](const Sphere& s) -> std::string {
             if (!is_finite(s.center) || !finite(s.radius)) {
               return "sphere has a NaN or infinite number";
             }
             return s.radius < 0 ? "sphere radius is negative" : "";
           },
-          [](const Box3 &b) -> std::string {
-            if (!is_finite(b.min) || !is_finite(b.max))
-              return "box has a NaN or infinite number";
+          [](const Box3& b) -> std::string {
+            if (!is_finite(b.min) || !is_finite(b.max)) return "box has a NaN or infinite number";
             return b.empty() ? "box min exceeds max" : "";
           },
-          [](const Plane &p) -> std::string {
+          [](const Plane& p) -> std::string {
             if (!finite(p.a) || !finite(p.b) || !finite(p.c) || !finite(p.d)) {
               return "halfspace has a NaN or infinite coefficient";
             }
-            return p.a == 0 && p.b == 0 && p.c == 0 ? "halfspace normal is zero"
-                                                    : "";
+            return p.a == 0 && p.b == 0 && p.c == 0 ? "halfspace normal is zero" : "";
           },
-          [](const ConvexPolyhedron &) -> std::string {
-            return "";
-          }, // validated when built
-          [](const ImplicitFunction &f) -> std::string {
+          [](const ConvexPolyhedron&) -> std::string { return ""; },  // validated when built
+          [](const ImplicitFunction& f) -> std::string {
             return f ? "" : "implicit leaf holds no function";
           },
-          [](const CsgMesh &m) -> std::string {
-            const Mesh &mesh = m.mesh();
+          [](const CsgMesh& m) -> std::string {
+            const Mesh& mesh = m.mesh();
             const auto n = static_cast<std::int64_t>(mesh.vertices.size());
-            for (const TriangleIndices &t : mesh.triangles) {
-              if (std::any_of(t.begin(), t.end(), [&](std::int32_t i) {
-                    return i < 0 || i >= n;
-                  })) {
+            for (const TriangleIndices& t : mesh.triangles) {
+              if (std::any_of(t.begin(), t.end(),
+                              [&](std::int32_t i) { return i < 0 || i >= n; })) {
                 return "mesh has a vertex index out of range";
               }
             }
@@ -89,48 +90,43 @@ std::string check_leaf(const CsgLeaf &leaf, ErrorKind &kind) {
                              [](Vec3 v) { return is_finite(v); })) {
               return "mesh has a NaN or infinite coordinate";
             }
-            return ""; // closedness is checked on its index (prepare)
+            return "";  // closedness is checked on its index (prepare)
           },
       },
       leaf);
 }
 
 // `mesh_index`: the index of a mesh leaf (null for other leaves).
-Location locate_leaf(const CsgLeaf &leaf, const MeshIndex *mesh_index, Vec3 p) {
-  return std::visit(
-      Overloaded{
-          [&](const Sphere &s) { return point_in_sphere(s, p); },
-          [&](const Box3 &b) { return point_in_box(b, p); },
-          [&](const Plane &h) { return point_in_halfspace(h, p); },
-          [&](const ConvexPolyhedron &c) { return point_in_convex(c, p); },
-          [&](const ImplicitFunction &f) { return point_in_implicit(f, p); },
-          [&](const CsgMesh &) { return mesh_index->locate(p); },
-      },
-      leaf);
+Location locate_leaf(const CsgLeaf& leaf, const MeshIndex* mesh_index, Vec3 p) {
+  return std::visit(Overloaded{
+                        [&](const Sphere& s) { return point_in_sphere(s, p); },
+                        [&](const Box3& b) { return point_in_box(b, p); },
+                        [&](const Plane& h) { return point_in_halfspace(h, p); },
+                        [&](const ConvexPolyhedron& c) { return point_in_convex(c, p); },
+                        [&](const ImplicitFunction& f) { return point_in_implicit(f, p); },
+                        [&](const CsgMesh&) { return mesh_index->locate(p); },
+                    },
+                    leaf);
 }
 
-Vec3 vertex(const Mesh &mesh, std::int32_t k) {
+Vec3 vertex(const Mesh& mesh, std::int32_t k) {
   return mesh.vertices[static_cast<std::size_t>(k)];
 }
 
 // The planes of the non-degenerate triangles that contain p (exact point in
 // triangle): near p they carry the whole surface, so every open cell of their
 // arrangement is in or out.
-void mesh_constraints(const Mesh &mesh, Vec3 p,
-                      std::vector<LocalConstraint> &out) {
-  for (const TriangleIndices &t : mesh.triangles) {
-    const Triangle3 tri{vertex(mesh, t[0]), vertex(mesh, t[1]),
-                        vertex(mesh, t[2])};
+void mesh_constraints(const Mesh& mesh, Vec3 p, std::vector<LocalConstraint>& out) {
+  for (const TriangleIndices& t : mesh.triangles) {
+    const Triangle3 tri{vertex(mesh, t[0]), vertex(mesh, t[1]), vertex(mesh, t[2])};
     Box3 box;
     box.expand(tri.a);
     box.expand(tri.b);
     box.expand(tri.c);
-    if (!box.contains(p) || point_in_triangle(tri, p) == Location::outside)
-      continue;
+    if (!box.contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
     const BigVec3 a = to_big(tri.a);
     BigVec3 normal = cross(to_big(tri.b) - a, to_big(tri.c) - a);
-    if (!is_zero(normal))
-      out.push_back({std::move(normal), false, false});
+    if (!is_zero(normal)) out.push_back({std::move(normal), false, false});
   }
 }
 
@@ -139,10 +135,8 @@ void mesh_constraints(const Mesh &mesh, Vec3 p,
 // (detail::sign_at).
 struct SampleOffset {
   static constexpr bool symbolic = true;
-  const detail::SymbolicOffset *at;
-  [[nodiscard]] Sign along(const BigVec3 &g) const {
-    return detail::sign_at(BigFloat(), g, *at);
-  }
+  const detail::SymbolicOffset* at;
+  [[nodiscard]] Sign along(const BigVec3& g) const { return detail::sign_at(BigFloat(), g, *at); }
 };
 
 // MeshIndex's perturbed +x ray parity (predicates/perturbed_ray.h) from a
@@ -151,12 +145,11 @@ struct SampleOffset {
 // test non-zero there) are the same for every sample: counted once here; the
 // few triangles with a test that vanishes at p are kept and tested per sample.
 class MeshRay {
-public:
+ public:
   MeshRay() = default;
-  MeshRay(const Mesh &mesh, Vec3 p) : p_(p) {
-    for (const TriangleIndices &t : mesh.triangles) {
-      const Vec3 a = vertex(mesh, t[0]), b = vertex(mesh, t[1]),
-                 c = vertex(mesh, t[2]);
+  MeshRay(const Mesh& mesh, Vec3 p) : p_(p) {
+    for (const TriangleIndices& t : mesh.triangles) {
+      const Vec3 a = vertex(mesh, t[0]), b = vertex(mesh, t[1]), c = vertex(mesh, t[2]);
       // Triangles that the ray from a point near p cannot reach (exact
       // comparisons of inputs).
       if (std::max({a.x, b.x, c.x}) < p.x || std::min({a.y, b.y, c.y}) > p.y ||
@@ -165,20 +158,15 @@ public:
         continue;
       }
       const Sign s = predicates::projected_sign(a, b, c);
-      if (s == Sign::zero)
-        continue; // never crossed by an x ray
+      if (s == Sign::zero) continue;  // never crossed by an x ray
       // The rule's four tests at p, each of which must equal s for a crossing:
       // the three edges of the (y, z) projection, and the plane met ahead
       // (-orient3d, see hit_side).
       const Vec2 pa{a.y, a.z}, pb{b.y, b.z}, pc{c.y, c.z}, pp{p.y, p.z};
-      const Sign at_p[4] = {
-          predicates::orient2d(pa, pb, pp), predicates::orient2d(pb, pc, pp),
-          predicates::orient2d(pc, pa, pp), -predicates::orient3d(a, b, c, p)};
-      if (std::any_of(at_p, at_p + 4,
-                      [&](Sign e) { return e != Sign::zero && e != s; }))
-        continue;
-      if (std::none_of(at_p, at_p + 4,
-                       [](Sign e) { return e == Sign::zero; })) {
+      const Sign at_p[4] = {predicates::orient2d(pa, pb, pp), predicates::orient2d(pb, pc, pp),
+                            predicates::orient2d(pc, pa, pp), -predicates::orient3d(a, b, c, p)};
+      if (std::any_of(at_p, at_p + 4, [&](Sign e) { return e != Sign::zero && e != s; })) continue;
+      if (std::none_of(at_p, at_p + 4, [](Sign e) { return e == Sign::zero; })) {
         parity_ = !parity_;
       } else {
         open_.push_back(Triangle3{a, b, c});
@@ -187,18 +175,18 @@ public:
   }
 
   // Whether the sample is inside the mesh (odd number of crossings).
-  [[nodiscard]] bool inside(const detail::SymbolicOffset &at) const {
+  [[nodiscard]] bool inside(const detail::SymbolicOffset& at) const {
     bool odd = parity_;
     const SampleOffset offset{&at};
-    for (const Triangle3 &t : open_)
+    for (const Triangle3& t : open_)
       odd = odd != predicates::perturbed_ray_crosses(t.a, t.b, t.c, p_, offset);
     return odd;
   }
 
-private:
+ private:
   Vec3 p_;
-  bool parity_ = false;         // crossings decided at p itself
-  std::vector<Triangle3> open_; // triangles with a test that vanishes at p
+  bool parity_ = false;          // crossings decided at p itself
+  std::vector<Triangle3> open_;  // triangles with a test that vanishes at p
 };
 
 BigVec3 axis(int k, double s) {
@@ -207,13 +195,12 @@ BigVec3 axis(int k, double s) {
 
 // Central-difference gradient estimate of an implicit function (documented as
 // approximate).
-LocalConstraint implicit_constraint(const ImplicitFunction &f, Vec3 p) {
-  const double size =
-      std::max({1.0, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+LocalConstraint implicit_constraint(const ImplicitFunction& f, Vec3 p) {
+  const double size = std::max({1.0, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
   const double step = 1e-6 * size;
   Vec3 gradient;
   bool all_nonnegative = true;
-  double *parts[3] = {&gradient.x, &gradient.y, &gradient.z};
+  double* parts[3] = {&gradient.x, &gradient.y, &gradient.z};
   for (int k = 0; k < 3; ++k) {
     const Vec3 e{k == 0 ? step : 0.0, k == 1 ? step : 0.0, k == 2 ? step : 0.0};
     const double ahead = f(p + e), behind = f(p - e);
@@ -221,9 +208,8 @@ LocalConstraint implicit_constraint(const ImplicitFunction &f, Vec3 p) {
     *parts[k] = ahead - behind;
   }
   LocalConstraint c;
-  if (is_finite(gradient))
-    c.normal = to_big(gradient);
-  c.fixed_value = all_nonnegative; // used when the normal is zero
+  if (is_finite(gradient)) c.normal = to_big(gradient);
+  c.fixed_value = all_nonnegative;  // used when the normal is zero
   return c;
 }
 
@@ -231,87 +217,80 @@ LocalConstraint implicit_constraint(const ImplicitFunction &f, Vec3 p) {
 // inward normals. Every leaf but a mesh fills exactly the cells on the positive
 // side of all its constraints; a mesh's planes have no particular orientation
 // and it classifies samples itself (MeshRay).
-void local_constraints(const CsgLeaf &leaf, Vec3 p,
-                       std::vector<LocalConstraint> &out) {
-  std::visit(Overloaded{
-                 [&](const Sphere &s) {
-                   // Tangent plane with inward normal c − p; |c − p| = r
-                   // exactly since p is on it. A ball of radius 0 has no
-                   // interior: its zero normal with fixed_value false.
-                   out.push_back({to_big(s.center) - to_big(p), true, false});
-                 },
-                 [&](const Box3 &b) {
-                   const double lo[3] = {b.min.x, b.min.y, b.min.z},
-                                hi[3] = {b.max.x, b.max.y, b.max.z};
-                   const double q[3] = {p.x, p.y, p.z};
-                   for (int k = 0; k < 3; ++k) {
-                     if (q[k] == lo[k])
-                       out.push_back({axis(k, 1.0), false, false});
-                     if (q[k] == hi[k])
-                       out.push_back({axis(k, -1.0), false, false});
-                   }
-                 },
-                 [&](const Plane &h) {
-                   out.push_back({to_big(h.normal()), false, false});
-                 },
-                 [&](const ConvexPolyhedron &c) {
-                   for (const Plane &h : c.planes()) {
-                     if (predicates::side_of_plane(h, p) == Sign::zero) {
-                       out.push_back({to_big(h.normal()), false, false});
-                     }
-                   }
-                   for (const Triangle3 &t : c.faces()) {
-                     if (predicates::orient3d(t.a, t.b, t.c, p) == Sign::zero) {
-                       const BigVec3 a = to_big(t.a);
-                       // Faces are counter-clockwise from outside: (b − a) × (c
-                       // − a) points out.
-                       out.push_back({-cross(to_big(t.b) - a, to_big(t.c) - a),
-                                      false, false});
-                     }
-                   }
-                 },
-                 [&](const ImplicitFunction &f) {
-                   out.push_back(implicit_constraint(f, p));
-                 },
-                 [&](const CsgMesh &m) { mesh_constraints(m.mesh(), p, out); },
-             },
-             leaf);
+void local_constraints(const CsgLeaf& leaf, Vec3 p, std::vector<LocalConstraint>& out) {
+  std::visit(
+      Overloaded{
+          [&](const Sphere& s) {
+            // Tangent plane with inward normal c − p; |c − p| = r
+            // exactly since p is on it. A ball of radius 0 has no
+            // interior: its zero normal with fixed_value false.
+            out.push_back({to_big(s.center) - to_big(p), true, false});
+          },
+          [&](const Box3& b) {
+            const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
+            const double q[3] = {p.x, p.y, p.z};
+            for (int k = 0; k < 3; ++k) {
+              if (q[k] == lo[k]) out.push_back({axis(k, 1.0), false, false});
+              if (q[k] == hi[k]) out.push_back({axis(k, -1.0), false, false});
+            }
+          },
+          [&](const Plane& h) {
+            out.push_back({to_big(h.normal()), false, false});
+          },
+          [&](const ConvexPolyhedron& c) {
+            for (const Plane& h : c.planes()) {
+              if (predicates::side_of_plane(h, p) == Sign::zero) {
+                out.push_back({to_big(h.normal()), false, false});
+              }
+            }
+            for (const Triangle3& t : c.faces()) {
+              if (predicates::orient3d(t.a, t.b, t.c, p) == Sign::zero) {
+                const BigVec3 a = to_big(t.a);
+                // Faces are counter-clockwise from outside: (b − a) × (c
+                // − a) points out.
+                out.push_back({-cross(to_big(t.b) - a, to_big(t.c) - a), false, false});
+              }
+            }
+          },
+          [&](const ImplicitFunction& f) { out.push_back(implicit_constraint(f, p)); },
+          [&](const CsgMesh& m) { mesh_constraints(m.mesh(), p, out); },
+      },
+      leaf);
 }
 
-} // namespace
+}  // namespace
 
-Result<CsgSolid> CsgSolid::prepare(const Csg &tree,
-                                   const MeshIndexOptions &mesh_options) {
+Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh_options) {
   CsgSolid solid;
   // Breadth-first, so that children of a node are contiguous in children_.
   struct Pending {
-    const Csg *tree;
+    const Csg* tree;
     std::string path;
   };
   std::vector<Pending> queue{{&tree, ""}};
-  std::map<const Mesh *, std::shared_ptr<const MeshIndex>>
-      indexes; // one per mesh, however shared
+  std::map<const Mesh*, std::shared_ptr<const MeshIndex>> indexes;  // one per mesh, however shared
   solid.nodes_.push_back({});
   for (std::size_t at = 0; at < queue.size(); ++at) {
     // Copies: queue and nodes_ grow below.
-    const Csg &t = *queue[at].tree;
+    const Csg& t = *queue[at].tree;
     const std::string path = queue[at].path;
     solid.nodes_[at].op = t.op();
     if (t.op() == CsgOp::leaf) {
       ErrorKind kind = ErrorKind::invalid_value;
       const std::string problem = check_leaf(t.solid(), kind);
-      if (!problem.empty())
-        return Error{kind, (path.empty() ? "" : path + ": ") + problem};
+      if (!problem.empty()) return Error{kind, (path.empty() ? "" : path + ": ") + problem};
       std::shared_ptr<const MeshIndex> index;
-      if (const auto *m = std::get_if<CsgMesh>(&t.solid())) {
-        std::shared_ptr<const MeshIndex> &shared = indexes[&m->mesh()];
-        if (!shared)
-          shared = std::make_shared<const MeshIndex>(m->mesh(), mesh_options);
+      if (const auto* m = std::get_if<CsgMesh>(&t.solid())) {
+        std::shared_ptr<const MeshIndex>& shared = indexes[&m->mesh()];
+        if (!shared) shared = std::make_shared<const MeshIndex>(m->mesh(), mesh_options);
         if (shared->regime() != MeshRegime::closed_exact) {
+          const MeshReport& r = shared->report();
           return Error{ErrorKind::degenerate,
                        (path.empty() ? "" : path + ": ") +
-                           "mesh is not closed, a closed mesh is required (" +
-                           shared->warning() + ")"};
+                           "mesh is not closed, a closed mesh is required (triangles: " +
+                           std::to_string(r.triangles) +
+                           ", border edges: " + std::to_string(r.border_edges) +
+                           ", non-manifold edges: " + std::to_string(r.nonmanifold_edges) + ")"};
         }
         index = shared;
       }
@@ -321,18 +300,15 @@ Result<CsgSolid> CsgSolid::prepare(const Csg &tree,
       continue;
     }
     const std::size_t arity = t.operands().size();
-    if ((t.op() == CsgOp::subtract && arity != 2) ||
-        (t.op() == CsgOp::complement && arity != 1)) {
-      return Error{ErrorKind::invalid_value,
-                   (path.empty() ? "" : path + ": ") + op_name(t.op()) +
-                       " has " + std::to_string(arity) + " operands"};
+    if ((t.op() == CsgOp::subtract && arity != 2) || (t.op() == CsgOp::complement && arity != 1)) {
+      return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + op_name(t.op()) +
+                                                 " has " + std::to_string(arity) + " operands"};
     }
     solid.nodes_[at].first = static_cast<std::int32_t>(solid.children_.size());
     solid.nodes_[at].count = static_cast<std::int32_t>(arity);
     for (std::size_t k = 0; k < arity; ++k) {
       solid.children_.push_back(static_cast<std::int32_t>(queue.size()));
-      queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") +
-                                             op_name(t.op()) + "[" +
+      queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") + op_name(t.op()) + "[" +
                                              std::to_string(k) + "]"});
       solid.nodes_.push_back({});
     }
@@ -343,43 +319,39 @@ Result<CsgSolid> CsgSolid::prepare(const Csg &tree,
 // Kleene three-valued evaluation: 1 in, -1 out, 0 unknown. With definite leaf
 // values it is the plain boolean evaluation of the tree.
 template <class LeafValue>
-int CsgSolid::evaluate(std::int32_t index, const LeafValue &leaf_value) const {
-  const Node &node = nodes_[static_cast<std::size_t>(index)];
+int CsgSolid::evaluate(std::int32_t index, const LeafValue& leaf_value) const {
+  const Node& node = nodes_[static_cast<std::size_t>(index)];
   const auto child = [&](std::int32_t k) {
-    return evaluate(children_[static_cast<std::size_t>(node.first + k)],
-                    leaf_value);
+    return evaluate(children_[static_cast<std::size_t>(node.first + k)], leaf_value);
   };
   switch (node.op) {
-  case CsgOp::leaf:
-    return leaf_value(node.first);
-  case CsgOp::unite: {
-    int result = -1;
-    for (std::int32_t k = 0; k < node.count; ++k) {
-      const int v = child(k);
-      if (v == 1)
-        return 1;
-      result = std::max(result, v);
+    case CsgOp::leaf:
+      return leaf_value(node.first);
+    case CsgOp::unite: {
+      int result = -1;
+      for (std::int32_t k = 0; k < node.count; ++k) {
+        const int v = child(k);
+        if (v == 1) return 1;
+        result = std::max(result, v);
+      }
+      return result;
     }
-    return result;
-  }
-  case CsgOp::intersect: {
-    int result = 1;
-    for (std::int32_t k = 0; k < node.count; ++k) {
-      const int v = child(k);
-      if (v == -1)
-        return -1;
-      result = std::min(result, v);
+    case CsgOp::intersect: {
+      int result = 1;
+      for (std::int32_t k = 0; k < node.count; ++k) {
+        const int v = child(k);
+        if (v == -1) return -1;
+        result = std::min(result, v);
+      }
+      return result;
     }
-    return result;
-  }
-  case CsgOp::subtract: {
-    const int a = child(0);
-    if (a == -1)
-      return -1;
-    return std::min(a, -child(1));
-  }
-  case CsgOp::complement:
-    return -child(0);
+    case CsgOp::subtract: {
+      const int a = child(0);
+      if (a == -1) return -1;
+      return std::min(a, -child(1));
+    }
+    case CsgOp::complement:
+      return -child(0);
   }
   return -1;
 }
@@ -392,55 +364,52 @@ Location CsgSolid::locate(Vec3 p) const {
     any_boundary = any_boundary || at[i] == Location::boundary;
   }
   const int known = evaluate(0, [&](std::int32_t leaf) {
-    return static_cast<int>(
-        at[static_cast<std::size_t>(leaf)]); // boundary is 0: unknown
+    return static_cast<int>(at[static_cast<std::size_t>(leaf)]);  // boundary is 0: unknown
   });
-  if (known != 0 || !any_boundary)
-    return known > 0 ? Location::inside : Location::outside;
+  if (known != 0 || !any_boundary) return known > 0 ? Location::inside : Location::outside;
 
   // p is on the boundary of leaves that matter: analyse its neighbourhood.
   std::vector<LocalConstraint> constraints;
   std::vector<std::int32_t> first(leaves_.size() + 1, 0);
-  std::vector<MeshRay> rays; // per leaf, for meshes on whose surface p lies
+  std::vector<MeshRay> rays;  // per leaf, for meshes on whose surface p lies
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
     first[i] = static_cast<std::int32_t>(constraints.size());
     if (at[i] == Location::boundary) {
       local_constraints(leaves_[i], p, constraints);
-      if (const auto *m = std::get_if<CsgMesh>(&leaves_[i])) {
+      if (const auto* m = std::get_if<CsgMesh>(&leaves_[i])) {
         rays.resize(leaves_.size());
         rays[i] = MeshRay(m->mesh(), p);
       }
     }
     first[i + 1] = static_cast<std::int32_t>(constraints.size());
   }
-  const detail::SolidContains contains =
-      [&](std::span<const char> positive,
-          const detail::SymbolicOffset &sample) {
-        return evaluate(0, [&](std::int32_t leaf) {
-                 const auto i = static_cast<std::size_t>(leaf);
-                 if (at[i] != Location::boundary)
-                   return static_cast<int>(at[i]);
-                 if (std::holds_alternative<CsgMesh>(leaves_[i])) {
-                   return rays[i].inside(sample) ? 1 : -1;
-                 }
-                 for (std::int32_t k = first[i]; k < first[i + 1]; ++k) {
-                   if (positive[static_cast<std::size_t>(k)] == 0)
-                     return -1;
-                 }
-                 return 1;
-               }) > 0;
-      };
+  const detail::SolidContains contains = [&](std::span<const char> positive,
+                                             const detail::SymbolicOffset& sample) {
+    return evaluate(0, [&](std::int32_t leaf) {
+             const auto i = static_cast<std::size_t>(leaf);
+             if (at[i] != Location::boundary) return static_cast<int>(at[i]);
+             if (std::holds_alternative<CsgMesh>(leaves_[i])) {
+               return rays[i].inside(sample) ? 1 : -1;
+             }
+             for (std::int32_t k = first[i]; k < first[i + 1]; ++k) {
+               if (positive[static_cast<std::size_t>(k)] == 0) return -1;
+             }
+             return 1;
+           }) > 0;
+  };
   return detail::classify_neighbourhood(constraints, contains);
 }
 
 void CsgSolid::locate(std::span<const Vec3> points, std::span<Location> out,
-                      const BatchOptions &options) const {
+                      const BatchOptions& options) const {
   parallel_for(points.size(), options, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       out[i] = locate(points[i]);
   });
 }
 
-Location point_in_csg(const CsgSolid &solid, Vec3 p) { return solid.locate(p); }
+Location point_in_csg(const CsgSolid& solid, Vec3 p) {
+  return solid.locate(p);
+}
 
-} // namespace contain::inside
+}  // namespace contain::inside

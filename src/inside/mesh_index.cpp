@@ -4,32 +4,29 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/values/triangle.h"
-#include "inside/grid_lines.h"
 
-// Outline (derivation in mesh_index.h and predicates/perturbed_ray.h):
-//  1. validate, pick the regime, write the warning;
-//  2. exact regime: grid size from the triangle count and the box's shape; each triangle's
-//     closed box marks the closed cells it meets (exact comparisons) -> surface cells and their
-//     triangle lists;
-//  3. empty cells, row by row from +x to -x: the answer at one point of the cell, by the same
-//     run along the row that queries use (it stops at the next empty cell to the right, whose
-//     answer is already known, or at the end of the grid: outside).
+// Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
+//  validate_mesh             the report, which picks the regime (not closed: winding number);
+//  read_triangles            vertices, ray-crossing signs and float boxes of the triangles;
+//  grid_size                 exact regime: cells from the triangle count and the box's shape;
+//  sort_triangles_by_cell    triangles in the order of their boxes' low cells (memory locality);
+//  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
+//                            comparisons; big triangles tested against each cell's box along
+//                            their normal) -> surface cells and their triangle lists;
+//  settle_empty_cells        row by row from +x to -x, the answer at one point of each empty
+//                            cell, by the same run along the row that queries use (it stops at
+//                            the next empty cell to the right, whose answer is already known,
+//                            or at the end of the grid: outside).
 
 namespace contain::inside {
 
 namespace {
-
-using detail::cell_range;
-using detail::exact_cell;
-using detail::grid_lines;
-using detail::guess_cell;
 
 // A point strictly below `hi` in [lo, hi) when the span is not empty.
 double inner_point(double lo, double hi) {
@@ -75,10 +72,50 @@ bool separated_by_plane(const Tri& t, const Box3& box) {
   return bmin > tmax + margin || bmax < tmin - margin;
 }
 
-std::string plural(std::size_t n, const char* word) {
-  std::ostringstream out;
-  out << n << " " << word << (n == 1 ? "" : "s");
-  return out.str();
+// Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
+// max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
+// coordinates.
+std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
+                             const MeshIndexOptions& options) {
+  const std::array<double, 3> half{0.5 * bounds.max.x - 0.5 * bounds.min.x,
+                                   0.5 * bounds.max.y - 0.5 * bounds.min.y,
+                                   0.5 * bounds.max.z - 0.5 * bounds.min.z};
+  double target = std::max(options.cells_per_triangle * static_cast<double>(triangles),
+                           static_cast<double>(options.min_cells));
+  target =
+      std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
+  // cell edge = (volume / target)^(1/dims) in half units, in logarithms: the volume of a box of
+  // huge or tiny extents over- or underflows.
+  double log_volume = 0.0;
+  int dims = 0;
+  for (double h : half) {
+    if (h > 0.0) {
+      log_volume += std::log(h);
+      ++dims;
+    }
+  }
+  std::array<int, 3> n{1, 1, 1};
+  if (dims == 0) return n;
+  const double log_edge = (log_volume - std::log(target)) / dims;
+  double product = 1.0;
+  for (int d = 0; d < 3; ++d) {
+    const auto du = static_cast<std::size_t>(d);
+    if (half[du] > 0.0) {
+      const double cells = std::exp(std::log(half[du]) - log_edge);
+      n[du] = static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
+    }
+    product *= n[du];
+  }
+  // Rounding may overshoot the cap: shrink the largest dimension until it fits.
+  while (product > static_cast<double>(std::max<std::size_t>(options.max_cells, 1))) {
+    int* largest = &n[0];
+    for (int& v : n)
+      largest = v > *largest ? &v : largest;
+    if (*largest == 1) break;
+    product = product / *largest * (*largest - 1);
+    *largest -= 1;
+  }
+  return n;
 }
 
 }  // namespace
@@ -89,6 +126,31 @@ const char* to_string(MeshRegime regime) {
 
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
+  read_triangles(mesh);
+  if (!report_.closed()) {
+    regime_ = MeshRegime::winding_number;
+    winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
+    return;
+  }
+  regime_ = MeshRegime::closed_exact;
+  if (tris_.empty()) return;
+  const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
+  x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
+  y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
+  z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
+  nx_ = n[0];
+  ny_ = n[1];
+  nz_ = n[2];
+  stats_.cells =
+      static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
+  stats_.nx = nx_;
+  stats_.ny = ny_;
+  stats_.nz = nz_;
+  list_triangles_by_cell(sort_triangles_by_cell(bvh::triangle_boxes(mesh)));
+  settle_empty_cells();
+}
+
+void MeshIndex::read_triangles(const Mesh& mesh) {
   tris_.reserve(mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles) {
     Tri tri{mesh.vertices[static_cast<std::size_t>(t[0])],
@@ -110,149 +172,40 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     tris_.push_back(tri);
   }
   stats_.triangles = tris_.size();
+}
 
-  // 1. Regime and warning.
-  std::vector<std::string> notes;
-  if (!report_.pinch_vertices.empty()) {
-    notes.push_back(plural(report_.pinch_vertices.size(), "pinch vertex") +
-                    " (not 2-manifold there; first: " +
-                    std::to_string(report_.pinch_vertices.front() + 1) + ", 1-based)");
+// Triangles in the order of the cell of their box's low corner (rows along x are contiguous): a
+// query's run along a row then reads triangles that lie close together in memory.
+std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& boxes) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    const Vec3 lo = boxes[t].min;
+    const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
+    const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
+    const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
+    order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
+                static_cast<std::uint32_t>(t)};
   }
-  if (report_.inconsistent_edges > 0) {
-    notes.push_back("inconsistent orientation (" + plural(report_.inconsistent_edges, "edge") +
-                    " used in the same direction)");
+  std::sort(order.begin(), order.end());
+  std::vector<Tri> sorted_tris(tris_.size());
+  std::vector<Box3> sorted_boxes(tris_.size());
+  for (std::size_t t = 0; t < order.size(); ++t) {
+    sorted_tris[t] = tris_[order[t].second];
+    sorted_boxes[t] = boxes[order[t].second];
   }
-  if (report_.degenerate_triangles > 0) {
-    notes.push_back(plural(report_.degenerate_triangles, "degenerate triangle"));
-  }
-  if (report_.closed()) {
-    regime_ = MeshRegime::closed_exact;
-    // Two copies of a triangle with opposite orientations still close every edge: parity stays
-    // exact (the pair bounds no volume), but the user should hear of it.
-    if (report_.duplicated_triangles > 0) {
-      notes.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
-    }
-    if (!notes.empty()) {
-      std::string w = "mesh has ";
-      for (std::size_t i = 0; i < notes.size(); ++i)
-        w += (i ? ", " : "") + notes[i];
-      warning_ = w +
-                 "; every edge has exactly two triangles, so the answers (closed-exact ray "
-                 "parity) are still exact";
-    }
-  } else {
-    regime_ = MeshRegime::winding_number;
-    std::vector<std::string> why;
-    if (report_.triangles == 0) why.push_back("no triangles");
-    if (report_.border_edges > 0) why.push_back(plural(report_.border_edges, "border edge"));
-    if (report_.nonmanifold_edges > 0) {
-      why.push_back(plural(report_.nonmanifold_edges, "edge") + " of three or more triangles");
-    }
-    if (report_.duplicated_triangles > 0) {
-      why.push_back(plural(report_.duplicated_triangles, "duplicated triangle"));
-    }
-    for (const std::string& n : notes)
-      why.push_back(n);
-    std::string w = "mesh is not closed (";
-    for (std::size_t i = 0; i < why.size(); ++i)
-      w += (i ? ", " : "") + why[i];
-    warning_ = w +
-               "): answers come from the generalized winding number (winding-number regime: "
-               "inside where it is >= 0.5, approximate near the surface); points exactly on the "
-               "surface are still 'on'";
-    winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
-    return;
-  }
-  if (tris_.empty()) return;
+  tris_ = std::move(sorted_tris);
+  return sorted_boxes;
+}
 
-  // 2. Grid. Half units keep the extents finite for any finite coordinates.
-  const std::array<double, 3> half{0.5 * bounds_.max.x - 0.5 * bounds_.min.x,
-                                   0.5 * bounds_.max.y - 0.5 * bounds_.min.y,
-                                   0.5 * bounds_.max.z - 0.5 * bounds_.min.z};
-  double target = std::max(options.cells_per_triangle * static_cast<double>(tris_.size()),
-                           static_cast<double>(options.min_cells));
-  target =
-      std::clamp(target, 1.0, static_cast<double>(std::max<std::size_t>(options.max_cells, 1)));
-  // cell edge = (volume / target)^(1/dims) in half units, in logarithms: the volume of a box of
-  // huge or tiny extents over- or underflows.
-  double log_volume = 0.0;
-  int dims = 0;
-  for (double h : half) {
-    if (h > 0.0) {
-      log_volume += std::log(h);
-      ++dims;
-    }
-  }
-  std::array<int, 3> n{1, 1, 1};
-  if (dims > 0) {
-    const double log_edge = (log_volume - std::log(target)) / dims;
-    double product = 1.0;
-    for (int d = 0; d < 3; ++d) {
-      const auto du = static_cast<std::size_t>(d);
-      if (half[du] > 0.0) {
-        const double cells = std::exp(std::log(half[du]) - log_edge);
-        n[du] = static_cast<int>(std::clamp(std::round(cells), 1.0, 4096.0));
-      }
-      product *= n[du];
-    }
-    // Rounding may overshoot the cap: shrink the largest dimension until it fits.
-    while (product > static_cast<double>(std::max<std::size_t>(options.max_cells, 1))) {
-      int* largest = &n[0];
-      for (int& v : n)
-        largest = v > *largest ? &v : largest;
-      if (*largest == 1) break;
-      product = product / *largest * (*largest - 1);
-      *largest -= 1;
-    }
-  }
-  nx_ = n[0];
-  ny_ = n[1];
-  nz_ = n[2];
-  xs_ = grid_lines(bounds_.min.x, bounds_.max.x, nx_);
-  ys_ = grid_lines(bounds_.min.y, bounds_.max.y, ny_);
-  zs_ = grid_lines(bounds_.min.z, bounds_.max.z, nz_);
-  auto scale = [](double h, int cells) {
-    const double s = h > 0.0 ? cells / h : 0.0;
-    return std::isfinite(s) ? s : 0.0;
-  };
-  scale_ = {scale(half[0], nx_), scale(half[1], ny_), scale(half[2], nz_)};
-  const std::size_t cell_count =
-      static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
-  stats_.cells = cell_count;
-  stats_.nx = nx_;
-  stats_.ny = ny_;
-  stats_.nz = nz_;
-
-  // Triangles in the order of the cell of their box's low corner (rows along x are contiguous):
-  // a query's run along a row then reads triangles that lie close together in memory.
-  std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
-  {
-    std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
-    for (std::size_t t = 0; t < tris_.size(); ++t) {
-      const Vec3 lo = boxes[t].min;
-      const auto i = static_cast<std::size_t>(cell_range(xs_, nx_, lo.x, lo.x).first);
-      const auto j = static_cast<std::size_t>(cell_range(ys_, ny_, lo.y, lo.y).first);
-      const auto k = static_cast<std::size_t>(cell_range(zs_, nz_, lo.z, lo.z).first);
-      order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
-                  static_cast<std::uint32_t>(t)};
-    }
-    std::sort(order.begin(), order.end());
-    std::vector<Tri> sorted_tris(tris_.size());
-    std::vector<Box3> sorted_boxes(tris_.size());
-    for (std::size_t t = 0; t < order.size(); ++t) {
-      sorted_tris[t] = tris_[order[t].second];
-      sorted_boxes[t] = boxes[order[t].second];
-    }
-    tris_ = std::move(sorted_tris);
-    boxes = std::move(sorted_boxes);
-  }
-  // Triangle boxes -> closed cells (two passes: count, then fill).
+// Triangle boxes -> closed cells (two passes: count, then fill).
+void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
+  const std::size_t cell_count = stats_.cells;
   std::vector<std::uint32_t> count(cell_count + 1, 0);
   auto for_cells = [&](std::size_t t, auto&& f) {
     const Box3& b = boxes[t];
-    const auto [i0, i1] = cell_range(xs_, nx_, b.min.x, b.max.x);
-    const auto [j0, j1] = cell_range(ys_, ny_, b.min.y, b.max.y);
-    const auto [k0, k1] = cell_range(zs_, nz_, b.min.z, b.max.z);
+    const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
+    const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
+    const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
     // A triangle whose box spans several cells is tested against each cell's box along its
     // normal, conservatively (separated_by_plane): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
@@ -261,8 +214,9 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
         for (int i = i0; i <= i1; ++i) {
           const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j),
                      ku = static_cast<std::size_t>(k);
-          if (big && separated_by_plane(tris_[t], {{xs_[iu], ys_[ju], zs_[ku]},
-                                                   {xs_[iu + 1], ys_[ju + 1], zs_[ku + 1]}})) {
+          if (big &&
+              separated_by_plane(tris_[t], {{x_.line(i), y_.line(j), z_.line(k)},
+                                            {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
             continue;
           }
           f((ku * static_cast<std::size_t>(ny_) + ju) * static_cast<std::size_t>(nx_) + iu);
@@ -292,20 +246,20 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     });
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();
+}
 
-  // 3. Empty cells, right to left along each row.
+// Empty cells, right to left along each row.
+void MeshIndex::settle_empty_cells() {
   for (int k = 0; k < nz_; ++k) {
-    const double z =
-        inner_point(zs_[static_cast<std::size_t>(k)], zs_[static_cast<std::size_t>(k) + 1]);
+    const double z = inner_point(z_.line(k), z_.line(k + 1));
     for (int j = 0; j < ny_; ++j) {
-      const double y =
-          inner_point(ys_[static_cast<std::size_t>(j)], ys_[static_cast<std::size_t>(j) + 1]);
+      const double y = inner_point(y_.line(j), y_.line(j + 1));
       const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
                                static_cast<std::size_t>(j)) *
                               static_cast<std::size_t>(nx_);
       for (int i = nx_ - 1; i >= 0; --i) {
         if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
-        const Vec3 m{xs_[static_cast<std::size_t>(i)], y, z};
+        const Vec3 m{x_.line(i), y, z};
         const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
         state_[row + static_cast<std::size_t>(i)] = odd ? 1 : 0;
       }
@@ -336,8 +290,8 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
     // (no hit can lie in its closed box).
     const bool test_upper = i + 1 < nx_ && state_[row + static_cast<std::size_t>(i) + 1] == 2;
-    const Vec3 lower{xs_[static_cast<std::size_t>(i)], q.y, q.z};
-    const Vec3 upper{xs_[static_cast<std::size_t>(i) + 1], q.y, q.z};
+    const Vec3 lower{x_.line(i), q.y, q.z};
+    const Vec3 upper{x_.line(i + 1), q.y, q.z};
     const bool from_q = q_in_first && i == first;
     for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
       const CellRef& ref = refs_[r];
@@ -364,9 +318,9 @@ Location MeshIndex::locate(Vec3 p) const {
 
 Location MeshIndex::locate_exact(Vec3 p) const {
   if (state_.empty() || !bounds_.contains(p)) return Location::outside;
-  const int i = exact_cell(xs_, nx_, p.x, guess_cell(p.x, bounds_.min.x, scale_.x, nx_));
-  const int j = exact_cell(ys_, ny_, p.y, guess_cell(p.y, bounds_.min.y, scale_.y, ny_));
-  const int k = exact_cell(zs_, nz_, p.z, guess_cell(p.z, bounds_.min.z, scale_.z, nz_));
+  const int i = x_.cell_of(p.x);
+  const int j = y_.cell_of(p.y);
+  const int k = z_.cell_of(p.z);
   const std::size_t row =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
       static_cast<std::size_t>(nx_);
@@ -415,9 +369,9 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
     std::array<std::ptrdiff_t, kAhead> guessed{};
     auto guess = [&](Vec3 p) -> std::ptrdiff_t {
       if (!bounds_.contains(p)) return -1;
-      const int i = guess_cell(p.x, bounds_.min.x, scale_.x, nx_);
-      const int j = guess_cell(p.y, bounds_.min.y, scale_.y, ny_);
-      const int k = guess_cell(p.z, bounds_.min.z, scale_.z, nz_);
+      const int i = x_.guess(p.x);
+      const int j = y_.guess(p.y);
+      const int k = z_.guess(p.z);
       return (static_cast<std::ptrdiff_t>(k) * ny_ + j) * nx_ + i;
     };
     // The surface cell of the guessed cell of point q, or -1.

@@ -81,7 +81,7 @@ Location projected(const Triangle3& t, Vec3 p) {
     Vec2 a = drop(t.a, axis), b = drop(t.b, axis), c = drop(t.c, axis);
     const Sign turn = predicates::orient2d(a, b, c);
     if (turn == Sign::zero) continue;  // degenerate along this axis: try the next one
-    // The seed's exchange of two vertices so that the third is left of the first edge.
+    // The book's exchange of two vertices (§ 22.4) so that the third is left of the first edge.
     if (turn == Sign::negative) std::swap(b, c);
     const Vec2 q = drop(p, axis);
     return combine(predicates::orient2d(a, b, q), predicates::orient2d(b, c, q),

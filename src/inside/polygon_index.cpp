@@ -5,28 +5,96 @@
 #include <cmath>
 #include <limits>
 
-#include "inside/grid_lines.h"
 #include "inside/polygon_kernel.h"
 
-// Outline (derivation in polygon_index.h and polygon_kernel.h):
-//  1. edges (zero-length dropped), bounding box, grid size from the edge count and total length;
-//  2. every edge is rasterised conservatively into the closed cells it touches (floating-point
-//     x-range per row, widened by a proven error bound, then exact comparisons with the lines);
-//  3. along each vertical grid line, the exact winding number at every grid corner (half-open
-//     vertical rule, a binary search per crossing edge, then a prefix sum);
-//  4. empty cells store their answer; edge cells store their edges, the edges crossing their
-//     right side, and the winding number at their lower-right corner.
+// Construction, stage by stage (derivation in polygon_index.h and polygon_kernel.h):
+//  edges_of          the edges (zero-length dropped) and their bounding box;
+//  grid_size         columns and rows from the edge count and total length, coarsened until
+//                    long edges crossing the region cannot blow up the edge-cell pairs;
+//  edges_by_cell     every edge rasterised conservatively into the closed cells it touches
+//                    (floating-point x-range per row, widened by a proven error bound, then
+//                    exact comparisons with the lines), bucketed by cell;
+//  corner_windings   along each vertical grid line, the exact winding number at every grid
+//                    corner (half-open vertical rule, a binary search per crossing edge, then a
+//                    prefix sum);
+//  settle_cells      empty cells store their answer; edge cells their edges, the edges crossing
+//                    their right side and the winding number at their lower-right corner.
 
 namespace contain::inside {
 
 namespace {
 
-using detail::cell_range;
-using detail::exact_cell;
-using detail::grid_lines;
-using detail::guess_cell;
-
 using detail::Edge;
+
+std::vector<Edge> edges_of(std::span<const Ring> rings, Box2& bounds) {
+  std::vector<Edge> edges;
+  for (const Ring& ring : rings) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = ring[i], b = ring[(i + 1) % n];
+      if (a == b) continue;
+      edges.push_back({a, b});
+      bounds.expand(a);
+    }
+  }
+  return edges;
+}
+
+// Long edges crossing the whole region (stars with long spikes) touch about length / cell size
+// cells each: on a grid of max_cells they made 27 million edge-cell pairs (2 GB) for a
+// 64,000-edge star (found by the memory growth test). Halves nx and ny until the estimated
+// pairs, n + sum |dx| / cell width + sum |dy| / cell height, fit kPairsPerEdge per edge.
+void coarsen_for_long_edges(std::span<const Edge> edges, double half_w, double half_h,
+                            std::size_t min_cells, double& nx, double& ny) {
+  constexpr double kPairsPerEdge = 32.0;
+  // Edge extents relative to the box (each at most 1: no overflow near DBL_MAX).
+  double rel_x = 0.0, rel_y = 0.0;
+  for (const Edge& e : edges) {
+    if (half_w > 0.0) rel_x += std::abs(0.5 * e.b.x - 0.5 * e.a.x) / half_w;
+    if (half_h > 0.0) rel_y += std::abs(0.5 * e.b.y - 0.5 * e.a.y) / half_h;
+  }
+  const double n = static_cast<double>(edges.size());
+  auto pairs = [&](double cx, double cy) { return n + rel_x * cx + rel_y * cy; };
+  const double budget = std::max(kPairsPerEdge * n, static_cast<double>(min_cells));
+  while (nx * ny > 1.0 && pairs(nx, ny) > budget) {
+    nx = std::ceil(nx / 2);
+    ny = std::ceil(ny / 2);
+  }
+}
+
+// Columns and rows: enough cells that a cell holds about one edge. Half units avoid overflow.
+std::pair<int, int> grid_size(std::span<const Edge> edges, const Box2& bounds,
+                              const PolygonIndexOptions& options) {
+  const double half_w = 0.5 * bounds.max.x - 0.5 * bounds.min.x;
+  const double half_h = 0.5 * bounds.max.y - 0.5 * bounds.min.y;
+  double length = 0.0;  // total edge length (L-infinity), half units
+  for (const Edge& e : edges) {
+    length += std::max(std::abs(0.5 * e.b.x - 0.5 * e.a.x), std::abs(0.5 * e.b.y - 0.5 * e.a.y));
+  }
+  const double max_cells = static_cast<double>(std::max<std::size_t>(options.max_cells, 1));
+  double target = std::max(options.cells_per_edge * static_cast<double>(edges.size()),
+                           static_cast<double>(options.min_cells));
+  if (half_w > 0.0 && half_h > 0.0) {
+    const double by_length = length * length / (half_w * half_h);
+    if (by_length > target) target = by_length;
+  }
+  if (!(target <= max_cells)) target = max_cells;
+  if (!(target >= 1.0)) target = 1.0;
+  double nx = 1.0, ny = 1.0;
+  if (half_w > 0.0 && half_h > 0.0) {
+    const double aspect = half_w / half_h;
+    nx = std::round(std::sqrt(target * aspect));
+    if (!(nx >= 1.0)) nx = 1.0;
+    if (nx > target) nx = target;
+    ny = std::clamp(std::round(target / nx), 1.0, target);
+  } else if (half_w > 0.0) {
+    nx = std::round(target);
+  } else if (half_h > 0.0) {
+    ny = std::round(target);
+  }
+  coarsen_for_long_edges(edges, half_w, half_h, options.min_cells, nx, ny);
+  return {static_cast<int>(nx), static_cast<int>(ny)};
+}
 
 // A conservative x-range of the edge within y in [y0, y1] (a sub-range of its y-extent).
 std::pair<double, double> x_range_in_rows(const Edge& e, double y0, double y1) {
@@ -54,6 +122,93 @@ std::pair<double, double> x_range_in_rows(const Edge& e, double y0, double y1) {
   return {lo, hi};
 }
 
+// The edges of each cell: cell c lists edge[start[c] .. start[c + 1]) (indices into the edges).
+struct CellLists {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> edge;
+};
+
+// Conservative rasterisation into closed cells: (cell, edge) pairs, then a counting sort by cell.
+CellLists edges_by_cell(std::span<const Edge> edges, const GridAxis& x, const GridAxis& y) {
+  const int columns = x.cells();
+  std::vector<std::uint32_t> pair_cell, pair_edge;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const Edge& e = edges[k];
+    const double ylo = std::min(e.a.y, e.b.y), yhi = std::max(e.a.y, e.b.y);
+    const auto [j0, j1] = y.cells_meeting(ylo, yhi);
+    for (int j = j0; j <= j1; ++j) {
+      const double y0 = std::max(y.line(j), ylo);
+      const double y1 = std::min(y.line(j + 1), yhi);
+      if (y0 > y1) continue;
+      const auto [xl, xr] = x_range_in_rows(e, y0, y1);
+      const auto [i0, i1] = x.cells_meeting(xl, xr);
+      for (int i = i0; i <= i1; ++i) {
+        pair_cell.push_back(static_cast<std::uint32_t>(j * columns + i));
+        pair_edge.push_back(static_cast<std::uint32_t>(k));
+      }
+    }
+  }
+  const std::size_t cell_count =
+      static_cast<std::size_t>(columns) * static_cast<std::size_t>(y.cells());
+  CellLists lists{std::vector<std::uint32_t>(cell_count + 1, 0),
+                  std::vector<std::uint32_t>(pair_cell.size())};
+  for (std::uint32_t c : pair_cell)
+    ++lists.start[c + 1];
+  for (std::size_t c = 0; c < cell_count; ++c)
+    lists.start[c + 1] += lists.start[c];
+  std::vector<std::uint32_t> next(lists.start.begin(), lists.start.end() - 1);
+  for (std::size_t q = 0; q < pair_cell.size(); ++q)
+    lists.edge[next[pair_cell[q]]++] = pair_edge[q];
+  return lists;
+}
+
+// Winding numbers at the corners (X_k, Y_j), k = 1..nx-1 (none crosses X_nx = max x):
+// corner[j * nx + (k - 1)] is the lower-right corner of cell (k - 1, j); the last column's
+// entries stay 0 (no cell reads them).
+std::vector<int> corner_windings(std::span<const Edge> edges, const GridAxis& x,
+                                 const GridAxis& y) {
+  const int columns = x.cells(), rows = y.cells();
+  const std::span<const double> xs = x.lines();
+  std::vector<int> corner(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
+  std::vector<int> diff(static_cast<std::size_t>(rows) + 1);
+  std::vector<std::vector<std::pair<int, int>>> by_line(static_cast<std::size_t>(columns));
+  for (const Edge& e : edges) {
+    const Vec2 l = e.a.x <= e.b.x ? e.a : e.b;
+    const Vec2 r = e.a.x <= e.b.x ? e.b : e.a;
+    if (l.x == r.x) continue;  // vertical edges cross no line x = X+
+    const int dir = e.a.x < e.b.x ? 1 : -1;
+    // lines with l.x <= X_k < r.x
+    const auto k0 = std::lower_bound(xs.begin() + 1, xs.end() - 1, l.x) - xs.begin();
+    const auto k1 = std::lower_bound(xs.begin() + 1, xs.end() - 1, r.x) - xs.begin();
+    for (auto k = k0; k < k1; ++k) {
+      const double line = xs[static_cast<std::size_t>(k)];
+      // the first corner row the edge passes below (monotone in j)
+      int lo = 0, hi = rows;
+      while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (detail::passes_below(l, r, line, y.line(mid))) {
+          hi = mid;
+        } else {
+          lo = mid + 1;
+        }
+      }
+      if (lo < rows) by_line[static_cast<std::size_t>(k)].push_back({lo, dir});
+    }
+  }
+  for (int k = 1; k < columns; ++k) {
+    std::fill(diff.begin(), diff.end(), 0);
+    for (const auto& [row, dir] : by_line[static_cast<std::size_t>(k)]) {
+      diff[static_cast<std::size_t>(row)] += dir;
+    }
+    int w = 0;
+    for (int j = 0; j < rows; ++j) {
+      w += diff[static_cast<std::size_t>(j)];
+      corner[static_cast<std::size_t>(j * columns + (k - 1))] = w;
+    }
+  }
+  return corner;
+}
+
 }  // namespace
 
 PolygonIndex::PolygonIndex(const Polygon& polygon, const PolygonIndexOptions& options)
@@ -64,168 +219,38 @@ PolygonIndex::PolygonIndex(const MultiPolygon& polygons, const PolygonIndexOptio
 
 PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOptions& options)
     : fill_(options.fill) {
-  std::vector<Edge> edges;
-  for (const Ring& ring : rings) {
-    const std::size_t n = ring.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring[i], b = ring[(i + 1) % n];
-      if (a == b) continue;
-      edges.push_back({a, b});
-      bounds_.expand(a);
-    }
-  }
+  const std::vector<Edge> edges = edges_of(rings, bounds_);
   stats_.edges = edges.size();
   if (edges.empty()) return;
-
-  // 1. Grid size: enough cells that a cell holds about one edge. Half units avoid overflow.
-  const double half_w = 0.5 * bounds_.max.x - 0.5 * bounds_.min.x;
-  const double half_h = 0.5 * bounds_.max.y - 0.5 * bounds_.min.y;
-  double length = 0.0;  // total edge length (L-infinity), half units
-  for (const Edge& e : edges) {
-    length += std::max(std::abs(0.5 * e.b.x - 0.5 * e.a.x), std::abs(0.5 * e.b.y - 0.5 * e.a.y));
-  }
-  const double max_cells = static_cast<double>(std::max<std::size_t>(options.max_cells, 1));
-  double target = std::max(options.cells_per_edge * static_cast<double>(edges.size()),
-                           static_cast<double>(options.min_cells));
-  if (half_w > 0.0 && half_h > 0.0) {
-    const double by_length = length * length / (half_w * half_h);
-    if (by_length > target) target = by_length;
-  }
-  if (!(target <= max_cells)) target = max_cells;
-  if (!(target >= 1.0)) target = 1.0;
-  double nx = 1.0, ny = 1.0;
-  if (half_w > 0.0 && half_h > 0.0) {
-    const double aspect = half_w / half_h;
-    nx = std::round(std::sqrt(target * aspect));
-    if (!(nx >= 1.0)) nx = 1.0;
-    if (nx > target) nx = target;
-    ny = std::clamp(std::round(target / nx), 1.0, target);
-  } else if (half_w > 0.0) {
-    nx = std::round(target);
-  } else if (half_h > 0.0) {
-    ny = std::round(target);
-  }
-  // Long edges crossing the whole region (stars with long spikes) touch about length / cell
-  // size cells each: on a grid of max_cells they made 27 million edge-cell pairs (2 GB) for a
-  // 64,000-edge star (found by the memory growth test). Coarsen the grid until the estimated
-  // pairs, n + sum |dx| / cell width + sum |dy| / cell height, fit kPairsPerEdge per edge.
-  {
-    constexpr double kPairsPerEdge = 32.0;
-    // Edge extents relative to the box (each at most 1: no overflow near DBL_MAX).
-    double rel_x = 0.0, rel_y = 0.0;
-    for (const Edge& e : edges) {
-      if (half_w > 0.0) rel_x += std::abs(0.5 * e.b.x - 0.5 * e.a.x) / half_w;
-      if (half_h > 0.0) rel_y += std::abs(0.5 * e.b.y - 0.5 * e.a.y) / half_h;
-    }
-    const double n = static_cast<double>(edges.size());
-    auto pairs = [&](double cx, double cy) { return n + rel_x * cx + rel_y * cy; };
-    const double budget = std::max(kPairsPerEdge * n, static_cast<double>(options.min_cells));
-    while (nx * ny > 1.0 && pairs(nx, ny) > budget) {
-      nx = std::ceil(nx / 2);
-      ny = std::ceil(ny / 2);
-    }
-  }
-  nx_ = static_cast<int>(nx);
-  ny_ = static_cast<int>(ny);
-  xs_ = grid_lines(bounds_.min.x, bounds_.max.x, nx_);
-  ys_ = grid_lines(bounds_.min.y, bounds_.max.y, ny_);
-  scale_x_ = half_w > 0.0 ? nx_ / half_w : 0.0;
-  scale_y_ = half_h > 0.0 ? ny_ / half_h : 0.0;
-  if (!std::isfinite(scale_x_)) scale_x_ = 0.0;
-  if (!std::isfinite(scale_y_)) scale_y_ = 0.0;
-  const std::size_t cell_count = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  stats_.cells = cell_count;
-
-  // 2. Conservative rasterisation into closed cells: (cell, edge) pairs, then bucketed by cell.
-  std::vector<std::uint32_t> pair_cell, pair_edge;
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const Edge& e = edges[k];
-    const double ylo = std::min(e.a.y, e.b.y), yhi = std::max(e.a.y, e.b.y);
-    const auto [j0, j1] = cell_range(ys_, ny_, ylo, yhi);
-    for (int j = j0; j <= j1; ++j) {
-      const double y0 = std::max(ys_[static_cast<std::size_t>(j)], ylo);
-      const double y1 = std::min(ys_[static_cast<std::size_t>(j) + 1], yhi);
-      if (y0 > y1) continue;
-      const auto [xl, xr] = x_range_in_rows(e, y0, y1);
-      const auto [i0, i1] = cell_range(xs_, nx_, xl, xr);
-      for (int i = i0; i <= i1; ++i) {
-        pair_cell.push_back(static_cast<std::uint32_t>(j * nx_ + i));
-        pair_edge.push_back(static_cast<std::uint32_t>(k));
-      }
-    }
-  }
-  std::vector<std::uint32_t> start(cell_count + 1, 0);
-  for (std::uint32_t c : pair_cell)
-    ++start[c + 1];
-  for (std::size_t c = 0; c < cell_count; ++c)
-    start[c + 1] += start[c];
-  edges_.resize(pair_cell.size());
-  {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t q = 0; q < pair_cell.size(); ++q) {
-      const Edge& e = edges[pair_edge[q]];
-      edges_[next[pair_cell[q]]++] = {e.a, e.b};
-    }
-  }
+  const auto [columns, rows] = grid_size(edges, bounds_, options);
+  x_ = GridAxis(bounds_.min.x, bounds_.max.x, columns);
+  y_ = GridAxis(bounds_.min.y, bounds_.max.y, rows);
+  stats_.cells = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
+  const CellLists lists = edges_by_cell(edges, x_, y_);
+  edges_.reserve(lists.edge.size());
+  for (std::uint32_t k : lists.edge)
+    edges_.push_back({edges[k].a, edges[k].b});
   stats_.edge_refs = edges_.size();
+  settle_cells(lists.start, corner_windings(edges, x_, y_));
+  stats_.edge_cells = edge_cells_.size();
+}
 
-  // 3. Winding numbers at the corners (X_k, Y_j), k = 1..nx-1 (none crosses X_nx = max x).
-  // corner[j * nx + (k - 1)] is the lower-right corner of cell (k - 1, j).
-  std::vector<int> corner(cell_count, 0);
-  {
-    std::vector<int> diff(static_cast<std::size_t>(ny_) + 1);
-    std::vector<std::vector<std::pair<int, int>>> by_line(static_cast<std::size_t>(nx_));
-    for (const Edge& e : edges) {
-      const Vec2 l = e.a.x <= e.b.x ? e.a : e.b;
-      const Vec2 r = e.a.x <= e.b.x ? e.b : e.a;
-      if (l.x == r.x) continue;  // vertical edges cross no line x = X+
-      const int dir = e.a.x < e.b.x ? 1 : -1;
-      // lines with l.x <= X_k < r.x
-      const auto k0 = std::lower_bound(xs_.begin() + 1, xs_.end() - 1, l.x) - xs_.begin();
-      const auto k1 = std::lower_bound(xs_.begin() + 1, xs_.end() - 1, r.x) - xs_.begin();
-      for (auto k = k0; k < k1; ++k) {
-        const double x = xs_[static_cast<std::size_t>(k)];
-        // the first corner row the edge passes below (monotone in j)
-        int lo = 0, hi = ny_;
-        while (lo < hi) {
-          const int mid = (lo + hi) / 2;
-          if (detail::passes_below(l, r, x, ys_[static_cast<std::size_t>(mid)])) {
-            hi = mid;
-          } else {
-            lo = mid + 1;
-          }
-        }
-        if (lo < ny_) by_line[static_cast<std::size_t>(k)].push_back({lo, dir});
-      }
-    }
-    for (int k = 1; k < nx_; ++k) {
-      std::fill(diff.begin(), diff.end(), 0);
-      for (const auto& [row, dir] : by_line[static_cast<std::size_t>(k)]) {
-        diff[static_cast<std::size_t>(row)] += dir;
-      }
-      int w = 0;
-      for (int j = 0; j < ny_; ++j) {
-        w += diff[static_cast<std::size_t>(j)];
-        corner[static_cast<std::size_t>(j * nx_ + (k - 1))] = w;
-      }
-    }
-  }
-
-  // 4. Cells.
-  cells_.assign(cell_count, 0);
-  for (int j = 0; j < ny_; ++j) {
-    for (int i = 0; i < nx_; ++i) {
-      const auto c = static_cast<std::size_t>(j * nx_ + i);
+void PolygonIndex::settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner) {
+  const int columns = x_.cells(), rows = y_.cells();
+  cells_.assign(corner.size(), 0);
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < columns; ++i) {
+      const auto c = static_cast<std::size_t>(j * columns + i);
       const int w = corner[c];
       if (start[c] == start[c + 1]) {
         cells_[c] = is_filled(fill_, w) ? 1u : 0u;
         continue;
       }
       EdgeCell cell{start[c], start[c + 1], static_cast<std::uint32_t>(side_edges_.size()), 0, w};
-      if (i + 1 < nx_) {
-        const double x = xs_[static_cast<std::size_t>(i) + 1];
-        const double y0 = ys_[static_cast<std::size_t>(j)];
-        const double y1 = ys_[static_cast<std::size_t>(j) + 1];
+      if (i + 1 < columns) {
+        const double x = x_.line(i + 1);
+        const double y0 = y_.line(j);
+        const double y1 = y_.line(j + 1);
         for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
           const CellEdge& e = edges_[q];
           const Vec2 l = e.a.x <= e.b.x ? e.a : e.b;
@@ -240,18 +265,6 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
       edge_cells_.push_back(cell);
     }
   }
-  stats_.edge_cells = edge_cells_.size();
-  // Grown by push_back: give back the slack (layers hold many indexes).
-  edge_cells_.shrink_to_fit();
-  side_edges_.shrink_to_fit();
-}
-
-int PolygonIndex::column_of(double x) const {
-  return exact_cell(xs_, nx_, x, guess_cell(x, bounds_.min.x, scale_x_, nx_));
-}
-
-int PolygonIndex::row_of(double y) const {
-  return exact_cell(ys_, ny_, y, guess_cell(y, bounds_.min.y, scale_y_, ny_));
 }
 
 Location PolygonIndex::locate(Vec2 point) const {
@@ -259,16 +272,16 @@ Location PolygonIndex::locate(Vec2 point) const {
         point.y <= bounds_.max.y)) {
     return Location::outside;
   }
-  const int i = column_of(point.x);
-  const int j = row_of(point.y);
-  const std::uint32_t code = cells_[static_cast<std::size_t>(j * nx_ + i)];
+  const int i = x_.cell_of(point.x);
+  const int j = y_.cell_of(point.y);
+  const std::uint32_t code = cells_[static_cast<std::size_t>(j * x_.cells() + i)];
   if (code < 2) return code == 1 ? Location::inside : Location::outside;
   return locate_in_edge_cell(point, i, edge_cells_[code - 2]);
 }
 
 Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const {
   // winding(p+) = winding(t+) + crossings of t -> s up the right side + sum c(p) - c(s).
-  const double x1 = xs_[static_cast<std::size_t>(column) + 1];
+  const double x1 = x_.line(column + 1);
   int winding = cell.corner_winding;
   for (std::uint32_t q = cell.side_begin; q < cell.side_end; ++q) {
     const SideEdge& e = side_edges_[q];
@@ -292,7 +305,7 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
 }
 
 std::size_t PolygonIndex::memory_bytes() const {
-  return sizeof(*this) + (xs_.capacity() + ys_.capacity()) * sizeof(double) +
+  return sizeof(*this) + (x_.lines().size() + y_.lines().size()) * sizeof(double) +
          cells_.capacity() * sizeof(std::uint32_t) + edge_cells_.capacity() * sizeof(EdgeCell) +
          edges_.capacity() * sizeof(CellEdge) + side_edges_.capacity() * sizeof(SideEdge);
 }
@@ -302,9 +315,9 @@ std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
         point.y <= bounds_.max.y)) {
     return -1;
   }
-  const int i = guess_cell(point.x, bounds_.min.x, scale_x_, nx_);
-  const int j = guess_cell(point.y, bounds_.min.y, scale_y_, ny_);
-  return static_cast<std::ptrdiff_t>(j) * nx_ + i;
+  const int i = x_.guess(point.x);
+  const int j = y_.guess(point.y);
+  return static_cast<std::ptrdiff_t>(j) * x_.cells() + i;
 }
 
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,

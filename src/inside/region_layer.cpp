@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "inside/grid_lines.h"
 #include "inside/holder_batch.h"
 
 namespace contain::inside {
@@ -61,7 +60,7 @@ RegionLayer::RegionLayer(std::span<const MultiPolygon> regions, const RegionLaye
   stats_.bytes += sizeof(*this) + indexes_.capacity() * sizeof(PolygonIndex) +
                   boxes_.capacity() * sizeof(Box2) + tree_.nodes().size() * sizeof(bvh::Node) +
                   tree_.items().size() * sizeof(std::int32_t) +
-                  (xs_.capacity() + ys_.capacity()) * sizeof(double) +
+                  (x_.lines().size() + y_.lines().size()) * sizeof(double) +
                   grid_start_.capacity() * sizeof(std::uint32_t) +
                   grid_regions_.capacity() * sizeof(std::int32_t) + grid_tree_.capacity();
 }
@@ -90,26 +89,21 @@ void RegionLayer::build_grid(double cells_per_region) {
   // an ocean basin, cover most cells); one cell always fits.
   const double budget = 8.0 * static_cast<double>(live) + nx * ny;
   for (;;) {
-    nx_ = static_cast<int>(nx);
-    ny_ = static_cast<int>(ny);
-    xs_ = detail::grid_lines(bounds_.min.x, bounds_.max.x, nx_);
-    ys_ = detail::grid_lines(bounds_.min.y, bounds_.max.y, ny_);
+    x_ = GridAxis(bounds_.min.x, bounds_.max.x, static_cast<int>(nx));
+    y_ = GridAxis(bounds_.min.y, bounds_.max.y, static_cast<int>(ny));
     double entries = 0.0;
     for (const Box2& b : boxes_) {
       if (b.empty()) continue;
-      const auto [i0, i1] = detail::cell_range(xs_, nx_, b.min.x, b.max.x);
-      const auto [j0, j1] = detail::cell_range(ys_, ny_, b.min.y, b.max.y);
+      const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
+      const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
       entries += static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1);
     }
     if (entries <= budget || nx * ny <= 1.0) break;
     nx = std::ceil(nx / 2);
     ny = std::ceil(ny / 2);
   }
-  scale_x_ = half_w > 0.0 ? nx_ / half_w : 0.0;
-  scale_y_ = half_h > 0.0 ? ny_ / half_h : 0.0;
-  if (!std::isfinite(scale_x_)) scale_x_ = 0.0;
-  if (!std::isfinite(scale_y_)) scale_y_ = 0.0;
-  const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  const auto columns = static_cast<std::size_t>(x_.cells());
+  const std::size_t cells = columns * static_cast<std::size_t>(y_.cells());
   grid_start_.assign(cells + 1, 0);
   for (int pass = 0; pass < 2; ++pass) {  // count, then fill in region order (ascending lists)
     std::vector<std::uint32_t> next;
@@ -122,12 +116,11 @@ void RegionLayer::build_grid(double cells_per_region) {
     for (std::size_t r = 0; r < boxes_.size(); ++r) {
       const Box2& b = boxes_[r];
       if (b.empty()) continue;
-      const auto [i0, i1] = detail::cell_range(xs_, nx_, b.min.x, b.max.x);
-      const auto [j0, j1] = detail::cell_range(ys_, ny_, b.min.y, b.max.y);
+      const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
+      const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
       for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
-          const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                         static_cast<std::size_t>(i);
+          const auto c = static_cast<std::size_t>(j) * columns + static_cast<std::size_t>(i);
           if (pass == 0) {
             ++grid_start_[c + 1];
           } else {
@@ -163,12 +156,10 @@ void RegionLayer::locate(Vec2 point, std::vector<Holder>& out) const {
     locate_in_tree(point, out);
     return;
   }
-  const int i = detail::exact_cell(xs_, nx_, point.x,
-                                   detail::guess_cell(point.x, bounds_.min.x, scale_x_, nx_));
-  const int j = detail::exact_cell(ys_, ny_, point.y,
-                                   detail::guess_cell(point.y, bounds_.min.y, scale_y_, ny_));
-  const auto c =
-      static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+  const int i = x_.cell_of(point.x);
+  const int j = y_.cell_of(point.y);
+  const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
+                 static_cast<std::size_t>(i);
   if (grid_tree_[c] != 0) {
     locate_in_tree(point, out);
     return;

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "contain/inside/mesh_index.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/shapes/mesh_validation.h"
 #include "muparser_function.h"
 
@@ -17,12 +17,13 @@ namespace contain::io {
 namespace {
 
 // Why a mesh read for a leaf cannot be one (empty if it can). The reader has checked its numbers
-// and indices; a leaf must be closed, as inside::CsgSolid::prepare requires. The wording is
-// MeshIndex's, whose index is built only on this error path.
+// and indices; a leaf must be closed, as inside::CsgSolid::prepare requires, and the words are
+// those of the warning for the regime such a mesh would get.
 std::string mesh_leaf_problem(const Mesh& mesh) {
-  if (validate_mesh(mesh).closed()) return "";
-  return "mesh is not closed, a closed mesh is required (" + inside::MeshIndex(mesh).warning() +
-         ")";
+  const MeshReport report = validate_mesh(mesh);
+  if (report.closed()) return "";
+  return "mesh is not closed, a closed mesh is required (" +
+         mesh_warning(inside::MeshRegime::winding_number, report) + ")";
 }
 
 using nlohmann::json;

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Point clipping (seed section 22.4: "If the object to be clipped is a point, then containment
-/// can be tested ... the point is either removed or preserved"): a thin wrapper on `inside::`.
+/// Point clipping ("Algorithms of Informatics" vol. 2, § 22.4: "If the object to be clipped is a
+/// point, then containment can be tested ... the point is either removed or preserved"): a thin
+/// wrapper on `inside::`.
 
 #include <optional>
 

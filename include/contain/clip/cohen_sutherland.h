@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Cohen-Sutherland line clipping against an axis-aligned box (seed section 22.4, Definition
-/// 22.11 and the algorithm Cohen-Sutherland-Line-Clipping), in 2D (4-bit codes) and 3D (6-bit).
+/// Cohen-Sutherland line clipping against an axis-aligned box ("Algorithms of Informatics" vol. 2,
+/// § 22.4, Definition 22.11 and the algorithm Cohen-Sutherland-Line-Clipping), in 2D (4-bit codes)
+/// and 3D (6-bit).
 
 #include <cstdint>
 

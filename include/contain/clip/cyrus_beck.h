@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Cyrus-Beck clipping of a segment by a convex polygon or polyhedron: the generalisation of
-/// Cohen-Sutherland to convex clipping regions asked by exercise 22.4-6 of the seed section
-/// (M. Cyrus, J. Beck, "Generalized two- and three-dimensional clipping", Computers & Graphics
-/// 3(1), 1978).
+/// Cohen-Sutherland to convex clipping regions asked by exercise 22.4-6 of "Algorithms of
+/// Informatics" vol. 2 (M. Cyrus, J. Beck, "Generalized two- and three-dimensional clipping",
+/// Computers & Graphics 3(1), 1978).
 
 #include <span>
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Triangle meshes clipped by half-spaces, a box or a convex polyhedron, face by face
-/// (Sutherland-Hodgman on each triangle, seed section 22.4), optionally closed again by caps.
+/// (Sutherland-Hodgman on each triangle, "Algorithms of Informatics" vol. 2, § 22.4), optionally
+/// closed again by caps.
 
 #include <cstdint>
 #include <span>

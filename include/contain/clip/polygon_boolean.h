@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// General polygon booleans: intersection, union, difference and xor of arbitrary regions
-/// (exercise 22.4-3 of the seed section, "clipping onto a concave polygon", in its general form).
+/// (exercise 22.4-3 of "Algorithms of Informatics" vol. 2, "clipping onto a concave polygon", in
+/// its general form).
 
 #include <cstdint>
 #include <span>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// A segment against one half-space or half-plane: the seed section's three cases and its
-/// intersection parameter (section 22.4, "Clipping").
+/// A segment against one half-space or half-plane: the three cases of "Algorithms of Informatics"
+/// vol. 2, § 22.4, and its intersection parameter (section 22.4, "Clipping").
 
 #include <cstdint>
 

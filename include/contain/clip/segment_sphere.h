@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// A segment clipped by a ball or a disc (exercise 22.4-7 of the seed section).
+/// A segment clipped by a ball or a disc (exercise 22.4-7 of "Algorithms of Informatics" vol. 2).
 
 #include "contain/clip/clipped_segment.h"
 #include "contain/values/segment.h"

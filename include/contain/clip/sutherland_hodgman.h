@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The Sutherland-Hodgman polygon clipping algorithm of the seed section (22.4, "Sutherland-
-/// Hodgeman-Polygon-Clipping"): one ring against a half-plane or half-space, and against a convex
-/// polygon or polyhedron as a sequence of them (figure 22.22: "the result of one clipping step on
-/// a half plane is the input of clipping on the next").
+/// The Sutherland-Hodgman polygon clipping algorithm of "Algorithms of Informatics" vol. 2 (§ 22.4,
+/// "Sutherland- Hodgeman-Polygon-Clipping"): one ring against a half-plane or half-space, and
+/// against a convex polygon or polyhedron as a sequence of them (figure 22.22: "the result of one
+/// clipping step on a half plane is the input of clipping on the next").
 
 #include <span>
 #include <vector>

@@ -47,8 +47,9 @@ struct MeshPairOptions {
 ///
 /// Complexity: build O(n log n); a query O(node pairs entered + leaf pairs) plus a ray per
 /// component reaching the containment check. Thread safety: const; queries may run
-/// concurrently. Reference: seed section 22.4 (polyhedron collision, bounding volumes),
-/// exercise 22.4-1; Gottschalk, Lin, Manocha, "OBBTree", SIGGRAPH 1996 (hierarchy pairs).
+/// concurrently. Reference: "Algorithms of Informatics" vol. 2, § 22.4 (polyhedron collision,
+/// bounding volumes), exercise 22.4-1; Gottschalk, Lin, Manocha, "OBBTree", SIGGRAPH 1996
+/// (hierarchy pairs).
 class MeshPair {
  public:
   /// Prepares `a` and `b` (validated meshes; any topology; empty meshes never intersect).

@@ -41,8 +41,8 @@ struct ReferenceResult {
 /// orient3d, then the crossing in the face by the signs of three tetrahedra, never by computing
 /// the crossing point). Complete: if no vertex of either is in the other and the surfaces meet,
 /// an edge of one meets a face of the other.
-/// O(n m) for n and m triangles in stage 3 (hence the fast path). Reference: seed section 22.4,
-/// figure 22.25.
+/// O(n m) for n and m triangles in stage 3 (hence the fast path). Reference: "Algorithms of
+/// Informatics" vol. 2, § 22.4, figure 22.25.
 [[nodiscard]] ReferenceResult polyhedra_reference(const Mesh& a, const Mesh& b,
                                                   const Transform& transform_a = {},
                                                   const Transform& transform_b = {});

@@ -26,7 +26,8 @@ struct RegionCollideOptions {
 /// exactly (`inside::PolygonIndex`) decides. The witness is an edge pair (`WitnessKind::edges`,
 /// edges numbered along polygons, rings and vertices in order, edge i from vertex i to i + 1)
 /// or a contained vertex (numbered the same way). Empty regions meet nothing.
-/// O((n + m) log(n + m) + candidate pairs). Reference: seed section 22.4, exercise 22.4-5.
+/// O((n + m) log(n + m) + candidate pairs). Reference: "Algorithms of Informatics" vol. 2, § 22.4,
+/// exercise 22.4-5.
 [[nodiscard]] Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
                                     const RegionCollideOptions& options = {});
 

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Do two closed triangles in the plane share a point? (seed section 22.4, exercise 22.4-5)
+/// Do two closed triangles in the plane share a point? ("Algorithms of Informatics" vol. 2, § 22.4,
+/// exercise 22.4-5)
 
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Containment in solids defined by a function, f(p) >= 0 (seed section 22.4, equation 22.1):
-/// balls, half-spaces, axis-aligned boxes and user-supplied functions.
+/// Containment in solids defined by a function, f(p) >= 0 ("Algorithms of Informatics" vol. 2,
+/// § 22.4, equation 22.1): balls, half-spaces, axis-aligned boxes and user-supplied functions.
 
 #include "contain/core/location.h"
 #include "contain/shapes/implicit_function.h"

@@ -7,12 +7,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
 #include "contain/inside/fast_winding_number.h"
+#include "contain/inside/grid_axis.h"
 #include "contain/predicates/sign.h"
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/mesh_validation.h"
@@ -66,13 +66,15 @@ struct MeshIndexOptions {
 ///
 /// Regime `winding_number` (border or non-manifold edges): `boundary` exactly as above, else
 /// `inside` where the generalized winding number is >= 0.5 (FastWindingNumber; floating point).
-/// `warning()` says why this regime applies; it also names pinch vertices, inconsistent
-/// orientation and degenerate triangles of a closed mesh, which keep the exact regime.
+/// `regime()` and `report()` say which regime applies and why, as data (the command and the
+/// Python module word them with `io::mesh_warning`); pinch vertices, inconsistent orientation
+/// and degenerate or duplicated triangles of a closed mesh keep the exact regime.
 ///
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
 /// in an empty cell, else O(triangles met along the run of surface cells); winding regime about
 /// O(log n). Thread safety: const queries may run concurrently; answers do not depend on the
-/// thread count. Reference: seed section 22.4 (ray parity), Edelsbrunner and Muecke 1990 (SoS).
+/// thread count. Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray parity), Edelsbrunner
+/// and Muecke 1990 (SoS).
 class MeshIndex {
  public:
   /// An empty index: every point is `outside`.
@@ -92,9 +94,6 @@ class MeshIndex {
   [[nodiscard]] MeshRegime regime() const { return regime_; }
   /// The validation of the mesh.
   [[nodiscard]] const MeshReport& report() const { return report_; }
-  /// Empty when the mesh is a plain closed 2-manifold; otherwise one line naming the regime and
-  /// why ("not closed: 223 border edges ...").
-  [[nodiscard]] const std::string& warning() const { return warning_; }
   /// The bounding box of the triangles.
   [[nodiscard]] const Box3& bounds() const { return bounds_; }
 
@@ -122,6 +121,12 @@ class MeshIndex {
     std::uint32_t tri;   // into tris_
   };
 
+  // Construction, stage by stage (mesh_index.cpp).
+  void read_triangles(const Mesh& mesh);
+  [[nodiscard]] std::vector<Box3> sort_triangles_by_cell(const std::vector<Box3>& boxes);
+  void list_triangles_by_cell(const std::vector<Box3>& boxes);
+  void settle_empty_cells();
+
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
            (p.z > r.hi[2]);
@@ -133,13 +138,11 @@ class MeshIndex {
 
   MeshRegime regime_ = MeshRegime::closed_exact;
   MeshReport report_;
-  std::string warning_;
   Box3 bounds_;
   std::vector<Tri> tris_;
   // Grid (exact regime).
-  int nx_ = 0, ny_ = 0, nz_ = 0;
-  Vec3 scale_{};  // cells per half unit along each axis, for the guess
-  std::vector<double> xs_, ys_, zs_;
+  GridAxis x_, y_, z_;
+  int nx_ = 0, ny_ = 0, nz_ = 0;  // their cell counts
   // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
   // most queries read stays small in cache).
   std::vector<std::uint8_t> state_;

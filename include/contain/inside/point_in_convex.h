@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Point in a convex polyhedron, the intersection of half-spaces (seed section 22.4, figure 22.22).
+/// Point in a convex polyhedron, the intersection of half-spaces ("Algorithms of Informatics" vol.
+/// 2, § 22.4, figure 22.22).
 
 #include <span>
 

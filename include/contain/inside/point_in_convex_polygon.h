@@ -9,10 +9,11 @@
 
 namespace contain::inside {
 
-/// The same-side test (seed section 22.4: "for convex polygons, we can also test whether the
-/// point is on the same side of the edges as the polygon itself"), exact: `point` is inside iff
-/// orient2d(a, b, point) has the ring's orientation for every edge a->b, on the boundary iff it is
-/// zero for some edges and never of the opposite sign, and outside otherwise.
+/// The same-side test ("Algorithms of Informatics" vol. 2, § 22.4: "for convex polygons, we can
+/// also test whether the point is on the same side of the edges as the polygon itself"), exact:
+/// `point` is inside iff orient2d(a, b, point) has the ring's orientation for every edge a->b, on
+/// the boundary iff it is zero for some edges and never of the opposite sign, and outside
+/// otherwise.
 ///
 /// - `ring`: a convex ring, counter-clockwise or clockwise, which turns once (collinear and
 ///   repeated vertices are allowed; repeated ones are skipped). For a non-convex ring the answer is

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Point in a polyhedron given by a triangle mesh, one query (seed section 22.4, figure 22.22).
+/// Point in a polyhedron given by a triangle mesh, one query ("Algorithms of Informatics" vol. 2,
+/// § 22.4, figure 22.22).
 
 #include "contain/core/location.h"
 #include "contain/inside/mesh_index.h"

@@ -16,7 +16,8 @@ struct PointInPolygonOptions {
 };
 
 /// Where `point` lies relative to the region enclosed by `rings` under `options.fill`, exactly
-/// on the given doubles (seed section 22.4: "a point is in a general polygon if the half line
+/// on the given doubles ("Algorithms of Informatics" vol. 2, § 22.4: "a point is in a general
+/// polygon if the half line
 /// ... intersects the edges of the polygon odd times", generalised to winding numbers).
 ///
 /// - `rings`: closed paths in the direction written (the last point joins the first; a ring of

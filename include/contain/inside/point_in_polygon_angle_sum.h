@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// The angle-sum containment test of the seed section, kept as the textbook reference.
+/// The angle-sum containment test of "Algorithms of Informatics" vol. 2, § 22.4, kept as the
+/// textbook reference.
 
 #include <span>
 
@@ -11,10 +12,10 @@
 
 namespace contain::inside {
 
-/// The angle-sum test (seed section 22.4: "containment ... can be tested by adding the angles
-/// subtended by the edges from the point. If the sum is 360 degrees, then the point is inside"),
-/// generalised to every fill rule: the winding number is the rounded sum of the signed angles
-/// atan2(cross, dot) subtended by the edges, divided by 2 pi.
+/// The angle-sum test ("Algorithms of Informatics" vol. 2, § 22.4: "containment ... can be tested
+/// by adding the angles subtended by the edges from the point. If the sum is 360 degrees, then the
+/// point is inside"), generalised to every fill rule: the winding number is the rounded sum of the
+/// signed angles atan2(cross, dot) subtended by the edges, divided by 2 pi.
 ///
 /// NOT EXACT away from the boundary: the angles are floating point, so for a point extremely close
 /// to an edge (or with huge/tiny coordinates) the rounded sum can be off by one. It is the

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Point in a triangle in 3D (seed section 22.4, figures 22.23 and 22.24).
+/// Point in a triangle in 3D ("Algorithms of Informatics" vol. 2, § 22.4, figures 22.23 and 22.24).
 
 #include <cstdint>
 
@@ -10,7 +10,7 @@
 
 namespace contain::inside {
 
-/// The two tests of the seed section.
+/// The two tests of § 22.4.
 enum class TriangleMethod : std::uint8_t {
   /// Same-side test with cross and dot products: p is inside when, for each edge, p and the third
   /// vertex lie on the same side (predicates::cross_dot). Valid for any p in the prism obtained
@@ -46,7 +46,8 @@ struct TriangleOptions {
 ///
 /// Degenerate triangles (collinear or coincident vertices, tested exactly) are the segment or
 /// point they span: `boundary` on it, `outside` elsewhere, whatever the method.
-/// O(1). Reference: seed section 22.4, "point in triangle"; exercise 22.4-5 is its 2D form.
+/// O(1). Reference: "Algorithms of Informatics" vol. 2, § 22.4, "point in triangle";
+/// exercise 22.4-5 is its 2D form.
 [[nodiscard]] Location point_in_triangle(const Triangle3& triangle, Vec3 p,
                                          const TriangleOptions& options = {});
 

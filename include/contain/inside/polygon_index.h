@@ -10,6 +10,7 @@
 
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
+#include "contain/inside/grid_axis.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/vec.h"
@@ -78,9 +79,9 @@ class PolygonIndex {
   /// The bounding box of every edge (empty for an empty region).
   [[nodiscard]] const Box2& bounds() const { return bounds_; }
   /// The vertical grid lines X0 < ... <= Xn (cell i spans [X_i, X_{i+1}); the last is closed).
-  [[nodiscard]] std::span<const double> grid_x() const { return xs_; }
+  [[nodiscard]] std::span<const double> grid_x() const { return x_.lines(); }
   /// The horizontal grid lines, as `grid_x`.
-  [[nodiscard]] std::span<const double> grid_y() const { return ys_; }
+  [[nodiscard]] std::span<const double> grid_y() const { return y_.lines(); }
 
   /// Sizes of the structure, for benchmarks and tuning.
   struct Stats {
@@ -107,16 +108,15 @@ class PolygonIndex {
     int corner_winding;                    // at the lower-right corner, right-up perturbed
   };
 
+  // The last stage of construction (polygon_index.cpp): the cells' codes, edge cells and side
+  // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
+  void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
   [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const;  // -1 outside the box
-  [[nodiscard]] int column_of(double x) const;
-  [[nodiscard]] int row_of(double y) const;
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
 
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
-  int nx_ = 0, ny_ = 0;
-  double scale_x_ = 0.0, scale_y_ = 0.0;  // cells per half-unit, for the guess
-  std::vector<double> xs_, ys_;
+  GridAxis x_, y_;  // the grid's columns and rows
   // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: edge_cells_[k - 2].
   std::vector<std::uint32_t> cells_;
   std::vector<EdgeCell> edge_cells_;

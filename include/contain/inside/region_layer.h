@@ -11,6 +11,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
+#include "contain/inside/grid_axis.h"
 #include "contain/inside/holders.h"
 #include "contain/inside/polygon_index.h"
 #include "contain/shapes/polygon.h"
@@ -124,9 +125,7 @@ class RegionLayer {
   bvh::Bvh tree_;
   // The first-level grid: cell c lists regions grid_regions_[grid_start_[c] .. [c + 1]),
   // ascending; grid_tree_[c] != 0 sends its points down the tree.
-  int nx_ = 0, ny_ = 0;
-  double scale_x_ = 0.0, scale_y_ = 0.0;
-  std::vector<double> xs_, ys_;
+  GridAxis x_, y_;  // its columns and rows
   std::vector<std::uint32_t> grid_start_;
   std::vector<std::int32_t> grid_regions_;
   std::vector<std::uint8_t> grid_tree_;

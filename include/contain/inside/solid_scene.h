@@ -38,7 +38,7 @@ struct SolidSceneOptions {
 /// Object k holds p with `MeshIndex(placed mesh).locate(p)`: its mesh's vertices placed by its
 /// transform (the doubles `Transform::apply` gives, as `contain inside --mesh` of that placed
 /// mesh), exact for closed meshes (**perturbed +x ray rule**), the generalized winding number
-/// for a mesh that is not closed (`object(k).warning()` says so). A point on the surface of a
+/// for a mesh that is not closed (`object(k).regime()` says so). A point on the surface of a
 /// solid is `boundary` for it; nested solids both hold a point inside the inner one.
 ///
 /// Structure: one `MeshIndex` per object in world coordinates, and a bounding volume hierarchy

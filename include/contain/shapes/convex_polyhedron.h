@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Convex polyhedra as data: the intersection of half-spaces (seed section 22.4, figure 22.22),
-/// validated; inside::point_in_convex locates points in them.
+/// Convex polyhedra as data: the intersection of half-spaces ("Algorithms of Informatics" vol. 2,
+/// § 22.4, figure 22.22), validated; inside::point_in_convex locates points in them.
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Solids defined by a function, f(p) >= 0 (seed section 22.4, equation 22.1), as data;
-/// inside::point_in_implicit locates points in them.
+/// Solids defined by a function, f(p) >= 0 ("Algorithms of Informatics" vol. 2, § 22.4,
+/// equation 22.1), as data; inside::point_in_implicit locates points in them.
 
 #include <functional>
 

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Half-spaces and half-planes in the contract's form: inside where a x + b y + c z + d >= 0.
-/// The normal (a, b, c) therefore points inward, as in the seed section (22.9). The coefficients
-/// are taken as given; they need not be normalised, and the exact predicates decide the sign of
-/// the expression on the given doubles.
+/// The normal (a, b, c) therefore points inward, as in "Algorithms of Informatics" vol. 2, § 22.4
+/// (inequality 22.9). The coefficients are taken as given; they need not be normalised, and the
+/// exact predicates decide the sign of the expression on the given doubles.
 
 #include "contain/values/vec.h"
 

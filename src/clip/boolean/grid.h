@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "contain/inside/grid_axis.h"
 #include "contain/values/vec.h"
 
 namespace contain::clip::detail {
@@ -27,40 +28,41 @@ struct Key {
   std::uint32_t rank;
 };
 
-// A uniform grid over the items of a round, about four cells per item. Every item is listed in
-// every cell its piece (or pixel square) passes through, conservatively: the rows and, per row,
-// the x range of the piece are widened by a millionth of a cell, far above the rounding of their
-// computation, so two pieces that meet share a listed cell (the one of a common point).
+// A uniform grid over the items of a round, about four cells per item, on the library's grid
+// axes (GridAxis: the lines and the floating-point cell guess of the prepared indexes). Every
+// item is listed in every cell its piece (or pixel square) passes through, conservatively: the
+// rows and, per row, the x range of the piece are widened by a millionth of a cell, far above the
+// rounding of their computation and of the guess, so two pieces that meet share a listed cell
+// (the one of a common point). The indexes look cells up exactly instead (a query needs its one
+// cell); here the widening is kept because the noding's near round relies on it (noding.cpp).
 class CellGrid {
  public:
   void build(const std::vector<Item>& items, std::vector<Key>& keys) {
-    x0_ = y0_ = std::numeric_limits<double>::infinity();
-    double x1 = -x0_, y1 = -y0_;
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+    double x1 = -x0, y1 = -y0;
     for (const Key& k : keys) {
       const Item& it = items[k.item];
-      x0_ = std::min(x0_, it.xmin);
-      y0_ = std::min(y0_, it.ymin);
+      x0 = std::min(x0, it.xmin);
+      y0 = std::min(y0, it.ymin);
       x1 = std::max(x1, it.xmax);
       y1 = std::max(y1, it.ymax);
     }
-    const double w = x1 - x0_, h = y1 - y0_;
+    const double w = x1 - x0, h = y1 - y0;
     const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(keys.size())));
     // An extent that overflows (coordinates of both signs near DBL_MAX): one column or row.
     constexpr double kInf = std::numeric_limits<double>::infinity();
     nx_ = w > 0 && w < kInf ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
     ny_ = h > 0 && h < kInf ? static_cast<int>(std::clamp(side, 1.0, 4096.0)) : 1;
-    cw_ = nx_ > 1 ? w / nx_ : 1.0;
-    ch_ = ny_ > 1 ? h / ny_ : 1.0;
-    // Multiplying by the inverse rounds a little differently from dividing: far below the
-    // widening by a millionth of a cell.
-    icw_ = 1.0 / cw_;
-    ich_ = 1.0 / ch_;
+    x_ = inside::GridAxis(x0, x1, nx_);
+    y_ = inside::GridAxis(y0, y1, ny_);
+    const double cw = nx_ > 1 ? w / nx_ : 1.0;
+    const double ch = ny_ > 1 ? h / ny_ : 1.0;
     // The widening must exceed the rounding of the cell computations, a few ulps of the largest
     // coordinate: cells can be far narrower than that (later rounds grid only the pieces near new
     // ones, which may crowd within ulps of a point), and below 2^-1000 a millionth of a cell
     // underflows.
-    ex_ = std::max(1e-6 * cw_, 16 * ulp(std::max(std::fabs(x0_), std::fabs(x1))));
-    ey_ = std::max(1e-6 * ch_, 16 * ulp(std::max(std::fabs(y0_), std::fabs(y1))));
+    ex_ = std::max(1e-6 * cw, 16 * ulp(std::max(std::fabs(x0), std::fabs(x1))));
+    ey_ = std::max(1e-6 * ch, 16 * ulp(std::max(std::fabs(y0), std::fabs(y1))));
     entries_.clear();
     // Room for a dozen cells per item saves most regrowth of the array (long pieces list more).
     entries_.reserve(12 * keys.size());
@@ -116,17 +118,10 @@ class CellGrid {
     return m > 0 ? std::ldexp(1.0, std::max(std::ilogb(m) - 52, -1074))
                  : std::numeric_limits<double>::denorm_min();
   }
-  // Truncation is floor here (values below 1 give cell 0); NaN (an infinite extent) gives 0.
-  [[nodiscard]] int col(double x) const {
-    const double c = (x - x0_) * icw_;
-    if (!(c >= 1.0)) return 0;
-    return c >= nx_ - 1 ? nx_ - 1 : static_cast<int>(c);
-  }
-  [[nodiscard]] int row(double y) const {
-    const double r = (y - y0_) * ich_;
-    if (!(r >= 1.0)) return 0;
-    return r >= ny_ - 1 ? ny_ - 1 : static_cast<int>(r);
-  }
+  // The guessed cell, clamped into the grid (NaN gives 0): monotone in the coordinate, and
+  // within a few ulps of the largest coordinate of the exact cell, far below the widening.
+  [[nodiscard]] int col(double x) const { return x_.guess(x); }
+  [[nodiscard]] int row(double y) const { return y_.guess(y); }
   void add(const Item& it, std::uint32_t item) {
     const int r0 = row(it.ymin - ey_), r1 = row(it.ymax + ey_);
     const int c0 = col(it.xmin - ex_), c1 = col(it.xmax + ex_);
@@ -142,7 +137,7 @@ class CellGrid {
     // swapped): the loop runs over the fewer bands.
     if (r1 - r0 > c1 - c0) {
       bands(
-          a.y, a.x, b.y, b.x, it.ymin, it.ymax, it.xmin, it.xmax, c0, c1, x0_, cw_, ey_, ex_,
+          a.y, a.x, b.y, b.x, it.ymin, it.ymax, it.xmin, it.xmax, c0, c1, x_, ey_, ex_,
           [&](double y) { return row(y); },
           [&](int c, int rl, int rh) {
             for (int r = rl; r <= rh; ++r)
@@ -153,7 +148,7 @@ class CellGrid {
           });
     } else {
       bands(
-          a.x, a.y, b.x, b.y, it.xmin, it.xmax, it.ymin, it.ymax, r0, r1, y0_, ch_, ex_, ey_,
+          a.x, a.y, b.x, b.y, it.xmin, it.xmax, it.ymin, it.ymax, r0, r1, y_, ex_, ey_,
           [&](double x) { return col(x); }, [&](int r, int cl, int ch) { emit(r, cl, ch, item); });
     }
   }
@@ -162,8 +157,8 @@ class CellGrid {
   // band (widened by ev), widened by eu, within [umin, umax]: emit_band(k, first, last).
   template <class Cell, class EmitBand>
   static void bands(double au, double av, double bu, double bv, double umin, double umax,
-                    double vmin, double vmax, int k0, int k1, double v0, double side, double eu,
-                    double ev, Cell cell, EmitBand emit_band) {
+                    double vmin, double vmax, int k0, int k1, const inside::GridAxis& axis,
+                    double eu, double ev, Cell cell, EmitBand emit_band) {
     const double du = bu - au, dv = bv - av;
     const double slope = du / dv;
     // The slope overflows for a long piece nearly along u (and inf * 0 is NaN) and underflows for
@@ -177,8 +172,8 @@ class CellGrid {
     };
     for (int k = k0; k <= k1; ++k) {
       double ul = umin, ur = umax;
-      const double vlo = std::max(vmin, v0 + k * side - ev);
-      const double vhi = std::min(vmax, v0 + (k + 1) * side + ev);
+      const double vlo = std::max(vmin, axis.line(k) - ev);
+      const double vhi = std::min(vmax, axis.line(k + 1) + ev);
       const double ua = u_at(vlo), ub = u_at(vhi);
       if (std::isfinite(ua) && std::isfinite(ub)) {
         ul = std::max(umin, std::min(ua, ub) - eu);
@@ -198,7 +193,8 @@ class CellGrid {
   const std::vector<Vec2>* points_ = nullptr;
 
  private:
-  double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1, icw_ = 1, ich_ = 1, ex_ = 0, ey_ = 0;
+  inside::GridAxis x_, y_;
+  double ex_ = 0, ey_ = 0;
   int nx_ = 1, ny_ = 1;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> entries_;  // (cell, item) per item
   std::vector<std::uint32_t> item_first_;

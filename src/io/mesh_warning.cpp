@@ -1,0 +1,64 @@
+#include "contain/io/mesh_warning.h"
+
+#include <vector>
+
+namespace contain::io {
+namespace {
+
+// "1 edge", "2 edges"; `many` where the plural is not the word and an s.
+std::string plural(std::size_t n, const std::string& word, const std::string& many = "") {
+  return std::to_string(n) + " " + (n == 1 ? word : many.empty() ? word + "s" : many);
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    out += (i ? ", " : "") + parts[i];
+  return out;
+}
+
+}  // namespace
+
+std::string mesh_warning(inside::MeshRegime regime, const MeshReport& report) {
+  // Facts that leave the exact regime exact (and are said in either regime).
+  std::vector<std::string> notes;
+  if (!report.pinch_vertices.empty()) {
+    notes.push_back(plural(report.pinch_vertices.size(), "pinch vertex", "pinch vertices") +
+                    " (not 2-manifold there; first: " +
+                    std::to_string(report.pinch_vertices.front() + 1) + ", 1-based)");
+  }
+  if (report.inconsistent_edges > 0) {
+    notes.push_back("inconsistent orientation (" + plural(report.inconsistent_edges, "edge") +
+                    " used in the same direction)");
+  }
+  if (report.degenerate_triangles > 0) {
+    notes.push_back(plural(report.degenerate_triangles, "degenerate triangle"));
+  }
+  if (regime == inside::MeshRegime::closed_exact) {
+    // Two copies of a triangle with opposite orientations still close every edge: parity stays
+    // exact (the pair bounds no volume), but the user should hear of it.
+    if (report.duplicated_triangles > 0) {
+      notes.push_back(plural(report.duplicated_triangles, "duplicated triangle"));
+    }
+    if (notes.empty()) return "";
+    return "mesh has " + joined(notes) +
+           "; every edge has exactly two triangles, so the answers (closed-exact ray parity) are "
+           "still exact";
+  }
+  std::vector<std::string> why;
+  if (report.triangles == 0) why.push_back("no triangles");
+  if (report.border_edges > 0) why.push_back(plural(report.border_edges, "border edge"));
+  if (report.nonmanifold_edges > 0) {
+    why.push_back(plural(report.nonmanifold_edges, "edge") + " of three or more triangles");
+  }
+  if (report.duplicated_triangles > 0) {
+    why.push_back(plural(report.duplicated_triangles, "duplicated triangle"));
+  }
+  why.insert(why.end(), notes.begin(), notes.end());
+  return "mesh is not closed (" + joined(why) +
+         "): answers come from the generalized winding number (winding-number regime: inside "
+         "where it is >= 0.5, approximate near the surface); points exactly on the surface are "
+         "still 'on'";
+}
+
+}  // namespace contain::io

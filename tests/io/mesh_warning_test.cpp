@@ -1,0 +1,79 @@
+#include "contain/io/mesh_warning.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace contain::io {
+namespace {
+
+using inside::MeshRegime;
+
+MeshReport closed_report() {
+  MeshReport r;
+  r.triangles = 12;
+  r.edges = 18;
+  return r;
+}
+
+TEST(MeshWarning, APlainClosedMeshNeedsNoWords) {
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, closed_report()), "");
+}
+
+TEST(MeshWarning, OpenMeshNamesTheWindingNumberRegimeAndEveryReason) {
+  MeshReport r = closed_report();
+  r.border_edges = 4;
+  EXPECT_EQ(mesh_warning(MeshRegime::winding_number, r),
+            "mesh is not closed (4 border edges): answers come from the generalized winding number "
+            "(winding-number regime: inside where it is >= 0.5, approximate near the surface); "
+            "points exactly on the surface are still 'on'");
+  r.border_edges = 1;
+  r.nonmanifold_edges = 2;
+  r.duplicated_triangles = 1;
+  r.pinch_vertices = {6};
+  r.inconsistent_edges = 1;
+  r.degenerate_triangles = 3;
+  const std::string words = mesh_warning(MeshRegime::winding_number, r);
+  EXPECT_EQ(words.substr(0, words.find("):")),
+            "mesh is not closed (1 border edge, 2 edges of three or more triangles, 1 duplicated "
+            "triangle, 1 pinch vertex (not 2-manifold there; first: 7, 1-based), inconsistent "
+            "orientation (1 edge used in the same direction), 3 degenerate triangles");
+}
+
+TEST(MeshWarning, PinchVerticesArePluralNotVertexs) {
+  MeshReport r = closed_report();
+  r.pinch_vertices = {3, 8};
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r).substr(0, 74),
+            "mesh has 2 pinch vertices (not 2-manifold there; first: 4, 1-based); every");
+}
+
+TEST(MeshWarning, MeshWithoutTrianglesSaysSo) {
+  EXPECT_EQ(mesh_warning(MeshRegime::winding_number, MeshReport{}).substr(0, 33),
+            "mesh is not closed (no triangles)");
+}
+
+TEST(MeshWarning, ClosedMeshWithPinchOrDuplicatesSaysTheAnswersStayExact) {
+  MeshReport r = closed_report();
+  r.pinch_vertices = {253};
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r),
+            "mesh has 1 pinch vertex (not 2-manifold there; first: 254, 1-based); every edge has "
+            "exactly two triangles, so the answers (closed-exact ray parity) are still exact");
+  r.pinch_vertices.clear();
+  r.duplicated_triangles = 1;
+  r.degenerate_triangles = 2;
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r),
+            "mesh has 2 degenerate triangles, 1 duplicated triangle; every edge has exactly two "
+            "triangles, so the answers (closed-exact ray parity) are still exact");
+}
+
+TEST(MeshWarning, WordsTheReportOfARealOpenMesh) {
+  Mesh tetra;
+  tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetra.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}};  // the face 1 2 3 is missing
+  const MeshReport report = validate_mesh(tetra);
+  EXPECT_NE(mesh_warning(MeshRegime::winding_number, report).find("(3 border edges)"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace contain::io
