@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "collide_ccd.h"
 #include "common.h"
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/region_region.h"
@@ -176,6 +177,7 @@ int run_meshes(const CollideOptions& o) {
 
 Verb add_collide(CLI::App& app) {
   auto o = std::make_shared<CollideOptions>();
+  auto c = std::make_shared<CcdCliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
   cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
@@ -192,6 +194,25 @@ Verb add_collide(CLI::App& app) {
       ->option_text("T");
   cmd->add_option("--poses", o->poses, "one transform of B a line: one answer a line")
       ->option_text("FILE");
+  cmd->add_option("--from-a", c->from_a,
+                  "continuous: A's placement at t = 0 (12 numbers, as --transform-a); its vertices "
+                  "move on straight lines to --to-a")
+      ->option_text("T");
+  cmd->add_option("--to-a", c->to_a, "continuous: A's placement at t = 1")->option_text("T");
+  cmd->add_option("--from-b", c->from_b, "continuous: B's placement at t = 0")->option_text("T");
+  cmd->add_option("--to-b", c->to_b, "continuous: B's placement at t = 1")->option_text("T");
+  cmd->add_option("--motions", c->motions,
+                  "continuous: one motion of B a line (24 numbers: its placement at t = 0, then "
+                  "at t = 1); one answer a line")
+      ->option_text("FILE");
+  cmd->add_option("--ccd", c->kind,
+                  "continuous collision of primitives from --queries: vertex-face or edge-edge")
+      ->check(CLI::IsMember({"vertex-face", "edge-edge"}))
+      ->option_text("KIND");
+  cmd->add_option("--queries", c->queries,
+                  "with --ccd: the CCD benchmark's CSV (8 rows a query, exact rationals) or any "
+                  "other file with 24 numbers a line")
+      ->option_text("FILE");
   cmd->add_flag("--json", o->json,
                 "one JSON object a result: intersect, a witness (a pair of triangles or a "
                 "contained vertex) and work counts");
@@ -206,22 +227,46 @@ Verb add_collide(CLI::App& app) {
       "  contain collide gear.stl shaft.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0\n"
       "  contain collide a.off b.off --poses poses.txt --json\n"
       "  contain collide parcel.wkt road.geojson\n"
-      "  contain collide --scene assembly.json --json --threads 2");
-  return {cmd, [o]() {
-            if (!o->scene.empty()) {
-              if (!o->a.empty() || !o->transform_a.empty() || !o->transform_b.empty() ||
-                  !o->poses.empty()) {
-                return report({ErrorKind::usage,
-                               "collide: --scene takes no shapes A B, transforms or poses (the "
-                               "scene file places its objects)"});
-              }
-              return run_collide_scene(o->scene, o->json, o->threads, o->out);
-            }
-            if (o->a.empty() || o->b.empty()) {
-              return report({ErrorKind::usage, "collide: give two shapes A B, or --scene FILE"});
-            }
-            return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
-          }};
+      "  contain collide --scene assembly.json --json --threads 2\n"
+      "Continuous collision (the earliest time of contact, rounded down to a double):\n"
+      "  contain collide plate.off bullet.off --from-b 1,0,0,0,0,1,0,0,0,0,1,3 "
+      "--to-b 1,0,0,0,0,1,0,0,0,0,1,-3\n"
+      "  contain collide --ccd vertex-face --queries data_0_0.csv");
+  return {
+      cmd, [o, c]() {
+        c->a = o->a;
+        c->b = o->b;
+        c->transform_a = o->transform_a;
+        c->transform_b = o->transform_b;
+        c->json = o->json;
+        c->threads = o->threads;
+        c->quiet = o->quiet;
+        c->out = o->out;
+        if (!o->scene.empty()) {
+          if (!o->a.empty() || !o->transform_a.empty() || !o->transform_b.empty() ||
+              !o->poses.empty() || has_motion(*c) || !c->kind.empty() || !c->queries.empty()) {
+            return report({ErrorKind::usage,
+                           "collide: --scene takes no shapes A B, transforms, poses, motions or "
+                           "CCD queries (the scene file places its objects)"});
+          }
+          return run_collide_scene(o->scene, o->json, o->threads, o->out);
+        }
+        if (!c->kind.empty() || !c->queries.empty()) return run_ccd_queries(*c);
+        if (o->a.empty() || o->b.empty()) {
+          return report(Error{ErrorKind::usage,
+                              "collide needs two shapes A and B (or --scene "
+                              "FILE, or --ccd KIND --queries FILE)"});
+        }
+        if (has_motion(*c)) {
+          if (is_region_path(o->a) || is_region_path(o->b) || !o->poses.empty()) {
+            return report(Error{ErrorKind::usage,
+                                "--from-X, --to-X and --motions move meshes (3D); --poses "
+                                "does not go with them"});
+          }
+          return run_moving_meshes(*c);
+        }
+        return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+      }};
 }
 
 }  // namespace contain::cli

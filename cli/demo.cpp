@@ -60,10 +60,18 @@ int run_demo(const DemoOptions& o) {
   if (ec) return report({ErrorKind::io, "cannot create the folder: " + ec.message(), o.out_dir});
   fmt::print("contain demo: built-in scenes, exact answers\n\n");
   using Scene = Status (*)(const demo::Context&);
-  const Scene scenes[] = {
-      demo::polygon_scene, demo::csg_scene,       demo::mesh_scene,
-      demo::collide_scene, demo::segment_scene,   demo::sutherland_hodgman_scene,
-      demo::boolean_scene, demo::mesh_clip_scene, demo::bound_scene};
+  const Scene scenes[] = {demo::polygon_scene,
+                          demo::csg_scene,
+                          demo::mesh_scene,
+                          demo::collide_scene,
+                          demo::ccd_scene,
+                          demo::segment_scene,
+                          demo::sutherland_hodgman_scene,
+                          demo::boolean_scene,
+                          demo::mesh_clip_scene,
+                          demo::bound_scene,
+                          demo::distance_slice_scene,
+                          demo::clearance_scene};
   for (Scene scene : scenes) {
     const Status status = scene(context);
     if (!status) return report(status.error());

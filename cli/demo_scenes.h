@@ -50,7 +50,10 @@ Status boolean_scene(const Context& context);
 Status csg_scene(const Context& context);
 Status mesh_scene(const Context& context);
 Status collide_scene(const Context& context);
+Status ccd_scene(const Context& context);
 Status mesh_clip_scene(const Context& context);
 Status bound_scene(const Context& context);
+Status distance_slice_scene(const Context& context);
+Status clearance_scene(const Context& context);
 
 }  // namespace contain::cli::demo

@@ -60,6 +60,32 @@ std::vector<Vec3> uniform_points(const Box3& box, std::size_t count, std::uint64
   return points;
 }
 
+std::vector<Transform> random_poses(std::size_t count, double reach, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_real_distribution<double> u(-reach, reach);
+  std::vector<Transform> poses(count);
+  for (Transform& t : poses) {
+    double q[4] = {n(rng), n(rng), n(rng), n(rng)};
+    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (double& x : q)
+      x /= len;
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    t.r = {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+            {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
+    t.t = {u(rng), u(rng), u(rng)};
+  }
+  return poses;
+}
+
+Mesh placed(const Mesh& mesh, const Transform& transform) {
+  Mesh out = mesh;
+  for (Vec3& v : out.vertices)
+    v = transform.apply(v);
+  return out;
+}
+
 Mesh torus(double major, double minor, int rings, int sides) {
   Mesh mesh;
   for (int i = 0; i < rings; ++i) {

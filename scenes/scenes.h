@@ -9,6 +9,7 @@
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 #include "contain/values/segment.h"
+#include "contain/values/transform.h"
 #include "contain/values/vec.h"
 
 namespace contain::scenes {
@@ -45,6 +46,14 @@ namespace contain::scenes {
                                                      std::uint64_t seed);
 [[nodiscard]] std::vector<Segment3> uniform_segments(const Box3& box, std::size_t count,
                                                      std::uint64_t seed);
+
+/// `count` rigid poses (seeded): rotations uniform over SO(3) (random unit quaternions),
+/// translations uniform in [-reach, reach]^3.
+[[nodiscard]] std::vector<Transform> random_poses(std::size_t count, double reach,
+                                                  std::uint64_t seed);
+
+/// `mesh` with every vertex mapped by `transform` (the triangles unchanged).
+[[nodiscard]] Mesh placed(const Mesh& mesh, const Transform& transform);
 
 /// An n x n grid of points spanning `box` in the plane z = `z`, row by row.
 [[nodiscard]] std::vector<Vec3> grid_points(const Box2& box, int n, double z);

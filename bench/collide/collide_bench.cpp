@@ -26,7 +26,7 @@
 #include <CGAL/intersections.h>
 #endif
 #ifdef CONTAIN_BENCH_HAS_FCL
-#include <fcl/fcl.h>
+#include "fcl_mesh.h"
 #endif
 
 using namespace contain;
@@ -209,19 +209,7 @@ void bench_mesh_mesh() {
       "contain MeshPair (exact, solids)", t_contain, 1e3 * t_contain / double(poses_n), build, hits,
       nested);
 #ifdef CONTAIN_BENCH_HAS_FCL
-  auto model = [](const Mesh& m) {
-    auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-    std::vector<fcl::Vector3d> v;
-    std::vector<fcl::Triangle> t;
-    for (const Vec3& p : m.vertices)
-      v.emplace_back(p.x, p.y, p.z);
-    for (const auto& f : m.triangles)
-      t.emplace_back(f[0], f[1], f[2]);
-    bvh->beginModel();
-    bvh->addSubModel(v, t);
-    bvh->endModel();
-    return bvh;
-  };
+  auto model = [](const Mesh& m) { return bench::fcl_model<fcl::OBBRSSd>(m); };
   const auto s1 = std::chrono::steady_clock::now();
   auto ma = model(a), mb = model(b);
   const double fbuild =

@@ -122,7 +122,9 @@ put("csg_json", "bad.json", '{"sphere": {"center": [0, 0], "radius": -1}}')
 # inputs give fully coincident ones.
 rng = random.Random(20240601)
 for target, length in [("predicates", 40), ("point_in_polygon", 120), ("point_in_mesh", 80),
-                       ("clip_segments", 48), ("polygon_boolean", 100), ("tri_tri", 50)]:
+                       ("clip_segments", 48), ("polygon_boolean", 100), ("tri_tri", 50),
+                       ("distance", 80),
+                       ("ccd", 80)]:
     put(target, "zeros", bytes(length))
     put(target, "ones", bytes([1]) * length)
     for k in range(6):

@@ -11,6 +11,7 @@ namespace py = pybind11;
 void bind_io(py::module_& m);            // Mesh, Region, read_mesh, parse_wkt, ...
 void bind_inside(py::module_& m);        // MeshIndex, PolygonIndex, point_in_polygon, point_in_mesh
 void bind_collide(py::module_& m);       // Contact, MeshPair, collide
+void bind_ccd(py::module_& m);           // vertex_face_ccd, edge_edge_ccd, MovingMeshPair, ...
 void bind_clip(py::module_& m);          // clip_segments, polygon_boolean
 void bind_bound(py::module_& m);         // aabb, bounding_sphere, bounding_circle
 void bind_csg(py::module_& m);           // Csg, CsgSolid
@@ -21,5 +22,6 @@ void bind_primitives(py::module_& m);    // tri_tri, tri_tri_2d, pair_search, or
 void bind_winding(py::module_& m);       // point_in_triangle, winding_number, WindingNumber, ...
 void bind_tile(py::module_& m);          // BoxClipper, tile
 void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
+void bind_distance(py::module_& m);      // MeshDistance, RegionDistance, MeshPairDistance
 
 }  // namespace contain::python

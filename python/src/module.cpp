@@ -18,6 +18,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_io(m);
   bind_inside(m);
   bind_collide(m);
+  bind_ccd(m);
   bind_clip(m);
   bind_bound(m);
   bind_convex(m);  // before the users of ConvexPolyhedron's Python type in their signatures
@@ -28,6 +29,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_winding(m);
   bind_tile(m);
   bind_layer(m);
+  bind_distance(m);
   m.def("_reads_in_place", &reads_in_place, py::arg("array"),
         "True when the batch calls read `array` without a copy (C-contiguous aligned float64).");
 #ifdef CONTAIN_VERSION

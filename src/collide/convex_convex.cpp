@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "contain/bound/gjk.h"
 #include "contain/collide/tri_tri.h"
 #include "contain/inside/point_in_convex.h"
 #include "contain/predicates/side_of_plane.h"
@@ -26,153 +27,12 @@ struct ConvexAccess {
 
 namespace {
 
-// ---- GJK ---------------------------------------------------------------------------------
-
-struct Simplex {
-  std::array<Vec3, 4> w{};
-  int n = 0;
-};
-
-// Barycentric coordinates (l[0..k-1]) of the point of the affine hull of p[0..k-1] closest to
-// the origin, by the normal equations G l' = -(p_i - p_0) . p_0 (Cramer's rule). False when the
-// points are (numerically) affinely dependent.
-bool affine_closest(const Vec3* p, int k, double* l) {
-  if (k == 1) {
-    l[0] = 1;
-    return true;
-  }
-  Vec3 e[3];
-  double rhs[3];
-  for (int i = 1; i < k; ++i) {
-    e[i - 1] = p[i] - p[0];
-    rhs[i - 1] = -dot(e[i - 1], p[0]);
-  }
-  const int m = k - 1;
-  double g[3][3];
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j)
-      g[i][j] = dot(e[i], e[j]);
-  double sol[3] = {0, 0, 0};
-  if (m == 1) {
-    if (!(g[0][0] > 0)) return false;
-    sol[0] = rhs[0] / g[0][0];
-  } else if (m == 2) {
-    const double det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
-    if (!(det > 1e-24 * g[0][0] * g[1][1])) return false;
-    sol[0] = (rhs[0] * g[1][1] - g[0][1] * rhs[1]) / det;
-    sol[1] = (g[0][0] * rhs[1] - rhs[0] * g[1][0]) / det;
-  } else {
-    const auto det3 = [](const double a[3][3]) {
-      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-             a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double det = det3(g);
-    // A nearly flat tetrahedron is left to its faces: its volume says nothing reliable about
-    // where the origin is.
-    if (!(det > 1e-12 * g[0][0] * g[1][1] * g[2][2])) return false;
-    for (int c = 0; c < 3; ++c) {
-      double a[3][3];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          a[i][j] = j == c ? rhs[i] : g[i][j];
-      sol[c] = det3(a) / det;
-    }
-  }
-  double sum = 0;
-  for (int i = 0; i < m; ++i) {
-    l[i + 1] = sol[i];
-    sum += sol[i];
-  }
-  l[0] = 1 - sum;
-  return true;
-}
-
-// The point of conv(simplex) closest to the origin, and the simplex reduced to the smallest
-// face that holds it (Johnson's sub-algorithm, here by trying every face: at most 15).
-Vec3 closest_to_origin(Simplex& s) {
-  double best = INFINITY;
-  Vec3 best_v{};
-  Simplex best_s;
-  for (int mask = 1; mask < (1 << s.n); ++mask) {
-    Vec3 p[4];
-    int k = 0;
-    for (int i = 0; i < s.n; ++i)
-      if ((mask >> i) & 1) p[k++] = s.w[static_cast<std::size_t>(i)];
-    double l[4];
-    if (!affine_closest(p, k, l)) continue;
-    bool interior = true;
-    Vec3 v{0, 0, 0};
-    for (int i = 0; i < k; ++i) {
-      interior = interior && l[i] > 0;
-      v = v + l[i] * p[i];
-    }
-    if (!interior) continue;
-    if (k == 4) v = {0, 0, 0};  // the origin is inside the tetrahedron
-    const double d = dot(v, v);
-    if (d < best) {
-      best = d;
-      best_v = v;
-      best_s.n = k;
-      for (int i = 0; i < k; ++i)
-        best_s.w[static_cast<std::size_t>(i)] = p[i];
-    }
-  }
-  s = best_s;
-  return best_v;
-}
-
-Vec3 support_difference(const ConvexShape& a, const ConvexShape& b, Vec3 d) {
-  return a.support(d) - b.support(-1.0 * d);
-}
-
 // Distances below this fraction of the shapes' size are not trusted to separate them.
 constexpr double kMargin = 1e-12;
 
-struct GjkResult {
-  Vec3 v;              // closest point of the Minkowski difference found (a - b)
-  double lower = 0.0;  // a lower bound of the distance (up to rounding)
-  double size = 0.0;   // the largest |w| seen: the scale of rounding errors
-  bool origin_inside = false;
-};
-
-// GJK's distance iteration, run to convergence (or no progress, or 64 iterations).
-GjkResult gjk(const ConvexShape& a, const ConvexShape& b) {
-  GjkResult r;
-  Vec3 v = support_difference(a, b, {1, 0, 0});
-  Simplex s;
-  s.w[0] = v;
-  s.n = 1;
-  r.size = length(v);
-  for (int iter = 0; iter < 64; ++iter) {
-    const double vv = dot(v, v);
-    if (vv == 0) {
-      r.origin_inside = true;
-      break;
-    }
-    const Vec3 w = support_difference(a, b, -1.0 * v);
-    r.size = std::max(r.size, length(w));
-    const double vw = dot(v, w);
-    r.lower = std::max(r.lower, vw / std::sqrt(vv));
-    if (vv - vw <= 1e-12 * vv) break;  // converged: the upper and lower bounds agree
-    bool repeated = false;
-    for (int i = 0; i < s.n; ++i)
-      repeated = repeated || s.w[static_cast<std::size_t>(i)] == w;
-    if (repeated) break;
-    Simplex next = s;
-    next.w[static_cast<std::size_t>(next.n++)] = w;
-    const Vec3 next_v = closest_to_origin(next);
-    if (dot(next_v, next_v) <= 1e-24 * r.size * r.size) {
-      r.origin_inside = true;
-      v = {0, 0, 0};
-      break;
-    }
-    if (dot(next_v, next_v) >= vv) break;  // no progress: rounding has taken over
-    v = next_v;
-    s = next;
-  }
-  r.v = v;
-  return r;
+// GJK on a - b (bound::gjk): v = a - b at its closest.
+bound::GjkResult gjk(const ConvexShape& a, const ConvexShape& b) {
+  return bound::gjk([&](Vec3 d) { return a.support(d); }, [&](Vec3 d) { return b.support(d); });
 }
 
 // ---- exact stage for polytopes -------------------------------------------------------------
@@ -281,7 +141,7 @@ Vec3 ConvexShape::support(Vec3 direction) const {
 
 ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b) {
   const bool polytopes = a.is_polytope() && b.is_polytope();
-  const GjkResult r = gjk(a, b);
+  const bound::GjkResult r = gjk(a, b);
   const double distance = r.origin_inside ? 0.0 : length(r.v);
   if (polytopes) {
     // v = a - b at its closest: a lies on the side v points to.

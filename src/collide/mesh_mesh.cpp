@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collide/components.h"
 #include "collide/mesh_sides.h"
 #include "contain/bvh/triangle_boxes.h"
+#include "contain/shapes/mesh_components.h"
 #include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
@@ -39,8 +39,8 @@ MeshPair::MeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options)
     a_solid_ = index_a_.regime() == inside::MeshRegime::closed_exact;
   }
   b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
-  a_components_ = detail::component_vertices(a_world_);
-  b_components_ = detail::component_vertices(b_);
+  a_components_ = component_vertices(a_world_);
+  b_components_ = component_vertices(b_);
   b_max_abs_ = max_abs(b_);
 }
 

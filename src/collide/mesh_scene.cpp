@@ -5,12 +5,12 @@
 #include <cmath>
 #include <thread>
 
-#include "collide/components.h"
 #include "collide/mesh_sides.h"
 #include "collide/placed_boxes.h"
 #include "collide/separating_axes.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/pair_search.h"
+#include "contain/shapes/mesh_components.h"
 #include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
@@ -30,7 +30,7 @@ MeshScene::MeshScene(std::span<const Mesh> meshes, std::span<const inside::Scene
     if (!used[m] || meshes_[m].triangles.empty()) continue;
     Model& model = models_[m];
     model.bvh = bvh::Bvh(bvh::triangle_boxes(meshes_[m]), options.bvh);
-    model.components = detail::component_vertices(meshes_[m]);
+    model.components = component_vertices(meshes_[m]);
     model.solid = validate_mesh(meshes_[m]).closed();
     for (const Vec3& v : meshes_[m].vertices) {
       model.max_abs = std::max({model.max_abs, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});

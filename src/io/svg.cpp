@@ -153,6 +153,34 @@ void SvgCanvas::points(std::span<const Vec2> points, std::string_view colour, do
   body_ += "</g>\n";
 }
 
+void SvgCanvas::cells(const Box2& area, int columns, int rows,
+                      std::span<const std::string> colours) {
+  if (columns <= 0 || rows <= 0) return;
+  const double w = (area.max.x - area.min.x) / columns, h = (area.max.y - area.min.y) / rows;
+  body_ += "<g shape-rendering=\"crispEdges\">\n";
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < columns;) {
+      const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) +
+                            static_cast<std::size_t>(i);
+      if (k >= colours.size()) break;
+      int end = i + 1;
+      while (end < columns && k + static_cast<std::size_t>(end - i) < colours.size() &&
+             colours[k + static_cast<std::size_t>(end - i)] == colours[k])
+        ++end;
+      if (!colours[k].empty()) {
+        // Top left corner in pixels: world y grows upward, pixel y downward.
+        const Vec2 a = to_pixels({area.min.x + i * w, area.min.y + (j + 1) * h});
+        const Vec2 b = to_pixels({area.min.x + end * w, area.min.y + j * h});
+        body_ += "<rect x=\"" + number(a.x) + "\" y=\"" + number(a.y) + "\" width=\"" +
+                 number(b.x - a.x + 0.3) + "\" height=\"" + number(b.y - a.y + 0.3) + "\" fill=\"" +
+                 colours[k] + "\"/>\n";
+      }
+      i = end;
+    }
+  }
+  body_ += "</g>\n";
+}
+
 std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle& style) {
   const Axes axes = view_axes(view);
   // Light from above left of the viewer, so that faces turned alike toward the viewer (a cap and

@@ -162,6 +162,30 @@ BigFloat operator*(const BigFloat& a, const BigFloat& b) {
   return r;
 }
 
+double BigFloat::frexp(std::int64_t& exponent) const {
+  exponent = 0;
+  if (limbs_.empty()) return 0.0;
+  // The top three limbs (at least 65 significant bits, the top limb being nonzero) summed in
+  // double: two roundings, a relative error below 2^-52.
+  const std::size_t n = limbs_.size();
+  double top = 0.0;
+  std::int64_t shift = 32 * static_cast<std::int64_t>(n);
+  for (std::size_t k = 0; k < 3; ++k) {
+    top = top * 0x1p32 + (k < n ? static_cast<double>(limbs_[n - 1 - k]) : 0.0);
+    shift -= 32;
+  }
+  int e = 0;
+  const double f = std::frexp(top, &e);  // top = f * 2^e, f in [0.5, 1)
+  exponent = shift + e + exponent_;
+  return negative_ ? -f : f;
+}
+
+BigFloat BigFloat::scaled(std::int64_t k) const {
+  BigFloat r = *this;
+  if (!r.limbs_.empty()) r.exponent_ += k;
+  return r;
+}
+
 BigVec3 to_big(Vec3 v) {
   return {BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)};
 }
@@ -185,6 +209,59 @@ BigVec3 cross(const BigVec3& a, const BigVec3& b) {
 }
 bool is_zero(const BigVec3& a) {
   return a.x.is_zero() && a.y.is_zero() && a.z.is_zero();
+}
+
+// Exact division by an odd divisor from the low limbs up (Jebelean's exact division): with
+// inv = d0^-1 mod 2^32, each quotient limb is the current low limb of the remainder times inv,
+// whose multiple of the divisor then cancels that limb exactly.
+BigFloat exact_quotient(const BigFloat& a, const BigFloat& b) {
+  assert(!b.limbs_.empty());
+  BigFloat q;
+  if (a.limbs_.empty()) return q;
+  // b = odd * 2^(exponent + shift): move b's trailing zero bits into the exponent.
+  Limbs divisor = b.limbs_;
+  int shift = 0;
+  while ((divisor[0] & 1U) == 0) {
+    std::uint64_t carry = 0;
+    for (std::size_t i = divisor.size(); i-- > 0;) {
+      const std::uint64_t v = (carry << 32) | divisor[i];
+      divisor[i] = static_cast<std::uint32_t>(v >> 1);
+      carry = v & 1U;
+    }
+    ++shift;
+  }
+  while (!divisor.empty() && divisor.back() == 0)
+    divisor.pop_back();
+  // Newton's iteration for the inverse of an odd number modulo 2^32.
+  std::uint32_t inv = divisor[0];
+  for (int k = 0; k < 5; ++k)
+    inv *= 2U - divisor[0] * inv;
+  Limbs rem = a.limbs_;
+  const std::size_t n = rem.size() >= divisor.size() ? rem.size() - divisor.size() + 1 : 1;
+  rem.resize(rem.size() + 2, 0);
+  Limbs quotient(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t qi = rem[i] * inv;
+    quotient[i] = qi;
+    std::uint64_t carry = 0;
+    for (std::size_t j = 0; j < divisor.size(); ++j) {
+      const std::uint64_t t = static_cast<std::uint64_t>(qi) * divisor[j] + carry;
+      const std::uint64_t low = static_cast<std::uint32_t>(t);
+      carry = t >> 32;
+      if (rem[i + j] < low) ++carry;
+      rem[i + j] -= static_cast<std::uint32_t>(low);
+    }
+    for (std::size_t k = i + divisor.size(); carry != 0 && k < rem.size(); ++k) {
+      const std::uint64_t low = carry;
+      carry = rem[k] < low ? 1 : 0;
+      rem[k] -= static_cast<std::uint32_t>(low);
+    }
+  }
+  q.limbs_ = std::move(quotient);
+  q.exponent_ = a.exponent_ - b.exponent_ - shift;
+  q.negative_ = a.negative_ != b.negative_;
+  q.normalize();
+  return q;
 }
 
 }  // namespace contain::predicates

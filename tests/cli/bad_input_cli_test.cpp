@@ -342,6 +342,67 @@ TEST(BadInputCli, BinaryGarbageIsExitThreeForEveryFormat) {
   EXPECT_TRUE(has(points.err, "<stdin>")) << points.err;
 }
 
+TEST(BadInputCli, CcdQueryFilesAreExitThreeNamingTheLine) {
+  TempDir dir;
+  const std::string row = "0,1,0,1,0,1,0\n";
+  std::string rows;
+  for (int i = 0; i < 8; ++i)
+    rows += row;
+  // A rational that is not a double (1/3) on the first row of the second query.
+  const std::string third =
+      dir.write("third.csv", rows + "1,3,0,1,0,1,0\n" + rows.substr(row.size()));
+  CliRun run = run_contain({"collide", "--ccd", "vertex-face", "--queries", third});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "third.csv:9:")) << run.err;
+  EXPECT_TRUE(has(run.err, "not exactly a double")) << run.err;
+  EXPECT_EQ(run.out, "");
+  // Six columns; a decimal fraction instead of an integer; a zero denominator.
+  for (const auto& [name, bad] :
+       {std::pair{"six.csv", "0,1,0,1,0,1\n"}, std::pair{"decimal.csv", "0.5,1,0,1,0,1,0\n"},
+        std::pair{"zero.csv", "1,0,0,1,0,1,0\n"}}) {
+    const std::string file = dir.write(name, row + row + bad + rows);
+    run = run_contain({"collide", "--ccd", "edge-edge", "--queries", file});
+    EXPECT_EQ(run.exit_code, 3) << name;
+    EXPECT_TRUE(has(run.err, std::string(name) + ":3:")) << run.err;
+  }
+  // A file that ends inside a query.
+  const std::string cut = dir.write("cut.csv", rows + row + row);
+  run = run_contain({"collide", "--ccd", "edge-edge", "--queries", cut});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "cut.csv:10:")) << run.err;
+  EXPECT_TRUE(has(run.err, "ends inside a query")) << run.err;
+  // 24-number files: 23 numbers, or a NaN.
+  const std::string short_line =
+      dir.write("short.txt", "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n");
+  run = run_contain({"collide", "--ccd", "vertex-face", "--queries", short_line});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "short.txt:1:")) << run.err;
+  const std::string nan =
+      dir.write("nan.txt", "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 nan\n");
+  run = run_contain({"collide", "--ccd", "vertex-face", "--queries", nan});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "nan.txt:1:")) << run.err;
+}
+
+TEST(BadInputCli, MotionFilesAreExitThreeNamingTheLine) {
+  TempDir dir;
+  const std::string cube =
+      dir.write("cube.off",
+                "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+                "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n"
+                "3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n");
+  const std::string motions = dir.write(
+      "m.txt", "1 0 0 0 0 1 0 0 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 0\n");
+  CliRun run = run_contain({"collide", cube, cube, "--motions", motions});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "m.txt:2:")) << run.err;
+  const std::string inf =
+      dir.write("inf.txt", "1 0 0 0 0 1 0 0 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1 inf\n");
+  run = run_contain({"collide", cube, cube, "--motions", inf});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_TRUE(has(run.err, "inf.txt:1:")) << run.err;
+}
+
 // Issue 13: three inputs that were accepted silently.
 TEST(BadInputCli, BoxWithItsMinCornerAboveItsMaxIsExitThreeNamingTheOption) {
   TempDir dir;
@@ -398,6 +459,52 @@ TEST(BadInputCli, UnclosedWktRingIsClosedWithAWarningNamingFileAndLine) {
                                      dir.write("closed.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"),
                                      "--box", "0,0,4,4"});
   EXPECT_EQ(closed.err, "");
+}
+
+}  // namespace
+}  // namespace contain::test
+
+namespace contain::test {
+namespace {
+
+// The rows of the bad-input table for `contain distance` (issue 12).
+TEST(BadInputCli, DistanceRefusesNonFiniteInputAndDocumentsEmptyShapes) {
+  TempDir dir;
+  const std::string cube =
+      dir.write("cube.off",
+                "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 2 3 7\n3 2 7 6\n"
+                "3 1 2 6\n3 1 6 5\n3 0 4 7\n3 0 7 3\n");
+  for (const char* bad : {"nan 0 0\n", "0 inf 0\n", "0 0 1e400\n"}) {
+    const CliRun run = run_contain({"distance", "--mesh", cube}, std::string("0 0 0\n") + bad);
+    EXPECT_EQ(run.exit_code, 3) << bad;
+    EXPECT_TRUE(run.out.empty());
+    EXPECT_TRUE(has(run.err, ":2")) << run.err;
+  }
+  const std::string nan_mesh = dir.write("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(run_contain({"distance", "--mesh", nan_mesh}, "0 0 0\n").exit_code, 3);
+  EXPECT_EQ(run_contain({"distance", nan_mesh, cube}).exit_code, 3);
+  const std::string empty = dir.write("empty.off", "");
+  EXPECT_EQ(run_contain({"distance", "--mesh", empty}, "0 0 0\n").exit_code, 3);
+  // --within D: D must be finite and >= 0 (a usage error otherwise)
+  for (const char* d : {"nan", "inf", "-1"})
+    EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", d}, "0 0 0\n").exit_code, 2);
+  const std::string poses = dir.write("poses.txt", "1 0 0 nan 0 1 0 0 0 0 1 0\n");
+  const CliRun p = run_contain({"distance", cube, cube, "--poses", poses});
+  EXPECT_EQ(p.exit_code, 3);
+  EXPECT_TRUE(has(p.err, "poses.txt:1")) << p.err;
+  // documented result: the distance to an empty region is infinite, and nothing is within D
+  const std::string none = dir.write("none.wkt", "POLYGON EMPTY");
+  const CliRun e = run_contain({"distance", "--polygon", none}, "0 0\n");
+  EXPECT_EQ(e.exit_code, 0);
+  EXPECT_EQ(e.out, "inf\n");
+  EXPECT_EQ(run_contain({"distance", "--polygon", none, "--within", "1e300"}, "0 0\n").out, "no\n");
+  // 1e300 and 1e-300 coordinates: exact
+  const CliRun huge =
+      run_contain({"distance", "--polygon",
+                   dir.write("big.wkt", "POLYGON ((0 0, 1e300 0, 1e300 1e300, 0 1e300))")},
+                  "-3e299 0\n2e-300 1e-300\n");
+  EXPECT_EQ(huge.out, "3.0000000000000002e+299\n1e-300\n");  // the doubles 3e299 and 1e-300
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace contain {
@@ -29,8 +30,9 @@ struct BatchOptions {
 /// `thread_count` threads. Each range is processed by one thread, so results written per index
 /// are deterministic whatever the thread count. `body` must not throw.
 template <class Body>
-void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
-  const int threads = thread_count(options, count);
+void parallel_for(std::size_t count, const BatchOptions& options, std::size_t min_chunk,
+                  Body&& body) {
+  const int threads = thread_count(options, count, min_chunk);
   if (threads <= 1) {
     body(std::size_t{0}, count);
     return;
@@ -47,6 +49,12 @@ void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
   body(std::size_t{0}, std::min(count, chunk));
   for (std::thread& w : workers)
     w.join();
+}
+
+/// parallel_for in chunks of at least 4096 items (cheap items: thread start-up stays small).
+template <class Body>
+void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
+  parallel_for(count, options, std::size_t{4096}, std::forward<Body>(body));
 }
 
 }  // namespace contain

@@ -75,6 +75,11 @@ class SvgCanvas {
               const LocationColours& colours = {});
   /// Draws points as dots in one colour.
   void points(std::span<const Vec2> points, std::string_view colour, double radius_px);
+  /// Draws a grid of `columns` x `rows` equal cells filling `area`, cell (i, j) (column i from
+  /// area.min.x, row j from area.min.y) in colours[j * columns + i]; an empty colour leaves the
+  /// cell blank. Runs of equal colours along a row become one rectangle, so a colour map with a
+  /// few dozen levels stays small. Fewer colours than cells: the rest are blank.
+  void cells(const Box2& area, int columns, int rows, std::span<const std::string> colours);
   /// Draws the triangles of `mesh` seen in `view` (the canvas's world box is in the projected
   /// plane: see `projected_bounds`), back to front (painter's order by the triangles' centroid
   /// depth), each shaded by how squarely it faces a light above left of the viewer (either side

@@ -41,6 +41,16 @@ class BigFloat {
   /// Exact comparison of the values (a representation is not unique: compare values only).
   friend std::strong_ordering operator<=>(const BigFloat& a, const BigFloat& b);
   friend bool operator==(const BigFloat& a, const BigFloat& b) { return (a <=> b) == 0; }
+  /// a / b when b divides a in the dyadic rationals (b's odd part divides a's), exactly: the
+  /// divisions of subresultant sequences (`polynomial.h`). Precondition: b != 0 and divides a.
+  friend BigFloat exact_quotient(const BigFloat& a, const BigFloat& b);
+
+  /// The value as m * 2^exponent with m a double, 0.5 <= |m| < 1, within a relative 2^-52 of
+  /// the value; m = 0 and exponent = 0 for zero. For rounding quotients and square roots of exact
+  /// values (predicates/rounded_distance.h), whose exponents may lie far outside the double range.
+  [[nodiscard]] double frexp(std::int64_t& exponent) const;
+  /// This value times 2^k, exactly.
+  [[nodiscard]] BigFloat scaled(std::int64_t k) const;
 
  private:
   void normalize();

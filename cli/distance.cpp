@@ -1,0 +1,357 @@
+// contain distance: how far points are from a mesh's surface or a region's rings (unsigned or
+// signed, with the closest point and feature, or the exact clearance test), and how far apart
+// two meshes or two regions are (per pose of B).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common.h"
+#include "contain/distance/mesh_distance.h"
+#include "contain/distance/mesh_pair_distance.h"
+#include "contain/distance/region_distance.h"
+#include "contain/distance/region_pair_distance.h"
+#include "contain/shapes/mesh_validation.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/number_table.h"
+#include "contain/io/points_io.h"
+#include "contain/io/region_io.h"
+#include "progress.h"
+#include "verbs.h"
+
+namespace contain::cli {
+namespace {
+
+struct DistanceOptions {
+  std::string mesh, polygon, points = "-";
+  std::string a, b, transform_a, transform_b, poses;
+  bool signed_distance = false;
+  bool closest = false;
+  bool json = false;
+  double within = 0.0;
+  bool has_within = false;
+  Fill fill = Fill::even_odd;
+  int threads = 0;
+  bool quiet = false;
+  std::string out;
+};
+
+bool is_region_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
+}
+
+// %.17g: enough digits to read back the same double.
+std::string number(double x) {
+  return fmt::format("{:.17g}", x);
+}
+
+Result<Transform> parse_transform(const std::string& text, std::string_view option) {
+  auto numbers = parse_numbers(text, option);
+  if (!numbers) return numbers.error();
+  auto t = Transform::from_row_major(*numbers);
+  if (!t) {
+    Error e = t.error();
+    e.kind = ErrorKind::usage;
+    e.message = std::string(option) + ": " + e.message;
+    return e;
+  }
+  return t;
+}
+
+// "not closed" warnings as data turned into words here (the contract: the same as `inside`).
+void warn_open_mesh(const std::string& name, const Mesh& mesh) {
+  const MeshReport r = validate_mesh(mesh);
+  warn(
+      fmt::format("{}: not closed ({} border edges, {} non-manifold edges): signs come from the "
+                  "generalized winding number (inside where >= 0.5)",
+                  name, r.border_edges, r.nonmanifold_edges));
+}
+
+// Runs `work(begin, end)` over n points in chunks with progress on a terminal.
+template <class Work>
+void with_progress(std::size_t n, const DistanceOptions& o, Work&& work) {
+  Progress progress("points", n, !o.quiet && stderr_is_terminal());
+  progress.run(work);
+}
+
+int run_mesh_points(const DistanceOptions& o) {
+  auto file = io::read_mesh(o.mesh);
+  if (!file) return report(file.error());
+  auto points = io::read_points3(o.points);
+  if (!points) return report(points.error());
+  const bool signs = o.signed_distance;
+  const distance::MeshDistance prepared(file->mesh, {.signs = signs});
+  if (signs && prepared.regime() != inside::MeshRegime::closed_exact) {
+    warn_open_mesh(o.mesh, file->mesh);
+  }
+  const std::vector<Vec3>& p = points->points;
+  std::string text;
+  if (o.has_within) {
+    std::vector<std::uint8_t> yes(p.size());
+    with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
+      prepared.within(std::span<const Vec3>(p).subspan(begin, end - begin), o.within,
+                      std::span<std::uint8_t>(yes).subspan(begin, end - begin),
+                      {.threads = o.threads});
+    });
+    for (const std::uint8_t y : yes)
+      text += y ? "yes\n" : "no\n";
+    return emit(text, o.out);
+  }
+  std::vector<distance::Closest3> answers(p.size());
+  with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
+    prepared.query(std::span<const Vec3>(p).subspan(begin, end - begin),
+                   std::span<distance::Closest3>(answers).subspan(begin, end - begin),
+                   {.signed_distance = signs, .closest_point = o.closest}, {.threads = o.threads});
+  });
+  for (const distance::Closest3& c : answers) {
+    text += number(c.distance);
+    if (o.closest) {
+      text += fmt::format(" {} {} {} {}", number(c.point.x), number(c.point.y), number(c.point.z),
+                          c.feature);
+    }
+    text += '\n';
+  }
+  return emit(text, o.out);
+}
+
+int run_polygon_points(const DistanceOptions& o) {
+  auto region = io::read_region(o.polygon);
+  if (!region) return report(region.error());
+  auto points = io::read_points2(o.points);
+  if (!points) return report(points.error());
+  const distance::RegionDistance prepared(*region, {.fill = o.fill, .signs = o.signed_distance});
+  const std::vector<Vec2>& p = points->points;
+  std::string text;
+  if (o.has_within) {
+    std::vector<std::uint8_t> yes(p.size());
+    with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
+      prepared.within(std::span<const Vec2>(p).subspan(begin, end - begin), o.within,
+                      std::span<std::uint8_t>(yes).subspan(begin, end - begin),
+                      {.threads = o.threads});
+    });
+    for (const std::uint8_t y : yes)
+      text += y ? "yes\n" : "no\n";
+    return emit(text, o.out);
+  }
+  std::vector<distance::Closest2> answers(p.size());
+  with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
+    prepared.query(std::span<const Vec2>(p).subspan(begin, end - begin),
+                   std::span<distance::Closest2>(answers).subspan(begin, end - begin),
+                   {.signed_distance = o.signed_distance, .closest_point = o.closest},
+                   {.threads = o.threads});
+  });
+  for (const distance::Closest2& c : answers) {
+    text += number(c.distance);
+    if (o.closest) {
+      text += fmt::format(" {} {} {}:{}", number(c.point.x), number(c.point.y), c.ring, c.edge);
+    }
+    text += '\n';
+  }
+  return emit(text, o.out);
+}
+
+std::string json_vec(Vec3 v) {
+  return fmt::format("[{},{},{}]", number(v.x), number(v.y), number(v.z));
+}
+std::string json_vec(Vec2 v) {
+  return fmt::format("[{},{}]", number(v.x), number(v.y));
+}
+
+int run_regions(const DistanceOptions& o) {
+  if (!o.transform_a.empty() || !o.transform_b.empty() || !o.poses.empty()) {
+    return report(Error{ErrorKind::usage,
+                        "--transform-a, --transform-b and --poses apply to meshes (3D) only"});
+  }
+  if (!is_region_path(o.b)) {
+    return report(Error{ErrorKind::invalid_value,
+                        "A is a 2D region and B a mesh: both must be regions or both meshes", o.b});
+  }
+  auto a = io::read_region(o.a);
+  if (!a) return report(a.error());
+  auto b = io::read_region(o.b);
+  if (!b) return report(b.error());
+  if (o.has_within) {
+    return emit(
+        distance::region_region_within(*a, *b, o.within, {.fill = o.fill}) ? "yes\n" : "no\n",
+        o.out);
+  }
+  const distance::PairDistance2 d = distance::region_region(*a, *b, {.fill = o.fill});
+  if (o.json) {
+    return emit(fmt::format("{{\"distance\":{},\"contact\":\"{}\",\"points\":[{},{}],\"edge_a\":"
+                            "\"{}:{}\",\"edge_b\":\"{}:{}\",\"vertex\":{}}}\n",
+                            number(d.distance), distance::to_string(d.contact), json_vec(d.point_a),
+                            json_vec(d.point_b), d.ring_a, d.edge_a, d.ring_b, d.edge_b, d.vertex),
+                o.out);
+  }
+  return emit(fmt::format("{} {} {} {} {}\n", number(d.distance), number(d.point_a.x),
+                          number(d.point_a.y), number(d.point_b.x), number(d.point_b.y)),
+              o.out);
+}
+
+int run_meshes(const DistanceOptions& o) {
+  if (is_region_path(o.b)) {
+    return report(Error{ErrorKind::invalid_value,
+                        "A is a mesh and B a 2D region: both must be meshes or both regions", o.b});
+  }
+  Transform ta, tb;
+  if (!o.transform_a.empty()) {
+    auto t = parse_transform(o.transform_a, "--transform-a");
+    if (!t) return report(t.error());
+    ta = *t;
+  }
+  if (!o.transform_b.empty()) {
+    auto t = parse_transform(o.transform_b, "--transform-b");
+    if (!t) return report(t.error());
+    tb = *t;
+  }
+  std::vector<Transform> poses;
+  if (!o.poses.empty()) {
+    if (!o.transform_b.empty()) {
+      return report(Error{ErrorKind::usage, "--poses and --transform-b exclude each other"});
+    }
+    auto table = io::read_number_table(o.poses, {.columns = {12}});
+    if (!table) return report(table.error());
+    for (std::size_t r = 0; r < table->rows(); ++r) {
+      auto t =
+          Transform::from_row_major(std::span<const double>(table->values).subspan(r * 12, 12));
+      if (!t) {
+        Error e = t.error();
+        e.source = o.poses;
+        e.line = table->lines[r];
+        return report(e);
+      }
+      poses.push_back(*t);
+    }
+  } else {
+    poses.push_back(tb);
+  }
+  auto a = io::read_mesh(o.a);
+  if (!a) return report(a.error());
+  auto b = io::read_mesh(o.b);
+  if (!b) return report(b.error());
+  const distance::MeshPairDistance pair(a->mesh, b->mesh, {.transform_a = ta});
+  for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
+                                          std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
+    if (solid) continue;
+    const MeshReport r = validate_mesh(*mesh);
+    warn(
+        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a "
+                    "surface, whose distance is to its triangles only",
+                    name, r.border_edges, r.nonmanifold_edges));
+  }
+  std::string text;
+  if (o.has_within) {
+    std::vector<std::uint8_t> yes(poses.size());
+    pair.within(poses, o.within, yes, {.threads = o.threads});
+    for (const std::uint8_t y : yes)
+      text += y ? "yes\n" : "no\n";
+    return emit(text, o.out);
+  }
+  std::vector<distance::PairDistance3> answers(poses.size());
+  Progress progress("poses", poses.size(), !o.quiet && stderr_is_terminal());
+  progress.run([&](std::size_t begin, std::size_t end) {
+    pair.distance(std::span<const Transform>(poses).subspan(begin, end - begin),
+                  std::span<distance::PairDistance3>(answers).subspan(begin, end - begin),
+                  {.threads = o.threads});
+  });
+  for (const distance::PairDistance3& d : answers) {
+    if (o.json) {
+      text += fmt::format(
+          "{{\"distance\":{},\"contact\":\"{}\",\"points\":[{},{}],\"triangle_a\":{},"
+          "\"triangle_b\":{},\"vertex\":{},\"node_pairs\":{},\"exact_pairs\":{}}}\n",
+          number(d.distance), distance::to_string(d.contact), json_vec(d.point_a),
+          json_vec(d.point_b), d.triangle_a, d.triangle_b, d.vertex, d.node_pairs, d.contenders);
+    } else {
+      text += fmt::format("{} {} {} {} {} {} {}\n", number(d.distance), number(d.point_a.x),
+                          number(d.point_a.y), number(d.point_a.z), number(d.point_b.x),
+                          number(d.point_b.y), number(d.point_b.z));
+    }
+  }
+  return emit(text, o.out);
+}
+
+}  // namespace
+
+Verb add_distance(CLI::App& app) {
+  auto o = std::make_shared<DistanceOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "distance",
+      "How far: points from a mesh or a region (signed, closest point, clearance), or two "
+      "meshes or regions apart");
+  auto* mesh =
+      cmd->add_option("--mesh", o->mesh, "points against this mesh's surface (.obj .off .stl .ply)")
+          ->option_text("FILE");
+  auto* polygon = cmd->add_option("--polygon", o->polygon,
+                                  "points against this 2D region's rings (.wkt .geojson); points "
+                                  "have 2 numbers a line")
+                      ->option_text("FILE");
+  mesh->excludes(polygon);
+  polygon->excludes(mesh);
+  cmd->add_option("--points", o->points,
+                  "points, one a line (2 or 3 numbers, white space or commas; '#' comments); '-' "
+                  "or absent: stdin")
+      ->option_text("FILE");
+  cmd->add_flag("--signed", o->signed_distance,
+                "negative inside, 0 exactly on the boundary (the sign is the exact `inside` "
+                "answer)");
+  cmd->add_flag("--closest", o->closest,
+                "also print the closest point and the closest triangle (mesh) or RING:EDGE "
+                "(region)");
+  cmd->add_option("--within", o->within,
+                  "print yes where the distance is at most D, no otherwise (exact)")
+      ->option_text("D")
+      ->each([o](const std::string&) { o->has_within = true; });
+  cmd->add_option("A", o->a, "two shapes: a mesh (.obj .off .stl .ply) or a 2D region");
+  cmd->add_option("B", o->b, "the same kind of shape as A");
+  cmd->add_option("--transform-a", o->transform_a,
+                  "place A: 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2 (x' = R x + t)")
+      ->option_text("T");
+  cmd->add_option("--transform-b", o->transform_b, "place B (12 numbers, as --transform-a)")
+      ->option_text("T");
+  cmd->add_option("--poses", o->poses, "one transform of B a line: one answer a line")
+      ->option_text("FILE");
+  cmd->add_flag("--json", o->json,
+                "two shapes: one JSON object a result with distance, points and the features");
+  add_fill_option(*cmd, o->fill);
+  add_threads_option(*cmd, o->threads);
+  add_quiet_option(*cmd, o->quiet);
+  cmd->add_option("--out", o->out, "write the answers to FILE instead of stdout")
+      ->option_text("FILE");
+  cmd->footer(
+      "Distances are printed as the double nearest to the exact value (%.17g).\n"
+      "Examples:\n"
+      "  contain distance --mesh part.stl --points probes.xyz --signed --closest\n"
+      "  contain distance --polygon parcels.wkt --points wells.txt --within 25\n"
+      "  contain distance tool.stl fixture.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0 --json\n"
+      "  contain distance gear.off shaft.off --poses poses.txt --within 0.002");
+  return {cmd, [o, mesh, polygon]() {
+            if (o->has_within && !(std::isfinite(o->within) && o->within >= 0)) {
+              return report({ErrorKind::usage,
+                             "--within: D must be a finite number >= 0, not " + number(o->within)});
+            }
+            const bool points_form = mesh->count() > 0 || polygon->count() > 0;
+            if (points_form && (!o->a.empty() || !o->b.empty())) {
+              return report({ErrorKind::usage,
+                             "distance: give either --mesh/--polygon with points, or two shapes "
+                             "A B"});
+            }
+            if (mesh->count() > 0) return run_mesh_points(*o);
+            if (polygon->count() > 0) return run_polygon_points(*o);
+            if (o->a.empty() || o->b.empty()) {
+              return report({ErrorKind::usage,
+                             "distance: give --mesh FILE or --polygon FILE (with --points), or "
+                             "two shapes A B"});
+            }
+            return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+          }};
+}
+
+}  // namespace contain::cli

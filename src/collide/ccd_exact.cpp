@@ -1,0 +1,168 @@
+#include "collide/ccd_exact.h"
+
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "contain/predicates/moving_points.h"
+#include "contain/predicates/polynomial.h"
+
+namespace contain::collide::detail {
+namespace {
+
+using predicates::Polynomial;
+using predicates::RealRoot;
+
+// The rule's polynomials, each kept as a product of factors from a pool of distinct polynomials:
+// one factor each in general; for points that share one coordinate at every time (they move in a
+// plane perpendicular to an axis, `shared_axis`), the degree-4 polynomials factor into quadratics
+// of that plane: cross_dot(i, j, k, l) = o(i, j, k) o(i, j, l) and collinear(i, j, k) = o(i, j,
+// k)^2 with o the orientation in the plane (the only component of the cross products), and dot
+// keeps its value with the two remaining coordinates. Same signs, same roots, lower degrees.
+class ExactQuery {
+ public:
+  ExactQuery(const CcdQuery& q, PrimitivePair pair, int axis) : query_(q), pair_(pair) {
+    const std::span<const PolySpec> specs = pair == PrimitivePair::vertex_face
+                                                ? std::span<const PolySpec>(kVertexFacePolys)
+                                                : std::span<const PolySpec>(kEdgeEdgePolys);
+    for (const PolySpec& spec : specs) {
+      Factored f;
+      if (axis < 0) {
+        f.factors.push_back(add(predicates::exact_polynomial(q, spec)));
+      } else if (spec.kind == MotionKind::cross_dot) {
+        for (const int last : {spec.k, spec.l}) {
+          const auto [index, flip] = orientation(axis, spec.i, spec.j, last);
+          f.factors.push_back(index);
+          f.flip = f.flip != flip;
+        }
+      } else {
+        f.factors.push_back(add(planar_dot(axis, spec)));
+      }
+      rule_.push_back(std::move(f));
+    }
+  }
+
+  // The rule at a time given as a root (or a double).
+  template <class Time>
+  [[nodiscard]] bool contact(const Time& t) const {
+    return contact_rule(pair_, [&](int k) {
+             const Factored& f = rule_[static_cast<std::size_t>(k)];
+             int sign = f.flip ? -1 : 1;
+             for (const int index : f.factors)
+               sign *= to_int(sign_of(pool_[static_cast<std::size_t>(index)], t));
+             return MaybeSign{sign > 0 ? Sign::positive : (sign < 0 ? Sign::negative : Sign::zero),
+                              true};
+           }) == Tri::yes;
+  }
+
+  // Every polynomial whose roots can start a contact interval.
+  [[nodiscard]] const std::vector<Polynomial>& pool() const { return pool_; }
+
+ private:
+  struct Factored {
+    std::vector<int> factors;
+    bool flip = false;
+  };
+
+  int add(Polynomial p) {
+    pool_.push_back(std::move(p));
+    return static_cast<int>(pool_.size()) - 1;
+  }
+
+  [[nodiscard]] Polynomial coordinate(int point, int c) const {
+    const auto at = [&](int k) {
+      const Vec3& v = query_[static_cast<std::size_t>(k)];
+      return c == 0 ? v.x : (c == 1 ? v.y : v.z);
+    };
+    return Polynomial::linear(at(point), at(point + 4));
+  }
+
+  // o(i, j, k) in the plane perpendicular to `axis` (the two other coordinates in cyclic order),
+  // as an index into the pool of the sorted triple and whether the order given flips its sign
+  // (the orientation is alternating).
+  std::pair<int, bool> orientation(int axis, int i, int j, int k) {
+    int t[3] = {i, j, k};
+    bool flip = false;
+    for (int x = 0; x < 2; ++x) {
+      for (int y = 0; y < 2 - x; ++y) {
+        if (t[y] > t[y + 1]) {
+          std::swap(t[y], t[y + 1]);
+          flip = !flip;
+        }
+      }
+    }
+    const int key = t[0] * 16 + t[1] * 4 + t[2];
+    for (const auto& [k2, index] : orientations_) {
+      if (k2 == key) return {index, flip};
+    }
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const Polynomial ux = coordinate(t[1], u) - coordinate(t[0], u);
+    const Polynomial uy = coordinate(t[1], v) - coordinate(t[0], v);
+    const Polynomial wx = coordinate(t[2], u) - coordinate(t[0], u);
+    const Polynomial wy = coordinate(t[2], v) - coordinate(t[0], v);
+    const int index = add(ux * wy - uy * wx);
+    orientations_.emplace_back(key, index);
+    return {index, flip};
+  }
+
+  [[nodiscard]] Polynomial planar_dot(int axis, const PolySpec& s) const {
+    Polynomial sum;
+    for (const int c : {(axis + 1) % 3, (axis + 2) % 3}) {
+      const Polynomial k = coordinate(s.k, c);
+      sum = sum + (k - coordinate(s.i, c)) * (k - coordinate(s.j, c));
+    }
+    return sum;
+  }
+
+  static Sign sign_of(const Polynomial& p, double t) { return p.sign_at(t); }
+  static Sign sign_of(const Polynomial& p, const RealRoot& r) { return predicates::sign_at(p, r); }
+
+  const CcdQuery& query_;
+  PrimitivePair pair_;
+  std::vector<Polynomial> pool_;
+  std::vector<Factored> rule_;
+  std::vector<std::pair<int, int>> orientations_;  // sorted triple key, pool index
+};
+
+Impact hit(double t) {
+  return {true, t, CcdStage::exact};
+}
+
+}  // namespace
+
+Impact exact_ccd(const CcdQuery& q, PrimitivePair pair) {
+  // Points sharing a coordinate at every time are coplanar throughout: no cubic to build.
+  const int axis = predicates::shared_axis(q);
+  const Polynomial f =
+      axis >= 0 ? Polynomial()
+                : predicates::exact_polynomial(
+                      q, pair == PrimitivePair::vertex_face ? kVertexFaceCubic : kEdgeEdgeCubic);
+  const ExactQuery query(q, pair, f.is_zero() ? axis : -1);
+  if (!f.is_zero()) {
+    // Contact needs coplanarity: the contact times are roots of the cubic.
+    for (const RealRoot& root : predicates::real_roots(f, 0.0, 1.0)) {
+      if (query.contact(root)) return hit(predicates::floor_to_double(root));
+    }
+    return {false, Impact{}.time, CcdStage::exact};
+  }
+  // Coplanar at every time: the contact set is closed, so its first point is 0 or a time where a
+  // polynomial of the rule changes sign or vanishes (between such times every sign is constant).
+  if (query.contact(0.0)) return hit(0.0);
+  std::optional<double> best;
+  for (const Polynomial& p : query.pool()) {
+    if (p.is_zero()) continue;
+    for (const RealRoot& root : predicates::real_roots(p, 0.0, 1.0)) {
+      if (best && root.lower() >= *best) break;  // rounds no lower than the best so far
+      if (!query.contact(root)) continue;
+      const double t = predicates::floor_to_double(root);
+      if (!best || t < *best) best = t;
+      break;  // the later roots of p round no lower
+    }
+  }
+  if (best) return hit(*best);
+  return {false, Impact{}.time, CcdStage::exact};
+}
+
+}  // namespace contain::collide::detail

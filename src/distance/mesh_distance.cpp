@@ -1,0 +1,189 @@
+#include "contain/distance/mesh_distance.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "contain/predicates/closest_feature.h"
+#include "contain/predicates/squared_distance.h"
+#include "distance/flat_answer.h"
+#include "distance/morton_order.h"
+#include "distance/triangle_search.h"
+
+namespace contain::distance {
+
+namespace {
+
+using predicates::Flat3;
+using predicates::FlatPair3;
+
+thread_local MeshDistanceStats t_stats;
+
+std::vector<Triangle3> triangles_of(const Mesh& mesh) {
+  std::vector<Triangle3> out;
+  out.reserve(mesh.triangles.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    out.push_back({mesh.vertices[static_cast<std::size_t>(t[0])],
+                   mesh.vertices[static_cast<std::size_t>(t[1])],
+                   mesh.vertices[static_cast<std::size_t>(t[2])]});
+  }
+  return out;
+}
+
+// Two flats are the same point set when they have the same points in some order (a feature
+// shared by neighbouring triangles: a vertex, an edge, or a duplicated face). Then their
+// distances are equal without arithmetic.
+bool same_flat(const Flat3& x, const Flat3& y) {
+  if (x.size != y.size) return false;
+  const auto n = static_cast<std::size_t>(x.size);
+  for (std::size_t i = 0; i < n; ++i) {
+    bool found = false;
+    for (std::size_t j = 0; j < n && !found; ++j)
+      found = x.points[i] == y.points[j];
+    if (!found) return false;
+  }
+  return true;
+}
+
+struct Winner {
+  std::int32_t triangle = -1;
+  FlatPair3 pair{};
+};
+
+// The exact stage: among the contenders, the triangle of least exact distance, ties to the
+// lowest index (distance-tie rule). Each contender's closest feature is decided exactly; equal
+// features need no comparison.
+Winner resolve(Vec3 p, const detail::TriangleSearch& search,
+               std::vector<detail::Contender>& contenders) {
+  // Lowest index first, so that a tie keeps the first one met.
+  std::sort(contenders.begin(), contenders.end(),
+            [](const detail::Contender& a, const detail::Contender& b) { return a.item < b.item; });
+  Winner best;
+  for (const detail::Contender& c : contenders) {
+    const Triangle3& t = search.triangle(c.item);
+    const Flat3 flat = predicates::feature_flat(t, predicates::closest_feature(p, t));
+    const FlatPair3 pair{predicates::point_flat(p), flat};
+    if (best.triangle < 0) {
+      best = {c.item, pair};
+      continue;
+    }
+    if (same_flat(flat, best.pair.b)) continue;
+    ++t_stats.exact_comparisons;
+    if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
+      best = {c.item, pair};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+MeshDistance::MeshDistance() : search_(std::make_unique<detail::TriangleSearch>()) {}
+
+MeshDistance::MeshDistance(const Mesh& mesh, const MeshDistanceOptions& options)
+    : search_(std::make_unique<detail::TriangleSearch>(triangles_of(mesh), options.bvh)),
+      signs_(options.signs) {
+  if (signs_) index_ = inside::MeshIndex(mesh, options.index);
+}
+
+MeshDistance::~MeshDistance() = default;
+MeshDistance::MeshDistance(MeshDistance&&) noexcept = default;
+MeshDistance& MeshDistance::operator=(MeshDistance&&) noexcept = default;
+
+std::size_t MeshDistance::size() const {
+  return search_->size();
+}
+
+Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
+  return query_with_hint(p, query, -1);
+}
+
+Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const {
+  ++t_stats.queries;
+  Closest3 out;
+  if (!is_finite(p)) {
+    out.distance = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  if (search_->empty()) {
+    out.distance = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  // One buffer per thread: queries allocate nothing once it has grown.
+  thread_local std::vector<detail::Contender> contenders;
+  detail::SearchStats stats;
+  search_->contenders(p, contenders, &stats, hint);
+  t_stats.nodes += stats.nodes;
+  t_stats.triangles += stats.items;
+  t_stats.contenders += contenders.size();
+  const Winner w = resolve(p, *search_, contenders);
+  out = detail::answer(w.pair, query.closest_point);
+  out.feature = w.triangle;
+  if (query.signed_distance) {
+    if (!signs_) {
+      out.distance = std::numeric_limits<double>::quiet_NaN();
+      return out;
+    }
+    detail::apply_sign(out, index_.locate(p));
+  }
+  return out;
+}
+
+void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& q,
+                         const BatchOptions& options) const {
+  const std::size_t n = std::min(points.size(), out.size());
+  // Points in Morton order of their position, so that neighbours in the order are neighbours in
+  // space and each query starts from the previous one's closest triangle (a hint: it bounds the
+  // search early and never changes an answer, which is exact).
+  const std::vector<std::uint32_t> order = detail::morton_order(points.first(n));
+  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
+    std::int32_t hint = -1;
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = order[k];
+      out[i] = query_with_hint(points[i], q, hint);
+      hint = out[i].feature;
+    }
+  });
+}
+
+bool MeshDistance::within(Vec3 p, double d) const {
+  if (!(d >= 0) || !is_finite(p)) return false;
+  if (search_->empty()) return false;
+  const detail::SquaredBounds d2 = detail::squared_bounds(d);
+  thread_local std::vector<detail::Contender> undecided;
+  const int fast = search_->within(p, d2.lo, d2.hi, undecided);
+  if (fast != 0) return fast > 0;
+  for (const detail::Contender& c : undecided) {
+    const Triangle3& t = search_->triangle(c.item);
+    const FlatPair3 pair{predicates::point_flat(p),
+                         predicates::feature_flat(t, predicates::closest_feature(p, t))};
+    if (predicates::compare_squared_distance(pair, d) != Sign::positive) return true;
+  }
+  return false;
+}
+
+void MeshDistance::within(std::span<const Vec3> points, double d, std::span<std::uint8_t> out,
+                          const BatchOptions& options) const {
+  const std::size_t n = std::min(points.size(), out.size());
+  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      out[i] = within(points[i], d) ? 1 : 0;
+  });
+}
+
+MeshDistanceStats MeshDistance::stats() {
+  return t_stats;
+}
+void MeshDistance::reset_stats() {
+  t_stats = {};
+}
+
+Closest3 point_mesh(const Mesh& mesh, Vec3 p, const PointQuery& query) {
+  MeshDistanceOptions options;
+  options.signs = query.signed_distance;
+  return MeshDistance(mesh, options).query(p, query);
+}
+
+}  // namespace contain::distance

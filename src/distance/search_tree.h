@@ -1,0 +1,215 @@
+#pragma once
+// Private to contain::distance: the nearest-item search shared by triangles (3D) and segments
+// (2D, on the plane z = 0), over a BVH of the items' boxes.
+//
+// Search: depth first, the nearer child first, pruning a node whose box is farther (squared
+// distance, a lower bound rounded down) than the best upper bound found so far. Each item is
+// bounded by the caller's `bound(position, lo, hi)`: proven lo <= dist^2 <= hi (see
+// triangle_search.h for triangles, segment_search.h for segments). An item whose lo exceeds the
+// final best hi cannot be closest; the others are the contenders, decided exactly by the caller.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "contain/bvh/bvh.h"
+#include "contain/values/box.h"
+#include "contain/values/vec.h"
+
+namespace contain::distance::detail {
+
+/// An item that may be the closest, with bounds on its squared distance.
+struct Contender {
+  std::int32_t item;  // index given to the search
+  double lo;
+  double hi;
+};
+
+/// Counts of a search, for benchmarks.
+struct SearchStats {
+  std::size_t nodes = 0;
+  std::size_t items = 0;
+};
+
+/// Lower bound of the squared distance from p to the closed box (rounded down; +inf beyond the
+/// double range). Each difference is rounded (eps), the squares and sums add 3 eps: 8 eps covers
+/// them and the final factor. A square that underflows only lowers the bound; an overflow means
+/// the exact value exceeds DBL_MAX.
+[[nodiscard]] inline double box_lower_bound(Vec3 p, const float lo[3], const float hi[3]) {
+  constexpr double kEps = 0x1p-53;
+  const double dx =
+      std::max(std::max(static_cast<double>(lo[0]) - p.x, p.x - static_cast<double>(hi[0])), 0.0);
+  const double dy =
+      std::max(std::max(static_cast<double>(lo[1]) - p.y, p.y - static_cast<double>(hi[1])), 0.0);
+  const double dz =
+      std::max(std::max(static_cast<double>(lo[2]) - p.z, p.z - static_cast<double>(hi[2])), 0.0);
+  return ((dx * dx + dy * dy) + dz * dz) * (1 - 8 * kEps);
+}
+
+class SearchTree {
+ public:
+  SearchTree() = default;
+  /// Items numbered 0..n-1 with the boxes given (no NaN).
+  SearchTree(std::span<const Box3> boxes, const bvh::BuildOptions& options);
+
+  [[nodiscard]] bool empty() const { return items_.empty(); }
+  /// Item numbers in leaf order: the callers store their items' data in this order and are
+  /// called back with positions into it.
+  [[nodiscard]] std::span<const std::int32_t> items() const { return items_; }
+  [[nodiscard]] std::int32_t position(std::int32_t item) const {
+    return position_[static_cast<std::size_t>(item)];
+  }
+
+  /// The contenders for the closest item of p, into `out` (cleared first; never empty for a
+  /// non-empty tree). `hint` (an item or -1) is bounded first, so that a near item prunes the
+  /// search from the start; it never changes which items are contenders' decisions.
+  template <class Bound>
+  void contenders(Vec3 p, Bound&& bound, std::vector<Contender>& out, SearchStats* stats,
+                  std::int32_t hint) const;
+
+  /// Three-valued "some item within squared distance d2" from the bounds: +1 proven (some hi <=
+  /// d2_lo), -1 disproven (every lo > d2_hi), 0 undecided; the undecided items go to `out`.
+  template <class Bound>
+  [[nodiscard]] int within(Vec3 p, double d2_lo, double d2_hi, Bound&& bound,
+                           std::vector<Contender>& out) const;
+
+ private:
+  // One node per inner node of the BVH holding both children's boxes (rounded outward to float):
+  // one cache line per step of the descent.
+  struct PairNode {
+    float lo[2][3];
+    float hi[2][3];
+    std::int32_t child[2];  // inner: PairNode index; leaf: first position
+    std::int32_t count[2];  // leaf: number of items; inner: 0
+  };
+
+  template <class Bound>
+  void bound_leaf(std::int32_t first, std::int32_t count, std::int32_t skip, Bound& bound,
+                  double& best, std::vector<Contender>& out, std::size_t& bounded) const {
+    for (std::int32_t k = first; k < first + count; ++k) {
+      if (k == skip) continue;
+      ++bounded;
+      double lo = 0.0, hi = 0.0;
+      bound(k, lo, hi);
+      if (lo > best) continue;
+      out.push_back({items_[static_cast<std::size_t>(k)], lo, hi});
+      if (hi < best) best = hi;
+    }
+  }
+
+  std::vector<std::int32_t> items_;     // leaf order
+  std::vector<std::int32_t> position_;  // item -> position in leaf order
+  std::vector<PairNode> pairs_;         // empty when the root is a leaf
+  float root_lo_[3]{}, root_hi_[3]{};
+  std::int32_t root_count_ = 0;  // items when the root is a leaf
+  int depth_ = 0;
+};
+
+// ---- templates ----------------------------------------------------------------------------
+
+template <class Bound>
+void SearchTree::contenders(Vec3 p, Bound&& bound, std::vector<Contender>& out, SearchStats* stats,
+                            std::int32_t hint) const {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  out.clear();
+  if (items_.empty()) return;
+  double best = kInf;
+  std::int32_t skip = -1;
+  std::size_t bounded = 0, nodes = 0;
+  if (hint >= 0 && static_cast<std::size_t>(hint) < position_.size()) {
+    skip = position(hint);
+    bound_leaf(skip, 1, -1, bound, best, out, bounded);
+  }
+  if (pairs_.empty()) {
+    bound_leaf(0, root_count_, skip, bound, best, out, bounded);
+  } else {
+    struct Entry {
+      std::int32_t node;
+      double lb;
+    };
+    Entry local[128];
+    std::vector<Entry> heap;
+    Entry* stack = local;
+    if (depth_ > 120) {
+      heap.resize(static_cast<std::size_t>(depth_) + 8);
+      stack = heap.data();
+    }
+    int top = 0;
+    stack[top++] = {0, box_lower_bound(p, root_lo_, root_hi_)};
+    while (top > 0) {
+      const Entry e = stack[--top];
+      if (e.lb > best) continue;
+      const PairNode& node = pairs_[static_cast<std::size_t>(e.node)];
+      ++nodes;
+      const double l0 = box_lower_bound(p, node.lo[0], node.hi[0]);
+      const double l1 = box_lower_bound(p, node.lo[1], node.hi[1]);
+      const int near = l1 < l0 ? 1 : 0;
+      const int far = 1 - near;
+      const double lnear = near == 0 ? l0 : l1;
+      const double lfar = near == 0 ? l1 : l0;
+      // An inner far child waits on the stack; a leaf far child is bounded after the near one.
+      if (lfar <= best && node.count[far] == 0) stack[top++] = {node.child[far], lfar};
+      if (lnear <= best) {
+        if (node.count[near] > 0) {
+          bound_leaf(node.child[near], node.count[near], skip, bound, best, out, bounded);
+        } else {
+          stack[top++] = {node.child[near], lnear};
+        }
+      }
+      if (node.count[far] > 0 && lfar <= best) {
+        bound_leaf(node.child[far], node.count[far], skip, bound, best, out, bounded);
+      }
+    }
+  }
+  std::erase_if(out, [best](const Contender& c) { return c.lo > best; });
+  if (stats) {
+    stats->nodes += nodes;
+    stats->items += bounded;
+  }
+}
+
+template <class Bound>
+int SearchTree::within(Vec3 p, double d2_lo, double d2_hi, Bound&& bound,
+                       std::vector<Contender>& out) const {
+  out.clear();
+  if (items_.empty()) return -1;
+  auto leaf = [&](std::int32_t first, std::int32_t count) {
+    for (std::int32_t k = first; k < first + count; ++k) {
+      double lo = 0.0, hi = 0.0;
+      bound(k, lo, hi);
+      if (hi <= d2_lo) return true;
+      if (lo <= d2_hi) out.push_back({items_[static_cast<std::size_t>(k)], lo, hi});
+    }
+    return false;
+  };
+  if (pairs_.empty()) {
+    if (leaf(0, root_count_)) {
+      out.clear();
+      return 1;
+    }
+    return out.empty() ? -1 : 0;
+  }
+  if (box_lower_bound(p, root_lo_, root_hi_) > d2_hi) return -1;
+  std::vector<std::int32_t> stack;
+  stack.reserve(static_cast<std::size_t>(depth_) + 8);
+  stack.push_back(0);
+  while (!stack.empty()) {
+    const PairNode& node = pairs_[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    for (int c = 0; c < 2; ++c) {
+      if (box_lower_bound(p, node.lo[c], node.hi[c]) > d2_hi) continue;
+      if (node.count[c] == 0) {
+        stack.push_back(node.child[c]);
+      } else if (leaf(node.child[c], node.count[c])) {
+        out.clear();
+        return 1;
+      }
+    }
+  }
+  return out.empty() ? -1 : 0;
+}
+
+}  // namespace contain::distance::detail

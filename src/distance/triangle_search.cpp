@@ -1,0 +1,138 @@
+#include "distance/triangle_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contain::distance::detail {
+
+namespace {
+
+constexpr double kEps = 0x1p-53;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Ericson's closest point on a triangle (Real-Time Collision Detection, 5.1.5), in doubles: only
+// a guess, bounded afterwards. Its parameters along the edges lie in [0, 1] as computed (each is
+// d / (d - d') with d >= 0 >= d'), and inside the face they are nonnegative with a sum within a
+// few ulps of 1.
+inline Vec3 approximate_closest(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return a + v * ab;
+  }
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return a + w * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return b + w * (c - b);
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  if (!(v >= 0 && w >= 0 && v + w <= 1.5)) return a;  // NaN or a sliver's noise: any point will do
+  return a + ab * v + ac * w;
+}
+
+// (p - v) . w minus a bound on its rounding error: a lower bound of the exact value with w
+// taken as exact doubles. Each monomial passes one difference, one product and two sums:
+// gamma_4 < 5 eps of the permanent; 8 eps leaves room for the rounding of the bound.
+inline double separation_lower(Vec3 p, Vec3 v, Vec3 w) {
+  const Vec3 d = p - v;
+  const double s = (d.x * w.x + d.y * w.y) + d.z * w.z;
+  const double perm = (std::fabs(d.x * w.x) + std::fabs(d.y * w.y)) + std::fabs(d.z * w.z);
+  return s - 8 * kEps * perm;
+}
+
+}  // namespace
+
+Vec3 approximate_closest_point(Vec3 p, const Triangle3& t) {
+  return approximate_closest(p, t.a, t.b, t.c);
+}
+
+double triangle_slack(double max_abs) {
+  // A computed point a + ab v + ac w (or a vertex, or on an edge) lies within
+  // 4 eps (|a| + |ab| + |ac|) <= 20 eps M per coordinate of the exact a + v (b - a) + w (c - a)
+  // for the computed v, w, and that point lies within 4 eps (|ab| + |ac|) <= 16 eps M of the
+  // triangle (v + w may pass 1 by a few ulps): delta <= sqrt(3) * 36 eps M < 64 eps M. Then
+  // (|u| + delta)^2 <= (1 + t) |u|^2 + (1 + 1 / t) delta^2 with t = 2^-20. The square may
+  // underflow: plus one subnormal unit.
+  const double delta = 64 * kEps * max_abs;
+  return delta * delta * (1 + 0x1p20) * (1 + 0x1p-40) + std::numeric_limits<double>::denorm_min();
+}
+
+void triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi) {
+  const Vec3 q = approximate_closest(p, t.a, t.b, t.c);
+  const Vec3 w = p - q;
+  const double ww = dot(w, w);
+  // hi: |p - q| with |w| rounded per coordinate (relative eps each, 3 eps for the sum of
+  // squares), times (1 + 2^-20) for the cross term, plus the slack.
+  // Squares that underflow lose up to 2^-1075 each: 8 subnormal units cover them.
+  hi = ww * (1 + 0x1p-19) + slack + 8 * std::numeric_limits<double>::denorm_min();
+  if (!std::isfinite(hi)) hi = kInf;
+  const double smin = std::min(
+      {separation_lower(p, t.a, w), separation_lower(p, t.b, w), separation_lower(p, t.c, w)});
+  lo = 0.0;
+  if (smin > 0 && ww >= 0x1p-900 && std::isfinite(ww)) {
+    const double r = smin / ww;
+    if (r >= 0x1p-1000 && std::isfinite(r)) {
+      // smin^2 / ww with three roundings (quotient, product, the factor): (1 - 8 eps).
+      lo = smin * r * (1 - 8 * kEps);
+    }
+  }
+}
+
+TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
+                               const bvh::BuildOptions& options)
+    : triangles_(triangles.begin(), triangles.end()) {
+  std::vector<Box3> boxes;
+  boxes.reserve(triangles_.size());
+  double max_abs = 0.0;
+  for (const Triangle3& t : triangles_) {
+    Box3 b;
+    b.expand(t.a);
+    b.expand(t.b);
+    b.expand(t.c);
+    boxes.push_back(b);
+    max_abs = std::max({max_abs, std::fabs(b.min.x), std::fabs(b.min.y), std::fabs(b.min.z),
+                        std::fabs(b.max.x), std::fabs(b.max.y), std::fabs(b.max.z)});
+  }
+  tree_ = SearchTree(boxes, options);
+  ordered_.reserve(triangles_.size());
+  for (const std::int32_t i : tree_.items())
+    ordered_.push_back(triangles_[static_cast<std::size_t>(i)]);
+  slack_ = triangle_slack(max_abs);
+}
+
+void TriangleSearch::contenders(Vec3 p, std::vector<Contender>& out, SearchStats* stats,
+                                std::int32_t hint) const {
+  tree_.contenders(
+      p,
+      [&](std::int32_t k, double& lo, double& hi) {
+        triangle_bounds(p, ordered_[static_cast<std::size_t>(k)], slack_, lo, hi);
+      },
+      out, stats, hint);
+}
+
+int TriangleSearch::within(Vec3 p, double d2_lo, double d2_hi, std::vector<Contender>& out) const {
+  return tree_.within(
+      p, d2_lo, d2_hi,
+      [&](std::int32_t k, double& lo, double& hi) {
+        triangle_bounds(p, ordered_[static_cast<std::size_t>(k)], slack_, lo, hi);
+      },
+      out);
+}
+
+}  // namespace contain::distance::detail

@@ -1,0 +1,268 @@
+#include "contain/predicates/closest_feature.h"
+
+#include <array>
+
+#include "contain/predicates/big_float.h"
+#include "contain/predicates/cross_dot.h"
+#include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
+#include "predicates/filtered_sign.h"
+#include "predicates/flat_formulas.h"
+#include "predicates/running_error.h"
+
+namespace contain::predicates {
+
+namespace {
+
+using detail::Err;
+
+template <class T, class V>
+T dot_of(V a, V b, V p) {
+  return detail::dot(detail::sub<T>(b, a), detail::sub<T>(p, a));
+}
+
+template <class V>
+Sign dot_sign_of(V a, V b, V p) {
+  const Err<double> fast = dot_of<Err<double>>(a, b, p);
+  if (fast.decided()) return fast.sign();
+  return dot_of<BigFloat>(a, b, p).sign();
+}
+
+template <class V, class S>
+SegmentFeature segment_feature(V p, const S& s) {
+  if (s.a == s.b || dot_sign_of(s.a, s.b, p) != Sign::positive) return SegmentFeature::vertex_a;
+  if (dot_sign_of(s.b, s.a, p) != Sign::positive) return SegmentFeature::vertex_b;
+  return SegmentFeature::interior;
+}
+
+}  // namespace
+
+Sign dot_sign(Vec3 a, Vec3 b, Vec3 p) {
+  return dot_sign_of(a, b, p);
+}
+Sign dot_sign(Vec2 a, Vec2 b, Vec2 p) {
+  return dot_sign_of(a, b, p);
+}
+
+bool collinear(Vec3 a, Vec3 b, Vec3 c) {
+  // (b - a) x (c - a) = 0 iff its three components vanish: the orientations of the three
+  // coordinate projections.
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+}
+
+SegmentFeature closest_feature(Vec3 p, const Segment3& s) {
+  return segment_feature(p, s);
+}
+SegmentFeature closest_feature(Vec2 p, const Segment2& s) {
+  return segment_feature(p, s);
+}
+
+TriangleFeature closest_feature(Vec3 p, const Triangle3& t) {
+  if (!collinear(t.a, t.b, t.c) && cross_dot(t.a, t.b, p, t.c) != Sign::negative &&
+      cross_dot(t.b, t.c, p, t.a) != Sign::negative &&
+      cross_dot(t.c, t.a, p, t.b) != Sign::negative) {
+    return TriangleFeature::face;
+  }
+  // The closest point lies on the boundary: the closest of the three closed edges. Each edge's
+  // own closest feature, then exact comparisons; a vertex reached from two edges is one feature,
+  // and the edges are tried in the order ab, bc, ca so that equal distances keep the first.
+  constexpr std::array<TriangleFeature, 3> kEdge{TriangleFeature::edge_ab, TriangleFeature::edge_bc,
+                                                 TriangleFeature::edge_ca};
+  const std::array<Vec3, 3> v{t.a, t.b, t.c};
+  // Vertex features named by the first vertex of the triangle at that position.
+  auto vertex_feature = [&](int i) {
+    for (int k = 0; k < i; ++k) {
+      if (v[static_cast<std::size_t>(k)] == v[static_cast<std::size_t>(i)]) {
+        return static_cast<TriangleFeature>(k);
+      }
+    }
+    return static_cast<TriangleFeature>(i);
+  };
+  TriangleFeature best{};
+  FlatPair3 best_pair{};
+  bool have = false;
+  for (int e = 0; e < 3; ++e) {
+    const int i = e;
+    const int j = (e + 1) % 3;
+    const Segment3 s{v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]};
+    TriangleFeature f{};
+    switch (closest_feature(p, s)) {
+      case SegmentFeature::vertex_a:
+        f = vertex_feature(i);
+        break;
+      case SegmentFeature::vertex_b:
+        f = vertex_feature(j);
+        break;
+      case SegmentFeature::interior:
+        f = kEdge[static_cast<std::size_t>(e)];
+        break;
+    }
+    if (have && f == best) continue;
+    const FlatPair3 pair{point_flat(p), feature_flat(t, f)};
+    if (!have || compare_squared_distances(pair, best_pair) == Sign::negative) {
+      best = f;
+      best_pair = pair;
+      have = true;
+    }
+  }
+  return best;
+}
+
+Flat3 feature_flat(const Triangle3& t, TriangleFeature f) {
+  switch (f) {
+    case TriangleFeature::vertex_a:
+      return point_flat(t.a);
+    case TriangleFeature::vertex_b:
+      return point_flat(t.b);
+    case TriangleFeature::vertex_c:
+      return point_flat(t.c);
+    case TriangleFeature::edge_ab:
+      return line_flat(t.a, t.b);
+    case TriangleFeature::edge_bc:
+      return line_flat(t.b, t.c);
+    case TriangleFeature::edge_ca:
+      return line_flat(t.c, t.a);
+    case TriangleFeature::face:
+      break;
+  }
+  return plane_flat(t.a, t.b, t.c);
+}
+
+Flat3 feature_flat(const Segment3& s, SegmentFeature f) {
+  switch (f) {
+    case SegmentFeature::vertex_a:
+      return point_flat(s.a);
+    case SegmentFeature::vertex_b:
+      return point_flat(s.b);
+    case SegmentFeature::interior:
+      break;
+  }
+  return line_flat(s.a, s.b);
+}
+
+Flat2 feature_flat(const Segment2& s, SegmentFeature f) {
+  switch (f) {
+    case SegmentFeature::vertex_a:
+      return point_flat(s.a);
+    case SegmentFeature::vertex_b:
+      return point_flat(s.b);
+    case SegmentFeature::interior:
+      break;
+  }
+  return line_flat(s.a, s.b);
+}
+
+}  // namespace contain::predicates
+
+namespace contain::predicates {
+
+namespace {
+
+using detail::filtered_sign;
+
+// Keeps the least of candidate pairs, the first of equal ones.
+template <class Pair>
+struct Least {
+  Pair best{};
+  bool have = false;
+  void offer(const Pair& x) {
+    if (!have || compare_squared_distances(x, best) == Sign::negative) {
+      best = x;
+      have = true;
+    }
+  }
+};
+
+}  // namespace
+
+FlatPair3 closest_flats(const Segment3& s, const Segment3& t) {
+  Least<FlatPair3> least;
+  least.offer({point_flat(s.a), feature_flat(t, closest_feature(s.a, t))});
+  least.offer({point_flat(s.b), feature_flat(t, closest_feature(s.b, t))});
+  least.offer({feature_flat(s, closest_feature(t.a, s)), point_flat(t.a)});
+  least.offer({feature_flat(s, closest_feature(t.b, s)), point_flat(t.b)});
+  if (s.a == s.b || t.a == t.b) return least.best;
+  // The feet of the common perpendicular: s.a + x u, t.a + y v with x = (r x v) . m / |m|^2,
+  // y = (r x u) . m / |m|^2 (r = t.a - s.a, m = u x v); strictly inside both segments.
+  auto foot_inside = [&](bool along_s) {
+    const Sign num = filtered_sign([&]<class T>(const T&) {
+      const auto u = detail::sub<T>(s.b, s.a), v = detail::sub<T>(t.b, t.a);
+      const auto r = detail::sub<T>(t.a, s.a);
+      return detail::dot(detail::cross(r, along_s ? v : u), detail::cross(u, v));
+    });
+    if (num != Sign::positive) return false;
+    return filtered_sign([&]<class T>(const T&) {
+             const auto u = detail::sub<T>(s.b, s.a), v = detail::sub<T>(t.b, t.a);
+             const auto r = detail::sub<T>(t.a, s.a);
+             const auto m = detail::cross(u, v);
+             return detail::dot(m, m) - detail::dot(detail::cross(r, along_s ? v : u), m);
+           }) == Sign::positive;
+  };
+  // (Parallel lines have m = 0, so the numerators vanish and no foot is strictly inside.)
+  if (foot_inside(true) && foot_inside(false)) {
+    least.offer({line_flat(s.a, s.b), line_flat(t.a, t.b)});
+  }
+  return least.best;
+}
+
+FlatPair2 closest_flats(const Segment2& s, const Segment2& t) {
+  const Sign oc = orient2d(s.a, s.b, t.a), od = orient2d(s.a, s.b, t.b);
+  const Sign oa = orient2d(t.a, t.b, s.a), ob = orient2d(t.a, t.b, s.b);
+  if (oc != Sign::zero && od == -oc && oa != Sign::zero && ob == -oa) {
+    // cross(s.b - s.a, t.b - t.a) = orient2d(s.a, s.b, t.b) - orient2d(s.a, s.b, t.a): orient
+    // t so that it is positive.
+    return od == Sign::positive ? FlatPair2{line_flat(s.a, s.b), line_flat(t.a, t.b)}
+                                : FlatPair2{line_flat(s.a, s.b), line_flat(t.b, t.a)};
+  }
+  Least<FlatPair2> least;
+  least.offer({point_flat(s.a), feature_flat(t, closest_feature(s.a, t))});
+  least.offer({point_flat(s.b), feature_flat(t, closest_feature(s.b, t))});
+  least.offer({feature_flat(s, closest_feature(t.a, s)), point_flat(t.a)});
+  least.offer({feature_flat(s, closest_feature(t.b, s)), point_flat(t.b)});
+  return least.best;
+}
+
+bool segment_crosses_triangle(Vec3 p, Vec3 q, const Triangle3& t) {
+  const Sign op = orient3d(t.a, t.b, t.c, p);
+  if (op == Sign::zero) return false;
+  if (orient3d(t.a, t.b, t.c, q) != -op) return false;
+  const Sign e1 = orient3d(p, q, t.a, t.b);
+  if (e1 == Sign::zero) return false;
+  return orient3d(p, q, t.b, t.c) == e1 && orient3d(p, q, t.c, t.a) == e1;
+}
+
+FlatPair3 closest_flats(const Triangle3& s, const Triangle3& t) {
+  const std::array<Vec3, 3> vs{s.a, s.b, s.c}, vt{t.a, t.b, t.c};
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 p = vs[static_cast<std::size_t>(e)], q = vs[static_cast<std::size_t>((e + 1) % 3)];
+    if (segment_crosses_triangle(p, q, t)) {
+      // The line from below the plane to above it (orient3d < 0 first).
+      const bool p_below = orient3d(t.a, t.b, t.c, p) == Sign::negative;
+      return {p_below ? line_flat(p, q) : line_flat(q, p), plane_flat(t.a, t.b, t.c)};
+    }
+  }
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 p = vt[static_cast<std::size_t>(e)], q = vt[static_cast<std::size_t>((e + 1) % 3)];
+    if (segment_crosses_triangle(p, q, s)) {
+      const bool p_below = orient3d(s.a, s.b, s.c, p) == Sign::negative;
+      return {plane_flat(s.a, s.b, s.c), p_below ? line_flat(p, q) : line_flat(q, p)};
+    }
+  }
+  Least<FlatPair3> least;
+  for (const Vec3& v : vs)
+    least.offer({point_flat(v), feature_flat(t, closest_feature(v, t))});
+  for (const Vec3& v : vt)
+    least.offer({feature_flat(s, closest_feature(v, s)), point_flat(v)});
+  for (int i = 0; i < 3; ++i) {
+    const Segment3 es{vs[static_cast<std::size_t>(i)], vs[static_cast<std::size_t>((i + 1) % 3)]};
+    for (int j = 0; j < 3; ++j) {
+      const Segment3 et{vt[static_cast<std::size_t>(j)], vt[static_cast<std::size_t>((j + 1) % 3)]};
+      least.offer(closest_flats(es, et));
+    }
+  }
+  return least.best;
+}
+
+}  // namespace contain::predicates

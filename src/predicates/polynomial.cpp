@@ -1,0 +1,497 @@
+#include "contain/predicates/polynomial.h"
+
+#include <bit>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "contain/predicates/big_float.h"
+#include "predicates/polynomial_state.h"
+
+namespace contain::predicates {
+
+using detail::Coeffs;
+using predicates::BigFloat;
+
+// ---- coefficient vectors --------------------------------------------------------------------
+
+namespace detail {
+
+namespace {
+
+BigFloat negated(const BigFloat& x) {
+  return BigFloat() - x;
+}
+
+}  // namespace
+
+void trim(Coeffs& c) {
+  while (!c.empty() && c.back().sign() == Sign::zero)
+    c.pop_back();
+}
+
+int degree_of(const Coeffs& c) {
+  return static_cast<int>(c.size()) - 1;
+}
+
+Coeffs add(const Coeffs& a, const Coeffs& b) {
+  Coeffs r(std::max(a.size(), b.size()));
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    if (i < a.size() && i < b.size()) {
+      r[i] = a[i] + b[i];
+    } else {
+      r[i] = i < a.size() ? a[i] : b[i];
+    }
+  }
+  trim(r);
+  return r;
+}
+
+Coeffs negate(const Coeffs& a) {
+  Coeffs r(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    r[i] = negated(a[i]);
+  return r;
+}
+
+Coeffs multiply(const Coeffs& a, const Coeffs& b) {
+  if (a.empty() || b.empty()) return {};
+  Coeffs r(a.size() + b.size() - 1);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j)
+      r[i + j] = r[i + j] + a[i] * b[j];
+  }
+  trim(r);
+  return r;
+}
+
+Coeffs derivative(const Coeffs& a) {
+  if (a.size() <= 1) return {};
+  Coeffs r(a.size() - 1);
+  for (std::size_t k = 1; k < a.size(); ++k)
+    r[k - 1] = a[k] * BigFloat(static_cast<double>(k));
+  trim(r);
+  return r;
+}
+
+Sign sign_at(const Coeffs& c, const BigFloat& x) {
+  if (c.empty()) return Sign::zero;
+  BigFloat acc = c.back();
+  for (std::size_t k = c.size() - 1; k-- > 0;)
+    acc = acc * x + c[k];
+  return acc.sign();
+}
+
+namespace {
+
+// The pseudo-remainder lc(b)^(m - n + 1) a - q b (m, n the degrees of a and b).
+Coeffs pseudo_remainder(const Coeffs& a, const Coeffs& b) {
+  assert(!b.empty());
+  const int n = degree_of(b);
+  const int m = degree_of(a);
+  if (m < n) return a;
+  const BigFloat lc = b.back();
+  Coeffs r = a;
+  for (int k = m; k >= n; --k) {
+    const BigFloat rk = r[static_cast<std::size_t>(k)];
+    for (BigFloat& x : r)
+      x = lc * x;
+    for (int j = 0; j <= n; ++j) {
+      const auto i = static_cast<std::size_t>(j + k - n);
+      r[i] = r[i] - rk * b[static_cast<std::size_t>(j)];
+    }
+    r.pop_back();  // coefficient k is now exactly zero
+  }
+  trim(r);
+  return r;
+}
+
+int sign_int(const BigFloat& x) {
+  return static_cast<int>(x.sign());
+}
+
+BigFloat power(const BigFloat& x, int e) {
+  BigFloat r(1.0);
+  for (int k = 0; k < e; ++k)
+    r = r * x;
+  return r;
+}
+
+}  // namespace
+
+// c * rem(a, b) with c > 0: the pseudo-remainder, negated when lc(b)^(m - n + 1) is negative,
+// so that signed remainder sequences keep their sign variations.
+Coeffs positive_pseudo_remainder(const Coeffs& a, const Coeffs& b) {
+  Coeffs r = pseudo_remainder(a, b);
+  const int m = degree_of(a), n = degree_of(b);
+  if (m >= n && b.back().sign() == Sign::negative && (m - n + 1) % 2 == 1) r = negate(r);
+  return r;
+}
+
+// Collins' subresultant PRS: T_0 = a, T_1 = b, T_{k+1} = prem(T_{k-1}, T_k) / (g h^d) with
+// g = lc(T_{k-1}) and h = g^d / h^(d-1) from the step before (g = h = 1 at first); every division
+// is exact (Knuth, TAOCP vol. 2, 4.6.1, Algorithm C; Brown 1971), so coefficient sizes grow
+// linearly instead of exponentially. T_k = c_k sRem_k for the signed remainder sequence
+// sRem_{k+1} = -rem(sRem_{k-1}, sRem_k); from rem(T_{k-1}, T_k) = -c_{k-1} sRem_{k+1},
+// c_{k+1} = -lc(T_k)^(d+1) c_{k-1} / (g h^d), whose sign is tracked and divided out, so every
+// element returned is a positive multiple of sRem_k. Precondition: deg a >= deg b.
+std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b) {
+  std::vector<Coeffs> out{a};
+  if (b.empty()) return out;
+  out.push_back(b);
+  Coeffs prev = a, cur = b;
+  int c_prev = 1, c_cur = 1;
+  BigFloat g(1.0), h(1.0);
+  for (;;) {
+    const int d = degree_of(prev) - degree_of(cur);
+    assert(d >= 0);
+    Coeffs r = pseudo_remainder(prev, cur);
+    if (r.empty()) break;
+    const BigFloat divisor = g * power(h, d);
+    for (BigFloat& x : r)
+      x = exact_quotient(x, divisor);
+    const int lc_sign = sign_int(cur.back());
+    const int c_next = -((d + 1) % 2 == 0 ? 1 : lc_sign) * c_prev * sign_int(divisor);
+    g = cur.back();
+    h = d == 0 ? h : (d == 1 ? g : exact_quotient(power(g, d), power(h, d - 1)));
+    prev = std::move(cur);
+    cur = std::move(r);
+    c_prev = c_cur;
+    c_cur = c_next;
+    out.push_back(c_cur > 0 ? cur : negate(cur));
+  }
+  return out;
+}
+
+// q with lc(g)^(m - n + 1) a = q g, for g dividing a exactly.
+Coeffs pseudo_quotient(const Coeffs& a, const Coeffs& g) {
+  const int n = degree_of(g);
+  const int m = degree_of(a);
+  assert(m >= n && n >= 0);
+  const BigFloat lc = g.back();
+  Coeffs r = a;
+  Coeffs q(static_cast<std::size_t>(m - n + 1));
+  for (int k = m; k >= n; --k) {
+    const BigFloat rk = r[static_cast<std::size_t>(k)];
+    for (BigFloat& x : q)
+      x = lc * x;
+    q[static_cast<std::size_t>(k - n)] = q[static_cast<std::size_t>(k - n)] + rk;
+    for (BigFloat& x : r)
+      x = lc * x;
+    for (int j = 0; j <= n; ++j) {
+      const auto i = static_cast<std::size_t>(j + k - n);
+      r[i] = r[i] - rk * g[static_cast<std::size_t>(j)];
+    }
+    r.pop_back();
+  }
+  trim(q);
+  return q;
+}
+
+Coeffs gcd(Coeffs a, Coeffs b) {
+  if (degree_of(a) < degree_of(b)) std::swap(a, b);
+  if (b.empty()) return a;
+  return signed_remainder_sequence(a, b).back();
+}
+
+// The squarefree part a / gcd(a, a') up to a constant factor: the same distinct roots, all simple.
+Coeffs squarefree(const Coeffs& a) {
+  if (degree_of(a) < 2) return a;
+  const Coeffs g = gcd(a, derivative(a));
+  if (degree_of(g) < 1) return a;
+  return pseudo_quotient(a, g);
+}
+
+// a / (t - x) for a root x of a (synthetic division, exact).
+Coeffs deflate(const Coeffs& a, const BigFloat& x) {
+  assert(a.size() >= 2);
+  Coeffs q(a.size() - 1);
+  q.back() = a.back();
+  for (std::size_t k = q.size() - 1; k-- > 0;)
+    q[k] = a[k + 1] + x * q[k + 1];
+  return q;
+}
+
+std::vector<Coeffs> sturm_sequence(const Coeffs& p) {
+  return signed_remainder_sequence(p, derivative(p));
+}
+
+// Sign variations of a sequence of polynomials at x (zeros skipped).
+int variations(const std::vector<Coeffs>& seq, const BigFloat& x) {
+  int count = 0;
+  Sign last = Sign::zero;
+  for (const Coeffs& c : seq) {
+    const Sign s = sign_at(c, x);
+    if (s == Sign::zero) continue;
+    if (last != Sign::zero && s != last) ++count;
+    last = s;
+  }
+  return count;
+}
+
+}  // namespace detail
+
+// ---- Polynomial ----------------------------------------------------------------------------
+
+Polynomial::Polynomial() = default;
+Polynomial::Polynomial(const Polynomial&) = default;
+Polynomial::Polynomial(Polynomial&&) noexcept = default;
+Polynomial& Polynomial::operator=(const Polynomial&) = default;
+Polynomial& Polynomial::operator=(Polynomial&&) noexcept = default;
+Polynomial::~Polynomial() = default;
+
+Polynomial::Polynomial(std::span<const double> coefficients) {
+  c_.reserve(coefficients.size());
+  for (const double c : coefficients)
+    c_.emplace_back(c);
+  detail::trim(c_);
+}
+
+Polynomial Polynomial::constant(double c) {
+  return Polynomial(std::span<const double>(&c, 1));
+}
+
+Polynomial Polynomial::linear(double at0, double at1) {
+  Polynomial p;
+  p.c_ = {BigFloat(at0), BigFloat(at1) - BigFloat(at0)};
+  detail::trim(p.c_);
+  return p;
+}
+
+int Polynomial::degree() const {
+  return detail::degree_of(c_);
+}
+
+Sign Polynomial::coefficient_sign(int k) const {
+  if (k < 0 || k > degree()) return Sign::zero;
+  return c_[static_cast<std::size_t>(k)].sign();
+}
+
+Sign Polynomial::sign_at(double t) const {
+  return detail::sign_at(c_, BigFloat(t));
+}
+
+Polynomial Polynomial::derivative() const {
+  Polynomial r;
+  r.c_ = detail::derivative(c_);
+  return r;
+}
+
+Polynomial operator+(const Polynomial& a, const Polynomial& b) {
+  Polynomial r;
+  r.c_ = detail::add(a.c_, b.c_);
+  return r;
+}
+
+Polynomial operator-(const Polynomial& a) {
+  Polynomial r;
+  r.c_ = detail::negate(a.c_);
+  return r;
+}
+
+Polynomial operator-(const Polynomial& a, const Polynomial& b) {
+  Polynomial r;
+  r.c_ = detail::add(a.c_, detail::negate(b.c_));
+  return r;
+}
+
+Polynomial operator*(const Polynomial& a, const Polynomial& b) {
+  Polynomial r;
+  r.c_ = detail::multiply(a.c_, b.c_);
+  return r;
+}
+
+const detail::Coeffs& PolynomialAccess::coefficients(const Polynomial& p) {
+  return p.c_;
+}
+
+// ---- roots ---------------------------------------------------------------------------------
+
+namespace {
+
+// Doubles in the order of the reals as 64-bit integers (-0.0 and 0.0 share 0), so that
+// bisection on them halves the count of doubles in between.
+std::int64_t order_key(double d) {
+  const auto bits = std::bit_cast<std::uint64_t>(d);
+  const auto magnitude = static_cast<std::int64_t>(bits & 0x7fffffffffffffffULL);
+  return (bits >> 63) != 0 ? -magnitude : magnitude;
+}
+
+double from_key(std::int64_t k) {
+  if (k >= 0) return std::bit_cast<double>(static_cast<std::uint64_t>(k));
+  return std::bit_cast<double>(static_cast<std::uint64_t>(-k) | 0x8000000000000000ULL);
+}
+
+// b - a for a <= b (it can exceed 2^63; the unsigned difference is exact).
+std::uint64_t key_distance(std::int64_t a, std::int64_t b) {
+  return static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a);
+}
+
+std::int64_t middle_key(std::int64_t a, std::int64_t b) {
+  // b - a can exceed 2^63; the unsigned difference is exact.
+  return a + static_cast<std::int64_t>(key_distance(a, b) / 2);
+}
+
+// An end of an isolating interval: an exact dyadic number and the doubles around it (equal
+// when it is a double). Bisection runs on doubles while a double lies strictly between the ends
+// and on dyadic numbers after that, so a dyadic end always lies strictly between two adjacent
+// doubles `below` and `above`, shared by both ends of its interval.
+struct End {
+  BigFloat x;
+  double below = 0.0;
+  double above = 0.0;
+};
+
+End double_end(double d) {
+  return {BigFloat(d), d, d};
+}
+
+End middle(const End& a, const End& b) {
+  if (a.below == a.above && b.below == b.above &&
+      key_distance(order_key(a.below), order_key(b.below)) >= 2) {
+    return double_end(from_key(middle_key(order_key(a.below), order_key(b.below))));
+  }
+  return {(a.x + b.x) * BigFloat(0.5), a.below, b.above};
+}
+
+class Isolator {
+ public:
+  Isolator(detail::Coeffs p, std::vector<RealRoot>& out)
+      : p_(std::move(p)), sturm_(detail::sturm_sequence(p_)), out_(out) {}
+
+  [[nodiscard]] int variations(const BigFloat& x) const { return detail::variations(sturm_, x); }
+
+  // Appends the roots in (a, b) in increasing order: va - vb of them (Sturm), a and b not roots.
+  void isolate(const End& a, const End& b, int va, int vb) {
+    const int count = va - vb;
+    if (count <= 0) return;
+    if (count == 1) {
+      emit(a, b);
+      return;
+    }
+    // A split point that is not a root: the middle, or, while that is a root, points halfway
+    // towards a (p has finitely many roots, so this ends).
+    End m = middle(a, b);
+    while (detail::sign_at(p_, m.x) == Sign::zero)
+      m = middle(a, m);
+    const int vm = variations(m.x);
+    isolate(a, m, va, vm);
+    isolate(m, b, vm, vb);
+  }
+
+ private:
+  void emit(const End& a, const End& b) {
+    auto s = std::make_shared<RealRoot::State>();
+    s->p = p_;
+    s->lo = a.x;
+    s->hi = b.x;
+    s->sign_lo = detail::sign_at(p_, a.x);
+    out_.emplace_back(std::move(s), a.below, b.above, false);
+  }
+
+  detail::Coeffs p_;
+  std::vector<detail::Coeffs> sturm_;
+  std::vector<RealRoot>& out_;
+};
+
+RealRoot exact_root(const detail::Coeffs& p, double x) {
+  auto s = std::make_shared<RealRoot::State>();
+  s->p = p;
+  s->lo = BigFloat(x);
+  s->hi = s->lo;
+  s->sign_lo = Sign::zero;
+  s->exact = true;
+  return RealRoot(std::move(s), x, x, true);
+}
+
+}  // namespace
+
+std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
+  assert(!p.is_zero() && lo <= hi);
+  std::vector<RealRoot> out;
+  detail::Coeffs sq = detail::squarefree(PolynomialAccess::coefficients(p));
+  if (detail::degree_of(sq) < 1) return out;
+  const BigFloat blo(lo), bhi(hi);
+  const bool root_lo = detail::sign_at(sq, blo) == Sign::zero;
+  const bool root_hi = lo != hi && detail::sign_at(sq, bhi) == Sign::zero;
+  if (root_lo) {
+    out.push_back(exact_root(sq, lo));
+    sq = detail::deflate(sq, blo);
+  }
+  if (root_hi) sq = detail::deflate(sq, bhi);
+  if (lo < hi && detail::degree_of(sq) >= 1) {
+    Isolator iso(std::move(sq), out);
+    iso.isolate(double_end(lo), double_end(hi), iso.variations(blo), iso.variations(bhi));
+  }
+  if (root_hi) out.push_back(exact_root(PolynomialAccess::coefficients(p), hi));
+  return out;
+}
+
+RealRoot root_between(const Polynomial& p, double lo, double hi) {
+  auto s = std::make_shared<RealRoot::State>();
+  s->p = PolynomialAccess::coefficients(p);
+  s->lo = BigFloat(lo);
+  s->hi = BigFloat(hi);
+  s->sign_lo = detail::sign_at(s->p, s->lo);
+  assert(lo < hi && s->sign_lo != Sign::zero && detail::sign_at(s->p, s->hi) == -s->sign_lo);
+  return RealRoot(std::move(s), lo, hi, false);
+}
+
+Sign sign_at(const Polynomial& q, const RealRoot& root) {
+  const RealRoot::State& s = root.state();
+  if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
+  // Sylvester: sum over the roots x of P in (lo, hi) of sign q(x) = Var(SRemS(P, P' q); lo, hi),
+  // and P' q may be replaced by its remainder modulo P (the Cauchy index of P' q / P does not
+  // change) scaled by a positive constant. One root lies in (lo, hi): its sign is the sum.
+  const detail::Coeffs& p = s.p;
+  // q is reduced modulo P first (its value at the root is the remainder's, up to the positive
+  // factor), so that P' q stays of degree < 2 deg P before the second reduction.
+  const detail::Coeffs reduced =
+      detail::positive_pseudo_remainder(PolynomialAccess::coefficients(q), p);
+  const std::vector<detail::Coeffs> seq = detail::signed_remainder_sequence(
+      p, detail::positive_pseudo_remainder(detail::multiply(detail::derivative(p), reduced), p));
+  const int taq = detail::variations(seq, s.lo) - detail::variations(seq, s.hi);
+  assert(taq >= -1 && taq <= 1);
+  return taq > 0 ? Sign::positive : (taq < 0 ? Sign::negative : Sign::zero);
+}
+
+namespace {
+
+// Bisection on doubles between root.lower() and root.upper(): returns the adjacent pair
+// (below, above) around the root, or the root twice when it is a double.
+std::pair<double, double> bracket_by_doubles(const RealRoot& root) {
+  const RealRoot::State& s = root.state();
+  if (s.exact) return {root.lower(), root.lower()};
+  std::int64_t a = order_key(root.lower());
+  std::int64_t b = order_key(root.upper());
+  while (key_distance(a, b) >= 2) {
+    const std::int64_t mk = middle_key(a, b);
+    const double m = from_key(mk);
+    const BigFloat bm(m);
+    bool below;  // m < root
+    if ((bm - s.lo).sign() != Sign::positive) {
+      below = true;
+    } else if ((bm - s.hi).sign() != Sign::negative) {
+      below = false;
+    } else {
+      const Sign sm = detail::sign_at(s.p, bm);
+      if (sm == Sign::zero) return {m, m};
+      below = sm == s.sign_lo;
+    }
+    (below ? a : b) = mk;
+  }
+  return {from_key(a), from_key(b)};
+}
+
+}  // namespace
+
+double floor_to_double(const RealRoot& root) {
+  return bracket_by_doubles(root).first;
+}
+
+double ceil_to_double(const RealRoot& root) {
+  return bracket_by_doubles(root).second;
+}
+
+}  // namespace contain::predicates

@@ -1,0 +1,60 @@
+#pragma once
+// Private to predicates: the exact coefficient vectors behind `Polynomial` and `RealRoot`, and
+// the operations on them (pseudo-remainders, Sturm sequences, squarefree parts), for the other
+// exact stages of this layer (the motion predicates' fallbacks).
+
+#include <vector>
+
+#include "contain/predicates/big_float.h"
+#include "contain/predicates/polynomial.h"
+
+namespace contain::predicates {
+
+namespace detail {
+
+/// Lowest degree first, no zero leading coefficient (the zero polynomial is empty).
+using Coeffs = std::vector<BigFloat>;
+
+void trim(Coeffs& c);
+[[nodiscard]] int degree_of(const Coeffs& c);
+[[nodiscard]] Coeffs add(const Coeffs& a, const Coeffs& b);
+[[nodiscard]] Coeffs negate(const Coeffs& a);
+[[nodiscard]] Coeffs multiply(const Coeffs& a, const Coeffs& b);
+[[nodiscard]] Coeffs derivative(const Coeffs& a);
+[[nodiscard]] Sign sign_at(const Coeffs& c, const BigFloat& x);
+/// c rem(a, b) for some c > 0 (b not zero).
+[[nodiscard]] Coeffs positive_pseudo_remainder(const Coeffs& a, const Coeffs& b);
+/// c a / g for some c != 0, g dividing a.
+[[nodiscard]] Coeffs pseudo_quotient(const Coeffs& a, const Coeffs& g);
+/// A greatest common divisor up to a constant factor.
+[[nodiscard]] Coeffs gcd(Coeffs a, Coeffs b);
+/// a / gcd(a, a') up to a constant factor.
+[[nodiscard]] Coeffs squarefree(const Coeffs& a);
+/// a / (t - x) for a root x.
+[[nodiscard]] Coeffs deflate(const Coeffs& a, const BigFloat& x);
+/// a, b, then minus the remainders, each a positive multiple of the signed remainder sequence's
+/// element (subresultant PRS with exact divisions), up to the last non-zero one. deg a >= deg b.
+[[nodiscard]] std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b);
+/// P, P', then minus the remainders (positively scaled), up to the last non-zero one.
+[[nodiscard]] std::vector<Coeffs> sturm_sequence(const Coeffs& p);
+/// Sign changes of the sequence's values at x, zeros skipped.
+[[nodiscard]] int variations(const std::vector<Coeffs>& seq, const BigFloat& x);
+
+}  // namespace detail
+
+/// The root's squarefree polynomial p and an interval (lo, hi) holding exactly one root of it,
+/// lo and hi not roots (sign_lo = sign of p(lo)); or, `exact`, the root lo == hi itself.
+struct RealRoot::State {
+  detail::Coeffs p;
+  BigFloat lo, hi;
+  Sign sign_lo = Sign::zero;
+  bool exact = false;
+};
+
+/// Read access to a polynomial's exact coefficients.
+class PolynomialAccess {
+ public:
+  [[nodiscard]] static const detail::Coeffs& coefficients(const Polynomial& p);
+};
+
+}  // namespace contain::predicates

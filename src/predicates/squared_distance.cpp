@@ -1,0 +1,59 @@
+#include "contain/predicates/squared_distance.h"
+
+#include "predicates/filtered_sign.h"
+#include "predicates/flat_formulas.h"
+#include "predicates/running_error.h"
+
+namespace contain::predicates {
+
+namespace {
+
+using detail::Quotient;
+
+using detail::filtered_sign;
+
+template <class Pair>
+Sign compare_pairs(const Pair& x, const Pair& y) {
+  return filtered_sign([&]<class T>(const T&) {
+    const Quotient<T> qx = detail::squared_distance<T>(x);
+    const Quotient<T> qy = detail::squared_distance<T>(y);
+    return qx.num * qy.den - qy.num * qx.den;
+  });
+}
+
+template <class Pair>
+Sign compare_pair_with(const Pair& x, double d) {
+  return filtered_sign([&]<class T>(const T&) {
+    const Quotient<T> q = detail::squared_distance<T>(x);
+    return q.num - (T(d) * T(d)) * q.den;
+  });
+}
+
+template <class Pair>
+bool meet(const Pair& x) {
+  return filtered_sign([&]<class T>(const T&) { return detail::squared_distance<T>(x).num; }) ==
+         Sign::zero;
+}
+
+}  // namespace
+
+Sign compare_squared_distances(const FlatPair3& x, const FlatPair3& y) {
+  return compare_pairs(x, y);
+}
+Sign compare_squared_distances(const FlatPair2& x, const FlatPair2& y) {
+  return compare_pairs(x, y);
+}
+Sign compare_squared_distance(const FlatPair3& x, double d) {
+  return compare_pair_with(x, d);
+}
+Sign compare_squared_distance(const FlatPair2& x, double d) {
+  return compare_pair_with(x, d);
+}
+bool flats_meet(const FlatPair3& x) {
+  return meet(x);
+}
+bool flats_meet(const FlatPair2& x) {
+  return meet(x);
+}
+
+}  // namespace contain::predicates

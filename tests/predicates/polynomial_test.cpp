@@ -1,0 +1,243 @@
+// The exact polynomial facility against GMP rationals (tests/support/exact_polynomial.h): signs
+// at doubles, root isolation, signs of other polynomials at roots (Tarski queries against the
+// oracle's refinement) and rounding of roots to doubles, on random polynomials, planted roots
+// (doubles, multiple roots, roots one ulp apart, roots closer than a double apart, roots at the
+// interval's ends) and mixed magnitudes.
+
+#include "contain/predicates/polynomial.h"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "contain/predicates/big_float.h"
+#include "support/exact_polynomial.h"
+
+namespace contain::predicates {
+namespace {
+
+#ifndef CONTAIN_PREDICATES_CASE_DIVISOR
+#define CONTAIN_PREDICATES_CASE_DIVISOR 1
+#endif
+constexpr int kDivisor = CONTAIN_PREDICATES_CASE_DIVISOR;
+
+using test::operator+;
+using test::operator-;
+using test::operator*;
+
+// A polynomial built by the library and the same one built by the oracle.
+struct Both {
+  Polynomial p;
+  test::QPoly q;
+};
+
+Both constant(double c) {
+  return {Polynomial::constant(c), test::QPoly{mpq_class(c)}};
+}
+Both variable() {
+  return {Polynomial::linear(0.0, 1.0), test::QPoly{mpq_class(0), mpq_class(1)}};
+}
+Both operator+(const Both& a, const Both& b) {
+  return {a.p + b.p, a.q + b.q};
+}
+Both operator-(const Both& a, const Both& b) {
+  return {a.p - b.p, a.q - b.q};
+}
+Both operator*(const Both& a, const Both& b) {
+  return {a.p * b.p, a.q * b.q};
+}
+// (t - r), r a double.
+Both factor(double r) {
+  return variable() - constant(r);
+}
+
+class Random {
+ public:
+  explicit Random(unsigned seed) : rng_(seed) {}
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  double any_magnitude() {
+    const double m = uniform(-1.0, 1.0);
+    return std::ldexp(m, integer(-60, 60));
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// Compares every root in [lo, hi], the signs of `others` at them and their rounding.
+void check(const Both& p, double lo, double hi, const std::vector<Both>& others) {
+  const std::vector<RealRoot> roots = real_roots(p.p, lo, hi);
+  const std::vector<test::QRoot> expected = test::isolate_roots(p.q, lo, hi);
+  ASSERT_EQ(roots.size(), expected.size());
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    const RealRoot& r = roots[i];
+    const test::QRoot& e = expected[i];
+    // The library's root is the oracle's: its bracket holds that root and no other.
+    ASSERT_LE(test::compare(mpq_class(r.lower()), e), 0);
+    ASSERT_GE(test::compare(mpq_class(r.upper()), e), 0);
+    EXPECT_EQ(r.is_double(), r.lower() == r.upper());
+    const double floor = floor_to_double(r);
+    EXPECT_EQ(floor, test::floor_to_double(e));
+    const double ceil = ceil_to_double(r);
+    EXPECT_GE(test::compare(mpq_class(ceil), e), 0);
+    EXPECT_TRUE(ceil == floor || ceil == std::nextafter(floor, INFINITY));
+    for (const Both& o : others)
+      EXPECT_EQ(sign_at(o.p, r), test::sign_at(o.q, e));
+  }
+}
+
+TEST(Polynomial, SignAtDoublesEqualsRationalEvaluation) {
+  Random rnd(1);
+  for (int i = 0; i < 20000 / kDivisor; ++i) {
+    Both p = constant(rnd.any_magnitude());
+    const int degree = rnd.integer(0, 6);
+    for (int k = 0; k < degree; ++k)
+      p = p * (variable() * constant(rnd.any_magnitude()) + constant(rnd.any_magnitude()));
+    const double t = rnd.integer(0, 3) == 0 ? rnd.any_magnitude() : rnd.uniform(-2, 2);
+    ASSERT_EQ(p.p.sign_at(t), test::sign_at(p.q, mpq_class(t)));
+    EXPECT_EQ(p.p.degree(), test::degree(p.q));
+  }
+}
+
+TEST(Polynomial, LinearIsTheExactStraightPath) {
+  const Polynomial p = Polynomial::linear(1e300, -1e-300);
+  EXPECT_EQ(p.sign_at(0.0), Sign::positive);
+  EXPECT_EQ(p.sign_at(1.0), Sign::negative);
+  EXPECT_EQ(Polynomial::linear(3.0, 3.0).degree(), 0);
+  EXPECT_TRUE(Polynomial::linear(0.0, 0.0).is_zero());
+  EXPECT_EQ(Polynomial::linear(0.1, 0.3).derivative().coefficient_sign(0), Sign::positive);
+}
+
+TEST(Polynomial, PlantedDoubleRootsAreExactAndRoundToThemselves) {
+  const Both p = factor(0.25) * factor(0.5) * factor(std::nextafter(0.5, 1.0));
+  const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+  ASSERT_EQ(roots.size(), 3U);
+  EXPECT_EQ(floor_to_double(roots[0]), 0.25);
+  EXPECT_EQ(floor_to_double(roots[1]), 0.5);
+  EXPECT_EQ(floor_to_double(roots[2]), std::nextafter(0.5, 1.0));
+  EXPECT_EQ(ceil_to_double(roots[2]), std::nextafter(0.5, 1.0));
+  check(p, 0.0, 1.0, {factor(0.5), factor(0.3), constant(-1)});
+}
+
+TEST(Polynomial, MultipleRootsAreReportedOnce) {
+  const Both p = factor(0.3) * factor(0.3) * factor(0.3) * factor(0.7) * factor(0.7);
+  const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+  ASSERT_EQ(roots.size(), 2U);
+  check(p, 0.0, 1.0, {factor(0.3), factor(0.7), p, factor(0.5)});
+}
+
+TEST(Polynomial, RootsAtTheEndsOfTheIntervalAreExact) {
+  const Both p = factor(0.0) * factor(1.0) * factor(0.5);
+  const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+  ASSERT_EQ(roots.size(), 3U);
+  EXPECT_TRUE(roots[0].is_double());
+  EXPECT_EQ(roots[0].lower(), 0.0);
+  EXPECT_TRUE(roots[2].is_double());
+  EXPECT_EQ(roots[2].lower(), 1.0);
+  check(p, 0.0, 1.0, {factor(0.0), factor(1.0), factor(0.5)});
+  // The interval [x, x].
+  EXPECT_EQ(real_roots(factor(0.5).p, 0.5, 0.5).size(), 1U);
+  EXPECT_EQ(real_roots(factor(0.5).p, 0.25, 0.25).size(), 0U);
+}
+
+TEST(Polynomial, RootsCloserThanADoubleApartAreSeparatedOnDyadicNumbers) {
+  // 3t - 3d and 3t - 3d - ulp: roots d and d + ulp/3, both in [d, next(d)).
+  const double d = 0.4;
+  const double ulp = std::nextafter(d, 1.0) - d;
+  const Both a = constant(3) * variable() - constant(3) * constant(d);
+  const Both b = a - constant(ulp);
+  const Both c = a - constant(2 * ulp);  // d + 2 ulp / 3
+  const Both p = a * b * c;
+  const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+  ASSERT_EQ(roots.size(), 3U);
+  EXPECT_EQ(floor_to_double(roots[0]), d);
+  EXPECT_EQ(floor_to_double(roots[1]), d);
+  EXPECT_EQ(floor_to_double(roots[2]), d);
+  EXPECT_EQ(ceil_to_double(roots[1]), std::nextafter(d, 1.0));
+  check(p, 0.0, 1.0, {a, b, c, a * c, constant(1)});
+}
+
+TEST(Polynomial, RandomPolynomialsAgreeWithTheOracle) {
+  Random rnd(2);
+  for (int i = 0; i < 800 / kDivisor; ++i) {
+    const int degree = rnd.integer(1, 4);
+    Both p = constant(rnd.uniform(-1, 1));
+    for (int k = 0; k < degree; ++k) {
+      // Factors with a root in [0, 1] half of the time.
+      if (rnd.integer(0, 1) == 0) {
+        p = p * factor(rnd.uniform(-0.2, 1.2));
+      } else {
+        p = p * (variable() * constant(rnd.uniform(-1, 1)) + constant(rnd.uniform(-1, 1)));
+      }
+    }
+    std::vector<Both> others;
+    for (int k = 0; k < 3; ++k) {
+      Both o = constant(rnd.uniform(-1, 1));
+      for (int j = rnd.integer(0, 3); j > 0; --j)
+        o = o * (variable() * constant(rnd.uniform(-1, 1)) + constant(rnd.uniform(-1, 1)));
+      others.push_back(o);
+    }
+    others.push_back(p.p.derivative().is_zero() ? constant(1)
+                                                : Both{p.p.derivative(), test::derivative(p.q)});
+    check(p, 0.0, 1.0, others);
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, SharedAndNearlySharedRootsAgreeWithTheOracle) {
+  Random rnd(3);
+  for (int i = 0; i < 1000 / kDivisor; ++i) {
+    const double r = rnd.uniform(0.0, 1.0);
+    const double s = rnd.uniform(0.0, 1.0);
+    const int ulps = rnd.integer(-3, 3);
+    double r2 = r;
+    for (int k = 0; k < std::abs(ulps); ++k)
+      r2 = std::nextafter(r2, ulps > 0 ? 2.0 : -1.0);
+    const Both quad = (variable() - constant(r)) * (variable() - constant(s)) +
+                      constant(rnd.integer(0, 2) == 0 ? 0.0 : std::ldexp(rnd.uniform(-1, 1), -60));
+    const Both p = quad * factor(rnd.uniform(0, 1));
+    check(p, 0.0, 1.0, {factor(r), factor(r2), factor(s) * factor(r2), quad});
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, MixedMagnitudeCoefficientsAgreeWithTheOracle) {
+  Random rnd(4);
+  for (int i = 0; i < 250 / kDivisor; ++i) {
+    Both p = constant(std::ldexp(1.0, rnd.integer(-1000, 1000)));
+    for (int k = rnd.integer(1, 4); k > 0; --k)
+      p = p * (variable() * constant(rnd.any_magnitude()) + constant(rnd.any_magnitude()));
+    const double lo = -std::ldexp(1.0, rnd.integer(-70, 70));
+    const double hi = std::ldexp(1.0, rnd.integer(-70, 70));
+    check(p, lo, hi, {factor(0.0), constant(std::ldexp(-1.0, rnd.integer(-1000, 1000)))});
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, ExactQuotientOfBigFloatsIsTheRationalQuotient) {
+  // Products of random doubles divided by one of their factors (and by powers of two times an
+  // odd factor), the divisions the subresultant sequences make.
+  Random rnd(5);
+  for (int i = 0; i < 3000 / kDivisor; ++i) {
+    const double x = rnd.any_magnitude(), y = rnd.any_magnitude(), z = rnd.any_magnitude();
+    const BigFloat bx(x), by(y), bz(z);
+    const BigFloat product = bx * by * bz;
+    if (y == 0.0) continue;
+    const BigFloat q = exact_quotient(product, by);
+    ASSERT_TRUE(q == bx * bz) << x << " " << y << " " << z;
+    ASSERT_TRUE(exact_quotient(product, by * bz) == bx);
+    const double power = std::ldexp(1.0, rnd.integer(-60, 60));
+    ASSERT_TRUE(exact_quotient(-product, BigFloat(power) * by) ==
+                -(bx * bz) * BigFloat(1.0 / power));
+    ASSERT_TRUE(exact_quotient(BigFloat(), by).is_zero());
+  }
+}
+
+}  // namespace
+}  // namespace contain::predicates
