@@ -17,6 +17,7 @@
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 #include "contain/shapes/mesh_validation.h"
+#include "many.h"
 #include "progress.h"
 #include "verbs.h"
 
@@ -25,6 +26,7 @@ namespace {
 
 struct CollideOptions {
   std::string a, b;
+  std::string scene;
   std::string transform_a, transform_b, poses;
   bool json = false;
   int threads = 0;
@@ -180,6 +182,11 @@ Verb add_collide(CLI::App& app) {
       "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
   cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
   cmd->add_option("B", o->b, "the same kind of shape as A");
+  cmd->add_option("--scene", o->scene,
+                  "many solids instead of A and B: {\"objects\": [{\"id\": ..., \"mesh\": "
+                  "\"part.stl\", \"transform\": [12 numbers]}, ...]} (mesh paths relative to the "
+                  "file); prints every intersecting pair 'ID1 ID2' in file order")
+      ->option_text("FILE");
   cmd->add_option("--transform-a", o->transform_a,
                   "place A: 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r22 t2 (x' = R x + t)")
       ->option_text("T");
@@ -220,6 +227,7 @@ Verb add_collide(CLI::App& app) {
       "  contain collide gear.stl shaft.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0\n"
       "  contain collide a.off b.off --poses poses.txt --json\n"
       "  contain collide parcel.wkt road.geojson\n"
+      "  contain collide --scene assembly.json --json --threads 2\n"
       "Continuous collision (the earliest time of contact, rounded down to a double):\n"
       "  contain collide plate.off bullet.off --from-b 1,0,0,0,0,1,0,0,0,0,1,3 "
       "--to-b 1,0,0,0,0,1,0,0,0,0,1,-3\n"
@@ -234,10 +242,20 @@ Verb add_collide(CLI::App& app) {
         c->threads = o->threads;
         c->quiet = o->quiet;
         c->out = o->out;
+        if (!o->scene.empty()) {
+          if (!o->a.empty() || !o->transform_a.empty() || !o->transform_b.empty() ||
+              !o->poses.empty() || has_motion(*c) || !c->kind.empty() || !c->queries.empty()) {
+            return report({ErrorKind::usage,
+                           "collide: --scene takes no shapes A B, transforms, poses, motions or "
+                           "CCD queries (the scene file places its objects)"});
+          }
+          return run_collide_scene(o->scene, o->json, o->threads, o->out);
+        }
         if (!c->kind.empty() || !c->queries.empty()) return run_ccd_queries(*c);
         if (o->a.empty() || o->b.empty()) {
           return report(Error{ErrorKind::usage,
-                              "collide needs two shapes A and B (or --ccd KIND --queries FILE)"});
+                              "collide needs two shapes A and B (or --scene "
+                              "FILE, or --ccd KIND --queries FILE)"});
         }
         if (has_motion(*c)) {
           if (is_region_path(o->a) || is_region_path(o->b) || !o->poses.empty()) {

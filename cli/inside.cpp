@@ -13,22 +13,17 @@
 #include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
+#include "many.h"
 #include "progress.h"
 #include "verbs.h"
 
 namespace contain::cli {
 namespace {
 
-struct InsideOptions {
+struct InsideOptions : PointQuery {
   std::string mesh;
   std::string polygon;
   std::string csg;
-  std::string points = "-";
-  std::string out;
-  BoundaryPolicy boundary = BoundaryPolicy::report;
-  Fill fill = Fill::even_odd;
-  int threads = 0;
-  bool quiet = false;
 };
 
 // Locates every point through `locator.locate(span, span, options)`, chunked for progress.
@@ -103,6 +98,34 @@ Verb add_inside(CLI::App& app) {
                                "for a closed mesh, generalized winding number (with a warning) "
                                "otherwise")
                    ->option_text("FILE");
+  auto many = std::make_shared<ManyOptions>();
+  auto* layer = cmd->add_option("--layer", many->layer,
+                                "many 2D regions, each with an id: a GeoJSON FeatureCollection, a "
+                                ".wkt file of one POLYGON/MULTIPOLYGON a line, or (GDAL) .shp, "
+                                ".gpkg, .fgb, a PG:... connection string; prints the ids of the "
+                                "regions holding each point")
+                    ->option_text("FILE");
+  auto* id = cmd->add_option("--id", many->id,
+                             "with --layer: the attribute (property, field, column) holding the "
+                             "ids (default: GeoJSON feature ids, else positions from 0)")
+                 ->option_text("NAME");
+  auto* layer_name = cmd->add_option("--layer-name", many->layer_name,
+                                     "with --layer: the layer (table) of a GeoPackage or database "
+                                     "holding several")
+                         ->option_text("NAME");
+  auto* scene = cmd->add_option("--scene", many->scene,
+                                "3D solids: the scene JSON of 'contain collide --scene' "
+                                "({\"objects\": [{\"id\", \"mesh\", \"transform\"}]}); prints the "
+                                "ids of the solids holding each point")
+                    ->option_text("FILE");
+  for (CLI::Option* other : {polygon, csg, mesh, scene}) {
+    layer->excludes(other);
+    other->excludes(layer);
+  }
+  for (CLI::Option* other : {polygon, csg, mesh}) {
+    scene->excludes(other);
+    other->excludes(scene);
+  }
   polygon->excludes(csg);
   csg->excludes(polygon);
   mesh->excludes(polygon);
@@ -125,14 +148,27 @@ Verb add_inside(CLI::App& app) {
       "  printf '0.5 0.5\\n2 2\\n' | contain inside --polygon square.geojson --boundary inside\n"
       "  contain inside --mesh bunny.obj --points probes.xyz\n"
       "  contain inside --csg part.json --points probes.xyz --threads 2 --out answers.txt\n"
+      "  contain inside --layer counties.gpkg --id GEOID --points gps.txt\n"
+      "  contain inside --layer 'PG:dbname=gis' --layer-name parcels --id parcel_id --points "
+      "p.txt\n"
+      "  contain inside --scene assembly.json --points probes.xyz\n"
       "A point is 'on' only when it lies exactly on the boundary of the filled region (exact "
       "arithmetic on the given doubles).");
-  return {cmd, [o, polygon, csg, mesh]() {
+  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name]() {
+            if ((id->count() > 0 || layer_name->count() > 0) && layer->count() == 0) {
+              return report({ErrorKind::usage, "inside: --id and --layer-name need --layer"});
+            }
+            if (layer->count() > 0 || scene->count() > 0) {
+              ManyOptions m = *many;
+              static_cast<PointQuery&>(m) = *o;
+              return layer->count() > 0 ? run_layer(m) : run_scene_inside(m);
+            }
             if (mesh->count() > 0) return run_mesh(*o);
             if (polygon->count() > 0) return run_polygon(*o);
             if (csg->count() > 0) return run_csg(*o);
             return report({ErrorKind::usage,
-                           "inside: give the region: --mesh FILE, --polygon FILE or --csg FILE"});
+                           "inside: give the region: --mesh FILE, --polygon FILE, --csg FILE, "
+                           "--layer FILE or --scene FILE"});
           }};
 }
 

@@ -33,6 +33,17 @@ class Progress {
     std::fflush(stderr);
   }
 
+  /// Reports progress by share (0 to 1) when the total is not known in items: `done` items so far.
+  void update_share(double share, std::size_t done) {
+    if (!enabled_) return;
+    const auto elapsed = std::chrono::steady_clock::now() - start_;
+    if (elapsed < std::chrono::seconds(1)) return;
+    shown_ = true;
+    std::fprintf(stderr, "\rcontain: %3d%% (%zu %.*s)", static_cast<int>(100 * share), done,
+                 static_cast<int>(what_.size()), what_.data());
+    std::fflush(stderr);
+  }
+
   /// Runs `body(begin, end)` over [0, total) in chunks of about 1% (at least `min_chunk` items),
   /// with an update after each: the library's batch calls stay whole within a chunk.
   template <class Body>

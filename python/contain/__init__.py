@@ -30,6 +30,10 @@ raise TypeError and wrong shapes ValueError, naming the expected shape.
 
 contain.dask classifies Dask arrays and dataframes of points on a cluster, building each index
 once per worker process. See docs/python.md and docs/scale.md.
+
+Many shapes at once: RegionLayer (which regions of a GIS layer hold each point, as (point,
+region) index pairs), SolidScene (which solids hold each point, which solids touch), and
+contain.layers.sjoin for GeoDataFrames; see docs/layers.md.
 """
 
 from ._contain import (
@@ -54,6 +58,8 @@ from ._contain import (
     MovingMeshPair,
     PolygonIndex,
     Region,
+    RegionLayer,
+    SolidScene,
     RegionDistance,
     WindingNumber,
     aabb,
@@ -121,6 +127,8 @@ __all__ = [
     "MovingMeshPair",
     "PolygonIndex",
     "Region",
+    "RegionLayer",
+    "SolidScene",
     "RegionDistance",
     "WindingNumber",
     "aabb",

@@ -38,7 +38,7 @@ import numpy as np
 
 import contain
 
-__all__ = ["Shape", "locate", "locate_dataframe", "index_builds", "clear_cache"]
+__all__ = ["Shape", "locate", "locate_dataframe", "index_builds", "clear_cache", "LayerSource", "join_layer"]
 
 _REGION_SUFFIXES = (".wkt", ".geojson", ".json")
 _MESH_SUFFIXES = (".obj", ".off", ".stl", ".ply")
@@ -335,3 +335,189 @@ def locate_dataframe(
         name,
         meta=pd.Series([], dtype=dtype, name=name),
     )
+
+
+# ---- Spatial joins: points against a layer of regions (contain.RegionLayer) -------------------
+#
+# The layer travels like a Shape: as its source (a path or a PG: connection string that every
+# worker can open, with the id attribute and the layer name) or as bytes (GeoJSON or WKT
+# lines), one key of the graph that every partition depends on, so each worker fetches it once
+# and builds the RegionLayer once (the same per-process cache as the indexes above).
+
+
+@dataclass(frozen=True)
+class LayerSource:
+    """A layer as it travels to the workers: a path / connection string, or bytes.
+
+    key: the worker cache key ('layer:path:<path>:<size>:<mtime>' for a file, 'layer:<source>'
+        for a database, 'layer:sha256:<hex>' for bytes), with the id, layer name and fill.
+    format: for bytes, 'geojson' (a FeatureCollection) or 'wkt' (one shape a line).
+    """
+
+    key: str
+    path: Optional[str] = None
+    data: Optional[bytes] = None
+    format: Optional[str] = None
+    id: Optional[str] = None
+    layer_name: Optional[str] = None
+    fill: str = "even_odd"
+
+    @staticmethod
+    def from_path(
+        path: Union[str, os.PathLike], *, id: Optional[str] = None, layer_name: Optional[str] = None, fill: str = "even_odd"
+    ) -> "LayerSource":
+        """A layer file (.wkt, .geojson, or any GDAL vector format) or a 'PG:...' string."""
+        text = os.fspath(path)
+        if text.upper().startswith("PG:"):
+            key = f"layer:{text}"
+        else:
+            text = os.path.abspath(text)
+            try:
+                stat = os.stat(text)
+                key = f"layer:path:{text}:{stat.st_size}:{stat.st_mtime_ns}"
+            except OSError:
+                key = f"layer:path:{text}"
+        key += f":{id}:{layer_name}:{fill}"
+        return LayerSource(key=key, path=text, id=id, layer_name=layer_name, fill=fill)
+
+    @staticmethod
+    def from_bytes(data: bytes, format: str, *, id: Optional[str] = None, fill: str = "even_odd") -> "LayerSource":
+        """GeoJSON (format='geojson') or WKT lines (format='wkt') as bytes."""
+        if format not in ("geojson", "wkt"):
+            raise ValueError(f"format must be 'geojson' or 'wkt', got {format!r}")
+        data = bytes(data)
+        key = f"layer:sha256:{hashlib.sha256(data).hexdigest()}:{format}:{id}:{fill}"
+        return LayerSource(key=key, data=data, format=format, id=id, fill=fill)
+
+    @staticmethod
+    def of(
+        layer: Any, *, id: Optional[str] = None, layer_name: Optional[str] = None, fill: str = "even_odd"
+    ) -> "LayerSource":
+        """A LayerSource from a LayerSource, a path or connection string, or a GeoDataFrame.
+
+        A GeoDataFrame travels as GeoJSON (its coordinates written as the shortest decimals that
+        read back as the same doubles); its ids are the `id` column, else its index labels.
+        """
+        if isinstance(layer, LayerSource):
+            return layer
+        if isinstance(layer, (str, os.PathLike)):
+            return LayerSource.from_path(layer, id=id, layer_name=layer_name, fill=fill)
+        if hasattr(layer, "geometry") and hasattr(layer, "to_json"):
+            frame = layer[[id, layer.geometry.name]] if id is not None else layer[[layer.geometry.name]]
+            text = frame.to_json(na="null", drop_id=False)
+            return LayerSource.from_bytes(text.encode(), "geojson", id=id, fill=fill)
+        raise TypeError(
+            f"layer must be a path, a 'PG:...' string, a GeoDataFrame or a LayerSource, got {type(layer).__name__}"
+        )
+
+    @property
+    def dimension(self) -> int:
+        return 2
+
+    def build(self) -> Any:
+        """The contain.RegionLayer: what each worker builds once."""
+        if self.path is not None:
+            return contain.RegionLayer.from_file(self.path, self.id, self.layer_name, fill=self.fill)
+        return contain.RegionLayer.parse(self.data.decode(), self.format, self.id, fill=self.fill)
+
+    def __repr__(self) -> str:
+        where = self.path if self.path is not None else f"{len(self.data or b'')} bytes of {self.format}"
+        return f"contain.dask.LayerSource({where})"
+
+
+def _join_pairs(points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
+    layer = _index(source)
+    return layer, layer.locate(points, boundary=boundary, threads=threads)
+
+
+def _join_frame(labels: Any, points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
+    import pandas as pd
+
+    layer, pairs = _join_pairs(points, source, boundary, threads)
+    ids = np.asarray(layer.ids, dtype=object)
+    return pd.DataFrame(
+        {
+            "point": np.asarray(labels)[pairs[0]],
+            "region": pairs[1],
+            "id": ids[pairs[1]] if len(ids) else np.empty(0, dtype=object),
+        }
+    )
+
+
+def _join_block(block: np.ndarray, offset: int, source: LayerSource, boundary: str, threads: int) -> Any:
+    return _join_frame(np.arange(offset, offset + len(block), dtype=np.int64), block, source, boundary, threads)
+
+
+def _join_partition(
+    frame: Any, source: LayerSource, columns: Sequence[str], boundary: str, threads: int
+) -> Any:
+    points = np.ascontiguousarray(frame[list(columns)].to_numpy(dtype=np.float64))
+    return _join_frame(frame.index.to_numpy(), points, source, boundary, threads)
+
+
+def join_layer(
+    points: Any,
+    layer: Any,
+    *,
+    columns: Optional[Sequence[str]] = None,
+    id: Optional[str] = None,
+    layer_name: Optional[str] = None,
+    fill: str = "even_odd",
+    boundary: str = "inside",
+    threads: int = 1,
+) -> Any:
+    """The spatial join of Dask points against a layer, as a lazy Dask DataFrame of pairs.
+
+    points: a dask.array of shape (N, 2) chunked by rows, or a dask.dataframe with x, y columns
+        (or `columns`).
+    layer: a layer path (.wkt, .geojson, .shp, .gpkg, .fgb, ...) or 'PG:...' connection string
+        that every worker can open, a GeoDataFrame (sent as GeoJSON bytes), or a LayerSource;
+        id / layer_name / fill as in contain.RegionLayer.from_file. Each worker process builds
+        the RegionLayer once (see index_builds()).
+    boundary: 'inside' (a point on a region's boundary joins it, as predicate='intersects') or
+        'outside' (only points strictly inside, as 'within').
+    threads: threads per partition (default 1: the workers supply the parallelism).
+
+    Returns a lazy dask DataFrame with one row per (point, region) pair where the region holds
+    the point: 'point' (the row number of the array, or the frame's index label), 'region' (the
+    region's position in the layer) and 'id' (its id), in point order then region order within
+    each partition, partitions in order. Exactly the pairs of contain.RegionLayer.locate on one
+    machine.
+    """
+    import dask
+    import dask.array as da
+    import dask.dataframe as dd
+    import pandas as pd
+
+    if boundary not in ("inside", "outside"):
+        raise ValueError(f"boundary must be 'inside' or 'outside', got {boundary!r}")
+    source = LayerSource.of(layer, id=id, layer_name=layer_name, fill=fill)
+    meta = pd.DataFrame(
+        {
+            "point": pd.Series([], dtype=np.int64),
+            "region": pd.Series([], dtype=np.int64),
+            "id": pd.Series([], dtype=object),
+        }
+    )
+    source_key = dask.delayed(source, pure=True)
+    if isinstance(points, dd.DataFrame):
+        columns = list(columns) if columns is not None else ["x", "y"]
+        if len(columns) != 2:
+            raise ValueError(f"a layer needs 2 coordinate columns, got {columns}")
+        missing = [c for c in columns if c not in points.columns]
+        if missing:
+            raise ValueError(f"the dataframe has no column {missing[0]!r} (columns: {list(points.columns)})")
+        meta = meta.assign(point=pd.Series([], dtype=points.index.dtype))
+        return points.map_partitions(_join_partition, source_key, columns, boundary, threads, meta=meta)
+    array = da.asarray(points)
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise ValueError(f"points must have shape (N, 2) for a layer, got {array.shape}")
+    if array.numblocks[1] != 1:
+        array = array.rechunk({1: -1})
+    offsets = np.concatenate([[0], np.cumsum(array.chunks[0])[:-1]]).astype(np.int64)
+    blocks = array.to_delayed().ravel()
+    parts = [
+        dask.delayed(_join_block)(block, int(offset), source_key, boundary, threads)
+        for block, offset in zip(blocks, offsets)
+    ]
+    return dd.from_delayed(parts, meta=meta, verify_meta=False)

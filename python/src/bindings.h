@@ -21,6 +21,7 @@ void bind_mesh_report(py::module_& m);   // validate_mesh, MeshReport, weld_vert
 void bind_primitives(py::module_& m);    // tri_tri, tri_tri_2d, pair_search, orient2d, ...
 void bind_winding(py::module_& m);       // point_in_triangle, winding_number, WindingNumber, ...
 void bind_tile(py::module_& m);          // BoxClipper, tile
+void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
 void bind_distance(py::module_& m);      // MeshDistance, RegionDistance, MeshPairDistance
 
 }  // namespace contain::python

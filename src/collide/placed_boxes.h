@@ -47,6 +47,8 @@ class PlacedBoxes {
   }
 
   [[nodiscard]] const Transform& transform() const { return t_; }
+  /// The rounding bound added to every side of a placed box.
+  [[nodiscard]] double tolerance() const { return tol_; }
 
  private:
   Transform t_;

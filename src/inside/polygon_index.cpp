@@ -304,6 +304,12 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
   return detail::classify_on_edges(point, winding, through, fill_);
 }
 
+std::size_t PolygonIndex::memory_bytes() const {
+  return sizeof(*this) + (x_.lines().size() + y_.lines().size()) * sizeof(double) +
+         cells_.capacity() * sizeof(std::uint32_t) + edge_cells_.capacity() * sizeof(EdgeCell) +
+         edges_.capacity() * sizeof(CellEdge) + side_edges_.capacity() * sizeof(SideEdge);
+}
+
 std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
   if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
         point.y <= bounds_.max.y)) {

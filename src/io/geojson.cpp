@@ -1,223 +1,22 @@
 #include "contain/io/geojson.h"
 
+#include "contain/io/layer_io.h"
+
+#include <array>
 #include <cstddef>
-#include <iterator>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "io/json_tree.h"
 #include "io/text_scan.h"
 
 namespace contain::io {
 namespace {
 
+using detail::JsonValue;
+using detail::kind_name;
 using detail::make_error;
-
-// nlohmann-json's DOM keeps no positions, so the text goes through its SAX parser into this small
-// tree, each value remembering the byte offset where the parser stood when it was read (the end
-// of its first token): enough to name the line of every semantic error.
-struct JsonMember;
-
-struct JsonValue {
-  enum class Kind : std::uint8_t { null, boolean, number, string, array, object };
-  Kind kind = Kind::null;
-  double number = 0.0;
-  std::string text;
-  std::vector<JsonValue> items;
-  std::vector<JsonMember> members;
-  std::size_t offset = 0;
-
-  [[nodiscard]] const JsonValue* member(std::string_view name) const;
-};
-
-// A named struct rather than std::pair<std::string, JsonValue>, and member() out of the
-// class: clang with libstdc++ rejects the pair of a still incomplete JsonValue.
-struct JsonMember {
-  std::string key;
-  JsonValue value;
-};
-
-const JsonValue* JsonValue::member(std::string_view name) const {
-  for (const auto& [key, value] : members) {
-    if (key == name) return &value;
-  }
-  return nullptr;
-}
-
-// A char iterator that publishes how far nlohmann's lexer has read.
-class TrackingIterator {
- public:
-  using iterator_category = std::forward_iterator_tag;
-  using value_type = char;
-  using difference_type = std::ptrdiff_t;
-  using pointer = const char*;
-  using reference = const char&;
-
-  TrackingIterator() = default;
-  TrackingIterator(const char* p, const char** cursor) : p_(p), cursor_(cursor) {}
-  reference operator*() const { return *p_; }
-  TrackingIterator& operator++() {
-    ++p_;
-    if (cursor_ != nullptr) *cursor_ = p_;
-    return *this;
-  }
-  TrackingIterator operator++(int) {
-    TrackingIterator old = *this;
-    ++*this;
-    return old;
-  }
-  friend bool operator==(const TrackingIterator& a, const TrackingIterator& b) {
-    return a.p_ == b.p_;
-  }
-
- private:
-  const char* p_ = nullptr;
-  const char** cursor_ = nullptr;
-};
-
-class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
- public:
-  TreeBuilder(const char* begin, const char** cursor) : begin_(begin), cursor_(cursor) {}
-
-  bool null() override { return add(JsonValue{}); }
-  bool boolean(bool) override { return add(make(JsonValue::Kind::boolean)); }
-  bool number_integer(number_integer_t v) override { return add_number(static_cast<double>(v)); }
-  bool number_unsigned(number_unsigned_t v) override { return add_number(static_cast<double>(v)); }
-  bool number_float(number_float_t, const string_t& text) override {
-    // Re-read with from_chars: correctly rounded, and overflow is reported instead of infinity.
-    const char* p = text.data();
-    double v = 0.0;
-    if (detail::parse_double(p, text.data() + text.size(), v) != detail::NumberStatus::ok) {
-      error_offset_ = offset();
-      error_ = "the number " + text + " is not finite (too large for a double)";
-      overflow_ = true;
-      return false;
-    }
-    return add_number(v);
-  }
-  bool string(string_t& s) override {
-    JsonValue v = make(JsonValue::Kind::string);
-    v.text = std::move(s);
-    return add(std::move(v));
-  }
-  bool binary(binary_t&) override { return add(JsonValue{}); }
-  bool start_object(std::size_t) override {
-    if (!can_open()) return false;
-    stack_.push_back({make(JsonValue::Kind::object), {}});
-    return true;
-  }
-  bool key(string_t& k) override {
-    stack_.back().key = std::move(k);
-    return true;
-  }
-  bool end_object() override { return close(); }
-  bool start_array(std::size_t) override {
-    if (!can_open()) return false;
-    stack_.push_back({make(JsonValue::Kind::array), {}});
-    return true;
-  }
-  bool end_array() override { return close(); }
-  bool parse_error(std::size_t position, const std::string&,
-                   const nlohmann::detail::exception& ex) override {
-    // Keep nlohmann's description, without its "[json.exception...] parse error at line L, column
-    // C: " prefix (the line is ours to report).
-    std::string message = ex.what();
-    const std::size_t column = message.find("column");
-    if (column != std::string::npos) {
-      const std::size_t colon = message.find(": ", column);
-      if (colon != std::string::npos) message = message.substr(colon + 2);
-    } else if (const std::size_t bracket = message.find("] "); bracket != std::string::npos) {
-      message = message.substr(bracket + 2);
-    }
-    // 406: a number too large for a double (nlohmann-json's out_of_range.406).
-    overflow_ = ex.id == 406;
-    error_ = (overflow_ ? "a number is too large for a double: " : "malformed JSON: ") + message;
-    error_offset_ = position == 0 ? 0 : position - 1;
-    return false;
-  }
-
-  std::optional<JsonValue> root;
-  std::string error_;
-  std::size_t error_offset_ = 0;
-  bool overflow_ = false;
-
- private:
-  struct Open {
-    JsonValue value;
-    std::string key;
-  };
-
-  // The tree is freed recursively: bound its depth (GeoJSON needs 4 levels and a few wrappers).
-  bool can_open() {
-    if (stack_.size() < 256) return true;
-    error_offset_ = offset();
-    error_ = "the JSON is nested more than 256 levels deep";
-    return false;
-  }
-
-  [[nodiscard]] std::size_t offset() const {
-    return *cursor_ == nullptr ? 0 : static_cast<std::size_t>(*cursor_ - begin_);
-  }
-  [[nodiscard]] JsonValue make(JsonValue::Kind kind) const {
-    JsonValue v;
-    v.kind = kind;
-    v.offset = offset() == 0 ? 0 : offset() - 1;
-    return v;
-  }
-  bool add_number(double x) {
-    JsonValue v = make(JsonValue::Kind::number);
-    v.number = x;
-    return add(std::move(v));
-  }
-  bool add(JsonValue v) {
-    if (v.kind == JsonValue::Kind::null) v.offset = offset() == 0 ? 0 : offset() - 1;
-    if (stack_.empty()) {
-      root = std::move(v);
-    } else if (stack_.back().value.kind == JsonValue::Kind::array) {
-      stack_.back().value.items.push_back(std::move(v));
-    } else {
-      stack_.back().value.members.push_back({std::move(stack_.back().key), std::move(v)});
-    }
-    return true;
-  }
-  bool close() {
-    JsonValue v = std::move(stack_.back().value);
-    stack_.pop_back();
-    if (stack_.empty()) {
-      root = std::move(v);
-      return true;
-    }
-    if (stack_.back().value.kind == JsonValue::Kind::array) {
-      stack_.back().value.items.push_back(std::move(v));
-    } else {
-      stack_.back().value.members.push_back({std::move(stack_.back().key), std::move(v)});
-    }
-    return true;
-  }
-
-  const char* begin_;
-  const char** cursor_;
-  std::vector<Open> stack_;
-};
-
-const char* kind_name(JsonValue::Kind kind) {
-  switch (kind) {
-    case JsonValue::Kind::null:
-      return "null";
-    case JsonValue::Kind::boolean:
-      return "a boolean";
-    case JsonValue::Kind::number:
-      return "a number";
-    case JsonValue::Kind::string:
-      return "a string";
-    case JsonValue::Kind::array:
-      return "an array";
-    case JsonValue::Kind::object:
-      return "an object";
-  }
-  return "a value";
-}
 
 class GeoJsonReader {
  public:
@@ -373,30 +172,96 @@ void append_polygon(std::string& out, const Polygon& polygon) {
 
 Result<MultiPolygon> parse_geojson(std::string_view text, const std::string& source) {
   text = detail::skip_bom(text);
-  const char* cursor = nullptr;
-  TreeBuilder builder(text.data(), &cursor);
-  const char* begin = text.data();
-  const char* end = begin + text.size();
-  bool ok = false;
-  try {
-    ok = nlohmann::json::sax_parse(TrackingIterator(begin, &cursor), TrackingIterator(end, nullptr),
-                                   &builder);
-  } catch (const std::exception& ex) {  // allocation failure and the like: still an Error
-    return make_error(ErrorKind::parse, std::string("cannot read the JSON: ") + ex.what(), source);
-  }
-  if (!ok || !builder.root) {
-    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-      return make_error(ErrorKind::parse, "the input is empty: expected a GeoJSON object", source,
-                        1);
-    }
-    const ErrorKind kind = builder.overflow_ ? ErrorKind::invalid_value : ErrorKind::parse;
-    return make_error(kind, builder.error_, source,
-                      detail::line_of_offset(text, builder.error_offset_));
-  }
+  auto root = detail::parse_json_tree(text, source);
+  if (!root) return root.error();
   MultiPolygon out;
   GeoJsonReader reader(text, source);
-  if (auto s = reader.read_object(*builder.root, out, 0); !s) return s.error();
+  if (auto s = reader.read_object(*root, out, 0); !s) return s.error();
   return out;
+}
+
+namespace {
+
+// The text of an id or a property value, or nullopt where there is none (null, missing).
+std::optional<std::string> id_text(const JsonValue* value) {
+  if (value == nullptr) return std::nullopt;
+  switch (value->kind) {
+    case JsonValue::Kind::string:
+    case JsonValue::Kind::number:  // kept as written (see parse_json_tree's keep_text)
+      return value->text;
+    case JsonValue::Kind::boolean:
+      return value->number != 0.0 ? "true" : "false";
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Result<Layer> parse_geojson_layer(std::string_view text, const std::string& source,
+                                  const LayerOptions& options) {
+  text = detail::skip_bom(text);
+  const std::array<std::string_view, 2> keep{"id", options.id};
+  auto root = detail::parse_json_tree(text, source, keep);
+  if (!root) return root.error();
+  // The shapes of the layer: the features of a collection, or the one object given.
+  std::vector<const JsonValue*> shapes;
+  const JsonValue* type = root->kind == JsonValue::Kind::object ? root->member("type") : nullptr;
+  const std::string_view t = type != nullptr ? std::string_view(type->text) : std::string_view();
+  const char* list = t == "FeatureCollection"    ? "features"
+                     : t == "GeometryCollection" ? "geometries"
+                                                 : nullptr;
+  if (list != nullptr) {
+    const JsonValue* items = root->member(list);
+    if (items == nullptr || items->kind != JsonValue::Kind::array) {
+      return make_error(ErrorKind::parse,
+                        std::string("the ") + std::string(t) + " has no \"" + list + "\" array",
+                        source, detail::line_of_offset(text, root->offset));
+    }
+    for (const JsonValue& item : items->items)
+      shapes.push_back(&item);
+  } else {
+    shapes.push_back(&*root);
+  }
+  Layer layer;
+  layer.regions.resize(shapes.size());
+  GeoJsonReader reader(text, source);
+  bool every_id = !shapes.empty();
+  std::vector<std::string> feature_ids;
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const JsonValue& shape = *shapes[k];
+    if (auto s = reader.read_object(shape, layer.regions[k], 1); !s) return s.error();
+    const JsonValue* properties = shape.member("properties");
+    if (!options.id.empty()) {
+      const JsonValue* value = properties != nullptr && properties->kind == JsonValue::Kind::object
+                                   ? properties->member(options.id)
+                                   : nullptr;
+      std::optional<std::string> id = id_text(value);
+      if (!id) {
+        return make_error(ErrorKind::invalid_value,
+                          "feature " + std::to_string(k) + " has no value of the property '" +
+                              options.id + "'" + (value != nullptr ? " (null)" : ""),
+                          source, detail::line_of_offset(text, shape.offset));
+      }
+      layer.ids.push_back(std::move(*id));
+    } else if (every_id) {
+      std::optional<std::string> id = id_text(shape.member("id"));
+      if (id) {
+        feature_ids.push_back(std::move(*id));
+      } else {
+        every_id = false;
+      }
+    }
+  }
+  if (options.id.empty()) {
+    if (every_id && (t == "FeatureCollection" || t == "Feature")) {
+      layer.ids = std::move(feature_ids);
+    } else {
+      for (std::size_t k = 0; k < shapes.size(); ++k)
+        layer.ids.push_back(std::to_string(k));
+    }
+  }
+  return layer;
 }
 
 Result<MultiPolygon> read_geojson(const std::filesystem::path& path) {

@@ -1,8 +1,12 @@
 #include "contain/io/points_io.h"
 
+#include <algorithm>
+#include <cstring>
+#include <iostream>
 #include <utility>
 
 #include "contain/io/number_table.h"
+#include "io/text_scan.h"
 
 namespace contain::io {
 namespace {
@@ -33,6 +37,55 @@ Result<Points3> to_points3(Result<NumberTable> table) {
 const NumberTableOptions kTwo{.columns = {2}};
 const NumberTableOptions kThree{.columns = {3}};
 
+// The text once, then `chunk` lines at a time through the table parser; line numbers in errors
+// are made the file's own again.
+template <class Point>
+Status read_chunked(const std::filesystem::path& path, std::size_t chunk,
+                    const std::function<void(std::span<const Point>, double)>& consume) {
+  const bool standard_input = path == "-";
+  const std::string source = standard_input ? "<stdin>" : detail::source_name(path);
+  auto text = standard_input ? detail::read_stream(std::cin, source) : detail::read_file(path);
+  if (!text) return text.error();
+  const std::string_view all = detail::skip_bom(*text);
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  const NumberTableOptions& options = kColumns == 2 ? kTwo : kThree;
+  chunk = std::max<std::size_t>(chunk, 1);
+  std::vector<Point> points;
+  std::int64_t lines_before = 0;
+  std::size_t begin = 0;
+  while (begin < all.size()) {
+    std::size_t end = begin, lines = 0;
+    while (end < all.size() && lines < chunk) {
+      const void* newline = std::memchr(all.data() + end, '\n', all.size() - end);
+      end = newline == nullptr
+                ? all.size()
+                : static_cast<std::size_t>(static_cast<const char*>(newline) - all.data()) + 1;
+      ++lines;
+    }
+    auto table = parse_number_table(all.substr(begin, end - begin), source, options);
+    if (!table) {
+      Error error = table.error();
+      if (error.line > 0) error.line += lines_before;
+      return error;
+    }
+    points.clear();
+    const std::vector<double>& v = table->values;
+    for (std::size_t i = 0; i < table->rows(); ++i) {
+      if constexpr (kColumns == 2) {
+        points.push_back({v[2 * i], v[2 * i + 1]});
+      } else {
+        points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
+      }
+    }
+    if (!points.empty()) {
+      consume(points, static_cast<double>(end) / static_cast<double>(all.size()));
+    }
+    lines_before += static_cast<std::int64_t>(lines);
+    begin = end;
+  }
+  return Ok{};
+}
+
 }  // namespace
 
 Result<Points2> parse_points2(std::string_view text, const std::string& source) {
@@ -46,6 +99,14 @@ Result<Points2> read_points2(const std::filesystem::path& path) {
 }
 Result<Points3> read_points3(const std::filesystem::path& path) {
   return to_points3(read_number_table(path, kThree));
+}
+Status read_points2_chunked(const std::filesystem::path& path, std::size_t chunk,
+                            const std::function<void(std::span<const Vec2>, double)>& consume) {
+  return read_chunked<Vec2>(path, chunk, consume);
+}
+Status read_points3_chunked(const std::filesystem::path& path, std::size_t chunk,
+                            const std::function<void(std::span<const Vec3>, double)>& consume) {
+  return read_chunked<Vec3>(path, chunk, consume);
 }
 Result<Points2> read_points2(std::istream& in, const std::string& source) {
   return to_points2(read_number_table(in, source, kTwo));

@@ -33,7 +33,21 @@ Result<std::string> read_file(const std::filesystem::path& path) {
     return make_error(ErrorKind::io, std::string("cannot open the file: ") + std::strerror(errno),
                       source);
   }
-  return read_stream(in, source);
+  // A regular file is read in one piece into a string of its size: growing the string chunk by
+  // chunk copied a 200 MB point file about twice over (5% of a whole run). Whatever a file that
+  // changes meanwhile holds past that size is appended as from a stream.
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size == 0) return read_stream(in, source);
+  std::string data(static_cast<std::size_t>(size), '\0');
+  in.read(data.data(), static_cast<std::streamsize>(size));
+  data.resize(static_cast<std::size_t>(in.gcount()));
+  if (in.bad()) return make_error(ErrorKind::io, "reading failed", source);
+  if (in) {
+    auto rest = read_stream(in, source);
+    if (!rest) return rest;
+    data += *rest;
+  }
+  return data;
 }
 
 Result<std::string> read_stream(std::istream& in, const std::string& source) {

@@ -37,7 +37,8 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
   return file.string();
 }
 
-CliRun run_contain(const std::vector<std::string>& args, const std::string& input) {
+CliRun run_program(const std::string& program, const std::vector<std::string>& args,
+                   const std::string& input, int as_uid, int as_gid) {
   TempDir dir;
   const std::string in_path = dir.write("stdin", input);
   const std::filesystem::path out_path = dir.path() / "stdout", err_path = dir.path() / "stderr";
@@ -49,14 +50,16 @@ CliRun run_contain(const std::vector<std::string>& args, const std::string& inpu
     dup2(in, 0);
     dup2(out, 1);
     dup2(err, 2);
+    if (as_gid >= 0 && setgid(static_cast<gid_t>(as_gid)) != 0) _exit(126);
+    if (as_uid >= 0 && setuid(static_cast<uid_t>(as_uid)) != 0) _exit(126);
     std::vector<char*> argv;
-    std::string exe = CONTAIN_EXE;
+    std::string exe = program;
     argv.push_back(exe.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy)
       argv.push_back(a.data());
     argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
+    execvp(exe.c_str(), argv.data());
     _exit(127);
   }
   int status = 0;
@@ -66,6 +69,10 @@ CliRun run_contain(const std::vector<std::string>& args, const std::string& inpu
   run.out = slurp(out_path);
   run.err = slurp(err_path);
   return run;
+}
+
+CliRun run_contain(const std::vector<std::string>& args, const std::string& input) {
+  return run_program(CONTAIN_EXE, args, input);
 }
 
 }  // namespace contain::test

@@ -17,6 +17,12 @@ struct CliRun {
 [[nodiscard]] CliRun run_contain(const std::vector<std::string>& args,
                                  const std::string& input = "");
 
+/// Runs another program (`program` found on PATH unless it holds a '/') the same way; with
+/// `as_uid` >= 0 the child first becomes that user (and `as_gid`), for servers that refuse to
+/// run as root. exit_code 127: the program could not be started.
+[[nodiscard]] CliRun run_program(const std::string& program, const std::vector<std::string>& args,
+                                 const std::string& input = "", int as_uid = -1, int as_gid = -1);
+
 /// A fresh directory for one test's files, removed with the object.
 class TempDir {
  public:

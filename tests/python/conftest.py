@@ -36,3 +36,14 @@ def cli():
 def read_jsonl(path):
     with open(path) as lines:
         return [json.loads(line) for line in lines if line.strip()]
+
+
+@pytest.fixture(scope="module")
+def client():
+    """A distributed.LocalCluster of two one-thread worker processes on loopback."""
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                       host="127.0.0.1", dashboard_address=None)
+    with distributed.Client(cluster) as c:
+        yield c
+    cluster.close()

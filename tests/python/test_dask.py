@@ -22,15 +22,6 @@ CHUNK = 250_000
 
 
 @pytest.fixture(scope="module")
-def client():
-    cluster = distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
-                                       host="127.0.0.1", dashboard_address=None)
-    with distributed.Client(cluster) as c:
-        yield c
-    cluster.close()
-
-
-@pytest.fixture(scope="module")
 def mesh_file(tmp_path_factory):
     path = tmp_path_factory.mktemp("mesh") / "torus.ply"
     contain.write_mesh(torus(), path)

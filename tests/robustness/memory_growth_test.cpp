@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "contain/inside/polygon_index.h"
+#include "contain/inside/region_layer.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/points_io.h"
 #include "contain/io/wkt.h"
@@ -216,6 +217,50 @@ TEST(MemoryGrowth, PolygonIndexStaysUnderItsBytesPerEdgeAtEverySize) {
                 static_cast<long long>(peak), stats.cells, stats.edge_refs);
     // Edge-cell incidences grow linearly too.
     EXPECT_LE(stats.edge_refs, 48 * stats.edges) << "n = " << n;
+  }
+}
+
+// RegionLayer (region_layer.h): per region a PolygonIndex capped at 16 cells an edge (one cell up
+// to 8 edges) and its object, plus the tree over the boxes. Held (stats().bytes) and peak, per
+// edge, for layers of many small regions (n x n squares: 4 edges a region, the per-region costs
+// dominate) and of a few spiky ones.
+constexpr double kLayerBytesPerEdgeHeld = 512.0;
+constexpr double kLayerBytesPerEdgePeak = 1024.0;
+
+TEST(MemoryGrowth, RegionLayerStaysUnderItsBytesPerEdgeAtEverySize) {
+  for (const int n : {30, 60, 120}) {
+    std::vector<MultiPolygon> regions;
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        regions.push_back(MultiPolygon{{Polygon{
+            {{{1.0 * i, 1.0 * j}, {i + 1.0, 1.0 * j}, {i + 1.0, j + 1.0}, {1.0 * i, j + 1.0}}}}}});
+      }
+    }
+    inside::RegionLayer::Stats stats;
+    const std::int64_t peak = peak_extra_bytes([&] {
+      const inside::RegionLayer layer(regions);
+      stats = layer.stats();
+    });
+    std::printf("%d squares: %zu edges, %zu bytes held, %lld at the peak\n", n * n, stats.edges,
+                stats.bytes, static_cast<long long>(peak));
+    EXPECT_LE(static_cast<double>(stats.bytes) / static_cast<double>(stats.edges),
+              kLayerBytesPerEdgeHeld);
+    EXPECT_LE(static_cast<double>(peak - 256 * 1024) / static_cast<double>(stats.edges),
+              kLayerBytesPerEdgePeak);
+  }
+  for (const int n : {1000, 8000, 32000}) {
+    std::vector<MultiPolygon> regions;
+    for (int k = 0; k < 4; ++k)
+      regions.push_back(MultiPolygon{{Polygon{{star(n / 4)}}}});
+    inside::RegionLayer::Stats stats;
+    const std::int64_t peak = peak_extra_bytes([&] {
+      const inside::RegionLayer layer(regions);
+      stats = layer.stats();
+    });
+    std::printf("4 stars of %d edges: %zu bytes held, %lld at the peak\n", n / 4, stats.bytes,
+                static_cast<long long>(peak));
+    EXPECT_LE(static_cast<double>(peak - 256 * 1024) / static_cast<double>(stats.edges),
+              kIndexBytesPerEdge);
   }
 }
 

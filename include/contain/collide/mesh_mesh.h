@@ -69,8 +69,6 @@ class MeshPair {
   [[nodiscard]] std::span<const Vec3> a_vertices() const { return a_world_.vertices; }
 
  private:
-  [[nodiscard]] bool a_component_in_b(Vec3 q, const Transform& tb) const;
-
   Mesh a_world_;
   Mesh b_;
   bool a_solid_ = false;

@@ -91,6 +91,8 @@ class PolygonIndex {
     std::size_t edge_refs = 0;   ///< edge-cell incidences
   };
   [[nodiscard]] Stats stats() const { return stats_; }
+  /// Bytes held by the index: this object and the arrays it owns.
+  [[nodiscard]] std::size_t memory_bytes() const;
 
  private:
   struct CellEdge {

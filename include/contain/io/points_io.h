@@ -5,7 +5,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <istream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +42,19 @@ struct Points3 {
 [[nodiscard]] Result<Points2> read_points2(const std::filesystem::path& path);
 /// Reads 3D points from a file; the path "-" reads standard input ("<stdin>" in errors).
 [[nodiscard]] Result<Points3> read_points3(const std::filesystem::path& path);
+
+/// Reads 2D points in pieces: `consume(points, share)` sees the points of every `chunk` lines (at
+/// most `chunk` points, file order) in turn, `share` the part of the text read so far (0 to 1),
+/// so that a long file costs its text and one piece, not every point at once. The same syntax
+/// and errors as `read_points2`; at the first error the call returns it, after the pieces before
+/// it were consumed. The path "-" reads standard input.
+[[nodiscard]] Status read_points2_chunked(
+    const std::filesystem::path& path, std::size_t chunk,
+    const std::function<void(std::span<const Vec2>, double)>& consume);
+/// Reads 3D points in pieces (see `read_points2_chunked`).
+[[nodiscard]] Status read_points3_chunked(
+    const std::filesystem::path& path, std::size_t chunk,
+    const std::function<void(std::span<const Vec3>, double)>& consume);
 
 /// Reads 2D points from a stream to its end; `source` names it in errors.
 [[nodiscard]] Result<Points2> read_points2(std::istream& in, const std::string& source);

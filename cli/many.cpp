@@ -1,0 +1,175 @@
+// Many shapes at once: which regions or solids hold each point, which solids meet.
+
+#include "many.h"
+
+#include <fmt/format.h>
+
+#include <span>
+#include <vector>
+
+#include "contain/collide/mesh_scene.h"
+#include "contain/inside/region_layer.h"
+#include "contain/inside/solid_scene.h"
+#include "contain/io/layer_io.h"
+#include "contain/io/mesh_warning.h"
+#include "contain/io/points_io.h"
+#include "contain/io/scene_json.h"
+#include "progress.h"
+
+namespace contain::cli {
+namespace {
+
+// An id as a JSON string body: quotes, backslashes and control characters escaped.
+std::string json_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<int>(c));
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// Appends one line per point of `table`: the ids of its holders under `policy`.
+void append_lines(std::string& out, const inside::HolderTable& table,
+                  const std::vector<std::string>& ids, BoundaryPolicy policy) {
+  for (std::size_t i = 0; i < table.points(); ++i) {
+    bool any = false;
+    for (const inside::Holder& h : table.of(i)) {
+      const bool on = h.location == Location::boundary;
+      if (on && policy == BoundaryPolicy::as_outside) continue;
+      if (any) out += ' ';
+      any = true;
+      out += ids[static_cast<std::size_t>(h.shape)];
+      if (on && policy == BoundaryPolicy::report) out += ":on";
+    }
+    if (!any) out += '-';
+    out += '\n';
+  }
+}
+
+// Reads the points a piece at a time (2^20 lines), locates each piece and appends its lines:
+// memory is the point file's text and one piece, not every point and its holders at once.
+// Nothing is written before the whole file has been read, so a bad line late in the file still
+// gives exit 3 and no output.
+template <class Point, class Locator, class Read>
+Result<std::string> locate_lines(const Locator& locator, const std::vector<std::string>& ids,
+                                 const ManyOptions& o, Read&& read) {
+  std::string text;
+  std::size_t done = 0;
+  Progress progress("points", 0, !o.quiet && stderr_is_terminal());
+  const Status status =
+      read(o.points, std::size_t{1} << 20, [&](std::span<const Point> points, double share) {
+        append_lines(text, locator.locate(points, {.threads = o.threads}), ids, o.boundary);
+        // Room for all the lines, estimated from the first piece: the string then does not
+        // copy itself as it grows.
+        if (done == 0 && share > 0.0 && share < 1.0) {
+          text.reserve(static_cast<std::size_t>(1.1 * static_cast<double>(text.size()) / share));
+        }
+        done += points.size();
+        progress.update_share(share, done);
+      });
+  if (!status) return status.error();
+  return text;
+}
+
+// Ids are separated by spaces on an output line: warn when an id holds white space.
+void warn_about_spaces(const std::vector<std::string>& ids, const std::string& what) {
+  for (const std::string& id : ids) {
+    if (id.find_first_of(" \t\n\r") == std::string::npos) continue;
+    warn(what + " ids hold white space (e.g. '" + id +
+         "'), so an output line does not tell where one ends: choose an --id attribute without "
+         "spaces");
+    return;
+  }
+}
+
+}  // namespace
+
+int run_layer(const ManyOptions& o) {
+  auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
+  if (!layer) return report(layer.error());
+  warn_about_spaces(layer->ids, "the layer's");
+  const inside::RegionLayer index(layer->regions, {.fill = o.fill});
+  auto text = locate_lines<Vec2>(index, layer->ids, o, io::read_points2_chunked);
+  if (!text) return report(text.error());
+  return emit(*text, o.out);
+}
+
+std::vector<inside::SceneObject> scene_objects(const io::Scene& scene) {
+  std::vector<inside::SceneObject> objects;
+  objects.reserve(scene.mesh_of.size());
+  for (std::size_t k = 0; k < scene.mesh_of.size(); ++k)
+    objects.push_back({scene.mesh_of[k], scene.transforms[k]});
+  return objects;
+}
+
+int run_scene_inside(const ManyOptions& o) {
+  auto scene = io::read_scene_json(o.scene);
+  if (!scene) return report(scene.error());
+  warn_about_spaces(scene->ids, "the scene's");
+  const inside::SolidScene index(scene->meshes, scene_objects(*scene));
+  // An object whose mesh is not closed is answered by the winding number: say so, once a mesh.
+  std::vector<char> warned(scene->meshes.size(), 0);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
+    const std::string warning =
+        io::mesh_warning(index.object(k).regime(), index.object(k).report());
+    if (warning.empty() || warned[m]) continue;
+    warned[m] = 1;
+    warn(scene->mesh_files[m] + " (object " + scene->ids[k] + "): " + warning);
+  }
+  auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);
+  if (!text) return report(text.error());
+  return emit(*text, o.out);
+}
+
+int run_collide_scene(const std::string& file, bool json, int threads, const std::string& out) {
+  auto scene = io::read_scene_json(file);
+  if (!scene) return report(scene.error());
+  const collide::MeshScene prepared(scene->meshes, scene_objects(*scene));
+  std::vector<char> warned(scene->meshes.size(), 0);
+  for (std::size_t k = 0; k < prepared.size(); ++k) {
+    const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
+    if (prepared.is_solid(k) || warned[m]) continue;
+    warned[m] = 1;
+    warn(scene->mesh_files[m] + " (object " + scene->ids[k] +
+         "): not closed: read as a surface, which meets another shape only where they share a "
+         "point");
+  }
+  const std::vector<collide::ScenePair> pairs = prepared.pairs({.threads = threads});
+  std::string text;
+  for (const collide::ScenePair& p : pairs) {
+    const std::string& a = scene->ids[static_cast<std::size_t>(p.a)];
+    const std::string& b = scene->ids[static_cast<std::size_t>(p.b)];
+    if (!json) {
+      text += a + ' ' + b + '\n';
+      continue;
+    }
+    const collide::Contact& c = p.contact;
+    std::string witness;
+    if (c.witness == collide::WitnessKind::triangles) {
+      witness = fmt::format(R"({{"kind":"triangles","triangle_a":{},"triangle_b":{}}})",
+                            c.triangle_a, c.triangle_b);
+    } else {
+      // The vertex of one object inside the other, in world coordinates.
+      const bool of_a = c.witness == collide::WitnessKind::vertex_of_a_in_b;
+      const std::size_t k = static_cast<std::size_t>(of_a ? p.a : p.b);
+      const Mesh& mesh = scene->meshes[static_cast<std::size_t>(scene->mesh_of[k])];
+      const Vec3 w = scene->transforms[k].apply(mesh.vertices[static_cast<std::size_t>(c.vertex)]);
+      witness = fmt::format(R"({{"kind":"{}","vertex":{},"point":[{},{},{}]}})",
+                            collide::to_string(c.witness), c.vertex, w.x, w.y, w.z);
+    }
+    text += fmt::format(R"({{"a":"{}","b":"{}","intersect":true,"witness":{}}})", json_escape(a),
+                        json_escape(b), witness) +
+            '\n';
+  }
+  return emit(text, out);
+}
+
+}  // namespace contain::cli

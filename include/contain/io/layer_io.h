@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Reading a layer of regions with ids (the CLI's `--layer`): the project's own readers for
+/// `.wkt` (one shape a line) and GeoJSON, and GDAL/OGR for every other vector format and for
+/// databases (Shapefile, GeoPackage, FlatGeobuf, PostGIS `PG:` connection strings, ...).
+
+#include <string>
+#include <string_view>
+
+#include "contain/core/result.h"
+#include "contain/io/layer.h"
+
+namespace contain::io {
+
+/// Reads a layer. `source` is a path or a GDAL connection string:
+/// - `.wkt`: one POLYGON or MULTIPOLYGON a line (`parse_wkt_layer`);
+/// - `.geojson` / `.json`: a FeatureCollection, one region a feature (`parse_geojson_layer`);
+/// - anything else (`.shp`, `.gpkg`, `.fgb`, `.gml`, `/vsizip/...`, `PG:dbname=...`): GDAL/OGR
+///   (`read_gdal_layer`), in a build with GDAL; without it ErrorKind::unsupported saying that
+///   this format needs GDAL (libgdal-dev) and naming the formats that work without it.
+/// Every coordinate reaches the regions as the double the source holds (binary formats as
+/// stored, text formats correctly rounded); Z and M are dropped.
+[[nodiscard]] Result<Layer> read_layer(const std::string& source, const LayerOptions& options = {});
+
+/// Parses a WKT layer: every line that is not blank and does not start with `#` holds one
+/// POLYGON or MULTIPOLYGON (`parse_wkt`; `POLYGON EMPTY` gives an empty region). Ids: the
+/// position among those lines, from 0 (`options.id` must be empty: a WKT line has no
+/// attributes, ErrorKind::usage otherwise). Errors name `source` and the line.
+[[nodiscard]] Result<Layer> parse_wkt_layer(std::string_view text, const std::string& source,
+                                            const LayerOptions& options = {});
+
+/// Parses a GeoJSON layer: each Feature of a FeatureCollection is one region (Polygon,
+/// MultiPolygon, a GeometryCollection of them, or null: an empty region); a single Feature or
+/// a bare geometry is a layer of one region. Ids: with `options.id`, the feature property of
+/// that name (a string as written, a number as written in the file, true/false); otherwise the
+/// feature's "id" member where every feature has one, else the position from 0. A feature
+/// without the property, or with null, is ErrorKind::invalid_value naming the feature and line.
+[[nodiscard]] Result<Layer> parse_geojson_layer(std::string_view text, const std::string& source,
+                                                const LayerOptions& options = {});
+
+/// Reads a layer through GDAL/OGR: `source` is anything GDALOpenEx opens as a vector dataset
+/// (a file path, a `/vsi...` path, a `PG:` connection string). Features in the order OGR reads
+/// them (file order; for a database table the order of its rows); Polygon, MultiPolygon and
+/// GeometryCollections of them (a curved geometry is ErrorKind::unsupported: convert it first,
+/// e.g. `ogr2ogr -nlt MULTIPOLYGON`); null or empty geometries give empty regions. Ids: with
+/// `options.id`, the field of that name (or the FID, when it names the layer's FID column or
+/// is "FID"), as OGR formats it; otherwise the position from 0. ErrorKind::io when GDAL cannot
+/// open the source (its message included), ErrorKind::usage for a missing layer or field
+/// (the existing ones named), ErrorKind::unsupported in a build without GDAL.
+[[nodiscard]] Result<Layer> read_gdal_layer(const std::string& source,
+                                            const LayerOptions& options = {});
+
+/// True when this build reads layers through GDAL.
+[[nodiscard]] bool has_gdal();
+
+}  // namespace contain::io

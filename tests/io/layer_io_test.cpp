@@ -1,0 +1,127 @@
+#include "contain/io/layer_io.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "io/temp_file.h"
+
+namespace contain::io {
+namespace {
+
+MultiPolygon square(double x0, double y0, double x1, double y1) {
+  return MultiPolygon{{Polygon{{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}}}};
+}
+
+TEST(WktLayer, OneShapeALineSkippingBlankAndCommentLines) {
+  const auto layer = parse_wkt_layer(
+      "# parcels\nPOLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\n\n   \nPOLYGON EMPTY\n"
+      "MULTIPOLYGON (((2 2, 3 2, 3 3, 2 2)), ((5 5, 6 5, 6 6, 5 5)))\n",
+      "parcels.wkt");
+  ASSERT_TRUE(layer) << layer.error().what();
+  EXPECT_EQ(layer->ids, (std::vector<std::string>{"0", "1", "2"}));
+  ASSERT_EQ(layer->regions.size(), 3u);
+  EXPECT_EQ(layer->regions[0], square(0, 0, 1, 1));
+  EXPECT_TRUE(layer->regions[1].polygons.empty());
+  EXPECT_EQ(layer->regions[2].polygons.size(), 2u);
+}
+
+TEST(WktLayer, ErrorNamesTheLineOfTheFile) {
+  const auto layer = parse_wkt_layer(
+      "POLYGON ((0 0, 1 0, 1 1, 0 0))\n# note\n\nPOLYGON ((0 0, 1 0, x 1, 0 0))\n", "p.wkt");
+  ASSERT_FALSE(layer);
+  EXPECT_EQ(layer.error().line, 4);
+  EXPECT_EQ(layer.error().source, "p.wkt");
+  const auto point = parse_wkt_layer("POINT (1 2)\n", "p.wkt");
+  ASSERT_FALSE(point);
+  EXPECT_EQ(point.error().kind, ErrorKind::unsupported);
+}
+
+TEST(WktLayer, AnIdAttributeIsAUsageError) {
+  const auto layer = parse_wkt_layer("POLYGON ((0 0, 1 0, 1 1, 0 0))\n", "p.wkt", {.id = "name"});
+  ASSERT_FALSE(layer);
+  EXPECT_EQ(layer.error().kind, ErrorKind::usage);
+}
+
+const char* const kCollection = R"({"type": "FeatureCollection", "features": [
+  {"type": "Feature", "id": "a", "properties": {"name": "west", "code": 7, "ratio": 0.10},
+   "geometry": {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,1],[0,0]]]}},
+  {"type": "Feature", "id": 12345678901234567, "properties": {"name": "east", "code": -3, "ratio": 1e2},
+   "geometry": {"type": "MultiPolygon", "coordinates": [[[[1,0],[2,0],[2,1],[1,1],[1,0]]]]}},
+  {"type": "Feature", "id": "c", "properties": {"name": "nothing", "code": 0, "ratio": 2},
+   "geometry": null}
+]})";
+
+TEST(GeoJsonLayer, EveryFeatureIsARegionWithItsIdMember) {
+  const auto layer = parse_geojson_layer(kCollection, "l.geojson");
+  ASSERT_TRUE(layer) << layer.error().what();
+  // Numbers are ids as written, even past 2^53.
+  EXPECT_EQ(layer->ids, (std::vector<std::string>{"a", "12345678901234567", "c"}));
+  ASSERT_EQ(layer->regions.size(), 3u);
+  EXPECT_EQ(layer->regions[0], square(0, 0, 1, 1));
+  EXPECT_EQ(layer->regions[1], square(1, 0, 2, 1));
+  EXPECT_TRUE(layer->regions[2].polygons.empty());  // a null geometry keeps its position
+}
+
+TEST(GeoJsonLayer, IdsFromAPropertyKeepNumbersAsWritten) {
+  auto by_name = parse_geojson_layer(kCollection, "l.geojson", {.id = "name"});
+  ASSERT_TRUE(by_name) << by_name.error().what();
+  EXPECT_EQ(by_name->ids, (std::vector<std::string>{"west", "east", "nothing"}));
+  auto by_code = parse_geojson_layer(kCollection, "l.geojson", {.id = "code"});
+  ASSERT_TRUE(by_code);
+  EXPECT_EQ(by_code->ids, (std::vector<std::string>{"7", "-3", "0"}));
+  auto by_ratio = parse_geojson_layer(kCollection, "l.geojson", {.id = "ratio"});
+  ASSERT_TRUE(by_ratio);
+  EXPECT_EQ(by_ratio->ids, (std::vector<std::string>{"0.10", "1e2", "2"}));
+}
+
+TEST(GeoJsonLayer, PositionsWhereSomeFeatureHasNoId) {
+  const auto layer = parse_geojson_layer(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "id": 4, "properties": {}, "geometry": null},
+    {"type": "Feature", "properties": {}, "geometry": null}]})",
+                                         "l.geojson");
+  ASSERT_TRUE(layer);
+  EXPECT_EQ(layer->ids, (std::vector<std::string>{"0", "1"}));
+}
+
+TEST(GeoJsonLayer, MissingPropertyNamesTheFeatureAndLine) {
+  const auto layer = parse_geojson_layer(kCollection, "l.geojson", {.id = "owner"});
+  ASSERT_FALSE(layer);
+  EXPECT_EQ(layer.error().kind, ErrorKind::invalid_value);
+  EXPECT_NE(layer.error().message.find("feature 0"), std::string::npos);
+  EXPECT_EQ(layer.error().line, 2);
+}
+
+TEST(GeoJsonLayer, BareGeometryIsALayerOfOne) {
+  const auto layer = parse_geojson_layer(
+      R"({"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]})", "one.geojson");
+  ASSERT_TRUE(layer);
+  EXPECT_EQ(layer->ids, std::vector<std::string>{"0"});
+  const auto point = parse_geojson_layer(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [1, 2]}}]})",
+                                         "pt.geojson");
+  ASSERT_FALSE(point);
+  EXPECT_EQ(point.error().kind, ErrorKind::unsupported);
+  EXPECT_EQ(point.error().line, 2);
+}
+
+TEST(ReadLayer, PicksTheReaderByExtension) {
+  const test::TempFile wkt(".wkt", "POLYGON ((0 0, 1 0, 1 1, 0 0))\n");
+  const test::TempFile json(".geojson", kCollection);
+  auto a = read_layer(wkt.path().string());
+  ASSERT_TRUE(a) << a.error().what();
+  EXPECT_EQ(a->regions.size(), 1u);
+  auto b = read_layer(json.path().string(), {.id = "name"});
+  ASSERT_TRUE(b) << b.error().what();
+  EXPECT_EQ(b->ids.front(), "west");
+  auto named = read_layer(json.path().string(), {.layer_name = "x"});
+  ASSERT_FALSE(named);
+  EXPECT_EQ(named.error().kind, ErrorKind::usage);
+  auto missing = read_layer("/nonexistent/layer.wkt");
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error().kind, ErrorKind::io);
+}
+
+}  // namespace
+}  // namespace contain::io
