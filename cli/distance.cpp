@@ -16,11 +16,11 @@
 #include "contain/distance/mesh_pair_distance.h"
 #include "contain/distance/region_distance.h"
 #include "contain/distance/region_pair_distance.h"
-#include "contain/shapes/mesh_validation.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
+#include "contain/shapes/mesh_validation.h"
 #include "progress.h"
 #include "verbs.h"
 

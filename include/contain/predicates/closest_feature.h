@@ -6,11 +6,11 @@
 
 #include <cstdint>
 
+#include "contain/predicates/sign.h"
+#include "contain/predicates/squared_distance.h"
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
-#include "contain/predicates/sign.h"
-#include "contain/predicates/squared_distance.h"
 
 namespace contain::predicates {
 

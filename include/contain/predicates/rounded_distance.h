@@ -14,8 +14,8 @@
 /// exactly in big-number arithmetic, stepping c by one ulp until both hold; an exact tie goes to
 /// the even neighbour. Derivation: docs/robustness.md, "Distance".
 
-#include "contain/values/vec.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 

@@ -25,8 +25,8 @@
 #include <array>
 #include <cstdint>
 
-#include "contain/values/vec.h"
 #include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
 
 namespace contain::predicates {
 
