@@ -19,19 +19,6 @@
 namespace contain::cli {
 namespace {
 
-Result<Transform> transform_option(const std::string& text, std::string_view option) {
-  auto numbers = parse_numbers(text, option);
-  if (!numbers) return numbers.error();
-  auto t = Transform::from_row_major(*numbers);
-  if (!t) {
-    Error e = t.error();
-    e.kind = ErrorKind::usage;
-    e.message = std::string(option) + ": " + e.message;
-    return e;
-  }
-  return t;
-}
-
 // A mesh's motion from --transform-X (a fixed placement) or --from-X and --to-X (both needed).
 Result<collide::Motion> motion_option(const std::string& transform, const std::string& from,
                                       const std::string& to, char which) {
@@ -46,13 +33,13 @@ Result<collide::Motion> motion_option(const std::string& transform, const std::s
   }
   collide::Motion m;
   if (!transform.empty()) {
-    auto t = transform_option(transform, "--transform-" + name);
+    auto t = parse_transform(transform, "--transform-" + name);
     if (!t) return t.error();
     m.from = m.to = *t;
   } else if (!from.empty()) {
-    auto f = transform_option(from, "--from-" + name);
+    auto f = parse_transform(from, "--from-" + name);
     if (!f) return f.error();
-    auto t = transform_option(to, "--to-" + name);
+    auto t = parse_transform(to, "--to-" + name);
     if (!t) return t.error();
     m.from = *f;
     m.to = *t;

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 
 namespace contain::cli {
@@ -124,6 +125,55 @@ std::string format_locations(std::span<const Location> locations, BoundaryPolicy
   for (Location l : locations) {
     out += to_string(apply(policy, l));
     out += '\n';
+  }
+  return out;
+}
+
+Result<Transform> parse_transform(std::string_view text, std::string_view option) {
+  auto numbers = parse_numbers(text, option);
+  if (!numbers) return numbers.error();
+  auto t = Transform::from_row_major(*numbers);
+  if (!t) {
+    Error e = t.error();
+    e.kind = ErrorKind::usage;
+    e.message = std::string(option) + ": " + e.message;
+    return e;
+  }
+  return t;
+}
+
+Result<Placements> read_placements(const std::string& transform_a, const std::string& transform_b,
+                                   const std::string& poses_file) {
+  Placements out;
+  if (!transform_a.empty()) {
+    auto t = parse_transform(transform_a, "--transform-a");
+    if (!t) return t.error();
+    out.a = *t;
+  }
+  Transform tb;
+  if (!transform_b.empty()) {
+    auto t = parse_transform(transform_b, "--transform-b");
+    if (!t) return t.error();
+    tb = *t;
+  }
+  if (poses_file.empty()) {
+    out.b.push_back(tb);
+    return out;
+  }
+  if (!transform_b.empty()) {
+    return Error{ErrorKind::usage, "--poses and --transform-b exclude each other"};
+  }
+  auto table = io::read_number_table(poses_file, {.columns = {12}});
+  if (!table) return table.error();
+  for (std::size_t r = 0; r < table->rows(); ++r) {
+    auto t = Transform::from_row_major(std::span<const double>(table->values).subspan(r * 12, 12));
+    if (!t) {
+      Error e = t.error();
+      e.source = poses_file;
+      e.line = table->lines[r];
+      return e;
+    }
+    out.b.push_back(*t);
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include "contain/core/location.h"
 #include "contain/core/result.h"
 #include "contain/shapes/polygon.h"
+#include "contain/values/transform.h"
 
 namespace contain::cli {
 
@@ -36,6 +37,21 @@ void warn(std::string_view message);
 /// the option in the error.
 [[nodiscard]] Result<std::vector<double>> parse_numbers(std::string_view text,
                                                         std::string_view option);
+
+/// A rigid transform from a 12-number option (r00 r01 r02 t0 ... t2); a usage error naming
+/// `option` otherwise.
+[[nodiscard]] Result<Transform> parse_transform(std::string_view text, std::string_view option);
+
+/// Where two shapes stand: A's transform (--transform-a) and B's poses, either the one
+/// --transform-b (identity when absent) or one a line of the --poses file (12 numbers a line;
+/// an error names its line). --poses and --transform-b exclude each other.
+struct Placements {
+  Transform a;
+  std::vector<Transform> b;
+};
+[[nodiscard]] Result<Placements> read_placements(const std::string& transform_a,
+                                                 const std::string& transform_b,
+                                                 const std::string& poses_file);
 
 /// Writes `text` to `path`, or to stdout when `path` is empty or "-".
 [[nodiscard]] Status write_output(std::string_view text, const std::string& path);

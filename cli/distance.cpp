@@ -53,19 +53,6 @@ std::string number(double x) {
   return fmt::format("{:.17g}", x);
 }
 
-Result<Transform> parse_transform(const std::string& text, std::string_view option) {
-  auto numbers = parse_numbers(text, option);
-  if (!numbers) return numbers.error();
-  auto t = Transform::from_row_major(*numbers);
-  if (!t) {
-    Error e = t.error();
-    e.kind = ErrorKind::usage;
-    e.message = std::string(option) + ": " + e.message;
-    return e;
-  }
-  return t;
-}
-
 // "not closed" warnings as data turned into words here (the contract: the same as `inside`).
 void warn_open_mesh(const std::string& name, const Mesh& mesh) {
   const MeshReport r = validate_mesh(mesh);
@@ -201,38 +188,10 @@ int run_meshes(const DistanceOptions& o) {
     return report(Error{ErrorKind::invalid_value,
                         "A is a mesh and B a 2D region: both must be meshes or both regions", o.b});
   }
-  Transform ta, tb;
-  if (!o.transform_a.empty()) {
-    auto t = parse_transform(o.transform_a, "--transform-a");
-    if (!t) return report(t.error());
-    ta = *t;
-  }
-  if (!o.transform_b.empty()) {
-    auto t = parse_transform(o.transform_b, "--transform-b");
-    if (!t) return report(t.error());
-    tb = *t;
-  }
-  std::vector<Transform> poses;
-  if (!o.poses.empty()) {
-    if (!o.transform_b.empty()) {
-      return report(Error{ErrorKind::usage, "--poses and --transform-b exclude each other"});
-    }
-    auto table = io::read_number_table(o.poses, {.columns = {12}});
-    if (!table) return report(table.error());
-    for (std::size_t r = 0; r < table->rows(); ++r) {
-      auto t =
-          Transform::from_row_major(std::span<const double>(table->values).subspan(r * 12, 12));
-      if (!t) {
-        Error e = t.error();
-        e.source = o.poses;
-        e.line = table->lines[r];
-        return report(e);
-      }
-      poses.push_back(*t);
-    }
-  } else {
-    poses.push_back(tb);
-  }
+  auto placements = read_placements(o.transform_a, o.transform_b, o.poses);
+  if (!placements) return report(placements.error());
+  const Transform ta = placements->a;
+  const std::vector<Transform>& poses = placements->b;
   auto a = io::read_mesh(o.a);
   if (!a) return report(a.error());
   auto b = io::read_mesh(o.b);
