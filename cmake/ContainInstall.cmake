@@ -23,6 +23,11 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/contain DESTINATION ${CMAKE_INST
 if(TARGET contain_cli)
   install(TARGETS contain_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
+# The GDAL plugin, where contain::io looks for it (../lib/contain from bin/contain, and the
+# compiled-in install path).
+if(TARGET contain_gdal)
+  install(TARGETS contain_gdal LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/contain)
+endif()
 
 set(contain_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/contain)
 install(EXPORT containTargets NAMESPACE contain:: DESTINATION ${contain_cmake_dir})

@@ -1,232 +1,190 @@
-// Layers through GDAL/OGR: every vector format GDAL reads and PostGIS tables. GDAL stays here,
-// in contain::io; the regions that leave hold the doubles OGR read, nothing recomputed.
+// read_gdal_layer: GDAL is loaded on first use, from the plugin libcontain_gdal.so
+// (io/gdal_plugin.h says why), so that a process reading no GIS layer never loads it.
+//
+// Where the plugin is looked for, first found wins:
+//   1. $CONTAIN_GDAL_PLUGIN, a path, when it is set (then nowhere else);
+//   2. beside the binary that holds this code (the Python extension: its package folder, where
+//      the build and pip put a copy), and in ../<libdir>/contain from it (an installed or moved
+//      bin/contain);
+//   3. the same two beside the running executable (/proc/self/exe);
+//   4. where the build tree has it, then where `cmake --install` puts it (both compiled in;
+//      neither in a build without GDAL).
+// A file that is not the plugin of this very version is passed over, with the reason kept for
+// the error.
 
-#include <cpl_error.h>
-#include <gdal_priv.h>
-#include <ogrsf_frmts.h>
+#include <dlfcn.h>
 
-#include <cctype>
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
 #include <mutex>
-#include <regex>
+#include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "contain/io/layer_io.h"
+#include "io/gdal_plugin.h"
 #include "io/text_scan.h"
+
+#ifndef CONTAIN_INSTALL_LIBDIR
+#define CONTAIN_INSTALL_LIBDIR "lib"
+#endif
 
 namespace contain::io {
 namespace {
 
+namespace fs = std::filesystem;
 using detail::make_error;
 
-// A connection string may carry a password: never print it.
-std::string source_name(const std::string& source) {
-  static const std::regex password(R"((password\s*=\s*)('[^']*'|\S+))", std::regex::icase);
-  return std::regex_replace(source, password, "$1***");
-}
-
-bool equal_ci(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i]))) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// GDAL reports through a per-thread handler stack: collect its messages instead of letting it
-// print on stderr, and put the last failure into our error.
-class CollectGdalErrors {
- public:
-  CollectGdalErrors() { CPLPushErrorHandlerEx(&CollectGdalErrors::handle, this); }
-  ~CollectGdalErrors() { CPLPopErrorHandler(); }
-  CollectGdalErrors(const CollectGdalErrors&) = delete;
-  CollectGdalErrors& operator=(const CollectGdalErrors&) = delete;
-
-  [[nodiscard]] std::string last() const { return last_.empty() ? "no reason given" : last_; }
-  [[nodiscard]] bool failed() const { return !last_.empty(); }
-  void clear() { last_.clear(); }
-
- private:
-  static void CPL_STDCALL handle(CPLErr level, CPLErrorNum, const char* message) {
-    auto* self = static_cast<CollectGdalErrors*>(CPLGetErrorHandlerUserData());
-    if (self != nullptr && level >= CE_Failure && message != nullptr) self->last_ = message;
-  }
-  std::string last_;
+struct LoadedPlugin {
+  detail::GdalReadLayer read = nullptr;
+  std::string path;
+  // Why no plugin was loaded: each candidate and what was wrong with it.
+  std::string problem;
+  bool built_with_gdal = false;
 };
 
-std::string layer_names(GDALDataset& dataset) {
-  std::string names;
-  for (int i = 0; i < dataset.GetLayerCount(); ++i) {
-    if (i > 0) names += ", ";
-    names += dataset.GetLayer(i)->GetName();
-  }
-  return names.empty() ? "none" : names;
+// Any object of this binary: dladdr names the file it was loaded from.
+const char binary_anchor = 0;
+
+void add_candidates_beside(const fs::path& binary, std::vector<fs::path>& out) {
+  std::error_code error;
+  const fs::path file = fs::canonical(binary, error);
+  if (error) return;
+  out.push_back(file.parent_path() / detail::gdal_plugin_file);
+  out.push_back(file.parent_path().parent_path() / CONTAIN_INSTALL_LIBDIR / "contain" /
+                detail::gdal_plugin_file);
 }
 
-std::string field_names(OGRLayer& layer) {
-  OGRFeatureDefn* defn = layer.GetLayerDefn();
-  std::string names;
-  const char* fid = layer.GetFIDColumn();
-  names = fid != nullptr && *fid != '\0' ? std::string(fid) + " (FID)" : "FID";
-  for (int i = 0; i < defn->GetFieldCount(); ++i) {
-    names += ", ";
-    names += defn->GetFieldDefn(i)->GetNameRef();
-  }
-  return names;
+// Where this build's plugin is, compiled in: none in a build without GDAL.
+std::vector<fs::path> compiled_in_paths() {
+  std::vector<fs::path> out;
+#ifdef CONTAIN_GDAL_PLUGIN_BUILD_PATH
+  out.emplace_back(CONTAIN_GDAL_PLUGIN_BUILD_PATH);
+#endif
+#ifdef CONTAIN_GDAL_PLUGIN_INSTALL_PATH
+  out.emplace_back(CONTAIN_GDAL_PLUGIN_INSTALL_PATH);
+#endif
+  return out;
 }
 
-class GeometryReader {
- public:
-  GeometryReader(const std::string& source, std::size_t feature)
-      : source_(source), feature_(feature) {}
-
-  Status read(const OGRGeometry& geometry, MultiPolygon& out) const {
-    if (geometry.IsEmpty()) return Ok{};
-    switch (wkbFlatten(geometry.getGeometryType())) {
-      case wkbPolygon:
-        return read_polygon(*geometry.toPolygon(), out);
-      case wkbMultiPolygon:
-        for (const OGRPolygon* polygon : *geometry.toMultiPolygon()) {
-          if (auto s = read_polygon(*polygon, out); !s) return s;
-        }
-        return Ok{};
-      case wkbGeometryCollection:
-        for (const OGRGeometry* member : *geometry.toGeometryCollection()) {
-          if (auto s = read(*member, out); !s) return s;
-        }
-        return Ok{};
-      case wkbCurvePolygon:
-      case wkbMultiSurface:
-      case wkbCompoundCurve:
-      case wkbCircularString:
-        return fail(ErrorKind::unsupported,
-                    std::string("a curved geometry (") + geometry.getGeometryName() +
-                        ") is not read: convert it to polygons first, e.g. ogr2ogr -nlt "
-                        "MULTIPOLYGON");
-      default:
-        return fail(ErrorKind::unsupported,
-                    std::string("geometry type ") + geometry.getGeometryName() +
-                        " is not a region: a layer holds Polygon or MultiPolygon features");
-    }
+std::vector<fs::path> candidates() {
+  if (const char* given = std::getenv("CONTAIN_GDAL_PLUGIN"); given != nullptr && *given != 0) {
+    return {fs::path(given)};
   }
-
- private:
-  Status read_polygon(const OGRPolygon& polygon, MultiPolygon& out) const {
-    std::vector<Ring> rings;
-    for (const OGRLinearRing* ring : polygon) {
-      Ring points;
-      const int n = ring->getNumPoints();
-      points.reserve(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i)
-        points.push_back({ring->getX(i), ring->getY(i)});
-      if (!points.empty()) rings.push_back(std::move(points));
-    }
-    if (rings.empty()) return Ok{};
-    auto checked = Polygon::from_rings(std::move(rings));
-    if (!checked) {
-      return fail(checked.error().kind, "polygon " + std::to_string(out.polygons.size() + 1) +
-                                            ": " + checked.error().message);
-    }
-    out.polygons.push_back(std::move(*checked));
-    return Ok{};
+  std::vector<fs::path> out;
+  Dl_info info{};
+  if (dladdr(&binary_anchor, &info) != 0 && info.dli_fname != nullptr && *info.dli_fname != 0) {
+    add_candidates_beside(info.dli_fname, out);
   }
-
-  [[nodiscard]] Error fail(ErrorKind kind, const std::string& message) const {
-    return make_error(kind, "feature " + std::to_string(feature_) + ": " + message, source_);
+  add_candidates_beside("/proc/self/exe", out);
+  for (fs::path& path : compiled_in_paths())
+    out.push_back(std::move(path));
+  std::vector<fs::path> unique;
+  for (fs::path& path : out) {
+    path = path.lexically_normal();
+    bool seen = false;
+    for (const fs::path& kept : unique)
+      seen = seen || kept == path;
+    if (!seen) unique.push_back(std::move(path));
   }
+  return unique;
+}
 
-  const std::string& source_;
-  std::size_t feature_;
-};
+// Opens `path` if it is this version's plugin; otherwise says why not in `problem`.
+detail::GdalReadLayer open_plugin(const fs::path& path, std::string& problem) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    problem += "\n  " + path.string() + ": not there";
+    return nullptr;
+  }
+  // RTLD_LOCAL: GDAL's symbols stay out of the process's global scope (the Python extension
+  // shares its process with other modules that may load GDAL themselves).
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = dlerror();
+    problem += "\n  " + path.string() + ": cannot be loaded: " + (why != nullptr ? why : "?") +
+               " (GDAL's runtime library is missing? Debian: apt-get install libgdal-dev)";
+    return nullptr;
+  }
+  auto id = reinterpret_cast<detail::GdalPluginId>(dlsym(handle, detail::gdal_plugin_id_symbol));
+  auto read =
+      reinterpret_cast<detail::GdalReadLayer>(dlsym(handle, detail::gdal_plugin_read_symbol));
+  if (id == nullptr || read == nullptr || std::string(id()) != detail::gdal_plugin_id) {
+    problem += "\n  " + path.string() + ": not the plugin of this contain (" +
+               (id != nullptr ? "it is '" + std::string(id()) + "'" : "no plugin id") +
+               ", this is '" + detail::gdal_plugin_id + "')";
+    dlclose(handle);
+    return nullptr;
+  }
+  return read;  // kept open for the life of the process
+}
+
+// Set once the plugin has been looked for, so that asking where it is loads nothing.
+std::atomic<const LoadedPlugin*> looked_for{nullptr};
+
+const LoadedPlugin& plugin() {
+  static std::once_flag once;
+  static LoadedPlugin loaded;
+  std::call_once(once, [] {
+    struct Publish {
+      ~Publish() { looked_for.store(&loaded, std::memory_order_release); }
+    } publish;
+    loaded.built_with_gdal = !compiled_in_paths().empty();
+    for (const fs::path& path : candidates()) {
+      loaded.read = open_plugin(path, loaded.problem);
+      if (loaded.read != nullptr) {
+        loaded.path = path.string();
+        return;
+      }
+    }
+  });
+  return loaded;
+}
+
+std::string formats_of(const std::string& source) {
+  const std::string ext = detail::lower_extension(source);
+  return ext.empty() ? "this source" : "'" + ext + "' layers";
+}
 
 }  // namespace
 
 Result<Layer> read_gdal_layer(const std::string& source, const LayerOptions& options) {
-  static std::once_flag registered;
-  std::call_once(registered, [] { GDALAllRegister(); });
-  const std::string name = source_name(source);
-  CollectGdalErrors errors;
-  GDALDatasetUniquePtr dataset(
-      GDALDataset::Open(source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  if (!dataset) {
-    return make_error(ErrorKind::io, "GDAL cannot open it as a vector layer: " + errors.last(),
-                      name);
+  const LoadedPlugin& loaded = plugin();
+  const std::string name = detail::connection_name(source);
+  if (loaded.read != nullptr) {
+    std::optional<Result<Layer>> out;
+    loaded.read(source, options, out);
+    if (out) return std::move(*out);
+    return make_error(ErrorKind::io, "the GDAL plugin " + loaded.path + " gave no answer", name);
   }
-  OGRLayer* layer = nullptr;
-  if (!options.layer_name.empty()) {
-    layer = dataset->GetLayerByName(options.layer_name.c_str());
-    if (layer == nullptr) {
-      return make_error(
-          ErrorKind::usage,
-          "no layer named '" + options.layer_name + "' (layers: " + layer_names(*dataset) + ")",
-          name);
-    }
-  } else if (dataset->GetLayerCount() == 1) {
-    layer = dataset->GetLayer(0);
-  } else {
+  const bool asked = std::getenv("CONTAIN_GDAL_PLUGIN") != nullptr;
+  if (!loaded.built_with_gdal && !asked) {
     return make_error(
-        ErrorKind::usage,
-        dataset->GetLayerCount() == 0
-            ? std::string("the source holds no vector layer")
-            : "the source holds " + std::to_string(dataset->GetLayerCount()) +
-                  " layers: choose one with --layer-name (layers: " + layer_names(*dataset) + ")",
+        ErrorKind::unsupported,
+        "reading " + formats_of(source) +
+            " needs GDAL, and this contain was built without it (install libgdal-dev, then "
+            "configure and build again); without GDAL a layer can be a .wkt file (one POLYGON or "
+            "MULTIPOLYGON a line) or a GeoJSON FeatureCollection",
         name);
   }
-  int field = -1;
-  bool use_fid = false;
-  if (!options.id.empty()) {
-    field = layer->GetLayerDefn()->GetFieldIndex(options.id.c_str());
-    if (field < 0) {
-      const char* fid = layer->GetFIDColumn();
-      use_fid = equal_ci(options.id, "FID") ||
-                (fid != nullptr && *fid != '\0' && equal_ci(options.id, fid));
-      if (!use_fid) {
-        return make_error(ErrorKind::usage,
-                          "no attribute '" + options.id + "' in layer '" + layer->GetName() +
-                              "' (attributes: " + field_names(*layer) + ")",
-                          name);
-      }
-    }
-  }
-  Layer out;
-  errors.clear();
-  layer->ResetReading();
-  for (;;) {
-    OGRFeatureUniquePtr feature(layer->GetNextFeature());
-    if (!feature) break;
-    const std::size_t k = out.regions.size();
-    MultiPolygon& region = out.regions.emplace_back();
-    if (const OGRGeometry* geometry = feature->GetGeometryRef(); geometry != nullptr) {
-      if (auto s = GeometryReader(name, k).read(*geometry, region); !s) return s.error();
-    }
-    if (use_fid) {
-      out.ids.push_back(std::to_string(feature->GetFID()));
-    } else if (field >= 0) {
-      if (!feature->IsFieldSetAndNotNull(field)) {
-        return make_error(ErrorKind::invalid_value,
-                          "feature " + std::to_string(k) + " has no value of '" + options.id + "'",
-                          name);
-      }
-      out.ids.emplace_back(feature->GetFieldAsString(field));
-    } else {
-      out.ids.push_back(std::to_string(k));
-    }
-  }
-  // A read that fails part way ends the features early: never return a truncated layer.
-  if (errors.failed()) {
-    return make_error(
-        ErrorKind::io,
-        "GDAL failed after " + std::to_string(out.regions.size()) + " features: " + errors.last(),
-        name);
-  }
-  return out;
+  return make_error(ErrorKind::unsupported,
+                    "reading " + formats_of(source) + " needs GDAL, which contain loads from " +
+                        detail::gdal_plugin_file +
+                        " on first use, and none could be used:" + loaded.problem +
+                        "\ninstall contain again (cmake --install) or set CONTAIN_GDAL_PLUGIN "
+                        "to the plugin's path; a .wkt or GeoJSON layer needs no GDAL",
+                    name);
 }
 
 bool has_gdal() {
-  return true;
+  return plugin().read != nullptr;
+}
+
+std::string gdal_plugin_path() {
+  const LoadedPlugin* loaded = looked_for.load(std::memory_order_acquire);
+  return loaded != nullptr ? loaded->path : std::string();
 }
 
 }  // namespace contain::io

@@ -10,12 +10,19 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <system_error>
 
 namespace contain::io::detail {
 
 std::string source_name(const std::filesystem::path& path) {
   return path.string();
+}
+
+std::string connection_name(const std::string& source) {
+  // A connection string may carry a password: never print it.
+  static const std::regex password(R"((password\s*=\s*)('[^']*'|\S+))", std::regex::icase);
+  return std::regex_replace(source, password, "$1***");
 }
 
 Result<std::string> read_file(const std::filesystem::path& path) {

@@ -17,6 +17,10 @@ namespace contain::io::detail {
 /// The name of a file in messages: its path as given.
 [[nodiscard]] std::string source_name(const std::filesystem::path& path);
 
+/// The name of a GDAL source in messages: as given, but a connection string's password
+/// (`password=...`, quoted or not) shown as `***`.
+[[nodiscard]] std::string connection_name(const std::string& source);
+
 /// The whole content of a file (binary-safe). Errors: ErrorKind::io naming the path (missing,
 /// a directory, unreadable).
 [[nodiscard]] Result<std::string> read_file(const std::filesystem::path& path);

@@ -1,5 +1,6 @@
 // A build without GDAL: the GDAL-only formats give a clear error naming what to install. This
-// binary links src/io/gdal_missing.cpp itself, so the message is checked in every build.
+// binary compiles the plugin's loader (src/io/gdal_layer.cpp) without the plugin's paths, as a
+// build where GDAL was not found does, so the message is checked in every build.
 
 #include <gtest/gtest.h>
 

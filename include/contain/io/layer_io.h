@@ -46,11 +46,21 @@ namespace contain::io {
 /// `options.id`, the field of that name (or the FID, when it names the layer's FID column or
 /// is "FID"), as OGR formats it; otherwise the position from 0. ErrorKind::io when GDAL cannot
 /// open the source (its message included), ErrorKind::usage for a missing layer or field
-/// (the existing ones named), ErrorKind::unsupported in a build without GDAL.
+/// (the existing ones named), ErrorKind::unsupported in a build without GDAL or when its plugin
+/// cannot be loaded (see has_gdal).
 [[nodiscard]] Result<Layer> read_gdal_layer(const std::string& source,
                                             const LayerOptions& options = {});
 
-/// True when this build reads layers through GDAL.
+/// True when layers can be read through GDAL. GDAL is not linked into contain::io: it lives in
+/// the plugin libcontain_gdal.so, opened on first use (the first call of this function or of
+/// read_gdal_layer), so a program that reads no GIS layer never loads it. The plugin is looked
+/// for at `$CONTAIN_GDAL_PLUGIN` when that is set, else beside the binary holding contain::io and
+/// in `../lib/contain/` from it, beside the running executable, in the build tree and where
+/// `cmake --install` put it; only the plugin of this very version is used. When none can be
+/// used, read_gdal_layer's error lists each place and what was wrong there.
 [[nodiscard]] bool has_gdal();
+
+/// The plugin's path once has_gdal() or read_gdal_layer loaded it; empty otherwise.
+[[nodiscard]] std::string gdal_plugin_path();
 
 }  // namespace contain::io
