@@ -16,8 +16,13 @@ namespace contain::distance::detail {
 /// point on the second flat.
 [[nodiscard]] inline Closest3 answer(const predicates::FlatPair3& pair, bool closest_point) {
   Closest3 out;
-  out.distance = predicates::rounded_distance(pair);
-  if (closest_point) out.point = predicates::rounded_closest_points(pair).b;
+  if (closest_point) {
+    const predicates::RoundedPointDistance3 r = predicates::rounded_point_distance(pair);
+    out.distance = r.distance;
+    out.point = r.point;
+  } else {
+    out.distance = predicates::rounded_distance(pair);
+  }
   return out;
 }
 [[nodiscard]] inline Closest2 answer(const predicates::FlatPair2& pair, bool closest_point) {

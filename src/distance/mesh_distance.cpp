@@ -117,6 +117,7 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   search_->contenders(p, contenders, &stats, hint);
   t_stats.nodes += stats.nodes;
   t_stats.triangles += stats.items;
+  t_stats.cheap += stats.cheap;
   t_stats.contenders += contenders.size();
   const Winner w = resolve(p, *search_, contenders);
   out = detail::answer(w.pair, query.closest_point);

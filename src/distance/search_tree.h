@@ -32,6 +32,7 @@ struct Contender {
 struct SearchStats {
   std::size_t nodes = 0;
   std::size_t items = 0;
+  std::size_t cheap = 0;  // items put out by a first, cheap bound (counted in items too)
 };
 
 /// Lower bound of the squared distance from p to the closed box (rounded down; +inf beyond the

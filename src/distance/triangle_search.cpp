@@ -56,6 +56,23 @@ inline double separation_lower(Vec3 p, Vec3 v, Vec3 w) {
   return s - 8 * kEps * perm;
 }
 
+// The lower bound of the squared distance from p to t given by the separation along w (any
+// direction; `ww` is dot(w, w) as rounded): 0 where it proves nothing.
+double separation_bound(Vec3 p, const Triangle3& t, Vec3 w, double ww) {
+  const double smin = std::min(
+      {separation_lower(p, t.a, w), separation_lower(p, t.b, w), separation_lower(p, t.c, w)});
+  if (smin > 0 && ww >= 0x1p-900 && std::isfinite(ww)) {
+    const double r = smin / ww;
+    if (r >= 0x1p-1000 && std::isfinite(r)) {
+      // smin^2 / |w|^2 (smin > 0 is below the exact separation, so its square is too), with
+      // ww = |w|^2 rounded (three squares and two sums: at most 3 eps low) and three more
+      // roundings (quotient, product, the factor): (1 + eps)^3 (1 - 8 eps) / (1 - 3 eps) < 1.
+      return smin * r * (1 - 8 * kEps);
+    }
+  }
+  return 0.0;
+}
+
 }  // namespace
 
 Vec3 approximate_closest_point(Vec3 p, const Triangle3& t) {
@@ -73,7 +90,7 @@ double triangle_slack(double max_abs) {
   return delta * delta * (1 + 0x1p20) * (1 + 0x1p-40) + std::numeric_limits<double>::denorm_min();
 }
 
-void triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi) {
+Vec3 triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi) {
   const Vec3 q = approximate_closest(p, t.a, t.b, t.c);
   const Vec3 w = p - q;
   const double ww = dot(w, w);
@@ -82,16 +99,8 @@ void triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, doubl
   // Squares that underflow lose up to 2^-1075 each: 8 subnormal units cover them.
   hi = ww * (1 + 0x1p-19) + slack + 8 * std::numeric_limits<double>::denorm_min();
   if (!std::isfinite(hi)) hi = kInf;
-  const double smin = std::min(
-      {separation_lower(p, t.a, w), separation_lower(p, t.b, w), separation_lower(p, t.c, w)});
-  lo = 0.0;
-  if (smin > 0 && ww >= 0x1p-900 && std::isfinite(ww)) {
-    const double r = smin / ww;
-    if (r >= 0x1p-1000 && std::isfinite(r)) {
-      // smin^2 / ww with three roundings (quotient, product, the factor): (1 - 8 eps).
-      lo = smin * r * (1 - 8 * kEps);
-    }
-  }
+  lo = separation_bound(p, t, w, ww);
+  return w;
 }
 
 TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
@@ -114,16 +123,54 @@ TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
   for (const std::int32_t i : tree_.items())
     ordered_.push_back(triangles_[static_cast<std::size_t>(i)]);
   slack_ = triangle_slack(max_abs);
+  max_abs_ = max_abs;
+}
+
+HalfSpaceTest::HalfSpaceTest(Vec3 p, Vec3 w, double best, double max_abs) {
+  const double ww = dot(w, w);
+  if (!(ww >= 0x1p-900) || !std::isfinite(ww) || !(best >= 0)) return;  // c_ = -inf: no test
+  w_ = w;
+  const double a = dot(p, w);
+  const double pw = (std::fabs(p.x * w.x) + std::fabs(p.y * w.y)) + std::fabs(p.z * w.z);
+  const double mw = max_abs * ((std::fabs(w.x) + std::fabs(w.y)) + std::fabs(w.z));
+  // b >= sqrt(best) |w|: ww is at most 3 eps low (its root 1.5 eps), the two roots, the product
+  // and the factor round once each. Not sqrt(best * ww): that product underflows for tiny
+  // coordinates (2^-300: best * ww ~ 2^-1200), and b = 0 would let the test put out the closest
+  // triangle. This product may underflow only below 2^-1022, by less than the 2^-1000 in m.
+  const double b = std::sqrt(best) * std::sqrt(ww) * (1 + 8 * kEps);
+  const double m = 16 * kEps * (((pw + mw) + b) + std::fabs(a)) + 0x1p-1000;
+  const double c = (a - b) - m;
+  if (std::isfinite(c)) c_ = c;
 }
 
 void TriangleSearch::contenders(Vec3 p, std::vector<Contender>& out, SearchStats* stats,
                                 std::int32_t hint) const {
+  // A first, cheap test for each triangle (HalfSpaceTest): does it lie beyond the plane
+  // normal to w at the best distance so far, w the direction from the best triangle's
+  // approximate closest point to p? `best` is the least upper bound returned so far, i.e. the
+  // search's own best: a triangle beyond the plane is farther than sqrt(best) and out (lo >
+  // best), exactly as if the full bounds had put it out.
+  double best = kInf;
+  HalfSpaceTest beyond;
+  std::size_t cheap = 0;
   tree_.contenders(
       p,
       [&](std::int32_t k, double& lo, double& hi) {
-        triangle_bounds(p, ordered_[static_cast<std::size_t>(k)], slack_, lo, hi);
+        const Triangle3& t = ordered_[static_cast<std::size_t>(k)];
+        if (beyond(t)) {
+          ++cheap;
+          lo = kInf;
+          hi = kInf;
+          return;
+        }
+        const Vec3 w = triangle_bounds(p, t, slack_, lo, hi);
+        if (hi < best) {
+          best = hi;
+          beyond = HalfSpaceTest(p, w, best, max_abs_);
+        }
       },
       out, stats, hint);
+  if (stats) stats->cheap += cheap;
 }
 
 int TriangleSearch::within(Vec3 p, double d2_lo, double d2_hi, std::vector<Contender>& out) const {

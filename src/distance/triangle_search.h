@@ -16,6 +16,7 @@
 // triangles.
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -25,6 +26,30 @@
 #include "distance/search_tree.h"
 
 namespace contain::distance::detail {
+
+/// A proven test "every point of the triangle is farther than sqrt(best) from p", by the
+/// plane normal to w (any direction) at distance sqrt(best) from p: every x of the triangle has
+/// |p - x| >= (p - x) . w / |w| (Cauchy-Schwarz), and (p - x) . w is linear in x, so the
+/// triangle lies beyond when each corner v has v . w < p . w - sqrt(best) |w|. With all
+/// coordinates at most M in magnitude, each dot product v . w is within 4 eps M |w|_1 of its
+/// computed value, p . w within 4 eps sum |p_i w_i|; the threshold c subtracts
+/// m = 16 eps (sum |p_i w_i| + M |w|_1 + b + |p . w|) + 2^-1000, which covers those errors, the
+/// roundings of c itself (at most 3 eps (|p . w| + b + m)) and products that underflow. NaN or
+/// overflow leave c = -inf (no triangle is beyond). Three dot products per triangle, against a
+/// closest point and three bounded separations for the full bounds.
+class HalfSpaceTest {
+ public:
+  HalfSpaceTest() = default;
+  /// best >= 0 the squared distance bound; max_abs bounds every coordinate of the triangles.
+  HalfSpaceTest(Vec3 p, Vec3 w, double best, double max_abs);
+  [[nodiscard]] bool operator()(const Triangle3& t) const {
+    return dot(t.a, w_) < c_ && dot(t.b, w_) < c_ && dot(t.c, w_) < c_;
+  }
+
+ private:
+  Vec3 w_{};
+  double c_ = -std::numeric_limits<double>::infinity();
+};
 
 class TriangleSearch {
  public:
@@ -49,14 +74,15 @@ class TriangleSearch {
   std::vector<Triangle3> triangles_;  // in the order given
   std::vector<Triangle3> ordered_;    // in the tree's leaf order
   SearchTree tree_;
-  double slack_ = 0.0;  // bound on a computed closest point's distance from its triangle, squared
+  double max_abs_ = 0.0;  // largest coordinate magnitude of the triangles
+  double slack_ = 0.0;    // bound on a computed closest point's distance from its triangle, squared
 };
 
 /// Ericson's closest point of the triangle to p in doubles (only a guess; see above).
 [[nodiscard]] Vec3 approximate_closest_point(Vec3 p, const Triangle3& t);
 
-/// The bounds of one triangle (exposed for the tests).
-void triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi);
+/// The bounds of one triangle (exposed for the tests); returns w = p - q.
+Vec3 triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, double& hi);
 
 /// The slack for triangles whose coordinates are at most `max_abs` in magnitude.
 [[nodiscard]] double triangle_slack(double max_abs);

@@ -1,6 +1,7 @@
 #include "contain/predicates/rounded_distance.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -215,6 +216,46 @@ ClosestPoints3 rounded_closest_points(const FlatPair3& x) {
     }
   }
   return {{out[0], out[1], out[2]}, {out[3], out[4], out[5]}};
+}
+
+RoundedPointDistance3 rounded_point_distance(const FlatPair3& x) {
+  if (x.a.size != 1) return {rounded_distance(x), rounded_closest_points(x).b};
+  // The formulas of flat_formulas.h for a point p and a flat q, with the terms in common
+  // computed once: N / D is the squared distance, X / D the closest point of the flat.
+  const Vec3 p = x.a.points[0];
+  const std::array<Vec3, 3>& q = x.b.points;
+  ErrLD n, d;
+  std::array<ErrLD, 3> point;
+  if (x.b.size == 1) {
+    const auto w = detail::sub<ErrLD>(p, q[0]);
+    n = detail::dot(w, w);
+    d = ErrLD(1.0);
+    point = {ErrLD(q[0].x), ErrLD(q[0].y), ErrLD(q[0].z)};
+  } else if (x.b.size == 2) {
+    const auto u = detail::sub<ErrLD>(q[1], q[0]);
+    const auto w = detail::sub<ErrLD>(p, q[0]);
+    const auto c = detail::cross(w, u);
+    const ErrLD t = detail::dot(w, u);
+    n = detail::dot(c, c);
+    d = detail::dot(u, u);
+    point = {ErrLD(q[0].x) * d + u.x * t, ErrLD(q[0].y) * d + u.y * t, ErrLD(q[0].z) * d + u.z * t};
+  } else {
+    const auto normal =
+        detail::cross(detail::sub<ErrLD>(q[1], q[0]), detail::sub<ErrLD>(q[2], q[0]));
+    const ErrLD s = detail::dot(detail::sub<ErrLD>(p, q[0]), normal);
+    n = s * s;
+    d = detail::dot(normal, normal);
+    point = {ErrLD(p.x) * d - normal.x * s, ErrLD(p.y) * d - normal.y * s,
+             ErrLD(p.z) * d - normal.z * s};
+  }
+  RoundedPointDistance3 out{};
+  // Any side the long double bounds leave open: the exact stages of the two functions.
+  if (!sqrt_stage_a(n, d, out.distance)) out.distance = rounded_distance(x);
+  if (!quotient_stage_a(point[0], d, out.point.x) || !quotient_stage_a(point[1], d, out.point.y) ||
+      !quotient_stage_a(point[2], d, out.point.z)) {
+    out.point = rounded_closest_points(x).b;
+  }
+  return out;
 }
 
 ClosestPoints2 rounded_closest_points(const FlatPair2& x) {

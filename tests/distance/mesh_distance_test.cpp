@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -218,6 +219,80 @@ TEST(MeshDistance, HugeAndTinyCoordinatesStayExact) {
       points.push_back(s * p);
     EXPECT_EQ(check_mesh(m, points, true), 0) << "scale 2^" << k;
   }
+}
+
+// The batch answers (each query starting from its Morton predecessor's closest triangle, which
+// bounds the search early and sets the direction of the cheap half-space test) against the
+// oracle, and against the unhinted single queries field by field.
+int check_batch(const Mesh& mesh, const std::vector<Vec3>& points) {
+  const MeshDistance prepared(mesh);
+  std::vector<Closest3> batch(points.size());
+  prepared.query(points, batch, {.signed_distance = true}, {.threads = 1});
+  int failures = 0;
+  for (std::size_t i = 0; i < points.size() && failures < 10; ++i) {
+    const Closest3 single = prepared.query(points[i], {.signed_distance = true});
+    const std::string diff = compare_with_oracle(batch[i], mesh_oracle(mesh, points[i]), true);
+    const bool same = batch[i].distance == single.distance &&
+                      std::signbit(batch[i].distance) == std::signbit(single.distance) &&
+                      batch[i].point == single.point && batch[i].feature == single.feature &&
+                      batch[i].location == single.location;
+    if (!diff.empty() || !same) {
+      ADD_FAILURE() << diff << (same ? "" : "batch differs from single ") << "at "
+                    << test::hex3(points[i]);
+      ++failures;
+    }
+  }
+  return failures;
+}
+
+// An accordion: a strip folded back and forth with sharp concave folds, where the half-space
+// test's direction (from the neighbour's closest triangle) is far from the right one.
+Mesh accordion() {
+  Mesh m;
+  for (int i = 0; i <= 12; ++i) {
+    const double x = 0.25 * i;
+    const double z = (i % 2 == 0) ? 0.0 : 1.5;
+    m.vertices.push_back({x, 0.0, z});
+    m.vertices.push_back({x, 2.0, z});
+  }
+  for (std::int32_t i = 0; i < 12; ++i) {
+    m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 1});
+    m.triangles.push_back({2 * i + 1, 2 * i + 2, 2 * i + 3});
+  }
+  return m;
+}
+
+TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
+  // Exact ties on the lattice cube: the hint must not change the lowest-index winner.
+  std::vector<Vec3> grid;
+  for (int x = -2; x <= 6; ++x)
+    for (int y = -2; y <= 6; ++y)
+      for (int z = -2; z <= 6; ++z)
+        grid.push_back({0.5 * x, 0.5 * y, 0.5 * z});
+  EXPECT_EQ(check_batch(lattice_cube(), grid), 0);
+  // Inside the folds of an accordion and around it, vertices and points 1e-9 off included.
+  const Mesh folds = accordion();
+  EXPECT_EQ(check_batch(folds, probe_points(folds, 800 / kDivisor, 21)), 0);
+  // Degenerate triangles and flipped duplicates.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const Mesh soup = degenerate_soup(seed);
+    EXPECT_EQ(check_batch(soup, probe_points(soup, 300 / kDivisor, seed + 40)), 0);
+  }
+  // Far from the origin (the test's rounding margin grows with the coordinates) and scaled.
+  const Mesh torus = scenes::torus(2.0, 0.7, 24, 12);
+  for (const double s : {0x1p-300, 1.0, 0x1p300}) {
+    Mesh m = scaled(torus, s);
+    for (Vec3& v : m.vertices)
+      v = v + Vec3{s * 1e6, -s * 3e5, s * 7.0};
+    std::vector<Vec3> points;
+    for (const Vec3& p : probe_points(m, 250 / kDivisor, 33))
+      points.push_back(p);
+    EXPECT_EQ(check_batch(m, points), 0) << "scale " << s;
+  }
+  // The same points in a shuffled order: the batch sorts them, the answers stay.
+  std::vector<Vec3> shuffled = probe_points(torus, 400 / kDivisor, 34);
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(35));
+  EXPECT_EQ(check_batch(torus, shuffled), 0);
 }
 
 TEST(MeshDistance, BatchAnswersEqualSingleAnswersOnAnyThreadCount) {

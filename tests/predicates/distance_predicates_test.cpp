@@ -83,6 +83,13 @@ int check_case(const test::PointTriangleCase& c) {
                   << describe(c);
     ++failures;
   }
+  // The fused call answers exactly what the two separate calls answer.
+  const RoundedPointDistance3 both = rounded_point_distance(pair);
+  if (!same_double(both.distance, d) || !(both.point == q)) {
+    ADD_FAILURE() << "rounded_point_distance " << hex(both.distance) << " " << hex(both.point)
+                  << " want " << hex(d) << " " << hex(q) << " for " << describe(c);
+    ++failures;
+  }
   // within d: exact at d itself and at the neighbours of the rounded distance.
   for (double dd : {d, std::nextafter(d, 0.0), std::nextafter(d, DBL_MAX)}) {
     if (!std::isfinite(dd)) continue;

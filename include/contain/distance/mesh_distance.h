@@ -36,8 +36,9 @@ struct MeshDistanceOptions {
 /// Counts of the work of the queries made so far on one thread, for benchmarks.
 struct MeshDistanceStats {
   std::size_t queries = 0;
-  std::size_t nodes = 0;              ///< hierarchy nodes entered
-  std::size_t triangles = 0;          ///< triangles bounded in floating point
+  std::size_t nodes = 0;      ///< hierarchy nodes entered
+  std::size_t triangles = 0;  ///< triangles bounded in floating point
+  std::size_t cheap = 0;  ///< of those, put out by the separation along the best direction alone
   std::size_t contenders = 0;         ///< triangles passed to the exact stage
   std::size_t exact_comparisons = 0;  ///< exact comparisons between distinct features
 };

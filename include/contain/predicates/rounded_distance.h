@@ -40,4 +40,15 @@ struct ClosestPoints2 {
 [[nodiscard]] ClosestPoints3 rounded_closest_points(const FlatPair3& x);
 [[nodiscard]] ClosestPoints2 rounded_closest_points(const FlatPair2& x);
 
+/// A point's rounded distance to a flat and the rounded closest point of the flat, together:
+/// exactly `rounded_distance(x)` and `rounded_closest_points(x).b`, for a pair whose first flat
+/// is a point (any other pair is passed on to those two). The squared distance and the closest
+/// point share their terms (the line's direction or the plane's normal, the denominator), so
+/// this costs about half of the two calls.
+struct RoundedPointDistance3 {
+  double distance;
+  Vec3 point;  ///< on x.b
+};
+[[nodiscard]] RoundedPointDistance3 rounded_point_distance(const FlatPair3& x);
+
 }  // namespace contain::predicates
