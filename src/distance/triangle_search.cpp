@@ -42,7 +42,10 @@ inline Vec3 approximate_closest(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
   }
   const double denom = 1.0 / (va + vb + vc);
   const double v = vb * denom, w = vc * denom;
-  if (!(v >= 0 && w >= 0 && v + w <= 1.5)) return a;  // NaN or a sliver's noise: any point will do
+  // triangle_slack counts on v + w passing 1 by a few ulps at most; a sliver's noise (va
+  // computed negative beside the edge tests) could give more, and a point off the triangle
+  // would make the upper bound too small. A corner is on the triangle: always a valid guess.
+  if (!(v >= 0 && w >= 0 && v + w <= 1 + 4 * kEps)) return a;
   return a + ab * v + ac * w;
 }
 
