@@ -80,7 +80,9 @@ struct MeshPairDistanceOptions {
 /// them; separation along the line between the centres, B's box placed by the pose, minus a
 /// proven rounding margin); each triangle pair is bounded in floating point (approximate closest
 /// points, an upper bound, and a lower bound from the separation along their difference, proven
-/// for any direction); the exact stage decides among the triangle pairs that can be closest
+/// for any direction); a pair whose lower bound is 0 is tested exactly for meeting, and once
+/// one meets the distance is 0 and the descent only looks for lower meeting pairs (tie rule);
+/// otherwise the exact stage decides among the triangle pairs that can be closest
 /// (predicates::closest_flats: crossing edges, six vertex-triangle and nine edge-edge pairs).
 /// If no vertex lies inside and no surfaces meet, the solids are apart (the boundary of their
 /// intersection would consist of whole components).
