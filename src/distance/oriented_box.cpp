@@ -20,15 +20,18 @@ void jacobi_eigenvectors(double a[3][3], double v[3][3]) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       v[i][j] = i == j ? 1.0 : 0.0;
+  // Until the off-diagonal part is negligible against the diagonal (a guide needs no more).
   for (int sweep = 0; sweep < 12; ++sweep) {
     const double off = std::fabs(a[0][1]) + std::fabs(a[0][2]) + std::fabs(a[1][2]);
-    if (!(off > 0)) break;
+    const double diag = std::fabs(a[0][0]) + std::fabs(a[1][1]) + std::fabs(a[2][2]);
+    if (!(off > 0x1p-40 * diag)) break;
     for (int p = 0; p < 2; ++p) {
       for (int q = p + 1; q < 3; ++q) {
         if (a[p][q] == 0) continue;
         const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::hypot(theta, 1.0));
-        const double c = 1 / std::hypot(t, 1.0), s = t * c;
+        const double t =
+            (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
         for (int k = 0; k < 3; ++k) {  // A <- A J
           const double akp = a[k][p], akq = a[k][q];
           a[k][p] = c * akp - s * akq;
@@ -54,25 +57,46 @@ Vec3 normalized(Vec3 x) {
   return n > 0 ? (1 / n) * x : Vec3{};
 }
 
-// The principal axes of `points`, made orthonormal (Gram-Schmidt), or the coordinate axes when
-// the result fails the check |e_i . e_j - delta_ij| <= 2^-41 as computed (each dot's rounding is
-// below 4u for vectors of length <= 1 + 2^-41, so exactly within phi = 2^-40).
-void principal_frame(std::span<const Vec3> points, Vec3 e[3]) {
+// Sums of a node's points about a reference point r (the mesh's first vertex, so that meshes
+// far from the origin keep their digits): count, sum of p - r, sum of (p - r)(p - r)^T. A
+// parent's are its children's added, so that all nodes cost O(n).
+struct Moments {
+  double n = 0;
+  double s[3] = {0, 0, 0};
+  double ss[3][3] = {};
+  void add(Vec3 p, Vec3 r) {
+    const double d[3] = {p.x - r.x, p.y - r.y, p.z - r.z};
+    n += 1;
+    for (int i = 0; i < 3; ++i) {
+      s[i] += d[i];
+      for (int j = 0; j < 3; ++j)
+        ss[i][j] += d[i] * d[j];
+    }
+  }
+  void add(const Moments& o) {
+    n += o.n;
+    for (int i = 0; i < 3; ++i) {
+      s[i] += o.s[i];
+      for (int j = 0; j < 3; ++j)
+        ss[i][j] += o.ss[i][j];
+    }
+  }
+};
+
+// The principal axes of the points summed in `m` (eigenvectors of their covariance), made
+// orthonormal (Gram-Schmidt), or the coordinate axes when the result fails the check
+// |e_i . e_j - delta_ij| <= 2^-41 as computed (each dot's rounding is below 4u for vectors of
+// length <= 1 + 2^-41, so exactly within phi = 2^-40). Only a guide: any frame that passes the
+// check gives a valid box.
+void principal_frame(const Moments& m, Vec3 e[3]) {
   e[0] = {1, 0, 0};
   e[1] = {0, 1, 0};
   e[2] = {0, 0, 1};
-  if (points.size() < 2) return;
-  Vec3 mean{};
-  for (const Vec3& p : points)
-    mean = mean + p;
-  mean = (1.0 / static_cast<double>(points.size())) * mean;
-  double a[3][3] = {};
-  for (const Vec3& p : points) {
-    const double d[3] = {p.x - mean.x, p.y - mean.y, p.z - mean.z};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        a[i][j] += d[i] * d[j];
-  }
+  if (m.n < 2) return;
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      a[i][j] = m.ss[i][j] / m.n - (m.s[i] / m.n) * (m.s[j] / m.n);
   double v[3][3];
   jacobi_eigenvectors(a, v);
   Vec3 f[3];
@@ -108,33 +132,79 @@ void coefficients(Vec3 p, Vec3 c, const Vec3 e[3], double coef[3], double err[3]
   }
 }
 
-OrientedBox box_of(std::span<const Vec3> points) {
+// The box of `points` in the frame `e` (orthonormal within phi), in one pass about any point
+// c0 (the points' mean is a good one):
+//   each exact coefficient a_k of E^-1 (p - c0) lies in [coef_k - err_k, coef_k + err_k]
+//   (`coefficients`; the two roundings of those bounds, u (|coef_k| + err_k) <= 1.1 u P_k, are
+//   inside err_k's room), so in [lo_k, hi_k] over the points;
+//   the centre c = fl(c0 + sum_k mid_k e_k), mid_k = (lo_k + hi_k) / 2 as computed, is within
+//   delta_i <= gamma_4 (|c0_i| + sum_k |mid_k e_ki|) per coordinate of the exact sum, so
+//   E^-1 (p - c) = a - mid - E^-1 delta with |(E^-1 delta)_k| <= |delta| / sqrt(1 - 3 phi)
+//   <= 2 |delta|_inf;
+//   h_k = (max(hi_k - mid_k, mid_k - lo_k) + 2 |delta|_inf), each sum and difference rounded
+//   up by the final (1 + 8u).
+OrientedBox box_of(std::span<const Vec3> points, const Vec3 e[3], Vec3 c0) {
   OrientedBox box;
-  principal_frame(points, box.e);
+  for (int k = 0; k < 3; ++k)
+    box.e[k] = e[k];
+  box.c = c0;
   if (points.empty()) return box;
-  // First pass: the extents about the first point, to centre the box; any centre is valid.
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
   for (const Vec3& p : points) {
     double coef[3], err[3];
-    coefficients(p, points.front(), box.e, coef, err);
+    coefficients(p, c0, e, coef, err);
     for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], coef[k]);
-      hi[k] = std::max(hi[k], coef[k]);
+      lo[k] = std::min(lo[k], coef[k] - err[k]);
+      hi[k] = std::max(hi[k], coef[k] + err[k]);
     }
   }
-  box.c = points.front();
+  double mid[3];
   for (int k = 0; k < 3; ++k)
-    box.c = box.c + (0.5 * (lo[k] + hi[k])) * box.e[k];
-  // Second pass: the half-widths about that centre, each |coefficient| plus its error bound,
-  // the sum rounded up by (1 + 4u) (two additions).
-  for (const Vec3& p : points) {
-    double coef[3], err[3];
-    coefficients(p, box.c, box.e, coef, err);
-    for (int k = 0; k < 3; ++k)
-      box.h[k] = std::max(box.h[k], (std::fabs(coef[k]) + err[k]) * (1 + 4 * kEps));
+    mid[k] = 0.5 * (lo[k] + hi[k]);
+  box.c = ((c0 + mid[0] * e[0]) + mid[1] * e[1]) + mid[2] * e[2];
+  const double c0_abs[3] = {std::fabs(c0.x), std::fabs(c0.y), std::fabs(c0.z)};
+  double delta = 0;
+  for (int i = 0; i < 3; ++i) {
+    double sum = c0_abs[i];
+    for (int k = 0; k < 3; ++k) {
+      const double eki = i == 0 ? e[k].x : i == 1 ? e[k].y : e[k].z;
+      sum += std::fabs(mid[k] * eki);
+    }
+    delta = std::max(delta, 5 * kEps * sum + 8 * std::numeric_limits<double>::denorm_min());
+  }
+  for (int k = 0; k < 3; ++k)
+    box.h[k] = (std::max(hi[k] - mid[k], mid[k] - lo[k]) + 2 * delta) * (1 + 8 * kEps);
+  if (!std::isfinite(box.h[0] + box.h[1] + box.h[2]) || !is_finite(box.c)) {
+    box.h[0] = box.h[1] = box.h[2] = kInf;  // a box that holds everything
   }
   return box;
 }
+
+// The coordinate axes around an axis-aligned box that holds the points: c its centre as
+// computed, h_k = max(max_k - c_k, min_k - c_k) rounded up (one subtraction, then the factor);
+// the axes are exactly orthonormal. O(1), for the few nodes near the root.
+OrientedBox box_of(const Box3& aabb) {
+  OrientedBox box;
+  box.e[0] = {1, 0, 0};
+  box.e[1] = {0, 1, 0};
+  box.e[2] = {0, 0, 1};
+  box.c = 0.5 * (aabb.min + aabb.max);
+  const double lo[3] = {aabb.min.x, aabb.min.y, aabb.min.z};
+  const double hi[3] = {aabb.max.x, aabb.max.y, aabb.max.z};
+  const double c[3] = {box.c.x, box.c.y, box.c.z};
+  for (int k = 0; k < 3; ++k)
+    box.h[k] = std::max(hi[k] - c[k], c[k] - lo[k]) * (1 + 4 * kEps);
+  if (!std::isfinite(box.h[0] + box.h[1] + box.h[2]) || !is_finite(box.c)) {
+    box.h[0] = box.h[1] = box.h[2] = std::numeric_limits<double>::infinity();
+  }
+  return box;
+}
+
+// Nodes over more triangles than this get the box of their axis-aligned box: the principal
+// frame pays for itself near the leaves, where most pairs are met, and gathering every vertex
+// at every level cost as much as building the hierarchy.
+constexpr std::int32_t kMaxOriented = 256;
 
 // |c|_inf + sum_k h_k of a box.
 double box_extent(const OrientedBox& b) {
@@ -161,15 +231,38 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
       hi[k] = std::max(hi[k + 1], hi[second]);
     }
   }
+  // Moments: leaves from their vertices, inner nodes from their children.
+  const Vec3 r = mesh.vertices.empty() ? Vec3{} : mesh.vertices.front();
+  std::vector<Moments> moments(nodes.size());
+  for (std::size_t k = nodes.size(); k-- > 0;) {
+    const bvh::Node& n = nodes[k];
+    if (n.is_leaf()) {
+      for (std::int32_t i = n.first; i < n.first + n.count; ++i)
+        for (const std::int32_t v :
+             mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
+          moments[k].add(mesh.vertices[static_cast<std::size_t>(v)], r);
+    } else {
+      moments[k] = moments[k + 1];
+      moments[k].add(moments[static_cast<std::size_t>(n.first)]);
+    }
+  }
   std::vector<OrientedBox> out(nodes.size());
   std::vector<Vec3> points;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if (hi[k] - lo[k] > kMaxOriented) {
+      out[k] = box_of(nodes[k].box);
+      continue;
+    }
     points.clear();
     for (std::int32_t i = lo[k]; i < hi[k]; ++i)
       for (const std::int32_t v :
            mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
         points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
-    out[k] = box_of(points);
+    const Moments& m = moments[k];
+    Vec3 e[3];
+    principal_frame(m, e);
+    const Vec3 c0 = m.n > 0 ? r + Vec3{m.s[0] / m.n, m.s[1] / m.n, m.s[2] / m.n} : r;
+    out[k] = box_of(points, e, is_finite(c0) ? c0 : r);
   }
   return out;
 }

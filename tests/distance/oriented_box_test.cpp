@@ -133,6 +133,27 @@ TEST(OrientedBoxes, HoldEveryVertexBelowEachNodeExactly) {
   }
 }
 
+// Nodes over more than 256 triangles take the box of their axis-aligned box (coordinate axes).
+TEST(OrientedBoxes, NodesOverManyTrianglesHoldTheirVerticesToo) {
+  int seed = 40;
+  for (const double s : {0x1p-500, 1.0, 0x1p500}) {
+    const Mesh m = soup(700, s, {1e6 * s, 0, -1e6 * s}, static_cast<std::uint64_t>(seed++));
+    const bvh::Bvh bvh(bvh::triangle_boxes(m));
+    const std::vector<OrientedBox> boxes = oriented_boxes(bvh, m);
+    const auto below = triangles_below(bvh);
+    int failures = 0, big = 0;
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (below[k].size() <= 256) continue;
+      ++big;
+      for (const std::int32_t t : below[k])
+        for (const std::int32_t v : m.triangles[static_cast<std::size_t>(t)])
+          if (!exactly_holds(boxes[k], m.vertices[static_cast<std::size_t>(v)])) ++failures;
+    }
+    EXPECT_GT(big, 0);
+    EXPECT_EQ(failures, 0) << "scale " << s;
+  }
+}
+
 TEST(OrientedBoxes, SurelyHoldsAgreesWithTheExactTest) {
   const Mesh m = soup(40, 1.0, {3, 4, 5}, 9);
   const bvh::Bvh bvh(bvh::triangle_boxes(m));
@@ -210,6 +231,13 @@ TEST(OrientedBoxLower, NeverExceedsTheExactDistanceOfTheTrianglesBelow) {
       close.t = offset + Vec3{2 * s + 0x1p-30 * s, 0, 0};
       failures += check_lower(a, b, close, positive);
     }
+  }
+  // A mesh whose upper nodes take axis-aligned boxes.
+  const Mesh big = soup(300, 1.0, {1e6, 0, 0}, seed++);
+  const Mesh small = soup(12, 0.5, {}, seed++);
+  for (Transform t : scenes::random_poses(2, 2.5, seed++)) {
+    t.t = Vec3{1e6, 0, 0} + t.t;
+    failures += check_lower(big, small, t, positive);
   }
   EXPECT_GT(positive, 1000);  // the bound is not vacuous
   EXPECT_EQ(failures, 0);
