@@ -32,21 +32,6 @@ std::vector<Triangle3> triangles_of(const Mesh& mesh) {
   return out;
 }
 
-// Two flats are the same point set when they have the same points in some order (a feature
-// shared by neighbouring triangles: a vertex, an edge, or a duplicated face). Then their
-// distances are equal without arithmetic.
-bool same_flat(const Flat3& x, const Flat3& y) {
-  if (x.size != y.size) return false;
-  const auto n = static_cast<std::size_t>(x.size);
-  for (std::size_t i = 0; i < n; ++i) {
-    bool found = false;
-    for (std::size_t j = 0; j < n && !found; ++j)
-      found = x.points[i] == y.points[j];
-    if (!found) return false;
-  }
-  return true;
-}
-
 struct Winner {
   std::int32_t triangle = -1;
   FlatPair3 pair{};
@@ -69,7 +54,7 @@ Winner resolve(Vec3 p, const detail::TriangleSearch& search,
       best = {c.item, pair};
       continue;
     }
-    if (same_flat(flat, best.pair.b)) continue;
+    if (predicates::same_flat(flat, best.pair.b)) continue;
     ++t_stats.exact_comparisons;
     if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
       best = {c.item, pair};

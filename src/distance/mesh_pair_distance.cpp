@@ -13,6 +13,7 @@
 #include "contain/shapes/mesh_components.h"
 #include "contain/shapes/mesh_validation.h"
 #include "distance/flat_answer.h"
+#include "distance/oriented_box.h"
 #include "distance/search_tree.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
@@ -93,17 +94,86 @@ Box3 triangle_box(const Triangle3& t) {
   return box;
 }
 
-// B's nodes up to this many levels above their leaves get the exact box of their placed
-// triangles (tight where most pairs are met); higher ones their local box placed.
-constexpr int kExactLevels = 6;
-
 // Leaves of up to this many triangles have their placed triangles gathered once per leaf pair.
 constexpr std::int32_t kMaxLeaf = 8;
+
+// B's vertices as placed by one pose, each computed by Transform::apply on first use (a stamp
+// per vertex): the descent meets a few thousand of B's vertices, and placing all of them cost
+// 0.2 ms per pose on the 100k-triangle bench, a fifth of FCL's whole query.
+class PlacedVertices {
+ public:
+  void reset(const std::vector<Vec3>& local, const Transform& tb) {
+    local_ = &local;
+    tb_ = tb;
+    if (stamp_.size() < local.size() || ++current_ == 0) {
+      stamp_.assign(std::max(stamp_.size(), local.size()), 0);
+      placed_.resize(stamp_.size());
+      current_ = 1;
+    }
+  }
+  Vec3 operator[](std::int32_t v) {
+    const auto u = static_cast<std::size_t>(v);
+    if (stamp_[u] != current_) {
+      stamp_[u] = current_;
+      placed_[u] = tb_.apply((*local_)[u]);
+    }
+    return placed_[u];
+  }
+  Triangle3 triangle(const TriangleIndices& t) {
+    return {(*this)[t[0]], (*this)[t[1]], (*this)[t[2]]};
+  }
+
+ private:
+  const std::vector<Vec3>* local_ = nullptr;
+  Transform tb_;
+  std::vector<Vec3> placed_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t current_ = 0;
+};
+
+// A bound on every coordinate of B's vertices as placed by tb (Transform::apply), B's local
+// coordinates at most m in magnitude: |t_i| + sum_j |r_ij| m, within gamma_4 of its own
+// rounding and of the computed coordinates' error: times (1 + 16 eps).
+double placed_max_abs(const Transform& tb, double m) {
+  double out = 0;
+  const double t[3] = {tb.t.x, tb.t.y, tb.t.z};
+  for (std::size_t i = 0; i < 3; ++i)
+    out = std::max(
+        out, std::fabs(t[i]) +
+                 ((std::fabs(tb.r[i][0]) + std::fabs(tb.r[i][1])) + std::fabs(tb.r[i][2])) * m);
+  return out * (1 + 16 * kEps);
+}
 
 struct PairContender {
   std::int32_t a, b;
   double lo, hi;
 };
+
+}  // namespace
+
+struct MeshPairDistance::Volumes {
+  std::vector<detail::OrientedBox> a, b;
+  double extent_a = 0, extent_b = 0;
+  std::vector<std::int32_t> min_a, min_b;  // the lowest triangle under each node
+};
+
+namespace {
+
+// The lowest item under each node of `bvh` (children come after their parent).
+std::vector<std::int32_t> least_items(const bvh::Bvh& bvh) {
+  const std::span<const bvh::Node> nodes = bvh.nodes();
+  const std::span<const std::int32_t> items = bvh.items();
+  std::vector<std::int32_t> out(nodes.size());
+  for (std::size_t k = nodes.size(); k-- > 0;) {
+    const bvh::Node& n = nodes[k];
+    if (n.is_leaf()) {
+      out[k] = *std::min_element(items.begin() + n.first, items.begin() + n.first + n.count);
+    } else {
+      out[k] = std::min(out[k + 1], out[static_cast<std::size_t>(n.first)]);
+    }
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -133,13 +203,14 @@ MeshPairDistance::MeshPairDistance(const Mesh& a, const Mesh& b,
   b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
   a_components_ = component_vertices(a_world_);
   b_components_ = component_vertices(b_);
-  const std::span<const bvh::Node> nb = bvh_b_.nodes();
-  b_height_.assign(nb.size(), 0);
-  for (std::size_t k = nb.size(); k-- > 0;) {  // children come after their parent
-    if (nb[k].is_leaf()) continue;
-    const int h = 1 + std::max(b_height_[k + 1], b_height_[static_cast<std::size_t>(nb[k].first)]);
-    b_height_[k] = static_cast<std::uint8_t>(std::min(h, 255));
-  }
+  auto volumes = std::make_shared<Volumes>();
+  volumes->a = detail::oriented_boxes(bvh_a_, a_world_);
+  volumes->b = detail::oriented_boxes(bvh_b_, b_);
+  volumes->extent_a = detail::oriented_extent(volumes->a);
+  volumes->extent_b = detail::oriented_extent(volumes->b);
+  volumes->min_a = least_items(bvh_a_);
+  volumes->min_b = least_items(bvh_b_);
+  volumes_ = std::move(volumes);
   a_max_abs_ = max_abs(a_world_);
   b_max_abs_ = max_abs(b_);
 }
@@ -163,22 +234,17 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     return out;
   }
   // B's vertices as placed: the doubles every decision is exact on.
-  thread_local std::vector<Vec3> wb;
-  wb.resize(b_.vertices.size());
-  for (std::size_t i = 0; i < wb.size(); ++i)
-    wb[i] = tb.apply(b_.vertices[i]);
-  double placed_max = 0;
-  for (const Vec3& v : wb)
-    placed_max = std::max({placed_max, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  const double slack = detail::triangle_slack(std::max(a_max_abs_, placed_max));
+  thread_local PlacedVertices wb;
+  wb.reset(b_.vertices, tb);
+  const double slack = detail::triangle_slack(std::max(a_max_abs_, placed_max_abs(tb, b_max_abs_)));
   // 1. Overlap first: a vertex of one inside the other solid makes the distance 0 whatever the
   // surfaces do (and settles nested solids, whose surfaces may be far apart, at once).
   if (a_solid_) {
     for (const std::int32_t v : b_components_) {
-      if (index_a_.locate(wb[static_cast<std::size_t>(v)]) == Location::inside) {
+      if (index_a_.locate(wb[v]) == Location::inside) {
         out.contact = PairContact::vertex_of_b_in_a;
         out.vertex = v;
-        out.point_a = out.point_b = wb[static_cast<std::size_t>(v)];
+        out.point_a = out.point_b = wb[v];
         out.distance = 0.0;
         if (within_out) *within_out = true;
         return out;
@@ -200,7 +266,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
                    q.z <= w.max.z;
           },
           [&](std::int32_t t) {
-            const Triangle3 tri = triangle_of(wb, b_.triangles[static_cast<std::size_t>(t)]);
+            const Triangle3 tri = wb.triangle(b_.triangles[static_cast<std::size_t>(t)]);
             if (predicates::closest_feature(q, tri) == predicates::TriangleFeature::face &&
                 predicates::orient3d(tri.a, tri.b, tri.c, q) == Sign::zero) {
               on_surface = true;
@@ -219,45 +285,59 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
     }
   }
 
-  // 2. The descent: pairs of nodes, nearer first, pruned against the best upper bound.
+  // 2. The descent: pairs of nodes, nearer first, pruned against the best upper bound. Node
+  // pairs are bounded by their oriented boxes (oriented_box.h: a separating axis along the line
+  // between the centres, with a proven rounding margin); leaf pairs then by the exact boxes of
+  // B's placed leaf triangles and the triangles' own bounds.
   const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b_.nodes();
   const std::span<const std::int32_t> ia = bvh_a_.items(), ib = bvh_b_.items();
-  // B's node boxes as placed, each computed once per query (a stamp per node): exact (the box of
-  // the placed triangles) up to kExactLevels above the leaves, the local box placed above.
+  const std::span<const detail::OrientedBox> oa = volumes_->a, ob = volumes_->b;
+  const detail::OrientedPose pose =
+      detail::oriented_pose(tb, volumes_->extent_a, volumes_->extent_b);
+  // Per node of B, computed once per query (a stamp per node): the centre of its oriented box
+  // as placed (any point serves as the bound's direction), and for leaves the exact box of the
+  // placed triangles.
+  thread_local std::vector<Vec3> centre_cache;
   thread_local std::vector<Box3> box_cache;
-  thread_local std::vector<std::uint32_t> box_stamp;
+  thread_local std::vector<std::uint32_t> centre_stamp, box_stamp;
   thread_local std::uint32_t stamp = 0;
   if (box_stamp.size() < nb.size() || ++stamp == 0) {
     box_stamp.assign(std::max(box_stamp.size(), nb.size()), 0);
+    centre_stamp.assign(box_stamp.size(), 0);
     box_cache.resize(box_stamp.size());
+    centre_cache.resize(box_stamp.size());
     stamp = 1;
   }
-  const auto leaf_box = [&](const bvh::Node& node) {
-    Box3 box;
-    for (std::int32_t i = node.first; i < node.first + node.count; ++i)
-      for (const std::int32_t v :
-           b_.triangles[static_cast<std::size_t>(ib[static_cast<std::size_t>(i)])])
-        box.expand(wb[static_cast<std::size_t>(v)]);
-    return box;
-  };
-  const auto node_box_b = [&](auto&& self, std::int32_t k) -> const Box3& {
+  const auto box_b = [&](std::int32_t k) -> const Box3& {
     const auto u = static_cast<std::size_t>(k);
-    if (box_stamp[u] == stamp) return box_cache[u];
-    const bvh::Node& node = nb[u];
-    Box3 box;
-    if (node.is_leaf()) {
-      box = leaf_box(node);
-    } else if (b_height_[u] <= kExactLevels) {
-      box = self(self, k + 1);
-      box.expand(self(self, node.first));
-    } else {
-      box = placed_box(node.box, tb);
+    if (box_stamp[u] != stamp) {
+      const bvh::Node& node = nb[u];
+      Box3 box;
+      for (std::int32_t i = node.first; i < node.first + node.count; ++i)
+        for (const std::int32_t v :
+             b_.triangles[static_cast<std::size_t>(ib[static_cast<std::size_t>(i)])])
+          box.expand(wb[v]);
+      box_stamp[u] = stamp;
+      box_cache[u] = box;
     }
-    box_stamp[u] = stamp;
-    box_cache[u] = box;
     return box_cache[u];
   };
-  const auto box_b = [&](std::int32_t k) -> const Box3& { return node_box_b(node_box_b, k); };
+  const auto centre_b = [&](std::int32_t k) -> Vec3 {
+    const auto u = static_cast<std::size_t>(k);
+    if (centre_stamp[u] != stamp) {
+      centre_stamp[u] = stamp;
+      centre_cache[u] = tb.apply(ob[u].c);
+    }
+    return centre_cache[u];
+  };
+  const auto lower = [&](std::int32_t a, std::int32_t b) {
+    return detail::oriented_box_lower(oa[static_cast<std::size_t>(a)],
+                                      ob[static_cast<std::size_t>(b)], centre_b(b), pose);
+  };
+  // The size that decides which node to split: the oriented box's surface area (over 8).
+  const auto size = [](const detail::OrientedBox& o) {
+    return o.h[0] * o.h[1] + o.h[1] * o.h[2] + o.h[2] * o.h[0];
+  };
   struct Entry {
     std::int32_t a, b;
     double lb;
@@ -267,20 +347,35 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   stack.clear();
   contenders.clear();
   double best = kInf;
-  const Box3 root_b = placed_box(nb[0].box, tb);
   // Depth first, the nearer child pair first (pushed last), so that the first leaf pairs reached
   // are near the closest ones and the upper bound falls fast. A best-first heap visits fewer
-  // pairs (22k against 35k per pose on the armadillo bench) but its upkeep costs more than they
-  // save (4.6 against 3.4 ms per pose).
+  // pairs (22k against 35k per pose on the armadillo bench, with axis-aligned boxes) but its
+  // upkeep costs more than they save (4.6 against 3.4 ms per pose).
+  // Touching: once a triangle pair is found to meet (exactly), the distance is 0 and the answer
+  // is the lowest meeting pair (distance-tie rule: lowest triangle of A, then of B). From then
+  // on best = 0 prunes every pair that surely does not meet, and a pair of nodes whose lowest
+  // triangles (mins_a, mins_b) come at or after the pair found holds no lower pair.
+  bool meet = false;
+  std::int32_t meet_a = 0, meet_b = 0;
+  const std::span<const std::int32_t> mins_a = volumes_->min_a, mins_b = volumes_->min_b;
+  const auto at_or_after = [&](std::int32_t ta, std::int32_t tbi) {
+    return ta > meet_a || (ta == meet_a && tbi >= meet_b);
+  };
   auto push = [&](const Entry& e) {
     if (e.lb > best) return;
+    if (meet &&
+        at_or_after(mins_a[static_cast<std::size_t>(e.a)], mins_b[static_cast<std::size_t>(e.b)]))
+      return;
     stack.push_back(e);
   };
-  push({0, 0, box_box_lower_bound(na[0].box, root_b)});
+  push({0, 0, lower(0, 0)});
   while (!stack.empty()) {
     const Entry e = stack.back();
     stack.pop_back();
     if (e.lb > best) continue;  // best fell since it was pushed
+    if (meet &&
+        at_or_after(mins_a[static_cast<std::size_t>(e.a)], mins_b[static_cast<std::size_t>(e.b)]))
+      continue;
     ++out.node_pairs;
     const bvh::Node& p = na[static_cast<std::size_t>(e.a)];
     const bvh::Node& q = nb[static_cast<std::size_t>(e.b)];
@@ -293,7 +388,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       const Box3& leaf_box_b = box_b(e.b);
       for (std::int32_t t = 0; t < count_b; ++t) {
         const std::int32_t tbi = ib[static_cast<std::size_t>(q.first + t)];
-        tris_b[t] = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
+        tris_b[t] = wb.triangle(b_.triangles[static_cast<std::size_t>(tbi)]);
         boxes_b[t] = triangle_box(tris_b[t]);
       }
       Triangle3 tris_a[kMaxLeaf];
@@ -321,41 +416,62 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
         for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
           const std::int32_t tbi = ib[static_cast<std::size_t>(t)];
           const std::int32_t k = t - q.first;
+          if (meet && at_or_after(ta, tbi)) continue;
           Triangle3 tri_b;
           if (k < count_b) {
             if (box_box_lower_bound(box_a, boxes_b[k]) > best) continue;
             tri_b = tris_b[k];
           } else {
-            tri_b = triangle_of(wb, b_.triangles[static_cast<std::size_t>(tbi)]);
+            tri_b = wb.triangle(b_.triangles[static_cast<std::size_t>(tbi)]);
           }
           if (detail::triangle_pair_quick_lower(tri_a, tri_b) > best) continue;
           double lo = 0, hi = 0;
           detail::triangle_pair_bounds(tri_a, tri_b, slack, lo, hi);
           if (lo > best) continue;
+          if (lo == 0 && predicates::flats_meet(predicates::closest_flats(tri_a, tri_b))) {
+            if (within_out != nullptr) {  // distance 0: within any d >= 0
+              *within_out = true;
+              return out;
+            }
+            meet = true;
+            meet_a = ta;
+            meet_b = tbi;
+            best = 0;
+            continue;
+          }
+          if (meet) continue;  // not meeting: not an answer any more
           contenders.push_back({ta, tbi, lo, hi});
           best = std::min(best, hi);
         }
       }
       continue;
     }
-    const Box3& placed_b = box_b(e.b);
     const bool split_a =
-        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(placed_b));
+        q.is_leaf() || (!p.is_leaf() && size(oa[static_cast<std::size_t>(e.a)]) >=
+                                            size(ob[static_cast<std::size_t>(e.b)]));
     Entry c1 = e, c2 = e;
     if (split_a) {
       c1.a = e.a + 1;
       c2.a = p.first;
-      c1.lb = box_box_lower_bound(na[static_cast<std::size_t>(c1.a)].box, placed_b);
-      c2.lb = box_box_lower_bound(na[static_cast<std::size_t>(c2.a)].box, placed_b);
     } else {
       c1.b = e.b + 1;
       c2.b = q.first;
-      c1.lb = box_box_lower_bound(p.box, box_b(c1.b));
-      c2.lb = box_box_lower_bound(p.box, box_b(c2.b));
     }
-    if (c1.lb < c2.lb) std::swap(c1, c2);  // the nearer pair on top
+    c1.lb = lower(c1.a, c1.b);
+    c2.lb = lower(c2.a, c2.b);
+    // The nearer pair on top; of two at the same bound (two pairs that may touch) the one with
+    // the lower triangles, which finds the lowest meeting pair sooner.
+    if (c1.lb < c2.lb || (c1.lb == c2.lb && (split_a ? mins_a[static_cast<std::size_t>(c1.a)] <
+                                                           mins_a[static_cast<std::size_t>(c2.a)]
+                                                     : mins_b[static_cast<std::size_t>(c1.b)] <
+                                                           mins_b[static_cast<std::size_t>(c2.b)])))
+      std::swap(c1, c2);
     push(c1);
     push(c2);
+  }
+  if (meet) {  // the lowest meeting pair is the answer; the other contenders are farther
+    contenders.clear();
+    contenders.push_back({meet_a, meet_b, 0, 0});
   }
   std::erase_if(contenders, [&](const PairContender& c) { return c.lo > best; });
   out.contenders = contenders.size();
@@ -371,7 +487,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   for (const PairContender& c : contenders) {
     const predicates::FlatPair3 pair = predicates::closest_flats(
         triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(c.a)]),
-        triangle_of(wb, b_.triangles[static_cast<std::size_t>(c.b)]));
+        wb.triangle(b_.triangles[static_cast<std::size_t>(c.b)]));
     if (!have || predicates::compare_squared_distances(pair, winner) == Sign::negative) {
       winner = pair;
       out.triangle_a = c.a;

@@ -16,13 +16,6 @@ namespace {
 using predicates::Flat2;
 using predicates::FlatPair2;
 
-bool same_flat(const Flat2& x, const Flat2& y) {
-  if (x.size != y.size) return false;
-  if (x.size == 1) return x.points[0] == y.points[0];
-  return (x.points[0] == y.points[0] && x.points[1] == y.points[1]) ||
-         (x.points[0] == y.points[1] && x.points[1] == y.points[0]);
-}
-
 struct Winner {
   std::int32_t edge = -1;
   FlatPair2 pair{};
@@ -43,7 +36,7 @@ Winner resolve(Vec2 p, const detail::SegmentSearch& search,
       best = {c.item, pair};
       continue;
     }
-    if (same_flat(pair.b, best.pair.b)) continue;
+    if (predicates::same_flat(pair.b, best.pair.b)) continue;
     if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
       best = {c.item, pair};
     }

@@ -12,8 +12,22 @@ using detail::Quotient;
 
 using detail::filtered_sign;
 
+template <class Flat>
+bool same_points(const Flat& x, const Flat& y) {
+  if (x.size != y.size) return false;
+  const auto n = static_cast<std::size_t>(x.size);
+  for (std::size_t i = 0; i < n; ++i) {
+    bool found = false;
+    for (std::size_t j = 0; j < n && !found; ++j)
+      found = x.points[i] == y.points[j];
+    if (!found) return false;
+  }
+  return true;
+}
+
 template <class Pair>
 Sign compare_pairs(const Pair& x, const Pair& y) {
+  if (same_points(x.a, y.a) && same_points(x.b, y.b)) return Sign::zero;
   return filtered_sign([&]<class T>(const T&) {
     const Quotient<T> qx = detail::squared_distance<T>(x);
     const Quotient<T> qy = detail::squared_distance<T>(y);
@@ -37,6 +51,12 @@ bool meet(const Pair& x) {
 
 }  // namespace
 
+bool same_flat(const Flat3& x, const Flat3& y) {
+  return same_points(x, y);
+}
+bool same_flat(const Flat2& x, const Flat2& y) {
+  return same_points(x, y);
+}
 Sign compare_squared_distances(const FlatPair3& x, const FlatPair3& y) {
   return compare_pairs(x, y);
 }

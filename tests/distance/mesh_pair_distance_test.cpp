@@ -172,6 +172,25 @@ TEST(MeshPairDistance, RandomPosesOfTwoTorimatchTheExactOracle) {
   EXPECT_EQ(failures, 0);
 }
 
+// Tori that cross (B's centre on A's tube surface, random orientations): the surfaces meet along
+// curves, and the answer is the meeting pair lowest in (triangle of A, triangle of B) that the
+// descent searches for directly once one pair is found to meet.
+TEST(MeshPairDistance, CrossingToriReportTheLowestMeetingPair) {
+  const Mesh a = scenes::torus(1.0, 0.35, 12, 7);
+  const Mesh b = scenes::torus(0.5, 0.15, 9, 6);
+  const MeshPairDistance pair(a, b);
+  int failures = 0, touching = 0;
+  int i = 0;
+  for (Transform t : scenes::random_poses(10 / kDivisor + 2, 0.0, 23)) {
+    const double angle = 0.7 * i++;
+    t.t = {1.35 * std::cos(angle), 1.35 * std::sin(angle), 0.0};
+    if (pair.distance(t).contact == PairContact::touching) ++touching;
+    check_pose(pair, a, b, t, failures);
+  }
+  EXPECT_GT(touching, 0);
+  EXPECT_EQ(failures, 0);
+}
+
 TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   const Mesh big = scenes::box_mesh({{0, 0, 0}, {4, 4, 4}});
   const Mesh small = scenes::box_mesh({{0, 0, 0}, {1, 1, 1}});

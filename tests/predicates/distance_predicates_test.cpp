@@ -157,6 +157,27 @@ TEST(DistancePredicates, ComparisonOfTwoTrianglesDistancesIsTheExactSign) {
   EXPECT_EQ(failures, 0);
 }
 
+// A pair of flats met twice (a vertex reached from two edges, an edge shared by two triangles)
+// is an exact tie that the filter cannot settle; same_flat settles it without arithmetic, in any
+// order of the points, and only for the same point set.
+TEST(DistancePredicates, PairsOfTheSameFlatsInAnyOrderAreEqualAndOthersAreCompared) {
+  const Vec3 p{0.1, 0.2, 0.3}, a{1, 0, 0}, b{0, 1, 0.5}, c{0, 0, 1.25};
+  const FlatPair3 x{point_flat(p), plane_flat(a, b, c)};
+  const FlatPair3 y{point_flat(p), plane_flat(c, a, b)};
+  EXPECT_TRUE(same_flat(x.b, y.b));
+  EXPECT_EQ(compare_squared_distances(x, y), Sign::zero);
+  EXPECT_EQ(compare_squared_distances(FlatPair3{line_flat(a, b), line_flat(c, p)},
+                                      FlatPair3{line_flat(b, a), line_flat(p, c)}),
+            Sign::zero);
+  // the same points as a line and as a plane, or other points: not the same flat
+  EXPECT_FALSE(same_flat(line_flat(a, b), plane_flat(a, b, c)));
+  EXPECT_FALSE(same_flat(plane_flat(a, b, c), plane_flat(a, b, p)));
+  const FlatPair3 z{point_flat(p), line_flat(a, b)};  // a line of the plane: not farther
+  EXPECT_EQ(compare_squared_distances(x, z), Sign::negative);
+  EXPECT_TRUE(same_flat(Flat2{{Vec2{1, 2}, Vec2{3, 4}}, 2}, Flat2{{Vec2{3, 4}, Vec2{1, 2}}, 2}));
+  EXPECT_FALSE(same_flat(Flat2{{Vec2{1, 2}, Vec2{3, 4}}, 2}, Flat2{{Vec2{1, 2}, Vec2{3, 5}}, 2}));
+}
+
 TEST(DistancePredicates, DotSignIsExact) {
   CaseRng rng(15);
   int failures = 0;

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -46,7 +47,7 @@ struct PairDistance3 {
   std::int32_t triangle_b = -1;
   PairContact contact = PairContact::separate;
   std::int32_t vertex = -1;    ///< nested answers: the contained vertex (in its own mesh)
-  std::size_t node_pairs = 0;  ///< bounding box pairs tested
+  std::size_t node_pairs = 0;  ///< bounding volume pairs tested
   std::size_t contenders = 0;  ///< triangle pairs passed to the exact stage
 };
 
@@ -73,18 +74,22 @@ struct MeshPairDistanceOptions {
 /// Algorithm per query: first one vertex per component of B is located in A (exact,
 /// inside::MeshIndex) and one vertex per component of A in B as placed (exact perturbed +x ray
 /// parity): a vertex strictly inside makes the distance 0 (overlapping or nested solids). Then a
-/// simultaneous descent of both hierarchies (A's built in world
-/// coordinates; B's in its own frame, its boxes mapped to enclosing world boxes widened by a bound
-/// on the rounding), nearer pairs first, pruned by a box-box lower bound against the best upper
-/// bound so far; each triangle pair is bounded in floating point (approximate closest points, an
-/// upper bound, and a lower bound from the separation along their difference, proven for any
-/// direction); the exact stage decides among the triangle pairs that can be closest
+/// simultaneous descent of both hierarchies (A's built in world coordinates; B's in its own
+/// frame), nearer pairs first, pruned against the best upper bound so far by a lower bound
+/// between the nodes' oriented boxes (principal axes of the node's vertices, proven to hold
+/// them; separation along the line between the centres, B's box placed by the pose, minus a
+/// proven rounding margin); each triangle pair is bounded in floating point (approximate closest
+/// points, an upper bound, and a lower bound from the separation along their difference, proven
+/// for any direction); a pair whose lower bound is 0 is tested exactly for meeting, and once
+/// one meets the distance is 0 and the descent only looks for lower meeting pairs (tie rule);
+/// otherwise the exact stage decides among the triangle pairs that can be closest
 /// (predicates::closest_flats: crossing edges, six vertex-triangle and nine edge-edge pairs).
 /// If no vertex lies inside and no surfaces meet, the solids are apart (the boundary of their
 /// intersection would consist of whole components).
 ///
 /// Complexity: build O(n log n); a query O(node pairs + triangle pairs near the closest
-/// distance) + O(V_B) to place B's vertices + a ray per component for separated solids.
+/// distance) + a ray per component for separated solids; B's vertices are placed where the
+/// descent meets them.
 /// Thread safety: const; queries may run concurrently; batch answers do not depend on the thread
 /// count. Reference: Larsen, Gottschalk, Lin, Manocha, "Fast proximity queries with swept sphere
 /// volumes" (1999) for the hierarchy descent; Ericson, "Real-Time Collision Detection" (2005) 5.1.
@@ -109,7 +114,7 @@ class MeshPairDistance {
   [[nodiscard]] bool b_is_solid() const { return b_solid_; }
 
  private:
-  struct Placed;
+  struct Volumes;  // oriented boxes of both hierarchies' nodes (src/distance/oriented_box.h)
   [[nodiscard]] PairDistance3 query(const Transform& tb, double within_d, bool* within_out) const;
 
   Mesh a_world_;
@@ -121,8 +126,7 @@ class MeshPairDistance {
   inside::MeshIndex index_a_;
   std::vector<std::int32_t> a_components_;  // one vertex of each connected component
   std::vector<std::int32_t> b_components_;
-  // Per node of B's hierarchy: levels down to its deepest leaf, capped (0 for a leaf).
-  std::vector<std::uint8_t> b_height_;
+  std::shared_ptr<const Volumes> volumes_;
   double a_max_abs_ = 0.0;
   double b_max_abs_ = 0.0;
 };

@@ -76,8 +76,16 @@ struct FlatPair2 {
   return {{a, b}, 2};
 }
 
+/// True when x and y are the same point set: the same points in some order (a vertex, an edge
+/// or a face shared by neighbouring triangles, or met twice by one search). Their distances to
+/// anything are then equal without arithmetic.
+[[nodiscard]] bool same_flat(const Flat3& x, const Flat3& y);
+[[nodiscard]] bool same_flat(const Flat2& x, const Flat2& y);
+
 /// Sign of dist^2(x) - dist^2(y), exactly: negative when x's flats are closer to each other
 /// than y's. O(1); the exact stage runs only when the two are within the filter's error.
+/// Pairs of the same flats (same_flat on both sides) are equal at once: the filter cannot see
+/// an exact tie, and the candidates of one triangle pair or one contact often repeat a pair.
 [[nodiscard]] Sign compare_squared_distances(const FlatPair3& x, const FlatPair3& y);
 [[nodiscard]] Sign compare_squared_distances(const FlatPair2& x, const FlatPair2& y);
 
