@@ -209,6 +209,14 @@ int check_lower(const Mesh& a, const Mesh& b, const Transform& tb, int& positive
   return failures;
 }
 
+// Random poses per case: one under the sanitizers, where the GMP oracle of every triangle pair
+// made this the longest test of the suite (86 s).
+#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
+constexpr int kRandomPoses = 1;
+#else
+constexpr int kRandomPoses = 2;
+#endif
+
 TEST(OrientedBoxLower, NeverExceedsTheExactDistanceOfTheTrianglesBelow) {
   int failures = 0;
   int positive = 0;
@@ -218,7 +226,7 @@ TEST(OrientedBoxLower, NeverExceedsTheExactDistanceOfTheTrianglesBelow) {
       const Vec3 offset{far * s, far * s, -far * s};
       const Mesh a = soup(20, s, offset, seed++);
       const Mesh b = soup(15, 0.5 * s, {}, seed++);
-      for (Transform t : scenes::random_poses(2, 2.5 * s, seed++)) {
+      for (Transform t : scenes::random_poses(kRandomPoses, 2.5 * s, seed++)) {
         t.t = offset + t.t;
         failures += check_lower(a, b, t, positive);
       }
@@ -235,11 +243,11 @@ TEST(OrientedBoxLower, NeverExceedsTheExactDistanceOfTheTrianglesBelow) {
   // A mesh whose upper nodes take axis-aligned boxes.
   const Mesh big = soup(300, 1.0, {1e6, 0, 0}, seed++);
   const Mesh small = soup(12, 0.5, {}, seed++);
-  for (Transform t : scenes::random_poses(2, 2.5, seed++)) {
+  for (Transform t : scenes::random_poses(kRandomPoses, 2.5, seed++)) {
     t.t = Vec3{1e6, 0, 0} + t.t;
     failures += check_lower(big, small, t, positive);
   }
-  EXPECT_GT(positive, 1000);  // the bound is not vacuous
+  EXPECT_GT(positive, 1000) << positive;  // the bound is not vacuous
   EXPECT_EQ(failures, 0);
 }
 
