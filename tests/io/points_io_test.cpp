@@ -183,3 +183,100 @@ TEST(PointsIo, ReportsParsingThroughput) {
 
 }  // namespace
 }  // namespace contain::io
+
+namespace contain::io {
+namespace {
+
+// The pieces of read_points*_chunked, in order, as one array.
+template <class Point, class Read>
+Result<std::vector<Point>> read_in_pieces(const std::filesystem::path& path, std::size_t chunk,
+                                          Read&& read) {
+  std::vector<Point> all;
+  const Status status = read(path, chunk, [&](std::span<const Point> piece, double) {
+    all.insert(all.end(), piece.begin(), piece.end());
+  });
+  if (!status) return status.error();
+  return all;
+}
+
+bool same_bits(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::bit_cast<std::uint64_t>(a[i].x) != std::bit_cast<std::uint64_t>(b[i].x) ||
+        std::bit_cast<std::uint64_t>(a[i].y) != std::bit_cast<std::uint64_t>(b[i].y)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Plain pieces are parsed straight into points, any other through the table parser: every
+// piece size gives the whole-file reader's doubles bit for bit, and its errors on the same line.
+TEST(PointsIo, ChunkedReadingGivesTheWholeFileReadersPointsBitForBitAndItsErrors) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  std::string text;
+  char buffer[64];
+  for (int line = 0; line < 400; ++line) {
+    const double x = line % 37 == 5 ? -0.0 : u(rng), y = line % 41 == 3 ? 5e-324 : u(rng) * 1e-9;
+    std::string a(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+    std::string b(buffer, std::to_chars(buffer, buffer + sizeof buffer, y).ptr);
+    switch (line % 50) {
+      case 7:
+        text += "# a comment line\n";
+        break;
+      case 13:
+        text += "\n";
+        break;
+      case 21:
+        text += a + ", " + b + "\n";
+        continue;
+      case 29:
+        text += "\t+" + std::string(a[0] == '-' ? "1" : a) + "  " + b + " # tail\r\n";
+        continue;
+      case 33:
+        text += a + "\t" + b + "\r\n";
+        continue;
+      default:
+        break;
+    }
+    text += a + " " + b + "\n";
+  }
+  const test::TempFile file(".txt", text + "1.5 -2.5");  // the last line without its newline
+  const auto whole = read_points2(file.path());
+  ASSERT_TRUE(whole.ok()) << whole.error().what();
+  for (const std::size_t chunk : {1u, 2u, 3u, 7u, 50u, 64u, 1000u}) {
+    const auto pieces = read_in_pieces<Vec2>(file.path(), chunk, read_points2_chunked);
+    ASSERT_TRUE(pieces.ok()) << chunk << ": " << pieces.error().what();
+    EXPECT_TRUE(same_bits(*pieces, whole->points)) << "piece size " << chunk;
+  }
+  // An error late in the file: the same kind, message and line whatever the piece size.
+  for (const char* bad : {"1 x\n", "1 2 3\n", "1e999 2\n", "1,,2\n", "1 2,\n", "7\n"}) {
+    const test::TempFile broken(".txt", text + bad);
+    const auto expected = read_points2(broken.path());
+    ASSERT_FALSE(expected.ok()) << bad;
+    for (const std::size_t chunk : {1u, 7u, 64u, 1000u}) {
+      const auto got = read_in_pieces<Vec2>(broken.path(), chunk, read_points2_chunked);
+      ASSERT_FALSE(got.ok()) << bad << " piece size " << chunk;
+      EXPECT_EQ(got.error().kind, expected.error().kind) << bad << chunk;
+      EXPECT_EQ(got.error().line, expected.error().line) << bad << chunk;
+      // A wrong count is worded against the piece's first line (or the expected count when the
+      // piece starts there); other messages are the whole file's.
+      if (std::string(bad) != "1 2 3\n" && std::string(bad) != "7\n") {
+        EXPECT_EQ(got.error().message, expected.error().message) << bad << chunk;
+      }
+    }
+  }
+  // 3D: the same path with three columns.
+  const test::TempFile three(".txt", "1 2 3\n4\t5 6\r\n# c\n7,8,9\n10 11 12");
+  const auto whole3 = read_points3(three.path());
+  ASSERT_TRUE(whole3.ok());
+  for (const std::size_t chunk : {1u, 2u, 100u}) {
+    const auto pieces = read_in_pieces<Vec3>(three.path(), chunk, read_points3_chunked);
+    ASSERT_TRUE(pieces.ok());
+    EXPECT_EQ(*pieces, whole3->points) << chunk;
+  }
+}
+
+}  // namespace
+}  // namespace contain::io
