@@ -25,6 +25,17 @@ function(contain_library name)
   target_link_libraries(${target} PUBLIC ${ARG_DEPS})
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   contain_warnings(${target})
+  contain_sanitized_library(${target})
+endfunction()
+
+# The library's code under the sanitizers at -O1 (what AddressSanitizer's documentation advises
+# for speed): the suite's time goes into the library, and at -O0 the sanitizer build's tests took
+# 437 s of the CI's 22 minutes. The tests, the CLI and the fuzz drivers stay at -O0, which builds
+# faster; the checks are the same at either level.
+function(contain_sanitized_library target)
+  if(CONTAIN_SANITIZE)
+    target_compile_options(${target} PRIVATE $<$<CONFIG:Debug>:-O1>)
+  endif()
 endfunction()
 
 # contain_test(NAME SOURCES a_test.cpp ... LIBS contain_inside ...)
@@ -39,5 +50,8 @@ function(contain_test name)
     CONTAIN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     CONTAIN_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
   contain_warnings(${target})
+  # Test code at -O1 in optimised builds: the library under test keeps the build's level, and the
+  # tests' own code (drivers, GMP oracles) compiles a third faster than at -O3.
+  target_compile_options(${target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:-O1>)
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
 endfunction()
