@@ -228,5 +228,29 @@ TEST(DistancePredicates, ExactMidpointTiesGoToEven) {
   EXPECT_EQ(rounded_distance(y), 1 + 0x1p-51);
 }
 
+TEST(DistancePredicates, DistancesAHairFromAMidpointRoundToTheSideTheyAreOn) {
+  // The distance 1 + 2^-53 -+ 2^-100 lies 2^-100 below or above the midpoint between 1 and
+  // 1 + 2^-52: far inside the long double stages' error bounds (2^-64 relative), so only the
+  // exact stage can tell the sides apart, and a stage that decided from its rounded values would
+  // give one answer for both. The difference (1 + 2^-52) - (2^-53 +- 2^-100) is not exact in
+  // long double either.
+  // From 2^-53 -+ 2^-100 to 1 + 2^-52 along x (a point), and from (1e6, 3, 2^-53 -+ 2^-100) to a
+  // line along x and to a plane z = 1 + 2^-52 through points far along them.
+  constexpr double kTop = 1 + 0x1p-52;
+  const Triangle3 line{{0, 3, kTop}, {1e7, 3, kTop}, {0, 5, kTop}};
+  const Triangle3 plane{{0, 0, kTop}, {1e7, 0, kTop}, {0, 1e7, kTop}};
+  for (const double h : {0x1p-53 + 0x1p-100, 0x1p-53 - 0x1p-100}) {
+    const double want = h < 0x1p-53 ? kTop : 1.0;
+    const Vec3 p{1e6, 3, h};
+    for (const FlatPair3& pair :
+         {FlatPair3{point_flat({h, 0, 0}), point_flat({kTop, 0, 0})},
+          FlatPair3{point_flat(p), feature_flat(line, TriangleFeature::edge_ab)},
+          FlatPair3{point_flat(p), feature_flat(plane, TriangleFeature::face)}}) {
+      EXPECT_EQ(rounded_distance(pair), want) << pair.b.size;
+      EXPECT_EQ(rounded_point_distance(pair).distance, want) << pair.b.size;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contain::predicates
