@@ -34,14 +34,7 @@ struct CollideOptions {
   std::string out;
 };
 
-bool is_region_path(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
-}
-
-std::string json_vec(Vec3 v) {
+std::string json_point(Vec3 v) {
   return fmt::format("[{},{},{}]", v.x, v.y, v.z);
 }
 
@@ -55,11 +48,12 @@ std::string mesh_json(const collide::Contact& c, const collide::MeshPair& pair, 
       break;
     case collide::WitnessKind::vertex_of_a_in_b:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_a_in_b\",\"vertex\":{},\"point\":{}}}",
-                      c.vertex, json_vec(pair.a_vertices()[static_cast<std::size_t>(c.vertex)]));
+                      c.vertex, json_point(pair.a_vertices()[static_cast<std::size_t>(c.vertex)]));
       break;
     case collide::WitnessKind::vertex_of_b_in_a:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_b_in_a\",\"vertex\":{},\"point\":{}}}",
-                      c.vertex, json_vec(tb.apply(b.vertices[static_cast<std::size_t>(c.vertex)])));
+                      c.vertex,
+                      json_point(tb.apply(b.vertices[static_cast<std::size_t>(c.vertex)])));
       break;
     default:
       break;

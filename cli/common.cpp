@@ -2,9 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -78,6 +81,13 @@ Status write_output(std::string_view text, const std::string& path) {
 int emit(std::string_view text, const std::string& path) {
   const Status written = write_output(text, path);
   return written ? exit_ok : report(written.error());
+}
+
+bool is_region_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
 }
 
 bool stderr_is_terminal() {

@@ -63,6 +63,9 @@ struct Placements {
 /// closed: "FILE:LINE: warning: ring not closed ...").
 [[nodiscard]] Result<MultiPolygon> read_region_warned(const std::string& path);
 
+/// True when the path names a 2D region file (.wkt, .geojson, .json, any case) rather than a mesh.
+[[nodiscard]] bool is_region_path(const std::string& path);
+
 /// True when stderr is a terminal (progress is shown only then).
 [[nodiscard]] bool stderr_is_terminal();
 

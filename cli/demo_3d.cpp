@@ -35,12 +35,6 @@ Ring rectangle(Vec2 min, Vec2 max) {
   return {{min.x, min.y}, {max.x, min.y}, {max.x, max.y}, {min.x, max.y}};
 }
 
-Transform shift(Vec3 t) {
-  Transform transform;
-  transform.t = t;
-  return transform;
-}
-
 // The torus every 3D scene shares: major radius 2, tube radius 0.6, around the z axis.
 Mesh demo_torus() {
   return scenes::torus(2.0, 0.6, 96, 48);

@@ -15,12 +15,6 @@
 namespace contain::cli::demo {
 namespace {
 
-Transform shift(Vec3 t) {
-  Transform transform;
-  transform.t = t;
-  return transform;
-}
-
 // The side view (x, z) of a box's footprint at a translation.
 Ring side_view(const Box3& box, Vec3 at) {
   return {{box.min.x + at.x, box.min.z + at.z},

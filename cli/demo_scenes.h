@@ -10,6 +10,7 @@
 #include "contain/core/location.h"
 #include "contain/core/result.h"
 #include "contain/io/svg.h"
+#include "contain/values/transform.h"
 
 namespace contain::cli::demo {
 
@@ -36,6 +37,13 @@ struct Counts {
 
 /// The in / on / out legend every containment picture carries.
 void location_legend(io::SvgCanvas& canvas);
+
+/// A translation by t.
+[[nodiscard]] inline Transform shift(Vec3 t) {
+  Transform transform;
+  transform.t = t;
+  return transform;
+}
 
 /// Remembers a file the demo wrote, for the closing list.
 void record(const std::string& name);

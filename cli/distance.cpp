@@ -41,13 +41,6 @@ struct DistanceOptions {
   std::string out;
 };
 
-bool is_region_path(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
-}
-
 // %.17g: enough digits to read back the same double.
 std::string number(double x) {
   return fmt::format("{:.17g}", x);

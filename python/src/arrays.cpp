@@ -100,6 +100,11 @@ Doubles as_vector(const py::handle& object, py::ssize_t count, const char* name)
   return to_doubles(array);
 }
 
+Vec3 as_vec3(const py::handle& object, const char* name) {
+  const Doubles v = as_vector(object, 3, name);
+  return {v.at(0), v.at(1), v.at(2)};
+}
+
 Items as_items(const py::handle& object, py::ssize_t rows, py::ssize_t columns, const char* name) {
   py::array array = to_array(object, name);
   const std::string flat = "(N, " + std::to_string(rows * columns) + ")";

@@ -37,6 +37,8 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// `object` as a float64 vector of exactly `count` values (count == -1: any length).
 [[nodiscard]] Doubles as_vector(const py::handle& object, py::ssize_t count, const char* name);
+/// Three numbers (any sequence or array of 3) as a point.
+[[nodiscard]] Vec3 as_vec3(const py::handle& object, const char* name);
 
 /// A batch of small fixed-shape items (triangles, segments, boxes), flat: row i of `values` is
 /// item i's `rows * columns` numbers in row-major order. `single` is true when the caller gave

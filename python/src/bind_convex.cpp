@@ -21,9 +21,8 @@ namespace {
 
 using namespace pybind11::literals;
 
-Vec3 vec3(const py::handle& object, const char* name) {
-  const Doubles v = as_vector(object, 3, name);
-  const Vec3 p{v.at(0), v.at(1), v.at(2)};
+Vec3 finite_vec3(const py::handle& object, const char* name) {
+  const Vec3 p = as_vec3(object, name);
   if (!is_finite(p)) fail(ErrorKind::invalid_value, std::string(name) + " has a NaN or Inf");
   return p;
 }
@@ -81,7 +80,7 @@ ConvexPolyhedron, planes or a convex mesh may be given.
       .def(
           "locate_point",
           [](const ConvexPolyhedron& p, const ArrayLike& point) {
-            return location_object(inside::point_in_convex(p, vec3(point.object, "point")));
+            return location_object(inside::point_in_convex(p, finite_vec3(point.object, "point")));
           },
           "point"_a, "Where one point lies, as a contain.Location.")
       .def_property_readonly(
@@ -127,13 +126,13 @@ the answer GJK's floating-point one.
             if (!std::isfinite(radius) || radius < 0) {
               fail(ErrorKind::invalid_value, "radius must be finite and >= 0");
             }
-            return collide::ConvexShape::sphere({vec3(center.object, "center"), radius});
+            return collide::ConvexShape::sphere({finite_vec3(center.object, "center"), radius});
           },
           "center"_a, "radius"_a, "The closed ball |p - center| <= radius.")
       .def_static(
           "box",
           [](const ArrayLike& lo, const ArrayLike& hi) {
-            const Box3 box{vec3(lo.object, "min"), vec3(hi.object, "max")};
+            const Box3 box{finite_vec3(lo.object, "min"), finite_vec3(hi.object, "max")};
             if (box.empty()) fail(ErrorKind::invalid_value, "box min exceeds max on some axis");
             return collide::ConvexShape::box(box);
           },
@@ -149,7 +148,7 @@ the answer GJK's floating-point one.
       .def(
           "support",
           [](const collide::ConvexShape& s, const ArrayLike& direction) {
-            const Vec3 p = s.support(vec3(direction.object, "direction"));
+            const Vec3 p = s.support(finite_vec3(direction.object, "direction"));
             return py::array_t<double>(3, &p.x);
           },
           "direction"_a, "A point of the shape farthest in `direction` (float64 array of 3).")

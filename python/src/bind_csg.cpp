@@ -58,11 +58,6 @@ ImplicitFunction python_implicit(py::function function) {
   };
 }
 
-Vec3 vec3(const py::handle& object, const char* name) {
-  const Doubles v = as_vector(object, 3, name);
-  return {v.at(0), v.at(1), v.at(2)};
-}
-
 // The contract's JSON form: a mapping (dumped with json), JSON text, or a file.
 Csg csg_from_json(const py::handle& object, const py::object& base_dir) {
   io::CsgJsonOptions options{.source = "<csg>"};
@@ -166,13 +161,13 @@ Example:
       .def_static(
           "sphere",
           [](const ArrayLike& center, double radius) {
-            return Csg::leaf(Sphere{vec3(center.object, "center"), radius});
+            return Csg::leaf(Sphere{as_vec3(center.object, "center"), radius});
           },
           "center"_a, "radius"_a, "The closed ball |p - center| <= radius.")
       .def_static(
           "box",
           [](const ArrayLike& lo, const ArrayLike& hi) {
-            return Csg::leaf(Box3{vec3(lo.object, "min"), vec3(hi.object, "max")});
+            return Csg::leaf(Box3{as_vec3(lo.object, "min"), as_vec3(hi.object, "max")});
           },
           "min"_a, "max"_a, "The closed axis-aligned box [min, max].")
       .def_static(
@@ -310,7 +305,7 @@ Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 
       .def(
           "locate_point",
           [](const inside::CsgSolid& solid, const ArrayLike& point) {
-            const Vec3 p = vec3(point.object, "point");
+            const Vec3 p = as_vec3(point.object, "point");
             if (!is_finite(p)) fail(ErrorKind::invalid_value, "point has a NaN or Inf");
             const Location where = solid.locate(p);
             raise_implicit_error();
