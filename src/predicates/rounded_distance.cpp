@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 #include "contain/predicates/big_float.h"
@@ -232,44 +233,54 @@ ErrLD bounded(const Mag& x) {
 }
 
 template <class Pair>
+double distance_exact(const Pair& x) {
+  const auto exact = detail::squared_distance<BigFloat>(x);
+  return sqrt_stage_b(exact.num, exact.den);
+}
+
+template <class Pair>
 double distance_of(const Pair& x) {
   double out = 0.0;
   const auto fast = detail::squared_distance<Mag>(x);
   if (sqrt_stage_a(bounded(fast.num), bounded(fast.den), out)) return out;
   const auto q = detail::squared_distance<ErrLD>(x);
   if (sqrt_stage_a(q.num, q.den, out)) return out;
-  const auto exact = detail::squared_distance<BigFloat>(x);
-  return sqrt_stage_b(exact.num, exact.den);
+  return distance_exact(x);
 }
 
-// Stage 0, then the running-error stage, then the exact one, for every coordinate of both points.
-template <class Pair, std::size_t N>
-void closest_coordinates(const Pair& x, double (&out)[N]) {
+// One long double stage for every coordinate of both closest points (a's, then b's): false
+// when one is left open.
+template <class T, class Pair, class ToErr, std::size_t N>
+bool closest_stage(const Pair& x, ToErr&& to_err, double (&out)[N]) {
   constexpr std::size_t dim = N / 2;
-  bool decided = true;
-  {
-    const auto q = detail::closest_points<Mag>(x);
-    const ErrLD den = bounded(q.den);
-    for (std::size_t i = 0; i < dim && decided; ++i) {
-      decided = quotient_stage_a(bounded(q.a[i]), den, out[i]) &&
-                quotient_stage_a(bounded(q.b[i]), den, out[dim + i]);
+  const auto q = detail::closest_points<T>(x);
+  const ErrLD den = to_err(q.den);
+  for (std::size_t i = 0; i < dim; ++i) {
+    if (!quotient_stage_a(to_err(q.a[i]), den, out[i]) ||
+        !quotient_stage_a(to_err(q.b[i]), den, out[dim + i])) {
+      return false;
     }
   }
-  if (decided) return;
-  decided = true;
-  {
-    const auto q = detail::closest_points<ErrLD>(x);
-    for (std::size_t i = 0; i < dim; ++i) {
-      decided &= quotient_stage_a(q.a[i], q.den, out[i]);
-      decided &= quotient_stage_a(q.b[i], q.den, out[dim + i]);
-    }
-  }
-  if (decided) return;
+  return true;
+}
+
+// The same from the exact stage.
+template <class Pair, std::size_t N>
+void closest_exact(const Pair& x, double (&out)[N]) {
+  constexpr std::size_t dim = N / 2;
   const auto e = detail::closest_points<BigFloat>(x);
   for (std::size_t i = 0; i < dim; ++i) {
     out[i] = quotient_stage_b(e.a[i], e.den);
     out[dim + i] = quotient_stage_b(e.b[i], e.den);
   }
+}
+
+// Stage 0, then the running-error stage, then the exact one.
+template <class Pair, std::size_t N>
+void closest_coordinates(const Pair& x, double (&out)[N]) {
+  if (closest_stage<Mag>(x, bounded, out)) return;
+  if (closest_stage<ErrLD>(x, std::identity{}, out)) return;
+  closest_exact(x, out);
 }
 
 // The terms of a point p and a flat q in common between its squared distance N / D and its
@@ -299,18 +310,27 @@ void point_flat_terms(Vec3 p, const Flat3& flat, T& n, T& d, std::array<T, 3>& p
   }
 }
 
-// The long double stages of rounded_point_distance for one kind of bounded value: false when
-// one of the four roundings is left open.
+// One long double stage of rounded_point_distance: settles what is still open of the distance
+// and of the closest point (all three coordinates together).
+struct Settled {
+  bool distance = false;
+  bool point = false;
+};
 template <class T, class ToErr>
-bool point_flat_stage(Vec3 p, const Flat3& flat, ToErr&& to_err, RoundedPointDistance3& out) {
+void point_flat_stage(Vec3 p, const Flat3& flat, ToErr&& to_err, RoundedPointDistance3& out,
+                      Settled& settled) {
   T n, d;
   std::array<T, 3> point;
   point_flat_terms(p, flat, n, d, point);
   const ErrLD den = to_err(d);
-  return sqrt_stage_a(to_err(n), den, out.distance) &&
-         quotient_stage_a(to_err(point[0]), den, out.point.x) &&
-         quotient_stage_a(to_err(point[1]), den, out.point.y) &&
-         quotient_stage_a(to_err(point[2]), den, out.point.z);
+  if (!settled.distance) settled.distance = sqrt_stage_a(to_err(n), den, out.distance);
+  if (!settled.point) {
+    Vec3 c;
+    settled.point = quotient_stage_a(to_err(point[0]), den, c.x) &&
+                    quotient_stage_a(to_err(point[1]), den, c.y) &&
+                    quotient_stage_a(to_err(point[2]), den, c.z);
+    if (settled.point) out.point = c;
+  }
 }
 
 }  // namespace
@@ -332,12 +352,19 @@ RoundedPointDistance3 rounded_point_distance(const FlatPair3& x) {
   if (x.a.size != 1) return {rounded_distance(x), rounded_closest_points(x).b};
   const Vec3 p = x.a.points[0];
   RoundedPointDistance3 out{};
-  if (point_flat_stage<Mag>(p, x.b, bounded, out)) return out;
-  if (point_flat_stage<ErrLD>(
-          p, x.b, [](const ErrLD& e) { return e; }, out))
-    return out;
-  // Any side the long double bounds leave open: the exact stages of the two functions.
-  return {rounded_distance(x), rounded_closest_points(x).b};
+  Settled settled;
+  point_flat_stage<Mag>(p, x.b, bounded, out, settled);
+  if (!settled.distance || !settled.point) {
+    point_flat_stage<ErrLD>(p, x.b, std::identity{}, out, settled);
+  }
+  // Whatever the long double bounds leave open: the exact stages.
+  if (!settled.distance) out.distance = distance_exact(x);
+  if (!settled.point) {
+    double c[6];
+    closest_exact(x, c);
+    out.point = {c[3], c[4], c[5]};
+  }
+  return out;
 }
 
 ClosestPoints2 rounded_closest_points(const FlatPair2& x) {

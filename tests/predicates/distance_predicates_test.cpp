@@ -233,9 +233,9 @@ TEST(DistancePredicates, DistancesAHairFromAMidpointRoundToTheSideTheyAreOn) {
   // 1 + 2^-52: far inside the long double stages' error bounds (2^-64 relative), so only the
   // exact stage can tell the sides apart, and a stage that decided from its rounded values would
   // give one answer for both. The difference (1 + 2^-52) - (2^-53 +- 2^-100) is not exact in
-  // long double either.
-  // From 2^-53 -+ 2^-100 to 1 + 2^-52 along x (a point), and from (1e6, 3, 2^-53 -+ 2^-100) to a
-  // line along x and to a plane z = 1 + 2^-52 through points far along them.
+  // long double either. The pairs: from 2^-53 -+ 2^-100 to 1 + 2^-52 along x (a point), and
+  // from (1e6, 3, 2^-53 -+ 2^-100) to a line along x and to a plane z = 1 + 2^-52 through points
+  // far along them.
   constexpr double kTop = 1 + 0x1p-52;
   const Triangle3 line{{0, 3, kTop}, {1e7, 3, kTop}, {0, 5, kTop}};
   const Triangle3 plane{{0, 0, kTop}, {1e7, 0, kTop}, {0, 1e7, kTop}};
