@@ -123,10 +123,39 @@ TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
   }
   tree_ = SearchTree(boxes, options);
   ordered_.reserve(triangles_.size());
-  for (const std::int32_t i : tree_.items())
+  planes_.reserve(triangles_.size());
+  for (const std::int32_t i : tree_.items()) {
     ordered_.push_back(triangles_[static_cast<std::size_t>(i)]);
+    planes_.emplace_back(ordered_.back());
+  }
   slack_ = triangle_slack(max_abs);
   max_abs_ = max_abs;
+}
+
+PlaneBound::PlaneBound(const Triangle3& t) {
+  const Vec3 n = cross(t.b - t.a, t.c - t.a);
+  const double nn = dot(n, n);
+  if (!(nn >= 0x1p-900) || !std::isfinite(nn)) return;  // k_ = 0: no bound
+  const Vec3 u = n * (1.0 / std::sqrt(nn));
+  const double uu = dot(u, u);
+  const double d = dot(u, t.a);
+  // e: max over the corners v of |u . v - d| (the exact value, u and d as stored): the computed
+  // dot product is within 3.01 eps of the sum of |u_i v_i| (perm); 8 eps and the final factor
+  // cover that and the roundings of this bound; 2^-1000 covers products that underflow.
+  double e = 0.0;
+  for (const Vec3 v : {t.a, t.b, t.c}) {
+    const double perm = (std::fabs(u.x * v.x) + std::fabs(u.y * v.y)) + std::fabs(u.z * v.z);
+    e = std::max(e, std::fabs(dot(u, v) - d) + 8 * kEps * perm);
+  }
+  e = e * (1 + 16 * kEps) + 0x1p-1000;
+  // k <= 1 / |u|: uu is within 3.01 eps of |u|^2; the root, the quotient and the factor round
+  // once each.
+  const double k = 1.0 / std::sqrt(uu) * (1 - 8 * kEps);
+  if (!std::isfinite(e) || !std::isfinite(d) || !(k > 0) || !std::isfinite(k)) return;
+  n_ = u;
+  d_ = d;
+  e_ = e;
+  k_ = k;
 }
 
 HalfSpaceTest::HalfSpaceTest(Vec3 p, Vec3 w, double best, double max_abs) {
@@ -166,6 +195,15 @@ void TriangleSearch::contenders(Vec3 p, std::vector<Contender>& out, SearchStats
           hi = kInf;
           return;
         }
+        // Then the triangle's own plane, before its closest point (a triangle farther than the
+        // best is out whatever its upper bound).
+        const double plane = planes_[static_cast<std::size_t>(k)].lower(p);
+        if (plane > best) {
+          ++cheap;
+          lo = plane;
+          hi = kInf;
+          return;
+        }
         const Vec3 w = triangle_bounds(p, t, slack_, lo, hi);
         if (hi < best) {
           best = hi;
@@ -180,6 +218,12 @@ int TriangleSearch::within(Vec3 p, double d2_lo, double d2_hi, std::vector<Conte
   return tree_.within(
       p, d2_lo, d2_hi,
       [&](std::int32_t k, double& lo, double& hi) {
+        const double plane = planes_[static_cast<std::size_t>(k)].lower(p);
+        if (plane > d2_hi) {  // beyond the distance asked: out, as the full bounds would say
+          lo = plane;
+          hi = kInf;
+          return;
+        }
         triangle_bounds(p, ordered_[static_cast<std::size_t>(k)], slack_, lo, hi);
       },
       out);
