@@ -178,13 +178,14 @@ void run(const std::string& name, const Mesh& mesh, std::size_t count, bool peer
       "mesh %s: %zu triangles, regime %s; %zu points uniform in its bounding box, %zu inside\n",
       name.c_str(), mesh.triangles.size(), to_string(prepared.regime()), points.size(), inside);
   std::printf(
-      "contain per query: %.1f nodes, %.1f triangles bounded (%.1f by the cheap bound alone), "
-      "%.2f contenders, %.3f exact comparisons\n",
+      "contain per query: %.1f nodes, %.1f triangles bounded (%.1f by the cheap tests alone), "
+      "%.2f contenders, %.3f exact comparisons, %.2f settled by a shared feature\n",
       static_cast<double>(stats.nodes) / static_cast<double>(stats.queries),
       static_cast<double>(stats.triangles) / static_cast<double>(stats.queries),
       static_cast<double>(stats.cheap) / static_cast<double>(stats.queries),
       static_cast<double>(stats.contenders) / static_cast<double>(stats.queries),
-      static_cast<double>(stats.exact_comparisons) / static_cast<double>(stats.queries));
+      static_cast<double>(stats.exact_comparisons) / static_cast<double>(stats.queries),
+      static_cast<double>(stats.shared_features) / static_cast<double>(stats.queries));
   std::printf("%-44s %9s %9s %12s %10s %6s %6s\n", "method (1 thread)", "build s", "query s",
               "points/s", "x contain", "sign", "dist");
   for (const Row& r : rows) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contain/predicates/closest_feature.h"
+#include "contain/predicates/cross_dot.h"
 #include "contain/predicates/squared_distance.h"
 #include "distance/flat_answer.h"
 #include "distance/morton_order.h"
@@ -34,8 +35,51 @@ std::vector<Triangle3> triangles_of(const Mesh& mesh) {
 
 struct Winner {
   std::int32_t triangle = -1;
+  predicates::TriangleFeature feature{};
   FlatPair3 pair{};
 };
+
+// Corner k of t (0, 1, 2: a, b, c).
+Vec3 corner(const Triangle3& t, int k) {
+  return k == 0 ? t.a : (k == 1 ? t.b : t.c);
+}
+
+// The corner of t at exactly v, or -1.
+int corner_at(const Triangle3& t, Vec3 v) {
+  for (int k = 0; k < 3; ++k)
+    if (corner(t, k) == v) return k;
+  return -1;
+}
+
+// Is t proven no nearer to p than the winner's feature (so that it can neither win nor, coming
+// later in index order, take a tie)? Only where t shares that feature, by one or two exact
+// predicates in place of t's whole closest-feature decision (the fan around a closest vertex, the
+// two faces along a closest edge: most contenders of a far point):
+// - a vertex v of t is a closest point of t iff no edge of t leads from v towards p,
+//   dot_sign(v, u, p) <= 0 for both other corners u (t is the hull of its corners; degenerate
+//   triangles too);
+// - where the winner's closest point q is inside the edge (v, w) (its feature is that edge) and t
+//   has the edge with third corner x, q is closest in t iff (p - q) . (x - q) <= 0, and with
+//   p - q perpendicular to the edge that is the sign of ((w - v) x (p - v)) . ((w - v) x (x - v))
+//   (Binet-Cauchy), i.e. cross_dot(v, w, p, x) <= 0.
+bool no_nearer(Vec3 p, const Triangle3& t, const Triangle3& won, predicates::TriangleFeature f) {
+  using predicates::TriangleFeature;
+  const int fi = static_cast<int>(f);
+  if (f <= TriangleFeature::vertex_c) {
+    const Vec3 v = corner(won, fi);
+    const int k = corner_at(t, v);
+    if (k < 0) return false;
+    return predicates::dot_sign(v, corner(t, (k + 1) % 3), p) != Sign::positive &&
+           predicates::dot_sign(v, corner(t, (k + 2) % 3), p) != Sign::positive;
+  }
+  if (f == TriangleFeature::face) return false;
+  const int e = fi - static_cast<int>(TriangleFeature::edge_ab);
+  const Vec3 v = corner(won, e), w = corner(won, (e + 1) % 3);
+  const int kv = corner_at(t, v), kw = corner_at(t, w);
+  if (kv < 0 || kw < 0 || kv == kw) return false;
+  const Vec3 x = corner(t, 3 - kv - kw);
+  return predicates::cross_dot(v, w, p, x) != Sign::positive;
+}
 
 // The exact stage: among the contenders, the triangle of least exact distance, ties to the
 // lowest index (distance-tie rule). Each contender's closest feature is decided exactly; equal
@@ -48,16 +92,21 @@ Winner resolve(Vec3 p, const detail::TriangleSearch& search,
   Winner best;
   for (const detail::Contender& c : contenders) {
     const Triangle3& t = search.triangle(c.item);
-    const Flat3 flat = predicates::feature_flat(t, predicates::closest_feature(p, t));
+    if (best.triangle >= 0 && no_nearer(p, t, search.triangle(best.triangle), best.feature)) {
+      ++t_stats.shared_features;
+      continue;
+    }
+    const predicates::TriangleFeature feature = predicates::closest_feature(p, t);
+    const Flat3 flat = predicates::feature_flat(t, feature);
     const FlatPair3 pair{predicates::point_flat(p), flat};
     if (best.triangle < 0) {
-      best = {c.item, pair};
+      best = {c.item, feature, pair};
       continue;
     }
     if (predicates::same_flat(flat, best.pair.b)) continue;
     ++t_stats.exact_comparisons;
     if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
-      best = {c.item, pair};
+      best = {c.item, feature, pair};
     }
   }
   return best;

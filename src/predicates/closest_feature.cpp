@@ -1,6 +1,7 @@
 #include "contain/predicates/closest_feature.h"
 
 #include <array>
+#include <cmath>
 
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/cross_dot.h"
@@ -9,6 +10,7 @@
 #include "predicates/filtered_sign.h"
 #include "predicates/flat_formulas.h"
 #include "predicates/running_error.h"
+#include "predicates/stages.h"
 
 namespace contain::predicates {
 
@@ -21,8 +23,26 @@ T dot_of(V a, V b, V p) {
   return detail::dot(detail::sub<T>(b, a), detail::sub<T>(p, a));
 }
 
+// Filter: each monomial of (b - a) . (p - a) passes through at most 5 roundings (two
+// differences, the product, two sums), so |error| <= gamma_5 * permanent < 6 eps * computed
+// permanent; products that underflow lose at most 2^-1075 each, which DBL_MIN covers. Then the
+// running-error stage and big numbers.
+inline double dot_terms(Vec3 u, Vec3 v, double& permanent) {
+  permanent = (std::fabs(u.x * v.x) + std::fabs(u.y * v.y)) + std::fabs(u.z * v.z);
+  return (u.x * v.x + u.y * v.y) + u.z * v.z;
+}
+inline double dot_terms(Vec2 u, Vec2 v, double& permanent) {
+  permanent = std::fabs(u.x * v.x) + std::fabs(u.y * v.y);
+  return u.x * v.x + u.y * v.y;
+}
+
 template <class V>
 Sign dot_sign_of(V a, V b, V p) {
+  double permanent = 0.0;
+  const double value = dot_terms(b - a, p - a, permanent);
+  const double errbound = 6.0 * detail::kEpsilon * permanent + detail::kUnderflowGuard;
+  if (value > errbound) return Sign::positive;
+  if (-value > errbound) return Sign::negative;
   const Err<double> fast = dot_of<Err<double>>(a, b, p);
   if (fast.decided()) return fast.sign();
   return dot_of<BigFloat>(a, b, p).sign();

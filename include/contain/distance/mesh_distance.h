@@ -38,9 +38,13 @@ struct MeshDistanceStats {
   std::size_t queries = 0;
   std::size_t nodes = 0;      ///< hierarchy nodes entered
   std::size_t triangles = 0;  ///< triangles bounded in floating point
-  std::size_t cheap = 0;  ///< of those, put out by the separation along the best direction alone
+  /// of those, put out by a cheap test alone (the half-space along the best direction, or the
+  /// triangle's own plane)
+  std::size_t cheap = 0;
   std::size_t contenders = 0;         ///< triangles passed to the exact stage
   std::size_t exact_comparisons = 0;  ///< exact comparisons between distinct features
+  /// contenders settled by sharing the winner's vertex or edge (one or two exact signs)
+  std::size_t shared_features = 0;
 };
 
 /// A triangle mesh prepared for distance queries.
