@@ -67,8 +67,10 @@ using Double2 = double __attribute__((vector_size(16)));
 inline void box_lower_bound4(Vec3 p, const float lo[3][4], const float hi[3][4], double out[4]) {
   constexpr double kEps = 0x1p-53;
   const double pc[3] = {p.x, p.y, p.z};
+#pragma GCC unroll 2
   for (int half = 0; half < 4; half += 2) {
     Double2 sum{};
+#pragma GCC unroll 3
     for (int a = 0; a < 3; ++a) {
       const Double2 l{static_cast<double>(lo[a][half]), static_cast<double>(lo[a][half + 1])};
       const Double2 h{static_cast<double>(hi[a][half]), static_cast<double>(hi[a][half + 1])};
@@ -189,6 +191,7 @@ void SearchTree::contenders(Vec3 p, Bound&& bound, std::vector<Contender>& out, 
       // The children within the bound, farthest first (insertion sort of at most four).
       Entry near[4]{};
       int n = 0;
+#pragma GCC unroll 4
       for (int c = 0; c < 4; ++c) {
         if (node.count[c] < 0 || !(lb[c] <= best)) continue;  // an empty lane, or too far
         const Entry x{node.child[c], node.count[c], lb[c]};
