@@ -350,6 +350,8 @@ ClosestPoints3 rounded_closest_points(const FlatPair3& x) {
 
 RoundedPointDistance3 rounded_point_distance(const FlatPair3& x) {
   if (x.a.size != 1) return {rounded_distance(x), rounded_closest_points(x).b};
+  // A vertex is its own closest point, exactly: only the distance needs rounding.
+  if (x.b.size == 1) return {rounded_distance(x), x.b.points[0]};
   const Vec3 p = x.a.points[0];
   RoundedPointDistance3 out{};
   Settled settled;
