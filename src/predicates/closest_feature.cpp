@@ -79,7 +79,80 @@ SegmentFeature closest_feature(Vec2 p, const Segment2& s) {
   return segment_feature(p, s);
 }
 
+namespace {
+
+// Ericson's region of p for t ("Real-Time Collision Detection", 5.1.5) in doubles: only a guess,
+// which closest_feature then proves with two or three exact signs.
+TriangleFeature guessed_feature(Vec3 p, const Triangle3& t) {
+  const Vec3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return TriangleFeature::vertex_a;
+  const Vec3 bp = p - t.b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return TriangleFeature::vertex_b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return TriangleFeature::edge_ab;
+  const Vec3 cp = p - t.c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return TriangleFeature::vertex_c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return TriangleFeature::edge_ca;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return TriangleFeature::edge_bc;
+  return TriangleFeature::face;
+}
+
+Vec3 corner(const Triangle3& t, int k) {
+  return k == 0 ? t.a : (k == 1 ? t.b : t.c);
+}
+
+// The vertex feature of corner i: named by the first corner at the same point.
+TriangleFeature vertex_named(const Triangle3& t, int i) {
+  for (int k = 0; k < i; ++k)
+    if (corner(t, k) == corner(t, i)) return static_cast<TriangleFeature>(k);
+  return static_cast<TriangleFeature>(i);
+}
+
+// Is the guess proven to be closest_feature's answer? (false: undecided, not wrong)
+// - vertex v: dot_sign(v, u, p) <= 0 towards both other corners u makes v a closest point of t
+//   (t is the hull of its corners); one of them < 0 means p's projection on the plane is not v,
+//   so not in the closed triangle: the answer is not `face`, and v, the unique closest point,
+//   is the vertex the edges reduce to.
+// - edge (v, w) with third corner x: both dot signs > 0 put p's foot q on the line strictly
+//   inside the edge, and cross_dot(v, w, p, x) < 0 puts p outside across it (so not `face`, and
+//   t not degenerate) with (p - q) . (x - q) < 0 (Binet-Cauchy, as in docs/robustness.md), so q
+//   is t's unique closest point, in no other edge.
+// - face: all three cross_dots > 0 (none can be, for a degenerate triangle).
+bool proven(Vec3 p, const Triangle3& t, TriangleFeature f) {
+  if (f <= TriangleFeature::vertex_c) {
+    const int i = static_cast<int>(f);
+    const Vec3 v = corner(t, i);
+    const Sign s1 = dot_sign(v, corner(t, (i + 1) % 3), p);
+    if (s1 == Sign::positive) return false;
+    const Sign s2 = dot_sign(v, corner(t, (i + 2) % 3), p);
+    return s2 != Sign::positive && (s1 == Sign::negative || s2 == Sign::negative);
+  }
+  if (f == TriangleFeature::face) {
+    return cross_dot(t.a, t.b, p, t.c) == Sign::positive &&
+           cross_dot(t.b, t.c, p, t.a) == Sign::positive &&
+           cross_dot(t.c, t.a, p, t.b) == Sign::positive;
+  }
+  const int e = static_cast<int>(f) - static_cast<int>(TriangleFeature::edge_ab);
+  const Vec3 v = corner(t, e), w = corner(t, (e + 1) % 3), x = corner(t, (e + 2) % 3);
+  return dot_sign(v, w, p) == Sign::positive && dot_sign(w, v, p) == Sign::positive &&
+         cross_dot(v, w, p, x) == Sign::negative;
+}
+
+}  // namespace
+
 TriangleFeature closest_feature(Vec3 p, const Triangle3& t) {
+  // Most calls: the floating-point region, proven by two or three exact signs.
+  const TriangleFeature guess = guessed_feature(p, t);
+  if (proven(p, t, guess)) {
+    return guess <= TriangleFeature::vertex_c ? vertex_named(t, static_cast<int>(guess)) : guess;
+  }
+  // The rest (ties, degenerate triangles, points on the boundary planes, wrong guesses): the
+  // definition, step by step.
   if (!collinear(t.a, t.b, t.c) && cross_dot(t.a, t.b, p, t.c) != Sign::negative &&
       cross_dot(t.b, t.c, p, t.a) != Sign::negative &&
       cross_dot(t.c, t.a, p, t.b) != Sign::negative) {

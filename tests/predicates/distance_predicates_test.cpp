@@ -58,8 +58,45 @@ bool same_double(double x, double y) {
   return x == y && std::signbit(x) == std::signbit(y);
 }
 
-// Checks one case: the feature's flat distance is the triangle's exact distance; the rounded
-// distance and closest point are the nearest doubles of the oracle's.
+// The feature closest_feature's contract names, from rationals: `face` where the triangle is
+// not degenerate and p projects into it (closed); else the vertex at the exact closest point
+// (named by the first corner there), or the first of ab, bc, ca holding it inside.
+TriangleFeature contract_feature(const test::PointTriangleCase& c, const QVec3& closest) {
+  const QVec3 v[3] = {test::exact(c.t.a), test::exact(c.t.b), test::exact(c.t.c)};
+  const QVec3 p = test::exact(c.p);
+  const QVec3 n = test::qcross(test::qsub(v[1], v[0]), test::qsub(v[2], v[0]));
+  if (test::qdot(n, n) != 0) {
+    bool inside = true;
+    for (int e = 0; e < 3; ++e) {
+      const QVec3 edge = test::qsub(v[(e + 1) % 3], v[e]);
+      const QVec3 side = test::qcross(edge, test::qsub(p, v[e]));
+      const QVec3 third = test::qcross(edge, test::qsub(v[(e + 2) % 3], v[e]));
+      inside = inside && test::qdot(side, third) >= 0;
+    }
+    if (inside) return TriangleFeature::face;
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (v[k].x == closest.x && v[k].y == closest.y && v[k].z == closest.z) {
+      int first = k;
+      for (int j = k - 1; j >= 0; --j)
+        if (v[j].x == v[k].x && v[j].y == v[k].y && v[j].z == v[k].z) first = j;
+      return static_cast<TriangleFeature>(first);
+    }
+  }
+  for (int e = 0; e < 3; ++e) {
+    const QVec3 d = test::qsub(v[(e + 1) % 3], v[e]), r = test::qsub(closest, v[e]);
+    const QVec3 x = test::qcross(d, r);
+    const mpq_class along = test::qdot(r, d);
+    if (x.x == 0 && x.y == 0 && x.z == 0 && along > 0 && along < test::qdot(d, d)) {
+      return static_cast<TriangleFeature>(static_cast<int>(TriangleFeature::edge_ab) + e);
+    }
+  }
+  return TriangleFeature::face;  // not reached: the closest point is on the boundary
+}
+
+// Checks one case: the feature's flat distance is the triangle's exact distance, and the feature
+// is the one the contract names; the rounded distance and closest point are the nearest doubles
+// of the oracle's.
 int check_case(const test::PointTriangleCase& c) {
   const test::ExactClosest3 want = test::exact_closest(c.p, c.t);
   const TriangleFeature f = closest_feature(c.p, c.t);
@@ -67,6 +104,12 @@ int check_case(const test::PointTriangleCase& c) {
   int failures = 0;
   if (exact_flat_distance(pair) != want.squared_distance) {
     ADD_FAILURE() << "feature " << static_cast<int>(f) << " not closest for " << describe(c);
+    return 1;
+  }
+  const TriangleFeature named = contract_feature(c, want.point);
+  if (f != named) {
+    ADD_FAILURE() << "feature " << static_cast<int>(f) << " where the contract names "
+                  << static_cast<int>(named) << " for " << describe(c);
     return 1;
   }
   const double d = rounded_distance(pair);
