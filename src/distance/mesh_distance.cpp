@@ -39,15 +39,10 @@ struct Winner {
   FlatPair3 pair{};
 };
 
-// Corner k of t (0, 1, 2: a, b, c).
-Vec3 corner(const Triangle3& t, int k) {
-  return k == 0 ? t.a : (k == 1 ? t.b : t.c);
-}
-
 // The corner of t at exactly v, or -1.
 int corner_at(const Triangle3& t, Vec3 v) {
   for (int k = 0; k < 3; ++k)
-    if (corner(t, k) == v) return k;
+    if (t.corner(k) == v) return k;
   return -1;
 }
 
@@ -66,18 +61,18 @@ bool no_nearer(Vec3 p, const Triangle3& t, const Triangle3& won, predicates::Tri
   using predicates::TriangleFeature;
   const int fi = static_cast<int>(f);
   if (f <= TriangleFeature::vertex_c) {
-    const Vec3 v = corner(won, fi);
+    const Vec3 v = won.corner(fi);
     const int k = corner_at(t, v);
     if (k < 0) return false;
-    return predicates::dot_sign(v, corner(t, (k + 1) % 3), p) != Sign::positive &&
-           predicates::dot_sign(v, corner(t, (k + 2) % 3), p) != Sign::positive;
+    return predicates::dot_sign(v, t.corner((k + 1) % 3), p) != Sign::positive &&
+           predicates::dot_sign(v, t.corner((k + 2) % 3), p) != Sign::positive;
   }
   if (f == TriangleFeature::face) return false;
   const int e = fi - static_cast<int>(TriangleFeature::edge_ab);
-  const Vec3 v = corner(won, e), w = corner(won, (e + 1) % 3);
+  const Vec3 v = won.corner(e), w = won.corner((e + 1) % 3);
   const int kv = corner_at(t, v), kw = corner_at(t, w);
   if (kv < 0 || kw < 0 || kv == kw) return false;
-  const Vec3 x = corner(t, 3 - kv - kw);
+  const Vec3 x = t.corner(3 - kv - kw);
   return predicates::cross_dot(v, w, p, x) != Sign::positive;
 }
 

@@ -102,14 +102,10 @@ TriangleFeature guessed_feature(Vec3 p, const Triangle3& t) {
   return TriangleFeature::face;
 }
 
-Vec3 corner(const Triangle3& t, int k) {
-  return k == 0 ? t.a : (k == 1 ? t.b : t.c);
-}
-
 // The vertex feature of corner i: named by the first corner at the same point.
 TriangleFeature vertex_named(const Triangle3& t, int i) {
   for (int k = 0; k < i; ++k)
-    if (corner(t, k) == corner(t, i)) return static_cast<TriangleFeature>(k);
+    if (t.corner(k) == t.corner(i)) return static_cast<TriangleFeature>(k);
   return static_cast<TriangleFeature>(i);
 }
 
@@ -126,10 +122,10 @@ TriangleFeature vertex_named(const Triangle3& t, int i) {
 bool proven(Vec3 p, const Triangle3& t, TriangleFeature f) {
   if (f <= TriangleFeature::vertex_c) {
     const int i = static_cast<int>(f);
-    const Vec3 v = corner(t, i);
-    const Sign s1 = dot_sign(v, corner(t, (i + 1) % 3), p);
+    const Vec3 v = t.corner(i);
+    const Sign s1 = dot_sign(v, t.corner((i + 1) % 3), p);
     if (s1 == Sign::positive) return false;
-    const Sign s2 = dot_sign(v, corner(t, (i + 2) % 3), p);
+    const Sign s2 = dot_sign(v, t.corner((i + 2) % 3), p);
     return s2 != Sign::positive && (s1 == Sign::negative || s2 == Sign::negative);
   }
   if (f == TriangleFeature::face) {
@@ -138,7 +134,7 @@ bool proven(Vec3 p, const Triangle3& t, TriangleFeature f) {
            cross_dot(t.c, t.a, p, t.b) == Sign::positive;
   }
   const int e = static_cast<int>(f) - static_cast<int>(TriangleFeature::edge_ab);
-  const Vec3 v = corner(t, e), w = corner(t, (e + 1) % 3), x = corner(t, (e + 2) % 3);
+  const Vec3 v = t.corner(e), w = t.corner((e + 1) % 3), x = t.corner((e + 2) % 3);
   return dot_sign(v, w, p) == Sign::positive && dot_sign(w, v, p) == Sign::positive &&
          cross_dot(v, w, p, x) == Sign::negative;
 }
@@ -163,30 +159,20 @@ TriangleFeature closest_feature(Vec3 p, const Triangle3& t) {
   // and the edges are tried in the order ab, bc, ca so that equal distances keep the first.
   constexpr std::array<TriangleFeature, 3> kEdge{TriangleFeature::edge_ab, TriangleFeature::edge_bc,
                                                  TriangleFeature::edge_ca};
-  const std::array<Vec3, 3> v{t.a, t.b, t.c};
-  // Vertex features named by the first vertex of the triangle at that position.
-  auto vertex_feature = [&](int i) {
-    for (int k = 0; k < i; ++k) {
-      if (v[static_cast<std::size_t>(k)] == v[static_cast<std::size_t>(i)]) {
-        return static_cast<TriangleFeature>(k);
-      }
-    }
-    return static_cast<TriangleFeature>(i);
-  };
   TriangleFeature best{};
   FlatPair3 best_pair{};
   bool have = false;
   for (int e = 0; e < 3; ++e) {
     const int i = e;
     const int j = (e + 1) % 3;
-    const Segment3 s{v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]};
+    const Segment3 s{t.corner(i), t.corner(j)};
     TriangleFeature f{};
     switch (closest_feature(p, s)) {
       case SegmentFeature::vertex_a:
-        f = vertex_feature(i);
+        f = vertex_named(t, i);
         break;
       case SegmentFeature::vertex_b:
-        f = vertex_feature(j);
+        f = vertex_named(t, j);
         break;
       case SegmentFeature::interior:
         f = kEdge[static_cast<std::size_t>(e)];

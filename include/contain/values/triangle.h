@@ -20,6 +20,8 @@ struct Triangle3 {
   /// Not normalised; (b - a) x (c - a), so it points to the side from which a, b, c turn
   /// counter-clockwise. Floating point: use `predicates/` for decisions.
   [[nodiscard]] constexpr Vec3 normal() const { return cross(b - a, c - a); }
+  /// Corner k: 0, 1, 2 for a, b, c.
+  [[nodiscard]] constexpr Vec3 corner(int k) const { return k == 0 ? a : (k == 1 ? b : c); }
   friend constexpr bool operator==(const Triangle3&, const Triangle3&) = default;
 };
 
