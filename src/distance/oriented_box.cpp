@@ -267,6 +267,14 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
   return out;
 }
 
+void principal_axes(std::span<const Vec3> points, Vec3 e[3]) {
+  Moments m;
+  const Vec3 r = points.empty() ? Vec3{} : points.front();
+  for (const Vec3& p : points)
+    m.add(p, r);
+  principal_frame(m, e);
+}
+
 bool oriented_box_surely_holds(const OrientedBox& box, Vec3 p) {
   double coef[3], err[3];
   coefficients(p, box.c, box.e, coef, err);

@@ -38,6 +38,10 @@ struct OrientedBox {
 /// coordinate axes where those fail the orthonormality check. O(n log n).
 [[nodiscard]] std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh);
 
+/// The principal axes of `points` (eigenvectors of their covariance), orthonormal within 2^-40
+/// as computed, or the coordinate axes where those fail that check (fewer than two points, NaN).
+void principal_axes(std::span<const Vec3> points, Vec3 e[3]);
+
 /// Does `box` hold `p` (exactly, in rational arithmetic on the doubles)? For tests: evaluated
 /// with a margin that only says "yes" when it is certain; false may be a near miss.
 [[nodiscard]] bool oriented_box_surely_holds(const OrientedBox& box, Vec3 p);

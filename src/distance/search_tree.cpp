@@ -1,6 +1,9 @@
 #include "distance/search_tree.h"
 
 #include <array>
+#include <utility>
+
+#include "distance/oriented_box.h"
 
 namespace contain::distance::detail {
 
@@ -16,6 +19,70 @@ float round_up(double x) {
   if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
   return f;
 }
+constexpr double kEps = 0x1p-53;
+
+// The oriented box of one lane around the corners `points`: the principal axes rounded to
+// floats (the coordinate axes where they fail), and along each axis u the extent of
+// u . (v - o) over the corners v, widened by a bound on its rounding and rounded outward:
+// d = fl(v - o) is within eps |d_i| per coordinate, the dot product within gamma_3 of its
+// permanent, and |u|_1 <= 1.75, so 8 eps (permanent + max |d_i|) and 2^-1000 (products that
+// underflow) cover both, the subtraction or addition of the bound included. k from Gershgorin:
+// lambda_max(U U^T) is at most the largest row sum of |u_a . u_b|, each dot product of floats
+// within 3 eps of its value (at most 1.01 here).
+void fill_lane(std::span<const Vec3> points, Vec3 o, int lane, OrientedLanes& out) {
+  Vec3 e[3];
+  principal_axes(points, e);
+  Vec3 u[3];
+  for (int a = 0; a < 3; ++a) {
+    u[a] = {static_cast<float>(e[a].x), static_cast<float>(e[a].y), static_cast<float>(e[a].z)};
+    if (!((std::fabs(u[a].x) + std::fabs(u[a].y)) + std::fabs(u[a].z) <= 1.75)) {
+      u[0] = {1, 0, 0};
+      u[1] = {0, 1, 0};
+      u[2] = {0, 0, 1};
+      break;
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    for (const Vec3& v : points) {
+      const Vec3 d = v - o;
+      const double t = dot(u[a], d);
+      const double perm =
+          (std::fabs(u[a].x * d.x) + std::fabs(u[a].y * d.y)) + std::fabs(u[a].z * d.z);
+      const double big = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+      const double err = 8 * kEps * (perm + big) + 0x1p-1000;
+      lo = std::min(lo, t - err);
+      hi = std::max(hi, t + err);
+    }
+    // NaN or overflow: a lane that holds everything.
+    out.lo[a][lane] = std::isfinite(lo) ? round_down(lo) : -std::numeric_limits<float>::infinity();
+    out.hi[a][lane] = std::isfinite(hi) ? round_up(hi) : std::numeric_limits<float>::infinity();
+    out.axis[a][0][lane] = static_cast<float>(u[a].x);
+    out.axis[a][1][lane] = static_cast<float>(u[a].y);
+    out.axis[a][2][lane] = static_cast<float>(u[a].z);
+  }
+  double row_max = 0;
+  for (int a = 0; a < 3; ++a) {
+    double row = 0;
+    for (int b = 0; b < 3; ++b)
+      row += std::fabs(dot(u[a], u[b])) + 8 * kEps;
+    row_max = std::max(row_max, row);
+  }
+  out.k[lane] = round_down(1.0 / (row_max * (1 + 8 * kEps)) * (1 - 8 * kEps));
+}
+
+// An empty lane: its bound is as large as lanes' bounds get (the search skips it by its count).
+void fill_empty_lane(int lane, OrientedLanes& out) {
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < 3; ++i)
+      out.axis[a][i][lane] = a == i ? 1.0f : 0.0f;
+    out.lo[a][lane] = std::numeric_limits<float>::infinity();
+    out.hi[a][lane] = -std::numeric_limits<float>::infinity();
+  }
+  out.k[lane] = 0.25f;
+}
+
 void to_float(const Box3& b, float lo[3], float hi[3]) {
   lo[0] = round_down(b.min.x);
   lo[1] = round_down(b.min.y);
@@ -27,7 +94,13 @@ void to_float(const Box3& b, float lo[3], float hi[3]) {
 
 }  // namespace
 
-SearchTree::SearchTree(std::span<const Box3> boxes, const bvh::BuildOptions& options) {
+SearchTree::SearchTree(std::span<const Vec3> corners, int per_item,
+                       const bvh::BuildOptions& options) {
+  const auto per = static_cast<std::size_t>(per_item);
+  std::vector<Box3> boxes(per == 0 ? 0 : corners.size() / per);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = 0; j < per; ++j)
+      boxes[i].expand(corners[i * per + j]);
   const bvh::Bvh tree(boxes, options);
   items_.assign(tree.items().begin(), tree.items().end());
   position_.assign(items_.size(), 0);
@@ -41,6 +114,21 @@ SearchTree::SearchTree(std::span<const Box3> boxes, const bvh::BuildOptions& opt
     root_count_ = nodes[0].count;
     return;
   }
+  origin_ = 0.5 * (nodes[0].box.min + nodes[0].box.max);
+  if (!is_finite(origin_)) origin_ = {};
+  // Each node's items are a range of leaf order (children come after their parent).
+  std::vector<std::pair<std::size_t, std::size_t>> range(nodes.size());
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    if (nodes[i].is_leaf()) {
+      const auto first = static_cast<std::size_t>(nodes[i].first);
+      range[i] = {first, first + static_cast<std::size_t>(nodes[i].count)};
+    } else {
+      const auto second = static_cast<std::size_t>(nodes[i].first);
+      range[i] = {std::min(range[i + 1].first, range[second].first),
+                  std::max(range[i + 1].second, range[second].second)};
+    }
+  }
+  std::vector<Vec3> points;
   // Each quad node gathers up to four nodes below a binary inner node: its two children, then
   // repeatedly the inner one of largest box area split into its two, while there is room.
   auto children_of = [&](std::size_t i) {
@@ -76,12 +164,16 @@ SearchTree::SearchTree(std::span<const Box3> boxes, const bvh::BuildOptions& opt
       group[size++] = split[1];
     }
     QuadNode q{};
-    const float inf = std::numeric_limits<float>::infinity();
     for (std::size_t c = 0; c < 4; ++c) {
-      float lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
       if (c < size) {
         const bvh::Node& child = nodes[group[c]];
-        to_float(child.box, lo, hi);
+        points.clear();
+        for (std::size_t k = range[group[c]].first; k < range[group[c]].second; ++k) {
+          const auto item = static_cast<std::size_t>(items_[k]);
+          points.insert(points.end(), corners.begin() + static_cast<std::ptrdiff_t>(item * per),
+                        corners.begin() + static_cast<std::ptrdiff_t>((item + 1) * per));
+        }
+        fill_lane(points, origin_, static_cast<int>(c), q.box);
         if (child.is_leaf()) {
           q.child[c] = child.first;
           q.count[c] = child.count;
@@ -92,16 +184,40 @@ SearchTree::SearchTree(std::span<const Box3> boxes, const bvh::BuildOptions& opt
           quads_.emplace_back();
         }
       } else {
+        fill_empty_lane(static_cast<int>(c), q.box);
         q.child[c] = 0;
         q.count[c] = -1;
-      }
-      for (int a = 0; a < 3; ++a) {
-        q.lo[a][c] = lo[a];
-        q.hi[a][c] = hi[a];
       }
     }
     quads_[at.quad] = q;
   }
+}
+
+std::vector<SearchTree::LaneBound> SearchTree::lane_bounds(Vec3 p) const {
+  std::vector<LaneBound> out;
+  if (quads_.empty()) return out;
+  const LanePoint q = lane_point(p, origin_);
+  // The item range of a node's lanes, its own lanes listed first.
+  auto visit = [&](auto&& self, std::int32_t index) -> std::pair<std::int32_t, std::int32_t> {
+    const QuadNode& node = quads_[static_cast<std::size_t>(index)];
+    double lb[4];
+    oriented_lower_bound4(q, node.box, lb);
+    std::int32_t first = std::numeric_limits<std::int32_t>::max(), end = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (node.count[c] < 0) continue;
+      std::pair<std::int32_t, std::int32_t> r{node.child[c], node.child[c] + node.count[c]};
+      const std::size_t at = out.size();
+      out.push_back({lb[c], 0, 0});
+      if (node.count[c] == 0) r = self(self, node.child[c]);
+      out[at].first = r.first;
+      out[at].end = r.second;
+      first = std::min(first, r.first);
+      end = std::max(end, r.second);
+    }
+    return {first, end};
+  };
+  visit(visit, 0);
+  return out;
 }
 
 }  // namespace contain::distance::detail

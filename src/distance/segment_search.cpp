@@ -51,18 +51,16 @@ void segment_bounds(Vec2 p, const Segment2& s, double slack, double& lo, double&
 
 SegmentSearch::SegmentSearch(std::span<const Segment2> segments, const bvh::BuildOptions& options)
     : segments_(segments.begin(), segments.end()) {
-  std::vector<Box3> boxes;
-  boxes.reserve(segments_.size());
+  std::vector<Vec3> corners;
+  corners.reserve(2 * segments_.size());
   double max_abs = 0.0;
   for (const Segment2& s : segments_) {
-    Box3 b;
-    b.expand(Vec3{s.a.x, s.a.y, 0});
-    b.expand(Vec3{s.b.x, s.b.y, 0});
-    boxes.push_back(b);
+    corners.push_back({s.a.x, s.a.y, 0});
+    corners.push_back({s.b.x, s.b.y, 0});
     max_abs =
         std::max({max_abs, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
   }
-  tree_ = SearchTree(boxes, options);
+  tree_ = SearchTree(corners, 2, options);
   ordered_.reserve(segments_.size());
   for (const std::int32_t i : tree_.items())
     ordered_.push_back(segments_[static_cast<std::size_t>(i)]);

@@ -109,19 +109,17 @@ Vec3 triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, doubl
 TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
                                const bvh::BuildOptions& options)
     : triangles_(triangles.begin(), triangles.end()) {
-  std::vector<Box3> boxes;
-  boxes.reserve(triangles_.size());
+  std::vector<Vec3> corners;
+  corners.reserve(3 * triangles_.size());
   double max_abs = 0.0;
   for (const Triangle3& t : triangles_) {
-    Box3 b;
-    b.expand(t.a);
-    b.expand(t.b);
-    b.expand(t.c);
-    boxes.push_back(b);
-    max_abs = std::max({max_abs, std::fabs(b.min.x), std::fabs(b.min.y), std::fabs(b.min.z),
-                        std::fabs(b.max.x), std::fabs(b.max.y), std::fabs(b.max.z)});
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 v = t.corner(k);
+      corners.push_back(v);
+      max_abs = std::max({max_abs, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    }
   }
-  tree_ = SearchTree(boxes, options);
+  tree_ = SearchTree(corners, 3, options);
   ordered_.reserve(triangles_.size());
   planes_.reserve(triangles_.size());
   for (const std::int32_t i : tree_.items()) {
