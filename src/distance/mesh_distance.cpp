@@ -171,6 +171,7 @@ void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, 
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
     std::int32_t hint = -1;
     for (std::size_t k = begin; k < end; ++k) {
+      detail::prefetch_ahead<>(order, k, end, points.data(), out.data());
       const std::size_t i = order[k];
       out[i] = query_with_hint(points[i], q, hint);
       hint = out[i].feature;
