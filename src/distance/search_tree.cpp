@@ -22,16 +22,16 @@ float round_up(double x) {
 constexpr double kEps = 0x1p-53;
 
 // The oriented box of one lane around the corners `points`: the principal axes rounded to
-// floats (the coordinate axes where they fail), and along each axis u the extent of
-// u . (v - o) over the corners v, widened by a bound on its rounding and rounded outward:
+// floats (the coordinate axes where they fail or `principal` is false), and along each axis u the
+// extent of u . (v - o) over the corners v, widened by a bound on its rounding and rounded outward:
 // d = fl(v - o) is within eps |d_i| per coordinate, the dot product within gamma_3 of its
 // permanent, and |u|_1 <= 1.75, so 8 eps (permanent + max |d_i|) and 2^-1000 (products that
 // underflow) cover both, the subtraction or addition of the bound included. k from Gershgorin:
 // lambda_max(U U^T) is at most the largest row sum of |u_a . u_b|, each dot product of floats
 // within 3 eps of its value (at most 1.01 here).
-void fill_lane(std::span<const Vec3> points, Vec3 o, int lane, OrientedLanes& out) {
-  Vec3 e[3];
-  principal_axes(points, e);
+void fill_lane(std::span<const Vec3> points, Vec3 o, bool principal, int lane, OrientedLanes& out) {
+  Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  if (principal) principal_axes(points, e);
   Vec3 u[3];
   for (int a = 0; a < 3; ++a) {
     u[a] = {static_cast<float>(e[a].x), static_cast<float>(e[a].y), static_cast<float>(e[a].z)};
@@ -71,6 +71,11 @@ void fill_lane(std::span<const Vec3> points, Vec3 o, int lane, OrientedLanes& ou
   }
   out.k[lane] = round_down(1.0 / (row_max * (1 + 8 * kEps)) * (1 - 8 * kEps));
 }
+
+// Children over more items than this get the coordinate axes around their axis-aligned box: near
+// the root an oriented box prunes little more, and gathering every corner at every level would
+// cost time and, for a mesh of millions of triangles, a copy of a quarter of its corners.
+constexpr std::size_t kMaxOriented = 512;
 
 // An empty lane: its bound is as large as lanes' bounds get (the search skips it by its count).
 void fill_empty_lane(int lane, OrientedLanes& out) {
@@ -168,12 +173,21 @@ SearchTree::SearchTree(std::span<const Vec3> corners, int per_item,
       if (c < size) {
         const bvh::Node& child = nodes[group[c]];
         points.clear();
-        for (std::size_t k = range[group[c]].first; k < range[group[c]].second; ++k) {
-          const auto item = static_cast<std::size_t>(items_[k]);
-          points.insert(points.end(), corners.begin() + static_cast<std::ptrdiff_t>(item * per),
-                        corners.begin() + static_cast<std::ptrdiff_t>((item + 1) * per));
+        const auto [lo, hi] = range[group[c]];
+        if (hi - lo > kMaxOriented) {
+          // The corners of the child's axis-aligned box: their hull holds every item.
+          for (int k = 0; k < 8; ++k)
+            points.push_back({(k & 1) != 0 ? child.box.max.x : child.box.min.x,
+                              (k & 2) != 0 ? child.box.max.y : child.box.min.y,
+                              (k & 4) != 0 ? child.box.max.z : child.box.min.z});
+        } else {
+          for (std::size_t k = lo; k < hi; ++k) {
+            const auto item = static_cast<std::size_t>(items_[k]);
+            points.insert(points.end(), corners.begin() + static_cast<std::ptrdiff_t>(item * per),
+                          corners.begin() + static_cast<std::ptrdiff_t>((item + 1) * per));
+          }
         }
-        fill_lane(points, origin_, static_cast<int>(c), q.box);
+        fill_lane(points, origin_, hi - lo <= kMaxOriented, static_cast<int>(c), q.box);
         if (child.is_leaf()) {
           q.child[c] = child.first;
           q.count[c] = child.count;

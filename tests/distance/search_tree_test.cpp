@@ -198,6 +198,17 @@ TEST(SearchTreeBounds, OrientedBoxesStayBelowAtTinyAndHugeScalesAndFarFromTheOri
   }
 }
 
+TEST(SearchTreeBounds, ChildrenOfManyItemsBoundedByTheirAxisAlignedBoxesStayBelowToo) {
+  // 3072 triangles: the root's children hold more than the 512 items above which a child keeps
+  // the coordinate axes around its box (search_tree.cpp).
+  std::mt19937_64 rng(24);
+  const std::vector<Vec3> corners = sphere_corners(32, 48);
+  std::vector<Vec3> points = query_points(rng, corners, false);
+  points.resize(points.size() / 3);
+  EXPECT_GT(check_tree(corners, 3, points, 1.0, {}, "large sphere"), 0);
+  check_tree(corners, 3, points, 1.0, Vec3{-3e5, 1e6, 2e6}, "large sphere, moved");
+}
+
 TEST(SearchTreeBounds, PointsBeyondTheFloatRangeGetNoBoundRatherThanAWrongOne) {
   const std::vector<Vec3> corners = sphere_corners(6, 8);
   const SearchTree tree(corners, 3, {.max_leaf_items = 2});
