@@ -214,23 +214,26 @@ double box_extent(const OrientedBox& b) {
 
 }  // namespace
 
-std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
-  const std::span<const bvh::Node> nodes = bvh.nodes();
-  const std::span<const std::int32_t> items = bvh.items();
-  // The range of items() under each node (children come after their parent); a range that
-  // holds more than the node's own items still gives a box around them.
-  std::vector<std::int32_t> lo(nodes.size()), hi(nodes.size());
+std::vector<std::pair<std::int32_t, std::int32_t>> item_ranges(std::span<const bvh::Node> nodes) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> out(nodes.size());
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const bvh::Node& n = nodes[k];
     if (n.is_leaf()) {
-      lo[k] = n.first;
-      hi[k] = n.first + n.count;
+      out[k] = {n.first, n.first + n.count};
     } else {
       const auto second = static_cast<std::size_t>(n.first);
-      lo[k] = std::min(lo[k + 1], lo[second]);
-      hi[k] = std::max(hi[k + 1], hi[second]);
+      out[k] = {std::min(out[k + 1].first, out[second].first),
+                std::max(out[k + 1].second, out[second].second)};
     }
   }
+  return out;
+}
+
+std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
+  const std::span<const bvh::Node> nodes = bvh.nodes();
+  const std::span<const std::int32_t> items = bvh.items();
+  // A range that holds more than the node's own items still gives a box around them.
+  const std::vector<std::pair<std::int32_t, std::int32_t>> range = item_ranges(nodes);
   // Moments: leaves from their vertices, inner nodes from their children.
   const Vec3 r = mesh.vertices.empty() ? Vec3{} : mesh.vertices.front();
   std::vector<Moments> moments(nodes.size());
@@ -249,12 +252,13 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
   std::vector<OrientedBox> out(nodes.size());
   std::vector<Vec3> points;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
-    if (hi[k] - lo[k] > kMaxOriented) {
+    const auto [lo, hi] = range[k];
+    if (hi - lo > kMaxOriented) {
       out[k] = box_of(nodes[k].box);
       continue;
     }
     points.clear();
-    for (std::int32_t i = lo[k]; i < hi[k]; ++i)
+    for (std::int32_t i = lo; i < hi; ++i)
       for (const std::int32_t v :
            mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
         points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "contain/bvh/bvh.h"
@@ -37,6 +38,11 @@ struct OrientedBox {
 /// indices), indexed like bvh.nodes(): principal axes of the node's vertices (Jacobi), or the
 /// coordinate axes where those fail the orthonormality check. O(n log n).
 [[nodiscard]] std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh);
+
+/// For each node of a hierarchy, positions [first, end) of `items()` that hold every item under
+/// it (children come after their parent; a range may hold more than the node's own items).
+[[nodiscard]] std::vector<std::pair<std::int32_t, std::int32_t>> item_ranges(
+    std::span<const bvh::Node> nodes);
 
 /// The principal axes of `points` (eigenvectors of their covariance), orthonormal within 2^-40
 /// as computed, or the coordinate axes where those fail that check (fewer than two points, NaN).

@@ -121,18 +121,7 @@ SearchTree::SearchTree(std::span<const Vec3> corners, int per_item,
   }
   origin_ = 0.5 * (nodes[0].box.min + nodes[0].box.max);
   if (!is_finite(origin_)) origin_ = {};
-  // Each node's items are a range of leaf order (children come after their parent).
-  std::vector<std::pair<std::size_t, std::size_t>> range(nodes.size());
-  for (std::size_t i = nodes.size(); i-- > 0;) {
-    if (nodes[i].is_leaf()) {
-      const auto first = static_cast<std::size_t>(nodes[i].first);
-      range[i] = {first, first + static_cast<std::size_t>(nodes[i].count)};
-    } else {
-      const auto second = static_cast<std::size_t>(nodes[i].first);
-      range[i] = {std::min(range[i + 1].first, range[second].first),
-                  std::max(range[i + 1].second, range[second].second)};
-    }
-  }
+  const std::vector<std::pair<std::int32_t, std::int32_t>> range = item_ranges(nodes);
   std::vector<Vec3> points;
   // Each quad node gathers up to four nodes below a binary inner node: its two children, then
   // repeatedly the inner one of largest box area split into its two, while there is room.
@@ -173,7 +162,8 @@ SearchTree::SearchTree(std::span<const Vec3> corners, int per_item,
       if (c < size) {
         const bvh::Node& child = nodes[group[c]];
         points.clear();
-        const auto [lo, hi] = range[group[c]];
+        const auto lo = static_cast<std::size_t>(range[group[c]].first);
+        const auto hi = static_cast<std::size_t>(range[group[c]].second);
         if (hi - lo > kMaxOriented) {
           // The corners of the child's axis-aligned box: their hull holds every item.
           for (int k = 0; k < 8; ++k)

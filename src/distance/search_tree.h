@@ -86,8 +86,7 @@ struct LanePoint {
 /// The LanePoint of p for a tree of origin o. With d = p - o in doubles (within eps |d_i| of the
 /// exact difference) and P = max |d_i|, the floats f_i = fl(d_i) are within
 /// (2^-24 + 2^-52) P + 2^-150 of the exact p_i - o_i; a lane's dot product of f with u (floats,
-/// |u|_1
-/// <= 1.75) is within gamma_3 |u|_1 max |f_i| <= 5.3 2^-24 P (plus 3 2^-150 for products that
+/// |u|_1 <= 1.75) is within gamma_3 |u|_1 max |f_i| <= 5.3 2^-24 P (plus 3 2^-150 for products that
 /// underflow) of u . f, and u . f within 1.75 ((2^-24 + 2^-52) P + 2^-150) of u . (p - o): in all
 /// below m = 16 2^-24 P + 2^-140, with room for the roundings of the bound itself. Beyond 2^100
 /// (or for infinite d) m is +inf and every lane's bound 0.

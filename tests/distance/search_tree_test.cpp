@@ -213,7 +213,9 @@ TEST(SearchTreeBounds, PointsBeyondTheFloatRangeGetNoBoundRatherThanAWrongOne) {
   const std::vector<Vec3> corners = sphere_corners(6, 8);
   const SearchTree tree(corners, 3, {.max_leaf_items = 2});
   for (const Vec3 p : {Vec3{1e300, 0, 0}, Vec3{-1e200, 1e200, 3}, Vec3{0, 0, 0x1p101}}) {
-    for (const SearchTree::LaneBound& lane : tree.lane_bounds(p)) {
+    const std::vector<SearchTree::LaneBound> lanes = tree.lane_bounds(p);
+    EXPECT_FALSE(lanes.empty());
+    for (const SearchTree::LaneBound& lane : lanes) {
       EXPECT_EQ(lane.bound, 0.0);
     }
   }
