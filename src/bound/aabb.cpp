@@ -40,7 +40,7 @@ Box3 aabb(const Mesh& mesh, const AabbOptions& options) {
   Box3 box;
   for (const TriangleIndices& t : mesh.triangles) {
     for (std::int32_t index : t)
-      box.expand(mesh.vertices[static_cast<std::size_t>(index)]);
+      box.expand(mesh.vertex(index));
   }
   return box;
 }

@@ -25,11 +25,8 @@ thread_local MeshDistanceStats t_stats;
 std::vector<Triangle3> triangles_of(const Mesh& mesh) {
   std::vector<Triangle3> out;
   out.reserve(mesh.triangles.size());
-  for (const TriangleIndices& t : mesh.triangles) {
-    out.push_back({mesh.vertices[static_cast<std::size_t>(t[0])],
-                   mesh.vertices[static_cast<std::size_t>(t[1])],
-                   mesh.vertices[static_cast<std::size_t>(t[2])]});
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    out.push_back(mesh.triangle(t));
   return out;
 }
 

@@ -109,21 +109,13 @@ Location locate_leaf(const CsgLeaf& leaf, const MeshIndex* mesh_index, Vec3 p) {
                     leaf);
 }
 
-Vec3 vertex(const Mesh& mesh, std::int32_t k) {
-  return mesh.vertices[static_cast<std::size_t>(k)];
-}
-
 // The planes of the non-degenerate triangles that contain p (exact point in
 // triangle): near p they carry the whole surface, so every open cell of their
 // arrangement is in or out.
 void mesh_constraints(const Mesh& mesh, Vec3 p, std::vector<LocalConstraint>& out) {
-  for (const TriangleIndices& t : mesh.triangles) {
-    const Triangle3 tri{vertex(mesh, t[0]), vertex(mesh, t[1]), vertex(mesh, t[2])};
-    Box3 box;
-    box.expand(tri.a);
-    box.expand(tri.b);
-    box.expand(tri.c);
-    if (!box.contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle3 tri = mesh.triangle(t);
+    if (!bounding_box(tri).contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
     const BigVec3 a = to_big(tri.a);
     BigVec3 normal = cross(to_big(tri.b) - a, to_big(tri.c) - a);
     if (!is_zero(normal)) out.push_back({std::move(normal), false, false});
@@ -149,7 +141,7 @@ class MeshRay {
   MeshRay() = default;
   MeshRay(const Mesh& mesh, Vec3 p) : p_(p) {
     for (const TriangleIndices& t : mesh.triangles) {
-      const Vec3 a = vertex(mesh, t[0]), b = vertex(mesh, t[1]), c = vertex(mesh, t[2]);
+      const Vec3 a = mesh.vertex(t[0]), b = mesh.vertex(t[1]), c = mesh.vertex(t[2]);
       // Triangles that the ray from a point near p cannot reach (exact
       // comparisons of inputs).
       if (std::max({a.x, b.x, c.x}) < p.x || std::min({a.y, b.y, c.y}) > p.y ||

@@ -15,11 +15,8 @@ namespace contain::inside {
 
 FastWindingNumber::FastWindingNumber(const Mesh& mesh, const FastWindingOptions& options) {
   triangles_.reserve(mesh.triangles.size());
-  for (const TriangleIndices& t : mesh.triangles) {
-    triangles_.push_back({mesh.vertices[static_cast<std::size_t>(t[0])],
-                          mesh.vertices[static_cast<std::size_t>(t[1])],
-                          mesh.vertices[static_cast<std::size_t>(t[2])]});
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    triangles_.push_back(mesh.triangle(t));
   const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
   bvh_ = bvh::Bvh(boxes);
   const std::span<const bvh::Node> nodes = bvh_.nodes();

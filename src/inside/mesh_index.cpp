@@ -153,12 +153,7 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
 void MeshIndex::read_triangles(const Mesh& mesh) {
   tris_.reserve(mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles) {
-    Tri tri{mesh.vertices[static_cast<std::size_t>(t[0])],
-            mesh.vertices[static_cast<std::size_t>(t[1])],
-            mesh.vertices[static_cast<std::size_t>(t[2])],
-            {},
-            {},
-            Sign::zero};
+    Tri tri{mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2]), {}, {}, Sign::zero};
     tri.s = predicates::projected_sign(tri.a, tri.b, tri.c);
     tri.lo[0] = float_below(std::min({tri.a.x, tri.b.x, tri.c.x}));
     tri.lo[1] = float_below(std::min({tri.a.y, tri.b.y, tri.c.y}));

@@ -17,12 +17,8 @@ double solid_angle(const Triangle3& t, Vec3 p) {
 
 double generalized_winding_number(const Mesh& mesh, Vec3 p) {
   double sum = 0.0;
-  for (const TriangleIndices& tri : mesh.triangles) {
-    sum += solid_angle({mesh.vertices[static_cast<std::size_t>(tri[0])],
-                        mesh.vertices[static_cast<std::size_t>(tri[1])],
-                        mesh.vertices[static_cast<std::size_t>(tri[2])]},
-                       p);
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    sum += solid_angle(mesh.triangle(t), p);
   return sum / (4.0 * std::numbers::pi);
 }
 

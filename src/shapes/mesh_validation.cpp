@@ -55,13 +55,13 @@ MeshReport validate_mesh(const Mesh& mesh) {
       const std::int32_t a = tri[static_cast<std::size_t>(k)];
       const std::int32_t b = tri[static_cast<std::size_t>((k + 1) % 3)];
       used[static_cast<std::size_t>(a)] = 1;
-      box.expand(mesh.vertices[static_cast<std::size_t>(a)]);
+      box.expand(mesh.vertex(a));
       if (a == b) continue;
       uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(t), a < b});
     }
-    const Vec3 a = mesh.vertices[static_cast<std::size_t>(tri[0])];
-    const Vec3 b = mesh.vertices[static_cast<std::size_t>(tri[1])];
-    const Vec3 c = mesh.vertices[static_cast<std::size_t>(tri[2])];
+    const Vec3 a = mesh.vertex(tri[0]);
+    const Vec3 b = mesh.vertex(tri[1]);
+    const Vec3 c = mesh.vertex(tri[2]);
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] || zero_area(a, b, c)) {
       ++r.degenerate_triangles;
     }
@@ -145,9 +145,8 @@ MeshReport validate_mesh(const Mesh& mesh) {
     const Vec3 o = 0.5 * box.min + 0.5 * box.max;
     double sum = 0.0, compensation = 0.0;
     for (const TriangleIndices& tri : mesh.triangles) {
-      const Vec3 a = mesh.vertices[static_cast<std::size_t>(tri[0])] - o;
-      const Vec3 b = mesh.vertices[static_cast<std::size_t>(tri[1])] - o;
-      const Vec3 c = mesh.vertices[static_cast<std::size_t>(tri[2])] - o;
+      const Vec3 a = mesh.vertex(tri[0]) - o, b = mesh.vertex(tri[1]) - o,
+                 c = mesh.vertex(tri[2]) - o;
       const double term = dot(a, cross(b, c));
       const double s = sum + term;
       compensation += std::abs(sum) >= std::abs(term) ? (sum - s) + term : (term - s) + sum;
@@ -192,7 +191,7 @@ WeldResult weld_vertices(const Mesh& mesh) {
   std::iota(order.begin(), order.end(), 0);
   // +0 and -0 compare equal as doubles, so they sort together and are welded.
   auto key = [&](std::int32_t i) {
-    const Vec3 p = mesh.vertices[static_cast<std::size_t>(i)];
+    const Vec3 p = mesh.vertex(i);
     return std::make_tuple(p.x, p.y, p.z);
   };
   std::stable_sort(order.begin(), order.end(),

@@ -4,10 +4,12 @@
 /// triangulate polygonal faces as fans and keep the count of the faces they read.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "contain/core/result.h"
+#include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
 namespace contain::shapes {
@@ -24,6 +26,17 @@ struct Mesh {
   /// Triangles may be degenerate and the mesh may be open: `validate_mesh` reports those.
   [[nodiscard]] static Result<Mesh> from_arrays(std::vector<Vec3> vertices,
                                                 std::vector<TriangleIndices> triangles);
+
+  /// The vertex that a triangle's index `i` names (`i` in [0, vertices.size())).
+  [[nodiscard]] const Vec3& vertex(std::int32_t i) const {
+    return vertices[static_cast<std::size_t>(i)];
+  }
+  /// Triangle `t` (in [0, triangles.size())) with its corners in index order, so its normal
+  /// points outward on an outward oriented closed mesh.
+  [[nodiscard]] Triangle3 triangle(std::size_t t) const {
+    const TriangleIndices& v = triangles[t];
+    return {vertex(v[0]), vertex(v[1]), vertex(v[2])};
+  }
 
   friend bool operator==(const Mesh&, const Mesh&) = default;
 };

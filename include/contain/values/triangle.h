@@ -2,6 +2,7 @@
 /// \file
 /// Closed triangles in 2D and 3D (the convex hull of the three vertices).
 
+#include "contain/values/box.h"
 #include "contain/values/vec.h"
 
 namespace contain::values {
@@ -25,10 +26,27 @@ struct Triangle3 {
   friend constexpr bool operator==(const Triangle3&, const Triangle3&) = default;
 };
 
+/// The smallest boxes holding a triangle; exact (only comparisons).
+[[nodiscard]] constexpr Box2 bounding_box(const Triangle2& t) {
+  Box2 box;
+  box.expand(t.a);
+  box.expand(t.b);
+  box.expand(t.c);
+  return box;
+}
+[[nodiscard]] constexpr Box3 bounding_box(const Triangle3& t) {
+  Box3 box;
+  box.expand(t.a);
+  box.expand(t.b);
+  box.expand(t.c);
+  return box;
+}
+
 }  // namespace contain::values
 
 // Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
 namespace contain {
+using values::bounding_box;
 using values::Triangle2;
 using values::Triangle3;
 }  // namespace contain
