@@ -15,6 +15,7 @@
 
 #include "clip/box_cut.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/ring_orientation.h"
 
 namespace contain::clip {
 namespace {
@@ -41,7 +42,7 @@ BoxClipper::RingIndex build_index(const Ring& ring) {
     index.nodes[v] = index.nodes[2 * v];
     index.nodes[v].expand(index.nodes[2 * v + 1]);
   }
-  index.ccw = detail::ring_orientation(ring);
+  index.orientation = predicates::ring_orientation(ring);
   return index;
 }
 
@@ -147,7 +148,7 @@ MultiPolygon BoxClipper::clip(const Box2& given) const {
       const Ring& ring = polygon.rings[r];
       const RingIndex& index = index_[pi][r];
       active_edges(ring, index, box, cut, active, stack);
-      if (!cut.add_ring(ring, active, r > 0, index.ccw)) {
+      if (!cut.add_ring(ring, active, r > 0, index.orientation)) {
         cut.add_parity(ray_parity(ring, index, cut.centre(), stack));
       }
     }

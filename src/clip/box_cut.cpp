@@ -10,6 +10,7 @@
 #include "contain/clip/polygon_boolean.h"
 #include "contain/inside/point_in_polygon.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/ring_orientation.h"
 
 namespace contain::clip::detail {
 namespace {
@@ -32,21 +33,6 @@ int v_before_h(Vec2 p, Vec2 q, double x, double y) {
 }
 
 }  // namespace
-
-int ring_orientation(std::span<const Vec2> ring) {
-  const std::size_t n = ring.size();
-  std::size_t m = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (ring[i].y < ring[m].y || (ring[i].y == ring[m].y && ring[i].x < ring[m].x)) m = i;
-  }
-  std::size_t prev = (m + n - 1) % n, next = (m + 1) % n;
-  while (prev != m && ring[prev] == ring[m])
-    prev = (prev + n - 1) % n;
-  while (next != m && ring[next] == ring[m])
-    next = (next + 1) % n;
-  const Sign s = orient2d(ring[prev], ring[m], ring[next]);
-  return s == Sign::positive ? 1 : (s == Sign::negative ? 0 : -1);
-}
 
 namespace {
 
@@ -287,7 +273,7 @@ bool BoxCut::active_parity(std::span<const Vec2> ring,
 }
 
 bool BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active, bool hole,
-                      int ccw) {
+                      std::optional<Sign> orientation) {
   const std::size_t n = ring.size();
   if (!ok_ || n < 3) return true;  // fewer than 3 points enclose nothing
   pieces_.clear();
@@ -302,13 +288,13 @@ bool BoxCut::add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t>
     piece.edge = e;
     pieces_.push_back(piece);
   }
-  if (!pieces_.empty() && ccw < 0) ccw = ring_orientation(ring);
-  if (!pieces_.empty() && ccw < 0) {
+  if (!pieces_.empty() && !orientation) orientation = predicates::ring_orientation(ring);
+  if (!pieces_.empty() && *orientation == Sign::zero) {  // no area: no side to keep
     ok_ = false;
     return true;
   }
   // Shells counter-clockwise and holes clockwise leave the region on the left of every edge.
-  const bool reversed = !pieces_.empty() && (ccw == 1) == hole;
+  const bool reversed = !pieces_.empty() && (*orientation == Sign::positive) == hole;
   // A piece on a side stays when the region is on the box's side of it: when it runs
   // counter-clockwise along the boundary in the region's orientation.
   std::size_t m = 0;
@@ -638,7 +624,7 @@ MultiPolygon clip_by_box(const MultiPolygon& region, const Box2& given) {
       const Ring& ring = polygon.rings[r];
       bool parity = false;
       cut.scan(ring, active, parity);
-      if (!cut.add_ring(ring, active, r > 0, -1)) {
+      if (!cut.add_ring(ring, active, r > 0, std::nullopt)) {
         cut.add_parity(parity != cut.active_parity(ring, active));
       }
     }

@@ -21,9 +21,11 @@
 // strictly inside it. None of these occurs for a box in general position.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "contain/predicates/sign.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 
@@ -56,11 +58,12 @@ class BoxCut {
   void reset();
   void begin_polygon();
   /// A ring of the current polygon: the shell (hole false) or a hole; `active`: every edge of
-  /// the ring that is not strictly outside one side, in ring order (as from scan); `ccw`: its
-  /// orientation when known (1 counter-clockwise, 0 clockwise), -1 to compute it. False when the
-  /// ring does not reach into the box: then the caller gives its parity (add_parity).
+  /// the ring that is not strictly outside one side, in ring order (as from scan);
+  /// `orientation`: its `predicates::ring_orientation` when known, nullopt to compute it (a ring
+  /// of zero area reaching into the box makes the cut give up). False when the ring does not
+  /// reach into the box: then the caller gives its parity (add_parity).
   bool add_ring(std::span<const Vec2> ring, std::span<const std::uint32_t> active, bool hole,
-                int ccw);
+                std::optional<Sign> orientation);
   /// The parity of the crossings of the +x ray from the box's centre with a ring that does not
   /// reach into the box (whether the centre is inside it).
   void add_parity(bool odd) { parity_ = parity_ != odd; }
@@ -154,10 +157,6 @@ class BoxCut {
   std::vector<Vec2> vertices_;  // input vertices in the box
   MultiPolygon out_;
 };
-
-/// Orientation of a ring at its lowest vertex (convex there): 1 counter-clockwise, 0 clockwise,
-/// -1 when the lowest vertex is a spike (zero turn; not OGC-valid). Exact.
-[[nodiscard]] int ring_orientation(std::span<const Vec2> ring);
 
 /// The region clipped by the box: the one-pass cut, or the boolean engine where the cut gives
 /// up. Valid output (OGC) for OGC-valid input.

@@ -4,6 +4,7 @@
 
 #include "contain/inside/point_in_polygon.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/ring_orientation.h"
 #include "contain/shapes/polygon.h"
 
 namespace contain::clip::detail {
@@ -19,8 +20,12 @@ Ring ring_of(const Loop& loop, const std::vector<Vec2>& pts) {
   return r;
 }
 
+Sign orientation(const Loop& loop, const std::vector<Vec2>& pts) {
+  return predicates::ring_orientation(ring_of(loop, pts));
+}
+
 bool ccw(const Loop& loop, const std::vector<Vec2>& pts) {
-  return signed_area2(ring_of(loop, pts)) > 0.0;
+  return orientation(loop, pts) == Sign::positive;
 }
 
 // Segments p1p2 and q1q2 share a point other than a common endpoint position.
@@ -139,7 +144,7 @@ std::vector<std::array<std::int32_t, 3>> triangulate_loops(const std::vector<Loo
                                                            bool counter_clockwise) {
   std::vector<Loop> loops;
   for (const Loop& l : input) {
-    if (l.size() >= 3 && signed_area2(ring_of(l, pts)) != 0.0) loops.push_back(l);
+    if (l.size() >= 3 && orientation(l, pts) != Sign::zero) loops.push_back(l);
   }
   std::vector<Ring> rings;
   for (const Loop& l : loops)

@@ -11,8 +11,9 @@
 namespace contain::clip::detail {
 
 /// `loops` hold indices into `points`. Returns triangles (indices) counter-clockwise in the
-/// plane when `counter_clockwise`, clockwise otherwise. Loops that are open or of zero area are
-/// ignored. O(k^2) bridging and O(k^3) worst-case ear clipping for k loop vertices.
+/// plane when `counter_clockwise`, clockwise otherwise. Loops that are open or of zero area
+/// (exactly: `predicates::ring_orientation`, which also orients the loops) are ignored. O(k^2)
+/// bridging and O(k^3) worst-case ear clipping for k loop vertices.
 [[nodiscard]] std::vector<std::array<std::int32_t, 3>> triangulate_loops(
     const std::vector<std::vector<std::int32_t>>& loops, const std::vector<Vec2>& points,
     bool counter_clockwise);

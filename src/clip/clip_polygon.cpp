@@ -21,6 +21,7 @@
 #include "clip/ring_clip.h"
 #include "contain/clip/box_halfspaces.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/predicates/ring_orientation.h"
 
 namespace contain::clip {
 namespace {
@@ -70,12 +71,10 @@ struct Chain {
   LinePoint exit;
 };
 
-// Exact orientation of a ring: at its lowest (then leftmost) vertex, which is convex; the float
-// area where that vertex is a spike.
+// The sign of the exact area; for a simple ring, the turn at its lowest vertex. Rings of zero
+// area count as clockwise.
 bool counter_clockwise(const Ring& ring) {
-  const int o = detail::ring_orientation(ring);
-  if (o >= 0) return o == 1;
-  return signed_area2(ring) > 0.0;
+  return predicates::ring_orientation(ring) == Sign::positive;
 }
 
 bool has_area(const Ring& ring) {

@@ -16,6 +16,7 @@
 #include "clip/ring_clip.h"
 #include "contain/clip/box_halfspaces.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/ring_orientation.h"
 
 namespace contain::clip {
 namespace {
@@ -105,18 +106,27 @@ void weld_on_plane(Mesh& mesh, const std::vector<bool>& on_plane) {
   mesh.triangles.resize(m);
 }
 
-// `on_plane_out`, when given, receives which of the result's vertices lie on the plane (exactly,
-// or as rounded crossing points), before any welding.
+// A mesh cut by one half-space, before any cap: `on_plane` says which vertices lie on the plane
+// (exactly, or as rounded crossing points).
+struct Cut {
+  Mesh mesh;
+  std::vector<bool> on_plane;
+};
+
+// Keeps the part of each triangle on the inside: whole triangles with no vertex outside (those
+// lying in the plane only when they face against the gradient, so that one of two coincident
+// faces stays), nothing of those with no vertex inside, and the fan of the inside polygon for
+// the rest, its crossing points shared per mesh edge.
 template <class F>
-Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_plane_out = nullptr) {
-  const Gradient g = gradient(f);
-  Mesh out;
+Cut cut_by(const Mesh& mesh, const F& f, const Gradient& g) {
+  Cut cut;
+  Mesh& out = cut.mesh;
   out.vertices = mesh.vertices;
   std::vector<Sign> side(mesh.vertices.size());
-  std::vector<bool> on_plane(mesh.vertices.size());
+  cut.on_plane.resize(mesh.vertices.size());
   for (std::size_t v = 0; v < side.size(); ++v) {
     side[v] = f.side(mesh.vertices[v]);
-    on_plane[v] = side[v] == Sign::zero;
+    cut.on_plane[v] = side[v] == Sign::zero;
   }
   std::unordered_map<Key, std::int32_t> crossings;
   auto crossing = [&](std::int32_t i, std::int32_t j) {
@@ -126,7 +136,7 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_pla
       it->second = static_cast<std::int32_t>(out.vertices.size());
       out.vertices.push_back(detail::crossing_point(mesh.vertices[static_cast<std::size_t>(i)],
                                                     mesh.vertices[static_cast<std::size_t>(j)], f));
-      on_plane.push_back(true);
+      cut.on_plane.push_back(true);
     }
     return it->second;
   };
@@ -161,14 +171,17 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_pla
     for (int m = 1; m + 1 < n; ++m)
       out.triangles.push_back({poly[0], poly[m], poly[m + 1]});
   }
-  if (on_plane_out != nullptr) *on_plane_out = on_plane;
-  if (!cap) return out;
-  weld_on_plane(out, on_plane);
+  return cut;
+}
 
-  // Border edges on the plane (directed as the mesh uses them), chained into loops.
-  const std::unordered_set<Key> directed = directed_edges(out);
-  std::vector<std::pair<std::int32_t, std::int32_t>> border;
-  for (const auto& t : out.triangles) {
+using Edge = std::pair<std::int32_t, std::int32_t>;
+
+// The mesh's border edges on the plane (no twin, both ends on it), directed as the mesh uses
+// them: the cut's outline.
+std::vector<Edge> border_on_plane(const Mesh& mesh, const std::vector<bool>& on_plane) {
+  const std::unordered_set<Key> directed = directed_edges(mesh);
+  std::vector<Edge> border;
+  for (const auto& t : mesh.triangles) {
     for (int e = 0; e < 3; ++e) {
       const std::int32_t u = t[static_cast<std::size_t>(e)],
                          v = t[static_cast<std::size_t>((e + 1) % 3)];
@@ -178,65 +191,79 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_pla
       }
     }
   }
-  if (border.empty()) return out;
-  // Project along the gradient's largest component (exact: a choice of coordinates).
-  const Vec3 n = g.approx;
+  return border;
+}
+
+// The vertices projected along the normal's largest component (exact: a choice of coordinates,
+// orientation kept for a positive component).
+std::vector<Vec2> project_along(const std::vector<Vec3>& vertices, Vec3 n) {
   const int axis = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z)
                        ? 0
                        : (std::fabs(n.y) >= std::fabs(n.z) ? 1 : 2);
-  std::vector<Vec2> pts(out.vertices.size());
+  std::vector<Vec2> pts(vertices.size());
   for (std::size_t v = 0; v < pts.size(); ++v) {
-    const Vec3 p = out.vertices[v];
+    const Vec3 p = vertices[v];
     pts[v] = axis == 0 ? Vec2{p.y, p.z} : (axis == 1 ? Vec2{p.z, p.x} : Vec2{p.x, p.y});
   }
-  // The cap lies on one side of every border edge: the left when the edges' total signed area
-  // is positive (loops counter-clockwise around the cap, clockwise around its holes).
-  double total = 0.0;
-  for (const auto& [u, v] : border) {
-    const Vec2 a = pts[static_cast<std::size_t>(u)], b = pts[static_cast<std::size_t>(v)];
-    total += a.x * b.y - a.y * b.x;
+  return pts;
+}
+
+// The cap lies on one side of every border edge: the left when the edges' total signed area is
+// positive (loops counter-clockwise around the cap, clockwise around its holes), exactly.
+bool cap_on_the_left(const std::vector<Edge>& border, const std::vector<Vec2>& pts) {
+  std::vector<Segment2> segments;
+  segments.reserve(border.size());
+  for (const auto& [u, v] : border)
+    segments.push_back({pts[static_cast<std::size_t>(u)], pts[static_cast<std::size_t>(v)]});
+  return predicates::edges_orientation(segments) == Sign::positive;
+}
+
+// Of the unused border edges leaving the head of edge `in`, the one to follow. Where several
+// leave one vertex (the cut passes through a vertex at which the cap touches itself or another
+// loop), the first one turning from the reverse of the arriving edge towards the cap's side:
+// clockwise for a cap on the left. This keeps the two sectors meeting there in separate loops
+// (taking any one left edges without a twin). border.size() when none is left.
+std::size_t next_edge(std::size_t in, const std::vector<Edge>& border,
+                      const std::vector<std::size_t>& out_edges, const std::vector<char>& used,
+                      const std::vector<Vec2>& pts, bool cap_left) {
+  const std::int32_t u = border[in].first, v = border[in].second;
+  std::size_t best = border.size();
+  for (const std::size_t c : out_edges) {
+    if (used[c]) continue;
+    if (best == border.size()) {
+      best = c;
+      continue;
+    }
+    // Directions swept from the reverse of the arriving edge, v -> u, clockwise for a cap on
+    // the left (counter-clockwise otherwise): 0 the first open half-plane, 1 straight on,
+    // 2 the second half-plane, 3 back along v -> u (last).
+    const Vec2 o = pts[static_cast<std::size_t>(v)], r = pts[static_cast<std::size_t>(u)];
+    const Vec2 wc = pts[static_cast<std::size_t>(border[c].second)];
+    const Vec2 wb = pts[static_cast<std::size_t>(border[best].second)];
+    const int turn = cap_left ? -1 : 1;  // the sign of orient2d(o, r, w) swept first
+    auto sector = [&](Vec2 w) {
+      const int s = to_int(predicates::orient2d(o, r, w)) * turn;
+      if (s != 0) return s > 0 ? 0 : 2;
+      const bool same = (w.x > o.x) == (r.x > o.x) && (w.x < o.x) == (r.x < o.x) &&
+                        (w.y > o.y) == (r.y > o.y) && (w.y < o.y) == (r.y < o.y);
+      return same ? 3 : 1;
+    };
+    const int sc = sector(wc), sb = sector(wb);
+    const bool earlier =
+        sc != sb ? sc < sb
+                 : (sc == 0 || sc == 2) && to_int(predicates::orient2d(o, wb, wc)) * turn < 0;
+    if (earlier) best = c;
   }
-  const bool cap_left = total > 0.0;
-  // Chaining: where several border edges leave one vertex (the cut passes through a vertex at
-  // which the cap touches itself or another loop), take the first one turning from the reverse
-  // of the arriving edge towards the cap's side: clockwise for a cap on the left. This keeps the
-  // two sectors meeting there in separate loops (taking any one left edges without a twin).
+  return best;
+}
+
+// The border edges chained into closed loops of at least three vertices (open chains dropped).
+std::vector<std::vector<std::int32_t>> chain_loops(const std::vector<Edge>& border,
+                                                   const std::vector<Vec2>& pts, bool cap_left) {
   std::unordered_map<std::int32_t, std::vector<std::size_t>> leaving;
   for (std::size_t i = 0; i < border.size(); ++i)
     leaving[border[i].first].push_back(i);
   std::vector<char> used(border.size(), 0);
-  auto next_edge = [&](std::size_t in) -> std::size_t {
-    const std::int32_t u = border[in].first, v = border[in].second;
-    const std::vector<std::size_t>& out_edges = leaving[v];
-    std::size_t best = border.size();
-    for (const std::size_t c : out_edges) {
-      if (used[c]) continue;
-      if (best == border.size()) {
-        best = c;
-        continue;
-      }
-      // Directions swept from the reverse of the arriving edge, v -> u, clockwise for a cap on
-      // the left (counter-clockwise otherwise): 0 the first open half-plane, 1 straight on,
-      // 2 the second half-plane, 3 back along v -> u (last).
-      const Vec2 o = pts[static_cast<std::size_t>(v)], r = pts[static_cast<std::size_t>(u)];
-      const Vec2 wc = pts[static_cast<std::size_t>(border[c].second)];
-      const Vec2 wb = pts[static_cast<std::size_t>(border[best].second)];
-      const int turn = cap_left ? -1 : 1;  // the sign of orient2d(o, r, w) swept first
-      auto sector = [&](Vec2 w) {
-        const int s = to_int(predicates::orient2d(o, r, w)) * turn;
-        if (s != 0) return s > 0 ? 0 : 2;
-        const bool same = (w.x > o.x) == (r.x > o.x) && (w.x < o.x) == (r.x < o.x) &&
-                          (w.y > o.y) == (r.y > o.y) && (w.y < o.y) == (r.y < o.y);
-        return same ? 3 : 1;
-      };
-      const int sc = sector(wc), sb = sector(wb);
-      const bool earlier =
-          sc != sb ? sc < sb
-                   : (sc == 0 || sc == 2) && to_int(predicates::orient2d(o, wb, wc)) * turn < 0;
-      if (earlier) best = c;
-    }
-    return best;
-  };
   std::vector<std::vector<std::int32_t>> loops;
   for (std::size_t start = 0; start < border.size(); ++start) {
     if (used[start]) continue;
@@ -250,18 +277,34 @@ Mesh clip_step(const Mesh& mesh, const F& f, bool cap, std::vector<bool>* on_pla
         closed = true;
         break;
       }
-      e = next_edge(e);
+      e = next_edge(e, border, leaving[border[e].second], used, pts, cap_left);
     }
     if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
   }
-  if (loops.empty()) return out;
+  return loops;
+}
+
+// Closes the cut with cap triangles over the loops of its outline on the plane of normal n.
+void add_cap(Mesh& mesh, const std::vector<bool>& on_plane, Vec3 n) {
+  weld_on_plane(mesh, on_plane);
+  const std::vector<Edge> border = border_on_plane(mesh, on_plane);
+  if (border.empty()) return;
+  const std::vector<Vec2> pts = project_along(mesh.vertices, n);
+  const bool cap_left = cap_on_the_left(border, pts);
+  const auto loops = chain_loops(border, pts, cap_left);
+  if (loops.empty()) return;
   // The cap runs along each loop against the mesh's direction: loops counter-clockwise around
   // the cap in the projection give clockwise cap triangles.
-  const double outer_area = total;
-  const auto cap_triangles = detail::triangulate_loops(loops, pts, !(outer_area > 0.0));
-  for (const auto& t : cap_triangles)
-    out.triangles.push_back({t[0], t[1], t[2]});
-  return out;
+  for (const auto& t : detail::triangulate_loops(loops, pts, !cap_left))
+    mesh.triangles.push_back({t[0], t[1], t[2]});
+}
+
+template <class F>
+Mesh clip_step(const Mesh& mesh, const F& f, bool cap) {
+  const Gradient g = gradient(f);
+  Cut cut = cut_by(mesh, f, g);
+  if (cap) add_cap(cut.mesh, cut.on_plane, g.approx);
+  return std::move(cut.mesh);
 }
 
 Mesh compact(Mesh mesh) {
@@ -321,20 +364,12 @@ Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
 }
 
 std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane) {
-  std::vector<bool> on_plane;
-  const Mesh cut = clip_step(mesh, predicates::PlaneFunction{plane}, false, &on_plane);
-  const std::unordered_set<Key> directed = directed_edges(cut);
+  const predicates::PlaneFunction f{plane};
+  const Cut cut = cut_by(mesh, f, gradient(f));
   std::vector<Segment3> out;
-  for (const auto& t : cut.triangles) {
-    for (int e = 0; e < 3; ++e) {
-      const std::int32_t u = t[static_cast<std::size_t>(e)],
-                         v = t[static_cast<std::size_t>((e + 1) % 3)];
-      if (on_plane[static_cast<std::size_t>(u)] && on_plane[static_cast<std::size_t>(v)] &&
-          !directed.contains(edge_key(v, u))) {
-        out.push_back(
-            {cut.vertices[static_cast<std::size_t>(u)], cut.vertices[static_cast<std::size_t>(v)]});
-      }
-    }
+  for (const auto& [u, v] : border_on_plane(cut.mesh, cut.on_plane)) {
+    out.push_back({cut.mesh.vertices[static_cast<std::size_t>(u)],
+                   cut.mesh.vertices[static_cast<std::size_t>(v)]});
   }
   return out;
 }

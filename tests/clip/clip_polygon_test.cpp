@@ -175,5 +175,25 @@ TEST(ClipPolygon, ConvexRingsAndMixedHalfPlanesGiveValidPiecesOfTheBridgedArea) 
   }
 }
 
+// A self-crossing ring (not OGC-valid; Clipper2's test 5) whose lobes cross at (592, 240): the
+// upper one clockwise, of area 12640, the lower one counter-clockwise, of area 2840, holding
+// the lowest vertex. The ring is oriented by its exact area, the larger lobe's orientation; by
+// the turn at the lowest vertex the upper lobe was taken inside out, and the cut above y = 260
+// came back as a shell out to +-DBL_MAX around it.
+TEST(ClipPolygon, SelfCrossingRingIsOrientedByItsLargerLobe) {
+  const Polygon ring{{{{640, 400}, {750, 240}, {450, 240}, {580, 200}}}};
+  const double upper_lobe_above_260 = 12640.0 * 0.875 * 0.875;  // similar, 140 of 160 high
+  const std::vector<HalfPlane> y_ge_260 = {{0, 1, -260}};
+  for (const MultiPolygon& cut : {clip::clip_polygon(of(ring), y_ge_260),
+                                  clip::clip_polygon(of(ring), Box2{{0, 260}, {1000, 1000}})}) {
+    EXPECT_EQ(ogc_problem(cut), "");
+    EXPECT_DOUBLE_EQ(area(cut), upper_lobe_above_260);
+    for (const Polygon& p : cut.polygons) {
+      for (const Vec2& v : p.rings.front())
+        EXPECT_TRUE(Box2({{592, 260}, {750, 400}}).contains(v)) << v.x << " " << v.y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contain::test

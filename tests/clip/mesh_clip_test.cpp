@@ -295,5 +295,37 @@ TEST(MeshClip, FandiskByBoxesThroughItsVerticesStaysClosed) {
   }
 }
 
+// Vertical prisms (z in [-1, 1]) over triangles far from the origin whose rounded shoelace sums
+// are wrong: +8 for a clockwise triangle of area 2 at 2^28, 0 for a unit triangle at 2^30. The
+// cut z <= 0 crosses the vertical edges exactly; the cap's side and its loop were judged by
+// those sums and came out missing (an open result). Exactly, the cap closes the solid.
+TEST(MeshClip, CapWhoseRoundedBorderAreaHasTheWrongSignOrIsZeroClosesTheSolid) {
+  constexpr double m28 = 0x1p28, m30 = 0x1p30;
+  const std::array<std::array<Vec2, 3>, 2> counter_clockwise_bases = {{
+      {{{m28 - 3, m28 + 3}, {m28 - 1, m28 - 1}, {m28 + 1, m28 - 3}}},
+      {{{m30, m30}, {m30 + 1, m30}, {m30, m30 + 1}}},
+  }};
+  for (const auto& base : counter_clockwise_bases) {
+    Mesh prism;
+    for (const double z : {-1.0, 1.0}) {
+      for (const Vec2& p : base)
+        prism.vertices.push_back({p.x, p.y, z});
+    }
+    prism.triangles = {{0, 2, 1}, {3, 4, 5}};  // bottom (down), top (up)
+    for (std::int32_t i = 0; i < 3; ++i) {     // the side over edge i -> i + 1, outward
+      const std::int32_t j = (i + 1) % 3;
+      prism.triangles.push_back({i, j, j + 3});
+      prism.triangles.push_back({i, j + 3, i + 3});
+    }
+    ASSERT_TRUE(validate_mesh(prism).closed());
+    const std::vector<Plane> z_le_0 = {{0, 0, -1, 0}};
+    const Mesh half = clip::mesh_clip(prism, z_le_0, {.cut = clip::MeshCut::cap});
+    const MeshReport r = validate_mesh(half);
+    EXPECT_TRUE(r.closed() && r.consistently_oriented() && r.manifold()) << r.summary();
+    for (const Vec3& v : half.vertices)
+      EXPECT_LE(v.z, 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace contain::test

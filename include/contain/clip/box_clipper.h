@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contain/core/parallel.h"
+#include "contain/predicates/sign.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
 
@@ -40,7 +41,7 @@ class BoxClipper {
     std::vector<Box2> nodes;  // heap order: node 1 is the root, leaves from `first_leaf`
     std::size_t first_leaf = 1;
     std::size_t leaves = 0;
-    int ccw = -1;  // 1 counter-clockwise, 0 clockwise, -1 undecided (a spike at its lowest point)
+    Sign orientation = Sign::zero;  // predicates::ring_orientation (zero: no area)
   };
 
  private:
