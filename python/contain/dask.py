@@ -215,7 +215,7 @@ def clear_cache() -> None:
 
 def _classify(points: np.ndarray, shape: Shape, boundary: Optional[str], threads: int) -> np.ndarray:
     index = _index(shape)
-    if boundary is None:
+    if boundary is None or boundary == "report":
         return index.locate(points, threads=threads)
     return index.contains(points, boundary=boundary, threads=threads)
 
@@ -225,8 +225,8 @@ def _locate_block(block: np.ndarray, shape: Shape, boundary: Optional[str], thre
 
 
 def _check_boundary(boundary: Optional[str]) -> None:
-    if boundary not in (None, "inside", "outside", "raise"):
-        raise ValueError(f"boundary must be None, 'inside', 'outside' or 'raise', got {boundary!r}")
+    if boundary not in (None, "report", "inside", "outside", "raise"):
+        raise ValueError(f"boundary must be None or 'report' (int8 locations), 'inside', 'outside' or 'raise', got {boundary!r}")
 
 
 def locate(
@@ -247,7 +247,7 @@ def locate(
         Shape. Only the path or the bytes are sent to the workers; each worker process builds
         the index once (see the module documentation).
     fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
-    boundary: None gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
+    boundary: None or 'report' (the command's word) gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
         'outside' or 'raise' give booleans under that boundary policy.
     threads: threads per chunk (default 1: the workers supply the parallelism).
 
@@ -267,7 +267,7 @@ def locate(
         )
     if array.numblocks[1] != 1:
         array = array.rechunk({1: -1})
-    dtype = np.dtype(np.int8 if boundary is None else bool)
+    dtype = np.dtype(np.int8 if boundary in (None, "report") else bool)
     # One graph key holds the shape; every chunk depends on it, so it travels once per worker.
     shape_key = dask.delayed(source, pure=True)
     return da.map_blocks(
@@ -325,7 +325,7 @@ def locate_dataframe(
     missing = [c for c in columns if c not in frame.columns]
     if missing:
         raise ValueError(f"the dataframe has no column {missing[0]!r} (columns: {list(frame.columns)})")
-    dtype = np.dtype(np.int8 if boundary is None else bool)
+    dtype = np.dtype(np.int8 if boundary in (None, "report") else bool)
     return frame.map_partitions(
         _locate_partition,
         dask.delayed(source, pure=True),

@@ -416,8 +416,9 @@ Fill parse_fill(const std::string& fill) {
   if (fill == "nonzero") return Fill::nonzero;
   if (fill == "positive") return Fill::positive;
   if (fill == "negative") return Fill::negative;
-  throw py::value_error("fill must be 'even_odd', 'nonzero', 'positive' or 'negative', got '" +
-                        fill + "'");
+  throw py::value_error(
+      "fill must be 'even_odd' (or 'evenodd'), 'nonzero', 'positive' or 'negative', got '" + fill +
+      "'");
 }
 
 const char* fill_name(Fill fill) {
@@ -458,6 +459,33 @@ Transform to_transform(const py::handle& object, const char* name) {
   return take(Transform::from_row_major(std::span<const double>(numbers.data(), 12)));
 }
 
+std::vector<Transform> to_transforms(const py::handle& object, const char* name) {
+  py::array array = py::array::ensure(object);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error(std::string(name) +
+                         " must be an (N, 12), (N, 3, 4) or (N, 4, 4) array, or one transform");
+  }
+  const bool matrix =
+      array.ndim() == 2 && (array.shape(0) == 3 || array.shape(0) == 4) && array.shape(1) == 4;
+  if ((array.ndim() == 1 && array.shape(0) == 12) || matrix) return {to_transform(array, name)};
+  std::vector<Transform> poses;
+  if (array.ndim() == 3 && array.shape(1) == 4 && array.shape(2) == 4) {
+    for (py::ssize_t i = 0; i < array.shape(0); ++i)
+      poses.push_back(to_transform(array[py::int_(i)], name));
+    return poses;
+  }
+  if (array.ndim() == 3 && array.shape(1) == 3 && array.shape(2) == 4) {
+    array = array.attr("reshape")(array.shape(0), 12);
+  }
+  const Doubles rows = as_matrix(array, 12, name);
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    poses.push_back(
+        take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
+  }
+  return poses;
+}
+
 void make_location_enum(py::module_& module) {
   const py::object int_enum = py::module_::import("enum").attr("IntEnum");
   py::list members;
@@ -477,14 +505,18 @@ py::object location_object(Location location) {
 }
 
 void check_boundary_policy(const std::string& boundary) {
-  if (boundary != "inside" && boundary != "outside" && boundary != "raise") {
-    throw py::value_error("boundary must be 'inside', 'outside' or 'raise', got '" + boundary +
-                          "'");
+  if (boundary != "inside" && boundary != "outside" && boundary != "raise" &&
+      boundary != "report") {
+    throw py::value_error(
+        "boundary must be 'inside', 'outside' or 'raise' (booleans), or 'report' (the int8 "
+        "locations), got '" +
+        boundary + "'");
   }
 }
 
-py::array_t<bool> to_booleans(const std::vector<Location>& locations, const std::string& boundary) {
+py::object under_boundary_policy(std::vector<Location>&& locations, const std::string& boundary) {
   check_boundary_policy(boundary);
+  if (boundary == "report") return to_numpy(std::move(locations));
   const bool on_is_in = boundary == "inside";
   py::array_t<bool> out(static_cast<py::ssize_t>(locations.size()));
   bool* data = out.mutable_data();
