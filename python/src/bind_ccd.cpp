@@ -104,7 +104,7 @@ std::vector<collide::Motion> to_motions(const py::handle& object) {
     throw py::value_error(std::string(shapes) + ", got " +
                           py::str(array.attr("shape")).cast<std::string>());
   }
-  const std::vector<Transform> placements = to_transforms(poses, "motions");
+  const std::vector<Transform> placements = to_transforms(poses, "motions", 2);
   std::vector<collide::Motion> out(static_cast<std::size_t>(n > 0 ? n : 0));
   for (std::size_t i = 0; i < out.size(); ++i)
     out[i] = {placements[2 * i], placements[2 * i + 1]};

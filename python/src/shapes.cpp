@@ -435,6 +435,18 @@ const char* fill_name(Fill fill) {
   return "even_odd";
 }
 
+namespace {
+
+// The validated transform of 12 numbers; a NaN or infinite one raises ContainError naming the
+// argument (and the row of a batch), so that a user finds which pose was bad.
+Transform transform_of(std::span<const double> numbers, const std::string& name) {
+  Result<Transform> transform = Transform::from_row_major(numbers);
+  if (!transform.ok()) fail(transform.error().kind, name + ": " + transform.error().message);
+  return std::move(transform).value();
+}
+
+}  // namespace
+
 Transform to_transform(const py::handle& object, const char* name) {
   if (object.is_none()) return Transform{};
   const py::array array = py::array::ensure(object);
@@ -456,32 +468,41 @@ Transform to_transform(const py::handle& object, const char* name) {
   } else {
     numbers = as_matrix(array, 4, name, 3);
   }
-  return take(Transform::from_row_major(std::span<const double>(numbers.data(), 12)));
+  return transform_of(std::span<const double>(numbers.data(), 12), name);
 }
 
-std::vector<Transform> to_transforms(const py::handle& object, const char* name) {
+std::vector<Transform> to_transforms(const py::handle& object, const char* name,
+                                     py::ssize_t per_item) {
+  const std::string shapes = std::string(name) +
+                             " must have shape (N, 12), (N, 3, 4) or (N, 4, 4), or be one "
+                             "transform (12 numbers, (3, 4) or (4, 4))";
   py::array array = py::array::ensure(object);
   if (!array) {
     PyErr_Clear();
-    throw py::type_error(std::string(name) +
-                         " must be an (N, 12), (N, 3, 4) or (N, 4, 4) array, or one transform");
+    throw py::type_error(shapes);
   }
-  const bool matrix =
-      array.ndim() == 2 && (array.shape(0) == 3 || array.shape(0) == 4) && array.shape(1) == 4;
-  if ((array.ndim() == 1 && array.shape(0) == 12) || matrix) return {to_transform(array, name)};
+  const auto dim = [&](py::ssize_t d) { return array.ndim() > d ? array.shape(d) : -1; };
+  const bool matrix = array.ndim() == 2 && (dim(0) == 3 || dim(0) == 4) && dim(1) == 4;
+  if ((array.ndim() == 1 && dim(0) == 12) || matrix) return {to_transform(array, name)};
+  // Each pose is named by its row in the messages ("poses[3]: ...", "motions[1][0]: ...").
+  const auto row = [&](py::ssize_t i) {
+    std::string text = std::string(name) + "[" + std::to_string(i / per_item) + "]";
+    return per_item > 1 ? text + "[" + std::to_string(i % per_item) + "]" : text;
+  };
   std::vector<Transform> poses;
-  if (array.ndim() == 3 && array.shape(1) == 4 && array.shape(2) == 4) {
-    for (py::ssize_t i = 0; i < array.shape(0); ++i)
-      poses.push_back(to_transform(array[py::int_(i)], name));
+  if (array.ndim() == 3 && dim(1) == 4 && dim(2) == 4) {
+    for (py::ssize_t i = 0; i < dim(0); ++i)
+      poses.push_back(to_transform(array[py::int_(i)], row(i).c_str()));
     return poses;
   }
-  if (array.ndim() == 3 && array.shape(1) == 3 && array.shape(2) == 4) {
-    array = array.attr("reshape")(array.shape(0), 12);
+  if (array.ndim() == 3 && dim(1) == 3 && dim(2) == 4) {
+    array = array.attr("reshape")(dim(0), 12);
+  } else if (!(array.ndim() == 2 && dim(1) == 12) && !(array.ndim() == 1 && dim(0) == 0)) {
+    throw py::value_error(shapes + ", got " + py::str(array.attr("shape")).cast<std::string>());
   }
   const Doubles rows = as_matrix(array, 12, name);
   for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    poses.push_back(
-        take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
+    poses.push_back(transform_of(std::span<const double>(rows.data() + 12 * i, 12), row(i)));
   }
   return poses;
 }

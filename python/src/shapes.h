@@ -144,8 +144,11 @@ class MeshRef {
 /// Poses, THE rule of every batch that takes transforms (MeshPair.collide_many,
 /// MeshPairDistance, convex pairs, motions): (N, 12) rows in the contract's order, (N, 3, 4) or
 /// (N, 4, 4) matrices, or one transform as `to_transform` takes it ((12,), (3, 4), (4, 4)): a
-/// batch of one. TypeError / ValueError naming `name` and the accepted shapes.
-[[nodiscard]] std::vector<Transform> to_transforms(const py::handle& object, const char* name);
+/// batch of one. TypeError / ValueError naming `name` and the accepted shapes; a NaN or infinite
+/// pose raises ContainError naming its row, name[i] (or name[i / per_item][i % per_item] when
+/// each item is `per_item` consecutive poses, as the two placements of a motion).
+[[nodiscard]] std::vector<Transform> to_transforms(const py::handle& object, const char* name,
+                                                   py::ssize_t per_item = 1);
 
 /// The `contain.Location` IntEnum member of `location` (created by `make_location_enum`).
 [[nodiscard]] py::object location_object(Location location);

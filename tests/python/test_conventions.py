@@ -156,8 +156,10 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
         want = answer(rows)
         assert answer(threes) == answer(fours) == want, name
         assert answer(shifted(3.0)[1]) == answer(shifted(3.0)[0]) == want[:1], name  # one pose: a batch of one
-        with pytest.raises(ValueError, match="poses"):
+        with pytest.raises(ValueError, match=r"poses must have shape \(N, 12\), \(N, 3, 4\) or \(N, 4, 4\)"):
             answer(np.zeros((2, 5)))
+        with pytest.raises(contain.ContainError, match=r"poses\[1\]: .*NaN"):  # the bad pose named
+            answer([shifted(1.0)[0], [np.nan] * 12])
     # Motions: two placements each, in every pose form.
     start, end = shifted(3.0), shifted(0.5)
     forms = [np.array([[np.ravel(start[0]), np.ravel(end[0])]]).reshape(1, 24),
@@ -170,6 +172,10 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
         moving.first_contact_many(np.zeros((1, 3, 4)))
     with pytest.raises(ValueError, match="last row"):
         moving.first_contact_many(np.ones((1, 2, 4, 4)))
+    with pytest.raises(contain.ContainError, match=r"motions\[1\]\[0\]: .*NaN"):  # motion 1's start
+        moving.first_contact_many(np.r_[forms[0], np.full((1, 24), np.inf)])
+    with pytest.raises(contain.ContainError, match=r"transform_b: .*NaN"):
+        contain.collide(box, box, transform_b=[np.nan] * 12)
 
 
 # --- reprs -----------------------------------------------------------------------------------
