@@ -426,22 +426,27 @@ class LayerSource:
 
 
 def _join_pairs(points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
+    """The layer, its (2, M) pairs and, for boundary='report', their int8 locations (else None)."""
     layer = _index(source)
-    return layer, layer.locate(points, boundary=boundary, threads=threads)
+    if boundary == "report":
+        pairs, where = layer.holders(points, threads=threads)
+        return layer, pairs, where
+    return layer, layer.locate(points, boundary=boundary, threads=threads), None
 
 
 def _join_frame(labels: Any, points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
     import pandas as pd
 
-    layer, pairs = _join_pairs(points, source, boundary, threads)
+    layer, pairs, where = _join_pairs(points, source, boundary, threads)
     ids = np.asarray(layer.ids, dtype=object)
-    return pd.DataFrame(
-        {
-            "point": np.asarray(labels)[pairs[0]],
-            "region": pairs[1],
-            "id": ids[pairs[1]] if len(ids) else np.empty(0, dtype=object),
-        }
-    )
+    columns = {
+        "point": np.asarray(labels)[pairs[0]],
+        "region": pairs[1],
+        "id": ids[pairs[1]] if len(ids) else np.empty(0, dtype=object),
+    }
+    if where is not None:
+        columns["location"] = where
+    return pd.DataFrame(columns)
 
 
 def _join_block(block: np.ndarray, offset: int, source: LayerSource, boundary: str, threads: int) -> Any:
@@ -474,8 +479,10 @@ def join_layer(
         that every worker can open, a GeoDataFrame (sent as GeoJSON bytes), or a LayerSource;
         id / layer_name / fill as in contain.RegionLayer.from_file. Each worker process builds
         the RegionLayer once (see index_builds()).
-    boundary: 'inside' (a point on a region's boundary joins it, as predicate='intersects') or
-        'outside' (only points strictly inside, as 'within').
+    boundary: 'inside' (a point on a region's boundary joins it, as predicate='intersects'),
+        'outside' (only points strictly inside, as 'within'), or 'report' (the command's
+        default --boundary report: the pairs of 'inside' with an int8 column 'location', 1
+        inside, 0 on the boundary, as the command's ID:on).
     threads: threads per partition (default 1: the workers supply the parallelism).
 
     Returns a lazy dask DataFrame with one row per (point, region) pair where the region holds
@@ -489,8 +496,8 @@ def join_layer(
     import dask.dataframe as dd
     import pandas as pd
 
-    if boundary not in ("inside", "outside"):
-        raise ValueError(f"boundary must be 'inside' or 'outside', got {boundary!r}")
+    if boundary not in ("inside", "outside", "report"):
+        raise ValueError(f"boundary must be 'inside', 'outside' or 'report', got {boundary!r}")
     source = LayerSource.of(layer, id=id, layer_name=layer_name, fill=fill)
     meta = pd.DataFrame(
         {
@@ -499,6 +506,8 @@ def join_layer(
             "id": pd.Series([], dtype=object),
         }
     )
+    if boundary == "report":
+        meta = meta.assign(location=pd.Series([], dtype=np.int8))
     source_key = dask.delayed(source, pure=True)
     if isinstance(points, dd.DataFrame):
         columns = list(columns) if columns is not None else ["x", "y"]

@@ -117,6 +117,35 @@ def test_dask_locate_takes_boundary_report_as_int8_locations():
     assert report.tolist() == contain.PolygonIndex(SQUARES).locate(points.compute()).tolist()
 
 
+def test_dask_join_layer_takes_boundary_report_with_the_location_of_each_pair(tmp_path, cli):
+    pytest.importorskip("dask.dataframe")
+    import subprocess
+
+    import dask.array as da
+    import contain.dask
+
+    (tmp_path / "squares.wkt").write_text("\n".join(["POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))",
+                                                     "POLYGON ((1 1, 3 1, 3 3, 1 3, 1 1))"]) + "\n")
+    xy = np.array([[0.5, 0.5], [2, 1.5], [1.5, 1.5], [9, 9], [3, 2]])
+    points = da.from_array(xy, chunks=(2, 2))
+    report = contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="report").compute(scheduler="synchronous")
+    assert report["location"].dtype == np.int8
+    rows = list(zip(report["point"].tolist(), report["region"].tolist(), report["location"].tolist()))
+    assert rows == [(0, 0, 1), (1, 0, 0), (1, 1, 1), (2, 0, 1), (2, 1, 1), (4, 1, 0)]
+    inside = contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="inside").compute(scheduler="synchronous")
+    assert list(zip(inside["point"], inside["region"])) == [(p, r) for p, r, _ in rows]
+    # The command's default --boundary report says the same: ID:on where the location is 0.
+    np.savetxt(tmp_path / "p.txt", xy)
+    out = subprocess.run([cli, "inside", "--layer", str(tmp_path / "squares.wkt"), "--points", str(tmp_path / "p.txt")],
+                         capture_output=True, text=True, check=True).stdout.split("\n")
+    words = {(p, r): "on" for p, r, w in rows if w == 0}
+    for p in range(len(xy)):
+        want = [f"{r}:on" if words.get((p, r)) else f"{r}" for q, r, _ in rows if q == p] or ["-"]
+        assert out[p].split() == want, (p, out[p])
+    with pytest.raises(ValueError, match="'report'"):
+        contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="raise")
+
+
 # --- transforms and poses ----------------------------------------------------------------------
 
 def shifted(x):
