@@ -246,7 +246,7 @@ def locate(
         see Shape.of), a CSG tree's JSON form (a dict; Shape.csg for text and files) or a
         Shape. Only the path or the bytes are sent to the workers; each worker process builds
         the index once (see the module documentation).
-    fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
+    fill: the fill rule of a region ('even_odd' or 'evenodd', 'nonzero', 'positive', 'negative').
     boundary: None or 'report' (the command's word) gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
         'outside' or 'raise' give booleans under that boundary policy.
     threads: threads per chunk (default 1: the workers supply the parallelism).
