@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ py::array_t<bool> booleans(const std::vector<std::uint8_t>& yes) {
   return out;
 }
 
+// The closest point where there is none (an empty mesh or region: distance inf, feature -1):
+// NaN rather than a made-up (0, 0, 0), so that no caller uses it as a point of the boundary.
+constexpr double kNoPoint = std::numeric_limits<double>::quiet_NaN();
+
 // MeshDistance and ConvexDistance alike (the feature is a triangle, or a face).
 template <class Prepared>
 py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool signed_distance,
@@ -55,9 +60,10 @@ py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool sig
   std::vector<std::int8_t> where(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     d[i] = answers[i].distance;
-    q[3 * i] = answers[i].point.x;
-    q[3 * i + 1] = answers[i].point.y;
-    q[3 * i + 2] = answers[i].point.z;
+    const Vec3 at = answers[i].feature < 0 ? Vec3{kNoPoint, kNoPoint, kNoPoint} : answers[i].point;
+    q[3 * i] = at.x;
+    q[3 * i + 1] = at.y;
+    q[3 * i + 2] = at.z;
     tri[i] = answers[i].feature;
     where[i] = static_cast<std::int8_t>(answers[i].location);
   }
@@ -86,8 +92,9 @@ py::dict region_query(const distance::RegionDistance& prepared, const py::handle
   std::vector<std::int8_t> where(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     d[i] = answers[i].distance;
-    q[2 * i] = answers[i].point.x;
-    q[2 * i + 1] = answers[i].point.y;
+    const Vec2 at = answers[i].ring < 0 ? Vec2{kNoPoint, kNoPoint} : answers[i].point;
+    q[2 * i] = at.x;
+    q[2 * i + 1] = at.y;
     ring[i] = answers[i].ring;
     edge[i] = answers[i].edge;
     where[i] = static_cast<std::int8_t>(answers[i].location);
@@ -184,8 +191,9 @@ points: ({dim}) array-like of float (NaN or infinite values raise ContainError).
 signed: negative inside, exactly 0 on the boundary (the exact location), positive outside.
 closest: also the closest points (each coordinate the double nearest to the exact one).
 Returns a dict of numpy arrays: 'distance' (N,) float64, the double nearest to each exact
-distance; 'point' (N, {dim}) float64; {feature}; 'location' (N,) int8 (-1 outside, 0 boundary,
-1 inside; -1 when not signed).
+distance; 'point' (N, {dim}) float64 (NaN when there is no boundary: an empty shape, distance
+inf, feature -1); {feature}; 'location' (N,) int8 (-1 outside, 0 boundary, 1 inside; -1 when
+not signed).
 )doc";
 
 std::string query_doc(const char* dim, const char* feature) {

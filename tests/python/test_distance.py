@@ -138,3 +138,14 @@ def test_within_refuses_nan_negative_and_infinite_d_as_the_command_does(tmp_path
         run = subprocess.run([cli, "distance", "--mesh", str(tmp_path / "cube.off"), "--points", str(tmp_path / "p.txt"),
                               "--within", d], capture_output=True, text=True)
         assert run.returncode in (2, 3) and "--within" in run.stderr, (d, run.returncode, run.stderr)
+
+
+def test_an_empty_shape_is_infinitely_far_with_no_made_up_closest_point():
+    for prepared, points in ((contain.RegionDistance("POLYGON EMPTY"), [[1, 1], [0, 0]]),
+                             (contain.MeshDistance((np.zeros((1, 3)), np.zeros((0, 3), dtype=np.int64))), [[1, 1, 1], [0, 0, 0]])):
+        r = prepared.query(points, signed=True)
+        assert r["distance"].tolist() == [np.inf, np.inf] and r["location"].tolist() == [-1, -1]
+        assert np.isnan(r["point"]).all()  # not (0, 0): no boundary point exists
+        assert not prepared.within(points, 1e300).any()
+    # A shape with a boundary keeps its points, also at the origin.
+    assert contain.RegionDistance("POLYGON ((0 0, 1 0, 1 1))").query([[0, 0]])["point"].tolist() == [[0.0, 0.0]]
