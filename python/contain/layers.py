@@ -113,6 +113,9 @@ def _present_points(geometries: Any, skip_missing: bool) -> Tuple[np.ndarray, Op
         if g is None or getattr(g, "geom_type", "Point") != "Point" or g.is_empty:
             raise ValueError(f"geometry {k} is not a point: {getattr(g, 'geom_type', type(g).__name__)}")
         out[k] = g.coords[0][:2]
+    bad = present & ~np.isfinite(out).all(axis=1)
+    if bad.any():  # named by the frame's row here, not by its place among the present points
+        raise contain.ContainError(f"points[{int(np.flatnonzero(bad)[0])}] has a NaN or infinite coordinate")
     if present.all():
         return out, None
     return out[present], np.flatnonzero(present)
@@ -145,7 +148,9 @@ def sjoin(
     """geopandas.sjoin(points, regions) for points against polygons, exact and on every core.
 
     points: a GeoDataFrame of Point geometries (the left frame); None and empty points match
-        nothing (as in geopandas.sjoin: left out of 'inner', kept with NaN by 'left').
+        nothing (as in geopandas.sjoin: left out of 'inner', kept with NaN by 'left'); a point
+        with a NaN or infinite coordinate raises ContainError naming its row, points[k]
+        (geopandas' own spatial index raises too).
     regions: a GeoDataFrame of Polygon / MultiPolygon geometries (the right frame; None and
         empty geometries hold no point), or a
         contain.RegionLayer built from it in the same row order (to join several point sets

@@ -145,6 +145,9 @@ def test_sjoin_skips_none_and_empty_geometries_exactly_as_geopandas_does(geopand
     assert by_layer == pairs_of(contain.layers.sjoin(points, world))
     with pytest.raises(ValueError, match="not a point"):
         contain.layers.points_of([Point(0, 0), None])  # the plain reader still names what is not a point
+    nan_point = geopandas.GeoDataFrame(geometry=[None, Point(1, 1), Point(float("nan"), 1)])
+    with pytest.raises(contain.ContainError, match=r"points\[2\]"):  # its row, past the missing one
+        contain.layers.sjoin(nan_point, world)
 
 
 def test_points_on_shared_borders_join_both_countries(geopandas):
