@@ -215,7 +215,7 @@ def clear_cache() -> None:
 
 def _classify(points: np.ndarray, shape: Shape, boundary: Optional[str], threads: int) -> np.ndarray:
     index = _index(shape)
-    if boundary is None:
+    if boundary is None or boundary == "report":
         return index.locate(points, threads=threads)
     return index.contains(points, boundary=boundary, threads=threads)
 
@@ -225,8 +225,8 @@ def _locate_block(block: np.ndarray, shape: Shape, boundary: Optional[str], thre
 
 
 def _check_boundary(boundary: Optional[str]) -> None:
-    if boundary not in (None, "inside", "outside", "raise"):
-        raise ValueError(f"boundary must be None, 'inside', 'outside' or 'raise', got {boundary!r}")
+    if boundary not in (None, "report", "inside", "outside", "raise"):
+        raise ValueError(f"boundary must be None or 'report' (int8 locations), 'inside', 'outside' or 'raise', got {boundary!r}")
 
 
 def locate(
@@ -246,8 +246,8 @@ def locate(
         see Shape.of), a CSG tree's JSON form (a dict; Shape.csg for text and files) or a
         Shape. Only the path or the bytes are sent to the workers; each worker process builds
         the index once (see the module documentation).
-    fill: the fill rule of a region ('even_odd', 'nonzero', 'positive', 'negative').
-    boundary: None gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
+    fill: the fill rule of a region ('even_odd' or 'evenodd', 'nonzero', 'positive', 'negative').
+    boundary: None or 'report' (the command's word) gives int8 answers (-1 outside, 0 boundary, 1 inside); 'inside',
         'outside' or 'raise' give booleans under that boundary policy.
     threads: threads per chunk (default 1: the workers supply the parallelism).
 
@@ -267,7 +267,7 @@ def locate(
         )
     if array.numblocks[1] != 1:
         array = array.rechunk({1: -1})
-    dtype = np.dtype(np.int8 if boundary is None else bool)
+    dtype = np.dtype(np.int8 if boundary in (None, "report") else bool)
     # One graph key holds the shape; every chunk depends on it, so it travels once per worker.
     shape_key = dask.delayed(source, pure=True)
     return da.map_blocks(
@@ -325,7 +325,7 @@ def locate_dataframe(
     missing = [c for c in columns if c not in frame.columns]
     if missing:
         raise ValueError(f"the dataframe has no column {missing[0]!r} (columns: {list(frame.columns)})")
-    dtype = np.dtype(np.int8 if boundary is None else bool)
+    dtype = np.dtype(np.int8 if boundary in (None, "report") else bool)
     return frame.map_partitions(
         _locate_partition,
         dask.delayed(source, pure=True),
@@ -426,22 +426,27 @@ class LayerSource:
 
 
 def _join_pairs(points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
+    """The layer, its (2, M) pairs and, for boundary='report', their int8 locations (else None)."""
     layer = _index(source)
-    return layer, layer.locate(points, boundary=boundary, threads=threads)
+    if boundary == "report":
+        pairs, where = layer.holders(points, threads=threads)
+        return layer, pairs, where
+    return layer, layer.locate(points, boundary=boundary, threads=threads), None
 
 
 def _join_frame(labels: Any, points: np.ndarray, source: LayerSource, boundary: str, threads: int) -> Any:
     import pandas as pd
 
-    layer, pairs = _join_pairs(points, source, boundary, threads)
+    layer, pairs, where = _join_pairs(points, source, boundary, threads)
     ids = np.asarray(layer.ids, dtype=object)
-    return pd.DataFrame(
-        {
-            "point": np.asarray(labels)[pairs[0]],
-            "region": pairs[1],
-            "id": ids[pairs[1]] if len(ids) else np.empty(0, dtype=object),
-        }
-    )
+    columns = {
+        "point": np.asarray(labels)[pairs[0]],
+        "region": pairs[1],
+        "id": ids[pairs[1]] if len(ids) else np.empty(0, dtype=object),
+    }
+    if where is not None:
+        columns["location"] = where
+    return pd.DataFrame(columns)
 
 
 def _join_block(block: np.ndarray, offset: int, source: LayerSource, boundary: str, threads: int) -> Any:
@@ -474,8 +479,10 @@ def join_layer(
         that every worker can open, a GeoDataFrame (sent as GeoJSON bytes), or a LayerSource;
         id / layer_name / fill as in contain.RegionLayer.from_file. Each worker process builds
         the RegionLayer once (see index_builds()).
-    boundary: 'inside' (a point on a region's boundary joins it, as predicate='intersects') or
-        'outside' (only points strictly inside, as 'within').
+    boundary: 'inside' (a point on a region's boundary joins it, as predicate='intersects'),
+        'outside' (only points strictly inside, as 'within'), or 'report' (the command's
+        default --boundary report: the pairs of 'inside' with an int8 column 'location', 1
+        inside, 0 on the boundary, as the command's ID:on).
     threads: threads per partition (default 1: the workers supply the parallelism).
 
     Returns a lazy dask DataFrame with one row per (point, region) pair where the region holds
@@ -489,8 +496,8 @@ def join_layer(
     import dask.dataframe as dd
     import pandas as pd
 
-    if boundary not in ("inside", "outside"):
-        raise ValueError(f"boundary must be 'inside' or 'outside', got {boundary!r}")
+    if boundary not in ("inside", "outside", "report"):
+        raise ValueError(f"boundary must be 'inside', 'outside' or 'report', got {boundary!r}")
     source = LayerSource.of(layer, id=id, layer_name=layer_name, fill=fill)
     meta = pd.DataFrame(
         {
@@ -499,6 +506,8 @@ def join_layer(
             "id": pd.Series([], dtype=object),
         }
     )
+    if boundary == "report":
+        meta = meta.assign(location=pd.Series([], dtype=np.int8))
     source_key = dask.delayed(source, pure=True)
     if isinstance(points, dd.DataFrame):
         columns = list(columns) if columns is not None else ["x", "y"]

@@ -14,7 +14,7 @@ functions here take what GIS code holds: shapely geometries, anything with
 
 from __future__ import annotations
 
-from typing import Any, Iterable, List, Optional, Sequence
+from typing import Any, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -38,8 +38,8 @@ def _rings_of_polygon(polygon: Any) -> List[np.ndarray]:
 
 def _region_of(geometry: Any) -> List[np.ndarray]:
     """All rings of a Polygon, MultiPolygon or collection of them (one region)."""
-    if geometry is None:
-        return []
+    if geometry is None or getattr(geometry, "is_empty", False) is True:
+        return []  # shapely 1.8 calls an empty Polygon a GeometryCollection without .geoms
     kind = getattr(geometry, "geom_type", None)
     if kind == "Polygon":
         return _rings_of_polygon(geometry)
@@ -81,24 +81,44 @@ def points_of(geometries: Any) -> np.ndarray:
     Read from the points' WKB in one pass, so the doubles are exact and the cost is one
     shapely call a point. Raises ValueError for geometries that are not 2D points.
     """
+    return _present_points(geometries, skip_missing=False)[0]
+
+
+def _present_points(geometries: Any, skip_missing: bool) -> Tuple[np.ndarray, Optional[np.ndarray]]:
+    """The (K, 2) x, y of the points, and the positions they hold (None: all of them).
+
+    skip_missing: None and empty geometries are left out (as geopandas.sjoin leaves them out of
+    every match) instead of raising ValueError; any other geometry but a Point raises.
+    """
     data = getattr(getattr(geometries, "values", geometries), "_data", None)
     items = data if data is not None else list(geometries)
     if len(items) == 0:
-        return np.empty((0, 2), dtype=np.float64)
+        return np.empty((0, 2), dtype=np.float64), None
     try:
         blob = b"".join(g.wkb for g in items)
     except AttributeError:
         blob = b""
     if len(blob) == _POINT_WKB.itemsize * len(items):
         records = np.frombuffer(blob, dtype=_POINT_WKB)
-        if np.all(records["order"] == 1) and np.all(records["type"] == 1):
-            return np.column_stack([records["x"], records["y"]])
+        xy = np.column_stack([records["x"], records["y"]])
+        # shapely 2 writes an empty point as POINT (NaN NaN): such rows take the slow path.
+        if np.all(records["order"] == 1) and np.all(records["type"] == 1) and np.isfinite(xy).all():
+            return xy, None
     out = np.empty((len(items), 2), dtype=np.float64)
+    present = np.ones(len(items), dtype=bool)
     for k, g in enumerate(items):
+        if skip_missing and (g is None or g.is_empty):
+            present[k] = False
+            continue
         if g is None or getattr(g, "geom_type", "Point") != "Point" or g.is_empty:
             raise ValueError(f"geometry {k} is not a point: {getattr(g, 'geom_type', type(g).__name__)}")
         out[k] = g.coords[0][:2]
-    return out
+    bad = present & ~np.isfinite(out).all(axis=1)
+    if bad.any():  # named by the frame's row here, not by its place among the present points
+        raise contain.ContainError(f"points[{int(np.flatnonzero(bad)[0])}] has a NaN or infinite coordinate")
+    if present.all():
+        return out, None
+    return out[present], np.flatnonzero(present)
 
 
 def layer_from_geodataframe(frame: Any, id: Optional[str] = None, *, fill: str = "even_odd") -> "contain.RegionLayer":
@@ -127,8 +147,12 @@ def sjoin(
 ) -> Any:
     """geopandas.sjoin(points, regions) for points against polygons, exact and on every core.
 
-    points: a GeoDataFrame of Point geometries (the left frame).
-    regions: a GeoDataFrame of Polygon / MultiPolygon geometries (the right frame), or a
+    points: a GeoDataFrame of Point geometries (the left frame); None and empty points match
+        nothing (as in geopandas.sjoin: left out of 'inner', kept with NaN by 'left'); a point
+        with a NaN or infinite coordinate raises ContainError naming its row, points[k]
+        (geopandas' own spatial index raises too).
+    regions: a GeoDataFrame of Polygon / MultiPolygon geometries (the right frame; None and
+        empty geometries hold no point), or a
         contain.RegionLayer built from it in the same row order (to join several point sets
         against one prepared layer).
     how: 'inner' (one row per (point, region) pair) or 'left' (also the points held by no
@@ -157,9 +181,11 @@ def sjoin(
             warnings.warn(f"the points' CRS ({left_crs}) and the regions' ({right_crs}) differ: the coordinates are "
                           "joined as they are (reproject with to_crs first)", UserWarning, stacklevel=2)
     layer = regions if isinstance(regions, contain.RegionLayer) else layer_from_geodataframe(regions, fill=fill)
-    xy = points_of(points.geometry)
+    xy, present = _present_points(points.geometry, skip_missing=True)
     pairs = layer.locate(xy, boundary=boundary, threads=threads)
     left_rows, right_rows = pairs[0], pairs[1]
+    if present is not None:  # back to the frame's rows: missing points join nothing
+        left_rows = present[left_rows]
     if how == "left":
         held = np.zeros(len(points), dtype=bool)
         held[left_rows] = True
@@ -169,16 +195,15 @@ def sjoin(
         order = np.lexsort((right_rows, left_rows))
         left_rows, right_rows = left_rows[order], right_rows[order]
     joined = points.iloc[left_rows]
+    # Rows by position; -1 (a point held by no region, 'left' only) is no label, so reindex
+    # gives it NaN and changes a column's dtype only where such a row exists, as geopandas does.
     if isinstance(regions, contain.RegionLayer):
-        right = pd.DataFrame({"index_right": np.asarray(regions.ids, dtype=object)[right_rows]})
-        right.loc[right_rows < 0, "index_right"] = np.nan
-        extra = right
+        ids = pd.Series(regions.ids, dtype=object).reindex(right_rows).to_numpy()
+        extra = pd.DataFrame({"index_right": ids})
     else:
-        table = regions.drop(columns=regions.geometry.name)
-        taken = table.iloc[np.where(right_rows >= 0, right_rows, 0)].reset_index()
+        table = regions.drop(columns=regions.geometry.name).reset_index()
+        taken = table.reindex(right_rows).reset_index(drop=True)
         taken = taken.rename(columns={taken.columns[0]: "index_right"})
-        if how == "left":
-            taken.loc[right_rows < 0, :] = np.nan
         clashes = set(taken.columns) & set(joined.columns)
         extra = taken.rename(columns={c: f"{c}_{rsuffix}" for c in clashes})
         joined = joined.rename(columns={c: f"{c}_{lsuffix}" for c in clashes if c != joined.geometry.name})

@@ -80,32 +80,34 @@ collide::Motion to_motion(const py::handle& from, const py::handle& to, const ch
   return m;
 }
 
-// Motions of B: (N, 24), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4).
+// Motions of B: (N, 24), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4): the two placements of
+// each motion are read as 2N poses by the module's one pose rule (to_transforms).
 std::vector<collide::Motion> to_motions(const py::handle& object) {
   py::array array = py::array::ensure(object);
+  const char* shapes = "motions must have shape (N, 24), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4)";
   if (!array) {
     PyErr_Clear();
-    throw py::type_error(
-        "motions must be an (N, 24), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4) array");
+    throw py::type_error(shapes);
   }
-  std::vector<collide::Motion> out;
-  if (array.ndim() == 4 && array.shape(1) == 2) {
-    for (py::ssize_t i = 0; i < array.shape(0); ++i) {
-      py::object row = array[py::int_(i)];
-      out.push_back(
-          to_motion(row[py::int_(0)], row[py::int_(1)], "motions[i][0]", "motions[i][1]"));
-    }
-    return out;
+  const auto dim = [&](py::ssize_t d) { return array.ndim() > d ? array.shape(d) : -1; };
+  const py::ssize_t n = dim(0);
+  py::object poses;
+  if (array.ndim() == 1 && n == 0) {
+    poses = array.attr("reshape")(0, 12);
+  } else if (array.ndim() == 2 && dim(1) == 24) {
+    poses = array.attr("reshape")(2 * n, 12);
+  } else if (array.ndim() == 3 && dim(1) == 2 && dim(2) == 12) {
+    poses = array.attr("reshape")(2 * n, 12);
+  } else if (array.ndim() == 4 && dim(1) == 2 && (dim(2) == 3 || dim(2) == 4) && dim(3) == 4) {
+    poses = array.attr("reshape")(2 * n, dim(2), 4);
+  } else {
+    throw py::value_error(std::string(shapes) + ", got " +
+                          py::str(array.attr("shape")).cast<std::string>());
   }
-  if (array.ndim() == 3 && array.shape(1) == 2 && array.shape(2) == 12) {
-    array = array.attr("reshape")(array.shape(0), 24);
-  }
-  const Doubles rows = as_matrix(array, 24, "motions");
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    const std::span<const double> row(rows.data() + 24 * i, 24);
-    out.push_back({take(Transform::from_row_major(row.subspan(0, 12))),
-                   take(Transform::from_row_major(row.subspan(12, 12)))});
-  }
+  const std::vector<Transform> placements = to_transforms(poses, "motions", 2);
+  std::vector<collide::Motion> out(static_cast<std::size_t>(n > 0 ? n : 0));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = {placements[2 * i], placements[2 * i + 1]};
   return out;
 }
 
@@ -119,6 +121,29 @@ std::vector<Vec3> to_positions(const py::handle& object, std::size_t count, cons
 py::object optional_pair(const std::array<std::int32_t, 2>& e) {
   if (e[0] < 0) return py::none();
   return py::make_tuple(e[0], e[1]);
+}
+
+// The primitives of the witness, as the attributes that hold them.
+std::string witness_text(const collide::MeshImpact& i) {
+  const auto edge = [](const std::array<std::int32_t, 2>& e) {
+    return "(" + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ")";
+  };
+  switch (i.witness) {
+    case collide::MeshImpactWitness::vertex_a_face_b:
+    case collide::MeshImpactWitness::vertex_b_face_a:
+      return ", vertex=" + std::to_string(i.vertex) + ", triangle=" + std::to_string(i.triangle);
+    case collide::MeshImpactWitness::edges:
+      return ", edge_a=" + edge(i.edge_a) + ", edge_b=" + edge(i.edge_b);
+    case collide::MeshImpactWitness::initial:
+      return ", initial=" + py::repr(py::cast(i.initial)).cast<std::string>();
+    case collide::MeshImpactWitness::none:
+      break;
+  }
+  return "";
+}
+
+std::string mesh_side(std::size_t vertices, bool solid) {
+  return std::to_string(vertices) + " vertices, " + (solid ? "solid" : "open surface");
 }
 
 }  // namespace
@@ -193,7 +218,7 @@ witness: 'none', 'initial' (touching or nested at t = 0: `initial` is the discre
       .def("__repr__", [](const collide::MeshImpact& i) {
         return std::string("contain.MeshImpact(hit=") + (i.hit ? "True" : "False") +
                ", time=" + py::repr(py::float_(i.time)).cast<std::string>() + ", witness='" +
-               to_string(i.witness) + "')";
+               to_string(i.witness) + "'" + witness_text(i) + ")";
       });
 
   py::class_<collide::MovingMeshPair>(m, "MovingMeshPair", R"doc(
@@ -270,7 +295,11 @@ threads (0: every core) without the GIL.
       .def_property_readonly("a_is_solid", &collide::MovingMeshPair::a_is_solid,
                              "True when A is closed (a solid).")
       .def_property_readonly("b_is_solid", &collide::MovingMeshPair::b_is_solid,
-                             "True when B is closed (a solid).");
+                             "True when B is closed (a solid).")
+      .def("__repr__", [](const collide::MovingMeshPair& pair) {
+        return "contain.MovingMeshPair(a: " + mesh_side(pair.a_vertex_count(), pair.a_is_solid()) +
+               "; b: " + mesh_side(pair.b_vertex_count(), pair.b_is_solid()) + ")";
+      });
 
   m.def(
       "mesh_mesh_ccd",

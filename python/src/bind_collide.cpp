@@ -18,30 +18,6 @@ namespace {
 
 using namespace pybind11::literals;
 
-// Poses as transforms: (N, 12) rows in the contract's order, or (N, 3, 4) / (N, 4, 4) matrices.
-std::vector<Transform> to_transforms(const py::handle& object) {
-  py::array array = py::array::ensure(object);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error("poses must be an (N, 12), (N, 3, 4) or (N, 4, 4) array");
-  }
-  if (array.ndim() == 3 && array.shape(1) == 3 && array.shape(2) == 4) {
-    array = array.attr("reshape")(array.shape(0), 12);
-  }
-  std::vector<Transform> poses;
-  if (array.ndim() == 3 && array.shape(1) == 4 && array.shape(2) == 4) {
-    for (py::ssize_t i = 0; i < array.shape(0); ++i)
-      poses.push_back(to_transform(array[py::int_(i)], "poses[i]"));
-    return poses;
-  }
-  const Doubles rows = as_matrix(array, 12, "poses");
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    poses.push_back(
-        take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
-  }
-  return poses;
-}
-
 }  // namespace
 
 void bind_collide(py::module_& m) {
@@ -106,7 +82,7 @@ Example:
       .def(
           "collide_many",
           [](const collide::MeshPair& pair, const ArrayLike& poses, int threads) {
-            const std::vector<Transform> transforms = to_transforms(poses.object);
+            const std::vector<Transform> transforms = to_transforms(poses.object, "poses");
             std::vector<collide::Contact> contacts(transforms.size());
             {
               py::gil_scoped_release release;
@@ -125,7 +101,12 @@ Runs on `threads` threads (0: every core) without the GIL.
       .def_property_readonly("a_is_solid", &collide::MeshPair::a_is_solid,
                              "True when A is closed (a solid), False for a surface.")
       .def_property_readonly("b_is_solid", &collide::MeshPair::b_is_solid,
-                             "True when B is closed (a solid), False for a surface.");
+                             "True when B is closed (a solid), False for a surface.")
+      .def("__repr__", [](const collide::MeshPair& pair) {
+        const auto solid = [](bool yes) { return yes ? "solid" : "open surface"; };
+        return "contain.MeshPair(a: " + std::to_string(pair.a_vertices().size()) + " vertices, " +
+               solid(pair.a_is_solid()) + "; b: " + solid(pair.b_is_solid()) + ")";
+      });
 
   m.def(
       "collide",

@@ -1,5 +1,5 @@
-// contain.ConvexPolyhedron (point location), contain.ConvexShape and contain.convex_collide
-// (GJK with exact decisions for polytopes).
+// contain.ConvexPolyhedron (point location), contain.ConvexShape and contain.convex_intersect
+// (GJK with exact decisions for polytopes; convex_collide, its old name, deprecated).
 
 #include <pybind11/stl.h>
 
@@ -42,6 +42,28 @@ collide::ConvexShape to_convex_shape(const py::handle& object, const char* name)
   return take(collide::ConvexShape::polyhedron(to_convex_polyhedron(object, name)));
 }
 
+collide::ConvexContact convex_intersect(const py::object& a, const py::object& b) {
+  const collide::ConvexShape sa = to_convex_shape(a, "a"), sb = to_convex_shape(b, "b");
+  py::gil_scoped_release release;
+  return collide::convex_intersect(sa, sb);
+}
+
+std::string text(double x) {
+  return py::repr(py::float_(x)).cast<std::string>();
+}
+
+std::string point_text(Vec3 p) {
+  return "[" + text(p.x) + ", " + text(p.y) + ", " + text(p.z) + "]";
+}
+
+// What a ConvexShape holds, for its repr: the shape keeps only its support function, so the
+// builders record their arguments on the Python object (the class has a __dict__).
+py::object described(collide::ConvexShape shape, std::string description) {
+  py::object object = py::cast(std::move(shape));
+  object.attr("_description") = std::move(description);
+  return object;
+}
+
 }  // namespace
 
 void bind_convex(py::module_& m) {
@@ -73,10 +95,11 @@ ConvexPolyhedron, planes or a convex mesh may be given.
           [](const ConvexPolyhedron& p, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(locate_all(p, points.object, threads), boundary);
+            return under_boundary_policy(locate_all(p, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0,
-          "True where inside; `boundary` ('inside', 'outside', 'raise') decides the boundary.")
+          "True where inside; `boundary` ('inside', 'outside', 'raise') decides the boundary\n"
+          "('report': the int8 locations, as locate() and the command's --boundary report).")
       .def(
           "locate_point",
           [](const ConvexPolyhedron& p, const ArrayLike& point) {
@@ -110,14 +133,14 @@ ConvexPolyhedron, planes or a convex mesh may be given.
                    : "contain.ConvexPolyhedron(" + std::to_string(p.faces().size()) + " faces)";
       });
 
-  py::class_<collide::ConvexShape>(m, "ConvexShape", R"doc(
-A closed convex shape for convex_collide, given by its support function: a ball, a box, or a
+  py::class_<collide::ConvexShape>(m, "ConvexShape", py::dynamic_attr(), R"doc(
+A closed convex shape for convex_intersect, given by its support function: a ball, a box, or a
 convex polyhedron from a mesh. Boxes and polyhedra are polytopes (exact answers); a ball makes
 the answer GJK's floating-point one.
 
     >>> ball = contain.ConvexShape.sphere([0, 0, 0], 1)
     >>> box = contain.ConvexShape.box([1, -1, -1], [2, 1, 1])
-    >>> contain.convex_collide(ball, box).intersect
+    >>> contain.convex_intersect(ball, box).intersect
     True
 )doc")
       .def_static(
@@ -126,7 +149,9 @@ the answer GJK's floating-point one.
             if (!std::isfinite(radius) || radius < 0) {
               fail(ErrorKind::invalid_value, "radius must be finite and >= 0");
             }
-            return collide::ConvexShape::sphere({finite_vec3(center.object, "center"), radius});
+            const Vec3 c = finite_vec3(center.object, "center");
+            return described(collide::ConvexShape::sphere({c, radius}),
+                             "sphere(center=" + point_text(c) + ", radius=" + text(radius) + ")");
           },
           "center"_a, "radius"_a, "The closed ball |p - center| <= radius.")
       .def_static(
@@ -134,13 +159,18 @@ the answer GJK's floating-point one.
           [](const ArrayLike& lo, const ArrayLike& hi) {
             const Box3 box{finite_vec3(lo.object, "min"), finite_vec3(hi.object, "max")};
             if (box.empty()) fail(ErrorKind::invalid_value, "box min exceeds max on some axis");
-            return collide::ConvexShape::box(box);
+            return described(
+                collide::ConvexShape::box(box),
+                "box(min=" + point_text(box.min) + ", max=" + point_text(box.max) + ")");
           },
           "min"_a, "max"_a, "The closed axis-aligned box [min, max] (flat boxes are fine).")
       .def_static(
           "polyhedron",
           [](const py::object& convex) {
-            return take(collide::ConvexShape::polyhedron(to_convex_polyhedron(convex, "convex")));
+            const ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
+            const std::size_t faces = polyhedron.faces().size();
+            return described(take(collide::ConvexShape::polyhedron(polyhedron)),
+                             "polyhedron(" + std::to_string(faces) + " faces)");
           },
           "convex"_a,
           "A convex polyhedron from a closed convex mesh (or a ConvexPolyhedron made from one;\n"
@@ -153,10 +183,15 @@ the answer GJK's floating-point one.
           },
           "direction"_a, "A point of the shape farthest in `direction` (float64 array of 3).")
       .def_property_readonly("is_polytope", &collide::ConvexShape::is_polytope,
-                             "True for boxes and polyhedra (exact answers).");
+                             "True for boxes and polyhedra (exact answers).")
+      .def("__repr__", [](const py::object& self) {
+        const py::object description = py::getattr(self, "_description", py::none());
+        return "contain.ConvexShape." + (description.is_none() ? std::string("polyhedron()")
+                                                               : description.cast<std::string>());
+      });
 
   py::class_<collide::ConvexContact>(m, "ConvexContact", R"doc(
-The answer of convex_collide: `intersect` (also bool()), GJK's `distance` estimate (0 when they
+The answer of convex_intersect: `intersect` (also bool()), GJK's `distance` estimate (0 when they
 meet; floating point) and `exact` (True when both shapes are polytopes, so `intersect` was
 decided exactly).
 )doc")
@@ -169,25 +204,26 @@ decided exactly).
       .def("__bool__", [](const collide::ConvexContact& c) { return c.intersect; })
       .def("__repr__", [](const collide::ConvexContact& c) {
         return std::string("contain.ConvexContact(intersect=") + (c.intersect ? "True" : "False") +
-               ", distance=" + std::to_string(c.distance) +
-               ", exact=" + (c.exact ? "True" : "False") + ")";
+               ", distance=" + text(c.distance) + ", exact=" + (c.exact ? "True" : "False") + ")";
       });
 
+  m.def("convex_intersect", &convex_intersect, "a"_a, "b"_a, R"doc(
+Do two closed convex shapes share a point? GJK on their support functions (Gilbert, Johnson and
+Keerthi 1988), C++ collide::convex_intersect. a, b: a ConvexShape, or a convex mesh (anything
+mesh-like) or ConvexPolyhedron made from one. Two polytopes (boxes, convex meshes): exact, a
+separating direction certified by exact side tests, touching and overlap decided by exact
+triangle tests. A ball involved: GJK's floating-point answer (`exact` False; touching within
+~1e-12 of the size counts). Returns a ConvexContact.
+)doc");
   m.def(
       "convex_collide",
       [](const py::object& a, const py::object& b) {
-        const collide::ConvexShape sa = to_convex_shape(a, "a"), sb = to_convex_shape(b, "b");
-        py::gil_scoped_release release;
-        return collide::convex_intersect(sa, sb);
+        warn_deprecated("contain.convex_collide", "contain.convex_intersect");
+        return convex_intersect(a, b);
       },
-      "a"_a, "b"_a, R"doc(
-Do two closed convex shapes share a point? GJK on their support functions (Gilbert, Johnson and
-Keerthi 1988). a, b: a ConvexShape, or a convex mesh (anything mesh-like) or ConvexPolyhedron
-made from one. Two polytopes (boxes, convex meshes): exact, a separating direction certified
-by exact side tests, touching and overlap decided by exact triangle tests. A ball involved:
-GJK's floating-point answer (`exact` False; touching within ~1e-12 of the size counts).
-Returns a ConvexContact.
-)doc");
+      "a"_a, "b"_a,
+      "Deprecated: contain.convex_intersect(a, b), the C++ name (a DeprecationWarning); the "
+      "same answer.");
 }
 
 }  // namespace contain::python

@@ -298,10 +298,11 @@ Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 
           [](const inside::CsgSolid& solid, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(solid_locate(solid, points.object, threads), boundary);
+            return under_boundary_policy(solid_locate(solid, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0,
-          "True where inside; `boundary` ('inside', 'outside', 'raise') decides the boundary.")
+          "True where inside; `boundary` ('inside', 'outside', 'raise') decides the boundary\n"
+          "('report': the int8 locations, as locate() and the command's --boundary report).")
       .def(
           "locate_point",
           [](const inside::CsgSolid& solid, const ArrayLike& point) {

@@ -3,6 +3,8 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,10 @@ py::array_t<bool> booleans(const std::vector<std::uint8_t>& yes) {
   return out;
 }
 
+// The closest point where there is none (an empty mesh or region: distance inf, feature -1):
+// NaN rather than a made-up (0, 0, 0), so that no caller uses it as a point of the boundary.
+constexpr double kNoPoint = std::numeric_limits<double>::quiet_NaN();
+
 // MeshDistance and ConvexDistance alike (the feature is a triangle, or a face).
 template <class Prepared>
 py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool signed_distance,
@@ -54,9 +60,10 @@ py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool sig
   std::vector<std::int8_t> where(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     d[i] = answers[i].distance;
-    q[3 * i] = answers[i].point.x;
-    q[3 * i + 1] = answers[i].point.y;
-    q[3 * i + 2] = answers[i].point.z;
+    const Vec3 at = answers[i].feature < 0 ? Vec3{kNoPoint, kNoPoint, kNoPoint} : answers[i].point;
+    q[3 * i] = at.x;
+    q[3 * i + 1] = at.y;
+    q[3 * i + 2] = at.z;
     tri[i] = answers[i].feature;
     where[i] = static_cast<std::int8_t>(answers[i].location);
   }
@@ -85,8 +92,9 @@ py::dict region_query(const distance::RegionDistance& prepared, const py::handle
   std::vector<std::int8_t> where(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     d[i] = answers[i].distance;
-    q[2 * i] = answers[i].point.x;
-    q[2 * i + 1] = answers[i].point.y;
+    const Vec2 at = answers[i].ring < 0 ? Vec2{kNoPoint, kNoPoint} : answers[i].point;
+    q[2 * i] = at.x;
+    q[2 * i + 1] = at.y;
     ring[i] = answers[i].ring;
     edge[i] = answers[i].edge;
     where[i] = static_cast<std::int8_t>(answers[i].location);
@@ -101,23 +109,27 @@ py::dict region_query(const distance::RegionDistance& prepared, const py::handle
   return out;
 }
 
-std::vector<Transform> poses_of(const py::handle& object) {
-  py::array array = py::array::ensure(object);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error("poses must be an (N, 12) or (N, 3, 4) array");
+// The command's rule for `--within D` (exit 3 otherwise), so that no NaN, negative or infinite
+// clearance answers silently: a finite number >= 0.
+double clearance(double d) {
+  if (!(std::isfinite(d) && d >= 0)) {
+    fail(ErrorKind::invalid_value,
+         "d must be a finite number >= 0 (as the command's --within D), got " +
+             py::repr(py::float_(d)).cast<std::string>());
   }
-  if (array.ndim() == 3 && array.shape(1) == 3 && array.shape(2) == 4) {
-    array = array.attr("reshape")(array.shape(0), 12);
-  }
-  const Doubles rows = as_matrix(array, 12, "poses");
-  std::vector<Transform> poses;
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    poses.push_back(
-        take(Transform::from_row_major(std::span<const double>(rows.data() + 12 * i, 12))));
-  }
-  return poses;
+  return d;
 }
+
+std::string solid_word(bool solid) {
+  return solid ? "solid" : "open surface";
+}
+
+// A MeshPairDistance with the sizes its repr shows (the prepared pair keeps no counts).
+struct PreparedPair {
+  distance::MeshPairDistance pair;
+  std::size_t a_triangles = 0;
+  std::size_t b_triangles = 0;
+};
 
 py::dict pair_answers(const std::vector<distance::PairDistance3>& r) {
   std::vector<double> d(r.size()), pa(3 * r.size()), pb(3 * r.size());
@@ -146,6 +158,32 @@ py::dict pair_answers(const std::vector<distance::PairDistance3>& r) {
   return out;
 }
 
+py::dict convex_pairs(const distance::ConvexDistance& a, const distance::ConvexDistance& b,
+                      const py::handle& poses) {
+  const std::vector<Transform> t = to_transforms(poses, "poses");
+  std::vector<distance::PairDistance3> r(t.size());
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < t.size(); ++i)
+      r[i] = distance::convex_convex(a, b, t[i]);
+  }
+  return pair_answers(r);
+}
+
+py::array_t<bool> convex_pairs_within(const distance::ConvexDistance& a,
+                                      const distance::ConvexDistance& b, const py::handle& poses,
+                                      double d) {
+  clearance(d);
+  const std::vector<Transform> t = to_transforms(poses, "poses");
+  std::vector<std::uint8_t> yes(t.size());
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < t.size(); ++i)
+      yes[i] = distance::convex_convex_within(a, b, t[i], d) ? 1 : 0;
+  }
+  return booleans(yes);
+}
+
 constexpr const char* kQueryDoc = R"doc(
 Distances of many points, on `threads` threads (0: all cores), without the GIL.
 
@@ -153,8 +191,9 @@ points: ({dim}) array-like of float (NaN or infinite values raise ContainError).
 signed: negative inside, exactly 0 on the boundary (the exact location), positive outside.
 closest: also the closest points (each coordinate the double nearest to the exact one).
 Returns a dict of numpy arrays: 'distance' (N,) float64, the double nearest to each exact
-distance; 'point' (N, {dim}) float64; {feature}; 'location' (N,) int8 (-1 outside, 0 boundary,
-1 inside; -1 when not signed).
+distance; 'point' (N, {dim}) float64 (NaN when there is no boundary: an empty shape, distance
+inf, feature -1); {feature}; 'location' (N,) int8 (-1 outside, 0 boundary, 1 inside; -1 when
+not signed).
 )doc";
 
 std::string query_doc(const char* dim, const char* feature) {
@@ -187,11 +226,14 @@ the generalized winding number (`regime` says 'winding-number').
     >>> r = prepared.query(points, signed=True)    # (N, 3) -> dict of arrays
     >>> r["distance"], r["point"], r["triangle"]
 )doc")
-      .def(py::init([](const Mesh& mesh) {
+      .def(py::init([](const MeshLike& mesh) {
+             const MeshRef ref = to_mesh(mesh.object, "mesh");
              py::gil_scoped_release release;
-             return distance::MeshDistance(mesh);
+             return distance::MeshDistance(*ref);
            }),
-           "mesh"_a, "Prepares a contain.Mesh (BVH and containment index).")
+           "mesh"_a,
+           "Prepares any mesh-like object (contain.as_mesh: a Mesh, a path, a trimesh or Open3D\n"
+           "mesh, (vertices, faces)): its BVH and containment index.")
       .def(
           "query",
           [](const distance::MeshDistance& prepared, const ArrayLike& points, bool signed_distance,
@@ -204,6 +246,7 @@ the generalized winding number (`regime` says 'winding-number').
           "within",
           [](const distance::MeshDistance& prepared, const ArrayLike& points, double d,
              int threads) {
+            clearance(d);
             const Doubles array = as_matrix(points.object, 3, "points");
             require_finite(array, "points", threads);
             std::vector<std::uint8_t> yes(static_cast<std::size_t>(array.shape(0)));
@@ -215,12 +258,16 @@ the generalized winding number (`regime` says 'winding-number').
           },
           "points"_a, "d"_a, py::kw_only(), "threads"_a = 0,
           "(N,) bool: is each point's distance to the surface at most d? Exact (squared "
-          "distances against d^2, no rounding).")
+          "distances against d^2, no rounding). d: finite, >= 0 (ContainError otherwise).")
       .def_property_readonly(
           "regime",
           [](const distance::MeshDistance& prepared) { return to_string(prepared.regime()); },
           "How signs are decided: 'closed-exact' or 'winding-number'.")
-      .def("__len__", &distance::MeshDistance::size, "Number of triangles.");
+      .def("__len__", &distance::MeshDistance::size, "Number of triangles.")
+      .def("__repr__", [](const distance::MeshDistance& prepared) {
+        return "contain.MeshDistance(" + std::to_string(prepared.size()) + " triangles, regime='" +
+               to_string(prepared.regime()) + "')";
+      });
 
   py::class_<distance::RegionDistance>(m, "RegionDistance", R"doc(
 A 2D region prepared for distance queries: the distance to its rings, signed by the exact
@@ -249,6 +296,7 @@ location under the fill rule, the closest point and ring:edge, and the exact cle
           "within",
           [](const distance::RegionDistance& prepared, const ArrayLike& points, double d,
              int threads) {
+            clearance(d);
             const Doubles array = as_matrix(points.object, 2, "points");
             require_finite(array, "points", threads);
             std::vector<std::uint8_t> yes(static_cast<std::size_t>(array.shape(0)));
@@ -259,62 +307,83 @@ location under the fill rule, the closest point and ring:edge, and the exact cle
             return booleans(yes);
           },
           "points"_a, "d"_a, py::kw_only(), "threads"_a = 0,
-          "(N,) bool: is each point's distance to the rings at most d? Exact.")
-      .def("__len__", &distance::RegionDistance::size, "Number of edges.");
+          "(N,) bool: is each point's distance to the rings at most d? Exact. d: finite, >= 0.")
+      .def("__len__", &distance::RegionDistance::size, "Number of edges.")
+      .def("__repr__", [](const distance::RegionDistance& prepared) {
+        return "contain.RegionDistance(" + std::to_string(prepared.size()) + " edges, fill='" +
+               fill_name(prepared.index().fill()) + "')";
+      });
 
-  py::class_<distance::MeshPairDistance>(m, "MeshPairDistance", R"doc(
+  py::class_<PreparedPair>(m, "MeshPairDistance", R"doc(
 Two meshes prepared for distance queries as solids (0 where they touch, overlap or nest), B
-placed by a pose per query. Exact on the transformed doubles; distances rounded once.
+placed by a pose per query. Exact on the transformed doubles; distances rounded once. A and B
+are any mesh-like objects (contain.as_mesh).
 
     >>> pair = contain.MeshPairDistance(tool, fixture)
-    >>> r = pair.distance(poses)          # (N, 12) or (N, 3, 4) -> dict of arrays
+    >>> r = pair.distance(poses)          # (N, 12), (N, 3, 4) or (N, 4, 4) -> dict of arrays
     >>> r["distance"], r["point_a"], r["point_b"], r["triangle_a"], r["contact"]
 )doc")
-      .def(py::init([](const Mesh& a, const Mesh& b, const TransformLike& transform_a) {
+      .def(py::init([](const MeshLike& a, const MeshLike& b, const TransformLike& transform_a) {
+             const MeshRef ma = to_mesh(a.object, "a"), mb = to_mesh(b.object, "b");
              const Transform ta = to_transform(transform_a.object, "transform_a");
              py::gil_scoped_release release;
-             return distance::MeshPairDistance(a, b, {.transform_a = ta});
+             return PreparedPair{distance::MeshPairDistance(*ma, *mb, {.transform_a = ta}),
+                                 ma->triangles.size(), mb->triangles.size()};
            }),
            "a"_a, "b"_a, py::kw_only(), "transform_a"_a = py::none(),
-           "Prepares A (placed by transform_a, fixed) and B.")
+           "Prepares A (placed by transform_a, fixed) and B, each any mesh-like object.")
       .def(
           "distance",
-          [](const distance::MeshPairDistance& pair, const ArrayLike& poses, int threads) {
-            const std::vector<Transform> t = poses_of(poses.object);
+          [](const PreparedPair& prepared, const ArrayLike& poses, int threads) {
+            const std::vector<Transform> t = to_transforms(poses.object, "poses");
             std::vector<distance::PairDistance3> r(t.size());
             {
               py::gil_scoped_release release;
-              pair.distance(t, r, {.threads = threads});
+              prepared.pair.distance(t, r, {.threads = threads});
             }
             return pair_answers(r);
           },
           "poses"_a, py::kw_only(), "threads"_a = 0,
-          "Distances for each pose of B: a dict of arrays 'distance' (N,), 'point_a', 'point_b' "
-          "(N, 3), 'triangle_a', 'triangle_b' (N,) int32 and 'contact' (list of 'separate', "
-          "'touching', 'vertex_of_a_in_b', 'vertex_of_b_in_a').")
+          "Distances for each pose of B (poses: (N, 12), (N, 3, 4), (N, 4, 4) or one pose): a "
+          "dict of arrays 'distance' (N,), 'point_a', 'point_b' (N, 3), 'triangle_a', "
+          "'triangle_b' (N,) int32 and 'contact' (list of 'separate', 'touching', "
+          "'vertex_of_a_in_b', 'vertex_of_b_in_a').")
       .def(
           "within",
-          [](const distance::MeshPairDistance& pair, const ArrayLike& poses, double d,
-             int threads) {
-            const std::vector<Transform> t = poses_of(poses.object);
+          [](const PreparedPair& prepared, const ArrayLike& poses, double d, int threads) {
+            clearance(d);
+            const std::vector<Transform> t = to_transforms(poses.object, "poses");
             std::vector<std::uint8_t> yes(t.size());
             {
               py::gil_scoped_release release;
-              pair.within(t, d, yes, {.threads = threads});
+              prepared.pair.within(t, d, yes, {.threads = threads});
             }
             return booleans(yes);
           },
           "poses"_a, "d"_a, py::kw_only(), "threads"_a = 0,
-          "(N,) bool: is the distance at each pose at most d? Exact.");
+          "(N,) bool: is the distance at each pose at most d? Exact. d: finite, >= 0.")
+      .def_property_readonly(
+          "a_is_solid", [](const PreparedPair& prepared) { return prepared.pair.a_is_solid(); },
+          "True when A is closed (a solid).")
+      .def_property_readonly(
+          "b_is_solid", [](const PreparedPair& prepared) { return prepared.pair.b_is_solid(); },
+          "True when B is closed (a solid).")
+      .def("__repr__", [](const PreparedPair& prepared) {
+        return "contain.MeshPairDistance(a: " + std::to_string(prepared.a_triangles) +
+               " triangles, " + solid_word(prepared.pair.a_is_solid()) +
+               "; b: " + std::to_string(prepared.b_triangles) + " triangles, " +
+               solid_word(prepared.pair.b_is_solid()) + ")";
+      });
 
   py::class_<distance::ConvexDistance>(m, "ConvexDistance", R"doc(
 A convex polyhedron (given by a convex mesh) prepared for distance queries: points as
-MeshDistance answers them on its faces (signs from the exact convex containment), and the
-distance between two convex solids under poses of the second, GJK-guided and decided exactly.
+MeshDistance answers them on its faces (signs from the exact convex containment); the distance
+between two convex solids under poses of the second is contain.convex_convex (GJK-guided,
+decided exactly).
 
     >>> box = contain.ConvexDistance(contain.ConvexPolyhedron(cube_mesh))
     >>> box.query([[2, 0.5, 0.5]], signed=True)["distance"]        # array([1.])
-    >>> box.pair_distance(other, poses)["distance"]                 # (N,) per pose of other
+    >>> contain.convex_convex(box, other, poses)["distance"]        # (N,) per pose of other
 )doc")
       .def(py::init([](const py::handle& convex) {
              const ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
@@ -335,6 +404,7 @@ distance between two convex solids under poses of the second, GJK-guided and dec
       .def(
           "within",
           [](const distance::ConvexDistance& prepared, const ArrayLike& points, double d) {
+            clearance(d);
             const Doubles array = as_matrix(points.object, 3, "points");
             require_finite(array, "points", 1);
             const std::span<const Vec3> p = as_vec3(array);
@@ -346,42 +416,59 @@ distance between two convex solids under poses of the second, GJK-guided and dec
             }
             return booleans(yes);
           },
-          "points"_a, "d"_a, "(N,) bool: is each point's distance to the surface at most d? Exact.")
+          "points"_a, "d"_a,
+          "(N,) bool: is each point's distance to the surface at most d? Exact. d: finite, >= 0.")
       .def(
           "pair_distance",
           [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
              const ArrayLike& poses) {
-            const std::vector<Transform> t = poses_of(poses.object);
-            std::vector<distance::PairDistance3> r(t.size());
-            {
-              py::gil_scoped_release release;
-              for (std::size_t i = 0; i < t.size(); ++i)
-                r[i] = distance::convex_convex(a, b, t[i]);
-            }
-            return pair_answers(r);
+            warn_deprecated("ConvexDistance.pair_distance(other, poses)",
+                            "contain.convex_convex(a, b, poses)");
+            return convex_pairs(a, b, poses.object);
           },
           "other"_a, "poses"_a,
-          "Distances between this solid and `other` placed by each pose: the dict of "
-          "MeshPairDistance.distance ('triangle_a', 'triangle_b' are face indices).")
+          "Deprecated: contain.convex_convex(self, other, poses), the C++ name (a "
+          "DeprecationWarning).")
       .def(
           "pair_within",
           [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
              const ArrayLike& poses, double d) {
-            const std::vector<Transform> t = poses_of(poses.object);
-            std::vector<std::uint8_t> yes(t.size());
-            {
-              py::gil_scoped_release release;
-              for (std::size_t i = 0; i < t.size(); ++i)
-                yes[i] = distance::convex_convex_within(a, b, t[i], d) ? 1 : 0;
-            }
-            return booleans(yes);
+            warn_deprecated("ConvexDistance.pair_within(other, poses, d)",
+                            "contain.convex_convex_within(a, b, poses, d)");
+            return convex_pairs_within(a, b, poses.object, d);
           },
           "other"_a, "poses"_a, "d"_a,
-          "(N,) bool: is the distance to `other` at each pose at most d? Exact.")
+          "Deprecated: contain.convex_convex_within(self, other, poses, d), the C++ name (a "
+          "DeprecationWarning).")
       .def(
           "__len__",
           [](const distance::ConvexDistance& prepared) { return prepared.faces().size(); },
-          "Number of faces.");
+          "Number of faces.")
+      .def("__repr__", [](const distance::ConvexDistance& prepared) {
+        return "contain.ConvexDistance(" + std::to_string(prepared.faces().size()) + " faces, " +
+               std::to_string(prepared.vertices().size()) + " vertices)";
+      });
+
+  m.def(
+      "convex_convex",
+      [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
+         const ArrayLike& poses) { return convex_pairs(a, b, poses.object); },
+      "a"_a, "b"_a, "poses"_a, R"doc(
+The distance between the convex solids A and B placed by each pose of B (C++
+distance::convex_convex): 0 where they touch, overlap or nest; GJK-guided, every decision
+exact, each distance the double nearest to the exact one. a, b: contain.ConvexDistance;
+poses: (N, 12), (N, 3, 4), (N, 4, 4) or one pose. Returns the dict of MeshPairDistance.distance
+('triangle_a', 'triangle_b' are face indices).
+)doc");
+  m.def(
+      "convex_convex_within",
+      [](const distance::ConvexDistance& a, const distance::ConvexDistance& b,
+         const ArrayLike& poses, double d) { return convex_pairs_within(a, b, poses.object, d); },
+      "a"_a, "b"_a, "poses"_a, "d"_a, R"doc(
+(N,) bool: is the distance between A and B placed by each pose at most d? Exact (squared
+distances against d^2, no rounding; C++ distance::convex_convex_within). d: finite, >= 0
+(ContainError otherwise).
+)doc");
 }
 
 }  // namespace contain::python

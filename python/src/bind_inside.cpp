@@ -103,7 +103,9 @@ threads: threads for the batch (0: every core). The GIL is released while it run
 constexpr const char* kContainsDoc = R"doc(
 True where the point is inside, as a bool array of shape (N,). `boundary` (keyword, required)
 says what a point exactly on the boundary gives: 'inside' (True), 'outside' (False), or
-'raise' (ContainError naming the first such point). Otherwise as locate().
+'raise' (ContainError naming the first such point), or 'report' (the command's default: no
+booleans but the int8 locations, -1 outside, 0 boundary, 1 inside, exactly as locate()).
+Otherwise as locate().
 )doc";
 
 std::string locate_doc(const char* dim) {
@@ -181,7 +183,7 @@ Example:
           [](const inside::MeshIndex& index, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(mesh_locate(index, points.object, threads), boundary);
+            return under_boundary_policy(mesh_locate(index, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
       .def(
@@ -273,7 +275,7 @@ Example:
           [](const inside::PolygonIndex& index, const ArrayLike& points,
              const std::string& boundary, int threads) {
             check_boundary_policy(boundary);
-            return to_booleans(polygon_locate(index, points.object, threads), boundary);
+            return under_boundary_policy(polygon_locate(index, points.object, threads), boundary);
           },
           "points"_a, py::kw_only(), "boundary"_a, "threads"_a = 0, kContainsDoc)
       .def(

@@ -183,7 +183,10 @@ deterministic. WindingNumber(mesh, accuracy=3.0); evaluate(points) -> float64 (N
             return doubles(fast_winding(w, points_of(points.object, 3, threads), threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0,
-          "The winding number at each (N, 3) point, float64 (N,), on `threads` threads.");
+          "The winding number at each (N, 3) point, float64 (N,), on `threads` threads.")
+      .def("__repr__", [](const inside::FastWindingNumber& w) {
+        return "contain.WindingNumber(" + std::to_string(w.triangles().size()) + " triangles)";
+      });
 }
 
 }  // namespace contain::python

@@ -80,4 +80,10 @@ void register_errors(py::module_& module) {
   });
 }
 
+void warn_deprecated(const std::string& old_name, const std::string& new_name) {
+  const std::string text = old_name + " is deprecated: use " + new_name +
+                           " (the name of the C++ function; docs/python.md, Renamed)";
+  if (PyErr_WarnEx(PyExc_DeprecationWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 }  // namespace contain::python

@@ -5,6 +5,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
 #include <utility>
 
 #include "contain/core/result.h"
@@ -31,5 +32,9 @@ template <class T>
 
 /// Throws `Failure` of kind `kind` with `message`.
 [[noreturn]] void fail(ErrorKind kind, std::string message);
+
+/// Issues a DeprecationWarning "`old_name` is deprecated: use `new_name`" pointing at the
+/// caller's line (an error when warnings are errors: error_already_set).
+void warn_deprecated(const std::string& old_name, const std::string& new_name);
 
 }  // namespace contain::python

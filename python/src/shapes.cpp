@@ -416,8 +416,9 @@ Fill parse_fill(const std::string& fill) {
   if (fill == "nonzero") return Fill::nonzero;
   if (fill == "positive") return Fill::positive;
   if (fill == "negative") return Fill::negative;
-  throw py::value_error("fill must be 'even_odd', 'nonzero', 'positive' or 'negative', got '" +
-                        fill + "'");
+  throw py::value_error(
+      "fill must be 'even_odd' (or 'evenodd'), 'nonzero', 'positive' or 'negative', got '" + fill +
+      "'");
 }
 
 const char* fill_name(Fill fill) {
@@ -433,6 +434,18 @@ const char* fill_name(Fill fill) {
   }
   return "even_odd";
 }
+
+namespace {
+
+// The validated transform of 12 numbers; a NaN or infinite one raises ContainError naming the
+// argument (and the row of a batch), so that a user finds which pose was bad.
+Transform transform_of(std::span<const double> numbers, const std::string& name) {
+  Result<Transform> transform = Transform::from_row_major(numbers);
+  if (!transform.ok()) fail(transform.error().kind, name + ": " + transform.error().message);
+  return std::move(transform).value();
+}
+
+}  // namespace
 
 Transform to_transform(const py::handle& object, const char* name) {
   if (object.is_none()) return Transform{};
@@ -455,7 +468,43 @@ Transform to_transform(const py::handle& object, const char* name) {
   } else {
     numbers = as_matrix(array, 4, name, 3);
   }
-  return take(Transform::from_row_major(std::span<const double>(numbers.data(), 12)));
+  return transform_of(std::span<const double>(numbers.data(), 12), name);
+}
+
+std::vector<Transform> to_transforms(const py::handle& object, const char* name,
+                                     py::ssize_t per_item) {
+  const std::string shapes = std::string(name) +
+                             " must have shape (N, 12), (N, 3, 4) or (N, 4, 4), or be one "
+                             "transform (12 numbers, (3, 4) or (4, 4))";
+  py::array array = py::array::ensure(object);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error(shapes);
+  }
+  const auto dim = [&](py::ssize_t d) { return array.ndim() > d ? array.shape(d) : -1; };
+  const bool matrix = array.ndim() == 2 && (dim(0) == 3 || dim(0) == 4) && dim(1) == 4;
+  if ((array.ndim() == 1 && dim(0) == 12) || matrix) return {to_transform(array, name)};
+  // Each pose is named by its row in the messages ("poses[3]: ...", "motions[1][0]: ...").
+  const auto row = [&](py::ssize_t i) {
+    std::string text = std::string(name) + "[" + std::to_string(i / per_item) + "]";
+    return per_item > 1 ? text + "[" + std::to_string(i % per_item) + "]" : text;
+  };
+  std::vector<Transform> poses;
+  if (array.ndim() == 3 && dim(1) == 4 && dim(2) == 4) {
+    for (py::ssize_t i = 0; i < dim(0); ++i)
+      poses.push_back(to_transform(array[py::int_(i)], row(i).c_str()));
+    return poses;
+  }
+  if (array.ndim() == 3 && dim(1) == 3 && dim(2) == 4) {
+    array = array.attr("reshape")(dim(0), 12);
+  } else if (!(array.ndim() == 2 && dim(1) == 12) && !(array.ndim() == 1 && dim(0) == 0)) {
+    throw py::value_error(shapes + ", got " + py::str(array.attr("shape")).cast<std::string>());
+  }
+  const Doubles rows = as_matrix(array, 12, name);
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    poses.push_back(transform_of(std::span<const double>(rows.data() + 12 * i, 12), row(i)));
+  }
+  return poses;
 }
 
 void make_location_enum(py::module_& module) {
@@ -477,14 +526,18 @@ py::object location_object(Location location) {
 }
 
 void check_boundary_policy(const std::string& boundary) {
-  if (boundary != "inside" && boundary != "outside" && boundary != "raise") {
-    throw py::value_error("boundary must be 'inside', 'outside' or 'raise', got '" + boundary +
-                          "'");
+  if (boundary != "inside" && boundary != "outside" && boundary != "raise" &&
+      boundary != "report") {
+    throw py::value_error(
+        "boundary must be 'inside', 'outside' or 'raise' (booleans), or 'report' (the int8 "
+        "locations), got '" +
+        boundary + "'");
   }
 }
 
-py::array_t<bool> to_booleans(const std::vector<Location>& locations, const std::string& boundary) {
+py::object under_boundary_policy(std::vector<Location>&& locations, const std::string& boundary) {
   check_boundary_policy(boundary);
+  if (boundary == "report") return to_numpy(std::move(locations));
   const bool on_is_in = boundary == "inside";
   py::array_t<bool> out(static_cast<py::ssize_t>(locations.size()));
   bool* data = out.mutable_data();

@@ -132,7 +132,8 @@ class MeshRef {
 /// exactly): its `__geo_interface__`.
 [[nodiscard]] py::dict region_geo_interface(const MultiPolygon& region);
 
-/// "even_odd", "nonzero", "positive", "negative" (also "evenodd"); ValueError otherwise.
+/// "even_odd", "nonzero", "positive", "negative", and "evenodd" (the command's spelling) for
+/// even_odd; ValueError naming every accepted word otherwise.
 [[nodiscard]] Fill parse_fill(const std::string& fill);
 [[nodiscard]] const char* fill_name(Fill fill);
 
@@ -140,15 +141,27 @@ class MeshRef {
 /// a (3, 4) matrix [R | t] or a (4, 4) matrix whose last row is 0 0 0 1.
 [[nodiscard]] Transform to_transform(const py::handle& object, const char* name);
 
+/// Poses, THE rule of every batch that takes transforms (MeshPair.collide_many,
+/// MeshPairDistance, convex pairs, motions): (N, 12) rows in the contract's order, (N, 3, 4) or
+/// (N, 4, 4) matrices, or one transform as `to_transform` takes it ((12,), (3, 4), (4, 4)): a
+/// batch of one. TypeError / ValueError naming `name` and the accepted shapes; a NaN or infinite
+/// pose raises ContainError naming its row, name[i] (or name[i / per_item][i % per_item] when
+/// each item is `per_item` consecutive poses, as the two placements of a motion).
+[[nodiscard]] std::vector<Transform> to_transforms(const py::handle& object, const char* name,
+                                                   py::ssize_t per_item = 1);
+
 /// The `contain.Location` IntEnum member of `location` (created by `make_location_enum`).
 [[nodiscard]] py::object location_object(Location location);
 /// Creates `contain.Location` (enum.IntEnum: outside = -1, boundary = 0, inside = 1).
 void make_location_enum(py::module_& module);
 
-/// Booleans from locations under `boundary`: "inside" (boundary counts as inside), "outside",
-/// or "raise" (ContainError naming the first boundary point). ValueError for another word.
-[[nodiscard]] py::array_t<bool> to_booleans(const std::vector<Location>& locations,
-                                            const std::string& boundary);
+/// The answers of `contains(points, boundary=...)` under the command's --boundary policies:
+/// booleans for "inside" (boundary counts as inside), "outside", or "raise" (ContainError naming
+/// the first boundary point); for "report" (the command's default) the int8 locations
+/// themselves, -1 outside, 0 boundary, 1 inside, as `locate` gives them. ValueError for another
+/// word.
+[[nodiscard]] py::object under_boundary_policy(std::vector<Location>&& locations,
+                                               const std::string& boundary);
 
 /// Checks the policy word before any work is done.
 void check_boundary_policy(const std::string& boundary);

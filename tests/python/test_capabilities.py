@@ -334,7 +334,7 @@ def test_pair_search_equals_brute_force_with_touching_boxes():
     assert contain.pair_search(np.zeros((0, 6))).shape == (0, 2)
 
 
-def test_convex_collide_equals_exact_mesh_collision_for_polytopes():
+def test_convex_intersect_equals_exact_mesh_collision_for_polytopes():
     rng = np.random.default_rng(12)
     for _ in range(150):
         lo_a = rng.integers(0, 6, 3).astype(float)
@@ -342,14 +342,14 @@ def test_convex_collide_equals_exact_mesh_collision_for_polytopes():
         lo_b = rng.integers(0, 6, 3).astype(float)
         hi_b = lo_b + rng.integers(1, 4, 3)
         expected = contain.collide(box_mesh(lo_a, hi_a), box_mesh(lo_b, hi_b)).intersect
-        boxes = contain.convex_collide(contain.ConvexShape.box(lo_a, hi_a),
+        boxes = contain.convex_intersect(contain.ConvexShape.box(lo_a, hi_a),
                                        contain.ConvexShape.box(lo_b, hi_b))
-        meshes = contain.convex_collide(box_mesh(lo_a, hi_a), box_mesh(lo_b, hi_b))
+        meshes = contain.convex_intersect(box_mesh(lo_a, hi_a), box_mesh(lo_b, hi_b))
         assert boxes.exact and meshes.exact
         assert boxes.intersect == meshes.intersect == expected
     ball = contain.ConvexShape.sphere([0, 0, 0], 1)
-    assert contain.convex_collide(ball, contain.ConvexShape.box([0.5, 0, 0], [2, 1, 1]))
-    far = contain.convex_collide(ball, contain.ConvexShape.box([2, 0, 0], [3, 1, 1]))
+    assert contain.convex_intersect(ball, contain.ConvexShape.box([0.5, 0, 0], [2, 1, 1]))
+    far = contain.convex_intersect(ball, contain.ConvexShape.box([2, 0, 0], [3, 1, 1]))
     assert not far and not far.exact and far.distance == pytest.approx(1.0, rel=1e-9)
     assert contain.ConvexShape.box([0, 0, 0], [1, 2, 3]).support([1, 1, 1]).tolist() == [1, 2, 3]
     with pytest.raises(contain.ContainError):

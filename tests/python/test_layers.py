@@ -97,6 +97,59 @@ def test_sjoin_equals_geopandas_on_natural_earth_countries(geopandas):
     assert sorted(zip(pairs[0].tolist(), pairs[1].tolist())) == pairs_of(contain.layers.sjoin(points, world))
 
 
+def sorted_frame(frame):
+    """The frame in (left row, index_right) order: geopandas' own row order of an inner join
+    depends on its version (0.12: by region), ours is by point; the rows must be the same."""
+    return frame.assign(_n=np.arange(len(frame)), _i=frame.index).sort_values(["_i", "index_right", "_n"]).drop(columns=["_n", "_i"])
+
+
+def test_sjoin_skips_none_and_empty_geometries_exactly_as_geopandas_does(geopandas):
+    from shapely.geometry import GeometryCollection, MultiPolygon, Point, Polygon
+
+    world = geopandas.read_file(geopandas.datasets.get_path("naturalearth_lowres"))
+    # Countries 3, 7, 11 empty in three spellings (shapely 1.8 reads Polygon() as an empty
+    # GeometryCollection without .geoms: the AttributeError of issue 24), 15 missing.
+    shapes = list(world.geometry)
+    shapes[3], shapes[7], shapes[11], shapes[15] = Polygon(), MultiPolygon(), GeometryCollection(), None
+    world = world.set_geometry(geopandas.GeoSeries(shapes, index=world.index, crs=world.crs))
+    rng = np.random.default_rng(24)
+    xy = np.column_stack([rng.uniform(-180, 180, 2000), rng.uniform(-90, 90, 2000)])
+    geometry = list(geopandas.points_from_xy(xy[:, 0], xy[:, 1]))
+    for k in range(0, 2000, 97):
+        geometry[k] = None
+    for k in range(5, 2000, 89):
+        geometry[k] = Point()
+    points = geopandas.GeoDataFrame({"n": np.arange(len(xy))}, geometry=geometry, crs=world.crs)
+    for how in ("inner", "left"):
+        for predicate in ("intersects", "within"):
+            ours = contain.layers.sjoin(points, world, how=how, predicate=predicate)
+            theirs = geopandas.sjoin(points, world, how=how, predicate=predicate)
+            assert list(ours.columns) == list(theirs.columns), (how, predicate)
+            assert list(ours.dtypes) == list(theirs.dtypes), (how, predicate)
+            assert sorted_frame(ours).equals(sorted_frame(theirs)), (how, predicate)
+    left = contain.layers.sjoin(points, world, how="left")
+    assert left.loc[0, "index_right"] != left.loc[0, "index_right"]  # NaN: a missing point
+    # Frames that hold nothing to join: all points missing, all regions empty, no rows.
+    nothing = geopandas.GeoDataFrame({"n": [0, 1]}, geometry=[None, Point()])
+    empty = geopandas.GeoDataFrame({"name": ["e", "f"]}, geometry=[Polygon(), None])
+    for left_frame, right_frame in ((nothing, world), (points.iloc[:50], empty), (points.iloc[:0], world),
+                                    (points.iloc[:50], world.iloc[:0])):
+        for how in ("inner", "left"):
+            ours = contain.layers.sjoin(left_frame, right_frame, how=how)
+            theirs = geopandas.sjoin(left_frame, right_frame, how=how)
+            assert sorted_frame(ours).equals(sorted_frame(theirs)), (len(left_frame), len(right_frame), how)
+            assert list(ours.dtypes) == list(theirs.dtypes)
+    # A prepared layer of the same frame: the same pairs.
+    layer = contain.layers.layer_from_geodataframe(world)
+    by_layer = [(a, int(b)) for a, b in pairs_of(contain.layers.sjoin(points, layer))]  # ids are str
+    assert by_layer == pairs_of(contain.layers.sjoin(points, world))
+    with pytest.raises(ValueError, match="not a point"):
+        contain.layers.points_of([Point(0, 0), None])  # the plain reader still names what is not a point
+    nan_point = geopandas.GeoDataFrame(geometry=[None, Point(1, 1), Point(float("nan"), 1)])
+    with pytest.raises(contain.ContainError, match=r"points\[2\]"):  # its row, past the missing one
+        contain.layers.sjoin(nan_point, world)
+
+
 def test_points_on_shared_borders_join_both_countries(geopandas):
     world = geopandas.read_file(geopandas.datasets.get_path("naturalearth_lowres"))
     layer = contain.layers.layer_from_geodataframe(world, id="name")

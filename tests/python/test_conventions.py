@@ -1,0 +1,294 @@
+"""Python and the command agree on shapes and names (issue 24, newcomer friction; issue 23, one
+naming): a pose as 12 numbers, (3, 4) or (4, 4) wherever a transform is taken, the fill spelled
+'evenodd' (the command's word) or 'even_odd' wherever a fill is taken, the command's
+`--boundary report` as boundary='report', a repr that shows what each object holds, and the
+convex pair under its C++ names with the old Python names kept as deprecated aliases."""
+
+import re
+import warnings
+
+import numpy as np
+import pytest
+
+import contain
+from meshes import cube
+
+SQUARES = [np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float),
+           np.array([[1, 1], [3, 1], [3, 3], [1, 3]], dtype=float)]  # overlap at [1, 2]^2
+WKT = "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))"
+
+
+def public_callables():
+    """Every public function, class and method of the module, by dotted name."""
+    for name in contain.__all__:
+        item = getattr(contain, name)
+        if isinstance(item, type):
+            if issubclass(item, BaseException) or name == "Location":
+                continue
+            yield name, item
+            for member in vars(item):
+                if not member.startswith("_") or member == "__init__":
+                    value = getattr(item, member)
+                    if callable(value):
+                        yield f"{name}.{member}", value
+        elif callable(item):
+            yield name, item
+
+
+def taking(parameter):
+    """The public callables whose signature has the keyword `parameter` (pybind11 writes each
+    signature at the top of the docstring: 'fill: str = ...')."""
+    found = set()
+    for name, item in public_callables():
+        if re.search(rf"\b{parameter}: ", item.__doc__ or ""):
+            found.add(name.removesuffix(".__init__"))
+    return found
+
+
+# --- fill ------------------------------------------------------------------------------------
+
+def fill_answers(tmp_path):
+    """What every binding that takes a fill answers under it, on two overlapping squares: the
+    overlap is outside under even-odd and inside under nonzero."""
+    (tmp_path / "squares.wkt").write_text(WKT)
+    probe = np.array([[1.5, 1.5], [0.5, 0.5], [5, 5]])
+    road = [np.array([[0.5, 1.5], [2.5, 1.5]])]
+    return {
+        "PolygonIndex": lambda f: contain.PolygonIndex(SQUARES, fill=f).locate(probe).tolist(),
+        "PolygonIndex.from_file": lambda f: contain.PolygonIndex.from_file(tmp_path / "squares.wkt", fill=f).locate(probe).tolist(),
+        "point_in_polygon": lambda f: int(contain.point_in_polygon(SQUARES, [1.5, 1.5], fill=f)),
+        "point_in_convex_polygon": lambda f: contain.point_in_convex_polygon(SQUARES[0], probe, fill=f).tolist(),
+        "RegionDistance": lambda f: contain.RegionDistance(WKT, fill=f).query(probe, signed=True)["distance"].tolist(),
+        "polygon_boolean": lambda f: contain.polygon_boolean(SQUARES, "POLYGON ((0 0, 9 0, 9 9, 0 9))", "intersection", fill=f).area,
+        "clip_polylines": lambda f: [p.tolist() for p in contain.clip_polylines(road, SQUARES, fill=f)],
+        "collide": lambda f: bool(contain.collide(SQUARES, "POLYGON ((1.2 1.2, 1.8 1.2, 1.8 1.8))", fill=f)),
+        "RegionLayer": lambda f: contain.RegionLayer([SQUARES], fill=f).locate(probe).tolist(),
+        "RegionLayer.from_file": lambda f: contain.RegionLayer.from_file(str(tmp_path / "squares.wkt"), fill=f).locate(probe).tolist(),
+        "RegionLayer.parse": lambda f: contain.RegionLayer.parse(WKT, "wkt", fill=f).locate(probe).tolist(),
+    }
+
+
+def test_the_fill_is_spelled_evenodd_or_even_odd_wherever_a_fill_is_taken(tmp_path):
+    answers = fill_answers(tmp_path)
+    assert taking("fill") <= set(answers), taking("fill") - set(answers)  # a new binding joins the table
+    for name, answer in answers.items():
+        even_odd = answer("even_odd")
+        assert answer("evenodd") == even_odd, name
+        if name not in ("point_in_convex_polygon",):  # one convex ring: every rule agrees
+            assert answer("nonzero") != even_odd, name  # so 'evenodd' is even-odd, not a default
+        with pytest.raises(ValueError, match=r"fill must be 'even_odd' \(or 'evenodd'\)"):
+            answer("even-odd")
+    assert contain.PolygonIndex(SQUARES, fill="evenodd").fill == "even_odd"
+
+
+# --- boundary policies -----------------------------------------------------------------------
+
+def test_boundary_report_gives_the_locations_as_the_command_default_does():
+    octahedron = ([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
+                  [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    p3 = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0.5, 0.5, 0]])
+    p2 = np.array([[0.5, 0.5], [2, 1], [3.5, 3.5]])
+    indexes = {
+        "MeshIndex.contains": (contain.MeshIndex(octahedron), p3),
+        "PolygonIndex.contains": (contain.PolygonIndex(SQUARES), p2),
+        "ConvexPolyhedron.contains": (contain.ConvexPolyhedron(octahedron), p3),
+        "CsgSolid.contains": (contain.CsgSolid(contain.Csg.mesh(octahedron)), p3),
+    }
+    assert {n for n in taking("boundary") if n.endswith(".contains")} == set(indexes)
+    for name, (index, points) in indexes.items():
+        located = index.locate(points)
+        report = index.contains(points, boundary="report")
+        assert report.dtype == np.int8 and np.array_equal(report, located), name
+        assert 0 in report.tolist(), name  # a boundary point, reported as such
+        assert index.contains(points, boundary="inside").tolist() == (located >= 0).tolist(), name
+        with pytest.raises(ValueError, match="'report'"):
+            index.contains(points, boundary="on")
+
+
+def test_dask_locate_takes_boundary_report_as_int8_locations():
+    pytest.importorskip("dask.array")
+    import dask.array as da
+    import contain.dask
+
+    points = da.from_array(np.array([[0.5, 0.5], [2, 1], [1.5, 1.5], [9, 9]]), chunks=(2, 2))
+    region = contain.write_wkt(SQUARES)
+    report = contain.dask.locate(points, region, boundary="report").compute(scheduler="synchronous")
+    assert report.dtype == np.int8
+    assert report.tolist() == contain.PolygonIndex(SQUARES).locate(points.compute()).tolist()
+
+
+def test_dask_join_layer_takes_boundary_report_with_the_location_of_each_pair(tmp_path, cli):
+    pytest.importorskip("dask.dataframe")
+    import subprocess
+
+    import dask.array as da
+    import contain.dask
+
+    (tmp_path / "squares.wkt").write_text("\n".join(["POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))",
+                                                     "POLYGON ((1 1, 3 1, 3 3, 1 3, 1 1))"]) + "\n")
+    xy = np.array([[0.5, 0.5], [2, 1.5], [1.5, 1.5], [9, 9], [3, 2]])
+    points = da.from_array(xy, chunks=(2, 2))
+    report = contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="report").compute(scheduler="synchronous")
+    assert report["location"].dtype == np.int8
+    rows = list(zip(report["point"].tolist(), report["region"].tolist(), report["location"].tolist()))
+    assert rows == [(0, 0, 1), (1, 0, 0), (1, 1, 1), (2, 0, 1), (2, 1, 1), (4, 1, 0)]
+    inside = contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="inside").compute(scheduler="synchronous")
+    assert list(zip(inside["point"], inside["region"])) == [(p, r) for p, r, _ in rows]
+    # The command's default --boundary report says the same: ID:on where the location is 0.
+    np.savetxt(tmp_path / "p.txt", xy)
+    out = subprocess.run([cli, "inside", "--layer", str(tmp_path / "squares.wkt"), "--points", str(tmp_path / "p.txt")],
+                         capture_output=True, text=True, check=True).stdout.split("\n")
+    words = {(p, r): "on" for p, r, w in rows if w == 0}
+    for p in range(len(xy)):
+        want = [f"{r}:on" if words.get((p, r)) else f"{r}" for q, r, _ in rows if q == p] or ["-"]
+        assert out[p].split() == want, (p, out[p])
+    with pytest.raises(ValueError, match="'report'"):
+        contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="raise")
+
+
+# --- transforms and poses ----------------------------------------------------------------------
+
+def shifted(x):
+    """The translation by (x, 0, 0) as 12 numbers, a (3, 4) and a (4, 4) matrix."""
+    rows = np.array([[1, 0, 0, x], [0, 1, 0, 0], [0, 0, 1, 0]], dtype=float)
+    return [rows.ravel().tolist(), rows, np.vstack([rows, [0, 0, 0, 1]])]
+
+
+def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_taken():
+    box = cube()
+    pair, distances, moving = contain.MeshPair(box, box), contain.MeshPairDistance(box, box), contain.MovingMeshPair(box, box)
+    convex = contain.ConvexDistance(box)
+    single = {
+        "collide": lambda t: contain.collide(box, box, transform_a=t, transform_b=t).intersect,
+        "MeshPair": lambda t: contain.MeshPair(box, box, transform_a=t).collide(None).intersect,
+        "MeshPair.collide": lambda t: pair.collide(t).intersect,
+        "MeshPairDistance": lambda t: contain.MeshPairDistance(box, box, transform_a=t).distance(np.eye(4))["distance"].tolist(),
+        "MovingMeshPair": lambda t: contain.MovingMeshPair(box, box, from_a=t, to_a=t).first_contact(None).time,
+        "MovingMeshPair.first_contact": lambda t: moving.first_contact(from_b=t, to_b=shifted(0.5)[1]).time,
+        "mesh_mesh_ccd": lambda t: contain.mesh_mesh_ccd(box, box, from_b=t, to_b=t).hit,
+        "SolidScene": lambda t: contain.SolidScene([box, box], [None, t]).pairs().tolist(),
+    }
+    for name, answer in single.items():
+        forms = [answer(t) for t in shifted(3.0)]
+        assert forms[0] == forms[1] == forms[2], (name, forms)
+    batches = {
+        "MeshPair.collide_many": lambda p: pair.collide_many(p).tolist(),
+        "MeshPairDistance.distance": lambda p: distances.distance(p)["distance"].tolist(),
+        "MeshPairDistance.within": lambda p: distances.within(p, 1.5).tolist(),
+        "convex_convex": lambda p: contain.convex_convex(convex, convex, p)["distance"].tolist(),
+        "convex_convex_within": lambda p: contain.convex_convex_within(convex, convex, p, 1.5).tolist(),
+    }
+    assert taking("poses") - {"ConvexDistance.pair_distance", "ConvexDistance.pair_within"} == set(batches)
+    xs = (3.0, 1.0, 0.5)
+    rows, threes, fours = (np.array([shifted(x)[k] for x in xs]) for k in range(3))
+    for name, answer in batches.items():
+        want = answer(rows)
+        assert answer(threes) == answer(fours) == want, name
+        assert answer(shifted(3.0)[1]) == answer(shifted(3.0)[0]) == want[:1], name  # one pose: a batch of one
+        with pytest.raises(ValueError, match=r"poses must have shape \(N, 12\), \(N, 3, 4\) or \(N, 4, 4\)"):
+            answer(np.zeros((2, 5)))
+        with pytest.raises(contain.ContainError, match=r"poses\[1\]: .*NaN"):  # the bad pose named
+            answer([shifted(1.0)[0], [np.nan] * 12])
+    # Motions: two placements each, in every pose form.
+    start, end = shifted(3.0), shifted(0.5)
+    forms = [np.array([[np.ravel(start[0]), np.ravel(end[0])]]).reshape(1, 24),
+             np.array([[start[0], end[0]]]),
+             np.array([[start[1], end[1]]]),
+             np.array([[start[2], end[2]]])]
+    answers = [moving.first_contact_many(m)[1].tolist() for m in forms]
+    assert answers[0] == answers[1] == answers[2] == answers[3] == [moving.first_contact(start[1], end[1]).time]
+    with pytest.raises(ValueError, match=r"motions must have shape \(N, 24\)"):
+        moving.first_contact_many(np.zeros((1, 3, 4)))
+    with pytest.raises(ValueError, match="last row"):
+        moving.first_contact_many(np.ones((1, 2, 4, 4)))
+    with pytest.raises(contain.ContainError, match=r"motions\[1\]\[0\]: .*NaN"):  # motion 1's start
+        moving.first_contact_many(np.r_[forms[0], np.full((1, 24), np.inf)])
+    with pytest.raises(contain.ContainError, match=r"transform_b: .*NaN"):
+        contain.collide(box, box, transform_b=[np.nan] * 12)
+
+
+# --- reprs -----------------------------------------------------------------------------------
+
+def instances():
+    """One object of every public class, as a user makes it."""
+    box = cube()
+    moving = contain.MovingMeshPair(box, box)
+    return {
+        "BoxClipper": contain.BoxClipper(WKT),
+        "Contact": contain.collide(box, box),
+        "ConvexContact": contain.convex_intersect(box, box),
+        "ConvexDistance": contain.ConvexDistance(box),
+        "ConvexPolyhedron": contain.ConvexPolyhedron(box),
+        "ConvexShape": contain.ConvexShape.sphere([0, 0, 0], 1.5),
+        "Csg": contain.Csg.sphere([0, 0, 0], 1),
+        "CsgSolid": contain.CsgSolid(contain.Csg.sphere([0, 0, 0], 1)),
+        "Mesh": box,
+        "MeshDistance": contain.MeshDistance(box),
+        "MeshImpact": moving.first_contact(shifted(3.0)[1], shifted(0.5)[1]),
+        "MeshIndex": contain.MeshIndex(box),
+        "MeshPair": contain.MeshPair(box, box),
+        "MeshPairDistance": contain.MeshPairDistance(box, box),
+        "MeshReport": contain.validate_mesh(box),
+        "MovingMeshPair": moving,
+        "PolygonIndex": contain.PolygonIndex(WKT),
+        "Region": contain.as_region(WKT),
+        "RegionDistance": contain.RegionDistance(WKT, fill="nonzero"),
+        "RegionLayer": contain.RegionLayer([WKT]),
+        "SolidScene": contain.SolidScene([box]),
+        "WindingNumber": contain.WindingNumber(box),
+    }
+
+
+def test_every_class_has_a_repr_that_shows_what_it_holds():
+    objects = instances()
+    classes = {n for n in contain.__all__ if isinstance(getattr(contain, n), type)
+               and not issubclass(getattr(contain, n), BaseException) and n != "Location"}
+    assert classes == set(objects), classes ^ set(objects)
+    for name, item in objects.items():
+        text = repr(item)
+        assert text.startswith(f"contain.{name}") and "object at 0x" not in text, (name, text)
+    assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed-exact')"
+    assert repr(objects["RegionDistance"]) == "contain.RegionDistance(8 edges, fill='nonzero')"
+    assert repr(objects["MeshPairDistance"]) == "contain.MeshPairDistance(a: 12 triangles, solid; b: 12 triangles, solid)"
+    assert repr(objects["MovingMeshPair"]) == "contain.MovingMeshPair(a: 8 vertices, solid; b: 8 vertices, solid)"
+    assert repr(objects["ConvexShape"]) == "contain.ConvexShape.sphere(center=[0.0, 0.0, 0.0], radius=1.5)"
+    assert repr(objects["ConvexDistance"]) == "contain.ConvexDistance(12 faces, 8 vertices)"
+    # The impact names its witness primitives, as its attributes hold them.
+    impact = objects["MeshImpact"]
+    assert impact.witness in ("vertex_a_face_b", "vertex_b_face_a", "edges")
+    if impact.witness == "edges":
+        assert f"edge_a={impact.edge_a}, edge_b={impact.edge_b}" in repr(impact)
+    else:
+        assert f"vertex={impact.vertex}, triangle={impact.triangle}" in repr(impact)
+    assert f"time={impact.time!r}" in repr(impact)
+    initial = objects["MovingMeshPair"].first_contact(None)
+    assert repr(initial).endswith("witness='initial', initial=contain.Contact(intersect=True, witness='triangles'))")
+    miss = objects["MovingMeshPair"].first_contact(shifted(3.0)[1], shifted(4.0)[1])
+    assert repr(miss) == "contain.MeshImpact(hit=False, time=inf, witness='none')"
+
+
+# --- the convex pair under its C++ names ---------------------------------------------------------
+
+def test_convex_pair_queries_carry_the_cpp_names_and_the_old_names_warn():
+    box = cube()
+    ball = contain.ConvexShape.sphere([0, 0, 0], 1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new names never warn
+        new = contain.convex_intersect(ball, box)
+        prepared = contain.ConvexDistance(box)
+        poses = np.array([shifted(x)[1] for x in (3.0, 1.0, 0.5)])
+        distances = contain.convex_convex(prepared, prepared, poses)
+        within = contain.convex_convex_within(prepared, prepared, poses, 1.5)
+    with pytest.warns(DeprecationWarning, match="convex_collide is deprecated: use contain.convex_intersect"):
+        old = contain.convex_collide(ball, box)
+    assert (old.intersect, old.exact, old.distance) == (new.intersect, new.exact, new.distance)
+    with pytest.warns(DeprecationWarning, match=r"pair_distance.*use contain.convex_convex\(a, b, poses\)"):
+        old_distances = prepared.pair_distance(prepared, poses)
+    with pytest.warns(DeprecationWarning, match=r"use contain.convex_convex_within"):
+        old_within = prepared.pair_within(prepared, poses, 1.5)
+    assert old_distances["distance"].tolist() == distances["distance"].tolist() == [2.0, 0.0, 0.0]
+    assert old_within.tolist() == within.tolist() == [False, True, True]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)  # warnings as errors: raised, not lost
+        with pytest.raises(DeprecationWarning):
+            contain.convex_collide(ball, box)
