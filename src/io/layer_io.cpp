@@ -1,5 +1,9 @@
 #include "contain/io/layer_io.h"
 
+#include <filesystem>
+#include <optional>
+
+#include "contain/io/region_io.h"
 #include "contain/io/wkt.h"
 #include "io/text_scan.h"
 
@@ -54,10 +58,16 @@ Result<Layer> parse_wkt_layer(std::string_view text, const std::string& source,
   return layer;
 }
 
+std::string layer_source_name(const std::string& source) {
+  return detail::connection_name(source);
+}
+
 Result<Layer> read_layer(const std::string& source, const LayerOptions& options) {
   const bool database = starts_with_ci(source, "PG:");
-  const std::string ext = database ? std::string() : detail::lower_extension(source);
-  if (ext == ".wkt" || ext == ".geojson" || ext == ".json") {
+  const std::optional<RegionFormat> format =
+      database ? std::nullopt : region_format(std::filesystem::path(source));
+  if (format) {
+    const std::string ext = detail::lower_extension(source);
     auto text = detail::read_file(source);
     if (!text) return text.error();
     const std::string name = detail::source_name(source);
@@ -66,8 +76,8 @@ Result<Layer> read_layer(const std::string& source, const LayerOptions& options)
           ErrorKind::usage,
           "--layer-name " + options.layer_name + ": a " + ext + " file holds one layer", name);
     }
-    return ext == ".wkt" ? parse_wkt_layer(*text, name, options)
-                         : parse_geojson_layer(*text, name, options);
+    return format == RegionFormat::wkt ? parse_wkt_layer(*text, name, options)
+                                       : parse_geojson_layer(*text, name, options);
   }
   return read_gdal_layer(source, options);
 }

@@ -51,6 +51,10 @@ namespace contain::io {
 [[nodiscard]] Result<Layer> read_gdal_layer(const std::string& source,
                                             const LayerOptions& options = {});
 
+/// How messages name a layer's source: a path as given, a connection string with its password
+/// hidden (every form: `password=...`, `postgresql://user:secret@host`).
+[[nodiscard]] std::string layer_source_name(const std::string& source);
+
 /// True when layers can be read through GDAL. GDAL is not linked into contain::io: it lives in
 /// the plugin libcontain_gdal.so, opened on first use (the first call of this function or of
 /// read_gdal_layer), so a program that reads no GIS layer never loads it. The plugin is looked
