@@ -88,14 +88,7 @@ Verb add_bound(CLI::App& app) {
       "    {\"aabb\":{\"min\":[..],\"max\":[..]},\"sphere\":{\"center\":[..],\"radius\":r}}\n"
       "  contain bound part.stl --sphere ritter\n"
       "  contain bound parcels.wkt      (2D: \"circle\" in place of \"sphere\")");
-  return {cmd, [o]() {
-            const std::string ext = std::filesystem::path(o->file).extension().string();
-            std::string lower;
-            for (char c : ext)
-              lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            if (lower == ".wkt" || lower == ".geojson" || lower == ".json") return run_region(*o);
-            return run_mesh(*o);
-          }};
+  return {cmd, [o]() { return is_region_path(o->file) ? run_region(*o) : run_mesh(*o); }};
 }
 
 }  // namespace contain::cli

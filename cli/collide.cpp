@@ -204,7 +204,14 @@ Verb add_collide(CLI::App& app) {
           }
           return run_collide_scene(o->scene, o->json, o->threads, o->out);
         }
-        if (!c->kind.empty() || !c->queries.empty()) return run_ccd_queries(*c);
+        if (c->kind.empty() && !c->queries.empty()) {
+          // The kind decides how the 8 points of a query are read: guessing answers another
+          // question (issue 24: a vertex-face hit printed as an edge-edge miss).
+          return report(Error{ErrorKind::usage,
+                              "collide: --queries FILE needs --ccd vertex-face or --ccd edge-edge "
+                              "(how each query's 8 points are read)"});
+        }
+        if (!c->kind.empty()) return run_ccd_queries(*c);
         if (o->a.empty() || o->b.empty()) {
           return report(Error{ErrorKind::usage,
                               "collide needs two shapes A and B (or --scene "

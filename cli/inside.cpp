@@ -154,9 +154,16 @@ Verb add_inside(CLI::App& app) {
       "  contain inside --scene assembly.json --points probes.xyz\n"
       "A point is 'on' only when it lies exactly on the boundary of the filled region (exact "
       "arithmetic on the given doubles).");
-  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name]() {
+  CLI::Option* fill = cmd->get_option("--fill");
+  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name, fill]() {
             if ((id->count() > 0 || layer_name->count() > 0) && layer->count() == 0) {
               return report({ErrorKind::usage, "inside: --id and --layer-name need --layer"});
+            }
+            // A fill rule reads rings: solids would silently drop it.
+            if (fill->count() > 0 && mesh->count() + csg->count() + scene->count() > 0) {
+              return report({ErrorKind::usage,
+                             "inside: --fill reads the rings of 2D regions (--polygon, --layer); "
+                             "--mesh, --csg and --scene are solids"});
             }
             if (layer->count() > 0 || scene->count() > 0) {
               ManyOptions m = *many;
