@@ -69,7 +69,9 @@ int run_region(const BoundOptions& o) {
 Verb add_bound(CLI::App& app) {
   auto o = std::make_shared<BoundOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "bound", "Bounding volumes: the axis-aligned box and a bounding sphere, as JSON");
+      "bound",
+      "Bounding volumes as JSON: a mesh's box and sphere (exact or Ritter), a region's box and "
+      "circle");
   cmd->add_option("FILE", o->file,
                   "a mesh (.obj .off .stl .ply: its vertices used by faces) or a 2D region "
                   "(.wkt .geojson: a circle instead of a sphere)")

@@ -538,8 +538,9 @@ Verb add_clip(CLI::App& app) {
   auto o = std::make_shared<ClipOptions>();
   CLI::App* cmd = app.add_subcommand(
       "clip",
-      "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and "
-      "meshes by half-spaces (Sutherland-Hodgman)");
+      "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and meshes by "
+      "half-spaces, boxes or convex shapes; polygons cut into tiles (--tiles); polygon booleans "
+      "(A B --op)");
   auto* segments = cmd->add_option("--segments", o->segments,
                                    "segments, one a line: 4 numbers (2D) or 6 (3D); '-': stdin")
                        ->option_text("FILE");
@@ -570,7 +571,8 @@ Verb add_clip(CLI::App& app) {
   cmd->add_option("--tiles", o->tiles,
                   "polygons: cut into a grid of NX x NY boxes over --box (default: the region's "
                   "bounding box), on all cores; one line 'COLUMN ROW WKT' per tile (row 0 at min "
-                  "y), or one file per tile when --out holds {column} and {row}")
+                  "y), or one file per tile when --out holds {column} and {row}, in the format "
+                  "of its extension (.wkt, .geojson, .svg)")
       ->option_text("NX,NY");
   cmd->add_flag("--keep-bridges", o->keep_bridges,
                 "polygons: the section's one ring per input ring, with degenerate bridging edges");
@@ -588,6 +590,10 @@ Verb add_clip(CLI::App& app) {
       "  contain clip --polygon parcels.wkt --box 0,0,100,100\n"
       "  contain clip --polygon country.wkt --tiles 16,16 --out 'tiles/{column}_{row}.wkt'\n"
       "  contain clip --mesh bunny.obj --halfspace=0,0,1,-0.5 --cap --out top.ply\n"
+      "  contain clip --segments rays.txt --sphere 0,0,0,1\n"
+      "  contain clip --polygon field.wkt --convex hull.wkt --out inside.wkt\n"
+      "  contain clip a.wkt b.geojson --op union --format geojson\n"
+      "  contain clip --subject a.wkt --clip b.wkt --op difference --fill nonzero --format svg\n"
       "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
       "touches the region prints a zero-length segment.");
   return {cmd, [o, boolean, segments, polygon, mesh]() {

@@ -132,7 +132,10 @@ Verb add_collide(CLI::App& app) {
   auto o = std::make_shared<CollideOptions>();
   auto c = std::make_shared<CcdCliOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
+      "collide",
+      "Collision: do two solids (meshes, per pose) or two 2D regions intersect; every touching "
+      "pair of a scene (--scene); continuous: first contact of moving meshes (--from-b/--to-b) "
+      "or of primitives (--ccd)");
   cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
   cmd->add_option("B", o->b, "the same kind of shape as A");
   cmd->add_option("--scene", o->scene,

@@ -252,8 +252,8 @@ Verb add_distance(CLI::App& app) {
   auto o = std::make_shared<DistanceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "distance",
-      "How far: points from a mesh or a region (signed, closest point, clearance), or two "
-      "meshes or regions apart");
+      "Distance: points from a mesh or a region (signed, closest point, clearance --within), or "
+      "two meshes (per pose) or two regions apart");
   auto* mesh =
       cmd->add_option("--mesh", o->mesh, "points against this mesh's surface (.obj .off .stl .ply)")
           ->option_text("FILE");

@@ -84,7 +84,9 @@ int run_mesh(const InsideOptions& o) {
 Verb add_inside(CLI::App& app) {
   auto o = std::make_shared<InsideOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "inside", "Point containment: prints in, on or out for each point, in input order");
+      "inside",
+      "Point containment: in, on or out of a polygon, mesh or CSG solid for each point; which "
+      "regions of a layer (GeoJSON, WKT, GDAL, PostGIS) or solids of a scene hold it");
   auto* polygon = cmd->add_option("--polygon", o->polygon,
                                   "2D region (.wkt POLYGON/MULTIPOLYGON or .geojson); points "
                                   "have 2 numbers a line")

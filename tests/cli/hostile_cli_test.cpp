@@ -316,5 +316,33 @@ TEST(HostileCli, ClipShapesAsArgumentsGiveTheSameBooleanAsSubjectAndClip) {
   EXPECT_EQ(run_contain({"clip", a, b, "--subject", a, "--clip", b, "--op", "union"}).exit_code, 2);
 }
 
+// --- newcomer friction ------------------------------------------------------------------------
+
+TEST(HostileCli, TopHelpNamesEveryModeAndEachVerbHelpHasAnExamplePerMode) {
+  const CliRun top = run_contain({"--help"});
+  EXPECT_EQ(top.exit_code, 0);
+  for (const char* mode : {"layer", "scene", "--scene", "--ccd", "--from-b", "--tiles", "A B --op",
+                           "two meshes", "two regions", "circle"}) {
+    EXPECT_TRUE(has(top.out, mode)) << mode << " missing from:\n" << top.out;
+  }
+  const std::vector<std::pair<std::string, std::vector<std::string>>> examples{
+      {"inside", {"--polygon", "--mesh", "--csg", "--layer", "--scene", "PG:"}},
+      {"collide", {".stl", "--poses", ".wkt", "--scene", "--from-b", "--ccd"}},
+      {"clip",
+       {"--segments", "--circle", "--sphere", "--polygon", "--tiles", "--mesh", "--convex",
+        " --op ", "--subject"}},
+      {"distance", {"--mesh", "--polygon", "--within", "--poses", "--json"}},
+      {"bound", {".ply", "--sphere ritter", ".wkt"}}};
+  for (const auto& [verb, modes] : examples) {
+    const CliRun help = run_contain({verb, "--help"});
+    EXPECT_EQ(help.exit_code, 0) << verb;
+    const std::size_t at = help.out.find("Examples:");
+    ASSERT_NE(at, std::string::npos) << verb;
+    const std::string part = help.out.substr(at);
+    for (const std::string& mode : modes)
+      EXPECT_TRUE(has(part, mode)) << verb << " --help has no example of " << mode;
+  }
+}
+
 }  // namespace
 }  // namespace contain::test
