@@ -122,6 +122,8 @@ Status check_ids(const std::vector<std::string>& ids, const std::string& what,
 int run_layer(const ManyOptions& o) {
   auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
   if (!layer) return report(layer.error());
+  for (const std::string& warning : layer->warnings)
+    warn(warning);
   if (Status s = check_ids(layer->ids, "the layer's", io::layer_source_name(o.layer)); !s)
     return report(s.error());
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});

@@ -298,6 +298,21 @@ TEST(HostileCli, DistanceToAnEmptyRegionInventsNoClosestPoint) {
   EXPECT_EQ(run_contain({"distance", square, none, "--within", "1e300"}).out, "no\n");
 }
 
+TEST(HostileCli, LayersWarnOfUnclosedRingsHolesOutsideTheShellAndOverlappingParts) {
+  TempDir dir;
+  const std::string layer = dir.write(
+      "l.wkt",
+      "POLYGON ((0 0, 4 0, 4 4, 0 4))\n"
+      "POLYGON ((10 0, 14 0, 14 4, 10 4, 10 0), (20 0, 21 0, 21 1, 20 0))\n"
+      "MULTIPOLYGON (((30 0, 34 0, 34 4, 30 4, 30 0)), ((32 2, 36 2, 36 6, 32 6, 32 2)))\n");
+  const CliRun run = run_contain({"inside", "--layer", layer}, "1 1\n33 3\n");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, "0\n-\n") << "the overlap is in both parts: even-odd leaves it out";
+  EXPECT_TRUE(has(run.err, "l.wkt:1: ring not closed")) << run.err;
+  EXPECT_TRUE(has(run.err, "shape 1, polygon 1: hole 1 has a vertex outside its shell")) << run.err;
+  EXPECT_TRUE(has(run.err, "shape 2: polygons 1 and 2 overlap")) << run.err;
+}
+
 // --- issue 23: clip A B --op beside --subject/--clip ------------------------------------------
 
 TEST(HostileCli, ClipShapesAsArgumentsGiveTheSameBooleanAsSubjectAndClip) {

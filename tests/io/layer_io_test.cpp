@@ -160,6 +160,37 @@ TEST(GeoJsonLayer, BareGeometryIsALayerOfOne) {
   EXPECT_EQ(point.error().line, 2);
 }
 
+// Issue 24: layers read unclosed rings, holes outside their shell and overlapping parts in
+// silence, where `clip` warns of unclosed rings. read_layer now words each as a warning.
+TEST(ReadLayer, WarnsOfUnclosedRingsHolesOutsideTheShellAndOverlappingParts) {
+  const test::TempFile wkt(
+      ".wkt",
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\n"
+      "POLYGON ((0 0, 4 0, 4 4, 0 4))\n"                                           // not closed
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 6 5, 6 6, 5 5))\n"                // hole outside
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((2 2, 6 2, 6 6, 2 6, 2 2)))\n"  // overlap
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((4 0, 8 0, 8 4, 4 4, 4 0)))\n"  // touching
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 2 1, 1 2, 0 0))\n");  // hole touching shell
+  auto layer = read_layer(wkt.path().string());
+  ASSERT_TRUE(layer) << layer.error().what();
+  ASSERT_EQ(layer->warnings.size(), 3u);
+  EXPECT_NE(layer->warnings[0].find(":2: ring not closed"), std::string::npos)
+      << layer->warnings[0];
+  EXPECT_NE(layer->warnings[1].find("shape 2, polygon 1: hole 1 has a vertex outside its shell"),
+            std::string::npos)
+      << layer->warnings[1];
+  EXPECT_NE(layer->warnings[2].find("shape 3: polygons 1 and 2 overlap"), std::string::npos)
+      << layer->warnings[2];
+  // The same regions read as GeoJSON give the same warnings of holes and parts.
+  const test::TempFile json(".geojson", R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {}, "geometry": {"type": "MultiPolygon", "coordinates":
+      [[[[0,0],[4,0],[4,4],[0,4],[0,0]]], [[[2,2],[6,2],[6,6],[2,6],[2,2]]]]}}]})");
+  auto geojson = read_layer(json.path().string());
+  ASSERT_TRUE(geojson);
+  ASSERT_EQ(geojson->warnings.size(), 1u);
+  EXPECT_NE(geojson->warnings[0].find("shape 0: polygons 1 and 2 overlap"), std::string::npos);
+}
+
 TEST(ReadLayer, PicksTheReaderByExtension) {
   const test::TempFile wkt(".wkt", "POLYGON ((0 0, 1 0, 1 1, 0 0))\n");
   const test::TempFile json(".geojson", kCollection);

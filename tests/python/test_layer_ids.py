@@ -115,3 +115,17 @@ def test_a_grid_too_large_to_hold_is_refused_before_any_work():
     clipper = contain.BoxClipper("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
     with pytest.raises(ValueError, match="16,777,216"):
         clipper.tile(100000, 100000)
+
+
+def test_layers_warn_of_rings_that_ogc_would_not_accept(tmp_path):
+    path = tmp_path / "l.wkt"
+    path.write_text(
+        "POLYGON ((0 0, 4 0, 4 4, 0 4))\n"
+        "MULTIPOLYGON (((30 0, 34 0, 34 4, 30 4, 30 0)), ((32 2, 36 2, 36 6, 32 6, 32 2)))\n"
+    )
+    with pytest.warns(UserWarning) as caught:
+        layer = contain.RegionLayer.from_file(str(path))
+    messages = [str(w.message) for w in caught]
+    assert any("l.wkt:1: ring not closed" in m for m in messages)
+    assert any("shape 1: polygons 1 and 2 overlap" in m for m in messages)
+    assert len(layer) == 2
