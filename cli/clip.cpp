@@ -532,6 +532,27 @@ int run_mesh(const ClipOptions& o) {
   return exit_ok;
 }
 
+// The options of one form that another would silently drop (issue 24): a usage error naming
+// them and the form.
+Status refuse_ignored(const ClipOptions& o, bool segments, bool polygon) {
+  const char* form = segments ? "--segments" : polygon ? "--polygon" : "--mesh";
+  std::vector<std::string> dropped;
+  const auto drop = [&](bool given, const char* option) {
+    if (given) dropped.emplace_back(option);
+  };
+  drop(!segments && !o.algorithm.empty(), "--algorithm");
+  drop(!segments && !o.sphere.empty(), "--sphere");
+  drop(!segments && !o.circle.empty(), "--circle");
+  drop(!polygon && o.keep_bridges, "--keep-bridges");
+  drop(!polygon && !o.tiles.empty(), "--tiles");
+  drop(polygon || segments ? o.cap : false, "--cap");
+  if (dropped.empty()) return Ok{};
+  std::string names;
+  for (const std::string& d : dropped)
+    names += (names.empty() ? "" : ", ") + d;
+  return usage(names + " does not apply to " + form);
+}
+
 }  // namespace
 
 Verb add_clip(CLI::App& app) {
@@ -615,6 +636,9 @@ Verb add_clip(CLI::App& app) {
                                     " applies to polygon booleans (--op) only; --tiles and "
                                     "--polygon write WKT (--tiles: by --out's extension)"));
               }
+            }
+            if (Status s = refuse_ignored(*o, segments->count() > 0, polygon->count() > 0); !s) {
+              return report(s.error());
             }
             if (segments->count() > 0) return run_segments(*o);
             if (polygon->count() > 0) return run_polygon(*o);

@@ -300,42 +300,54 @@ Verb add_distance(CLI::App& app) {
       "  contain distance --polygon parcels.wkt --points wells.txt --within 25\n"
       "  contain distance tool.stl fixture.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0 --json\n"
       "  contain distance gear.off shaft.off --poses poses.txt --within 0.002");
-  return {cmd, [o, mesh, polygon]() {
-            // A bad number is bad input (exit 3), as the contract has it for NaN coordinates.
-            if (o->has_within && !(std::isfinite(o->within) && o->within >= 0)) {
-              return report({ErrorKind::invalid_value,
-                             "--within: D must be a finite number >= 0, not " + number(o->within)});
-            }
-            const bool points_form = mesh->count() > 0 || polygon->count() > 0;
-            // Options that this form would silently drop are refused.
-            if (o->has_within && (o->closest || o->signed_distance || o->json)) {
-              return report({ErrorKind::usage,
-                             "distance: --within prints yes/no only: it does not go with "
-                             "--closest, --signed or --json"});
-            }
-            if (points_form && o->json) {
-              return report({ErrorKind::usage,
-                             "distance: --json is for two shapes A B; points print one line each"});
-            }
-            if (!points_form && (o->closest || o->signed_distance)) {
-              return report({ErrorKind::usage,
-                             "distance: --closest and --signed are for points (--mesh or "
-                             "--polygon); two shapes always print their closest points"});
-            }
-            if (points_form && (!o->a.empty() || !o->b.empty())) {
-              return report({ErrorKind::usage,
-                             "distance: give either --mesh/--polygon with points, or two shapes "
-                             "A B"});
-            }
-            if (mesh->count() > 0) return run_mesh_points(*o);
-            if (polygon->count() > 0) return run_polygon_points(*o);
-            if (o->a.empty() || o->b.empty()) {
-              return report({ErrorKind::usage,
-                             "distance: give --mesh FILE or --polygon FILE (with --points), or "
-                             "two shapes A B"});
-            }
-            return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
-          }};
+  CLI::Option* fill = cmd->get_option("--fill");
+  return {
+      cmd, [o, mesh, polygon, fill]() {
+        // A bad number is bad input (exit 3), as the contract has it for NaN coordinates.
+        if (o->has_within && !(std::isfinite(o->within) && o->within >= 0)) {
+          return report({ErrorKind::invalid_value,
+                         "--within: D must be a finite number >= 0, not " + number(o->within)});
+        }
+        const bool points_form = mesh->count() > 0 || polygon->count() > 0;
+        // Options that this form would silently drop are refused.
+        if (o->has_within && (o->closest || o->signed_distance || o->json)) {
+          return report({ErrorKind::usage,
+                         "distance: --within prints yes/no only: it does not go with "
+                         "--closest, --signed or --json"});
+        }
+        if (points_form && o->json) {
+          return report({ErrorKind::usage,
+                         "distance: --json is for two shapes A B; points print one line each"});
+        }
+        if (points_form &&
+            (!o->transform_a.empty() || !o->transform_b.empty() || !o->poses.empty())) {
+          return report({ErrorKind::usage,
+                         "distance: --transform-a, --transform-b and --poses place two shapes "
+                         "A B; points against --mesh/--polygon are not moved"});
+        }
+        if (fill->count() > 0 && (mesh->count() > 0 || (!o->a.empty() && !is_region_path(o->a)))) {
+          return report({ErrorKind::usage,
+                         "distance: --fill reads the rings of 2D regions; meshes have none"});
+        }
+        if (!points_form && (o->closest || o->signed_distance)) {
+          return report({ErrorKind::usage,
+                         "distance: --closest and --signed are for points (--mesh or "
+                         "--polygon); two shapes always print their closest points"});
+        }
+        if (points_form && (!o->a.empty() || !o->b.empty())) {
+          return report({ErrorKind::usage,
+                         "distance: give either --mesh/--polygon with points, or two shapes "
+                         "A B"});
+        }
+        if (mesh->count() > 0) return run_mesh_points(*o);
+        if (polygon->count() > 0) return run_polygon_points(*o);
+        if (o->a.empty() || o->b.empty()) {
+          return report({ErrorKind::usage,
+                         "distance: give --mesh FILE or --polygon FILE (with --points), or "
+                         "two shapes A B"});
+        }
+        return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+      }};
 }
 
 }  // namespace contain::cli

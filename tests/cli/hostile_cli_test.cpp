@@ -271,7 +271,16 @@ TEST(HostileCli, OptionsAModeWouldIgnoreAreRefused) {
       {"inside", "--scene", scene, "--fill", "nonzero"},
       {"clip", "--polygon", square, "--tiles", "2,2", "--format", "geojson"},
       {"clip", "--polygon", square, "--box", "0,0,1,1", "--fill", "nonzero"},
-      {"clip", "--subject", square, "--clip", square, "--op", "union", "--box", "0,0,1,1"}};
+      {"clip", "--subject", square, "--clip", square, "--op", "union", "--box", "0,0,1,1"},
+      {"clip", "--polygon", square, "--box", "0,0,1,1", "--algorithm", "liang-barsky"},
+      {"clip", "--polygon", square, "--box", "0,0,1,1", "--cap"},
+      {"clip", "--polygon", square, "--box", "0,0,1,1", "--circle", "0,0,1"},
+      {"clip", "--mesh", cube, "--box", "0,0,0,1,1,1", "--keep-bridges"},
+      {"clip", "--mesh", cube, "--box", "0,0,0,1,1,1", "--tiles", "2,2"},
+      {"clip", "--segments", "-", "--box", "0,0,1,1", "--cap"},
+      {"distance", "--mesh", cube, "--transform-b", "1,0,0,0,0,1,0,0,0,0,1,0"},
+      {"distance", "--mesh", cube, "--fill", "nonzero"},
+      {"distance", cube, cube, "--fill", "nonzero"}};
   for (const std::vector<std::string>& args : refused) {
     const CliRun run = run_contain(args, "0 0 0\n");
     std::string line;
