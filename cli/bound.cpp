@@ -69,7 +69,9 @@ int run_region(const BoundOptions& o) {
 Verb add_bound(CLI::App& app) {
   auto o = std::make_shared<BoundOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "bound", "Bounding volumes: the axis-aligned box and a bounding sphere, as JSON");
+      "bound",
+      "Bounding volumes as JSON: a mesh's box and sphere (exact or Ritter), a region's box and "
+      "circle");
   cmd->add_option("FILE", o->file,
                   "a mesh (.obj .off .stl .ply: its vertices used by faces) or a 2D region "
                   "(.wkt .geojson: a circle instead of a sphere)")
@@ -88,14 +90,7 @@ Verb add_bound(CLI::App& app) {
       "    {\"aabb\":{\"min\":[..],\"max\":[..]},\"sphere\":{\"center\":[..],\"radius\":r}}\n"
       "  contain bound part.stl --sphere ritter\n"
       "  contain bound parcels.wkt      (2D: \"circle\" in place of \"sphere\")");
-  return {cmd, [o]() {
-            const std::string ext = std::filesystem::path(o->file).extension().string();
-            std::string lower;
-            for (char c : ext)
-              lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            if (lower == ".wkt" || lower == ".geojson" || lower == ".json") return run_region(*o);
-            return run_mesh(*o);
-          }};
+  return {cmd, [o]() { return is_region_path(o->file) ? run_region(*o) : run_mesh(*o); }};
 }
 
 }  // namespace contain::cli

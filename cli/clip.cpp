@@ -4,7 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,9 +21,11 @@
 #include "contain/clip/clip_polygon.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/clip/segment_region.h"
+#include "contain/io/geojson.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
+#include "contain/io/svg.h"
 #include "contain/io/wkt.h"
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/shapes/mesh_validation.h"
@@ -304,8 +310,92 @@ std::string polygon_wkt(const MultiPolygon& result) {
   return io::write_wkt(result) + "\n";
 }
 
+// Where --tiles writes: one stream of lines "COLUMN ROW WKT", or with a pattern in --out one file
+// a tile, in the format its extension names.
+struct TileOutput {
+  bool per_file = false;
+  std::string pattern;
+  std::optional<io::RegionFormat> format;  // per file
+  bool svg = false;                        // per file
+};
+
+// The --out of --tiles: a pattern must name {column} and {row} and nothing else in braces, and
+// its extension a region format (.wkt, .geojson/.json) or .svg; one file of all tiles holds
+// lines of WKT, so an extension naming another format is refused (issue 24: tiles.geojson held
+// WKT).
+Result<TileOutput> tile_output(const std::string& out) {
+  TileOutput t;
+  t.pattern = out;
+  t.per_file = out.find('{') != std::string::npos || out.find('}') != std::string::npos;
+  const std::string ext = std::filesystem::path(out).extension().string();
+  std::string lower;
+  for (char c : ext)
+    lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!t.per_file) {
+    if (io::region_format(out) == io::RegionFormat::geojson || lower == ".svg") {
+      return usage("--tiles --out " + out +
+                   ": one file of every tile holds lines 'COLUMN ROW WKT', not " + lower +
+                   "; write one file a tile with a pattern such as 'tiles/{column}_{row}" + lower +
+                   "'");
+    }
+    return t;
+  }
+  bool column = false, row = false;
+  for (std::size_t at = 0; at < out.size();) {
+    const std::size_t open = out.find_first_of("{}", at);
+    if (open == std::string::npos) break;
+    const std::size_t close = out[open] == '{' ? out.find('}', open) : std::string::npos;
+    if (close == std::string::npos) {
+      return usage("--tiles --out " + out + ": an unmatched brace; the pattern's fields are " +
+                   "{column} and {row}");
+    }
+    const std::string field = out.substr(open, close - open + 1);
+    if (field == "{column}") {
+      column = true;
+    } else if (field == "{row}") {
+      row = true;
+    } else {
+      return usage("--tiles --out " + out + ": unknown field " + field +
+                   " (the fields are {column} and {row})");
+    }
+    at = close + 1;
+  }
+  if (!column || !row) {
+    return usage("--tiles --out " + out + ": the pattern must name both {column} and {row}, " +
+                 "or every tile would go to the same file");
+  }
+  t.format = io::region_format(out);
+  t.svg = lower == ".svg";
+  if (!t.format && !t.svg) {
+    return usage("--tiles --out " + out + ": the extension '" + lower +
+                 "' names no format of a tile: use .wkt, .geojson or .svg");
+  }
+  return t;
+}
+
+std::string tile_file_text(const MultiPolygon& tile, const TileOutput& output) {
+  if (output.svg) return io::region_svg(tile);
+  if (output.format == io::RegionFormat::geojson) {
+    return (tile.polygons.size() == 1 ? io::write_geojson(tile.polygons.front())
+                                      : io::write_geojson(tile)) +
+           "\n";
+  }
+  return polygon_wkt(tile);
+}
+
+std::string tile_path(std::string path, int column, int row) {
+  for (const auto& [key, value] : {std::pair<std::string, int>{"{column}", column},
+                                   std::pair<std::string, int>{"{row}", row}}) {
+    for (std::size_t at = path.find(key); at != std::string::npos; at = path.find(key))
+      path.replace(at, key.size(), std::to_string(value));
+  }
+  return path;
+}
+
 // --tiles NX,NY: the region cut into a grid over --box (or its bounding box), one result per
-// tile: lines "COLUMN ROW WKT", or one file per tile when --out holds {column} and {row}.
+// tile: lines "COLUMN ROW WKT", or one file per tile when --out holds {column} and {row}. The
+// tiles are cut and written a band at a time, so a grid of millions of tiles is never held
+// whole.
 int run_tiles(const ClipOptions& o) {
   if (!o.halfspaces.empty() || !o.convex.empty() || o.keep_bridges) {
     return report(
@@ -321,6 +411,8 @@ int run_tiles(const ClipOptions& o) {
                        ": give two whole numbers of columns and rows, each at least 1, at most "
                        "16,777,216 tiles in all"});
   }
+  auto output = tile_output(o.out);
+  if (!output) return report(output.error());
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
   clip::TileGrid grid{.columns = static_cast<int>(nx), .rows = static_cast<int>(ny)};
@@ -335,29 +427,42 @@ int run_tiles(const ClipOptions& o) {
                      "the region is empty: give the grid's bounds with --box", o.polygon});
     }
   }
-  const std::vector<MultiPolygon> tiles = clip::tile(*region, grid, {.threads = o.threads});
-  const bool per_file =
-      o.out.find("{column}") != std::string::npos && o.out.find("{row}") != std::string::npos;
-  std::string lines;
-  for (int row = 0; row < grid.rows; ++row) {
-    for (int column = 0; column < grid.columns; ++column) {
-      const MultiPolygon& tile = tiles[static_cast<std::size_t>(row) * grid.columns + column];
-      if (per_file) {
-        std::string path = o.out;
-        for (const auto& [key, value] : {std::pair<std::string, int>{"{column}", column},
-                                         std::pair<std::string, int>{"{row}", row}}) {
-          for (std::size_t at = path.find(key); at != std::string::npos; at = path.find(key))
-            path.replace(at, key.size(), std::to_string(value));
-        }
-        const Status written = write_output(polygon_wkt(tile), path);
+  const clip::BoxClipper clipper(std::move(*region));
+  const std::size_t total = static_cast<std::size_t>(grid.columns) * grid.rows;
+  // A band of whole rows, at least 4096 tiles: enough work for every thread between writes.
+  const std::size_t band =
+      std::max<std::size_t>(1, 4096 / static_cast<std::size_t>(grid.columns)) * grid.columns;
+  std::ofstream file;
+  const bool to_stdout = output->per_file || o.out.empty() || o.out == "-";
+  if (!to_stdout) {
+    file.open(o.out, std::ios::binary);
+    if (!file) return report({ErrorKind::io, "cannot open for writing", o.out});
+  }
+  Progress progress("tiles", total, !o.quiet && stderr_is_terminal());
+  for (std::size_t first = 0; first < total; first += band) {
+    const std::vector<MultiPolygon> tiles =
+        clip::tile_range(clipper, grid, first, band, {.threads = o.threads});
+    std::string lines;
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const int column = static_cast<int>((first + k) % grid.columns);
+      const int row = static_cast<int>((first + k) / grid.columns);
+      if (output->per_file) {
+        const Status written =
+            write_output(tile_file_text(tiles[k], *output), tile_path(o.out, column, row));
         if (!written) return report(written.error());
       } else {
-        lines += fmt::format("{} {} {}", column, row, polygon_wkt(tile));
+        lines += fmt::format("{} {} {}", column, row, polygon_wkt(tiles[k]));
       }
     }
+    if (to_stdout) {
+      if (!output->per_file) std::fwrite(lines.data(), 1, lines.size(), stdout);
+    } else if (!file.write(lines.data(), static_cast<std::streamsize>(lines.size()))) {
+      return report({ErrorKind::io, "write failed", o.out});
+    }
+    progress.update(first + tiles.size());
   }
-  if (per_file) return exit_ok;
-  return emit(lines, o.out);
+  std::fflush(stdout);
+  return exit_ok;
 }
 
 int run_polygon(const ClipOptions& o) {
@@ -427,14 +532,36 @@ int run_mesh(const ClipOptions& o) {
   return exit_ok;
 }
 
+// The options of one form that another would silently drop (issue 24): a usage error naming
+// them and the form.
+Status refuse_ignored(const ClipOptions& o, bool segments, bool polygon) {
+  const char* form = segments ? "--segments" : polygon ? "--polygon" : "--mesh";
+  std::vector<std::string> dropped;
+  const auto drop = [&](bool given, const char* option) {
+    if (given) dropped.emplace_back(option);
+  };
+  drop(!segments && !o.algorithm.empty(), "--algorithm");
+  drop(!segments && !o.sphere.empty(), "--sphere");
+  drop(!segments && !o.circle.empty(), "--circle");
+  drop(!polygon && o.keep_bridges, "--keep-bridges");
+  drop(!polygon && !o.tiles.empty(), "--tiles");
+  drop(polygon || segments ? o.cap : false, "--cap");
+  if (dropped.empty()) return Ok{};
+  std::string names;
+  for (const std::string& d : dropped)
+    names += (names.empty() ? "" : ", ") + d;
+  return usage(names + " does not apply to " + form);
+}
+
 }  // namespace
 
 Verb add_clip(CLI::App& app) {
   auto o = std::make_shared<ClipOptions>();
   CLI::App* cmd = app.add_subcommand(
       "clip",
-      "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and "
-      "meshes by half-spaces (Sutherland-Hodgman)");
+      "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and meshes by "
+      "half-spaces, boxes or convex shapes; polygons cut into tiles (--tiles); polygon booleans "
+      "(A B --op)");
   auto* segments = cmd->add_option("--segments", o->segments,
                                    "segments, one a line: 4 numbers (2D) or 6 (3D); '-': stdin")
                        ->option_text("FILE");
@@ -465,7 +592,8 @@ Verb add_clip(CLI::App& app) {
   cmd->add_option("--tiles", o->tiles,
                   "polygons: cut into a grid of NX x NY boxes over --box (default: the region's "
                   "bounding box), on all cores; one line 'COLUMN ROW WKT' per tile (row 0 at min "
-                  "y), or one file per tile when --out holds {column} and {row}")
+                  "y), or one file per tile when --out holds {column} and {row}, in the format "
+                  "of its extension (.wkt, .geojson, .svg)")
       ->option_text("NX,NY");
   cmd->add_flag("--keep-bridges", o->keep_bridges,
                 "polygons: the section's one ring per input ring, with degenerate bridging edges");
@@ -483,10 +611,35 @@ Verb add_clip(CLI::App& app) {
       "  contain clip --polygon parcels.wkt --box 0,0,100,100\n"
       "  contain clip --polygon country.wkt --tiles 16,16 --out 'tiles/{column}_{row}.wkt'\n"
       "  contain clip --mesh bunny.obj --halfspace=0,0,1,-0.5 --cap --out top.ply\n"
+      "  contain clip --segments rays.txt --sphere 0,0,0,1\n"
+      "  contain clip --polygon field.wkt --convex hull.wkt --out inside.wkt\n"
+      "  contain clip a.wkt b.geojson --op union --format geojson\n"
+      "  contain clip --subject a.wkt --clip b.wkt --op difference --fill nonzero --format svg\n"
       "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
       "touches the region prints a zero-length segment.");
   return {cmd, [o, boolean, segments, polygon, mesh]() {
-            if (clip_boolean_requested(*boolean)) return run_clip_boolean(*boolean, o->out);
+            const bool by_region = segments->count() + polygon->count() + mesh->count() > 0;
+            if (clip_boolean_requested(*boolean)) {
+              if (by_region || !o->box.empty() || !o->halfspaces.empty() || !o->convex.empty() ||
+                  !o->sphere.empty() || !o->circle.empty() || !o->tiles.empty()) {
+                return report(usage(
+                    "a polygon boolean (--op) takes two regions only: --segments, --polygon, "
+                    "--mesh, --box, --halfspace, --convex, --sphere, --circle and --tiles belong "
+                    "to the other forms"));
+              }
+              return run_clip_boolean(*boolean, o->out);
+            }
+            // Options of the booleans that the other forms would silently drop.
+            for (const CLI::Option* ignored : {boolean->format_option, boolean->fill_option}) {
+              if (ignored->count() > 0) {
+                return report(usage(ignored->get_name() +
+                                    " applies to polygon booleans (--op) only; --tiles and "
+                                    "--polygon write WKT (--tiles: by --out's extension)"));
+              }
+            }
+            if (Status s = refuse_ignored(*o, segments->count() > 0, polygon->count() > 0); !s) {
+              return report(s.error());
+            }
             if (segments->count() > 0) return run_segments(*o);
             if (polygon->count() > 0) return run_polygon(*o);
             if (mesh->count() > 0) return run_mesh(*o);

@@ -51,18 +51,44 @@ void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& o) {
   subject->needs(clip);
   subject->needs(op);
   clip->needs(subject);
-  op->needs(subject);
+  o.op_option = op;
+  cmd.add_option("shapes", o.shapes,
+                 "A B: the subject and the clip of a polygon boolean, as 'clip A B --op OP' "
+                 "(the same as --subject A --clip B)")
+      ->option_text("A B");
   add_fill_option(cmd, o.fill);
-  cmd.add_option("--format", o.format, "output of a boolean: wkt (default), geojson or svg")
-      ->check(CLI::IsMember({"wkt", "geojson", "svg"}, CLI::ignore_case))
-      ->option_text("wkt|geojson|svg");
+  o.fill_option = cmd.get_option("--fill");
+  o.format_option =
+      cmd.add_option("--format", o.format, "output of a boolean: wkt (default), geojson or svg")
+          ->check(CLI::IsMember({"wkt", "geojson", "svg"}, CLI::ignore_case))
+          ->option_text("wkt|geojson|svg");
 }
 
 bool clip_boolean_requested(const ClipBooleanOptions& o) {
-  return !o.subject.empty();
+  return !o.subject.empty() || !o.shapes.empty() || o.op_option->count() > 0;
 }
 
-int run_clip_boolean(const ClipBooleanOptions& o, const std::string& out) {
+int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
+  ClipBooleanOptions o = given;
+  if (!o.shapes.empty()) {
+    if (!o.subject.empty()) {
+      return report(
+          {ErrorKind::usage, "clip: give the shapes as A B or as --subject A --clip B, not both"});
+    }
+    if (o.shapes.size() != 2) {
+      return report({ErrorKind::usage,
+                     "clip A B --op OP: two shapes, got " + std::to_string(o.shapes.size())});
+    }
+    if (o.op_option->count() == 0) {
+      return report({ErrorKind::usage, "clip A B needs --op intersection|union|difference|xor"});
+    }
+    o.subject = o.shapes[0];
+    o.clip = o.shapes[1];
+  }
+  if (o.subject.empty()) {
+    return report({ErrorKind::usage,
+                   "clip: --op needs the shapes: 'clip A B --op OP' or --subject A --clip B"});
+  }
   auto subject = read_region_warned(o.subject);
   if (!subject) return report(subject.error());
   auto clip_region = read_region_warned(o.clip);

@@ -3,6 +3,7 @@
 // segment, polygon and mesh branches of cli/clip.cpp, which calls these.
 
 #include <string>
+#include <vector>
 
 #include "common.h"
 #include "contain/clip/polygon_boolean.h"
@@ -15,13 +16,17 @@ struct ClipBooleanOptions {
   clip::Op op = clip::Op::intersection;
   Fill fill = Fill::even_odd;
   std::string format = "wkt";
+  std::vector<std::string> shapes;  // `clip A B --op OP`: the subject and the clip
+  CLI::Option* format_option = nullptr;
+  CLI::Option* op_option = nullptr;
+  CLI::Option* fill_option = nullptr;
 };
 
 /// Adds --subject, --clip, --op, --fill and --format to the `clip` subcommand; --clip and --op
 /// are required together with --subject.
 void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& options);
 
-/// True when the command line asked for a boolean (--subject given).
+/// True when the command line asked for a boolean (--subject, shapes A B or --op given).
 [[nodiscard]] bool clip_boolean_requested(const ClipBooleanOptions& options);
 
 /// Reads both regions, computes the boolean and writes it to `out` (stdout when empty or "-"):

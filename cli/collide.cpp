@@ -132,7 +132,10 @@ Verb add_collide(CLI::App& app) {
   auto o = std::make_shared<CollideOptions>();
   auto c = std::make_shared<CcdCliOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "collide", "Discrete collision: do two solids (meshes) or two 2D regions intersect?");
+      "collide",
+      "Collision: do two solids (meshes, per pose) or two 2D regions intersect; every touching "
+      "pair of a scene (--scene); continuous: first contact of moving meshes (--from-b/--to-b) "
+      "or of primitives (--ccd)");
   cmd->add_option("A", o->a, "a mesh (.obj .off .stl .ply) or a 2D region (.wkt .geojson)");
   cmd->add_option("B", o->b, "the same kind of shape as A");
   cmd->add_option("--scene", o->scene,
@@ -204,7 +207,14 @@ Verb add_collide(CLI::App& app) {
           }
           return run_collide_scene(o->scene, o->json, o->threads, o->out);
         }
-        if (!c->kind.empty() || !c->queries.empty()) return run_ccd_queries(*c);
+        if (c->kind.empty() && !c->queries.empty()) {
+          // The kind decides how the 8 points of a query are read: guessing answers another
+          // question (issue 24: a vertex-face hit printed as an edge-edge miss).
+          return report(Error{ErrorKind::usage,
+                              "collide: --queries FILE needs --ccd vertex-face or --ccd edge-edge "
+                              "(how each query's 8 points are read)"});
+        }
+        if (!c->kind.empty()) return run_ccd_queries(*c);
         if (o->a.empty() || o->b.empty()) {
           return report(Error{ErrorKind::usage,
                               "collide needs two shapes A and B (or --scene "

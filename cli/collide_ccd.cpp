@@ -95,15 +95,19 @@ int run_ccd_queries(const CcdCliOptions& o) {
   const std::vector<collide::CcdQuery>& queries = read->queries;
   std::vector<collide::Impact> impacts(queries.size());
   Progress progress("queries", queries.size(), !o.quiet && stderr_is_terminal());
-  progress.run([&](std::size_t begin, std::size_t end) {
-    const auto in = std::span<const collide::CcdQuery>(queries).subspan(begin, end - begin);
-    const auto out = std::span<collide::Impact>(impacts).subspan(begin, end - begin);
-    if (vertex_face) {
-      collide::vertex_face_ccd(in, out, {.threads = o.threads});
-    } else {
-      collide::edge_edge_ccd(in, out, {.threads = o.threads});
-    }
-  });
+  progress.run(
+      [&](std::size_t begin, std::size_t end) {
+        const auto in = std::span<const collide::CcdQuery>(queries).subspan(begin, end - begin);
+        const auto out = std::span<collide::Impact>(impacts).subspan(begin, end - begin);
+        if (vertex_face) {
+          collide::vertex_face_ccd(in, out, {.threads = o.threads});
+        } else {
+          collide::edge_edge_ccd(in, out, {.threads = o.threads});
+        }
+      },
+      // Chunks of 256 queries: a batch of slow queries (huge and tiny coordinates
+      // mixed) still reports progress every second or so.
+      256);
   std::string text;
   text.reserve(impacts.size() * 12);
   for (const collide::Impact& i : impacts) {

@@ -56,8 +56,13 @@ Result<std::vector<double>> parse_numbers(std::string_view text, std::string_vie
       const char* stop = next;
       while (stop < end && !is_separator(*stop))
         ++stop;
-      return Error{ErrorKind::usage, std::string(option) + ": '" + std::string(start, stop) +
-                                         "' is not a finite number"};
+      // A number that is NaN, infinite or too large is bad input (exit 3, as NaN coordinates
+      // in a file); text that is no number at all is a usage error (exit 2).
+      const bool number =
+          (ec == std::errc() && next == stop) || ec == std::errc::result_out_of_range;
+      return Error{
+          number ? ErrorKind::invalid_value : ErrorKind::usage,
+          std::string(option) + ": '" + std::string(start, stop) + "' is not a finite number"};
     }
     out.push_back(value);
     p = next;
@@ -84,10 +89,7 @@ int emit(std::string_view text, const std::string& path) {
 }
 
 bool is_region_path(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
+  return io::region_format(path).has_value();
 }
 
 bool stderr_is_terminal() {

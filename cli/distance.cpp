@@ -55,6 +55,15 @@ void warn_open_mesh(const std::string& name, const Mesh& mesh) {
                   name, r.border_edges, r.nonmanifold_edges));
 }
 
+// An empty region has no boundary: its distance is infinite (documented) and nothing is within
+// D, but there is no closest point to print (issue 24: "inf 0 0 -1:-1" made one up).
+Error no_closest_point(const std::string& path) {
+  return {ErrorKind::invalid_value,
+          "the region is empty (no rings), so it has no closest point: its distance is inf, "
+          "without --closest",
+          path};
+}
+
 // Runs `work(begin, end)` over n points in chunks with progress on a terminal.
 template <class Work>
 void with_progress(std::size_t n, const DistanceOptions& o, Work&& work) {
@@ -103,8 +112,11 @@ int run_mesh_points(const DistanceOptions& o) {
 }
 
 int run_polygon_points(const DistanceOptions& o) {
-  auto region = io::read_region(o.polygon);
+  auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
+  if (o.closest && region->polygons.empty()) {
+    return report(no_closest_point(o.polygon));
+  }
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
   const distance::RegionDistance prepared(*region, {.fill = o.fill, .signs = o.signed_distance});
@@ -154,10 +166,14 @@ int run_regions(const DistanceOptions& o) {
     return report(Error{ErrorKind::invalid_value,
                         "A is a 2D region and B a mesh: both must be regions or both meshes", o.b});
   }
-  auto a = io::read_region(o.a);
+  auto a = read_region_warned(o.a);
   if (!a) return report(a.error());
-  auto b = io::read_region(o.b);
+  auto b = read_region_warned(o.b);
   if (!b) return report(b.error());
+  if (!o.has_within) {
+    if (a->polygons.empty()) return report(no_closest_point(o.a));
+    if (b->polygons.empty()) return report(no_closest_point(o.b));
+  }
   if (o.has_within) {
     return emit(
         distance::region_region_within(*a, *b, o.within, {.fill = o.fill}) ? "yes\n" : "no\n",
@@ -236,8 +252,8 @@ Verb add_distance(CLI::App& app) {
   auto o = std::make_shared<DistanceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "distance",
-      "How far: points from a mesh or a region (signed, closest point, clearance), or two "
-      "meshes or regions apart");
+      "Distance: points from a mesh or a region (signed, closest point, clearance --within), or "
+      "two meshes (per pose) or two regions apart");
   auto* mesh =
       cmd->add_option("--mesh", o->mesh, "points against this mesh's surface (.obj .off .stl .ply)")
           ->option_text("FILE");
@@ -284,26 +300,54 @@ Verb add_distance(CLI::App& app) {
       "  contain distance --polygon parcels.wkt --points wells.txt --within 25\n"
       "  contain distance tool.stl fixture.stl --transform-b 1,0,0,2.5,0,1,0,0,0,0,1,0 --json\n"
       "  contain distance gear.off shaft.off --poses poses.txt --within 0.002");
-  return {cmd, [o, mesh, polygon]() {
-            if (o->has_within && !(std::isfinite(o->within) && o->within >= 0)) {
-              return report({ErrorKind::usage,
-                             "--within: D must be a finite number >= 0, not " + number(o->within)});
-            }
-            const bool points_form = mesh->count() > 0 || polygon->count() > 0;
-            if (points_form && (!o->a.empty() || !o->b.empty())) {
-              return report({ErrorKind::usage,
-                             "distance: give either --mesh/--polygon with points, or two shapes "
-                             "A B"});
-            }
-            if (mesh->count() > 0) return run_mesh_points(*o);
-            if (polygon->count() > 0) return run_polygon_points(*o);
-            if (o->a.empty() || o->b.empty()) {
-              return report({ErrorKind::usage,
-                             "distance: give --mesh FILE or --polygon FILE (with --points), or "
-                             "two shapes A B"});
-            }
-            return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
-          }};
+  CLI::Option* fill = cmd->get_option("--fill");
+  return {
+      cmd, [o, mesh, polygon, fill]() {
+        // A bad number is bad input (exit 3), as the contract has it for NaN coordinates.
+        if (o->has_within && !(std::isfinite(o->within) && o->within >= 0)) {
+          return report({ErrorKind::invalid_value,
+                         "--within: D must be a finite number >= 0, not " + number(o->within)});
+        }
+        const bool points_form = mesh->count() > 0 || polygon->count() > 0;
+        // Options that this form would silently drop are refused.
+        if (o->has_within && (o->closest || o->signed_distance || o->json)) {
+          return report({ErrorKind::usage,
+                         "distance: --within prints yes/no only: it does not go with "
+                         "--closest, --signed or --json"});
+        }
+        if (points_form && o->json) {
+          return report({ErrorKind::usage,
+                         "distance: --json is for two shapes A B; points print one line each"});
+        }
+        if (points_form &&
+            (!o->transform_a.empty() || !o->transform_b.empty() || !o->poses.empty())) {
+          return report({ErrorKind::usage,
+                         "distance: --transform-a, --transform-b and --poses place two shapes "
+                         "A B; points against --mesh/--polygon are not moved"});
+        }
+        if (fill->count() > 0 && (mesh->count() > 0 || (!o->a.empty() && !is_region_path(o->a)))) {
+          return report({ErrorKind::usage,
+                         "distance: --fill reads the rings of 2D regions; meshes have none"});
+        }
+        if (!points_form && (o->closest || o->signed_distance)) {
+          return report({ErrorKind::usage,
+                         "distance: --closest and --signed are for points (--mesh or "
+                         "--polygon); two shapes always print their closest points"});
+        }
+        if (points_form && (!o->a.empty() || !o->b.empty())) {
+          return report({ErrorKind::usage,
+                         "distance: give either --mesh/--polygon with points, or two shapes "
+                         "A B"});
+        }
+        if (mesh->count() > 0) return run_mesh_points(*o);
+        if (polygon->count() > 0) return run_polygon_points(*o);
+        if (o->a.empty() || o->b.empty()) {
+          return report({ErrorKind::usage,
+                         "distance: give --mesh FILE or --polygon FILE (with --points), or "
+                         "two shapes A B"});
+        }
+        return is_region_path(o->a) ? run_regions(*o) : run_meshes(*o);
+      }};
 }
 
 }  // namespace contain::cli

@@ -84,7 +84,9 @@ int run_mesh(const InsideOptions& o) {
 Verb add_inside(CLI::App& app) {
   auto o = std::make_shared<InsideOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "inside", "Point containment: prints in, on or out for each point, in input order");
+      "inside",
+      "Point containment: in, on or out of a polygon, mesh or CSG solid for each point; which "
+      "regions of a layer (GeoJSON, WKT, GDAL, PostGIS) or solids of a scene hold it");
   auto* polygon = cmd->add_option("--polygon", o->polygon,
                                   "2D region (.wkt POLYGON/MULTIPOLYGON or .geojson); points "
                                   "have 2 numbers a line")
@@ -154,9 +156,16 @@ Verb add_inside(CLI::App& app) {
       "  contain inside --scene assembly.json --points probes.xyz\n"
       "A point is 'on' only when it lies exactly on the boundary of the filled region (exact "
       "arithmetic on the given doubles).");
-  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name]() {
+  CLI::Option* fill = cmd->get_option("--fill");
+  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name, fill]() {
             if ((id->count() > 0 || layer_name->count() > 0) && layer->count() == 0) {
               return report({ErrorKind::usage, "inside: --id and --layer-name need --layer"});
+            }
+            // A fill rule reads rings: solids would silently drop it.
+            if (fill->count() > 0 && mesh->count() + csg->count() + scene->count() > 0) {
+              return report({ErrorKind::usage,
+                             "inside: --fill reads the rings of 2D regions (--polygon, --layer); "
+                             "--mesh, --csg and --scene are solids"});
             }
             if (layer->count() > 0 || scene->count() > 0) {
               ManyOptions m = *many;

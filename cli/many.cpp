@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <span>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "contain/collide/mesh_scene.h"
@@ -78,15 +80,41 @@ Result<std::string> locate_lines(const Locator& locator, const std::vector<std::
   return text;
 }
 
-// Ids are separated by spaces on an output line: warn when an id holds white space.
-void warn_about_spaces(const std::vector<std::string>& ids, const std::string& what) {
+// An output line is ids separated by spaces, `ID:on` for a boundary, `-` for none: an id that
+// reads as one of those marks ("-", "a:on", "") cannot be told apart and is refused (exit 3);
+// white space in an id and an id given twice are warned about.
+Status check_ids(const std::vector<std::string>& ids, const std::string& what,
+                 const std::string& source) {
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::string& id = ids[k];
+    const bool marked = id.size() >= 3 && id.compare(id.size() - 3, 3, ":on") == 0;
+    if (id.empty() || id == "-" || marked) {
+      return Error{ErrorKind::invalid_value,
+                   fmt::format("{} id {} of shape {} cannot be told apart in the output, where "
+                               "'-' means no shape and 'ID:on' a boundary: choose another --id "
+                               "attribute, or rename it",
+                               what, id.empty() ? "''" : "'" + id + "'", k),
+                   source};
+    }
+  }
   for (const std::string& id : ids) {
     if (id.find_first_of(" \t\n\r") == std::string::npos) continue;
     warn(what + " ids hold white space (e.g. '" + id +
          "'), so an output line does not tell where one ends: choose an --id attribute without "
          "spaces");
-    return;
+    break;
   }
+  std::unordered_map<std::string_view, std::size_t> seen;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const auto [at, fresh] = seen.emplace(ids[k], k);
+    if (fresh) continue;
+    warn(
+        fmt::format("{} id '{}' is given to shapes {} and {} (and maybe more): an output line "
+                    "does not tell which holds the point",
+                    what, ids[k], at->second, k));
+    break;
+  }
+  return Ok{};
 }
 
 }  // namespace
@@ -94,7 +122,10 @@ void warn_about_spaces(const std::vector<std::string>& ids, const std::string& w
 int run_layer(const ManyOptions& o) {
   auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
   if (!layer) return report(layer.error());
-  warn_about_spaces(layer->ids, "the layer's");
+  for (const std::string& warning : layer->warnings)
+    warn(warning);
+  if (Status s = check_ids(layer->ids, "the layer's", io::layer_source_name(o.layer)); !s)
+    return report(s.error());
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
   auto text = locate_lines<Vec2>(index, layer->ids, o, io::read_points2_chunked);
   if (!text) return report(text.error());
@@ -112,7 +143,7 @@ std::vector<inside::SceneObject> scene_objects(const io::Scene& scene) {
 int run_scene_inside(const ManyOptions& o) {
   auto scene = io::read_scene_json(o.scene);
   if (!scene) return report(scene.error());
-  warn_about_spaces(scene->ids, "the scene's");
+  if (Status s = check_ids(scene->ids, "the scene's", o.scene); !s) return report(s.error());
   const inside::SolidScene index(scene->meshes, scene_objects(*scene));
   // An object whose mesh is not closed is answered by the winding number: say so, once a mesh.
   std::vector<char> warned(scene->meshes.size(), 0);

@@ -28,6 +28,15 @@ using namespace pybind11::literals;
 // A notebook cell stays responsive with this many triangles drawn (a few MB of SVG).
 constexpr std::size_t kNotebookTriangles = 20000;
 
+// A picture's width in pixels: the writer would replace a bad one by its default; a caller who
+// asked for it hears of it instead.
+void check_picture_width(double width) {
+  if (!(std::isfinite(width) && width >= 1.0 && width <= 1e6)) {
+    throw py::value_error("width must be a number of pixels from 1 to 1e6, got " +
+                          std::to_string(width));
+  }
+}
+
 io::MeshFormat parse_format(const std::string& format) {
   if (format == "obj") return io::MeshFormat::obj;
   if (format == "off") return io::MeshFormat::off;
@@ -128,6 +137,11 @@ Example:
           "to_svg",
           [](const Mesh& mesh, double width, double azimuth, double elevation,
              const std::string& title, std::size_t max_triangles) {
+            check_picture_width(width);
+            if (!std::isfinite(azimuth) || !std::isfinite(elevation)) {
+              throw py::value_error("azimuth and elevation must be finite degrees, got " +
+                                    std::to_string(azimuth) + " and " + std::to_string(elevation));
+            }
             return io::mesh_svg(mesh, {.width_px = width,
                                        .title = title,
                                        .view = {.azimuth_deg = azimuth, .elevation_deg = elevation},
@@ -228,6 +242,7 @@ through WKB, so every coordinate is the same double. Needs shapely (python3-shap
       .def(
           "to_svg",
           [](const MultiPolygon& region, double width, const std::string& title) {
+            check_picture_width(width);
             return io::region_svg(region, {.width_px = width, .title = title});
           },
           py::kw_only(), "width"_a = 400.0, "title"_a = "",

@@ -233,6 +233,12 @@ Example:
                                     {.id = id.value_or(""), .layer_name = layer_name.value_or("")});
             }();
             io::Layer read = take(std::move(result));
+            // What OGC would not accept, read anyway: as the command warns on stderr.
+            for (const std::string& warning : read.warnings) {
+              if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) {
+                throw py::error_already_set();
+              }
+            }
             Layer layer{{}, std::move(read.ids)};
             py::gil_scoped_release release;
             layer.index = inside::RegionLayer(read.regions, {.fill = rule});

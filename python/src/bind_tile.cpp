@@ -17,6 +17,8 @@ namespace {
 
 using namespace pybind11::literals;
 
+constexpr double kMostTiles = 16777216.0;  // 2^24, as `contain clip --tiles`
+
 // Rows of Regions (row 0 at the least y), each a list by column.
 py::list tiles_to_lists(std::vector<MultiPolygon> tiles, const clip::TileGrid& grid) {
   py::list rows;
@@ -33,6 +35,14 @@ py::list tiles_to_lists(std::vector<MultiPolygon> tiles, const clip::TileGrid& g
 
 clip::TileGrid grid_of(int columns, int rows, const py::object& bounds, const Box2& fallback) {
   if (columns < 1 || rows < 1) throw py::value_error("columns and rows must be at least 1");
+  // The answer is a list of every tile: a grid past 2^24 tiles (as the CLI's cap) would hold
+  // gigabytes. Larger grids go a band at a time through BoxClipper.clip or tile over a part.
+  if (static_cast<double>(columns) * static_cast<double>(rows) > kMostTiles) {
+    throw py::value_error("columns x rows is " +
+                          std::to_string(static_cast<long long>(columns) * rows) +
+                          " tiles, more than 16,777,216 held at once: tile a band of the grid at a "
+                          "time (bounds=...), or clip each box with BoxClipper.clip");
+  }
   clip::TileGrid grid{.bounds = bounds.is_none() ? fallback : to_box2(bounds, "bounds"),
                       .columns = columns,
                       .rows = rows};

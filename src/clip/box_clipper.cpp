@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <thread>
 #include <vector>
@@ -163,7 +165,14 @@ Box2 TileGrid::tile(int column, int row) const {
   auto at = [](double lo, double hi, int i, int count) {
     if (i >= count) return hi;
     if (i <= 0) return lo;
-    return lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(count);
+    const double width = hi - lo;
+    if (std::isfinite(width * static_cast<double>(count))) {
+      return lo + width * static_cast<double>(i) / static_cast<double>(count);
+    }
+    // Bounds so wide that width * count overflows (-9e307 to 9e307): the lines in halves, which
+    // cannot overflow, for every line of the grid alike (monotone in i, as rounding is).
+    const double share = static_cast<double>(i) / static_cast<double>(count);
+    return std::min(hi, 2.0 * (0.5 * lo + (0.5 * hi - 0.5 * lo) * share));
   };
   return Box2{
       {at(bounds.min.x, bounds.max.x, column, columns), at(bounds.min.y, bounds.max.y, row, rows)},
@@ -173,9 +182,17 @@ Box2 TileGrid::tile(int column, int row) const {
 
 std::vector<MultiPolygon> tile(const BoxClipper& region, const TileGrid& grid,
                                const BatchOptions& options) {
+  return tile_range(region, grid, 0, std::numeric_limits<std::size_t>::max(), options);
+}
+
+std::vector<MultiPolygon> tile_range(const BoxClipper& region, const TileGrid& grid,
+                                     std::size_t first_tile, std::size_t wanted,
+                                     const BatchOptions& options) {
   if (grid.columns <= 0 || grid.rows <= 0 || grid.bounds.empty()) return {};
-  const std::size_t count =
+  const std::size_t total =
       static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows);
+  if (first_tile >= total) return {};
+  const std::size_t count = std::min(wanted, total - first_tile);
   std::vector<MultiPolygon> out(count);
   // Tiles differ in cost (empty ones are cheap): threads take the next tile as they finish.
   // Each tile's result depends only on the tile, so the order of work changes nothing.
@@ -186,8 +203,9 @@ std::vector<MultiPolygon> tile(const BoxClipper& region, const TileGrid& grid,
   auto work = [&] {
     for (std::size_t first = next.fetch_add(kRun); first < count; first = next.fetch_add(kRun)) {
       for (std::size_t t = first; t < std::min(count, first + kRun); ++t) {
-        const int column = static_cast<int>(t % static_cast<std::size_t>(grid.columns));
-        const int row = static_cast<int>(t / static_cast<std::size_t>(grid.columns));
+        const std::size_t index = first_tile + t;
+        const int column = static_cast<int>(index % static_cast<std::size_t>(grid.columns));
+        const int row = static_cast<int>(index / static_cast<std::size_t>(grid.columns));
         out[t] = region.clip(grid.tile(column, row));
       }
     }

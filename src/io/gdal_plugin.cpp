@@ -9,6 +9,9 @@
 #include <ogrsf_frmts.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -74,6 +77,58 @@ std::string field_names(OGRLayer& layer) {
     names += defn->GetFieldDefn(i)->GetNameRef();
   }
   return names;
+}
+
+// A field's value as an id, spelt as parse_geojson_layer spells the same value (issue 24: a
+// layer read through GDAL or by our own GeoJSON reader gives the same ids): booleans
+// true/false, numbers by detail::number_id, dates and times in ISO 8601 as GeoJSON writes them
+// ("2024-01-31", "2024-01-31T10:20:30Z"), anything else as OGR formats it.
+std::string field_id(const OGRFeature& feature, int field) {
+  const OGRFieldDefn& defn = *feature.GetFieldDefnRef(field);
+  switch (defn.GetType()) {
+    case OFTInteger:
+      if (defn.GetSubType() == OFSTBoolean) {
+        return feature.GetFieldAsInteger(field) != 0 ? "true" : "false";
+      }
+      return std::to_string(feature.GetFieldAsInteger(field));
+    case OFTInteger64:
+      return std::to_string(feature.GetFieldAsInteger64(field));
+    case OFTReal:
+      return detail::number_id(feature.GetFieldAsDouble(field));
+    case OFTDate:
+    case OFTTime:
+    case OFTDateTime: {
+      int year = 0, month = 0, day = 0, hour = 0, minute = 0, tz = 0;
+      float second = 0;
+      feature.GetFieldAsDateTime(field, &year, &month, &day, &hour, &minute, &second, &tz);
+      char text[64];
+      std::string out;
+      if (defn.GetType() != OFTTime) {
+        std::snprintf(text, sizeof text, "%04d-%02d-%02d", year, month, day);
+        out = text;
+        if (defn.GetType() == OFTDate) return out;
+        out += 'T';
+      }
+      if (second == std::floor(second)) {
+        std::snprintf(text, sizeof text, "%02d:%02d:%02d", hour, minute, static_cast<int>(second));
+      } else {
+        std::snprintf(text, sizeof text, "%02d:%02d:%06.3f", hour, minute,
+                      static_cast<double>(second));
+      }
+      out += text;
+      if (tz == 100) {
+        out += 'Z';
+      } else if (tz > 1) {  // 100 + quarter hours east of UTC
+        const int quarters = tz - 100;
+        std::snprintf(text, sizeof text, "%c%02d:%02d", quarters < 0 ? '-' : '+',
+                      std::abs(quarters) / 4, std::abs(quarters) % 4 * 15);
+        out += text;
+      }
+      return out;
+    }
+    default:
+      return feature.GetFieldAsString(field);
+  }
 }
 
 class GeometryReader {
@@ -142,14 +197,21 @@ class GeometryReader {
 
 Result<Layer> read_layer_through_gdal(const std::string& source, const LayerOptions& options) {
   static std::once_flag registered;
-  std::call_once(registered, [] { GDALAllRegister(); });
+  std::call_once(registered, [] {
+    // libpq waits for an unreachable host as long as the system's TCP timeout (minutes): a
+    // layer should fail in seconds. The user's own PGCONNECT_TIMEOUT wins.
+    setenv("PGCONNECT_TIMEOUT", "10", 0);
+    GDALAllRegister();
+  });
   const std::string name = detail::connection_name(source);
   CollectGdalErrors errors;
   GDALDatasetUniquePtr dataset(
       GDALDataset::Open(source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
   if (!dataset) {
-    return make_error(ErrorKind::io, "GDAL cannot open it as a vector layer: " + errors.last(),
-                      name);
+    return make_error(
+        ErrorKind::io,
+        "GDAL cannot open it as a vector layer: " + detail::hide_secrets(errors.last(), source),
+        name);
   }
   OGRLayer* layer = nullptr;
   if (!options.layer_name.empty()) {
@@ -206,17 +268,17 @@ Result<Layer> read_layer_through_gdal(const std::string& source, const LayerOpti
                           "feature " + std::to_string(k) + " has no value of '" + options.id + "'",
                           name);
       }
-      out.ids.emplace_back(feature->GetFieldAsString(field));
+      out.ids.push_back(field_id(*feature, field));
     } else {
       out.ids.push_back(std::to_string(k));
     }
   }
   // A read that fails part way ends the features early: never return a truncated layer.
   if (errors.failed()) {
-    return make_error(
-        ErrorKind::io,
-        "GDAL failed after " + std::to_string(out.regions.size()) + " features: " + errors.last(),
-        name);
+    return make_error(ErrorKind::io,
+                      "GDAL failed after " + std::to_string(out.regions.size()) +
+                          " features: " + detail::hide_secrets(errors.last(), source),
+                      name);
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include "contain/io/layer_io.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -187,13 +188,45 @@ std::optional<std::string> id_text(const JsonValue* value) {
   if (value == nullptr) return std::nullopt;
   switch (value->kind) {
     case JsonValue::Kind::string:
-    case JsonValue::Kind::number:  // kept as written (see parse_json_tree's keep_text)
       return value->text;
+    case JsonValue::Kind::number:
+      // An integer as written (beyond a double's 2^53 too); 3.0 or 3e0 as GDAL reads them.
+      if (value->text.find_first_of(".eE") == std::string::npos) return value->text;
+      return detail::number_id(value->number);
     case JsonValue::Kind::boolean:
       return value->number != 0.0 ? "true" : "false";
     default:
       return std::nullopt;
   }
+}
+
+const JsonValue* properties_of(const JsonValue& shape) {
+  const JsonValue* p = shape.member("properties");
+  return p != nullptr && p->kind == JsonValue::Kind::object ? p : nullptr;
+}
+
+bool any_feature_has(const std::vector<const JsonValue*>& shapes, const std::string& name) {
+  for (const JsonValue* shape : shapes) {
+    const JsonValue* p = properties_of(*shape);
+    if (p != nullptr && p->member(name) != nullptr) return true;
+  }
+  return false;
+}
+
+// The property names of the features, each once, in order of first appearance.
+std::string property_names(const std::vector<const JsonValue*>& shapes) {
+  std::vector<std::string_view> names;
+  for (const JsonValue* shape : shapes) {
+    const JsonValue* p = properties_of(*shape);
+    if (p == nullptr) continue;
+    for (const detail::JsonMember& m : p->members) {
+      if (std::find(names.begin(), names.end(), m.key) == names.end()) names.push_back(m.key);
+    }
+  }
+  std::string out;
+  for (const std::string_view n : names)
+    out += (out.empty() ? "" : ", ") + std::string(n);
+  return out.empty() ? "none" : out;
 }
 
 }  // namespace
@@ -237,6 +270,14 @@ Result<Layer> parse_geojson_layer(std::string_view text, const std::string& sour
                                    ? properties->member(options.id)
                                    : nullptr;
       std::optional<std::string> id = id_text(value);
+      if (!id && !any_feature_has(shapes, options.id)) {
+        // The option names what the file does not have: a usage error, as GDAL's readers give
+        // for a field that is not in the layer (the same code for GeoJSON and a Shapefile).
+        return make_error(ErrorKind::usage,
+                          "no property '" + options.id +
+                              "' in any feature (properties: " + property_names(shapes) + ")",
+                          source);
+      }
       if (!id) {
         return make_error(ErrorKind::invalid_value,
                           "feature " + std::to_string(k) + " has no value of the property '" +

@@ -56,7 +56,11 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
       : begin_(begin), cursor_(cursor), keep_text_(keep_text) {}
 
   bool null() override { return add(JsonValue{}); }
-  bool boolean(bool) override { return add(make(JsonValue::Kind::boolean)); }
+  bool boolean(bool value) override {
+    JsonValue v = make(JsonValue::Kind::boolean);
+    v.number = value ? 1.0 : 0.0;  // read by ids: "v": true must not print false
+    return add(std::move(v));
+  }
   bool number_integer(number_integer_t v) override {
     return add_number(static_cast<double>(v), [&] { return std::to_string(v); });
   }

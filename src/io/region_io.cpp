@@ -6,10 +6,18 @@
 
 namespace contain::io {
 
-Result<MultiPolygon> read_region(const std::filesystem::path& path, WktNotes* notes) {
+std::optional<RegionFormat> region_format(const std::filesystem::path& path) {
   const std::string ext = detail::lower_extension(path);
-  if (ext == ".wkt") return read_wkt(path, notes);
-  if (ext == ".geojson" || ext == ".json") return read_geojson(path);
+  if (ext == ".wkt") return RegionFormat::wkt;
+  if (ext == ".geojson" || ext == ".json") return RegionFormat::geojson;
+  return std::nullopt;
+}
+
+Result<MultiPolygon> read_region(const std::filesystem::path& path, WktNotes* notes) {
+  const std::optional<RegionFormat> format = region_format(path);
+  if (format == RegionFormat::wkt) return read_wkt(path, notes);
+  if (format == RegionFormat::geojson) return read_geojson(path);
+  const std::string ext = detail::lower_extension(path);
   return detail::make_error(
       ErrorKind::unsupported,
       "cannot tell the region format from the extension '" + ext + "': use .wkt or .geojson",

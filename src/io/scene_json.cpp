@@ -1,6 +1,9 @@
 #include "contain/io/scene_json.h"
 
+#include <algorithm>
+#include <initializer_list>
 #include <map>
+#include <string_view>
 
 #include "contain/io/mesh_io.h"
 #include "io/json_tree.h"
@@ -23,6 +26,7 @@ class SceneReader {
     if (objects == nullptr || objects->kind != JsonValue::Kind::array) {
       return fail(root, ErrorKind::parse, "a scene is {\"objects\": [...]}");
     }
+    if (auto s = known_members(root, "the scene", {"objects"}); !s) return s.error();
     Scene scene;
     for (std::size_t k = 0; k < objects->items.size(); ++k) {
       if (auto s = read_object(objects->items[k], k, scene); !s) return s.error();
@@ -37,6 +41,8 @@ class SceneReader {
       return fail(object, ErrorKind::parse,
                   at + ": expected an object, found " + detail::kind_name(object.kind));
     }
+    // A misspelt "transfrom" would leave the object unmoved: every member must be known.
+    if (auto s = known_members(object, at, {"id", "mesh", "transform"}); !s) return s;
     // id: a string, a number as written, or the position.
     const JsonValue* id = object.member("id");
     if (id == nullptr) {
@@ -79,6 +85,20 @@ class SceneReader {
       transform = *checked;
     }
     scene.transforms.push_back(transform);
+    return Ok{};
+  }
+
+  // ErrorKind::invalid_value naming the first member of `object` not in `known`, and `what`.
+  Status known_members(const JsonValue& object, const std::string& what,
+                       std::initializer_list<std::string_view> known) const {
+    for (const detail::JsonMember& m : object.members) {
+      if (std::find(known.begin(), known.end(), m.key) != known.end()) continue;
+      std::string names;
+      for (const std::string_view k : known)
+        names += (names.empty() ? "\"" : ", \"") + std::string(k) + "\"";
+      return fail(m.value, ErrorKind::invalid_value,
+                  what + ": unknown member \"" + m.key + "\" (the members are " + names + ")");
+    }
     return Ok{};
   }
 

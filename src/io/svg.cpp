@@ -9,10 +9,35 @@
 namespace contain::io {
 namespace {
 
+// Pixels: always a finite number, so that no input writes "nan" or "inf" into the document
+// (the canvas keeps real pictures far inside these bounds).
 std::string number(double v) {
+  constexpr double limit = 1e9;
+  v = std::isnan(v) ? 0.0 : std::clamp(v, -limit, limit);
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.2f", v);
   return buffer;
+}
+
+// The width of `text` at `font_px` in a sans-serif face, from above: 0.62 em a character is more
+// than the average advance of DejaVu Sans, Arial and Helvetica on digits and lower case.
+double text_width(std::string_view text, double font_px) {
+  std::size_t characters = 0;
+  for (const char c : text)
+    characters += (static_cast<unsigned char>(c) & 0xc0) != 0x80;  // UTF-8 lead bytes only
+  return 0.62 * font_px * static_cast<double>(characters);
+}
+
+// A <text> element at (x, baseline y) that fits in `room` pixels: squeezed with textLength where
+// the estimate says it would run over.
+std::string fitted_text(double x, double y, double font_px, std::string_view escaped,
+                        std::string_view plain, double room) {
+  std::string out =
+      "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\" font-size=\"" + number(font_px) + "\"";
+  if (text_width(plain, font_px) > room) {
+    out += " textLength=\"" + number(std::max(room, 1.0)) + "\" lengthAdjust=\"spacingAndGlyphs\"";
+  }
+  return out + ">" + std::string(escaped) + "</text>\n";
 }
 
 std::string escape(std::string_view text) {
@@ -27,6 +52,9 @@ std::string escape(std::string_view text) {
         break;
       case '>':
         out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
         break;
       default:
         out += c;
@@ -60,7 +88,11 @@ struct Axes {
   Vec3 right, up, toward;  // toward the viewer
 };
 
-Axes view_axes(const View3& view) {
+Axes view_axes(const View3& given) {
+  // An angle that is not a number (NaN, inf) is the default view's, not a picture of NaNs.
+  const View3 view{
+      std::isfinite(given.azimuth_deg) ? given.azimuth_deg : View3{}.azimuth_deg,
+      std::isfinite(given.elevation_deg) ? given.elevation_deg : View3{}.elevation_deg};
   const double a = view.azimuth_deg * std::numbers::pi / 180.0;
   const double e = view.elevation_deg * std::numbers::pi / 180.0;
   return {{-std::sin(a), std::cos(a), 0.0},
@@ -86,21 +118,38 @@ Box2 projected_bounds(std::span<const Vec3> points, const View3& view) {
   return box;
 }
 
-SvgCanvas::SvgCanvas(const Box2& world, double width_px) : width_(width_px) {
-  Box2 box = world.empty() ? Box2{{0, 0}, {1, 1}} : world;
+SvgCanvas::SvgCanvas(const Box2& world, double width_px)
+    : width_(std::isfinite(width_px) && width_px >= 1.0 ? std::min(width_px, 1e6) : 400.0) {
+  const bool finite = std::isfinite(world.min.x) && std::isfinite(world.min.y) &&
+                      std::isfinite(world.max.x) && std::isfinite(world.max.y);
+  Box2 box = world.empty() || !finite ? Box2{{0, 0}, {1, 1}} : world;
+  // A box wider than the largest double is drawn in quarter units, and one of subnormal or
+  // nearly subnormal numbers in units of 2^-600 (both exact), so that its size, margin and
+  // scale are finite and its shape is kept; to_pixels scales every point alike.
+  const double reach = std::max(
+      {std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});
+  if (!std::isfinite(box.max.x - box.min.x) || !std::isfinite(box.max.y - box.min.y)) {
+    unit_ = 0.25;
+  } else if (reach < 1e-200) {
+    unit_ = std::ldexp(1.0, 600);
+  }
+  box = {box.min * unit_, box.max * unit_};
   double dx = box.max.x - box.min.x, dy = box.max.y - box.min.y;
-  const double size = std::max({dx, dy, 1e-300});
-  if (dx <= 0) dx = size;
-  if (dy <= 0) dy = size;
+  // Extents below 1e-200 (subnormal ones too) are drawn 1e-200 wide: the scale, pixels per
+  // unit, stays finite.
+  constexpr double smallest = 1e-200;
+  const double size = std::max({dx, dy, smallest});
+  if (dx < smallest) dx = dx <= 0 ? size : smallest;
+  if (dy < smallest) dy = dy <= 0 ? size : smallest;
   const double margin = 0.04 * std::max(dx, dy);
   world_ = {{box.min.x - margin, box.min.y - margin},
             {box.min.x + dx + margin, box.min.y + dy + margin}};
   scale_ = width_ / (world_.max.x - world_.min.x);
-  height_ = (world_.max.y - world_.min.y) * scale_;
+  height_ = std::min((world_.max.y - world_.min.y) * scale_, 1e7);
 }
 
 Vec2 SvgCanvas::to_pixels(Vec2 world) const {
-  return {(world.x - world_.min.x) * scale_, (world_.max.y - world.y) * scale_};
+  return {(world.x * unit_ - world_.min.x) * scale_, (world_.max.y - world.y * unit_) * scale_};
 }
 
 void SvgCanvas::region(std::span<const Ring> rings, const SvgStyle& style) {
@@ -238,36 +287,50 @@ std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle
 }
 
 void SvgCanvas::title(std::string_view text) {
-  title_ = escape(text);
+  title_ = std::string(text);
 }
 
 void SvgCanvas::legend(std::string_view colour, std::string_view label) {
-  legend_.emplace_back(std::string(colour), escape(label));
+  legend_.emplace_back(std::string(colour), std::string(label));
 }
 
+// The title's line above the picture and the legend's box at its top right are laid out from
+// the estimated width of their text (text_width), so both stay inside the view box whatever the
+// picture's width: the legend box grows to its longest label, the picture grows to hold the
+// legend's height, and a text that still does not fit is squeezed (textLength).
 std::string SvgCanvas::str() const {
+  constexpr double title_px = 16.0, legend_px = 13.0, pad = 8.0;
   const double header = title_.empty() ? 0.0 : 28.0;
+  double label_width = 0.0;
+  for (const auto& entry : legend_)
+    label_width = std::max(label_width, text_width(entry.second, legend_px));
+  const double legend_width = std::min(label_width + 34.0, std::max(width_ - 2.0, 1.0));
+  const double legend_height = 18.0 * static_cast<double>(legend_.size()) + 10.0;
+  const double height = legend_.empty() ? height_ : std::max(height_, legend_height + 8.0);
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width_) +
-                    "\" height=\"" + number(height_ + header) + "\" viewBox=\"0 " +
-                    number(-header) + " " + number(width_) + " " + number(height_ + header) +
+                    "\" height=\"" + number(height + header) + "\" viewBox=\"0 " + number(-header) +
+                    " " + number(width_) + " " + number(height + header) +
                     "\" font-family=\"sans-serif\">\n";
   out += "<rect x=\"0\" y=\"" + number(-header) +
          "\" width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if (!title_.empty()) out += "<text x=\"8\" y=\"-8\" font-size=\"16\">" + title_ + "</text>\n";
-  out += body_;
-  double y = 10.0;
-  if (!legend_.empty()) {
-    out += "<rect x=\"" + number(width_ - 158.0) + "\" y=\"4\" width=\"152\" height=\"" +
-           number(18.0 * static_cast<double>(legend_.size()) + 10.0) +
-           "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n";
+  if (!title_.empty()) {
+    out += fitted_text(pad, -8.0, title_px, escape(title_), title_, width_ - 2.0 * pad);
   }
-  for (const auto& [colour, label] : legend_) {
-    const double x = width_ - 150.0;
-    out += "<rect x=\"" + number(x) + "\" y=\"" + number(y) +
-           "\" width=\"12\" height=\"12\" fill=\"" + colour + "\" stroke=\"#333\"/>\n";
-    out += "<text x=\"" + number(x + 18) + "\" y=\"" + number(y + 11) + "\" font-size=\"13\">" +
-           label + "</text>\n";
-    y += 18.0;
+  out += body_;
+  if (!legend_.empty()) {
+    const double left = std::max(1.0, width_ - legend_width - 1.0);
+    out += "<rect x=\"" + number(left) + "\" y=\"4\" width=\"" + number(legend_width) +
+           "\" height=\"" + number(legend_height) +
+           "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#999\"/>\n";
+    double y = 10.0;
+    for (const auto& [colour, label] : legend_) {
+      const double x = left + 8.0;
+      out += "<rect x=\"" + number(x) + "\" y=\"" + number(y) +
+             "\" width=\"12\" height=\"12\" fill=\"" + escape(colour) + "\" stroke=\"#333\"/>\n";
+      out += fitted_text(x + 18.0, y + 11.0, legend_px, escape(label), label,
+                         left + legend_width - (x + 18.0) - 4.0);
+      y += 18.0;
+    }
   }
   out += "</svg>\n";
   return out;

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <regex>
 #include <system_error>
+#include <vector>
 
 namespace contain::io::detail {
 
@@ -19,10 +20,55 @@ std::string source_name(const std::filesystem::path& path) {
   return path.string();
 }
 
+namespace {
+
+// The forms of a password in a connection string: key=value (quoted or not; to the next white
+// space, which in a URI's query also hides the parameters after it), the same in a URI's query
+// (to the next '&': the secret itself, for hide_secrets), and a URI's user information
+// "scheme://user:secret@".
+const std::regex& password_pattern() {
+  static const std::regex pattern(R"((password\s*=\s*)('(?:[^'\\]|\\.)*'|\S+))", std::regex::icase);
+  return pattern;
+}
+const std::regex& query_password_pattern() {
+  static const std::regex pattern(R"(([?&]password=)([^&\s]+))", std::regex::icase);
+  return pattern;
+}
+const std::regex& uri_password_pattern() {
+  static const std::regex pattern(R"((://[^:/@\s]*:)([^@\s]*)@)");
+  return pattern;
+}
+
+}  // namespace
+
 std::string connection_name(const std::string& source) {
   // A connection string may carry a password: never print it.
-  static const std::regex password(R"((password\s*=\s*)('[^']*'|\S+))", std::regex::icase);
-  return std::regex_replace(source, password, "$1***");
+  const std::string masked = std::regex_replace(source, password_pattern(), "$1***");
+  return std::regex_replace(masked, uri_password_pattern(), "$1***@");
+}
+
+std::string hide_secrets(const std::string& message, const std::string& source) {
+  std::vector<std::string> secrets;
+  for (const std::regex* pattern :
+       {&password_pattern(), &query_password_pattern(), &uri_password_pattern()}) {
+    for (auto it = std::sregex_iterator(source.begin(), source.end(), *pattern);
+         it != std::sregex_iterator(); ++it) {
+      std::string secret = (*it)[2].str();
+      if (secret.size() >= 2 && secret.front() == '\'' && secret.back() == '\'') {
+        secrets.push_back(secret.substr(1, secret.size() - 2));
+      }
+      secrets.push_back(std::move(secret));
+    }
+  }
+  std::string out = connection_name(message);
+  for (const std::string& secret : secrets) {
+    // A secret of a few characters would also hide those letters wherever the message has them:
+    // its own forms are hidden above already.
+    if (secret.size() < 4) continue;
+    for (std::size_t at = out.find(secret); at != std::string::npos; at = out.find(secret, at))
+      out.replace(at, secret.size(), "***");
+  }
+  return out;
 }
 
 Result<std::string> read_file(const std::filesystem::path& path) {
@@ -132,6 +178,16 @@ void append_double(std::string& out, double value) {
   auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   (void)ec;  // 32 characters always hold the shortest form of a double
   out.append(buffer.data(), ptr);
+}
+
+std::string number_id(double value) {
+  constexpr double limit = 9223372036854775808.0;  // 2^63: every whole double below fits int64
+  if (value == std::floor(value) && std::abs(value) < limit) {
+    return std::to_string(static_cast<std::int64_t>(value));
+  }
+  std::string out;
+  append_double(out, value);
+  return out;
 }
 
 std::string quote_token(const char* p, const char* end) {

@@ -17,9 +17,14 @@ namespace contain::io::detail {
 /// The name of a file in messages: its path as given.
 [[nodiscard]] std::string source_name(const std::filesystem::path& path);
 
-/// The name of a GDAL source in messages: as given, but a connection string's password
-/// (`password=...`, quoted or not) shown as `***`.
+/// The name of a GDAL source in messages: as given, but a connection string's password shown
+/// as `***` in every form libpq takes: `password=...` (quoted or not, also as a URI query
+/// parameter) and the user information of a URI (`postgresql://user:secret@host`).
 [[nodiscard]] std::string connection_name(const std::string& source);
+
+/// `message` (a driver's words, which may quote the source) with every password of `source`
+/// hidden, as connection_name hides it.
+[[nodiscard]] std::string hide_secrets(const std::string& message, const std::string& source);
 
 /// The whole content of a file (binary-safe). Errors: ErrorKind::io naming the path (missing,
 /// a directory, unreadable).
@@ -53,6 +58,11 @@ enum class NumberStatus : std::uint8_t {
 
 /// Shortest decimal that reads back as exactly `value` (std::to_chars), appended to `out`.
 void append_double(std::string& out, double value);
+
+/// A number as a layer's id, the same whichever reader met it (GeoJSON text, a GDAL field): a
+/// whole number of magnitude below 2^63 in plain digits ("3.0", "3e0" and the integer 3 all
+/// give "3"), any other the shortest decimal that reads back as the same double.
+[[nodiscard]] std::string number_id(double value);
 
 /// A short quote of the text at `p` for messages: `'abc'`, or "the end of the line/file".
 [[nodiscard]] std::string quote_token(const char* p, const char* end);

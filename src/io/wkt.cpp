@@ -13,7 +13,9 @@ using detail::make_error;
 using detail::NumberStatus;
 
 // A recursive-descent reader of the grammar of ISO 19125-1 §7.2 restricted to polygons:
-//   geometry  := ('POLYGON' tag polygon | 'MULTIPOLYGON' tag multi)
+//   geometry  := ('POLYGON' tag polygon | 'MULTIPOLYGON' tag multi
+//                | 'GEOMETRYCOLLECTION' tag collection)
+//   collection := 'EMPTY' | '(' geometry { ',' geometry } ')'   (members: polygons only)
 //   tag       := [ 'Z' | 'M' | 'ZM' ]
 //   multi     := 'EMPTY' | '(' polygon { ',' polygon } ')'
 //   polygon   := 'EMPTY' | '(' ring { ',' ring } ')'
@@ -43,26 +45,31 @@ class WktReader {
       skip_space();
       word = keyword();
     }
+    MultiPolygon out;
+    if (Status status = read_geometry(word, out, 0); !status) return status.error();
+    skip_space();
+    if (p_ != end_) {
+      return fail(ErrorKind::parse,
+                  "unexpected text " + detail::quote_token(p_, end_) + " after the geometry");
+    }
+    return out;
+  }
+
+ private:
+  // One geometry after its keyword `word`: a POLYGON, a MULTIPOLYGON or a GEOMETRYCOLLECTION of
+  // them (as GeoJSON's GeometryCollection is read: the union of its members' polygons).
+  Status read_geometry(const std::string& word, MultiPolygon& out, int depth) {
     if (word.empty()) {
       return fail(ErrorKind::parse,
                   "expected POLYGON or MULTIPOLYGON, found " + detail::quote_token(p_, end_));
     }
+    if (word == "GEOMETRYCOLLECTION") return read_collection(out, depth);
     const bool multi = word == "MULTIPOLYGON";
     if (!multi && word != "POLYGON") {
-      static constexpr const char* kOther[] = {"POINT",
-                                               "LINESTRING",
-                                               "MULTIPOINT",
-                                               "MULTILINESTRING",
-                                               "GEOMETRYCOLLECTION",
-                                               "TRIANGLE",
-                                               "TIN",
-                                               "POLYHEDRALSURFACE",
-                                               "CIRCULARSTRING",
-                                               "CURVEPOLYGON",
-                                               "MULTISURFACE",
-                                               "COMPOUNDCURVE",
-                                               "MULTICURVE",
-                                               "LINEARRING"};
+      static constexpr const char* kOther[] = {
+          "POINT",         "LINESTRING",        "MULTIPOINT",     "MULTILINESTRING", "TRIANGLE",
+          "TIN",           "POLYHEDRALSURFACE", "CIRCULARSTRING", "CURVEPOLYGON",    "MULTISURFACE",
+          "COMPOUNDCURVE", "MULTICURVE",        "LINEARRING"};
       for (const char* other : kOther) {
         if (word == other) {
           return fail(ErrorKind::unsupported,
@@ -74,18 +81,25 @@ class WktReader {
                   "unknown WKT keyword '" + word + "': expected POLYGON or MULTIPOLYGON");
     }
     if (auto tag = read_tag(); !tag.ok()) return tag.error();
-    MultiPolygon out;
-    Status status = multi ? read_multi(out) : read_polygon(out);
-    if (!status) return status.error();
-    skip_space();
-    if (p_ != end_) {
-      return fail(ErrorKind::parse,
-                  "unexpected text " + detail::quote_token(p_, end_) + " after the geometry");
-    }
-    return out;
+    return multi ? read_multi(out) : read_polygon(out);
   }
 
- private:
+  Status read_collection(MultiPolygon& out, int depth) {
+    if (depth >= 64) return fail(ErrorKind::unsupported, "collections nested too deeply");
+    if (auto tag = read_tag(); !tag.ok()) return tag.error();
+    if (empty_token()) return Ok{};
+    if (auto s = expect('(', "to open the GEOMETRYCOLLECTION"); !s) return s;
+    while (true) {
+      skip_space();
+      if (auto s = read_geometry(keyword(), out, depth + 1); !s) return s;
+      skip_space();
+      if (eat(',')) continue;
+      if (eat(')')) return Ok{};
+      return fail(ErrorKind::parse, "expected ',' or ')' after a member of the collection, found " +
+                                        detail::quote_token(p_, end_));
+    }
+  }
+
   Error fail(ErrorKind kind, std::string message) const {
     return make_error(kind, std::move(message), source_, line_);
   }

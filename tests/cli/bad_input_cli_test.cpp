@@ -487,8 +487,9 @@ TEST(BadInputCli, DistanceRefusesNonFiniteInputAndDocumentsEmptyShapes) {
   const std::string empty = dir.write("empty.off", "");
   EXPECT_EQ(run_contain({"distance", "--mesh", empty}, "0 0 0\n").exit_code, 3);
   // --within D: D must be finite and >= 0 (a usage error otherwise)
+  // A bad number is bad input (exit 3, decided in issue 24 after the contract's rule).
   for (const char* d : {"nan", "inf", "-1"})
-    EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", d}, "0 0 0\n").exit_code, 2);
+    EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", d}, "0 0 0\n").exit_code, 3);
   const std::string poses = dir.write("poses.txt", "1 0 0 nan 0 1 0 0 0 0 1 0\n");
   const CliRun p = run_contain({"distance", cube, cube, "--poses", poses});
   EXPECT_EQ(p.exit_code, 3);

@@ -79,9 +79,10 @@ TEST(CollideCli, BadInputAndUsageErrorsFollowTheContract) {
   const std::string cube = dir.write("cube.off", kCube);
   const std::string region = dir.write("r.wkt", "POLYGON((0 0, 1 0, 0 1, 0 0))");
   EXPECT_EQ(run_contain({"collide", cube, cube, "--transform-b", "1,0,0"}).exit_code, 2);
+  // NaN in a transform is a bad number: exit 3, as NaN coordinates (issue 24).
   EXPECT_EQ(
       run_contain({"collide", cube, cube, "--transform-b", "1,0,0,nan,0,1,0,0,0,0,1,0"}).exit_code,
-      2);
+      3);
   EXPECT_EQ(run_contain({"collide", cube, (dir.path() / "missing.off").string()}).exit_code, 3);
   EXPECT_EQ(run_contain({"collide", cube, region}).exit_code, 3);
   const std::string bad = dir.write("bad.txt", "1 0 0 0 0 1 0 0 0 0 1\n");

@@ -114,12 +114,13 @@ TEST(DistanceCli, OpenMeshSignsWarnAsInsideDoes) {
   EXPECT_TRUE(unsigned_run.err.empty());
 }
 
-TEST(DistanceCli, UsageErrorsAreExitTwo) {
+TEST(DistanceCli, UsageErrorsAreExitTwoAndBadNumbersExitThree) {
   TempDir dir;
   const std::string cube = dir.write("cube.off", kCube);
   EXPECT_EQ(run_contain({"distance"}).exit_code, 2);
-  EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", "-1"}, "0 0 0\n").exit_code, 2);
-  EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", "nan"}, "0 0 0\n").exit_code, 2);
+  // A D that is a number but not a distance is bad input (issue 24: the contract's exit 3).
+  EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", "-1"}, "0 0 0\n").exit_code, 3);
+  EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", "nan"}, "0 0 0\n").exit_code, 3);
   EXPECT_EQ(run_contain({"distance", "--mesh", cube, cube, cube}, "0 0 0\n").exit_code, 2);
 }
 

@@ -122,8 +122,9 @@ TEST(InsideLayerCli, ErrorsAreUsageOrBadInput) {
   const CliRun missing =
       run_contain({"inside", "--layer", (dir.path() / "nope.geojson").string()}, "0 0\n");
   EXPECT_EQ(missing.exit_code, 3);
+  // An attribute that no feature has is a usage error, as for a Shapefile (issue 24).
   const CliRun property = run_contain({"inside", "--layer", layer, "--id", "owner"}, "0 0\n");
-  EXPECT_EQ(property.exit_code, 3);
+  EXPECT_EQ(property.exit_code, 2);
   EXPECT_NE(property.err.find("owner"), std::string::npos) << property.err;
   const CliRun points = run_contain({"inside", "--layer", layer}, "0 0 0\n");
   EXPECT_EQ(points.exit_code, 3);

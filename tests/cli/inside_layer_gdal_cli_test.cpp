@@ -119,6 +119,53 @@ TEST(InsideLayerGdalCli, LayerNameChoosesAmongSeveralAndMissingNamesAreListed) {
   EXPECT_NE(field.err.find("name"), std::string::npos) << field.err;
 }
 
+// Issue 24: a boolean property printed `false` for true, and GDAL spelt other values its own way
+// (dates 2024/01/31, whole doubles 3.0 as "3.000000000000000" in a Shapefile). The same values
+// give the same ids whichever reader meets them: our GeoJSON reader, GDAL on the same GeoJSON,
+// or GDAL on a GeoPackage or Shapefile converted from it.
+TEST(InsideLayerGdalCli, BooleanDateAndWholeDoubleIdsReadTheSameThroughGdal) {
+  TempDir dir;
+  std::string features;
+  const char* values[][4] = {{"true", "3.0", "\"2024-01-31\"", "\"2024-01-31T10:20:30Z\""},
+                             {"false", "-7.5", "\"1999-12-01\"", "\"2001-02-03T04:05:06Z\""}};
+  for (int k = 0; k < 2; ++k) {
+    const std::string x0 = std::to_string(2 * k), x1 = std::to_string(2 * k + 1);
+    features += std::string(k > 0 ? ",\n" : "") + R"({"type":"Feature","properties":{"v":)" +
+                values[k][0] + R"(,"n":)" + values[k][1] + R"(,"d":)" + values[k][2] + R"(,"t":)" +
+                values[k][3] + R"(},"geometry":{"type":"Polygon","coordinates":[[[)" + x0 +
+                ",0],[" + x1 + ",0],[" + x1 + ",1],[" + x0 + ",1],[" + x0 + ",0]]]}}";
+  }
+  const std::string geojson = dir.write(
+      "typed.geojson", "{\"type\":\"FeatureCollection\",\"features\":[" + features + "]}\n");
+  const std::string points = dir.write("p.txt", "0.5 0.5\n2.5 0.5\n");
+  const std::string gpkg = convert(dir, geojson, "typed.gpkg", "GPKG");
+  ASSERT_FALSE(gpkg.empty());
+  const std::vector<std::pair<std::string, std::string>> expected{
+      {"v", "true\nfalse\n"},
+      {"n", "3\n-7.5\n"},
+      {"d", "2024-01-31\n1999-12-01\n"},
+      {"t", "2024-01-31T10:20:30Z\n2001-02-03T04:05:06Z\n"}};
+  // GDAL reads a .json file as GeoJSON too, but contain's own reader takes .geojson: the copy
+  // with a GDAL-only name makes GDAL read the same text.
+  const std::string through_gdal = (dir.path() / "typed.geojsonl").string();
+  const CliRun copy = run_program("ogr2ogr", {"-f", "GeoJSONSeq", through_gdal, geojson});
+  ASSERT_EQ(copy.exit_code, 0) << copy.err;
+  for (const auto& [id, out] : expected) {
+    for (const std::string& source : {geojson, gpkg, through_gdal}) {
+      const CliRun run = run_contain({"inside", "--layer", source, "--id", id, "--points", points});
+      EXPECT_EQ(run.exit_code, 0) << source << ": " << run.err;
+      EXPECT_EQ(run.out, out) << source << " --id " << id;
+    }
+  }
+  // A Shapefile has no boolean or date-time type: its integers and dates still agree.
+  const std::string shp = convert(dir, geojson, "typed.shp", "ESRI Shapefile");
+  ASSERT_FALSE(shp.empty());
+  for (const char* id : {"n", "d"}) {
+    const CliRun run = run_contain({"inside", "--layer", shp, "--id", id, "--points", points});
+    EXPECT_EQ(run.out, id == std::string("n") ? "3\n-7.5\n" : "2024-01-31\n1999-12-01\n");
+  }
+}
+
 TEST(InsideLayerGdalCli, LinesAndUnreadableSourcesAreBadInput) {
   TempDir dir;
   const std::string lines =

@@ -8,22 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "cli/cube_off.h"
 #include "cli/run.h"
 
 namespace contain::test {
 namespace {
-
-std::string cube_off(double size) {
-  std::string out = "OFF\n8 12 0\n";
-  for (int i = 0; i < 8; ++i) {
-    out += std::to_string((i & 1) ? size : 0.0) + " " + std::to_string((i & 2) ? size : 0.0) + " " +
-           std::to_string((i & 4) ? size : 0.0) + "\n";
-  }
-  out +=
-      "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n"
-      "3 1 3 7\n3 1 7 5\n";
-  return out;
-}
 
 std::string shift(double x, double y, double z) {
   return "1,0,0," + std::to_string(x) + ",0,1,0," + std::to_string(y) + ",0,0,1," +

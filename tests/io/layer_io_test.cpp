@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/temp_file.h"
+#include "io/text_scan.h"
 
 namespace contain::io {
 namespace {
@@ -64,7 +65,9 @@ TEST(GeoJsonLayer, EveryFeatureIsARegionWithItsIdMember) {
   EXPECT_TRUE(layer->regions[2].polygons.empty());  // a null geometry keeps its position
 }
 
-TEST(GeoJsonLayer, IdsFromAPropertyKeepNumbersAsWritten) {
+// Integers as written (past 2^53 too); other numbers as the values GDAL reads from the same
+// file (issue 24: 0.10 and 1e2 are the doubles 0.1 and 100, whoever reads them).
+TEST(GeoJsonLayer, IdsFromAPropertyKeepIntegersAsWrittenAndOtherNumbersAsValues) {
   auto by_name = parse_geojson_layer(kCollection, "l.geojson", {.id = "name"});
   ASSERT_TRUE(by_name) << by_name.error().what();
   EXPECT_EQ(by_name->ids, (std::vector<std::string>{"west", "east", "nothing"}));
@@ -73,7 +76,24 @@ TEST(GeoJsonLayer, IdsFromAPropertyKeepNumbersAsWritten) {
   EXPECT_EQ(by_code->ids, (std::vector<std::string>{"7", "-3", "0"}));
   auto by_ratio = parse_geojson_layer(kCollection, "l.geojson", {.id = "ratio"});
   ASSERT_TRUE(by_ratio);
-  EXPECT_EQ(by_ratio->ids, (std::vector<std::string>{"0.10", "1e2", "2"}));
+  EXPECT_EQ(by_ratio->ids, (std::vector<std::string>{"0.1", "100", "2"}));
+}
+
+TEST(GeoJsonLayer, BooleanAndWholeDoubleIdsAreTheirValues) {
+  const auto layer = parse_geojson_layer(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"v": true, "n": 3.0, "d": "2024-01-31"}, "geometry": null},
+    {"type": "Feature", "properties": {"v": false, "n": -4e0, "d": "2024-02-01"}, "geometry": null}
+  ]})",
+                                         "b.geojson", {.id = "v"});
+  ASSERT_TRUE(layer) << layer.error().what();
+  EXPECT_EQ(layer->ids, (std::vector<std::string>{"true", "false"}));
+  const auto n = parse_geojson_layer(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"n": 3.0}, "geometry": null},
+    {"type": "Feature", "properties": {"n": -4e0}, "geometry": null},
+    {"type": "Feature", "properties": {"n": 1.5e300}, "geometry": null}]})",
+                                     "n.geojson", {.id = "n"});
+  ASSERT_TRUE(n) << n.error().what();
+  EXPECT_EQ(n->ids, (std::vector<std::string>{"3", "-4", "1.5e+300"}));
 }
 
 TEST(GeoJsonLayer, PositionsWhereSomeFeatureHasNoId) {
@@ -86,11 +106,45 @@ TEST(GeoJsonLayer, PositionsWhereSomeFeatureHasNoId) {
 }
 
 TEST(GeoJsonLayer, MissingPropertyNamesTheFeatureAndLine) {
-  const auto layer = parse_geojson_layer(kCollection, "l.geojson", {.id = "owner"});
+  const auto layer = parse_geojson_layer(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "a"}, "geometry": null},
+    {"type": "Feature", "properties": {"code": 1}, "geometry": null}]})",
+                                         "l.geojson", {.id = "code"});
   ASSERT_FALSE(layer);
   EXPECT_EQ(layer.error().kind, ErrorKind::invalid_value);
   EXPECT_NE(layer.error().message.find("feature 0"), std::string::npos);
   EXPECT_EQ(layer.error().line, 2);
+}
+
+// A property that no feature has is a usage error listing the properties there are, as GDAL's
+// reader says of a field that is not in the layer (issue 24: one exit code for both).
+TEST(GeoJsonLayer, PropertyOfNoFeatureIsAUsageErrorListingTheProperties) {
+  const auto layer = parse_geojson_layer(kCollection, "l.geojson", {.id = "owner"});
+  ASSERT_FALSE(layer);
+  EXPECT_EQ(layer.error().kind, ErrorKind::usage);
+  EXPECT_NE(layer.error().message.find("'owner'"), std::string::npos);
+  EXPECT_NE(layer.error().message.find("name, code, ratio"), std::string::npos)
+      << layer.error().message;
+}
+
+TEST(LayerSourceName, HidesPasswordsInEveryForm) {
+  for (const std::string source :
+       {"PG:postgresql://alice:hunter22@db.example/gis", "PG:postgres://alice:hunter22@db:5432/gis",
+        "PG:postgresql://alice@db/gis?sslmode=require&password=hunter22",
+        "PG:host=db password=hunter22 dbname=gis", "PG:host=db password='hunter 22' dbname=gis",
+        "PG:host=db PassWord = hunter22 dbname=gis"}) {
+    const std::string name = layer_source_name(source);
+    EXPECT_EQ(name.find("hunter"), std::string::npos) << name;
+    EXPECT_NE(name.find("***"), std::string::npos) << name;
+    EXPECT_NE(name.find("db"), std::string::npos) << name;
+  }
+  EXPECT_EQ(layer_source_name("parcels.gpkg"), "parcels.gpkg");
+  // A driver's message that quotes the secret loses it too.
+  const std::string said = detail::hide_secrets(
+      "could not connect to 'postgresql://alice:hunter22@db/gis' (hunter22 refused)",
+      "PG:postgresql://alice:hunter22@db/gis");
+  EXPECT_EQ(said.find("hunter22"), std::string::npos) << said;
+  EXPECT_EQ(layer_source_name("PG:postgresql://alice@db/gis"), "PG:postgresql://alice@db/gis");
 }
 
 TEST(GeoJsonLayer, BareGeometryIsALayerOfOne) {
@@ -104,6 +158,37 @@ TEST(GeoJsonLayer, BareGeometryIsALayerOfOne) {
   ASSERT_FALSE(point);
   EXPECT_EQ(point.error().kind, ErrorKind::unsupported);
   EXPECT_EQ(point.error().line, 2);
+}
+
+// Issue 24: layers read unclosed rings, holes outside their shell and overlapping parts in
+// silence, where `clip` warns of unclosed rings. read_layer now words each as a warning.
+TEST(ReadLayer, WarnsOfUnclosedRingsHolesOutsideTheShellAndOverlappingParts) {
+  const test::TempFile wkt(
+      ".wkt",
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\n"
+      "POLYGON ((0 0, 4 0, 4 4, 0 4))\n"                                           // not closed
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 6 5, 6 6, 5 5))\n"                // hole outside
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((2 2, 6 2, 6 6, 2 6, 2 2)))\n"  // overlap
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((4 0, 8 0, 8 4, 4 4, 4 0)))\n"  // touching
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 2 1, 1 2, 0 0))\n");  // hole touching shell
+  auto layer = read_layer(wkt.path().string());
+  ASSERT_TRUE(layer) << layer.error().what();
+  ASSERT_EQ(layer->warnings.size(), 3u);
+  EXPECT_NE(layer->warnings[0].find(":2: ring not closed"), std::string::npos)
+      << layer->warnings[0];
+  EXPECT_NE(layer->warnings[1].find("shape 2, polygon 1: hole 1 has a vertex outside its shell"),
+            std::string::npos)
+      << layer->warnings[1];
+  EXPECT_NE(layer->warnings[2].find("shape 3: polygons 1 and 2 overlap"), std::string::npos)
+      << layer->warnings[2];
+  // The same regions read as GeoJSON give the same warnings of holes and parts.
+  const test::TempFile json(".geojson", R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {}, "geometry": {"type": "MultiPolygon", "coordinates":
+      [[[[0,0],[4,0],[4,4],[0,4],[0,0]]], [[[2,2],[6,2],[6,6],[2,6],[2,2]]]]}}]})");
+  auto geojson = read_layer(json.path().string());
+  ASSERT_TRUE(geojson);
+  ASSERT_EQ(geojson->warnings.size(), 1u);
+  EXPECT_NE(geojson->warnings[0].find("shape 0: polygons 1 and 2 overlap"), std::string::npos);
 }
 
 TEST(ReadLayer, PicksTheReaderByExtension) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "contain/io/geojson.h"
 #include "io/temp_file.h"
 #include "support/shared_corpus.h"
 
@@ -98,6 +99,43 @@ TEST(Wkt, RejectsMalformedInputNamingTheKindAndLine) {
     EXPECT_EQ(r.error().line, c.line) << c.text << ": " << r.error().what();
     EXPECT_EQ(r.error().source, "bad.wkt");
   }
+}
+
+// Issue 24: GeoJSON's GeometryCollection of polygons was read, WKT's refused; both now give the
+// polygons of their members, and a member that is not a region is refused alike.
+TEST(Wkt, GeometryCollectionsOfPolygonsReadAsTheirPolygonsAsInGeoJson) {
+  const auto collection = parse_wkt(
+      "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)),\n"
+      " GEOMETRYCOLLECTION (MULTIPOLYGON (((5 5, 6 5, 6 6, 5 5)), EMPTY), POLYGON EMPTY))",
+      "gc.wkt");
+  ASSERT_TRUE(collection) << collection.error().what();
+  const auto same =
+      parse_wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((5 5, 6 5, 6 6, 5 5)))", "m.wkt");
+  ASSERT_TRUE(same);
+  EXPECT_EQ(*collection, *same);
+  const auto geojson = parse_geojson(
+      R"({"type": "GeometryCollection", "geometries": [
+        {"type": "Polygon", "coordinates": [[[0,0],[1,0],[1,1],[0,0]]]},
+        {"type": "GeometryCollection", "geometries": [
+          {"type": "MultiPolygon", "coordinates": [[[[5,5],[6,5],[6,6],[5,5]]]]}]}]})",
+      "gc.geojson");
+  ASSERT_TRUE(geojson) << geojson.error().what();
+  EXPECT_EQ(*collection, *geojson);
+  EXPECT_TRUE(parse_wkt("GEOMETRYCOLLECTION EMPTY", "e.wkt")->polygons.empty());
+  const auto point =
+      parse_wkt("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)),\n POINT (1 2))", "p.wkt");
+  ASSERT_FALSE(point);
+  EXPECT_EQ(point.error().kind, ErrorKind::unsupported);
+  EXPECT_EQ(point.error().line, 2);
+  std::string deep;
+  for (int i = 0; i < 100; ++i)
+    deep += "GEOMETRYCOLLECTION (";
+  const auto nested = parse_wkt(deep + "POLYGON EMPTY" + std::string(100, ')'), "d.wkt");
+  ASSERT_FALSE(nested);
+  EXPECT_EQ(nested.error().kind, ErrorKind::unsupported);
+  const auto unclosed = parse_wkt("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0))", "u.wkt");
+  ASSERT_FALSE(unclosed);
+  EXPECT_EQ(unclosed.error().kind, ErrorKind::parse);
 }
 
 TEST(Wkt, NeverCrashesOnAnyPrefixOfValidText) {

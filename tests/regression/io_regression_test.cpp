@@ -11,9 +11,11 @@
 #include <vector>
 
 #include "contain/io/csg_json.h"
+#include "contain/io/layer_io.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
+#include "contain/io/scene_json.h"
 #include "contain/io/wkb.h"
 #include "contain/io/wkt.h"
 #include "regression/regression_corpus.h"
@@ -24,7 +26,7 @@ namespace {
 // Reads every file the command names with the reader the command uses; "" when all read, else the
 // first error as the command words it ("source:line: message").
 std::string first_reader_error(const RegressionCase& c) {
-  const bool plane = c.option("--polygon").has_value();
+  const bool plane = c.option("--polygon").has_value() || c.option("--layer").has_value();
   if (const auto f = c.option("--polygon")) {
     if (auto r = io::read_region(*f); !r.ok()) return r.error().what();
   }
@@ -33,6 +35,14 @@ std::string first_reader_error(const RegressionCase& c) {
   }
   if (const auto f = c.option("--csg")) {
     if (auto r = io::read_csg_json(*f); !r.ok()) return r.error().what();
+  }
+  if (const auto f = c.option("--scene")) {
+    if (auto r = io::read_scene_json(*f); !r.ok()) return r.error().what();
+  }
+  if (const auto f = c.option("--layer")) {
+    if (auto r = io::read_layer(*f, {.id = c.option("--id").value_or("")}); !r.ok()) {
+      return r.error().what();
+    }
   }
   if (const auto f = c.option("--points")) {
     if (plane) {

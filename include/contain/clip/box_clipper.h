@@ -70,6 +70,13 @@ struct TileGrid {
 [[nodiscard]] std::vector<MultiPolygon> tile(const BoxClipper& region, const TileGrid& grid,
                                              const BatchOptions& options = {});
 
+/// Tiles `first` to `first + count - 1` of `grid` in row-major order (clamped to the grid), on
+/// `options.threads` threads: exactly those entries of `tile`. A caller writing a grid too large
+/// to hold (100000 x 100000 tiles) takes it a band at a time.
+[[nodiscard]] std::vector<MultiPolygon> tile_range(const BoxClipper& region, const TileGrid& grid,
+                                                   std::size_t first, std::size_t count,
+                                                   const BatchOptions& options = {});
+
 /// The same, preparing the region first.
 [[nodiscard]] std::vector<MultiPolygon> tile(const MultiPolygon& region, const TileGrid& grid,
                                              const BatchOptions& options = {});

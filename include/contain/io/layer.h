@@ -15,6 +15,11 @@ namespace contain::io {
 struct Layer {
   std::vector<std::string> ids;
   std::vector<MultiPolygon> regions;
+  /// What the source held that OGC does not allow and was read anyway, one sentence each naming
+  /// the source and the line or shape (for a warning): a WKT ring not closed (read as closed), a
+  /// hole with a vertex outside its shell, a polygon with a vertex inside another polygon of the
+  /// same region (parts that overlap). The regions are read as written, under the fill rule.
+  std::vector<std::string> warnings;
 };
 
 /// How a layer is read.

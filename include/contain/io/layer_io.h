@@ -23,9 +23,9 @@ namespace contain::io {
 [[nodiscard]] Result<Layer> read_layer(const std::string& source, const LayerOptions& options = {});
 
 /// Parses a WKT layer: every line that is not blank and does not start with `#` holds one
-/// POLYGON or MULTIPOLYGON (`parse_wkt`; `POLYGON EMPTY` gives an empty region). Ids: the
-/// position among those lines, from 0 (`options.id` must be empty: a WKT line has no
-/// attributes, ErrorKind::usage otherwise). Errors name `source` and the line.
+/// POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION of them (`parse_wkt`; `POLYGON EMPTY` gives an empty
+/// region). Ids: the position among those lines, from 0 (`options.id` must be empty: a WKT line has
+/// no attributes, ErrorKind::usage otherwise). Errors name `source` and the line.
 [[nodiscard]] Result<Layer> parse_wkt_layer(std::string_view text, const std::string& source,
                                             const LayerOptions& options = {});
 
@@ -50,6 +50,15 @@ namespace contain::io {
 /// cannot be loaded (see has_gdal).
 [[nodiscard]] Result<Layer> read_gdal_layer(const std::string& source,
                                             const LayerOptions& options = {});
+
+/// Adds to `layer.warnings` the regions that OGC would not accept (see Layer::warnings), each
+/// named "SOURCE: shape K"; read_layer calls it on every layer it reads. Linear in the vertices
+/// for holes; parts whose boxes meet cost a point location each.
+void check_layer(Layer& layer, const std::string& source);
+
+/// How messages name a layer's source: a path as given, a connection string with its password
+/// hidden (every form: `password=...`, `postgresql://user:secret@host`).
+[[nodiscard]] std::string layer_source_name(const std::string& source);
 
 /// True when layers can be read through GDAL. GDAL is not linked into contain::io: it lives in
 /// the plugin libcontain_gdal.so, opened on first use (the first call of this function or of

@@ -3,12 +3,21 @@
 /// Reading a 2D region from a file whose extension names its format (the CLI's `--polygon`).
 
 #include <filesystem>
+#include <optional>
 
 #include "contain/core/result.h"
 #include "contain/io/wkt.h"
 #include "contain/shapes/polygon.h"
 
 namespace contain::io {
+
+/// The formats of a 2D region file.
+enum class RegionFormat { wkt, geojson };
+
+/// The one rule for a region's format from its file name, used by every reader and front end:
+/// `.wkt` is WKT, `.geojson` and `.json` are GeoJSON (case-insensitive); anything else is none
+/// (a mesh, a GDAL source, an unknown file).
+[[nodiscard]] std::optional<RegionFormat> region_format(const std::filesystem::path& path);
 
 /// Reads a region: `.wkt` with `read_wkt`, `.geojson` (and `.json`) with `read_geojson`; the
 /// extension is compared case-insensitively. Another extension is ErrorKind::unsupported naming

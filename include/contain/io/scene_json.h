@@ -36,12 +36,13 @@ struct SceneJsonOptions {
 /// Parses a scene. Per object: "mesh" (required: a path, relative to `base_dir` unless
 /// absolute; read once however many objects use it), "transform" (optional: 12 numbers in the
 /// contract's row order r00 r01 r02 t0 r10 ... t2, or three rows of 4; identity when absent),
-/// "id" (optional: a string, or a number as written; default the position from 0). Other
-/// members are ignored. Errors name the file and line: ErrorKind::parse for malformed JSON or
-/// a missing/mistyped member ("objects[2].transform: expected 12 numbers"),
-/// ErrorKind::invalid_value for NaN/Inf or out-of-range numbers; a mesh that cannot be read
-/// gives the mesh reader's error. Numbers are correctly rounded, so a transform reads as the
-/// same doubles as the CLI's --transform-a/--transform-b.
+/// "id" (optional: a string, or a number as written; default the position from 0). Any other
+/// member (of the root or of an object) is ErrorKind::invalid_value naming it and its object:
+/// a misspelt "transfrom" must not leave an object unmoved. Errors name the file and line:
+/// ErrorKind::parse for malformed JSON or a missing/mistyped member ("objects[2].transform:
+/// expected 12 numbers"), ErrorKind::invalid_value for NaN/Inf or out-of-range numbers; a mesh that
+/// cannot be read gives the mesh reader's error. Numbers are correctly rounded, so a transform
+/// reads as the same doubles as the CLI's --transform-a/--transform-b.
 [[nodiscard]] Result<Scene> parse_scene_json(std::string_view text,
                                              const SceneJsonOptions& options = {});
 

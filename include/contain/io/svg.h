@@ -63,7 +63,12 @@ struct MeshStyle {
 
 class SvgCanvas {
  public:
-  /// A canvas showing `world` (grown by 4% on each side) in a picture `width_px` wide.
+  /// A canvas showing `world` (grown by 4% on each side) in a picture `width_px` wide. Any
+  /// input gives a valid document with finite numbers: a width that is not at least 1 (NaN
+  /// too) is 400, one above 10^6 is 10^6; a world box that is empty or not finite is the unit
+  /// square; extents below 1e-200 (subnormal ones) are drawn 1e-200 wide; a box wider than the
+  /// largest double is drawn in exact quarter units. A View3 angle that is not finite is the
+  /// default view's.
   SvgCanvas(const Box2& world, double width_px);
 
   /// Draws rings as one path with the even-odd rule (holes show as holes).
@@ -85,9 +90,11 @@ class SvgCanvas {
   /// depth), each shaded by how squarely it faces a light above left of the viewer (either side
   /// lit alike). Returns the number drawn.
   std::size_t mesh(const Mesh& mesh, const View3& view, const MeshStyle& style = {});
-  /// Writes a caption at the top left.
+  /// Writes a caption at the top left, above the picture (squeezed to the picture's width
+  /// where it would run over).
   void title(std::string_view text);
-  /// Adds a legend entry (a swatch and its label) at the top right, in call order.
+  /// Adds a legend entry (a swatch and its label) at the top right, in call order; the legend's
+  /// box fits its longest label and stays inside the picture, which grows to hold it.
   void legend(std::string_view colour, std::string_view label);
 
   /// The whole SVG document.
@@ -96,7 +103,8 @@ class SvgCanvas {
  private:
   [[nodiscard]] Vec2 to_pixels(Vec2 world) const;
 
-  Box2 world_;
+  Box2 world_;  // in units of unit_
+  double unit_ = 1.0;
   double scale_ = 1.0;
   double width_ = 0.0;
   double height_ = 0.0;

@@ -21,7 +21,9 @@ struct WktNotes {
   std::vector<std::int64_t> unclosed_rings;
 };
 
-/// Parses one POLYGON or MULTIPOLYGON.
+/// Parses one POLYGON or MULTIPOLYGON, or a GEOMETRYCOLLECTION of them (nested up to 64 deep;
+/// its region is all its members' polygons, as for GeoJSON's GeometryCollection and WKB; a member
+/// of another type is ErrorKind::unsupported).
 ///
 /// Accepted: keywords in any case; `POLYGON EMPTY`, `MULTIPOLYGON EMPTY` and EMPTY members of a
 /// MULTIPOLYGON and EMPTY rings (all give nothing); the dimension tags Z, M and ZM, and untagged
