@@ -37,20 +37,12 @@ std::filesystem::path to_path(const py::handle& object) {
   return py::module_::import("os").attr("fspath")(object).cast<std::filesystem::path>();
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 bool mesh_extension(const std::filesystem::path& path) {
   return io::mesh_format_for_path(path).has_value();
 }
 
 bool region_extension(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".wkt" || ext == ".geojson" || ext == ".json";
+  return io::region_format(path).has_value();
 }
 
 // Open3D's tensor mesh: mesh.vertex["positions"], mesh.triangle["indices"] (core.Tensor).
