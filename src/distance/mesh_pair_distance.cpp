@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/bvh/placed_box.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/orient3d.h"
@@ -59,33 +60,6 @@ inline double box_box_lower_bound(const Box3& a, const Box3& b) {
   return ((dx * dx + dy * dy) + dz * dz) * (1 - 8 * kEps);
 }
 
-// B's node box placed by `tb`, from the local box: an interval product per coordinate,
-// widened so that it holds every vertex of the box as tb.apply computes it. Both that and this
-// computation are sums of four terms (three products and t_i): each within gamma_4 < 4.01 eps
-// of s_i = sum_j |r_ij| max(|lo_j|, |hi_j|) + |t_i| from the exact value; the widening and s_i's
-// own rounding fit in 10 eps; 16 denorm_min cover underflowed products. O(1) per node instead
-// of refitting B's hierarchy to every pose: only the nodes the descent meets are placed.
-Box3 placed_box(const Box3& local, const Transform& tb) {
-  const double lo[3] = {local.min.x, local.min.y, local.min.z};
-  const double hi[3] = {local.max.x, local.max.y, local.max.z};
-  const double t[3] = {tb.t.x, tb.t.y, tb.t.z};
-  double mn[3], mx[3];
-  for (int i = 0; i < 3; ++i) {
-    double a = t[i], b = t[i], s = std::fabs(t[i]);
-    for (int j = 0; j < 3; ++j) {
-      const double r = tb.r[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-      const double p = r * lo[j], q = r * hi[j];
-      a += std::min(p, q);
-      b += std::max(p, q);
-      s += std::fabs(r) * std::max(std::fabs(lo[j]), std::fabs(hi[j]));
-    }
-    const double pad = 10 * kEps * s + 16 * std::numeric_limits<double>::denorm_min();
-    mn[i] = a - pad;
-    mx[i] = b + pad;
-  }
-  return {{mn[0], mn[1], mn[2]}, {mx[0], mx[1], mx[2]}};
-}
-
 Box3 triangle_box(const Triangle3& t) {
   Box3 box;
   box.expand(t.a);
@@ -130,19 +104,6 @@ class PlacedVertices {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t current_ = 0;
 };
-
-// A bound on every coordinate of B's vertices as placed by tb (Transform::apply), B's local
-// coordinates at most m in magnitude: |t_i| + sum_j |r_ij| m, within gamma_4 of its own
-// rounding and of the computed coordinates' error: times (1 + 16 eps).
-double placed_max_abs(const Transform& tb, double m) {
-  double out = 0;
-  const double t[3] = {tb.t.x, tb.t.y, tb.t.z};
-  for (std::size_t i = 0; i < 3; ++i)
-    out = std::max(
-        out, std::fabs(t[i]) +
-                 ((std::fabs(tb.r[i][0]) + std::fabs(tb.r[i][1])) + std::fabs(tb.r[i][2])) * m);
-  return out * (1 + 16 * kEps);
-}
 
 struct PairContender {
   std::int32_t a, b;
@@ -236,7 +197,8 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
   // B's vertices as placed: the doubles every decision is exact on.
   thread_local PlacedVertices wb;
   wb.reset(b_.vertices, tb);
-  const double slack = detail::triangle_slack(std::max(a_max_abs_, placed_max_abs(tb, b_max_abs_)));
+  const double slack =
+      detail::triangle_slack(std::max(a_max_abs_, bvh::placed_max_abs(tb, b_max_abs_)));
   // 1. Overlap first: a vertex of one inside the other solid makes the distance 0 whatever the
   // surfaces do (and settles nested solids, whose surfaces may be far apart, at once).
   if (a_solid_) {
@@ -261,7 +223,7 @@ PairDistance3 MeshPairDistance::query(const Transform& tb, double within_d,
       (void)bvh_b_.traverse(
           [&](const bvh::Node& node, std::int32_t index) {
             (void)index;
-            const Box3 w = placed_box(node.box, tb);
+            const Box3 w = bvh::placed_box(node.box, tb);
             return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
                    q.z <= w.max.z;
           },
