@@ -5,12 +5,12 @@
 #include <cfloat>
 #include <cmath>
 #include <optional>
-#include <queue>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "collide/placed_boxes.h"
+#include "contain/bvh/nearest_pairs.h"
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/ccd.h"
 
@@ -315,63 +315,50 @@ void MovingMeshPair::leaf_pair(const Side& side, std::int32_t ta, std::int32_t t
 MeshImpact MovingMeshPair::surfaces(const Side& side, MeshImpact best) const {
   const bvh::Bvh& bvh_b = side.motion != nullptr ? *side.bvh : side.sweep->bvh;
   if (bvh_a_.empty() || bvh_b.empty()) return best;
-  const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b.nodes();
-  // Contacts that round down to the best time or below happen before next(best).
-  double limit = 1.0;
-  const auto node_boxes_b = [&](std::int32_t n, Box3& b0, Box3& b1) {
-    side.boxes(nb[static_cast<std::size_t>(n)], static_cast<std::size_t>(n), b0, b1);
-  };
   // Best first: node pairs in the order of the earliest time their moving boxes can overlap,
   // so that the first contacts are found early and every pair that can only meet later than
-  // the best time so far is never opened.
-  struct Pending {
-    double entry;
-    std::int32_t a, b;
-    bool operator>(const Pending& o) const {
-      return entry != o.entry ? entry > o.entry : (a != o.a ? a > o.a : b > o.b);
+  // the best time so far is never opened. Contacts that round down to the best time or below
+  // happen before next(best) = `limit`.
+  struct Descent {
+    const MovingMeshPair& pair;
+    const Side& side;
+    const bvh::Bvh& bvh_b;
+    MeshImpact& best;
+    double limit = 1.0;
+    Tested tested;
+
+    void boxes_b(std::int32_t n, Box3& b0, Box3& b1) const {
+      side.boxes(bvh_b.nodes()[static_cast<std::size_t>(n)], static_cast<std::size_t>(n), b0, b1);
     }
-  };
-  std::priority_queue<Pending, std::vector<Pending>, std::greater<>> queue;
-  Tested tested;
-  const auto push = [&](std::int32_t a, std::int32_t b) {
-    ++best.node_pairs;
-    Box3 b0, b1;
-    node_boxes_b(b, b0, b1);
-    const double t = entry_time(a_box0_[static_cast<std::size_t>(a)],
-                                a_box1_[static_cast<std::size_t>(a)], b0, b1, limit);
-    if (t <= limit) queue.push({t, a, b});
-  };
-  push(0, 0);
-  while (!queue.empty()) {
-    const Pending top = queue.top();
-    queue.pop();
-    if (top.entry > limit) break;
-    const bvh::Node& p = na[static_cast<std::size_t>(top.a)];
-    const bvh::Node& q = nb[static_cast<std::size_t>(top.b)];
-    if (!p.is_leaf() || !q.is_leaf()) {
+    double lower(std::int32_t a, std::int32_t b) {
+      ++best.node_pairs;
+      Box3 b0, b1;
+      boxes_b(b, b0, b1);
+      return entry_time(pair.a_box0_[static_cast<std::size_t>(a)],
+                        pair.a_box1_[static_cast<std::size_t>(a)], b0, b1, limit);
+    }
+    bool worth(const bvh::NodePair& e) const { return e.lower <= limit; }
+    bool split_a(std::int32_t a, std::int32_t b) const {
       Box3 q0, q1;
-      node_boxes_b(top.b, q0, q1);
-      const bool split_a =
-          q.is_leaf() ||
-          (!p.is_leaf() && bvh::surface_area(united(a_box0_[static_cast<std::size_t>(top.a)],
-                                                    a_box1_[static_cast<std::size_t>(top.a)])) >=
-                               bvh::surface_area(united(q0, q1)));
-      if (split_a) {
-        push(top.a + 1, top.b);
-        push(p.first, top.b);
-      } else {
-        push(top.a, top.b + 1);
-        push(top.a, q.first);
-      }
-      continue;
+      boxes_b(b, q0, q1);
+      return bvh::surface_area(united(pair.a_box0_[static_cast<std::size_t>(a)],
+                                      pair.a_box1_[static_cast<std::size_t>(a)])) >=
+             bvh::surface_area(united(q0, q1));
     }
-    for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
-      for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
-        leaf_pair(side, bvh_a_.items()[static_cast<std::size_t>(s)],
-                  bvh_b.items()[static_cast<std::size_t>(t)], limit, best, tested);
+    bvh::Visit leaves(std::int32_t a, std::int32_t b) {
+      const bvh::Node& p = pair.bvh_a_.nodes()[static_cast<std::size_t>(a)];
+      const bvh::Node& q = bvh_b.nodes()[static_cast<std::size_t>(b)];
+      for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
+        for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
+          pair.leaf_pair(side, pair.bvh_a_.items()[static_cast<std::size_t>(s)],
+                         bvh_b.items()[static_cast<std::size_t>(t)], limit, best, tested);
+        }
       }
+      return bvh::Visit::proceed;
     }
-  }
+  };
+  Descent descent{*this, side, bvh_b, best};
+  (void)bvh::nearest_pairs(bvh_a_, bvh_b, descent, bvh::PairOrder::best_first);
   return best;
 }
 
