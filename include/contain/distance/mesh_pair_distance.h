@@ -114,8 +114,20 @@ class MeshPairDistance {
   [[nodiscard]] bool b_is_solid() const { return b_solid_; }
 
  private:
+  // The stages of a query (src/distance/mesh_pair_distance.cpp): B placed by the pose, a vertex
+  // of one inside the other, the descent over node pairs, the exact closest contender.
   struct Volumes;  // oriented boxes of both hierarchies' nodes (src/distance/oriented_box.h)
-  [[nodiscard]] PairDistance3 query(const Transform& tb, double within_d, bool* within_out) const;
+  struct Placed;   // B's vertices and nodes as placed by one pose (thread-local, on first use)
+  struct Descent;  // the branch and bound over node pairs
+  struct Nested {  // a component's vertex strictly inside the other solid, if any
+    PairContact contact = PairContact::separate;
+    std::int32_t vertex = -1;
+    Vec3 point{};
+  };
+  struct Closest;  // the exact winner among the descent's contenders
+  [[nodiscard]] Placed& place(const Transform& tb) const;
+  [[nodiscard]] Nested nested(Placed& placed) const;
+  [[nodiscard]] Closest closest(Descent& descent) const;
 
   Mesh a_world_;
   Mesh b_;
