@@ -6,14 +6,10 @@
 
 #include "contain/bvh/nearest_pairs.h"
 #include "contain/bvh/placed_box.h"
-#include "contain/bvh/triangle_boxes.h"
+#include "contain/inside/placed_ray.h"
 #include "contain/predicates/closest_feature.h"
-#include "contain/predicates/orient3d.h"
-#include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
-#include "contain/shapes/mesh_components.h"
-#include "contain/shapes/mesh_validation.h"
 #include "distance/flat_answer.h"
 #include "distance/least_contender.h"
 #include "distance/oriented_box.h"
@@ -36,20 +32,6 @@ namespace {
 
 constexpr double kEps = 0x1p-53;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double max_abs(const Mesh& mesh) {
-  double m = 0.0;
-  for (const Vec3& v : mesh.vertices)
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return m;
-}
-
-Mesh placed_mesh(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
 
 Triangle3 triangle_of(const std::vector<Vec3>& v, const TriangleIndices& t) {
   return {v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
@@ -166,26 +148,15 @@ const char* to_string(PairContact contact) {
 
 MeshPairDistance::MeshPairDistance(const Mesh& a, const Mesh& b,
                                    const MeshPairDistanceOptions& options)
-    : a_world_(placed_mesh(a, options.transform_a)), b_(b) {
-  bvh_a_ = bvh::Bvh(bvh::triangle_boxes(a_world_), options.bvh);
-  bvh_b_ = bvh::Bvh(bvh::triangle_boxes(b_), options.bvh);
-  if (!a_world_.triangles.empty()) {
-    index_a_ = inside::MeshIndex(a_world_, options.index);
-    a_solid_ = index_a_.regime() == inside::MeshRegime::closed_exact;
-  }
-  b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
-  a_components_ = component_vertices(a_world_);
-  b_components_ = component_vertices(b_);
+    : pair_(a, b, options) {
   auto volumes = std::make_shared<Volumes>();
-  volumes->a = detail::oriented_boxes(bvh_a_, a_world_);
-  volumes->b = detail::oriented_boxes(bvh_b_, b_);
+  volumes->a = detail::oriented_boxes(pair_.a.bvh, pair_.a.mesh);
+  volumes->b = detail::oriented_boxes(pair_.b.bvh, pair_.b.mesh);
   volumes->extent_a = detail::oriented_extent(volumes->a);
   volumes->extent_b = detail::oriented_extent(volumes->b);
-  volumes->min_a = least_items(bvh_a_);
-  volumes->min_b = least_items(bvh_b_);
+  volumes->min_a = least_items(pair_.a.bvh);
+  volumes->min_b = least_items(pair_.b.bvh);
   volumes_ = std::move(volumes);
-  a_max_abs_ = max_abs(a_world_);
-  b_max_abs_ = max_abs(b_);
 }
 
 // B as placed by one pose, each piece computed on first use (a stamp per vertex and per node):
@@ -206,10 +177,10 @@ struct MeshPairDistance::Placed {
 
   void reset(const MeshPairDistance& pair, const Transform& pose) {
     tb = pose;
-    vertices.reset(pair.b_.vertices, pose);
+    vertices.reset(pair.pair_.b.mesh.vertices, pose);
     slack = detail::triangle_slack(
-        std::max(pair.a_max_abs_, bvh::placed_max_abs(pose, pair.b_max_abs_)));
-    const std::size_t nodes = pair.bvh_b_.nodes().size();
+        std::max(pair.pair_.a.max_abs, bvh::placed_max_abs(pose, pair.pair_.b.max_abs)));
+    const std::size_t nodes = pair.pair_.b.bvh.nodes().size();
     if (box_stamp.size() < nodes || ++stamp == 0) {
       box_stamp.assign(std::max(box_stamp.size(), nodes), 0);
       centre_stamp.assign(box_stamp.size(), 0);
@@ -274,10 +245,10 @@ struct MeshPairDistance::Descent {
       : pair(p),
         placed(w),
         stop_at_meeting(stop),
-        na(p.bvh_a_.nodes()),
-        nb(p.bvh_b_.nodes()),
-        ia(p.bvh_a_.items()),
-        ib(p.bvh_b_.items()),
+        na(p.pair_.a.bvh.nodes()),
+        nb(p.pair_.b.bvh.nodes()),
+        ia(p.pair_.a.bvh.items()),
+        ib(p.pair_.b.bvh.items()),
         mins_a(p.volumes_->min_a),
         mins_b(p.volumes_->min_b),
         oa(p.volumes_->a),
@@ -323,12 +294,12 @@ struct MeshPairDistance::Descent {
 bvh::Visit MeshPairDistance::Descent::leaves(std::int32_t a, std::int32_t b) {
   const bvh::Node& p = na[static_cast<std::size_t>(a)];
   const bvh::Node& q = nb[static_cast<std::size_t>(b)];
-  const Mesh& mesh_a = pair.a_world_;
-  const Mesh& mesh_b = pair.b_;
+  const Mesh& mesh_a = pair.pair_.a.mesh;
+  const Mesh& mesh_b = pair.pair_.b.mesh;
   Triangle3 tris_b[kMaxLeaf];
   Box3 boxes_b[kMaxLeaf];
   const std::int32_t count_b = std::min<std::int32_t>(q.count, kMaxLeaf);
-  const Box3& leaf_box_b = placed.leaf_box_of(mesh_b, pair.bvh_b_, b);
+  const Box3& leaf_box_b = placed.leaf_box_of(mesh_b, pair.pair_.b.bvh, b);
   for (std::int32_t t = 0; t < count_b; ++t) {
     const std::int32_t tbi = ib[static_cast<std::size_t>(q.first + t)];
     tris_b[t] = placed.vertices.triangle(mesh_b.triangles[static_cast<std::size_t>(tbi)]);
@@ -403,35 +374,22 @@ MeshPairDistance::Placed& MeshPairDistance::place(const Transform& tb) const {
 // whatever the surfaces do (and settles nested solids, whose surfaces may be far apart, at
 // once). A vertex on the other's surface is a touching pair, which the descent finds.
 MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
-  if (a_solid_) {
-    for (const std::int32_t v : b_components_) {
-      if (index_a_.locate(placed.vertices[v]) == Location::inside)
+  if (pair_.a.solid) {
+    for (const std::int32_t v : pair_.b.components) {
+      if (pair_.index_a.locate(placed.vertices[v]) == Location::inside)
         return {PairContact::vertex_of_b_in_a, v, placed.vertices[v]};
     }
   }
-  if (b_solid_) {
-    for (const std::int32_t v : a_components_) {
-      const Vec3 q = a_world_.vertices[static_cast<std::size_t>(v)];
-      bool odd = false;
-      bool on_surface = false;
-      // The perturbed ray along +x against B as placed, culled by B's placed boxes.
-      (void)bvh_b_.traverse(
-          [&](const bvh::Node& node, std::int32_t) {
-            const Box3 w = bvh::placed_box(node.box, placed.tb);
-            return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
-                   q.z <= w.max.z;
-          },
+  if (pair_.b.solid) {
+    const Mesh& b = pair_.b.mesh;
+    for (const std::int32_t v : pair_.a.components) {
+      const Vec3 q = pair_.a.mesh.vertices[static_cast<std::size_t>(v)];
+      const Location location = inside::locate_by_ray(
+          pair_.b.bvh, q, [&](const Box3& local) { return bvh::placed_box(local, placed.tb); },
           [&](std::int32_t t) {
-            const Triangle3 tri =
-                placed.vertices.triangle(b_.triangles[static_cast<std::size_t>(t)]);
-            if (predicates::closest_feature(q, tri) == predicates::TriangleFeature::face &&
-                predicates::orient3d(tri.a, tri.b, tri.c, q) == Sign::zero) {
-              on_surface = true;
-            }
-            if (predicates::perturbed_ray_crosses(tri.a, tri.b, tri.c, q)) odd = !odd;
-            return bvh::Visit::proceed;
+            return placed.vertices.triangle(b.triangles[static_cast<std::size_t>(t)]);
           });
-      if (odd && !on_surface) return {PairContact::vertex_of_a_in_b, v, q};
+      if (location == Location::inside) return {PairContact::vertex_of_a_in_b, v, q};
     }
   }
   return {};
@@ -448,15 +406,15 @@ MeshPairDistance::Closest MeshPairDistance::closest(Descent& descent) const {
   const detail::LeastContender<predicates::FlatPair3> winner =
       detail::least_contender(contenders, descent.best, [&](std::int32_t a, std::int32_t b) {
         return predicates::closest_flats(
-            triangle_of(a_world_.vertices, a_world_.triangles[static_cast<std::size_t>(a)]),
-            descent.placed.vertices.triangle(b_.triangles[static_cast<std::size_t>(b)]));
+            triangle_of(pair_.a.mesh.vertices, pair_.a.mesh.triangles[static_cast<std::size_t>(a)]),
+            descent.placed.vertices.triangle(pair_.b.mesh.triangles[static_cast<std::size_t>(b)]));
       });
   return {winner.pair, winner.a, winner.b, contenders.size()};
 }
 
 PairDistance3 MeshPairDistance::distance(const Transform& transform_b) const {
   PairDistance3 out;
-  if (bvh_a_.empty() || bvh_b_.empty()) {
+  if (pair_.a.bvh.empty() || pair_.b.bvh.empty()) {
     out.distance = kInf;
     return out;
   }
@@ -469,7 +427,7 @@ PairDistance3 MeshPairDistance::distance(const Transform& transform_b) const {
     return out;
   }
   Descent descent(*this, placed, false);
-  out.node_pairs = bvh::nearest_pairs(bvh_a_, bvh_b_, descent).nodes;
+  out.node_pairs = bvh::nearest_pairs(pair_.a.bvh, pair_.b.bvh, descent).nodes;
   const Closest c = closest(descent);
   out.contenders = c.contenders;
   out.triangle_a = c.a;
@@ -483,11 +441,11 @@ PairDistance3 MeshPairDistance::distance(const Transform& transform_b) const {
 }
 
 bool MeshPairDistance::within(const Transform& transform_b, double d) const {
-  if (!(d >= 0) || bvh_a_.empty() || bvh_b_.empty()) return false;
+  if (!(d >= 0) || pair_.a.bvh.empty() || pair_.b.bvh.empty()) return false;
   Placed& placed = place(transform_b);
   if (nested(placed).vertex >= 0) return true;
   Descent descent(*this, placed, true);
-  if (bvh::nearest_pairs(bvh_a_, bvh_b_, descent).stopped) return true;  // they meet
+  if (bvh::nearest_pairs(pair_.a.bvh, pair_.b.bvh, descent).stopped) return true;  // they meet
   const Closest c = closest(descent);
   return predicates::flats_meet(c.pair) ||
          predicates::compare_squared_distance(c.pair, d) != Sign::positive;
