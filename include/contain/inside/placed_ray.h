@@ -17,9 +17,16 @@
 
 namespace contain::inside {
 
-/// Does the closed triangle `t` hold `q`? Exact: the closest feature of t to q, then q on its
-/// plane (a face; the closed triangle) or on its line or point (a degenerate triangle).
+/// Does the closed triangle `t` hold `q`? Exact: q in the triangle's box (comparisons: most
+/// triangles a ray meets end here), then the closest feature of t to q, then q on its plane (a
+/// face; the closed triangle) or on its line or point (a degenerate triangle).
 [[nodiscard]] inline bool on_triangle(Vec3 q, const Triangle3& t) {
+  const auto between = [](double x, double a, double b, double c) {
+    return !(x < a && x < b && x < c) && !(x > a && x > b && x > c);
+  };
+  if (!between(q.x, t.a.x, t.b.x, t.c.x) || !between(q.y, t.a.y, t.b.y, t.c.y) ||
+      !between(q.z, t.a.z, t.b.z, t.c.z))
+    return false;
   const predicates::TriangleFeature f = predicates::closest_feature(q, t);
   if (f == predicates::TriangleFeature::face)
     return predicates::orient3d(t.a, t.b, t.c, q) == Sign::zero;
