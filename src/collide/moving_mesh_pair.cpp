@@ -11,18 +11,10 @@
 
 #include "collide/placed_boxes.h"
 #include "contain/bvh/nearest_pairs.h"
-#include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/ccd.h"
 
 namespace contain::collide {
 namespace {
-
-double max_abs(std::span<const Vec3> points) {
-  double m = 0.0;
-  for (const Vec3& v : points)
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return m;
-}
 
 Box3 box_of(std::initializer_list<Vec3> points) {
   Box3 b;
@@ -198,7 +190,6 @@ struct MovingMeshPair::Side {
 
 MovingMeshPair::MovingMeshPair(const Mesh& a, const Mesh& b, const MovingMeshPairOptions& options)
     : a_(a),
-      b_(b),
       discrete_a_(a, b,
                   {.transform_a = options.a_at1.empty() ? options.motion_a.from : Transform{},
                    .bvh = options.bvh}),
@@ -215,10 +206,8 @@ MovingMeshPair::MovingMeshPair(const Mesh& a, const Mesh& b, const MovingMeshPai
   bvh_a_ = std::move(sweep.bvh);
   a_box0_ = std::move(sweep.box0);
   a_box1_ = std::move(sweep.box1);
-  bvh_b_ = bvh::Bvh(bvh::triangle_boxes(b_), options.bvh);
   a_edges_ = edge_ids(a_);
-  b_edges_ = edge_ids(b_);
-  b_max_abs_ = max_abs(b_.vertices);
+  b_edges_ = edge_ids(b);
 }
 
 // Triangle ta of A against triangle tb of B: their 6 vertex-face and 9 edge-edge primitives,
@@ -373,17 +362,17 @@ MeshImpact MovingMeshPair::first_contact(const Motion& motion_b) const {
     return result;
   }
   Side side;
-  side.mesh = &b_;
+  side.mesh = &b().mesh;
   side.edges = b_edges_;
   side.motion = &motion_b;
-  side.place0.emplace(motion_b.from, b_max_abs_);
-  side.place1.emplace(motion_b.to, b_max_abs_);
-  side.bvh = &bvh_b_;
+  side.place0.emplace(motion_b.from, b().max_abs);
+  side.place1.emplace(motion_b.to, b().max_abs);
+  side.bvh = &b().bvh;
   return surfaces(side, result);
 }
 
 MeshImpact MovingMeshPair::first_contact(std::span<const Vec3> b_at1) const {
-  assert(b_at1.size() == b_.vertices.size());
+  assert(b_at1.size() == b().mesh.vertices.size());
   MeshImpact result;
   result.initial = discrete_a_.collide(Transform{});
   result.node_pairs = result.initial.node_pairs;
@@ -393,11 +382,11 @@ MeshImpact MovingMeshPair::first_contact(std::span<const Vec3> b_at1) const {
     result.witness = MeshImpactWitness::initial;
     return result;
   }
-  const WorldSweep sweep = world_sweep(b_, b_.vertices, b_at1, bvh_options_);
+  const WorldSweep sweep = world_sweep(b().mesh, b().mesh.vertices, b_at1, bvh_options_);
   Side side;
-  side.mesh = &b_;
+  side.mesh = &b().mesh;
   side.edges = b_edges_;
-  side.at0 = b_.vertices;
+  side.at0 = b().mesh.vertices;
   side.at1 = b_at1;
   side.sweep = &sweep;
   return surfaces(side, result);

@@ -62,6 +62,9 @@ class MeshPair {
   [[nodiscard]] bool b_is_solid() const { return pair_.b.solid; }
   /// A's vertices in world coordinates (transform_a applied).
   [[nodiscard]] std::span<const Vec3> a_vertices() const { return pair_.a.mesh.vertices; }
+  /// The prepared pair: A in world coordinates with its index, B in its own frame, each with
+  /// its hierarchy, components and solidity (shared with `MovingMeshPair`).
+  [[nodiscard]] const inside::PlacedMeshPair& prepared() const { return pair_; }
 
  private:
   inside::PlacedMeshPair pair_;  // A in world coordinates with its index, B in its own frame
