@@ -1,56 +1,19 @@
 #include "contain/collide/mesh_mesh.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "collide/mesh_sides.h"
-#include "contain/bvh/triangle_boxes.h"
-#include "contain/shapes/mesh_components.h"
-#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
-namespace {
-
-double max_abs(const Mesh& mesh) {
-  double m = 0.0;
-  for (const Vec3& v : mesh.vertices) {
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  }
-  return m;
-}
-
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
-}  // namespace
-
 MeshPair::MeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options)
-    : a_world_(placed(a, options.transform_a)), b_(b) {
-  const std::vector<Box3> boxes_a = bvh::triangle_boxes(a_world_);
-  const std::vector<Box3> boxes_b = bvh::triangle_boxes(b_);
-  bvh_a_ = bvh::Bvh(boxes_a, options.bvh);
-  bvh_b_ = bvh::Bvh(boxes_b, options.bvh);
-  if (!a_world_.triangles.empty()) {
-    index_a_ = inside::MeshIndex(a_world_, options.index);
-    a_solid_ = index_a_.regime() == inside::MeshRegime::closed_exact;
-  }
-  b_solid_ = !b_.triangles.empty() && validate_mesh(b_).closed();
-  a_components_ = component_vertices(a_world_);
-  b_components_ = component_vertices(b_);
-  b_max_abs_ = max_abs(b_);
-}
+    : pair_(a, b, options) {}
 
 Contact MeshPair::collide(const Transform& tb) const {
-  const detail::Side a{a_world_, bvh_a_, a_components_, a_solid_};
-  const detail::Side b{b_, bvh_b_, b_components_, b_solid_};
-  const detail::Placed pb{detail::PlacedBoxes(tb, b_max_abs_)};
+  const detail::Placed pb{detail::PlacedBoxes(tb, pair_.b.max_abs)};
   return detail::collide_sides(
-      a, detail::InWorld{}, b, pb, [&](const Box3& x, const Box3& y) { return x.overlaps(pb(y)); },
-      [&](Vec3 p) { return index_a_.locate(p) != Location::outside; });
+      pair_.a, detail::InWorld{}, pair_.b, pb,
+      [&](const Box3& x, const Box3& y) { return x.overlaps(pb(y)); },
+      [&](Vec3 p) { return pair_.index_a.locate(p) == Location::inside; });
 }
 
 void MeshPair::collide(std::span<const Transform> poses, std::span<Contact> out,

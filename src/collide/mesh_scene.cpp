@@ -2,39 +2,29 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <thread>
 
 #include "collide/mesh_sides.h"
 #include "collide/placed_boxes.h"
 #include "collide/separating_axes.h"
-#include "contain/bvh/triangle_boxes.h"
 #include "contain/collide/pair_search.h"
-#include "contain/shapes/mesh_components.h"
-#include "contain/shapes/mesh_validation.h"
 
 namespace contain::collide {
 
 MeshScene::MeshScene(std::span<const Mesh> meshes, std::span<const inside::SceneObject> objects,
                      const MeshSceneOptions& options)
-    : meshes_(meshes.begin(), meshes.end()), objects_(objects.begin(), objects.end()) {
+    : objects_(objects.begin(), objects.end()) {
   // Only the meshes some object places are prepared.
-  std::vector<char> used(meshes_.size(), 0);
+  std::vector<char> used(meshes.size(), 0);
   for (const inside::SceneObject& o : objects_) {
-    if (o.mesh >= 0 && static_cast<std::size_t>(o.mesh) < meshes_.size()) {
+    if (o.mesh >= 0 && static_cast<std::size_t>(o.mesh) < meshes.size()) {
       used[static_cast<std::size_t>(o.mesh)] = 1;
     }
   }
-  models_.resize(meshes_.size());
-  for (std::size_t m = 0; m < meshes_.size(); ++m) {
-    if (!used[m] || meshes_[m].triangles.empty()) continue;
-    Model& model = models_[m];
-    model.bvh = bvh::Bvh(bvh::triangle_boxes(meshes_[m]), options.bvh);
-    model.components = component_vertices(meshes_[m]);
-    model.solid = validate_mesh(meshes_[m]).closed();
-    for (const Vec3& v : meshes_[m].vertices) {
-      model.max_abs = std::max({model.max_abs, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    }
+  models_.resize(meshes.size());
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    if (used[m] && !meshes[m].triangles.empty())
+      models_[m] = inside::PlacedMesh(meshes[m], options.bvh);
   }
   // World boxes for the broad phase: the union of the placed boxes of the nodes a few levels
   // down each hierarchy (at most 2^kLevels of them), which hold every placed triangle. Placing
@@ -44,8 +34,8 @@ MeshScene::MeshScene(std::span<const Mesh> meshes, std::span<const inside::Scene
   boxes_.resize(objects_.size());
   for (std::size_t k = 0; k < objects_.size(); ++k) {
     const inside::SceneObject& o = objects_[k];
-    if (o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= meshes_.size()) continue;
-    const Model& model = models_[static_cast<std::size_t>(o.mesh)];
+    if (o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= models_.size()) continue;
+    const inside::PlacedMesh& model = models_[static_cast<std::size_t>(o.mesh)];
     if (model.bvh.empty()) continue;
     const detail::PlacedBoxes place(o.transform, model.max_abs);
     const std::span<const bvh::Node> nodes = model.bvh.nodes();
@@ -79,14 +69,14 @@ Contact MeshScene::collide(std::size_t i, std::size_t j) const {
   const inside::SceneObject& oj = objects_[j];
   if (boxes_[i].empty() || boxes_[j].empty()) return {};
   const auto mi = static_cast<std::size_t>(oi.mesh), mj = static_cast<std::size_t>(oj.mesh);
-  const detail::Side a{meshes_[mi], models_[mi].bvh, models_[mi].components, models_[mi].solid};
-  const detail::Side b{meshes_[mj], models_[mj].bvh, models_[mj].components, models_[mj].solid};
+  const inside::PlacedMesh& a = models_[mi];
+  const inside::PlacedMesh& b = models_[mj];
   const detail::Placed pa{detail::PlacedBoxes(oi.transform, models_[mi].max_abs)};
   const detail::Placed pb{detail::PlacedBoxes(oj.transform, models_[mj].max_abs)};
   const detail::SeparatingAxes axes(pa.boxes, pb.boxes);
   return detail::collide_sides(
       a, pa, b, pb, [&](const Box3& x, const Box3& y) { return axes.may_meet(x, y); },
-      [&](Vec3 p) { return detail::odd_crossings(a, pa, p); });
+      [&](Vec3 p) { return detail::strictly_inside(a, pa, p); });
 }
 
 std::vector<ScenePair> MeshScene::pairs(const BatchOptions& options) const {

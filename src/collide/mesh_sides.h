@@ -12,7 +12,8 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/collide/tri_tri.h"
-#include "contain/predicates/perturbed_ray.h"
+#include "contain/inside/placed_mesh.h"
+#include "contain/inside/placed_ray.h"
 #include "contain/shapes/mesh.h"
 
 namespace contain::collide::detail {
@@ -30,35 +31,17 @@ struct Placed {
   [[nodiscard]] Vec3 apply(Vec3 v) const { return boxes.transform().apply(v); }
 };
 
-// One side of a test: the mesh in its frame, its hierarchy (built on those coordinates), one
-// vertex per connected component, and whether it bounds a solid (closed).
-struct Side {
-  const Mesh& mesh;
-  const bvh::Bvh& bvh;
-  std::span<const std::int32_t> components;
-  bool solid = false;
-};
-
-// Exact parity of the perturbed +x ray from q (a world point on no triangle of s) against s's
-// world triangles: boxes that the ray cannot meet cull the hierarchy.
+// Is the world point q strictly inside the solid s placed by `place`? The one nesting test of
+// the pair queries (inside::locate_by_ray: exact perturbed ray parity, a point on the surface
+// is not inside).
 template <class Place>
-bool odd_crossings(const Side& s, const Place& place, Vec3 q) {
-  bool odd = false;
-  (void)s.bvh.traverse(
-      [&](const bvh::Node& node, std::int32_t) {
-        const Box3 w = place(node.box);
-        return w.max.x >= q.x && w.min.y <= q.y && q.y <= w.max.y && w.min.z <= q.z &&
-               q.z <= w.max.z;
-      },
-      [&](std::int32_t t) {
-        const TriangleIndices& tri = s.mesh.triangles[static_cast<std::size_t>(t)];
-        const Vec3 p0 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[0])]);
-        const Vec3 p1 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[1])]);
-        const Vec3 p2 = place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[2])]);
-        if (predicates::perturbed_ray_crosses(p0, p1, p2, q)) odd = !odd;
-        return bvh::Visit::proceed;
-      });
-  return odd;
+bool strictly_inside(const inside::PlacedMesh& s, const Place& place, Vec3 q) {
+  return inside::locate_by_ray(s.bvh, q, place, [&](std::int32_t t) {
+           const TriangleIndices& tri = s.mesh.triangles[static_cast<std::size_t>(t)];
+           return Triangle3{place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[0])]),
+                            place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[1])]),
+                            place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[2])])};
+         }) == Location::inside;
 }
 
 // Does A placed by pa meet B placed by pb? Closed solids, surfaces where not closed (see
@@ -66,8 +49,8 @@ bool odd_crossings(const Side& s, const Place& place, Vec3 q) {
 // node boxes are apart (conservative). `b_vertex_in_a(p)` decides whether the world point p, on
 // no triangle of A, lies in the solid A (MeshPair asks A's MeshIndex; a scene casts the ray).
 template <class PlaceA, class PlaceB, class NodesMayMeet, class InA>
-Contact collide_sides(const Side& a, const PlaceA& pa, const Side& b, const PlaceB& pb,
-                      NodesMayMeet&& nodes_may_meet, InA&& b_vertex_in_a) {
+Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const inside::PlacedMesh& b,
+                      const PlaceB& pb, NodesMayMeet&& nodes_may_meet, InA&& b_vertex_in_a) {
   Contact contact;
   if (a.bvh.empty() || b.bvh.empty()) return contact;
   const std::vector<Vec3>& va = a.mesh.vertices;
@@ -106,7 +89,7 @@ Contact collide_sides(const Side& a, const PlaceA& pa, const Side& b, const Plac
       const Vec3 q = pa.apply(va[static_cast<std::size_t>(v)]);
       if (!b_world.contains(q)) continue;
       ++contact.exact_tests;
-      if (odd_crossings(b, pb, q)) {
+      if (strictly_inside(b, pb, q)) {
         contact.intersect = true;
         contact.witness = WitnessKind::vertex_of_a_in_b;
         contact.vertex = v;

@@ -5,24 +5,16 @@
 #include <cfloat>
 #include <cmath>
 #include <optional>
-#include <queue>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "collide/placed_boxes.h"
-#include "contain/bvh/triangle_boxes.h"
+#include "contain/bvh/nearest_pairs.h"
 #include "contain/collide/ccd.h"
 
 namespace contain::collide {
 namespace {
-
-double max_abs(std::span<const Vec3> points) {
-  double m = 0.0;
-  for (const Vec3& v : points)
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return m;
-}
 
 Box3 box_of(std::initializer_list<Vec3> points) {
   Box3 b;
@@ -198,7 +190,6 @@ struct MovingMeshPair::Side {
 
 MovingMeshPair::MovingMeshPair(const Mesh& a, const Mesh& b, const MovingMeshPairOptions& options)
     : a_(a),
-      b_(b),
       discrete_a_(a, b,
                   {.transform_a = options.a_at1.empty() ? options.motion_a.from : Transform{},
                    .bvh = options.bvh}),
@@ -215,10 +206,8 @@ MovingMeshPair::MovingMeshPair(const Mesh& a, const Mesh& b, const MovingMeshPai
   bvh_a_ = std::move(sweep.bvh);
   a_box0_ = std::move(sweep.box0);
   a_box1_ = std::move(sweep.box1);
-  bvh_b_ = bvh::Bvh(bvh::triangle_boxes(b_), options.bvh);
   a_edges_ = edge_ids(a_);
-  b_edges_ = edge_ids(b_);
-  b_max_abs_ = max_abs(b_.vertices);
+  b_edges_ = edge_ids(b);
 }
 
 // Triangle ta of A against triangle tb of B: their 6 vertex-face and 9 edge-edge primitives,
@@ -315,63 +304,50 @@ void MovingMeshPair::leaf_pair(const Side& side, std::int32_t ta, std::int32_t t
 MeshImpact MovingMeshPair::surfaces(const Side& side, MeshImpact best) const {
   const bvh::Bvh& bvh_b = side.motion != nullptr ? *side.bvh : side.sweep->bvh;
   if (bvh_a_.empty() || bvh_b.empty()) return best;
-  const std::span<const bvh::Node> na = bvh_a_.nodes(), nb = bvh_b.nodes();
-  // Contacts that round down to the best time or below happen before next(best).
-  double limit = 1.0;
-  const auto node_boxes_b = [&](std::int32_t n, Box3& b0, Box3& b1) {
-    side.boxes(nb[static_cast<std::size_t>(n)], static_cast<std::size_t>(n), b0, b1);
-  };
   // Best first: node pairs in the order of the earliest time their moving boxes can overlap,
   // so that the first contacts are found early and every pair that can only meet later than
-  // the best time so far is never opened.
-  struct Pending {
-    double entry;
-    std::int32_t a, b;
-    bool operator>(const Pending& o) const {
-      return entry != o.entry ? entry > o.entry : (a != o.a ? a > o.a : b > o.b);
+  // the best time so far is never opened. Contacts that round down to the best time or below
+  // happen before next(best) = `limit`.
+  struct Descent {
+    const MovingMeshPair& pair;
+    const Side& side;
+    const bvh::Bvh& bvh_b;
+    MeshImpact& best;
+    double limit = 1.0;
+    Tested tested;
+
+    void boxes_b(std::int32_t n, Box3& b0, Box3& b1) const {
+      side.boxes(bvh_b.nodes()[static_cast<std::size_t>(n)], static_cast<std::size_t>(n), b0, b1);
     }
-  };
-  std::priority_queue<Pending, std::vector<Pending>, std::greater<>> queue;
-  Tested tested;
-  const auto push = [&](std::int32_t a, std::int32_t b) {
-    ++best.node_pairs;
-    Box3 b0, b1;
-    node_boxes_b(b, b0, b1);
-    const double t = entry_time(a_box0_[static_cast<std::size_t>(a)],
-                                a_box1_[static_cast<std::size_t>(a)], b0, b1, limit);
-    if (t <= limit) queue.push({t, a, b});
-  };
-  push(0, 0);
-  while (!queue.empty()) {
-    const Pending top = queue.top();
-    queue.pop();
-    if (top.entry > limit) break;
-    const bvh::Node& p = na[static_cast<std::size_t>(top.a)];
-    const bvh::Node& q = nb[static_cast<std::size_t>(top.b)];
-    if (!p.is_leaf() || !q.is_leaf()) {
+    double lower(std::int32_t a, std::int32_t b) {
+      ++best.node_pairs;
+      Box3 b0, b1;
+      boxes_b(b, b0, b1);
+      return entry_time(pair.a_box0_[static_cast<std::size_t>(a)],
+                        pair.a_box1_[static_cast<std::size_t>(a)], b0, b1, limit);
+    }
+    bool worth(const bvh::NodePair& e) const { return e.lower <= limit; }
+    bool split_a(std::int32_t a, std::int32_t b) const {
       Box3 q0, q1;
-      node_boxes_b(top.b, q0, q1);
-      const bool split_a =
-          q.is_leaf() ||
-          (!p.is_leaf() && bvh::surface_area(united(a_box0_[static_cast<std::size_t>(top.a)],
-                                                    a_box1_[static_cast<std::size_t>(top.a)])) >=
-                               bvh::surface_area(united(q0, q1)));
-      if (split_a) {
-        push(top.a + 1, top.b);
-        push(p.first, top.b);
-      } else {
-        push(top.a, top.b + 1);
-        push(top.a, q.first);
-      }
-      continue;
+      boxes_b(b, q0, q1);
+      return bvh::surface_area(united(pair.a_box0_[static_cast<std::size_t>(a)],
+                                      pair.a_box1_[static_cast<std::size_t>(a)])) >=
+             bvh::surface_area(united(q0, q1));
     }
-    for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
-      for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
-        leaf_pair(side, bvh_a_.items()[static_cast<std::size_t>(s)],
-                  bvh_b.items()[static_cast<std::size_t>(t)], limit, best, tested);
+    bvh::Visit leaves(std::int32_t a, std::int32_t b) {
+      const bvh::Node& p = pair.bvh_a_.nodes()[static_cast<std::size_t>(a)];
+      const bvh::Node& q = bvh_b.nodes()[static_cast<std::size_t>(b)];
+      for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
+        for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
+          pair.leaf_pair(side, pair.bvh_a_.items()[static_cast<std::size_t>(s)],
+                         bvh_b.items()[static_cast<std::size_t>(t)], limit, best, tested);
+        }
       }
+      return bvh::Visit::proceed;
     }
-  }
+  };
+  Descent descent{*this, side, bvh_b, best};
+  (void)bvh::nearest_pairs(bvh_a_, bvh_b, descent, bvh::PairOrder::best_first);
   return best;
 }
 
@@ -386,17 +362,17 @@ MeshImpact MovingMeshPair::first_contact(const Motion& motion_b) const {
     return result;
   }
   Side side;
-  side.mesh = &b_;
+  side.mesh = &b().mesh;
   side.edges = b_edges_;
   side.motion = &motion_b;
-  side.place0.emplace(motion_b.from, b_max_abs_);
-  side.place1.emplace(motion_b.to, b_max_abs_);
-  side.bvh = &bvh_b_;
+  side.place0.emplace(motion_b.from, b().max_abs);
+  side.place1.emplace(motion_b.to, b().max_abs);
+  side.bvh = &b().bvh;
   return surfaces(side, result);
 }
 
 MeshImpact MovingMeshPair::first_contact(std::span<const Vec3> b_at1) const {
-  assert(b_at1.size() == b_.vertices.size());
+  assert(b_at1.size() == b().mesh.vertices.size());
   MeshImpact result;
   result.initial = discrete_a_.collide(Transform{});
   result.node_pairs = result.initial.node_pairs;
@@ -406,11 +382,11 @@ MeshImpact MovingMeshPair::first_contact(std::span<const Vec3> b_at1) const {
     result.witness = MeshImpactWitness::initial;
     return result;
   }
-  const WorldSweep sweep = world_sweep(b_, b_.vertices, b_at1, bvh_options_);
+  const WorldSweep sweep = world_sweep(b().mesh, b().mesh.vertices, b_at1, bvh_options_);
   Side side;
-  side.mesh = &b_;
+  side.mesh = &b().mesh;
   side.edges = b_edges_;
-  side.at0 = b_.vertices;
+  side.at0 = b().mesh.vertices;
   side.at1 = b_at1;
   side.sweep = &sweep;
   return surfaces(side, result);

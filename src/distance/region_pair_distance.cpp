@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
+#include "contain/bvh/nearest_pairs.h"
 #include "contain/inside/polygon_index.h"
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
 
@@ -67,68 +69,49 @@ struct Found {
 Found closest_edges(const Edges& a, const Edges& b) {
   Found f;
   if (a.tree.empty() || b.tree.empty()) return f;
-  const double slack = detail::triangle_slack(std::max(a.max_abs, b.max_abs));
-  struct Candidate {
-    std::int32_t ea, eb;
-    double lo, hi;
-  };
-  std::vector<Candidate> candidates;
-  double best = kInf;
-  const auto na = a.tree.nodes(), nb = b.tree.nodes();
-  const auto ia = a.tree.items(), ib = b.tree.items();
-  struct Entry {
-    std::int32_t x, y;
-    double lb;
-  };
-  std::vector<Entry> stack{{0, 0, box_gap(na[0].box, nb[0].box)}};
-  while (!stack.empty()) {
-    const Entry e = stack.back();
-    stack.pop_back();
-    if (e.lb > best) continue;
-    const bvh::Node& p = na[static_cast<std::size_t>(e.x)];
-    const bvh::Node& q = nb[static_cast<std::size_t>(e.y)];
-    if (p.is_leaf() && q.is_leaf()) {
+  // The descent: node pairs bounded by their boxes' gap, leaf pairs by the edges' own bounds.
+  struct Descent {
+    const Edges& a;
+    const Edges& b;
+    double slack;
+    double best = kInf;
+    std::vector<detail::PairContender> candidates;
+
+    double lower(std::int32_t x, std::int32_t y) const {
+      return box_gap(a.tree.nodes()[static_cast<std::size_t>(x)].box,
+                     b.tree.nodes()[static_cast<std::size_t>(y)].box);
+    }
+    bool worth(const bvh::NodePair& e) const { return !(e.lower > best); }
+    bool split_a(std::int32_t x, std::int32_t y) const {
+      return bvh::surface_area(a.tree.nodes()[static_cast<std::size_t>(x)].box) >=
+             bvh::surface_area(b.tree.nodes()[static_cast<std::size_t>(y)].box);
+    }
+    bvh::Visit leaves(std::int32_t x, std::int32_t y) {
+      const bvh::Node& p = a.tree.nodes()[static_cast<std::size_t>(x)];
+      const bvh::Node& q = b.tree.nodes()[static_cast<std::size_t>(y)];
       for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
         for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
-          const std::int32_t x = ia[static_cast<std::size_t>(s)],
-                             y = ib[static_cast<std::size_t>(t)];
+          const std::int32_t ea = a.tree.items()[static_cast<std::size_t>(s)];
+          const std::int32_t eb = b.tree.items()[static_cast<std::size_t>(t)];
           double lo = 0, hi = 0;
-          detail::segment_pair_bounds(a.segments[static_cast<std::size_t>(x)],
-                                      b.segments[static_cast<std::size_t>(y)], slack, lo, hi);
+          detail::segment_pair_bounds(a.segments[static_cast<std::size_t>(ea)],
+                                      b.segments[static_cast<std::size_t>(eb)], slack, lo, hi);
           if (lo > best) continue;
-          candidates.push_back({x, y, lo, hi});
+          candidates.push_back({ea, eb, lo, hi});
           best = std::min(best, hi);
         }
       }
-      continue;
+      return bvh::Visit::proceed;
     }
-    const bool split_a =
-        q.is_leaf() || (!p.is_leaf() && bvh::surface_area(p.box) >= bvh::surface_area(q.box));
-    Entry c1 = e, c2 = e;
-    if (split_a) {
-      c1.x = e.x + 1;
-      c2.x = p.first;
-    } else {
-      c1.y = e.y + 1;
-      c2.y = q.first;
-    }
-    c1.lb = box_gap(na[static_cast<std::size_t>(c1.x)].box, nb[static_cast<std::size_t>(c1.y)].box);
-    c2.lb = box_gap(na[static_cast<std::size_t>(c2.x)].box, nb[static_cast<std::size_t>(c2.y)].box);
-    if (c1.lb > c2.lb) std::swap(c1, c2);
-    if (c2.lb <= best) stack.push_back(c2);
-    if (c1.lb <= best) stack.push_back(c1);
-  }
-  std::erase_if(candidates, [&](const Candidate& c) { return c.lo > best; });
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    return x.ea != y.ea ? x.ea < y.ea : x.eb < y.eb;
-  });
-  for (const Candidate& c : candidates) {
-    const predicates::FlatPair2 pair = predicates::closest_flats(
-        a.segments[static_cast<std::size_t>(c.ea)], b.segments[static_cast<std::size_t>(c.eb)]);
-    if (f.empty || predicates::compare_squared_distances(pair, f.pair) == Sign::negative) {
-      f = {false, pair, c.ea, c.eb};
-    }
-  }
+  };
+  Descent descent{a, b, detail::triangle_slack(std::max(a.max_abs, b.max_abs))};
+  (void)bvh::nearest_pairs(a.tree, b.tree, descent);
+  const auto winner = detail::least_contender(
+      descent.candidates, descent.best, [&](std::int32_t x, std::int32_t y) {
+        return predicates::closest_flats(a.segments[static_cast<std::size_t>(x)],
+                                         b.segments[static_cast<std::size_t>(y)]);
+      });
+  if (winner.found) f = {false, winner.pair, winner.a, winner.b};
   return f;
 }
 

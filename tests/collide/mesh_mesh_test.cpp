@@ -50,6 +50,22 @@ TEST(MeshPair, NestedSolidsIntersectWithAContainedVertexWitnessBothWays) {
   EXPECT_TRUE(MeshPair(big, small).collide(t).intersect);
 }
 
+// A's vertex exactly on B's surface (face, face diagonal, edge, corner), in both roles: the
+// surfaces share that point, so the witness is a triangle pair, never a contained vertex.
+TEST(MeshPair, VertexExactlyOnTheOtherSurfaceIntersectsWithATrianglePairWitness) {
+  const Mesh small = box_mesh({0, 0, 0}, {1, 1, 1}), big = box_mesh({0, 0, 0}, {4, 4, 4});
+  for (const Vec3 shift :
+       {Vec3{-4, -1, -3}, Vec3{-4, -2, -2}, Vec3{-4, -2, -4}, Vec3{-4, -4, -4}}) {
+    const Contact a_on_b = MeshPair(small, big).collide(translation(shift));
+    EXPECT_TRUE(a_on_b.intersect);
+    EXPECT_EQ(a_on_b.witness, WitnessKind::triangles);
+    const Contact b_on_a = MeshPair(big, small).collide(translation(-1.0 * shift));
+    EXPECT_TRUE(b_on_a.intersect);
+    EXPECT_EQ(b_on_a.witness, WitnessKind::triangles);
+  }
+  EXPECT_FALSE(MeshPair(small, big).collide(translation({-4 - 0x1p-40, -1, -3})).intersect);
+}
+
 TEST(MeshPair, CrossingBeamsWithNoVertexInsideEitherIntersect) {
   // A plus sign: every vertex of each beam lies outside the other; only edges pierce faces.
   const Mesh beam_x = box_mesh({-3, -0.5, -0.5}, {3, 0.5, 0.5});

@@ -215,6 +215,32 @@ TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   EXPECT_EQ(pair.distance(t).distance, 2.0);
 }
 
+// A's first vertex (the one the nesting stage tests for its component) exactly on B's surface:
+// inside a face, on the diagonal between two of its triangles, on an edge of the box, on a
+// corner. The ray parity from a point on the surface means nothing; the nesting test must call
+// it the boundary, so that the answer is the touching pair of the descent, not "nested".
+TEST(MeshPairDistance, VertexOfAExactlyOnBsFaceDiagonalEdgeOrCornerIsTouchingNotNested) {
+  const Mesh small = scenes::box_mesh({{0, 0, 0}, {1, 1, 1}});
+  const Mesh big = scenes::box_mesh({{0, 0, 0}, {4, 4, 4}});
+  const MeshPairDistance pair(small, big);
+  Transform t;
+  for (const Vec3 shift :
+       {Vec3{-4, -1, -3}, Vec3{-4, -2, -2}, Vec3{-4, -2, -4}, Vec3{-4, -4, -4}, Vec3{-4, -3, -1}}) {
+    t.t = shift;
+    const PairDistance3 d = pair.distance(t);
+    EXPECT_EQ(d.distance, 0.0);
+    EXPECT_EQ(d.contact, PairContact::touching) << shift.y << " " << shift.z;
+    EXPECT_GE(d.triangle_a, 0);
+    EXPECT_TRUE(pair.within(t, 0.0));
+  }
+  // Just off the face, outside: a gap; just inside: nested.
+  t.t = {-4 - 0x1p-40, -1, -3};
+  EXPECT_EQ(pair.distance(t).contact, PairContact::separate);
+  EXPECT_FALSE(pair.within(t, 0.0));
+  t.t = {-4 + 0x1p-40, -1, -3};
+  EXPECT_EQ(pair.distance(t).distance, 0.0);
+}
+
 // Far from the origin the placed boxes of B's hierarchy carry rounding of the size of the
 // gaps: rotated poses that bring a corner of B within 1e-9 .. 1e-13 of A's face (or onto it, as
 // computed) must still find the exact closest pair.

@@ -12,21 +12,16 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/core/parallel.h"
-#include "contain/inside/mesh_index.h"
+#include "contain/inside/placed_mesh.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/transform.h"
 
 namespace contain::collide {
 
-/// How a `MeshPair` is prepared.
-struct MeshPairOptions {
-  /// The fixed placement of A (world = transform_a.apply(local), evaluated once).
-  Transform transform_a{};
-  /// The hierarchies over the triangles of A and B.
-  bvh::BuildOptions bvh{};
-  /// The point-location index of A (vertices of B are located in it).
-  inside::MeshIndexOptions index{};
-};
+/// How a `MeshPair` is prepared: the fixed placement of A (`transform_a`, evaluated once), the
+/// hierarchies' build options (`bvh`) and A's point-location index (`index`, where vertices of
+/// B are located). The same options as `distance::MeshPairDistance`'s.
+using MeshPairOptions = inside::MeshPairOptions;
 
 /// Two meshes prepared for many collision queries, B placed by a transform per query.
 ///
@@ -63,22 +58,16 @@ class MeshPair {
                const BatchOptions& options = {}) const;
 
   /// True when A (resp. B) is closed, so a solid; false: a surface.
-  [[nodiscard]] bool a_is_solid() const { return a_solid_; }
-  [[nodiscard]] bool b_is_solid() const { return b_solid_; }
+  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid; }
+  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid; }
   /// A's vertices in world coordinates (transform_a applied).
-  [[nodiscard]] std::span<const Vec3> a_vertices() const { return a_world_.vertices; }
+  [[nodiscard]] std::span<const Vec3> a_vertices() const { return pair_.a.mesh.vertices; }
+  /// The prepared pair: A in world coordinates with its index, B in its own frame, each with
+  /// its hierarchy, components and solidity (shared with `MovingMeshPair`).
+  [[nodiscard]] const inside::PlacedMeshPair& prepared() const { return pair_; }
 
  private:
-  Mesh a_world_;
-  Mesh b_;
-  bool a_solid_ = false;
-  bool b_solid_ = false;
-  bvh::Bvh bvh_a_;
-  bvh::Bvh bvh_b_;
-  inside::MeshIndex index_a_;
-  std::vector<std::int32_t> a_components_;  // one vertex of each connected component
-  std::vector<std::int32_t> b_components_;
-  double b_max_abs_ = 0.0;  // largest |coordinate| of B's vertices, for the rounding bound
+  inside::PlacedMeshPair pair_;  // A in world coordinates with its index, B in its own frame
 };
 
 /// One query: does `a` placed by `transform_a` meet `b` placed by `transform_b`? Exactly

@@ -12,6 +12,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/collide/contact.h"
 #include "contain/core/parallel.h"
+#include "contain/inside/placed_mesh.h"
 #include "contain/inside/solid_scene.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
@@ -80,14 +81,8 @@ class MeshScene {
   [[nodiscard]] std::vector<std::pair<std::int32_t, std::int32_t>> candidates() const;
 
  private:
-  struct Model {  // one distinct mesh, in its own frame
-    bvh::Bvh bvh;
-    std::vector<std::int32_t> components;
-    bool solid = false;
-    double max_abs = 0.0;
-  };
-  std::vector<Mesh> meshes_;
-  std::vector<Model> models_;
+  // One per distinct mesh, in its own frame (empty where no object places the mesh).
+  std::vector<inside::PlacedMesh> models_;
   std::vector<inside::SceneObject> objects_;
   std::vector<Box3> boxes_;
 };

@@ -127,7 +127,7 @@ class MovingMeshPair {
   [[nodiscard]] bool b_is_solid() const { return discrete_a_.b_is_solid(); }
   /// The number of vertices of A and B (the length of `a_at1` and `b_at1`).
   [[nodiscard]] std::size_t a_vertex_count() const { return a_.vertices.size(); }
-  [[nodiscard]] std::size_t b_vertex_count() const { return b_.vertices.size(); }
+  [[nodiscard]] std::size_t b_vertex_count() const { return b().mesh.vertices.size(); }
 
  private:
   struct Side;
@@ -136,14 +136,14 @@ class MovingMeshPair {
   void leaf_pair(const Side& b_side, std::int32_t ta, std::int32_t tb, double& limit,
                  MeshImpact& best, Tested& tested) const;
 
+  // B in its own frame with its hierarchy: the discrete test's, shared.
+  [[nodiscard]] const inside::PlacedMesh& b() const { return discrete_a_.prepared().b; }
+
   Mesh a_;
-  Mesh b_;
   std::vector<Vec3> a0_, a1_;          // A's vertices at t = 0 and t = 1, world
   bvh::Bvh bvh_a_;                     // over A's swept triangle boxes
   std::vector<Box3> a_box0_, a_box1_;  // per node of bvh_a_: boxes at t = 0 and t = 1
   std::vector<std::array<std::int32_t, 3>> a_edges_, b_edges_;  // per triangle: its edges' ids
-  bvh::Bvh bvh_b_;  // over B's triangle boxes in its own frame
-  double b_max_abs_ = 0.0;
   MeshPair discrete_a_;  // the test at t = 0: A placed at t = 0, B by the query's t = 0 pose
   bvh::BuildOptions bvh_options_;
 };

@@ -12,7 +12,7 @@
 
 #include "contain/bvh/bvh.h"
 #include "contain/core/parallel.h"
-#include "contain/inside/mesh_index.h"
+#include "contain/inside/placed_mesh.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/transform.h"
 #include "contain/values/vec.h"
@@ -51,15 +51,10 @@ struct PairDistance3 {
   std::size_t contenders = 0;  ///< triangle pairs passed to the exact stage
 };
 
-/// How a `MeshPairDistance` is prepared.
-struct MeshPairDistanceOptions {
-  /// The fixed placement of A (world = transform_a.apply(local), evaluated once).
-  Transform transform_a{};
-  /// The hierarchies over the triangles of A and B.
-  bvh::BuildOptions bvh{};
-  /// The point-location index of A (vertices of B are located in it for nesting).
-  inside::MeshIndexOptions index{};
-};
+/// How a `MeshPairDistance` is prepared: the fixed placement of A (`transform_a`, evaluated
+/// once), the hierarchies' build options (`bvh`) and A's point-location index (`index`, where
+/// vertices of B are located for nesting). The same options as `collide::MeshPair`'s.
+using MeshPairDistanceOptions = inside::MeshPairOptions;
 
 /// Two meshes prepared for distance queries, B placed by a transform per query.
 ///
@@ -110,25 +105,27 @@ class MeshPairDistance {
   void within(std::span<const Transform> poses, double d, std::span<std::uint8_t> out,
               const BatchOptions& options = {}) const;
 
-  [[nodiscard]] bool a_is_solid() const { return a_solid_; }
-  [[nodiscard]] bool b_is_solid() const { return b_solid_; }
+  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid; }
+  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid; }
 
  private:
+  // The stages of a query (src/distance/mesh_pair_distance.cpp): B placed by the pose, a vertex
+  // of one inside the other, the descent over node pairs, the exact closest contender.
   struct Volumes;  // oriented boxes of both hierarchies' nodes (src/distance/oriented_box.h)
-  [[nodiscard]] PairDistance3 query(const Transform& tb, double within_d, bool* within_out) const;
+  struct Placed;   // B's vertices and nodes as placed by one pose (thread-local, on first use)
+  struct Descent;  // the branch and bound over node pairs
+  struct Nested {  // a component's vertex strictly inside the other solid, if any
+    PairContact contact = PairContact::separate;
+    std::int32_t vertex = -1;
+    Vec3 point{};
+  };
+  struct Closest;  // the exact winner among the descent's contenders
+  [[nodiscard]] Placed& place(const Transform& tb) const;
+  [[nodiscard]] Nested nested(Placed& placed) const;
+  [[nodiscard]] Closest closest(Descent& descent) const;
 
-  Mesh a_world_;
-  Mesh b_;
-  bool a_solid_ = false;
-  bool b_solid_ = false;
-  bvh::Bvh bvh_a_;
-  bvh::Bvh bvh_b_;
-  inside::MeshIndex index_a_;
-  std::vector<std::int32_t> a_components_;  // one vertex of each connected component
-  std::vector<std::int32_t> b_components_;
+  inside::PlacedMeshPair pair_;  // A in world coordinates with its index, B in its own frame
   std::shared_ptr<const Volumes> volumes_;
-  double a_max_abs_ = 0.0;
-  double b_max_abs_ = 0.0;
 };
 
 /// One query: exactly `MeshPairDistance(a, b, {.transform_a = transform_a}).distance(transform_b)`.

@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// A mesh prepared as one side of pair queries (collision, distance, a scene's pair tests): its
+/// hierarchy, components and solidity, built once in its own frame and placed by a transform per
+/// query; and two meshes prepared together, A placed once with its point-location index.
+
+#include <cstdint>
+#include <vector>
+
+#include "contain/bvh/bvh.h"
+#include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/transform.h"
+
+namespace contain::inside {
+
+/// A mesh prepared for pair queries, in the frame of its vertices.
+struct PlacedMesh {
+  Mesh mesh;                             ///< the triangles, in this side's frame
+  bvh::Bvh bvh;                          ///< over the triangles' boxes, in the same frame
+  std::vector<std::int32_t> components;  ///< one vertex of each connected component
+  bool solid = false;                    ///< closed (every edge of two triangles): a solid
+  double max_abs = 0.0;  ///< the largest |coordinate|: the scale of placement bounds
+
+  /// An empty side: it meets nothing.
+  PlacedMesh() = default;
+  /// Prepares a validated `mesh`: its hierarchy, one vertex per connected component, whether it
+  /// is closed (validate_mesh), its largest coordinate. An empty mesh gets no hierarchy and is
+  /// no solid. O(n log n).
+  explicit PlacedMesh(Mesh mesh, const bvh::BuildOptions& options = {});
+};
+
+/// How a `PlacedMeshPair` is prepared (collide::MeshPairOptions and
+/// distance::MeshPairDistanceOptions are this).
+struct MeshPairOptions {
+  /// The fixed placement of A (world = transform_a.apply(local), evaluated once).
+  Transform transform_a{};
+  /// The hierarchies over the triangles of A and B.
+  bvh::BuildOptions bvh{};
+  /// The point-location index of A (vertices of B are located in it for nesting).
+  MeshIndexOptions index{};
+};
+
+/// Two meshes prepared for queries that place B by a transform each: A placed once in world
+/// coordinates (the doubles `transform_a.apply(v)`) with its exact point-location index, B in its
+/// own frame. The prepared pair of `collide::MeshPair` and `distance::MeshPairDistance`.
+struct PlacedMeshPair {
+  PlacedMesh a;       ///< A in world coordinates; solid where its index is `closed_exact`
+  PlacedMesh b;       ///< B in its own frame
+  MeshIndex index_a;  ///< A's point location (not built for an empty A)
+
+  PlacedMeshPair() = default;
+  /// Prepares validated meshes `a` and `b` (any topology). O(n log n).
+  PlacedMeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options = {});
+};
+
+}  // namespace contain::inside
