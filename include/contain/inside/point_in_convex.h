@@ -22,6 +22,15 @@ using shapes::ConvexPolyhedron;
 /// stops at the first outside.
 [[nodiscard]] Location point_in_convex(const ConvexPolyhedron& polyhedron, Vec3 p);
 
+/// Where `p` lies in the solid bounded by `polyhedron`'s faces (face_indices()) with their
+/// corners moved to `placed` (placed[k] for vertices()[k]: the polyhedron under a rigid
+/// transform, rounded): `inside` when strictly on the inner side of every face, `boundary` when
+/// on some face planes and inside the others, `outside` otherwise. Exact on those doubles:
+/// predicates::orient3d on each placed face. For a polyhedron built from a mesh. Precondition:
+/// placed.size() == polyhedron.vertices().size(). O(faces); stops at the first outside.
+[[nodiscard]] Location point_in_convex(const ConvexPolyhedron& polyhedron,
+                                       std::span<const Vec3> placed, Vec3 p);
+
 /// point_in_convex for every point, in parallel; out[i] is the answer for points[i] whatever the
 /// thread count. Precondition: out.size() == points.size().
 void point_in_convex(const ConvexPolyhedron& polyhedron, std::span<const Vec3> points,
