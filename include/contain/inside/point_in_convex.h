@@ -12,9 +12,6 @@
 
 namespace contain::inside {
 
-/// The type's old spelling, from before it moved to the shapes layer (docs/architecture.md).
-using shapes::ConvexPolyhedron;
-
 /// Where `p` lies in `polyhedron`: `inside` when strictly inside every half-space or face,
 /// `boundary` when on some of the planes and inside the others, `outside` otherwise (see
 /// ConvexPolyhedron for a region without interior). Exact: predicates::side_of_plane for planes,
