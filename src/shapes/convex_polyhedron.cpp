@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -33,24 +34,9 @@ Sign inner_side(const Triangle3& t, Vec3 p) {
   return -predicates::orient3d(t.a, t.b, t.c, p);
 }
 
-}  // namespace
-
-Result<ConvexPolyhedron> ConvexPolyhedron::from_planes(std::vector<Plane> planes) {
-  for (std::size_t i = 0; i < planes.size(); ++i) {
-    if (!finite(planes[i])) {
-      return Error{ErrorKind::invalid_value,
-                   "plane " + std::to_string(i) + " has a NaN or infinite coefficient"};
-    }
-    if (planes[i].a == 0 && planes[i].b == 0 && planes[i].c == 0) {
-      return Error{ErrorKind::degenerate, "plane " + std::to_string(i) + " has a zero normal"};
-    }
-  }
-  ConvexPolyhedron result;
-  result.planes_ = std::move(planes);
-  return result;
-}
-
-Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
+// Closed and consistently oriented: every directed edge used once and its twin once, indices in
+// range. The first failure, or nothing.
+std::optional<Error> closed_and_oriented(const Mesh& mesh) {
   if (mesh.triangles.size() < 4) {
     return Error{ErrorKind::degenerate, "a closed convex mesh needs at least 4 triangles, got " +
                                             std::to_string(mesh.triangles.size())};
@@ -76,24 +62,15 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
                        std::to_string(edge.first) + "-" + std::to_string(edge.second)};
     }
   }
-  std::vector<Triangle3> faces;
-  faces.reserve(mesh.triangles.size());
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const TriangleIndices& tri = mesh.triangles[t];
-    const Triangle3 face{mesh.vertices[static_cast<std::size_t>(tri[0])],
-                         mesh.vertices[static_cast<std::size_t>(tri[1])],
-                         mesh.vertices[static_cast<std::size_t>(tri[2])]};
-    if (collinear(face.a, face.b, face.c)) {
-      return Error{ErrorKind::degenerate, "triangle " + std::to_string(t) + " is degenerate"};
-    }
-    faces.push_back(face);
-    for (std::int32_t i : tri)
-      used[static_cast<std::size_t>(i)] = true;
-  }
-  // Convexity: every vertex on the inner side of (or on) every face plane. A consistently
-  // oriented closed convex mesh has all vertices on one side of every face: the inner side if
-  // it is oriented outward, the outer side if inward. Mixed sides mean "not convex".
+  return std::nullopt;
+}
+
+// Convexity: every vertex on the inner side of (or on) every face plane. A consistently
+// oriented closed convex mesh has all vertices on one side of every face: the inner side if
+// it is oriented outward, the outer side if inward. Mixed sides mean "not convex". Flips
+// inward faces outward.
+std::optional<Error> orient_convex(std::vector<Triangle3>& faces, const Mesh& mesh,
+                                   const std::vector<bool>& used) {
   bool any_inner = false, any_outer = false;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     bool face_inner = false, face_outer = false;
@@ -123,12 +100,14 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
     for (Triangle3& f : faces)
       std::swap(f.b, f.c);  // oriented inward: flip
   }
-  ConvexPolyhedron result;
-  result.faces_ = std::move(faces);
-  // The corners once, sorted and distinct, so that a coordinate repeated under two indices of
-  // the mesh is one vertex of the solid (GJK's simplices name points, not indices).
-  std::vector<Vec3>& v = result.vertices_;
-  for (const Triangle3& f : result.faces_) {
+  return std::nullopt;
+}
+
+// The corners once, sorted and distinct, so that a coordinate repeated under two indices of the
+// mesh is one vertex of the solid (GJK's simplices name points, not indices).
+void index_corners(const std::vector<Triangle3>& faces, std::vector<Vec3>& v,
+                   std::vector<TriangleIndices>& face_indices) {
+  for (const Triangle3& f : faces) {
     v.push_back(f.a);
     v.push_back(f.b);
     v.push_back(f.c);
@@ -139,9 +118,49 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
     return static_cast<std::int32_t>(std::lower_bound(v.begin(), v.end(), p, lexicographic_less) -
                                      v.begin());
   };
-  result.face_indices_.reserve(result.faces_.size());
-  for (const Triangle3& f : result.faces_)
-    result.face_indices_.push_back({index_of(f.a), index_of(f.b), index_of(f.c)});
+  face_indices.reserve(faces.size());
+  for (const Triangle3& f : faces)
+    face_indices.push_back({index_of(f.a), index_of(f.b), index_of(f.c)});
+}
+
+}  // namespace
+
+Result<ConvexPolyhedron> ConvexPolyhedron::from_planes(std::vector<Plane> planes) {
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    if (!finite(planes[i])) {
+      return Error{ErrorKind::invalid_value,
+                   "plane " + std::to_string(i) + " has a NaN or infinite coefficient"};
+    }
+    if (planes[i].a == 0 && planes[i].b == 0 && planes[i].c == 0) {
+      return Error{ErrorKind::degenerate, "plane " + std::to_string(i) + " has a zero normal"};
+    }
+  }
+  ConvexPolyhedron result;
+  result.planes_ = std::move(planes);
+  return result;
+}
+
+Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
+  if (auto error = closed_and_oriented(mesh)) return std::move(*error);
+  std::vector<Triangle3> faces;
+  faces.reserve(mesh.triangles.size());
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const TriangleIndices& tri = mesh.triangles[t];
+    const Triangle3 face{mesh.vertices[static_cast<std::size_t>(tri[0])],
+                         mesh.vertices[static_cast<std::size_t>(tri[1])],
+                         mesh.vertices[static_cast<std::size_t>(tri[2])]};
+    if (collinear(face.a, face.b, face.c)) {
+      return Error{ErrorKind::degenerate, "triangle " + std::to_string(t) + " is degenerate"};
+    }
+    faces.push_back(face);
+    for (std::int32_t i : tri)
+      used[static_cast<std::size_t>(i)] = true;
+  }
+  if (auto error = orient_convex(faces, mesh, used)) return std::move(*error);
+  ConvexPolyhedron result;
+  result.faces_ = std::move(faces);
+  index_corners(result.faces_, result.vertices_, result.face_indices_);
   result.index_faces_around();
   return result;
 }
