@@ -18,9 +18,11 @@ namespace contain::shapes {
 
 /// A convex polyhedron (or any intersection of closed half-spaces), validated and ready for
 /// queries (inside::point_in_convex). Built either from planes (a x + b y + c z + d >= 0 each,
-/// normals inward) or from a closed convex triangle mesh, whose faces are kept as triangles so that
-/// every side test is predicates::orient3d on three input vertices: a plane through them computed
-/// in floating point would not be exact.
+/// normals inward), from an axis-aligned box, or from a closed convex triangle mesh, whose faces
+/// are kept as triangles so that every side test is predicates::orient3d on three input
+/// vertices: a plane through them computed in floating point would not be exact. Boxes and
+/// meshes also keep their corners, the faces around each corner and a support function, the
+/// preparation that GJK-guided queries (collide::ConvexShape, distance::ConvexDistance) share.
 ///
 /// A point is `inside` when it is strictly inside every half-space, `boundary` when it is on some
 /// of the planes and inside the others, `outside` otherwise. The answer is about the closed set
