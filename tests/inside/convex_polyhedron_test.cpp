@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <random>
+#include <span>
+#include <vector>
 
+#include "contain/values/transform.h"
 #include "support/exact.h"
 
 namespace contain::inside {
@@ -174,6 +178,75 @@ TEST(ConvexPolyhedron, MeshAndPlaneFormsAgreeWithTheGmpOracleOnRandomAndDegenera
     }
   }
   EXPECT_GT(boundary, 500);
+}
+
+// Exact location in the solid bounded by `faces` over `v` (outward), by the GMP oracle.
+Location oracle_location(std::span<const Vec3> v, std::span<const TriangleIndices> faces, Vec3 p) {
+  Location truth = Location::inside;
+  for (const TriangleIndices& f : faces) {
+    const Sign side =
+        test::exact_orient3d(v[static_cast<std::size_t>(f[0])], v[static_cast<std::size_t>(f[1])],
+                             v[static_cast<std::size_t>(f[2])], p);
+    if (side == Sign::positive) return Location::outside;
+    if (side == Sign::zero) truth = Location::boundary;
+  }
+  return truth;
+}
+
+TEST(PointInConvex, PlacedVerticesAnswerAsTheGmpOracleOnThePlacedFaces) {
+  const auto cube = ConvexPolyhedron::from_mesh(cube_mesh());
+  ASSERT_TRUE(cube.ok());
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int boundary = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    // A rotation about z by a rounded angle, and a translation: the placed cube is convex only
+    // up to rounding, and the answer is about its faces as placed.
+    const double angle = 3 * u(rng), c = std::cos(angle), s = std::sin(angle);
+    Transform t;
+    t.r = {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}};
+    t.t = {u(rng), u(rng), u(rng)};
+    std::vector<Vec3> placed;
+    for (const Vec3& v : cube->vertices())
+      placed.push_back(t.apply(v));
+    for (int k = 0; k < 60; ++k) {
+      // Corners, edge midpoints and random points in and near the placed cube.
+      Vec3 p;
+      if (k < 8) {
+        p = placed[static_cast<std::size_t>(k)];
+      } else if (k < 20) {
+        const TriangleIndices& f = cube->face_indices()[static_cast<std::size_t>(k - 8)];
+        p = 0.5 * (placed[static_cast<std::size_t>(f[0])] + placed[static_cast<std::size_t>(f[1])]);
+      } else {
+        p = t.apply({0.5 + 0.7 * u(rng), 0.5 + 0.7 * u(rng), 0.5 + 0.7 * u(rng)});
+      }
+      const Location truth = oracle_location(placed, cube->face_indices(), p);
+      boundary += truth == Location::boundary;
+      EXPECT_EQ(point_in_convex(*cube, placed, p), truth) << trial << " " << k;
+    }
+  }
+  EXPECT_GT(boundary, 50);
+}
+
+TEST(PointInConvex, UnplacedVerticesAnswerAsThePolyhedronItself) {
+  const auto cube = ConvexPolyhedron::from_mesh(cube_mesh(2));
+  ASSERT_TRUE(cube.ok());
+  std::mt19937_64 rng(31);
+  std::uniform_int_distribution<int> k(-1, 5);
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 p{0.5 * k(rng), 0.5 * k(rng), 0.5 * k(rng)};  // on, in and off the cube's planes
+    EXPECT_EQ(point_in_convex(*cube, cube->vertices(), p), point_in_convex(*cube, p));
+  }
+}
+
+TEST(PointInConvex, AFlatBoxIsLocatedByItsPlanesNotItsDegenerateSides) {
+  const ConvexPolyhedron flat = ConvexPolyhedron::from_box({{0, 0, 1}, {2, 3, 1}});
+  EXPECT_EQ(point_in_convex(flat, {1, 1, 1}), Location::boundary);
+  EXPECT_EQ(point_in_convex(flat, {2, 3, 1}), Location::boundary);
+  EXPECT_EQ(point_in_convex(flat, {3, 1, 1}), Location::outside);  // beyond a degenerate side
+  EXPECT_EQ(point_in_convex(flat, {1, 1, 1.5}), Location::outside);
+  const ConvexPolyhedron box = ConvexPolyhedron::from_box({{0, 0, 0}, {2, 3, 1}});
+  EXPECT_EQ(point_in_convex(box, {1, 1, 0.5}), Location::inside);
 }
 
 TEST(ConvexPolyhedron, BatchAnswersEqualSingleAnswersWhateverTheThreadCount) {

@@ -3,8 +3,6 @@
 /// Do two convex shapes (spheres, boxes, convex polyhedra) meet? GJK on support functions, with
 /// exact decisions for polytope pairs.
 
-#include <vector>
-
 #include "contain/core/result.h"
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/values/box.h"
@@ -16,9 +14,9 @@ namespace contain::collide {
 
 /// A closed convex shape given by its support function (the farthest point in a direction):
 /// a sphere, an axis-aligned box, or a convex polyhedron built from a closed convex mesh
-/// (ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: they keep their
-/// vertices, their triangulated faces and an exact point locator for `convex_intersect`'s exact
-/// stage.
+/// (ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: a ConvexPolyhedron
+/// (ConvexPolyhedron::from_box for a box) holds their vertices, faces and support function and
+/// locates points exactly for `convex_intersect`'s exact stage.
 class ConvexShape {
  public:
   /// A closed ball. Precondition: radius >= 0, finite values.
@@ -27,22 +25,23 @@ class ConvexShape {
   /// (min == max on some axis) are fine.
   [[nodiscard]] static ConvexShape box(const Box3& box);
   /// A convex polyhedron built from a mesh (its faces()); ErrorKind::unsupported for a
-  /// polyhedron given only by planes (it has no vertices to support a direction with). O(F).
+  /// polyhedron given only by planes (it has no vertices to support a direction with). O(1)
+  /// beyond the copy.
   [[nodiscard]] static Result<ConvexShape> polyhedron(const ConvexPolyhedron& polyhedron);
 
   /// A point of the shape farthest in `direction` (any point for direction 0). O(1) for spheres
-  /// and boxes, O(V) for polyhedra. Floating point for spheres (a rounded centre + r d / |d|).
+  /// and boxes, O(V) for polyhedra (ConvexPolyhedron::support). Floating point for spheres (a
+  /// rounded centre + r d / |d|).
   [[nodiscard]] Vec3 support(Vec3 direction) const;
   /// True for boxes and polyhedra.
-  [[nodiscard]] bool is_polytope() const { return !faces_.empty(); }
+  [[nodiscard]] bool is_polytope() const { return !solid_.vertices().empty(); }
+  /// The polytope (empty for a sphere).
+  [[nodiscard]] const ConvexPolyhedron& polytope() const { return solid_; }
 
  private:
-  friend struct ConvexAccess;
   ConvexShape() = default;
   Sphere sphere_{};
-  std::vector<Vec3> vertices_;    // polytopes
-  std::vector<Triangle3> faces_;  // polytopes, outward
-  ConvexPolyhedron solid_;        // polytopes: exact point location
+  ConvexPolyhedron solid_;  // polytopes
 };
 
 /// What `convex_intersect` found.

@@ -52,7 +52,7 @@ class ConvexDistance {
 
   /// The faces (counter-clockwise seen from outside) and the distinct vertices.
   [[nodiscard]] std::span<const Triangle3> faces() const { return polyhedron_.faces(); }
-  [[nodiscard]] std::span<const Vec3> vertices() const { return mesh_.vertices; }
+  [[nodiscard]] std::span<const Vec3> vertices() const { return polyhedron_.vertices(); }
   [[nodiscard]] const ConvexPolyhedron& polyhedron() const { return polyhedron_; }
 
  private:
@@ -61,15 +61,9 @@ class ConvexDistance {
   friend bool convex_convex_within(const ConvexDistance&, const ConvexDistance&, const Transform&,
                                    double);
   ConvexDistance() = default;
-  // The pair query; with `within_out`, decides "distance <= within_d" and stops there.
-  [[nodiscard]] static PairDistance3 pair(const ConvexDistance& a, const ConvexDistance& b,
-                                          const Transform& tb, double within_d, bool* within_out);
 
   ConvexPolyhedron polyhedron_;
-  Mesh mesh_;  // the faces over the distinct vertices (sorted), face k = triangle k
-  MeshDistance surface_;
-  std::vector<std::int32_t> face_start_;  // faces around vertex v: face_list_[start[v]..start[v+1])
-  std::vector<std::int32_t> face_list_;
+  MeshDistance surface_;  // over polyhedron_'s vertices and face_indices(): face k = triangle k
   double max_abs_ = 0.0;
 };
 

@@ -12,15 +12,21 @@
 
 namespace contain::inside {
 
-/// The type's old spelling, from before it moved to the shapes layer (docs/architecture.md).
-using shapes::ConvexPolyhedron;
-
 /// Where `p` lies in `polyhedron`: `inside` when strictly inside every half-space or face,
 /// `boundary` when on some of the planes and inside the others, `outside` otherwise (see
 /// ConvexPolyhedron for a region without interior). Exact: predicates::side_of_plane for planes,
 /// predicates::orient3d on a face's three vertices for mesh faces. O(number of planes or faces);
 /// stops at the first outside.
 [[nodiscard]] Location point_in_convex(const ConvexPolyhedron& polyhedron, Vec3 p);
+
+/// Where `p` lies in the solid bounded by `polyhedron`'s faces (face_indices()) with their
+/// corners moved to `placed` (placed[k] for vertices()[k]: the polyhedron under a rigid
+/// transform, rounded): `inside` when strictly on the inner side of every face, `boundary` when
+/// on some face planes and inside the others, `outside` otherwise. Exact on those doubles:
+/// predicates::orient3d on each placed face. For a polyhedron built from a mesh. Precondition:
+/// placed.size() == polyhedron.vertices().size(). O(faces); stops at the first outside.
+[[nodiscard]] Location point_in_convex(const ConvexPolyhedron& polyhedron,
+                                       std::span<const Vec3> placed, Vec3 p);
 
 /// point_in_convex for every point, in parallel; out[i] is the answer for points[i] whatever the
 /// thread count. Precondition: out.size() == points.size().
