@@ -1,12 +1,12 @@
 #include "contain/predicates/polynomial.h"
 
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 
 #include "contain/predicates/big_float.h"
+#include "predicates/double_order.h"
 #include "predicates/polynomial_state.h"
 
 namespace contain::predicates {
@@ -310,28 +310,10 @@ const detail::Coeffs& PolynomialAccess::coefficients(const Polynomial& p) {
 
 namespace {
 
-// Doubles in the order of the reals as 64-bit integers (-0.0 and 0.0 share 0), so that
-// bisection on them halves the count of doubles in between.
-std::int64_t order_key(double d) {
-  const auto bits = std::bit_cast<std::uint64_t>(d);
-  const auto magnitude = static_cast<std::int64_t>(bits & 0x7fffffffffffffffULL);
-  return (bits >> 63) != 0 ? -magnitude : magnitude;
-}
-
-double from_key(std::int64_t k) {
-  if (k >= 0) return std::bit_cast<double>(static_cast<std::uint64_t>(k));
-  return std::bit_cast<double>(static_cast<std::uint64_t>(-k) | 0x8000000000000000ULL);
-}
-
-// b - a for a <= b (it can exceed 2^63; the unsigned difference is exact).
-std::uint64_t key_distance(std::int64_t a, std::int64_t b) {
-  return static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a);
-}
-
-std::int64_t middle_key(std::int64_t a, std::int64_t b) {
-  // b - a can exceed 2^63; the unsigned difference is exact.
-  return a + static_cast<std::int64_t>(key_distance(a, b) / 2);
-}
+using detail::from_key;
+using detail::key_distance;
+using detail::middle_key;
+using detail::order_key;
 
 // An end of an isolating interval: an exact dyadic number and the doubles around it (equal
 // when it is a double). Bisection runs on doubles while a double lies strictly between the ends
