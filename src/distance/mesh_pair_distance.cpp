@@ -10,6 +10,7 @@
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/shapes/mesh_components.h"
 #include "contain/shapes/mesh_validation.h"
 #include "distance/flat_answer.h"
@@ -22,7 +23,7 @@ namespace contain::distance {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double max_abs(const Mesh& mesh) {
