@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "contain/predicates/big_float.h"
@@ -391,6 +392,10 @@ RealRoot exact_root(const detail::Coeffs& p, double x) {
 
 std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
   assert(!p.is_zero() && lo <= hi);
+  if (std::optional<std::vector<RealRoot>> fast =
+          detail::filtered_real_roots(PolynomialAccess::coefficients(p), lo, hi)) {
+    return std::move(*fast);
+  }
   std::vector<RealRoot> out;
   detail::Coeffs sq = detail::squarefree(PolynomialAccess::coefficients(p));
   if (detail::degree_of(sq) < 1) return out;
@@ -423,6 +428,10 @@ RealRoot root_between(const Polynomial& p, double lo, double hi) {
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
+  if (const std::optional<Sign> fast =
+          detail::filtered_sign_at(PolynomialAccess::coefficients(q), root)) {
+    return *fast;
+  }
   // Sylvester: sum over the roots x of P in (lo, hi) of sign q(x) = Var(SRemS(P, P' q); lo, hi),
   // and P' q may be replaced by its remainder modulo P (the Cauchy index of P' q / P does not
   // change) scaled by a positive constant. One root lies in (lo, hi): its sign is the sum.
@@ -457,7 +466,7 @@ std::pair<double, double> bracket_by_doubles(const RealRoot& root) {
     } else if ((bm - s.hi).sign() != Sign::negative) {
       below = false;
     } else {
-      const Sign sm = detail::sign_at(s.p, bm);
+      const Sign sm = detail::sign_at_double(s.p, m);
       if (sm == Sign::zero) return {m, m};
       below = sm == s.sign_lo;
     }
