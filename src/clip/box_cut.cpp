@@ -11,13 +11,14 @@
 #include "contain/inside/point_in_polygon.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/ring_orientation.h"
+#include "contain/predicates/unit_roundoff.h"
 
 namespace contain::clip::detail {
 namespace {
 
 using predicates::orient2d;
 
-constexpr double kU = 0x1p-53;  // unit roundoff
+constexpr double kU = predicates::unit_roundoff<double>;
 
 // Along p -> q, which comes first: the crossing of the line x = X (-1), that of y = Y (+1), or
 // both at the corner (X, Y) (0). At x = X the line is at y_V with sign(y_V - Y) =

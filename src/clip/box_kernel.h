@@ -24,6 +24,7 @@
 #include <span>
 
 #include "contain/core/parallel.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/box.h"
 #include "contain/values/segment.h"
 
@@ -49,7 +50,7 @@ inline void box_kernel_scalar(const double* in, double* out, std::uint8_t* kept,
                               const KernelBox<D>& box) {
   constexpr double big = 0x1p900;
   constexpr double tiny = 0x1p-900;
-  constexpr double margin = 8.01 * 0x1p-53;
+  constexpr double margin = 8.01 * predicates::unit_roundoff<double>;
   for (std::size_t i = 0; i < count; ++i) {
     const double* s = in + 2 * D * i;
     double enter[D], exit[D], d[D];
@@ -237,7 +238,8 @@ template <class V, int D>
                                                     const KernelBox<D>& box) {
   using M = typename Lanes<V>::M;
   constexpr std::size_t width = Lanes<V>::count;
-  const V big = splat<V>(0x1p900), tiny = splat<V>(0x1p-900), margin = splat<V>(8.01 * 0x1p-53);
+  const V big = splat<V>(0x1p900), tiny = splat<V>(0x1p-900),
+          margin = splat<V>(8.01 * predicates::unit_roundoff<double>);
   const V zero = splat<V>(0.0), one = splat<V>(1.0), two = splat<V>(2.0),
           minus_one = splat<V>(-1.0);
   // The box in lanes, read once: `out` could alias `box` as far as the compiler knows.

@@ -190,7 +190,7 @@ void reduce(const RingView& ring, const F& f, Ring& out, std::vector<Sign>& side
   side.clear();
   const std::size_t n = ring.size();
   auto clearly_outside = [&](Vec2 v) {
-    const predicates::Approx a = f.approx(v);
+    const predicates::Bounded a = f.approx(v);
     return a.value < -a.error;
   };
   for (std::size_t i = 0; i < n;) {

@@ -16,11 +16,12 @@ template <class V, class F>
                                                              std::span<const F> functions) {
   // Per half-space: the exact endpoint signs decide its role (the section's three cases).
   int enter = -1, exit = -1;
-  predicates::Approx enter_a, enter_b, exit_a, exit_b;
+  predicates::Bounded enter_a, enter_b, exit_a, exit_b;
   // sign(t_i - t_j) with t = s(a) / (s(a) - s(b)); numerator s_j(a) s_i(b) - s_i(a) s_j(b),
   // times sign(den_i) sign(den_j): den < 0 entering, > 0 exiting.
-  auto compare = [&](int i, const predicates::Approx& ia, const predicates::Approx& ib, int den_i,
-                     int j, const predicates::Approx& ja, const predicates::Approx& jb, int den_j) {
+  auto compare = [&](int i, const predicates::Bounded& ia, const predicates::Bounded& ib, int den_i,
+                     int j, const predicates::Bounded& ja, const predicates::Bounded& jb,
+                     int den_j) {
     const Sign s = predicates::sign_of_product_difference(ja, ib, ia, jb, [&] {
       const auto& fi = functions[static_cast<std::size_t>(i)];
       const auto& fj = functions[static_cast<std::size_t>(j)];
@@ -34,7 +35,7 @@ template <class V, class F>
     const bool in_a = sa != Sign::negative, in_b = sb != Sign::negative;
     if (in_a && in_b) continue;
     if (!in_a && !in_b) return nothing<V>();  // trivial reject
-    const predicates::Approx va = f.approx(a), vb = f.approx(b);
+    const predicates::Bounded va = f.approx(a), vb = f.approx(b);
     if (!in_a) {
       if (enter < 0 || compare(i, va, vb, -1, enter, enter_a, enter_b, -1) > 0) {
         enter = i;
@@ -53,7 +54,7 @@ template <class V, class F>
     if (order > 0) return nothing<V>();
   }
   // Rounded parameters; exact 1 or 0 where the crossing is at an endpoint on the plane.
-  auto param = [](const predicates::Approx& sa, const predicates::Approx& sb, double fallback) {
+  auto param = [](const predicates::Bounded& sa, const predicates::Bounded& sb, double fallback) {
     if (sb.value == 0.0 && sa.value != 0.0) return fallback;
     const double t = sa.value / (sa.value - sb.value);
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : fallback;

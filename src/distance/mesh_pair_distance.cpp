@@ -10,6 +10,7 @@
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "distance/flat_answer.h"
 #include "distance/least_contender.h"
 #include "distance/oriented_box.h"
@@ -30,7 +31,7 @@ namespace contain::distance {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Triangle3 triangle_of(const std::vector<Vec3>& v, const TriangleIndices& t) {

@@ -4,13 +4,14 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/predicates/unit_roundoff.h"
 #include "distance/triangle_pair_bounds.h"
 
 namespace contain::distance::detail {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;  // u, the unit roundoff
+constexpr double kEps = predicates::unit_roundoff<double>;
 // The frame's orthonormality: |e_i . e_j - delta_ij| <= phi, checked at build.
 constexpr double kPhi = 0x1p-40;
 

@@ -11,6 +11,7 @@
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
@@ -19,7 +20,7 @@ namespace contain::distance {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Edges {

@@ -3,6 +3,7 @@
 #include <array>
 #include <utility>
 
+#include "contain/predicates/unit_roundoff.h"
 #include "distance/oriented_box.h"
 
 namespace contain::distance::detail {
@@ -19,7 +20,7 @@ float round_up(double x) {
   if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
   return f;
 }
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 
 // The oriented box of one lane around the corners `points`: the principal axes rounded to
 // floats (the coordinate axes where they fail or `principal` is false), and along each axis u the

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/box.h"
 #include "contain/values/vec.h"
 
@@ -51,7 +52,7 @@ struct SearchStats {
 /// them and the final factor. A square that underflows only lowers the bound; an overflow means
 /// the exact value exceeds DBL_MAX.
 [[nodiscard]] inline double box_lower_bound(Vec3 p, const float lo[3], const float hi[3]) {
-  constexpr double kEps = 0x1p-53;
+  constexpr double kEps = predicates::unit_roundoff<double>;
   const double dx =
       std::max(std::max(static_cast<double>(lo[0]) - p.x, p.x - static_cast<double>(hi[0])), 0.0);
   const double dy =
@@ -97,7 +98,8 @@ struct LanePoint {
   if (!(big <= 0x1p100)) return {Float4{}, Float4{}, Float4{}, Float4{kInf, kInf, kInf, kInf}};
   // m in floats, rounded up: the product by a power of two is exact, the sum and the conversion
   // round once each, by less than the factor.
-  const auto m = static_cast<float>((16 * 0x1p-24 * big + 0x1p-140) * (1 + 0x1p-20));
+  const auto m =
+      static_cast<float>((16 * predicates::unit_roundoff<float> * big + 0x1p-140) * (1 + 0x1p-20));
   const auto x = static_cast<float>(d.x), y = static_cast<float>(d.y), z = static_cast<float>(d.z);
   return {Float4{x, x, x, x}, Float4{y, y, y, y}, Float4{z, z, z, z}, Float4{m, m, m, m}};
 }
@@ -110,7 +112,7 @@ struct LanePoint {
 /// the squares neither overflow nor, once the sum is at least 2^-100, lose more to underflow than
 /// the factor (1 - 8 u) leaves room for after the five roundings of the sum and products.
 inline void oriented_lower_bound4(const LanePoint& q, const OrientedLanes& lanes, double out[4]) {
-  constexpr float kU = 0x1p-24f;
+  constexpr float kU = predicates::unit_roundoff<float>;
   auto load = [](const float v[4]) {
     Float4 r;
     __builtin_memcpy(&r, v, sizeof r);

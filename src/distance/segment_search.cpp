@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/predicates/unit_roundoff.h"
+
 namespace contain::distance::detail {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // (p - v) . w minus a bound on its rounding error (one difference, one product, one sum: 3 eps

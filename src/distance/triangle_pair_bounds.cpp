@@ -5,13 +5,14 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/predicates/unit_roundoff.h"
 #include "distance/triangle_search.h"
 
 namespace contain::distance::detail {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double clamp01(double x) {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <span>
 
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
@@ -33,7 +34,7 @@ template <class V>
   } else {
     perm = std::fabs(d.x * w.x) + std::fabs(d.y * w.y);
   }
-  return s - sign * 8 * 0x1p-53 * perm;
+  return s - sign * 8 * predicates::unit_roundoff<double> * perm;
 }
 
 /// A lower bound of the squared distance between two sets whose separation along w is at least

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/predicates/unit_roundoff.h"
+
 namespace contain::distance::detail {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Ericson's closest point on a triangle (Real-Time Collision Detection, 5.1.5), in doubles: only

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 #include "distance/search_tree.h"
@@ -64,7 +65,7 @@ class PlaneBound {
   PlaneBound() = default;
   explicit PlaneBound(const Triangle3& t);
   [[nodiscard]] double lower(Vec3 p) const {
-    constexpr double kEps = 0x1p-53;
+    constexpr double kEps = predicates::unit_roundoff<double>;
     const double t = (n_.x * p.x + n_.y * p.y) + n_.z * p.z;
     const double perm = (std::fabs(n_.x * p.x) + std::fabs(n_.y * p.y)) + std::fabs(n_.z * p.z);
     // |n . p - d| >= |t - d| (1 - eps) - 3.01 eps perm (the dot product's error), each operation

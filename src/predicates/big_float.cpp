@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <span>
 
 namespace contain::predicates {
 
@@ -59,6 +60,49 @@ Limbs subtract(const Limbs& a, const Limbs& b) {
     out[i] = static_cast<std::uint32_t>(d);
   }
   return out;
+}
+
+// The schoolbook product, a.size() + b.size() limbs.
+Limbs multiply_schoolbook(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  Limbs r(a.size() + b.size(), 0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    std::uint64_t carry = 0;
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const std::uint64_t t = static_cast<std::uint64_t>(a[i]) * b[j] + r[i + j] + carry;
+      r[i + j] = static_cast<std::uint32_t>(t);
+      carry = t >> 32;
+    }
+    r[i + b.size()] = static_cast<std::uint32_t>(carry);
+  }
+  return r;
+}
+
+Limbs shifted_limbs(Limbs a, std::size_t limbs) {
+  a.insert(a.begin(), limbs, 0U);
+  return a;
+}
+
+// Below this many limbs in the shorter factor, the schoolbook product is faster.
+constexpr std::size_t kKaratsubaLimbs = 48;
+
+// The product of two magnitudes (high zero limbs allowed). Karatsuba (Knuth, TAOCP vol. 2,
+// 4.3.3): with a = a0 + a1 B^h, b = b0 + b1 B^h, ab = z0 + (z1 - z0 - z2) B^h + z2 B^2h for
+// z0 = a0 b0, z2 = a1 b1, z1 = (a0 + a1)(b0 + b1): three half-size products instead of four, so
+// the big numbers of exact polynomial stages (thousands of limbs for inputs of mixed magnitudes)
+// multiply in O(n^1.58).
+Limbs multiply_limbs(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  if (a.size() < b.size()) std::swap(a, b);
+  if (b.size() < kKaratsubaLimbs) return multiply_schoolbook(a, b);
+  const std::size_t h = (a.size() + 1) / 2;
+  if (b.size() <= h) {  // unbalanced: split a only
+    return add(multiply_limbs(a.first(h), b), shifted_limbs(multiply_limbs(a.subspan(h), b), h));
+  }
+  const auto a0 = a.first(h), a1 = a.subspan(h), b0 = b.first(h), b1 = b.subspan(h);
+  const Limbs z0 = multiply_limbs(a0, b0), z2 = multiply_limbs(a1, b1);
+  const Limbs sa = add(Limbs(a0.begin(), a0.end()), Limbs(a1.begin(), a1.end()));
+  const Limbs sb = add(Limbs(b0.begin(), b0.end()), Limbs(b1.begin(), b1.end()));
+  const Limbs z1 = subtract(subtract(multiply_limbs(sa, sb), z0), z2);
+  return add(add(z0, shifted_limbs(z1, h)), shifted_limbs(z2, 2 * h));
 }
 
 }  // namespace
@@ -145,17 +189,7 @@ std::strong_ordering operator<=>(const BigFloat& a, const BigFloat& b) {
 BigFloat operator*(const BigFloat& a, const BigFloat& b) {
   BigFloat r;
   if (a.limbs_.empty() || b.limbs_.empty()) return r;
-  r.limbs_.assign(a.limbs_.size() + b.limbs_.size(), 0);
-  for (std::size_t i = 0; i < a.limbs_.size(); ++i) {
-    std::uint64_t carry = 0;
-    for (std::size_t j = 0; j < b.limbs_.size(); ++j) {
-      const std::uint64_t t =
-          static_cast<std::uint64_t>(a.limbs_[i]) * b.limbs_[j] + r.limbs_[i + j] + carry;
-      r.limbs_[i + j] = static_cast<std::uint32_t>(t);
-      carry = t >> 32;
-    }
-    r.limbs_[i + b.limbs_.size()] = static_cast<std::uint32_t>(carry);
-  }
+  r.limbs_ = multiply_limbs(a.limbs_, b.limbs_);
   r.exponent_ = a.exponent_ + b.exponent_;
   r.negative_ = a.negative_ != b.negative_;
   r.normalize();

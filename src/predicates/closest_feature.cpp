@@ -4,19 +4,17 @@
 #include <cmath>
 
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/bounded.h"
 #include "contain/predicates/cross_dot.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "predicates/filtered_sign.h"
 #include "predicates/flat_formulas.h"
-#include "predicates/running_error.h"
 #include "predicates/stages.h"
 
 namespace contain::predicates {
 
 namespace {
-
-using detail::Err;
 
 template <class T, class V>
 T dot_of(V a, V b, V p) {
@@ -40,10 +38,10 @@ template <class V>
 Sign dot_sign_of(V a, V b, V p) {
   double permanent = 0.0;
   const double value = dot_terms(b - a, p - a, permanent);
-  const double errbound = 6.0 * detail::kEpsilon * permanent + detail::kUnderflowGuard;
+  const double errbound = 6.0 * unit_roundoff<double> * permanent + detail::kUnderflowGuard;
   if (value > errbound) return Sign::positive;
   if (-value > errbound) return Sign::negative;
-  const Err<double> fast = dot_of<Err<double>>(a, b, p);
+  const Bounded fast = dot_of<Bounded>(a, b, p);
   if (fast.decided()) return fast.sign();
   return dot_of<BigFloat>(a, b, p).sign();
 }

@@ -84,7 +84,7 @@ Sign side_of_circle_big(const Circle& s, Vec2 p) {
 // |error| <= gamma_6 * permanent < 7 eps * computed permanent (docs/robustness.md). Every product
 // is of differences or of r, never amplified after underflowing: the guard is added once.
 Sign side_of_sphere(const Sphere& s, Vec3 p) {
-  constexpr double kBound = 7.0 * detail::kEpsilon;
+  constexpr double kBound = 7.0 * unit_roundoff<double>;
   const double dx = p.x - s.center.x, dy = p.y - s.center.y, dz = p.z - s.center.z;
   const double r2 = s.radius * s.radius;
   const double d2 = (dx * dx + dy * dy) + dz * dz;
@@ -97,7 +97,7 @@ Sign side_of_sphere(const Sphere& s, Vec3 p) {
 
 // Filter as side_of_sphere with k = 5 roundings: bound 6 eps * permanent.
 Sign side_of_circle(const Circle& s, Vec2 p) {
-  constexpr double kBound = 6.0 * detail::kEpsilon;
+  constexpr double kBound = 6.0 * unit_roundoff<double>;
   const double dx = p.x - s.center.x, dy = p.y - s.center.y;
   const double r2 = s.radius * s.radius;
   const double d2 = dx * dx + dy * dy;

@@ -1,18 +1,20 @@
 #include "contain/predicates/coplanarity_cubic.h"
 
-#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 
 #include "contain/predicates/bounded.h"
+#include "contain/predicates/unit_roundoff.h"
+#include "predicates/double_order.h"
 #include "predicates/expansion.h"
 
 namespace contain::predicates {
 
 namespace {
 
-constexpr double kUnit = 0x1p-53;
+using detail::from_key;
+using detail::order_key;
 
 double coord(const Vec3& v, int c) {
   return c == 0 ? v.x : (c == 1 ? v.y : v.z);
@@ -27,7 +29,7 @@ double coord(const Vec3& v, int c) {
 // (1 + 16u)(1 - u)^15 >= 1), and DBL_MIN covers every underflow (a Two-Product tail that is not
 // representable, a product below the normal range), as in the other filters.
 
-constexpr double kInflateDd = 1.0 + 16.0 * kUnit;
+constexpr double kInflateDd = 1.0 + 16.0 * unit_roundoff<double>;
 
 struct Dd {
   double hi = 0.0, lo = 0.0, err = 0.0;
@@ -46,7 +48,7 @@ Dd add(const Dd& a, const Dd& b) {
   const double t = x1 + e;
   Dd r;
   detail::two_sum(s, t, r.hi, r.lo);
-  r.err = ((a.err + b.err) + kUnit * (std::fabs(x1) + std::fabs(t))) * kInflateDd;
+  r.err = ((a.err + b.err) + unit_roundoff<double> * (std::fabs(x1) + std::fabs(t))) * kInflateDd;
   return r;
 }
 
@@ -70,7 +72,7 @@ Dd mul(const Dd& a, const Dd& b) {
   const double av = std::fabs(a.hi) + std::fabs(a.lo);
   const double bv = std::fabs(b.hi) + std::fabs(b.lo);
   r.err = ((av * b.err + bv * a.err) + a.err * b.err + std::fabs(a.lo) * std::fabs(b.lo) +
-           kUnit * (std::fabs(x1) + std::fabs(x2) + std::fabs(x3) + std::fabs(t))) *
+           unit_roundoff<double> * (std::fabs(x1) + std::fabs(x2) + std::fabs(x3) + std::fabs(t))) *
               kInflateDd +
           4.0 * DBL_MIN;
   return r;
@@ -84,29 +86,17 @@ Dd mul(const Dd& a, double d) {
   Dd r;
   detail::two_sum(p, t, r.hi, r.lo);
   r.err =
-      (std::fabs(d) * a.err + kUnit * (std::fabs(x) + std::fabs(t))) * kInflateDd + 2.0 * DBL_MIN;
+      (std::fabs(d) * a.err + unit_roundoff<double> * (std::fabs(x) + std::fabs(t))) * kInflateDd +
+      2.0 * DBL_MIN;
   return r;
 }
 
 std::optional<Sign> certified_sign(const Dd& a) {
   // hi + lo lies within |lo| of hi; the bound is rounded up.
-  const double bound = (2.0 * std::fabs(a.lo) + a.err) * (1.0 + 4.0 * kUnit);
+  const double bound = (2.0 * std::fabs(a.lo) + a.err) * (1.0 + 4.0 * unit_roundoff<double>);
   if (a.hi > bound) return Sign::positive;
   if (-a.hi > bound) return Sign::negative;
   return std::nullopt;
-}
-
-// ---- doubles in order ------------------------------------------------------------------------
-
-std::int64_t order_key(double d) {
-  const auto bits = std::bit_cast<std::uint64_t>(d);
-  const auto magnitude = static_cast<std::int64_t>(bits & 0x7fffffffffffffffULL);
-  return (bits >> 63) != 0 ? -magnitude : magnitude;
-}
-
-double from_key(std::int64_t k) {
-  if (k >= 0) return std::bit_cast<double>(static_cast<std::uint64_t>(k));
-  return std::bit_cast<double>(static_cast<std::uint64_t>(-k) | 0x8000000000000000ULL);
 }
 
 // The most sign variations a Bernstein coefficient sequence can have when some interior signs
@@ -148,8 +138,8 @@ bool isolate(const Quad& c, double lo, double hi, Sign s_lo, Sign s_hi, int dept
   const Bounded b012 = (b01 + b12) * kHalf, b123 = (b12 + b23) * kHalf;
   const Bounded mid_value = (b012 + b123) * kHalf;
   const std::optional<Sign> s_mid = certified_sign(mid_value);
-  if (!s_mid) return false;
-  const double mid = lo + 0.5 * (hi - lo);  // exact: dyadic ends
+  if (!s_mid || *s_mid == Sign::zero) return false;  // no root on a subdivision point
+  const double mid = lo + 0.5 * (hi - lo);           // exact: dyadic ends
   return isolate({c[0], b01, b012, mid_value}, lo, mid, s_lo, *s_mid, depth + 1, out) &&
          isolate({mid_value, b123, b23, c[3]}, mid, hi, *s_mid, s_hi, depth + 1, out);
 }
@@ -204,23 +194,26 @@ CoplanarityCubic::CoplanarityCubic(const MovingPoints& points, MotionPolynomial 
   const double guard = 3.0 * DBL_MIN *
                        (1.0 + std::fabs(u[0][0]) + std::fabs(u[0][1]) + std::fabs(u[0][2]) +
                         std::fabs(u[1][0]) + std::fabs(u[1][1]) + std::fabs(u[1][2]));
-  bernstein_[0] = {3.0 * d[0][0][0], 10.0 * kUnit * (3.0 * pd[0][0][0]) + guard};
-  bernstein_[1] = {(d[1][0][0] + d[0][1][0]) + d[0][0][1],
-                   11.0 * kUnit * ((pd[1][0][0] + pd[0][1][0]) + pd[0][0][1]) + guard};
-  bernstein_[2] = {(d[1][1][0] + d[1][0][1]) + d[0][1][1],
-                   11.0 * kUnit * ((pd[1][1][0] + pd[1][0][1]) + pd[0][1][1]) + guard};
-  bernstein_[3] = {3.0 * d[1][1][1], 10.0 * kUnit * (3.0 * pd[1][1][1]) + guard};
+  bernstein_[0] = {3.0 * d[0][0][0], 10.0 * unit_roundoff<double> * (3.0 * pd[0][0][0]) + guard};
+  bernstein_[1] = {
+      (d[1][0][0] + d[0][1][0]) + d[0][0][1],
+      11.0 * unit_roundoff<double> * ((pd[1][0][0] + pd[0][1][0]) + pd[0][0][1]) + guard};
+  bernstein_[2] = {
+      (d[1][1][0] + d[1][0][1]) + d[0][1][1],
+      11.0 * unit_roundoff<double> * ((pd[1][1][0] + pd[1][0][1]) + pd[0][1][1]) + guard};
+  bernstein_[3] = {3.0 * d[1][1][1], 10.0 * unit_roundoff<double> * (3.0 * pd[1][1][1]) + guard};
   double max_error = 0.0, max_value = 0.0;
-  for (const Coefficient& c : bernstein_) {
+  for (const Bounded& c : bernstein_) {
     max_error = std::max(max_error, c.error);
     max_value = std::max(max_value, std::fabs(c.value));
   }
-  evaluation_error_ = (max_error + 10.0 * kUnit * max_value) * (1.0 + 4.0 * kUnit) + 6.0 * DBL_MIN;
+  evaluation_error_ = (max_error + 10.0 * unit_roundoff<double> * max_value) *
+                      (1.0 + 4.0 * unit_roundoff<double>)+6.0 * DBL_MIN;
 }
 
 std::optional<Sign> CoplanarityCubic::sign_on_unit() const {
   bool positive = true, negative = true;
-  for (const Coefficient& c : bernstein_) {
+  for (const Bounded& c : bernstein_) {
     positive = positive && c.value > c.error;
     negative = negative && -c.value > c.error;
   }
@@ -232,7 +225,7 @@ std::optional<Sign> CoplanarityCubic::sign_on_unit() const {
 std::optional<RootBrackets> CoplanarityCubic::roots_in_open_unit(Sign at0, Sign at1) const {
   Quad c;
   for (std::size_t k = 0; k < 4; ++k)
-    c[k] = {bernstein_[k].value, bernstein_[k].error};
+    c[k] = bernstein_[k];
   if (at0 == Sign::zero) c[0] = exact(0.0);
   if (at1 == Sign::zero) c[3] = exact(0.0);
   RootBrackets out;
@@ -294,7 +287,7 @@ RootBracket CoplanarityCubic::narrow(RootBracket r, double width) const {
     }
     // t is within the filter's uncertainty of the root: certify a few ulps on either side,
     // widening until both sides are certified or the bracket is reached.
-    double w = std::max(std::fabs(t) * 4.0 * kUnit, DBL_MIN);
+    double w = std::max(std::fabs(t) * 4.0 * unit_roundoff<double>, DBL_MIN);
     for (int k = 0; k < 10; ++k, w *= 8.0) {
       const double a = t - w, b = t + w;
       bool done = true;

@@ -67,7 +67,7 @@ Sign cross_dot_big(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
 // underflowed inner product is multiplied by a component of the other cross product, so the
 // guard is scaled by 1 + the sum of the cross products' component permanents.
 Sign cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
-  constexpr double kBound = 12.0 * detail::kEpsilon;
+  constexpr double kBound = 12.0 * unit_roundoff<double>;
   const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
   const double vx = p.x - a.x, vy = p.y - a.y, vz = p.z - a.z;
   const double wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;

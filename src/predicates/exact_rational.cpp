@@ -1,6 +1,5 @@
 #include "contain/predicates/exact_rational.h"
 
-#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -8,10 +7,15 @@
 #include <string>
 
 #include "contain/predicates/big_float.h"
+#include "predicates/double_order.h"
 
 namespace contain::predicates {
 namespace {
 
+using detail::from_key;
+using detail::key_distance;
+using detail::middle_key;
+using detail::order_key;
 using predicates::BigFloat;
 
 struct Integer {
@@ -56,17 +60,6 @@ int compare(double q, const BigFloat& den, const BigFloat& num) {
   return static_cast<int>((BigFloat(q) * den - num).sign());
 }
 
-std::int64_t order_key(double d) {
-  const auto bits = std::bit_cast<std::uint64_t>(d);
-  const auto magnitude = static_cast<std::int64_t>(bits & 0x7fffffffffffffffULL);
-  return (bits >> 63) != 0 ? -magnitude : magnitude;
-}
-
-double from_key(std::int64_t k) {
-  if (k >= 0) return std::bit_cast<double>(static_cast<std::uint64_t>(k));
-  return std::bit_cast<double>(static_cast<std::uint64_t>(-k) | 0x8000000000000000ULL);
-}
-
 }  // namespace
 
 std::optional<double> rational_to_double(std::string_view numerator, std::string_view denominator) {
@@ -100,10 +93,8 @@ std::optional<double> rational_to_double(std::string_view numerator, std::string
   std::int64_t lo = order_key(-DBL_MAX), hi = order_key(DBL_MAX);
   if (compare(from_key(lo), den, num) > 0 || compare(from_key(hi), den, num) < 0)
     return std::nullopt;
-  while (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo) > 1) {
-    const std::int64_t mid =
-        lo + static_cast<std::int64_t>(
-                 (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / 2);
+  while (key_distance(lo, hi) > 1) {
+    const std::int64_t mid = middle_key(lo, hi);
     const int c = compare(from_key(mid), den, num);
     if (c == 0) return from_key(mid);
     (c < 0 ? lo : hi) = mid;

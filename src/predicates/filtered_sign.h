@@ -1,16 +1,16 @@
 #pragma once
 // The sign of an expression written once over a number type T: the running-error filter first
-// (Err<double>: answers unless the value lies within its proven error bound, or is an exact
+// (Bounded: answers unless the value lies within its proven error bound, or is an exact
 // zero), then BigFloat (exact for every finite double).
 
 #include "contain/predicates/big_float.h"
-#include "predicates/running_error.h"
+#include "contain/predicates/bounded.h"
 
 namespace contain::predicates::detail {
 
 template <class F>
 [[nodiscard]] Sign filtered_sign(F&& f) {
-  const Err<double> fast = f(Err<double>{});
+  const Bounded fast = f(Bounded{});
   if (fast.decided()) return fast.sign();
   return f(BigFloat{}).sign();
 }

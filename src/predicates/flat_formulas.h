@@ -1,9 +1,9 @@
 #pragma once
 // The squared distance between two flats as a quotient N / D of polynomials in the input
 // doubles, and the coordinates of the closest points as quotients over the same D, written once
-// over the number type T: Err<double> (the filter), Err<long double> (the first rounding stage)
-// and BigFloat (exact). The table of formulas is in include/contain/predicates/squared_distance.h;
-// the closest points:
+// over the number type T: Bounded (the filter), BasicBounded<long double> (the first rounding
+// stage) and BigFloat (exact). The table of formulas is in
+// include/contain/predicates/squared_distance.h; the closest points:
 //   point p, line a b:     a + t (b - a),  t = ((p - a) . (b - a)) / |b - a|^2
 //   point p, plane a b c:  p - n s / |n|^2, s = (p - a) . n
 //   line a b, line c d:    a + s (b - a) and c + t (d - c), s = (r x v) . m / |m|^2,

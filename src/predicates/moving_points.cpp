@@ -1,5 +1,6 @@
 #include "contain/predicates/moving_points.h"
 
+#include "contain/predicates/unit_roundoff.h"
 #include "predicates/expansion.h"
 
 #include <algorithm>
@@ -108,19 +109,12 @@ Polynomial exact_polynomial(const MovingPoints& m, MotionPolynomial p) {
 
 namespace {
 
-constexpr double kUnit = 0x1p-53;
-constexpr double kInflate = 1.0 + 8.0 * kUnit;
+constexpr double kInflate = 1.0 + 8.0 * unit_roundoff<double>;
 
 using Vec = std::array<double, 3>;
 
 int pair_index(int a, int b) {  // a < b, both in 0..3
   return a == 0 ? b - 1 : (a == 1 ? b + 1 : 5);
-}
-
-std::optional<Sign> decide(double value, double bound) {
-  if (value > bound) return Sign::positive;
-  if (-value > bound) return Sign::negative;
-  return std::nullopt;
 }
 
 }  // namespace
@@ -129,7 +123,7 @@ IntervalSigns::IntervalSigns(const MovingPoints& points, double lo, double hi) :
   // Any t in [lo, hi] lies within hi - lo of the (rounded) middle; hi - lo is rounded up.
   time_ = lo + 0.5 * (hi - lo);
   if (time_ < lo || time_ > hi) time_ = lo;
-  half_width_ = (hi - lo) * (1.0 + 4.0 * kUnit);
+  half_width_ = (hi - lo) * (1.0 + 4.0 * unit_roundoff<double>);
 }
 
 const IntervalSigns::Bounded3& IntervalSigns::difference(int a, int b) {
@@ -146,14 +140,13 @@ const IntervalSigns::Bounded3& IntervalSigns::difference(int a, int b) {
     const double dd = d1 - d0;
     const double e = d0 + time_ * dd;
     const auto k = static_cast<std::size_t>(c);
-    out.value[k] = e;
+    out[k].value = e;
     // |X1 - X0| <= (|dd| + u (|d0| + |d1|)) (1 + u); the roundings of d0, d1, dd, the product
     // and the sum at t_m <= 1 add at most u (|e| + 3 |d0| + 3 |dd| + 2 |d1|) (1 + 2u).
     const double a0 = std::fabs(d0), a1 = std::fabs(d1), ad = std::fabs(dd);
-    out.bound[k] =
-        (half_width_ * (ad + kUnit * (a0 + a1)) + 4.0 * kUnit * (std::fabs(e) + a0 + ad + a1)) *
-            (1.0 + 16.0 * kUnit) +
-        DBL_MIN;
+    out[k].error = (half_width_ * (ad + unit_roundoff<double> * (a0 + a1)) +
+                    4.0 * unit_roundoff<double> * (std::fabs(e) + a0 + ad + a1)) *
+                   (1.0 + 16.0 * unit_roundoff<double>)+DBL_MIN;
   }
   computed_ |= 1U << index;
   return out;
@@ -162,8 +155,8 @@ const IntervalSigns::Bounded3& IntervalSigns::difference(int a, int b) {
 IntervalSigns::Bounded3 IntervalSigns::vector(int from, int to) {
   if (from < to) return difference(from, to);
   Bounded3 d = difference(to, from);
-  for (double& v : d.value)
-    v = -v;
+  for (Bounded& v : d)
+    v.value = -v.value;
   return d;
 }
 
@@ -184,15 +177,16 @@ IntervalSigns::Bounded3 IntervalSigns::cross(int i, int j, int k) {
   Bounded3& out = crosses_[static_cast<std::size_t>(index)];
   if ((computed_ & (1U << (8 + index))) == 0) {
     const Bounded3 u = vector(a[0], a[1]), v = vector(a[0], a[2]);
-    const Vec& x = u.value;
-    const Vec& y = v.value;
-    out.value = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+    const Vec x{u[0].value, u[1].value, u[2].value}, y{v[0].value, v[1].value, v[2].value};
+    out[0].value = x[1] * y[2] - x[2] * y[1];
+    out[1].value = x[2] * y[0] - x[0] * y[2];
+    out[2].value = x[0] * y[1] - x[1] * y[0];
     Vec ax, ay, bx, by;
     for (std::size_t c = 0; c < 3; ++c) {
       ax[c] = std::fabs(x[c]);
       ay[c] = std::fabs(y[c]);
-      bx[c] = ax[c] + u.bound[c];
-      by[c] = ay[c] + v.bound[c];
+      bx[c] = ax[c] + u[c].error;
+      by[c] = ay[c] + v[c].error;
     }
     const auto permanent = [](const Vec& p, const Vec& q, std::size_t c) {
       const std::size_t c1 = (c + 1) % 3, c2 = (c + 2) % 3;
@@ -200,29 +194,31 @@ IntervalSigns::Bounded3 IntervalSigns::cross(int i, int j, int k) {
     };
     for (std::size_t c = 0; c < 3; ++c) {
       const double p0 = permanent(ax, ay, c), p1 = permanent(bx, by, c);
-      out.bound[c] = ((p1 - p0) + 16.0 * kUnit * (p1 + p0)) * kInflate + 2.0 * DBL_MIN;
+      out[c].error =
+          ((p1 - p0) + 16.0 * unit_roundoff<double> * (p1 + p0)) * kInflate + 2.0 * DBL_MIN;
     }
     computed_ |= 1U << (8 + index);
   }
   if (!odd) return out;
   Bounded3 r = out;
-  for (double& v : r.value)
-    v = -v;
+  for (Bounded& v : r)
+    v.value = -v.value;
   return r;
 }
 
 std::optional<Sign> IntervalSigns::dot_sign(const Bounded3& a, const Bounded3& b) {
   const double value =
-      (a.value[0] * b.value[0] + a.value[1] * b.value[1]) + a.value[2] * b.value[2];
+      (a[0].value * b[0].value + a[1].value * b[1].value) + a[2].value * b[2].value;
   double propagated = 0.0, magnitude = 0.0;
   for (std::size_t c = 0; c < 3; ++c) {
-    const double x = std::fabs(a.value[c]), y = std::fabs(b.value[c]);
-    propagated += (x * b.bound[c] + y * a.bound[c]) + a.bound[c] * b.bound[c];
+    const double x = std::fabs(a[c].value), y = std::fabs(b[c].value);
+    propagated += (x * b[c].error + y * a[c].error) + a[c].error * b[c].error;
     magnitude += x * y;
   }
   const double bound =
-      (propagated + 20.0 * kUnit * (propagated + magnitude)) * kInflate + 3.0 * DBL_MIN;
-  return decide(value, bound);
+      (propagated + 20.0 * unit_roundoff<double> * (propagated + magnitude)) * kInflate +
+      3.0 * DBL_MIN;
+  return certified_sign(Bounded{value, bound});  // bound > 0: no exact-zero shortcut
 }
 
 std::optional<Sign> IntervalSigns::sign(MotionPolynomial p) {

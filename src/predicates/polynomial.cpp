@@ -1,12 +1,13 @@
 #include "contain/predicates/polynomial.h"
 
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "contain/predicates/big_float.h"
+#include "predicates/double_order.h"
 #include "predicates/polynomial_state.h"
 
 namespace contain::predicates {
@@ -310,28 +311,10 @@ const detail::Coeffs& PolynomialAccess::coefficients(const Polynomial& p) {
 
 namespace {
 
-// Doubles in the order of the reals as 64-bit integers (-0.0 and 0.0 share 0), so that
-// bisection on them halves the count of doubles in between.
-std::int64_t order_key(double d) {
-  const auto bits = std::bit_cast<std::uint64_t>(d);
-  const auto magnitude = static_cast<std::int64_t>(bits & 0x7fffffffffffffffULL);
-  return (bits >> 63) != 0 ? -magnitude : magnitude;
-}
-
-double from_key(std::int64_t k) {
-  if (k >= 0) return std::bit_cast<double>(static_cast<std::uint64_t>(k));
-  return std::bit_cast<double>(static_cast<std::uint64_t>(-k) | 0x8000000000000000ULL);
-}
-
-// b - a for a <= b (it can exceed 2^63; the unsigned difference is exact).
-std::uint64_t key_distance(std::int64_t a, std::int64_t b) {
-  return static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a);
-}
-
-std::int64_t middle_key(std::int64_t a, std::int64_t b) {
-  // b - a can exceed 2^63; the unsigned difference is exact.
-  return a + static_cast<std::int64_t>(key_distance(a, b) / 2);
-}
+using detail::from_key;
+using detail::key_distance;
+using detail::middle_key;
+using detail::order_key;
 
 // An end of an isolating interval: an exact dyadic number and the doubles around it (equal
 // when it is a double). Bisection runs on doubles while a double lies strictly between the ends
@@ -409,6 +392,10 @@ RealRoot exact_root(const detail::Coeffs& p, double x) {
 
 std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
   assert(!p.is_zero() && lo <= hi);
+  if (std::optional<std::vector<RealRoot>> fast =
+          detail::filtered_real_roots(PolynomialAccess::coefficients(p), lo, hi)) {
+    return std::move(*fast);
+  }
   std::vector<RealRoot> out;
   detail::Coeffs sq = detail::squarefree(PolynomialAccess::coefficients(p));
   if (detail::degree_of(sq) < 1) return out;
@@ -441,6 +428,10 @@ RealRoot root_between(const Polynomial& p, double lo, double hi) {
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
+  if (const std::optional<Sign> fast =
+          detail::filtered_sign_at(PolynomialAccess::coefficients(q), root)) {
+    return *fast;
+  }
   // Sylvester: sum over the roots x of P in (lo, hi) of sign q(x) = Var(SRemS(P, P' q); lo, hi),
   // and P' q may be replaced by its remainder modulo P (the Cauchy index of P' q / P does not
   // change) scaled by a positive constant. One root lies in (lo, hi): its sign is the sum.
@@ -475,7 +466,7 @@ std::pair<double, double> bracket_by_doubles(const RealRoot& root) {
     } else if ((bm - s.hi).sign() != Sign::negative) {
       below = false;
     } else {
-      const Sign sm = detail::sign_at(s.p, bm);
+      const Sign sm = detail::sign_at_double(s.p, m);
       if (sm == Sign::zero) return {m, m};
       below = sm == s.sign_lo;
     }

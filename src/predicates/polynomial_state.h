@@ -3,6 +3,7 @@
 // the operations on them (pseudo-remainders, Sturm sequences, squarefree parts), for the other
 // exact stages of this layer (the motion predicates' fallbacks).
 
+#include <optional>
 #include <vector>
 
 #include "contain/predicates/big_float.h"
@@ -39,6 +40,17 @@ void trim(Coeffs& c);
 [[nodiscard]] std::vector<Coeffs> sturm_sequence(const Coeffs& p);
 /// Sign changes of the sequence's values at x, zeros skipped.
 [[nodiscard]] int variations(const std::vector<Coeffs>& seq, const BigFloat& x);
+
+// Filters in long double with error bounds (polynomial_filter.cpp): an answer is exact, nothing
+// means the bounds did not decide.
+/// The roots of p in [lo, hi] as `real_roots` gives them, when Descartes' rule on certified
+/// Bernstein coefficients isolates them all (simple roots, none at lo, hi or a subdivision point).
+[[nodiscard]] std::optional<std::vector<RealRoot>> filtered_real_roots(const Coeffs& p, double lo,
+                                                                       double hi);
+/// The sign of q at the root, certified over a bracket of doubles narrowed around it.
+[[nodiscard]] std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root);
+/// The exact sign of p at the double t: the filter first, then Horner in big numbers.
+[[nodiscard]] Sign sign_at_double(const Coeffs& p, double t);
 
 }  // namespace detail
 

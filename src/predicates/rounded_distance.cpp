@@ -10,19 +10,27 @@
 #include <limits>
 
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/bounded.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "predicates/flat_formulas.h"
-#include "predicates/running_error.h"
 
 namespace contain::predicates {
 
 namespace {
 
-using detail::Err;
 using LD = long double;
-using ErrLD = Err<LD>;
+// The stages below rely on the x87 extended format: a rounding midpoint of doubles (54
+// significant bits) is exact in LD, and products of up to six doubles neither overflow nor
+// underflow in it (15-bit exponent), so `Mag` carries no absolute error term. A long double
+// with a wider significand and exponent (IEEE binary128) keeps both properties.
+static_assert(
+    std::numeric_limits<LD>::digits >= 64 && std::numeric_limits<LD>::max_exponent >= 16384 &&
+        std::numeric_limits<LD>::min_exponent <= -16381,
+    "rounded_distance.cpp needs long double to be the 64-bit x87 extended format (or wider)");
+using ErrLD = BasicBounded<LD>;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr LD kU = ErrLD::u;
+constexpr LD kU = unit_roundoff<LD>;
 
 // Rounding boundaries of a candidate c: the midpoints to its neighbours. Beyond +-DBL_MAX the
 // boundary is DBL_MAX + 2^970 (half an ulp of DBL_MAX), where IEEE 754 starts rounding to
@@ -64,19 +72,20 @@ double even_of(double x, double y) {
 // Stage A: N, D with running error bounds in long double. Returns false when the bounds do not
 // settle both rounding boundaries of the candidate.
 bool sqrt_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
-  if (!std::isfinite(n.v) || !std::isfinite(n.e) || !std::isfinite(d.v) || !std::isfinite(d.e)) {
+  if (!std::isfinite(n.value) || !std::isfinite(n.error) || !std::isfinite(d.value) ||
+      !std::isfinite(d.error)) {
     return false;
   }
-  if (n.v == 0 && n.e == 0) {
+  if (n.value == 0 && n.error == 0) {
     out = 0.0;
     return true;
   }
-  if (!(d.v - d.e > 0) || !(n.v - n.e > 0)) return false;
+  if (!(d.value - d.error > 0) || !(n.value - n.error > 0)) return false;
   // Each bound passes through four roundings to nearest: (1 +- 8u) more than covers them.
-  const LD q_lo = (n.v - n.e) / (d.v + d.e) * (1 - 8 * kU);
-  const LD q_hi = (n.v + n.e) / (d.v - d.e) * (1 + 8 * kU);
+  const LD q_lo = (n.value - n.error) / (d.value + d.error) * (1 - 8 * kU);
+  const LD q_hi = (n.value + n.error) / (d.value - d.error) * (1 + 8 * kU);
   if (!std::isfinite(q_hi)) return false;
-  const double c = static_cast<double>(std::sqrt(n.v / d.v));
+  const double c = static_cast<double>(std::sqrt(n.value / d.value));
   if (c > 0) {
     const LD m = lower_mid(c);
     if (!(m * m * (1 + 4 * kU) < q_lo)) return false;
@@ -136,7 +145,8 @@ double sqrt_stage_b(const BigFloat& n, const BigFloat& d) {
 // u |x|, with |n / d| <= |x| (1 + u); the factor (1 + 16u) covers the roundings of the bound
 // itself.
 LD quotient_error(const ErrLD& n, const ErrLD& d, LD x) {
-  return ((n.e + std::fabs(x) * (1 + kU) * d.e) / (d.v - d.e) + kU * std::fabs(x)) * (1 + 16 * kU);
+  return ((n.error + std::fabs(x) * (1 + kU) * d.error) / (d.value - d.error) + kU * std::fabs(x)) *
+         (1 + 16 * kU);
 }
 
 // The double nearest to a value within `bound` of x, when both midpoints to the neighbours of
@@ -151,15 +161,16 @@ bool certify_nearest(LD x, LD bound, double& out) {
 }
 
 bool quotient_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
-  if (!std::isfinite(n.v) || !std::isfinite(n.e) || !std::isfinite(d.v) || !std::isfinite(d.e)) {
+  if (!std::isfinite(n.value) || !std::isfinite(n.error) || !std::isfinite(d.value) ||
+      !std::isfinite(d.error)) {
     return false;
   }
-  if (n.v == 0 && n.e == 0) {
+  if (n.value == 0 && n.error == 0) {
     out = 0.0;
     return true;
   }
-  if (!(d.v - d.e > 0)) return false;
-  const LD x = n.v / d.v;
+  if (!(d.value - d.error > 0)) return false;
+  const LD x = n.value / d.value;
   return certify_nearest(x, quotient_error(n, d, x), out);
 }
 
@@ -342,16 +353,16 @@ PointFlatTerms<T> point_flat_terms(Vec3 p, const Flat3& flat) {
 // ey of OFF / D (the bound of quotient_stage_a), x = base + sign y rounded once more (u |x|);
 // the factor (1 + 4u) covers the roundings of the bound. An offset exactly 0 leaves base.
 bool offset_stage_a(double base, double sign, const ErrLD& off, const ErrLD& d, double& out) {
-  if (!std::isfinite(off.v) || !std::isfinite(off.e) || !std::isfinite(d.v) ||
-      !std::isfinite(d.e)) {
+  if (!std::isfinite(off.value) || !std::isfinite(off.error) || !std::isfinite(d.value) ||
+      !std::isfinite(d.error)) {
     return false;
   }
-  if (off.v == 0 && off.e == 0) {
+  if (off.value == 0 && off.error == 0) {
     out = base;
     return true;
   }
-  if (!(d.v - d.e > 0)) return false;
-  const LD y = off.v / d.v;
+  if (!(d.value - d.error > 0)) return false;
+  const LD y = off.value / d.value;
   const LD x = static_cast<LD>(base) + static_cast<LD>(sign) * y;
   return certify_nearest(x, (quotient_error(off, d, y) + kU * std::fabs(x)) * (1 + 4 * kU), out);
 }

@@ -63,7 +63,7 @@ Sign side_of_line_big(const HalfPlane& half_plane, Vec2 p) {
 // with room for the rounding of the bound (docs/robustness.md, "Filters"). Products cannot be
 // amplified after underflowing, so the guard is added once.
 Sign side_of_plane(const Plane& h, Vec3 p) {
-  constexpr double kBound = 5.0 * detail::kEpsilon;
+  constexpr double kBound = 5.0 * unit_roundoff<double>;
   const double tx = h.a * p.x, ty = h.b * p.y, tz = h.c * p.z;
   const double value = ((tx + ty) + tz) + h.d;
   const double permanent = ((std::fabs(tx) + std::fabs(ty)) + std::fabs(tz)) + std::fabs(h.d);
@@ -75,7 +75,7 @@ Sign side_of_plane(const Plane& h, Vec3 p) {
 
 // Filter as side_of_plane with k = 3 roundings: bound 4 eps * permanent.
 Sign side_of_line(const HalfPlane& h, Vec2 p) {
-  constexpr double kBound = 4.0 * detail::kEpsilon;
+  constexpr double kBound = 4.0 * unit_roundoff<double>;
   const double tx = h.a * p.x, ty = h.b * p.y;
   const double value = (tx + ty) + h.c;
   const double permanent = (std::fabs(tx) + std::fabs(ty)) + std::fabs(h.c);

@@ -1,8 +1,8 @@
 #include "contain/predicates/squared_distance.h"
 
+#include "contain/predicates/bounded.h"
 #include "predicates/filtered_sign.h"
 #include "predicates/flat_formulas.h"
-#include "predicates/running_error.h"
 
 namespace contain::predicates {
 

@@ -16,14 +16,12 @@
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/plane.h"
 #include "contain/values/sphere.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates::detail {
-
-/// The unit roundoff of binary64, 2^-53.
-inline constexpr double kEpsilon = 0x1p-53;
 
 /// Added to every filter bound (scaled by the largest factor a product's rounding error can be
 /// multiplied by) so that the bounds stay sound when products underflow: a product's absolute

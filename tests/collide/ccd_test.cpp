@@ -235,6 +235,15 @@ TEST(CcdEdgeEdge, ZeroMotionIsTheStaticTest) {
   expect_ee(apart, std::nullopt);
 }
 
+// Coordinates of 1e300 next to 1e-300 (issue 24): the floating-point filters overflow, so the
+// exact stage decides, on big numbers of thousands of bits; its own filters keep that cheap.
+TEST(CcdEdgeEdge, HugeAndTinyCoordinatesHitAtTheExactTime) {
+  const CcdQuery q =
+      query({{1e300, 1e-300, 1e300}, {1, 0, -1}, {-1e-300, 1e300, 2e-300}, {-1e-300, 0, 2e-300}},
+            {{0, -1e-300, 1e-300}, {0, 1, 1e300}, {-1e-300, 1e-300, 3e300}, {3e300, 1, -1}});
+  expect_ee(q, 4.999999999999999e-301);
+}
+
 // ---- against the oracle ----------------------------------------------------------------------
 
 class Generator {
@@ -271,6 +280,16 @@ class Generator {
       double& c = axis == 0 ? q[i].x : (axis == 1 ? q[i].y : q[i].z);
       c = i < 4 ? z0 : z1;
     }
+    return q;
+  }
+  // Every coordinate one of a few values of wildly different magnitudes (1e300, 1e-300, 0, 1):
+  // the hostile queries of issue 24, exact coincidences included.
+  CcdQuery extremes() {
+    static constexpr double kValues[] = {1e300,  -1e300, 3e300, 1e-300, -1e-300,
+                                         2e-300, 0.0,    1.0,   -1.0};
+    CcdQuery q;
+    for (Vec3& p : q)
+      p = {kValues[integer(0, 8)], kValues[integer(0, 8)], kValues[integer(0, 8)]};
     return q;
   }
   // A query with a contact planted at a random time, then nudged by a few ulps.
@@ -371,6 +390,11 @@ TEST(CcdOracle, MixedMagnitudesEqualTheOracle) {
     }
     return q;
   });
+}
+
+TEST(CcdOracle, HugeAndTinyCoordinatesEqualTheOracle) {
+  Generator g(17);
+  run(40 / kScale + 4, [&](bool) { return g.extremes(); });
 }
 
 // ---- batches ---------------------------------------------------------------------------------

@@ -50,6 +50,35 @@ TEST(BigFloat, SumsDifferencesAndProductsOfDoublesHaveTheExactSign) {
   }
 }
 
+// Sums of doubles of every exponent are numbers of up to ~70 limbs, and their products of
+// hundreds: beyond the Karatsuba threshold, balanced and unbalanced.
+TEST(BigFloat, ProductsOfLongNumbersAreExact) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1070, 1020), terms(1, 40);
+  const auto draw = [&](BigFloat& big, mpq_class& exact) {
+    big = BigFloat();
+    exact = 0;
+    for (int k = terms(rng); k > 0; --k) {
+      const double d = std::ldexp(mantissa(rng), exponent(rng));
+      big = big + BigFloat(d);
+      exact += q(d);
+    }
+  };
+  for (int i = 0; i < 300; ++i) {
+    BigFloat a, b, c, d;
+    mpq_class qa, qb, qc, qd;
+    draw(a, qa);
+    draw(b, qb);
+    draw(c, qc);
+    draw(d, qd);
+    ASSERT_EQ((a * b - c * d).sign(), sign_of(qa * qb - qc * qd)) << "case " << i;
+    ASSERT_EQ(((a * b) * (c * d) - a * (b * (c * d))).sign(), Sign::zero) << "case " << i;
+    ASSERT_EQ(((a + b) * (a - b) - (a * a - b * b)).sign(), Sign::zero) << "case " << i;
+    ASSERT_EQ(((a * b) * c - (c * d)).sign(), sign_of(qa * qb * qc - qc * qd)) << "case " << i;
+  }
+}
+
 TEST(BigFloat, ComparisonIsExactWhereDoublesWouldRound) {
   const BigFloat one(1.0), tiny(DBL_TRUE_MIN), huge(1e308);
   EXPECT_LT(one, one + tiny);  // 1 + 2^-1074 rounds to 1 in double

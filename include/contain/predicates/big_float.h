@@ -6,7 +6,7 @@
 /// predicates for inputs whose exponents put expansion arithmetic at risk (|x| beyond
 /// 2^±(200..500), subnormals), the CSG neighbourhood analysis (signs of polynomials of degree up
 /// to 8 in the input doubles), clipping's crossing comparisons, and any new exact computation
-/// that the filtered predicates do not cover. Slow (heap digits, schoolbook multiplication):
+/// that the filtered predicates do not cover. Slow (heap digits; Karatsuba beyond 48 limbs):
 /// only for what a floating-point filter could not decide. Only signs and comparisons of these
 /// values should reach a decision, so code using them stays an exact predicate in the sense of
 /// docs/robustness.md.

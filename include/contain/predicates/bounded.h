@@ -1,77 +1,97 @@
 #pragma once
 /// \file
-/// Doubles with a proven error bound (running error analysis): the building block of filters
-/// for polynomials that are not worth a hand-derived static bound, such as the motion
-/// polynomials of continuous collision evaluated over an interval of time.
+/// Floating-point values with a proven error bound (running error analysis): the one
+/// value-with-error-bound type of contain. Filters written once over a number type (the distance
+/// predicates, their correct rounding), the motion polynomials of continuous collision over an
+/// interval of time, the half-space values of the clippers: anything that is not worth a
+/// hand-derived static bound.
 ///
-/// A `Bounded` holds a double `value` and a double `error` such that the exact real quantity it
-/// stands for lies in [value - error, value + error]. Every operation rounds its value once and
-/// adds to the error the propagated errors of its operands and a bound on its own rounding,
-/// computed so that the bound's own roundings never make it too small (derivation in
-/// docs/robustness.md, "Running error bounds"). `certified_sign` is the exact sign of the real
-/// quantity when the interval excludes zero. Overflow makes the error infinite or NaN and every
-/// sign uncertain, never wrong.
+/// A `BasicBounded<F>` holds a `value` and an `error` of type F such that the exact real quantity
+/// it stands for lies in [value - error, value + error]. `Bounded` (F = double) is the filter;
+/// F = long double (x87: 64-bit significand, 15-bit exponent, no polynomial of degree <= 16 in
+/// doubles overflows or underflows) is the finer stage of correct rounding. Reference: Higham,
+/// "Accuracy and Stability of Numerical Algorithms", 2nd ed., section 3.3; derivation in
+/// docs/robustness.md ("Running error bounds").
+///
+/// Each operation rounds `value` once (to nearest) and adds its own rounding error to the
+/// propagated ones, with u = unit_roundoff<F>:
+///   a +- b: e = (a.e + b.e + u |v|) (1 + 8u)                  (a sum never underflows inexactly)
+///   a * b : e = (|a.v| b.e + |b.v| a.e + a.e b.e + u |v| + t) (1 + 8u)
+/// t = 4 denorm_min<F> covers the absolute error of an underflowed product and the underflow of
+/// the bound's own products; (1 + 8u) >= 1 / (1 - u)^7 covers the roundings of the bound's own
+/// computation. A value computed exactly (exact operands and an exact sum, or a product with an
+/// exact zero factor) keeps error 0, so exact zeros are recognised without an exact stage.
+/// Overflow makes the value or the bound infinite or NaN: then no sign is certified, never a
+/// wrong one.
 
-#include <cfloat>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 
 namespace contain::predicates {
 
-struct Bounded {
-  double value = 0.0;
-  double error = 0.0;
+template <class F>
+struct BasicBounded {
+  F value = 0;
+  F error = 0;
+
+  static constexpr F grow = 1 + 8 * unit_roundoff<F>;
+  static constexpr F tiny = 4 * std::numeric_limits<F>::denorm_min();
+
+  constexpr BasicBounded() = default;
+  /// The double x, exactly.
+  explicit constexpr BasicBounded(double x) : value(static_cast<F>(x)) {}
+  constexpr BasicBounded(F v, F e) : value(v), error(e) {}
+
+  /// True when the sign of `value` is the sign of the exact quantity (and the bound is finite).
+  [[nodiscard]] bool decided() const {
+    return std::isfinite(value) && std::isfinite(error) && (error == 0 || std::fabs(value) > error);
+  }
+  /// The sign of `value` (the exact sign when `decided()`).
+  [[nodiscard]] Sign sign() const {
+    return value > 0 ? Sign::positive : (value < 0 ? Sign::negative : Sign::zero);
+  }
+
+  friend BasicBounded operator+(const BasicBounded& a, const BasicBounded& b) {
+    const F r = a.value + b.value;
+    // Exact operands and an exact sum keep error 0: for |a| >= |b| the difference r - a is
+    // computed exactly (Dekker's Fast-Two-Sum), for |b| >= |a| r - b is; so both tests pass only
+    // when no rounding happened.
+    if (a.error == 0 && b.error == 0 && r - a.value == b.value && r - b.value == a.value) {
+      return {r, 0};
+    }
+    return {r, (a.error + b.error + unit_roundoff<F> * std::fabs(r)) * grow};
+  }
+  friend BasicBounded operator-(const BasicBounded& a, const BasicBounded& b) {
+    return a + BasicBounded{-b.value, b.error};
+  }
+  friend BasicBounded operator-(const BasicBounded& a) { return {-a.value, a.error}; }
+  friend BasicBounded operator*(const BasicBounded& a, const BasicBounded& b) {
+    if ((a.error == 0 && a.value == 0) || (b.error == 0 && b.value == 0)) return {F(0), F(0)};
+    const F r = a.value * b.value;
+    return {r, (std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error +
+                unit_roundoff<F> * std::fabs(r) + tiny) *
+                   grow};
+  }
 };
 
-namespace detail {
-inline constexpr double kUnit = 0x1p-53;
-// Applied to every newly computed bound: covers the at most 7 roundings of its own computation,
-// each by a factor of at least (1 - u): (1 + 8u)(1 - u)^8 >= 1.
-inline constexpr double kInflate = 1.0 + 8.0 * kUnit;
-}  // namespace detail
+/// The filter's number: a double and its bound.
+using Bounded = BasicBounded<double>;
 
 /// The double x, exactly.
 [[nodiscard]] constexpr Bounded exact(double x) {
-  return {x, 0.0};
+  return Bounded(x);
 }
 
-/// |a + b - fl(a.v + b.v)| <= a.e + b.e + u |fl(a.v + b.v)|. A sum whose u |v| underflows is
-/// exact (both operands are multiples of 2^-1074 and the result has at most 53 bits), so sums
-/// need no underflow guard.
-[[nodiscard]] inline Bounded operator+(Bounded a, Bounded b) {
-  const double v = a.value + b.value;
-  return {v, ((a.error + b.error) + detail::kUnit * std::fabs(v)) * detail::kInflate};
-}
-
-[[nodiscard]] inline Bounded operator-(Bounded a, Bounded b) {
-  const double v = a.value - b.value;
-  return {v, ((a.error + b.error) + detail::kUnit * std::fabs(v)) * detail::kInflate};
-}
-
-[[nodiscard]] inline Bounded operator-(Bounded a) {
-  return {-a.value, a.error};
-}
-
-/// |ab - fl(a.v b.v)| <= |a.v| b.e + |b.v| a.e + a.e b.e + u |fl(a.v b.v)| + 2^-1075 (a product
-/// that underflows has an absolute error of at most half the smallest subnormal); DBL_MIN also
-/// covers the underflow of the bound's own products.
-[[nodiscard]] inline Bounded operator*(Bounded a, Bounded b) {
-  const double v = a.value * b.value;
-  const double e = ((std::fabs(a.value) * b.error + std::fabs(b.value) * a.error) +
-                    (a.error * b.error + detail::kUnit * std::fabs(v))) *
-                       detail::kInflate +
-                   DBL_MIN;
-  return {v, e};
-}
-
-/// The exact sign of the quantity when `value` is farther from 0 than `error`; nothing
-/// otherwise (also for NaN or infinite values and bounds).
-[[nodiscard]] inline std::optional<Sign> certified_sign(Bounded a) {
-  if (a.value > a.error) return Sign::positive;
-  if (-a.value > a.error) return Sign::negative;
-  return std::nullopt;
+/// The exact sign of the quantity when the bound certifies it (`value` farther from 0 than
+/// `error`, or an exact value); nothing otherwise (also for NaN or infinite values and bounds).
+template <class F>
+[[nodiscard]] std::optional<Sign> certified_sign(const BasicBounded<F>& a) {
+  if (!a.decided()) return std::nullopt;
+  return a.sign();
 }
 
 }  // namespace contain::predicates

@@ -17,6 +17,7 @@
 #include <array>
 #include <optional>
 
+#include "contain/predicates/bounded.h"
 #include "contain/predicates/moving_points.h"
 #include "contain/predicates/sign.h"
 
@@ -67,14 +68,10 @@ class CoplanarityCubic {
   [[nodiscard]] std::optional<Sign> sign_at(double t) const;
 
  private:
-  struct Coefficient {
-    double value = 0.0;
-    double error = 0.0;
-  };
   const MovingPoints& points_;
   MotionPolynomial p_;
   // Bernstein coefficients of 3 f: 3 D000, D100 + D010 + D001, D110 + D101 + D011, 3 D111.
-  std::array<Coefficient, 4> bernstein_{};
+  std::array<Bounded, 4> bernstein_{};
   double evaluation_error_ = 0.0;  // bound of `sign_at`'s evaluation, for every t in [0, 1]
 };
 

@@ -19,33 +19,25 @@
 #include <cmath>
 
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/bounded.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/side_of_plane.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/plane.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates {
 
-namespace detail {
-inline constexpr double kUnitRoundoff = 0x1p-53;  // eps of the bounds below
-}  // namespace detail
-
-/// A rounded value and a bound on its error.
-struct Approx {
-  double value = 0.0;
-  double error = 0.0;
-};
-
 /// A half-space a x + b y + c z + d >= 0.
 struct PlaneFunction {
   Plane plane;
   [[nodiscard]] Sign side(Vec3 p) const { return side_of_plane(plane, p); }
-  [[nodiscard]] Approx approx(Vec3 p) const {
+  [[nodiscard]] Bounded approx(Vec3 p) const {
     const double tx = plane.a * p.x, ty = plane.b * p.y, tz = plane.c * p.z;
     const double perm = ((std::fabs(tx) + std::fabs(ty)) + std::fabs(tz)) + std::fabs(plane.d);
-    return {((tx + ty) + tz) + plane.d, 8.0 * detail::kUnitRoundoff * perm + 4.0 * DBL_MIN};
+    return {((tx + ty) + tz) + plane.d, 8.0 * unit_roundoff<double> * perm + 4.0 * DBL_MIN};
   }
   [[nodiscard]] BigFloat exact(Vec3 p) const {
     return BigFloat(plane.a) * BigFloat(p.x) + BigFloat(plane.b) * BigFloat(p.y) +
@@ -57,10 +49,10 @@ struct PlaneFunction {
 struct LineFunction {
   HalfPlane line;
   [[nodiscard]] Sign side(Vec2 p) const { return side_of_line(line, p); }
-  [[nodiscard]] Approx approx(Vec2 p) const {
+  [[nodiscard]] Bounded approx(Vec2 p) const {
     const double tx = line.a * p.x, ty = line.b * p.y;
     const double perm = (std::fabs(tx) + std::fabs(ty)) + std::fabs(line.c);
-    return {(tx + ty) + line.c, 8.0 * detail::kUnitRoundoff * perm + 4.0 * DBL_MIN};
+    return {(tx + ty) + line.c, 8.0 * unit_roundoff<double> * perm + 4.0 * DBL_MIN};
   }
   [[nodiscard]] BigFloat exact(Vec2 p) const {
     return BigFloat(line.a) * BigFloat(p.x) + BigFloat(line.b) * BigFloat(p.y) + BigFloat(line.c);
@@ -72,9 +64,9 @@ struct EdgeFunction {
   Vec2 p;
   Vec2 q;
   [[nodiscard]] Sign side(Vec2 v) const { return orient2d(p, q, v); }
-  [[nodiscard]] Approx approx(Vec2 v) const {
+  [[nodiscard]] Bounded approx(Vec2 v) const {
     const double l = (q.x - p.x) * (v.y - p.y), r = (q.y - p.y) * (v.x - p.x);
-    return {l - r, 8.0 * detail::kUnitRoundoff * (std::fabs(l) + std::fabs(r)) + 4.0 * DBL_MIN};
+    return {l - r, 8.0 * unit_roundoff<double> * (std::fabs(l) + std::fabs(r)) + 4.0 * DBL_MIN};
   }
   [[nodiscard]] BigFloat exact(Vec2 v) const {
     return (BigFloat(q.x) - BigFloat(p.x)) * (BigFloat(v.y) - BigFloat(p.y)) -
@@ -87,7 +79,7 @@ struct EdgeFunction {
 struct FaceFunction {
   Triangle3 face;
   [[nodiscard]] Sign side(Vec3 p) const { return orient3d(face.a, face.c, face.b, p); }
-  [[nodiscard]] Approx approx(Vec3 p) const {
+  [[nodiscard]] Bounded approx(Vec3 p) const {
     const Vec3 u = face.c - face.a, w = face.b - face.a, r = p - face.a;
     const double nx1 = u.y * w.z, nx2 = u.z * w.y;
     const double ny1 = u.z * w.x, ny2 = u.x * w.z;
@@ -97,7 +89,7 @@ struct FaceFunction {
                         (std::fabs(ny1) + std::fabs(ny2)) * std::fabs(r.y) +
                         (std::fabs(nz1) + std::fabs(nz2)) * std::fabs(r.z);
     const double guard = 4.0 * DBL_MIN * (1.0 + std::fabs(r.x) + std::fabs(r.y) + std::fabs(r.z));
-    return {value, 16.0 * detail::kUnitRoundoff * perm + guard};
+    return {value, 16.0 * unit_roundoff<double> * perm + guard};
   }
   [[nodiscard]] BigFloat exact(Vec3 p) const {
     const BigFloat ux = BigFloat(face.c.x) - BigFloat(face.a.x),
@@ -115,16 +107,15 @@ struct FaceFunction {
 /// sign(x1 y1 - x2 y2) for approximations of four values, falling back to `exact()` (which must
 /// return the exact BigFloat of the expression) when the filter cannot decide.
 template <class Exact>
-[[nodiscard]] Sign sign_of_product_difference(const Approx& x1, const Approx& y1, const Approx& x2,
-                                              const Approx& y2, Exact exact) {
+[[nodiscard]] Sign sign_of_product_difference(const Bounded& x1, const Bounded& y1,
+                                              const Bounded& x2, const Bounded& y2, Exact exact) {
   const double p1 = x1.value * y1.value, p2 = x2.value * y2.value;
   const double diff = p1 - p2;
   const double error =
       (std::fabs(x1.value) * y1.error + x1.error * std::fabs(y1.value) + x1.error * y1.error +
        std::fabs(x2.value) * y2.error + x2.error * std::fabs(y2.value) + x2.error * y2.error +
-       3.0 * detail::kUnitRoundoff * (std::fabs(p1) + std::fabs(p2))) *
-          (1.0 + 16.0 * detail::kUnitRoundoff) +
-      8.0 * DBL_MIN;
+       3.0 * unit_roundoff<double> * (std::fabs(p1) + std::fabs(p2))) *
+      (1.0 + 16.0 * unit_roundoff<double>)+8.0 * DBL_MIN;
   if (std::isfinite(diff) && std::isfinite(error)) {
     if (diff > error) return Sign::positive;
     if (-diff > error) return Sign::negative;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "contain/predicates/bounded.h"
 #include "contain/predicates/polynomial.h"
 #include "contain/predicates/sign.h"
 #include "contain/values/vec.h"
@@ -59,9 +60,7 @@ class IntervalSigns {
   [[nodiscard]] std::optional<Sign> sign(MotionPolynomial p);
 
  private:
-  struct Bounded3 {
-    std::array<double, 3> value{}, bound{};
-  };
+  using Bounded3 = std::array<Bounded, 3>;  // a vector, each coordinate with its bound
   [[nodiscard]] const Bounded3& difference(int a, int b);  // P_b - P_a, a < b
   [[nodiscard]] Bounded3 vector(int from, int to);         // P_to - P_from
   [[nodiscard]] Bounded3 cross(int i, int j, int k);       // (P_j - P_i) x (P_k - P_i)

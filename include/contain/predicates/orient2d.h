@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates {
@@ -36,8 +37,7 @@ namespace detail {
 // makes the bound infinite or NaN, and then both comparisons fail. Contraction into FMAs only
 // removes roundings, so the bound holds with or without it.
 inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c) {
-  constexpr double kEps = 0x1p-53;
-  constexpr double kBound = (3.0 + 32.0 * kEps) * kEps;
+  constexpr double kBound = (3.0 + 32.0 * unit_roundoff<double>)*unit_roundoff<double>;
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates {
@@ -32,8 +33,7 @@ namespace detail {
 // underflowed 2x2 product is multiplied by one z difference, so the guard DBL_MIN is scaled by
 // 1 + |adz| + |bdz| + |cdz|. Overflow makes the bound infinite or NaN and the comparisons fail.
 inline Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  constexpr double kEps = 0x1p-53;
-  constexpr double kBound = (7.0 + 64.0 * kEps) * kEps;
+  constexpr double kBound = (7.0 + 64.0 * unit_roundoff<double>)*unit_roundoff<double>;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const double adz = a.z - d.z, bdz = b.z - d.z, cdz = c.z - d.z;

@@ -8,6 +8,7 @@
 
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates {
@@ -48,7 +49,7 @@ class Orient3dPlane {
     // DBL_MIN (1 + |dx| + |dy| + |dz|). Overflow makes the bound inf or NaN: both tests fail.
     // The sign is formed without branching on it (random input makes such branches
     // unpredictable); only the rare undecided case branches.
-    constexpr double kBound = 9.0 * 0x1p-53;
+    constexpr double kBound = 9.0 * unit_roundoff<double>;
     const double dx = d.x - a_.x, dy = d.y - a_.y, dz = d.z - a_.z;
     const double det = (nx_ * dx + ny_ * dy) + nz_ * dz;
     const double adx = std::fabs(dx), ady = std::fabs(dy), adz = std::fabs(dz);

@@ -12,6 +12,7 @@
 
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/sign.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/vec.h"
 
 namespace contain::predicates {
@@ -88,7 +89,7 @@ class Orient3dSet {
     // or more could overflow a product (an infinite determinant would pass a finite bound):
     // then the bound is infinite and the exact stages answer.
     const double dx = hi_x - lo_x, dy = hi_y - lo_y, dz = hi_z - lo_z;
-    constexpr double kBound = 50.0 * 0x1p-53;
+    constexpr double kBound = 50.0 * unit_roundoff<double>;
     errbound_ = std::max(dx, std::max(dy, dz)) < 0x1p340
                     ? kBound * (dx * dy * dz) + DBL_MIN * (1.0 + dx + dy + dz)
                     : INFINITY;
