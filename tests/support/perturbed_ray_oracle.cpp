@@ -1,4 +1,4 @@
-#include "inside/mesh_oracle.h"
+#include "support/perturbed_ray_oracle.h"
 
 #include <gmpxx.h>
 

@@ -1,4 +1,4 @@
-#include "collide/tri_tri_oracle.h"
+#include "support/tri_tri_oracle.h"
 
 #include <array>
 
