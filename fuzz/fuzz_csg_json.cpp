@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   auto solid = inside::CsgSolid::prepare(*tree);
   if (!solid) return 0;
-  auto complement = inside::CsgSolid::prepare(inside::Csg::complement(*tree));
+  auto complement = inside::CsgSolid::prepare(Csg::complement(*tree));
   FUZZ_CHECK(complement.ok());
   for (const Vec3 p : {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0.5, -0.25, 2}, Vec3{-3, 7, 1e-300}}) {
     const Location a = solid->locate(p);

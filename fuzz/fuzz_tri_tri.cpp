@@ -4,10 +4,10 @@
 // (a different route: edges against triangles in exact rationals), is symmetric in the two
 // triangles, does not depend on the order of the corners, and the 3D test on triangles in the
 // plane z = 0 agrees with the 2D test.
-#include "collide/tri_tri_oracle.h"
 #include "contain/collide/tri_tri.h"
 #include "contain/collide/tri_tri_2d.h"
 #include "fuzz_support.h"
+#include "support/tri_tri_oracle.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace contain;

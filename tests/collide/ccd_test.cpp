@@ -12,15 +12,10 @@
 #include <vector>
 
 #include "collide/ccd_oracle.h"
+#include "support/case_budget.h"
 
 namespace contain::collide {
 namespace {
-
-#ifdef NDEBUG
-constexpr int kScale = 1;
-#else
-constexpr int kScale = 10;  // unoptimised sanitizer builds run a tenth
-#endif
 
 CcdQuery query(std::initializer_list<Vec3> at0, std::initializer_list<Vec3> at1) {
   CcdQuery q{};
@@ -362,27 +357,27 @@ void run(int count, Make&& make) {
 
 TEST(CcdOracle, RandomQueriesEqualTheOracle) {
   Generator g(11);
-  run(2000 / kScale, [&](bool) { return g.random(); });
+  run(test::case_budget(2000, 10), [&](bool) { return g.random(); });
 }
 
 TEST(CcdOracle, NearlyTouchingQueriesEqualTheOracle) {
   Generator g(12);
-  run(1500 / kScale, [&](bool vf) { return g.nudged(vf); });
+  run(test::case_budget(1500, 10), [&](bool vf) { return g.nudged(vf); });
 }
 
 TEST(CcdOracle, ExactlyDegenerateLatticeQueriesEqualTheOracle) {
   Generator g(13);
-  run(2000 / kScale, [&](bool) { return g.lattice(2); });
+  run(test::case_budget(2000, 10), [&](bool) { return g.lattice(2); });
 }
 
 TEST(CcdOracle, CoplanarMotionsEqualTheOracle) {
   Generator g(14);
-  run(600 / kScale, [&](bool) { return g.planar(3); });
+  run(test::case_budget(600, 10), [&](bool) { return g.planar(3); });
 }
 
 TEST(CcdOracle, MixedMagnitudesEqualTheOracle) {
   Generator g(15);
-  run(100 / kScale + 10, [&](bool) {
+  run(test::case_budget(100, 10) + 10, [&](bool) {
     CcdQuery q = g.lattice(4);
     for (Vec3& p : q) {
       p.x = std::ldexp(p.x, g.integer(-200, 200));
@@ -402,7 +397,7 @@ TEST(CcdOracle, HugeAndTinyCoordinatesEqualTheOracle) {
 TEST(CcdBatch, AnswersDoNotDependOnTheThreadCount) {
   Generator g(16);
   std::vector<CcdQuery> queries;
-  for (int i = 0; i < 20000 / kScale; ++i)
+  for (int i = 0; i < test::case_budget(20000, 10); ++i)
     queries.push_back(i % 3 == 0 ? g.lattice(2) : g.random());
   for (const bool vf : {true, false}) {
     std::vector<Impact> one(queries.size()), many(queries.size());

@@ -13,6 +13,7 @@
 #include "collide/test_meshes.h"
 #include "contain/collide/ccd.h"
 #include "contain/collide/mesh_mesh.h"
+#include "support/case_budget.h"
 
 namespace contain::collide {
 namespace {
@@ -148,11 +149,7 @@ TEST(MovingMeshPair, HierarchyEqualsTheBruteForceMinimumOnRandomMotions) {
   const Mesh a = test::box_mesh({-1, -1, -1}, {1, 1, 1});
   const Mesh b = test::box_mesh({-0.5, -0.3, -0.2}, {0.5, 0.3, 0.2});
   int hits = 0, runs = 0;
-#ifdef NDEBUG
-  const int count = 300;
-#else
-  const int count = 40;
-#endif
+  const int count = test::reduced_cases ? 40 : 300;  // support/case_budget.h
   for (int i = 0; i < count; ++i) {
     const Motion ma{test::random_pose(rng, 2.0), test::random_pose(rng, 2.0)};
     const Motion mb{test::random_pose(rng, 2.0), test::random_pose(rng, 2.0)};

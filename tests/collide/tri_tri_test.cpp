@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "collide/tri_tri_oracle.h"
 #include "contain/collide/tri_tri_2d.h"
+#include "support/tri_tri_oracle.h"
 
 namespace contain::collide {
 namespace {

@@ -15,16 +15,11 @@
 #include "contain/inside/point_in_convex.h"
 #include "distance/mesh_oracle.h"
 #include "scenes/scenes.h"
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance {
 namespace {
-
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kDivisor = 1;
-#endif
 
 // A prism over a regular n-gon (radius r, height h), outward faces: convex, with coplanar
 // triangle pairs on its sides (ties between faces).
@@ -81,7 +76,7 @@ TEST(ConvexDistance, PointsMatchTheExactOracleWithTheExactSign) {
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> u(-2, 2);
   std::vector<Vec3> points;
-  for (int i = 0; i < 600 / kDivisor; ++i)
+  for (int i = 0; i < test::case_budget(600, 5); ++i)
     points.push_back({u(rng), u(rng), u(rng)});
   for (const Vec3& v : m.vertices)  // on vertices, on edge midpoints, on face centroids
     points.push_back(v);
@@ -186,7 +181,7 @@ TEST(ConvexConvex, RandomPosesMatchTheExactOracleAndTheMeshPair) {
   const ConvexDistance a = prepared(ma), b = prepared(mb);
   const MeshPairDistance meshes(ma, mb);
   int failures = 0;
-  for (const Transform& pose : scenes::random_poses(120 / kDivisor, 2.5, 43))
+  for (const Transform& pose : scenes::random_poses(test::case_budget(120, 5), 2.5, 43))
     if (failures < 5) check_pair(ma, mb, a, b, meshes, pose, failures);
   EXPECT_EQ(failures, 0);
 }

@@ -15,16 +15,11 @@
 #include "contain/distance/mesh_pair_distance.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
+#include "support/case_budget.h"
 #include "support/shared_corpus.h"
 
 namespace contain::distance {
 namespace {
-
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
 
 std::string slurp(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -70,7 +65,7 @@ TEST(DistanceCorpus, SignedDistanceSignsMatchTheExactInsideTruthAndWithinBracket
       const char* sign = d < 0 ? "in" : d > 0 ? "out" : "on";
       EXPECT_EQ(sign, expected) << "point " << i + 1 << " distance " << d;
       EXPECT_FALSE(std::signbit(d) && d == 0) << "point " << i + 1 << ": -0.0";
-      if (!kSanitized || i % 10 == 0) {
+      if (!test::reduced_cases || i % 10 == 0) {
         EXPECT_TRUE(brackets(mesh, ps[i], std::fabs(d))) << "point " << i + 1 << " " << d;
       }
       ++judged;
@@ -102,8 +97,8 @@ TEST(DistanceCorpus, MeshPairsAreAtDistanceZeroExactlyWhereTheSolidsMeet) {
   for (const auto& g : groups) {
     const std::string a_path = g["a"].get<std::string>(), b_path = g["b"].get<std::string>();
     // Under the sanitizers the constructed meshes only (the scanned models cost seconds there).
-    if (kSanitized && (a_path.find("mesh-cases/meshes/") == std::string::npos ||
-                       b_path.find("mesh-cases/meshes/") == std::string::npos)) {
+    if (test::reduced_cases && (a_path.find("mesh-cases/meshes/") == std::string::npos ||
+                                b_path.find("mesh-cases/meshes/") == std::string::npos)) {
       continue;
     }
     SCOPED_TRACE(g["name"].get<std::string>());
@@ -137,7 +132,7 @@ TEST(DistanceCorpus, MeshPairsAreAtDistanceZeroExactlyWhereTheSolidsMeet) {
       ++judged;
     }
   }
-  EXPECT_GT(judged, kSanitized ? 60 : 100);
+  EXPECT_GT(judged, test::reduced_cases ? 60 : 100);
 }
 
 }  // namespace

@@ -14,18 +14,13 @@
 
 #include "distance/mesh_oracle.h"
 #include "scenes/scenes.h"
+#include "support/case_budget.h"
 
 namespace contain::distance {
 namespace {
 
 using test::compare_with_oracle;
 using test::mesh_oracle;
-
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kDivisor = 1;
-#endif
 
 Mesh scaled(const Mesh& m, double s) {
   Mesh out = m;
@@ -180,7 +175,7 @@ int check_mesh(const Mesh& mesh, const std::vector<Vec3>& points, bool check_wit
 
 TEST(MeshDistance, ClosedTorusMatchesTheExactOracle) {
   const Mesh torus = scenes::torus(2.0, 0.7, 16, 10);
-  EXPECT_EQ(check_mesh(torus, probe_points(torus, 500 / kDivisor, 1), true), 0);
+  EXPECT_EQ(check_mesh(torus, probe_points(torus, test::case_budget(500, 5), 1), true), 0);
 }
 
 TEST(MeshDistance, LatticeCubeWithExactTiesKeepsTheLowestTriangle) {
@@ -199,13 +194,13 @@ TEST(MeshDistance, OpenMeshDistancesAreExactAndSignsComeFromTheWindingNumber) {
   const Mesh torus = open_torus();
   const MeshDistance prepared(torus);
   EXPECT_EQ(prepared.regime(), inside::MeshRegime::winding_number);
-  EXPECT_EQ(check_mesh(torus, probe_points(torus, 300 / kDivisor, 2), false), 0);
+  EXPECT_EQ(check_mesh(torus, probe_points(torus, test::case_budget(300, 5), 2), false), 0);
 }
 
 TEST(MeshDistance, DegenerateTrianglesAndFlippedDuplicatesAreHandledExactly) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const Mesh soup = degenerate_soup(seed);
-    EXPECT_EQ(check_mesh(soup, probe_points(soup, 400 / kDivisor, seed), true), 0);
+    EXPECT_EQ(check_mesh(soup, probe_points(soup, test::case_budget(400, 5), seed), true), 0);
   }
 }
 
@@ -215,7 +210,8 @@ TEST(MeshDistance, HugeAndTinyCoordinatesStayExact) {
     const double s = std::ldexp(1.0, k);
     const Mesh m = scaled(cube, s);
     std::vector<Vec3> points;
-    for (const Vec3& p : probe_points(cube, 60 / kDivisor, static_cast<std::uint64_t>(k + 2000)))
+    for (const Vec3& p :
+         probe_points(cube, test::case_budget(60, 5), static_cast<std::uint64_t>(k + 2000)))
       points.push_back(s * p);
     EXPECT_EQ(check_mesh(m, points, true), 0) << "scale 2^" << k;
   }
@@ -272,11 +268,11 @@ TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
   EXPECT_EQ(check_batch(lattice_cube(), grid), 0);
   // Inside the folds of an accordion and around it, vertices and points 1e-9 off included.
   const Mesh folds = accordion();
-  EXPECT_EQ(check_batch(folds, probe_points(folds, 800 / kDivisor, 21)), 0);
+  EXPECT_EQ(check_batch(folds, probe_points(folds, test::case_budget(800, 5), 21)), 0);
   // Degenerate triangles and flipped duplicates.
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const Mesh soup = degenerate_soup(seed);
-    EXPECT_EQ(check_batch(soup, probe_points(soup, 300 / kDivisor, seed + 40)), 0);
+    EXPECT_EQ(check_batch(soup, probe_points(soup, test::case_budget(300, 5), seed + 40)), 0);
   }
   // Far from the origin (the test's rounding margin grows with the coordinates) and scaled.
   const Mesh torus = scenes::torus(2.0, 0.7, 24, 12);
@@ -285,12 +281,12 @@ TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
     for (Vec3& v : m.vertices)
       v = v + Vec3{s * 1e6, -s * 3e5, s * 7.0};
     std::vector<Vec3> points;
-    for (const Vec3& p : probe_points(m, 250 / kDivisor, 33))
+    for (const Vec3& p : probe_points(m, test::case_budget(250, 5), 33))
       points.push_back(p);
     EXPECT_EQ(check_batch(m, points), 0) << "scale " << s;
   }
   // The same points in a shuffled order: the batch sorts them, the answers stay.
-  std::vector<Vec3> shuffled = probe_points(torus, 400 / kDivisor, 34);
+  std::vector<Vec3> shuffled = probe_points(torus, test::case_budget(400, 5), 34);
   std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(35));
   EXPECT_EQ(check_batch(torus, shuffled), 0);
 }
@@ -298,7 +294,7 @@ TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
 TEST(MeshDistance, BatchAnswersEqualSingleAnswersOnAnyThreadCount) {
   const Mesh torus = scenes::torus(2.0, 0.7, 32, 16);
   const MeshDistance prepared(torus);
-  const std::vector<Vec3> points = probe_points(torus, 20000 / kDivisor, 9);
+  const std::vector<Vec3> points = probe_points(torus, test::case_budget(20000, 5), 9);
   std::vector<Closest3> one(points.size()), two(points.size());
   prepared.query(points, one, {.signed_distance = true}, {.threads = 1});
   prepared.query(points, two, {.signed_distance = true}, {.threads = 2});
@@ -330,7 +326,7 @@ TEST(MeshDistance, EmptyMeshIsInfinitelyFarAndNonFinitePointsGetNaN) {
 TEST(MeshDistance, OneShotEqualsPrepared) {
   const Mesh torus = scenes::torus(2.0, 0.7, 16, 10);
   const MeshDistance prepared(torus);
-  for (const Vec3& p : probe_points(torus, 50 / kDivisor, 5)) {
+  for (const Vec3& p : probe_points(torus, test::case_budget(50, 5), 5)) {
     const Closest3 a = point_mesh(torus, p, {.signed_distance = true});
     const Closest3 b = prepared.query(p, {.signed_distance = true});
     EXPECT_EQ(a.distance, b.distance);

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "collide/tri_tri_oracle.h"
 #include "contain/values/box.h"
+#include "support/tri_tri_oracle.h"
 
 namespace contain::test {
 

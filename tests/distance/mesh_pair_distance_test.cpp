@@ -16,16 +16,11 @@
 #include "contain/predicates/rounded_distance.h"
 #include "distance/mesh_oracle.h"
 #include "scenes/scenes.h"
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance {
 namespace {
-
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kDivisor = 1;
-#endif
 
 // The flat pair's exact squared distance, from its definition (crossing pairs are 0).
 mpq_class flat_pair_distance(const predicates::FlatPair3& x) {
@@ -65,7 +60,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
   std::mt19937_64 rng(21);
   std::uniform_real_distribution<double> u(-1, 1);
   int failures = 0;
-  for (int i = 0; i < 3000 / kDivisor && failures < 10; ++i) {
+  for (int i = 0; i < test::case_budget(3000, 5) && failures < 10; ++i) {
     const bool lat = i % 2 == 0;
     auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Triangle3 s{pick(), pick(), pick()}, t{pick(), pick(), pick()};
@@ -91,7 +86,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
 TEST(ClosestFlats, SegmentPairsMatchTheExactOracleIn3DAnd2D) {
   std::mt19937_64 rng(22);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (int i = 0; i < 5000 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(5000, 5); ++i) {
     const bool lat = i % 2 == 0;
     auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Segment3 s{pick(), pick()}, t{pick(), pick()};
@@ -167,7 +162,7 @@ TEST(MeshPairDistance, RandomPosesOfTwoTorimatchTheExactOracle) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-2.5, 2.5), ang(0, 6.28);
   int failures = 0;
-  for (int i = 0; i < 24 / kDivisor && failures < 5; ++i)
+  for (int i = 0; i < test::case_budget(24, 5) && failures < 5; ++i)
     check_pose(pair, a, b, rotation(ang(rng), {u(rng), u(rng), 0.3 * u(rng)}), failures);
   EXPECT_EQ(failures, 0);
 }
@@ -181,7 +176,7 @@ TEST(MeshPairDistance, CrossingToriReportTheLowestMeetingPair) {
   const MeshPairDistance pair(a, b);
   int failures = 0, touching = 0;
   int i = 0;
-  for (Transform t : scenes::random_poses(10 / kDivisor + 2, 0.0, 23)) {
+  for (Transform t : scenes::random_poses(test::case_budget(10, 5) + 2, 0.0, 23)) {
     const double angle = 0.7 * i++;
     t.t = {1.35 * std::cos(angle), 1.35 * std::sin(angle), 0.0};
     if (pair.distance(t).contact == PairContact::touching) ++touching;
@@ -251,7 +246,7 @@ TEST(MeshPairDistance, RotatedPosesFarFromTheOriginWithGapsAtTheRoundingScale) {
   const MeshPairDistance pair(a, b);
   int failures = 0;
   int poses = 0;
-  for (Transform t : scenes::random_poses(12 / kDivisor + 2, 0.0, 17)) {
+  for (Transform t : scenes::random_poses(test::case_budget(12, 5) + 2, 0.0, 17)) {
     for (const double gap : {1e-9, 1e-11, 1e-13, 0.0}) {
       // B placed with its lowest x just beyond A's face x = far + 1, opposite A's middle.
       t.t = {0, far + 0.5, far + 0.5};

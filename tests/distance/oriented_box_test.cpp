@@ -15,6 +15,7 @@
 #include "contain/bvh/triangle_boxes.h"
 #include "distance/mesh_oracle.h"
 #include "scenes/scenes.h"
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance::detail {
@@ -211,11 +212,7 @@ int check_lower(const Mesh& a, const Mesh& b, const Transform& tb, int& positive
 
 // Random poses per case: one under the sanitizers, where the GMP oracle of every triangle pair
 // made this the longest test of the suite (86 s).
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kRandomPoses = 1;
-#else
-constexpr int kRandomPoses = 2;
-#endif
+constexpr int kRandomPoses = test::case_budget(2, 2);
 
 TEST(OrientedBoxLower, NeverExceedsTheExactDistanceOfTheTrianglesBelow) {
   int failures = 0;

@@ -14,16 +14,11 @@
 #include <vector>
 
 #include "scenes/scenes.h"
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance {
 namespace {
-
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kDivisor = CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kDivisor = 1;
-#endif
 
 struct OracleAnswer {
   mpq_class squared_distance;
@@ -120,9 +115,9 @@ std::vector<Vec2> probes(const std::vector<Ring>& rings, int count, std::uint64_
 
 TEST(RegionDistance, DemoPolygonWithHolesMatchesTheExactOracle) {
   const Polygon polygon = scenes::demo_polygon();
-  EXPECT_EQ(
-      check_region(polygon.rings, probes(polygon.rings, 2000 / kDivisor, 1), Fill::even_odd, true),
-      0);
+  EXPECT_EQ(check_region(polygon.rings, probes(polygon.rings, test::case_budget(2000, 5), 1),
+                         Fill::even_odd, true),
+            0);
 }
 
 TEST(RegionDistance, LatticeSquareWithHoleKeepsTheLowestEdgeOnTies) {
@@ -139,7 +134,7 @@ TEST(RegionDistance, OverlappingRingsUnderNonzeroAndZeroLengthEdges) {
   // Two overlapping squares (buried edges under nonzero), a ring with a repeated vertex.
   const std::vector<Ring> rings{{{0, 0}, {3, 0}, {3, 3}, {0, 3}},
                                 {{2, 1}, {5, 1}, {5, 1}, {5, 4}, {2, 4}}};
-  std::vector<Vec2> points = probes(rings, 600 / kDivisor, 3);
+  std::vector<Vec2> points = probes(rings, test::case_budget(600, 5), 3);
   for (int x = -2; x <= 12; ++x)
     for (int y = -2; y <= 10; ++y)
       points.push_back({0.5 * x, 0.5 * y});
@@ -149,14 +144,15 @@ TEST(RegionDistance, OverlappingRingsUnderNonzeroAndZeroLengthEdges) {
 
 TEST(RegionDistance, SpikyStarAndHugeAndTinyScales) {
   const Ring star = scenes::star_ring(200, {0.5, 0.5}, 0.1, 1.0, 7);
-  EXPECT_EQ(check_region({star}, probes({star}, 1000 / kDivisor, 4), Fill::even_odd, true), 0);
+  EXPECT_EQ(
+      check_region({star}, probes({star}, test::case_budget(1000, 5), 4), Fill::even_odd, true), 0);
   for (const int k : {-1000, -500, 500, 1000}) {
     const double s = std::ldexp(1.0, k);
     Ring scaled;
     for (const Vec2& v : star)
       scaled.push_back(s * v);
     std::vector<Vec2> points;
-    for (const Vec2& p : probes({star}, 200 / kDivisor / kDivisor, 5))
+    for (const Vec2& p : probes({star}, test::case_budget(200, 25), 5))
       points.push_back(s * p);
     EXPECT_EQ(check_region({scaled}, points, Fill::even_odd, true), 0) << "2^" << k;
   }

@@ -12,17 +12,14 @@
 #include <random>
 #include <vector>
 
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance::detail {
 namespace {
 
-// Sanitizer builds run a fifth of the points (tests/distance/CMakeLists.txt).
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kPoints = 100 / CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kPoints = 100;
-#endif
+// Sanitizer builds run a fifth of the points (support/case_budget.h).
+constexpr int kPoints = test::case_budget(100, 5);
 
 // A sphere-like closed surface of 2 * rings * segments triangles (curved patches, where the
 // oriented boxes are thin).

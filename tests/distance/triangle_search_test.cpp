@@ -10,17 +10,14 @@
 #include <cmath>
 #include <random>
 
+#include "support/case_budget.h"
 #include "support/exact_distance.h"
 
 namespace contain::distance::detail {
 namespace {
 
-// Sanitizer builds run a fifth of the cases (tests/distance/CMakeLists.txt).
-#ifdef CONTAIN_DISTANCE_CASE_DIVISOR
-constexpr int kCases = 20000 / CONTAIN_DISTANCE_CASE_DIVISOR;
-#else
-constexpr int kCases = 20000;
-#endif
+// Sanitizer builds run a fifth of the cases (support/case_budget.h).
+constexpr int kCases = test::case_budget(20000, 5);
 
 Vec3 scaled(Vec3 v, double s) {
   return {v.x * s, v.y * s, v.z * s};

@@ -9,9 +9,9 @@
 
 #include "contain/inside/point_in_mesh.h"
 #include "contain/shapes/mesh_validation.h"
-#include "inside/mesh_oracle.h"
 #include "inside/mesh_test_meshes.h"
 #include "scenes/scenes.h"
+#include "support/perturbed_ray_oracle.h"
 
 namespace contain::inside {
 namespace {

@@ -17,18 +17,14 @@
 
 #include "contain/predicates/sign.h"
 #include "contain/values/vec.h"
-
-#ifndef CONTAIN_PREDICATES_CASE_DIVISOR
-#define CONTAIN_PREDICATES_CASE_DIVISOR 1
-#endif
+#include "support/case_budget.h"
 
 namespace contain::test {
 
 /// The number of cases a test runs: `release` in an optimised build, a tenth of it under the
-/// sanitizers (tests/predicates/CMakeLists.txt sets the divisor).
+/// sanitizers (support/case_budget.h).
 [[nodiscard]] constexpr int cases(int release) {
-  return release / CONTAIN_PREDICATES_CASE_DIVISOR > 0 ? release / CONTAIN_PREDICATES_CASE_DIVISOR
-                                                       : 1;
+  return case_budget(release, 10);
 }
 
 /// A seeded source of the doubles the tests need.

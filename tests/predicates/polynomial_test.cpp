@@ -14,15 +14,11 @@
 #include <vector>
 
 #include "contain/predicates/big_float.h"
+#include "support/case_budget.h"
 #include "support/exact_polynomial.h"
 
 namespace contain::predicates {
 namespace {
-
-#ifndef CONTAIN_PREDICATES_CASE_DIVISOR
-#define CONTAIN_PREDICATES_CASE_DIVISOR 1
-#endif
-constexpr int kDivisor = CONTAIN_PREDICATES_CASE_DIVISOR;
 
 using test::operator+;
 using test::operator-;
@@ -94,7 +90,7 @@ void check(const Both& p, double lo, double hi, const std::vector<Both>& others)
 
 TEST(Polynomial, SignAtDoublesEqualsRationalEvaluation) {
   Random rnd(1);
-  for (int i = 0; i < 20000 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(20000, 10); ++i) {
     Both p = constant(rnd.any_magnitude());
     const int degree = rnd.integer(0, 6);
     for (int k = 0; k < degree; ++k)
@@ -165,7 +161,7 @@ TEST(Polynomial, RootsCloserThanADoubleApartAreSeparatedOnDyadicNumbers) {
 
 TEST(Polynomial, RandomPolynomialsAgreeWithTheOracle) {
   Random rnd(2);
-  for (int i = 0; i < 800 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(800, 10); ++i) {
     const int degree = rnd.integer(1, 4);
     Both p = constant(rnd.uniform(-1, 1));
     for (int k = 0; k < degree; ++k) {
@@ -192,7 +188,7 @@ TEST(Polynomial, RandomPolynomialsAgreeWithTheOracle) {
 
 TEST(Polynomial, SharedAndNearlySharedRootsAgreeWithTheOracle) {
   Random rnd(3);
-  for (int i = 0; i < 1000 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(1000, 10); ++i) {
     const double r = rnd.uniform(0.0, 1.0);
     const double s = rnd.uniform(0.0, 1.0);
     const int ulps = rnd.integer(-3, 3);
@@ -209,7 +205,7 @@ TEST(Polynomial, SharedAndNearlySharedRootsAgreeWithTheOracle) {
 
 TEST(Polynomial, MixedMagnitudeCoefficientsAgreeWithTheOracle) {
   Random rnd(4);
-  for (int i = 0; i < 250 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(250, 10); ++i) {
     Both p = constant(std::ldexp(1.0, rnd.integer(-1000, 1000)));
     for (int k = rnd.integer(1, 4); k > 0; --k)
       p = p * (variable() * constant(rnd.any_magnitude()) + constant(rnd.any_magnitude()));
@@ -224,7 +220,7 @@ TEST(Polynomial, ExactQuotientOfBigFloatsIsTheRationalQuotient) {
   // Products of random doubles divided by one of their factors (and by powers of two times an
   // odd factor), the divisions the subresultant sequences make.
   Random rnd(5);
-  for (int i = 0; i < 3000 / kDivisor; ++i) {
+  for (int i = 0; i < test::case_budget(3000, 10); ++i) {
     const double x = rnd.any_magnitude(), y = rnd.any_magnitude(), z = rnd.any_magnitude();
     const BigFloat bx(x), by(y), bz(z);
     const BigFloat product = bx * by * bz;

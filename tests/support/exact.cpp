@@ -14,19 +14,18 @@ Sign sign_of(const mpq_class& v) {
   return s > 0 ? Sign::positive : (s < 0 ? Sign::negative : Sign::zero);
 }
 
-namespace {
-
-QVec3 sub(const QVec3& a, const QVec3& b) {
+QVec3 qsub(const QVec3& a, const QVec3& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-QVec3 cross(const QVec3& a, const QVec3& b) {
+QVec3 qcross(const QVec3& a, const QVec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-mpq_class dot(const QVec3& a, const QVec3& b) {
+mpq_class qdot(const QVec3& a, const QVec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
-
-}  // namespace
+bool qzero(const QVec3& a) {
+  return a.x == 0 && a.y == 0 && a.z == 0;
+}
 
 Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const QVec2 qa = exact(a), qb = exact(b), qc = exact(c);
@@ -35,7 +34,7 @@ Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c) {
 
 Sign exact_orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const QVec3 qa = exact(a);
-  return sign_of(dot(cross(sub(exact(b), qa), sub(exact(c), qa)), sub(exact(d), qa)));
+  return sign_of(qdot(qcross(qsub(exact(b), qa), qsub(exact(c), qa)), qsub(exact(d), qa)));
 }
 
 Sign exact_side_of_plane(const Plane& plane, Vec3 p) {
@@ -49,9 +48,9 @@ Sign exact_side_of_line(const HalfPlane& half_plane, Vec2 p) {
 }
 
 Sign exact_side_of_sphere(const Sphere& sphere, Vec3 p) {
-  const QVec3 d = sub(exact(p), exact(sphere.center));
+  const QVec3 d = qsub(exact(p), exact(sphere.center));
   const mpq_class r(sphere.radius);
-  return sign_of(r * r - dot(d, d));
+  return sign_of(r * r - qdot(d, d));
 }
 
 Sign exact_side_of_circle(const Circle& circle, Vec2 p) {
@@ -61,8 +60,8 @@ Sign exact_side_of_circle(const Circle& circle, Vec2 p) {
 }
 
 Sign exact_cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
-  const QVec3 qa = exact(a), ab = sub(exact(b), qa);
-  return sign_of(dot(cross(ab, sub(exact(p), qa)), cross(ab, sub(exact(c), qa))));
+  const QVec3 qa = exact(a), ab = qsub(exact(b), qa);
+  return sign_of(qdot(qcross(ab, qsub(exact(p), qa)), qcross(ab, qsub(exact(c), qa))));
 }
 
 }  // namespace contain::test

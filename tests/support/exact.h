@@ -21,6 +21,13 @@ struct QVec3 {
 
 [[nodiscard]] QVec2 exact(Vec2 p);
 [[nodiscard]] QVec3 exact(Vec3 p);
+
+/// Vector arithmetic on exact points, shared by the oracles (each stays independent of the
+/// library, not of the others' arithmetic).
+[[nodiscard]] QVec3 qsub(const QVec3& a, const QVec3& b);
+[[nodiscard]] QVec3 qcross(const QVec3& a, const QVec3& b);
+[[nodiscard]] mpq_class qdot(const QVec3& a, const QVec3& b);
+[[nodiscard]] bool qzero(const QVec3& a);
 [[nodiscard]] Sign sign_of(const mpq_class& v);
 
 [[nodiscard]] Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c);

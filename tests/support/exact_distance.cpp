@@ -8,16 +8,6 @@
 
 namespace contain::test {
 
-QVec3 qsub(const QVec3& a, const QVec3& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-QVec3 qcross(const QVec3& a, const QVec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-mpq_class qdot(const QVec3& a, const QVec3& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
 namespace {
 
 QVec3 sub(const QVec3& a, const QVec3& b) {

@@ -14,11 +14,6 @@
 
 namespace contain::test {
 
-/// Vector arithmetic on exact points (named apart from the other oracles' private helpers).
-[[nodiscard]] QVec3 qsub(const QVec3& a, const QVec3& b);
-[[nodiscard]] QVec3 qcross(const QVec3& a, const QVec3& b);
-[[nodiscard]] mpq_class qdot(const QVec3& a, const QVec3& b);
-
 struct ExactClosest3 {
   mpq_class squared_distance;
   QVec3 point;

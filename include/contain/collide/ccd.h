@@ -67,8 +67,8 @@ struct Impact {
 /// contact set is 0 or a root of one of the inclusion polynomials. Contact at t = 0 gives 0.
 /// Stages: swept boxes, Bernstein signs of the cubic, root isolation and inclusion with
 /// certified error bounds (double, then double-double for the rounding), exact big numbers.
-/// Cost: tens of nanoseconds for disjoint boxes, ~0.2-1 us when the filters decide, tens of
-/// microseconds on exactly degenerate input. Thread safety: pure function.
+/// Cost: most queries end in the box or filter stages; exactly degenerate ones reach the big
+/// numbers (figures: docs/benchmarks.md). Thread safety: pure function.
 /// References: Provot 1997 (the coplanarity cubic); Brochu, Edwards, Bridson 2012 and Tang et al.
 /// 2014 (exact CCD); Wang et al. 2021 (the benchmark's semantics).
 [[nodiscard]] Impact vertex_face_ccd(const CcdQuery& query);

@@ -22,7 +22,7 @@ namespace contain::collide {
 /// bijection of their plane); a degenerate triangle (collinear or coincident vertices) as the
 /// segment or point it spans (segment against triangle: the section's edge-face test with
 /// orient3d; segment against segment; point on a triangle or segment).
-/// O(1): about 6-8 orient3d calls, ~20-40 ns on generic input.
+/// O(1): about 6-8 orient3d calls.
 [[nodiscard]] bool tri_tri_intersect(const Triangle3& a, const Triangle3& b);
 
 /// True when the closed segment `s` and the closed triangle `t` share a point (the section's

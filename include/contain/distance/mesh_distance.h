@@ -26,8 +26,7 @@ class TriangleSearch;
 struct MeshDistanceOptions {
   /// The hierarchy over the triangles: leaves of up to 8 triangles, a node weighed as three
   /// triangles (a step of the search bounds four boxes, about the cost of three triangles'
-  /// cheap tests; against the general defaults 4 and 1 this takes 7-8% off a query on the
-  /// armadillo and the 100k torus, with 34 steps and 86 triangles a query instead of 47 and 52).
+  /// cheap tests; the gain over the general defaults 4 and 1: docs/benchmarks.md).
   bvh::BuildOptions bvh{.max_leaf_items = 8, .node_cost = 3.0};
   /// The containment index that gives signed queries their sign.
   inside::MeshIndexOptions index{};

@@ -68,13 +68,6 @@
 
 namespace contain::inside {
 
-/// The types' old spellings, from before the tree moved to the shapes layer
-/// (docs/architecture.md).
-using shapes::Csg;
-using shapes::CsgLeaf;
-using shapes::CsgMesh;
-using shapes::CsgOp;
-
 /// A validated CSG tree flattened for queries (the prepared object). Immutable; locate() may be
 /// called from several threads at once, provided implicit leaves' functions allow it.
 class CsgSolid {

@@ -12,9 +12,6 @@
 
 namespace contain::inside {
 
-/// The type's old spelling, from before it moved to the shapes layer (docs/architecture.md).
-using shapes::ImplicitFunction;
-
 /// Where `p` lies relative to the closed ball. Exact: predicates::side_of_sphere decides the sign
 /// of r^2 - |p - c|^2 on the given doubles, so (3, 4, 0) is `boundary` of the ball of radius 5
 /// about the origin. A negative radius is taken as its absolute value (validated inputs never

@@ -12,7 +12,7 @@ namespace contain::predicates {
 /// The double equal to numerator / denominator, or nothing when that rational is not exactly a
 /// double (or a string is not an integer: optional sign, then decimal digits; or the
 /// denominator is zero). Any length of digits; exact (big-number comparisons q * den == num).
-/// Typically a microsecond; at most ~64 exact comparisons.
+/// At most ~64 exact comparisons.
 [[nodiscard]] std::optional<double> rational_to_double(std::string_view numerator,
                                                        std::string_view denominator);
 

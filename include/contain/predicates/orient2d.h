@@ -18,9 +18,8 @@ namespace contain::predicates {
 /// exact expansion arithmetic (Shewchuk 1997); inputs beyond 2^-480..2^500 in magnitude are first
 /// rescaled by a power of two, and only when their exponents spread too wide for that does exact
 /// big-number arithmetic decide. Valid for every finite double; NaN or infinite input is a
-/// precondition violation (validated types never hold it). Cost: ~2 ns when the filter answers,
-/// ~15-20 ns on exactly degenerate grid input, ~20-60 ns on near-degenerate input.
-/// The filter is inline (a dozen flops, most calls end here); the exact stages are not.
+/// precondition violation (validated types never hold it). The filter is inline (a dozen flops,
+/// most calls end here); the exact stages are not (their cost: docs/benchmarks.md).
 /// Rules and bounds: docs/robustness.md, "Predicates".
 [[nodiscard]] inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c);
 

@@ -17,8 +17,7 @@ namespace contain::predicates {
 /// Note: this is the opposite sign convention from Shewchuk's orient3d (and the same as CGAL's
 /// orientation). Filter, exact expansion fallback (expansion range 2^-300..2^330, inputs outside
 /// it rescaled by a power of two when their exponents allow) and big-number fallback, as
-/// `orient2d`. Cost: ~4 ns when the filter answers, ~70 ns on exactly coplanar grid input,
-/// ~300 ns on near-coplanar input. The filter is inline; the exact stages are not.
+/// `orient2d`. The filter is inline; the exact stages are not (their cost: docs/benchmarks.md).
 /// Rules and bounds: docs/robustness.md.
 [[nodiscard]] inline Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 

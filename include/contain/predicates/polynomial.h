@@ -12,8 +12,8 @@
 /// coplanarity cubic of moving points and the inclusion tests at its roots) is the first user;
 /// anything that needs signs of polynomials at algebraic numbers can use it.
 ///
-/// Cost: heap-allocated big numbers, microseconds to tens of microseconds per call for degrees
-/// up to ~8; meant as the exact fallback behind floating-point filters. Thread safety: values;
+/// Cost: heap-allocated big numbers (figures: docs/benchmarks.md); meant as the exact fallback
+/// behind floating-point filters. Thread safety: values;
 /// const calls may run concurrently. Reference: S. Basu, R. Pollack, M.-F. Roy, "Algorithms in
 /// Real Algebraic Geometry", 2nd ed., Springer 2006, sections 1.2 (signed remainder sequences),
 /// 2.2.2 (Sturm, Sylvester's theorem on Tarski queries) and 8.3 (pseudo-remainders).

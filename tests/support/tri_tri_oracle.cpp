@@ -1,4 +1,4 @@
-#include "collide/tri_tri_oracle.h"
+#include "support/tri_tri_oracle.h"
 
 #include <array>
 
@@ -9,59 +9,48 @@ namespace {
 
 using Q = mpq_class;
 
-QVec3 sub(const QVec3& a, const QVec3& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-QVec3 crs(const QVec3& a, const QVec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Q dt(const QVec3& a, const QVec3& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-bool is_zero(const QVec3& a) {
-  return a.x == 0 && a.y == 0 && a.z == 0;
-}
 bool eq(const QVec3& a, const QVec3& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
 bool point_on_segment(const QVec3& p, const QVec3& s0, const QVec3& s1) {
-  const QVec3 u = sub(s1, s0), w = sub(p, s0);
-  if (is_zero(u)) return eq(p, s0);
-  if (!is_zero(crs(w, u))) return false;
-  const Q t = dt(w, u);
-  return t >= 0 && t <= dt(u, u);
+  const QVec3 u = qsub(s1, s0), w = qsub(p, s0);
+  if (qzero(u)) return eq(p, s0);
+  if (!qzero(qcross(w, u))) return false;
+  const Q t = qdot(w, u);
+  return t >= 0 && t <= qdot(u, u);
 }
 
 bool seg_seg(const QVec3& s0, const QVec3& s1, const QVec3& t0, const QVec3& t1) {
-  const QVec3 u = sub(s1, s0), v = sub(t1, t0), w = sub(t0, s0);
-  if (is_zero(u)) return point_on_segment(s0, t0, t1);
-  if (is_zero(v)) return point_on_segment(t0, s0, s1);
-  const QVec3 n = crs(u, v);
-  if (dt(n, w) != 0) return false;  // skew
-  if (is_zero(n)) {                 // parallel
-    if (!is_zero(crs(w, u))) return false;
+  const QVec3 u = qsub(s1, s0), v = qsub(t1, t0), w = qsub(t0, s0);
+  if (qzero(u)) return point_on_segment(s0, t0, t1);
+  if (qzero(v)) return point_on_segment(t0, s0, s1);
+  const QVec3 n = qcross(u, v);
+  if (qdot(n, w) != 0) return false;  // skew
+  if (qzero(n)) {                     // parallel
+    if (!qzero(qcross(w, u))) return false;
     return point_on_segment(t0, s0, s1) || point_on_segment(t1, s0, s1) ||
            point_on_segment(s0, t0, t1) || point_on_segment(s1, t0, t1);
   }
-  const Q nn = dt(n, n);
-  const Q lambda = dt(crs(w, v), n) / nn, mu = dt(crs(w, u), n) / nn;
+  const Q nn = qdot(n, n);
+  const Q lambda = qdot(qcross(w, v), n) / nn, mu = qdot(qcross(w, u), n) / nn;
   return lambda >= 0 && lambda <= 1 && mu >= 0 && mu <= 1;
 }
 
 // p in the plane of the proper triangle (a, b, c) with normal n: inside the closed triangle?
 bool in_triangle(const QVec3& p, const QVec3& a, const QVec3& b, const QVec3& c, const QVec3& n) {
-  return dt(n, crs(sub(b, a), sub(p, a))) >= 0 && dt(n, crs(sub(c, b), sub(p, b))) >= 0 &&
-         dt(n, crs(sub(a, c), sub(p, c))) >= 0;
+  return qdot(n, qcross(qsub(b, a), qsub(p, a))) >= 0 &&
+         qdot(n, qcross(qsub(c, b), qsub(p, b))) >= 0 &&
+         qdot(n, qcross(qsub(a, c), qsub(p, c))) >= 0;
 }
 
 bool seg_tri(const QVec3& s0, const QVec3& s1, const std::array<QVec3, 3>& t) {
-  const QVec3 n = crs(sub(t[1], t[0]), sub(t[2], t[0]));
-  if (is_zero(n)) {
+  const QVec3 n = qcross(qsub(t[1], t[0]), qsub(t[2], t[0]));
+  if (qzero(n)) {
     return seg_seg(s0, s1, t[0], t[1]) || seg_seg(s0, s1, t[1], t[2]) ||
            seg_seg(s0, s1, t[2], t[0]);
   }
-  const Q d0 = dt(n, sub(s0, t[0])), d1 = dt(n, sub(s1, t[0]));
+  const Q d0 = qdot(n, qsub(s0, t[0])), d1 = qdot(n, qsub(s1, t[0]));
   if ((d0 > 0 && d1 > 0) || (d0 < 0 && d1 < 0)) return false;
   if (d0 == 0 && d1 == 0) {
     return in_triangle(s0, t[0], t[1], t[2], n) || in_triangle(s1, t[0], t[1], t[2], n) ||
@@ -69,7 +58,7 @@ bool seg_tri(const QVec3& s0, const QVec3& s1, const std::array<QVec3, 3>& t) {
            seg_seg(s0, s1, t[2], t[0]);
   }
   const Q lambda = d0 / (d0 - d1);
-  const QVec3 u = sub(s1, s0);
+  const QVec3 u = qsub(s1, s0);
   const QVec3 x{s0.x + lambda * u.x, s0.y + lambda * u.y, s0.z + lambda * u.z};
   return in_triangle(x, t[0], t[1], t[2], n);
 }

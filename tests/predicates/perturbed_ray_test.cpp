@@ -1,5 +1,5 @@
-// The exact ray-triangle decision of point in polyhedron (contain/predicates/perturbed_ray.h)
-// against the GMP oracle, on random and on constructed degenerate configurations.
+// The perturbed +x ray of point in polyhedron (contain/predicates/perturbed_ray.h) against the
+// GMP oracle, on random and on constructed degenerate configurations.
 
 #include "contain/predicates/perturbed_ray.h"
 
@@ -8,19 +8,19 @@
 #include <random>
 #include <vector>
 
-#include "inside/mesh_oracle.h"
+#include "support/perturbed_ray_oracle.h"
 
-namespace contain::inside {
+namespace contain::predicates {
 namespace {
 
 using test::oracle_on_triangle;
 using test::oracle_ray_crosses;
 
 bool crosses(const Triangle3& t, Vec3 q) {
-  return predicates::perturbed_ray_crosses(t.a, t.b, t.c, q);
+  return perturbed_ray_crosses(t.a, t.b, t.c, q);
 }
 
-TEST(MeshRay, RandomTrianglesAndPointsMatchTheExactOracle) {
+TEST(PerturbedRay, RandomTrianglesAndPointsMatchTheExactOracle) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int crossings = 0;
@@ -33,7 +33,7 @@ TEST(MeshRay, RandomTrianglesAndPointsMatchTheExactOracle) {
   EXPECT_GT(crossings, 100);
 }
 
-TEST(MeshRay, RaysThroughVerticesEdgesAndCoplanarTrianglesMatchTheExactOracle) {
+TEST(PerturbedRay, RaysThroughVerticesEdgesAndCoplanarTrianglesMatchTheExactOracle) {
   // Vertices on a small integer grid, query points on the half-integer grid: the rays run
   // through vertices, along edges and in the planes of triangles, over and over.
   std::mt19937_64 rng(12);
@@ -52,7 +52,7 @@ TEST(MeshRay, RaysThroughVerticesEdgesAndCoplanarTrianglesMatchTheExactOracle) {
   EXPECT_GT(crossings, 500);
 }
 
-TEST(MeshRay, ARayThroughASharedEdgeCrossesExactlyOneOfItsTwoTriangles) {
+TEST(PerturbedRay, ARayThroughASharedEdgeCrossesExactlyOneOfItsTwoTriangles) {
   // A square in the plane x = 1 split along its diagonal a-c.
   const Vec3 a{1, 0, 0}, b{1, 2, 0}, c{1, 2, 2}, d{1, 0, 2};
   for (double s : {0.25, 0.5, 1.0, 1.5}) {
@@ -61,7 +61,7 @@ TEST(MeshRay, ARayThroughASharedEdgeCrossesExactlyOneOfItsTwoTriangles) {
   }
 }
 
-TEST(MeshRay, ARayThroughAFanVertexCrossesExactlyOneTriangleOfTheFan) {
+TEST(PerturbedRay, ARayThroughAFanVertexCrossesExactlyOneTriangleOfTheFan) {
   // Six triangles around the centre (1, 1, 1) of a hexagon in the plane x = 1 (tilted fans too).
   for (double tilt : {0.0, 0.25, -1.0}) {
     const Vec3 centre{1, 1, 1};
@@ -81,28 +81,27 @@ TEST(MeshRay, ARayThroughAFanVertexCrossesExactlyOneTriangleOfTheFan) {
   }
 }
 
-TEST(MeshRay, TrianglesParallelToTheRayAreNeverCrossed) {
+TEST(PerturbedRay, TrianglesParallelToTheRayAreNeverCrossed) {
   const Triangle3 t{{0, 0, 0}, {4, 0, 0}, {0, 0, 4}};  // the plane y = 0 contains +x
   for (double z : {-1.0, 0.0, 1.0, 2.0})
     EXPECT_FALSE(crosses(t, {-1, 0, z}));
 }
 
-TEST(MeshRay, HitSideOnAGridPlaneIsTheLimitOfTheHitsAroundIt) {
+TEST(PerturbedRay, HitSideOnAGridPlaneIsTheLimitOfTheHitsAroundIt) {
   // A triangle through x = 2 at (y, z) = (1, 1): the hit of the line at (., 1, 1) is x = 2
   // exactly; the perturbed hit lies beyond or before x = 2 by the triangle's slope, consistently.
   const Vec3 a{2, 0, 0}, b{2, 3, 0}, c{2 + 3, 0, 3};  // x = 2 + z
-  const Sign s = predicates::projected_sign(a, b, c);
+  const Sign s = projected_sign(a, b, c);
   ASSERT_NE(s, Sign::zero);
-  EXPECT_TRUE(predicates::perturbed_line_hits(a, b, c, s, {0, 1, 1}));
+  EXPECT_TRUE(perturbed_line_hits(a, b, c, s, {0, 1, 1}));
   // x(e) = 2 + (1 + e^2) > 3 = m.x? At m.x = 3: hit exactly at 3 + e^2: beyond.
-  EXPECT_EQ(predicates::hit_side(a, b, c, s, {3, 1, 1}), 1);
-  EXPECT_EQ(predicates::hit_side(a, b, c, s, {3.0000000000000004, 1, 1}), -1);
+  EXPECT_EQ(hit_side(a, b, c, s, {3, 1, 1}), 1);
+  EXPECT_EQ(hit_side(a, b, c, s, {3.0000000000000004, 1, 1}), -1);
   // A triangle in the plane x = 3: the hit is at 3 exactly, whatever the perturbation.
-  EXPECT_EQ(
-      predicates::hit_side({3, 0, 0}, {3, 3, 0}, {3, 0, 3},
-                           predicates::projected_sign({3, 0, 0}, {3, 3, 0}, {3, 0, 3}), {3, 1, 1}),
-      0);
+  EXPECT_EQ(hit_side({3, 0, 0}, {3, 3, 0}, {3, 0, 3},
+                     projected_sign({3, 0, 0}, {3, 3, 0}, {3, 0, 3}), {3, 1, 1}),
+            0);
 }
 
 }  // namespace
-}  // namespace contain::inside
+}  // namespace contain::predicates

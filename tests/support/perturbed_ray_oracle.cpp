@@ -1,4 +1,4 @@
-#include "inside/mesh_oracle.h"
+#include "support/perturbed_ray_oracle.h"
 
 #include <gmpxx.h>
 
@@ -8,25 +8,6 @@
 
 namespace contain::test {
 namespace {
-
-struct Q3 {
-  mpq_class x, y, z;
-};
-Q3 q3(Vec3 v) {
-  return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)};
-}
-Q3 sub(const Q3& a, const Q3& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Q3 cross(const Q3& a, const Q3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-mpq_class dot(const Q3& a, const Q3& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-bool is_zero(const Q3& a) {
-  return a.x == 0 && a.y == 0 && a.z == 0;
-}
 
 const mpq_class& epsilon() {
   static const mpq_class e = [] {
@@ -38,15 +19,15 @@ const mpq_class& epsilon() {
 }
 
 // 2D orientation in (y, z) of a, b, p.
-mpq_class orient_yz(const Q3& a, const Q3& b, const mpq_class& py, const mpq_class& pz) {
+mpq_class orient_yz(const QVec3& a, const QVec3& b, const mpq_class& py, const mpq_class& pz) {
   return (b.y - a.y) * (pz - a.z) - (b.z - a.z) * (py - a.y);
 }
 
 // q on the closed segment [a, b] (exact).
-bool on_segment(const Q3& a, const Q3& b, const Q3& q) {
-  if (!is_zero(cross(sub(b, a), sub(q, a)))) return false;
-  const mpq_class t = dot(sub(q, a), sub(b, a));
-  return t >= 0 && t <= dot(sub(b, a), sub(b, a));
+bool on_segment(const QVec3& a, const QVec3& b, const QVec3& q) {
+  if (!qzero(qcross(qsub(b, a), qsub(q, a)))) return false;
+  const mpq_class t = qdot(qsub(q, a), qsub(b, a));
+  return t >= 0 && t <= qdot(qsub(b, a), qsub(b, a));
 }
 
 }  // namespace
@@ -58,7 +39,7 @@ bool oracle_ray_crosses(const Triangle3& t, Vec3 q) {
       q.z < std::min({t.a.z, t.b.z, t.c.z}) || q.z > std::max({t.a.z, t.b.z, t.c.z})) {
     return false;
   }
-  const Q3 a = q3(t.a), b = q3(t.b), c = q3(t.c), p = q3(q);
+  const QVec3 a = exact(t.a), b = exact(t.b), c = exact(t.c), p = exact(q);
   const mpq_class& e = epsilon();
   const mpq_class py = p.y + e, pz = p.z + e * e;
   const mpq_class s = orient_yz(a, b, c.y, c.z);
@@ -68,7 +49,7 @@ bool oracle_ray_crosses(const Triangle3& t, Vec3 q) {
   const bool inside = s > 0 ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 < 0 && o2 < 0 && o3 < 0);
   if (!inside) return false;
   // n . (r - a) = 0 on the line r = (x, py, pz): x = a.x - (n.y (py - a.y) + n.z (pz - a.z)) / n.x
-  const Q3 n = cross(sub(b, a), sub(c, a));
+  const QVec3 n = qcross(qsub(b, a), qsub(c, a));
   const mpq_class x = a.x - (n.y * (py - a.y) + n.z * (pz - a.z)) / n.x;
   return x > p.x;
 }
@@ -79,12 +60,13 @@ bool oracle_on_triangle(const Triangle3& t, Vec3 q) {
       q.z < std::min({t.a.z, t.b.z, t.c.z}) || q.z > std::max({t.a.z, t.b.z, t.c.z})) {
     return false;
   }
-  const Q3 a = q3(t.a), b = q3(t.b), c = q3(t.c), p = q3(q);
-  const Q3 n = cross(sub(b, a), sub(c, a));
-  if (is_zero(n)) return on_segment(a, b, p) || on_segment(b, c, p) || on_segment(c, a, p);
-  if (dot(n, sub(p, a)) != 0) return false;
-  return dot(cross(sub(b, a), sub(p, a)), n) >= 0 && dot(cross(sub(c, b), sub(p, b)), n) >= 0 &&
-         dot(cross(sub(a, c), sub(p, c)), n) >= 0;
+  const QVec3 a = exact(t.a), b = exact(t.b), c = exact(t.c), p = exact(q);
+  const QVec3 n = qcross(qsub(b, a), qsub(c, a));
+  if (qzero(n)) return on_segment(a, b, p) || on_segment(b, c, p) || on_segment(c, a, p);
+  if (qdot(n, qsub(p, a)) != 0) return false;
+  return qdot(qcross(qsub(b, a), qsub(p, a)), n) >= 0 &&
+         qdot(qcross(qsub(c, b), qsub(p, b)), n) >= 0 &&
+         qdot(qcross(qsub(a, c), qsub(p, c)), n) >= 0;
 }
 
 Location oracle_locate(const Mesh& mesh, Vec3 q) {
