@@ -389,7 +389,7 @@ TEST(CcdOracle, MixedMagnitudesEqualTheOracle) {
 
 TEST(CcdOracle, HugeAndTinyCoordinatesEqualTheOracle) {
   Generator g(17);
-  run(40 / kScale + 4, [&](bool) { return g.extremes(); });
+  run(test::case_budget(40, 10) + 4, [&](bool) { return g.extremes(); });
 }
 
 // ---- batches ---------------------------------------------------------------------------------
