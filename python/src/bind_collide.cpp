@@ -31,7 +31,7 @@ exact_tests count the work done.
 )doc")
       .def_readonly("intersect", &collide::Contact::intersect, "True when the shapes meet.")
       .def_property_readonly(
-          "witness", [](const collide::Contact& c) { return to_string(c.witness); },
+          "witness", [](const collide::Contact& c) { return collide::to_string(c.witness); },
           "What proves it: 'none', 'triangles', 'edges', 'vertex_of_a_in_b', 'vertex_of_b_in_a'.")
       .def_readonly("triangle_a", &collide::Contact::triangle_a,
                     "The triangle (2D: edge) of A of the witness pair, else -1.")
@@ -46,7 +46,7 @@ exact_tests count the work done.
       .def("__bool__", [](const collide::Contact& c) { return c.intersect; })
       .def("__repr__", [](const collide::Contact& c) {
         return std::string("contain.Contact(intersect=") + (c.intersect ? "True" : "False") +
-               ", witness='" + to_string(c.witness) + "')";
+               ", witness='" + collide::to_string(c.witness) + "')";
       });
 
   py::class_<collide::MeshPair>(m, "MeshPair", R"doc(

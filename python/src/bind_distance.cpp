@@ -145,7 +145,7 @@ py::dict pair_answers(const std::vector<distance::PairDistance3>& r) {
     pb[3 * i + 2] = r[i].point_b.z;
     ta[i] = r[i].triangle_a;
     tb[i] = r[i].triangle_b;
-    contact.append(to_string(r[i].contact));
+    contact.append(distance::to_string(r[i].contact));
   }
   const auto n = static_cast<py::ssize_t>(r.size());
   py::dict out;

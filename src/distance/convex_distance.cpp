@@ -299,7 +299,7 @@ PairDistance3 convex_convex(const ConvexDistance& a, const ConvexDistance& b,
   if (state != Opening::narrowed) return out;
   (void)collect_contenders(pair, buffers.left, -kInf, out, buffers.contenders);
   const predicates::FlatPair3 winner = closest_contender(pair, buffers.contenders, out);
-  out.contact = predicates::flats_meet(winner) ? PairContact::touching : PairContact::separate;
+  out.contact = predicates::flats_meet(winner) ? PairContact::triangles : PairContact::none;
   out.distance = predicates::rounded_distance(winner);
   const predicates::ClosestPoints3 points = predicates::rounded_closest_points(winner);
   out.point_a = points.a;

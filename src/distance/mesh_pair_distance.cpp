@@ -135,13 +135,14 @@ std::vector<std::int32_t> least_items(const bvh::Bvh& bvh) {
 
 const char* to_string(PairContact contact) {
   switch (contact) {
-    case PairContact::touching:
+    case PairContact::triangles:
+    case PairContact::edges:
       return "touching";
     case PairContact::vertex_of_a_in_b:
       return "vertex_of_a_in_b";
     case PairContact::vertex_of_b_in_a:
       return "vertex_of_b_in_a";
-    case PairContact::separate:
+    case PairContact::none:
       break;
   }
   return "separate";
@@ -433,7 +434,7 @@ PairDistance3 MeshPairDistance::distance(const Transform& transform_b) const {
   out.contenders = c.contenders;
   out.triangle_a = c.a;
   out.triangle_b = c.b;
-  out.contact = predicates::flats_meet(c.pair) ? PairContact::touching : PairContact::separate;
+  out.contact = predicates::flats_meet(c.pair) ? PairContact::triangles : PairContact::none;
   out.distance = predicates::rounded_distance(c.pair);
   const predicates::ClosestPoints3 points = predicates::rounded_closest_points(c.pair);
   out.point_a = points.a;

@@ -162,7 +162,7 @@ PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
       return out;
     }
   }
-  out.contact = touching ? PairContact::touching : PairContact::separate;
+  out.contact = touching ? PairContact::edges : PairContact::none;
   out.distance = predicates::rounded_distance(f.pair);
   const predicates::ClosestPoints2 points = predicates::rounded_closest_points(f.pair);
   out.point_a = points.a;

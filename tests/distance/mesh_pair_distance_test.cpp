@@ -134,7 +134,7 @@ void check_pose(const MeshPairDistance& pair, const Mesh& a, const Mesh& b, cons
          inside::point_in_mesh(of_b ? a : wb, v) == Location::inside && got.point_a == v;
   } else {
     ok = ok && !nested && got.triangle_a == want.a && got.triangle_b == want.b;
-    if (want.d2 == 0) ok = ok && got.contact == PairContact::touching;
+    if (want.d2 == 0) ok = ok && got.contact == PairContact::triangles;
   }
   if (!ok) {
     char buf[200];
@@ -179,7 +179,7 @@ TEST(MeshPairDistance, CrossingToriReportTheLowestMeetingPair) {
   for (Transform t : scenes::random_poses(test::case_budget(10, 5) + 2, 0.0, 23)) {
     const double angle = 0.7 * i++;
     t.t = {1.35 * std::cos(angle), 1.35 * std::sin(angle), 0.0};
-    if (pair.distance(t).contact == PairContact::touching) ++touching;
+    if (pair.distance(t).contact == PairContact::triangles) ++touching;
     check_pose(pair, a, b, t, failures);
   }
   EXPECT_GT(touching, 0);
@@ -204,7 +204,7 @@ TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   t.t = {-1.5, -1.5, -1.5};
   EXPECT_EQ(inverse.distance(t).contact, PairContact::vertex_of_a_in_b);
   t.t = {4, 0, 0};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::touching);
+  EXPECT_EQ(pair.distance(t).contact, PairContact::triangles);
   EXPECT_EQ(pair.distance(t).distance, 0.0);
   t.t = {6, 0, 0};
   EXPECT_EQ(pair.distance(t).distance, 2.0);
@@ -224,13 +224,13 @@ TEST(MeshPairDistance, VertexOfAExactlyOnBsFaceDiagonalEdgeOrCornerIsTouchingNot
     t.t = shift;
     const PairDistance3 d = pair.distance(t);
     EXPECT_EQ(d.distance, 0.0);
-    EXPECT_EQ(d.contact, PairContact::touching) << shift.y << " " << shift.z;
+    EXPECT_EQ(d.contact, PairContact::triangles) << shift.y << " " << shift.z;
     EXPECT_GE(d.triangle_a, 0);
     EXPECT_TRUE(pair.within(t, 0.0));
   }
   // Just off the face, outside: a gap; just inside: nested.
   t.t = {-4 - 0x1p-40, -1, -3};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::separate);
+  EXPECT_EQ(pair.distance(t).contact, PairContact::none);
   EXPECT_FALSE(pair.within(t, 0.0));
   t.t = {-4 + 0x1p-40, -1, -3};
   EXPECT_EQ(pair.distance(t).distance, 0.0);

@@ -205,9 +205,9 @@ TEST(RegionPairDistance, SeparatedTouchingCrossingAndNestedSquares) {
   EXPECT_EQ(region_region(big, MultiPolygon{{square(6, 0, 1)}}).distance, 2.0);
   const PairDistance2 touch = region_region(big, MultiPolygon{{square(4, 1, 1)}});
   EXPECT_EQ(touch.distance, 0.0);
-  EXPECT_EQ(touch.contact, PairContact::touching);
+  EXPECT_EQ(touch.contact, PairContact::edges);
   const PairDistance2 cross = region_region(big, MultiPolygon{{square(3.5, 1, 1)}});
-  EXPECT_EQ(cross.contact, PairContact::touching);
+  EXPECT_EQ(cross.contact, PairContact::edges);
   const PairDistance2 nested = region_region(big, MultiPolygon{{square(1, 1, 1)}});
   EXPECT_EQ(nested.contact, PairContact::vertex_of_b_in_a);
   EXPECT_EQ(nested.distance, 0.0);

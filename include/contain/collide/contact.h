@@ -5,16 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "contain/inside/pair_witness.h"
+
 namespace contain::collide {
 
-/// What proves that two shapes intersect.
-enum class WitnessKind : std::uint8_t {
-  none,              ///< disjoint (no witness)
-  triangles,         ///< triangle_a and triangle_b share a point
-  edges,             ///< 2D: edge triangle_a of A and edge triangle_b of B share a point
-  vertex_of_a_in_b,  ///< vertex `vertex` of A lies in the solid B (nested, no surface contact)
-  vertex_of_b_in_a,  ///< vertex `vertex` of B lies in the solid A
-};
+/// What proves that two shapes intersect (`none`: disjoint); the pair witness that distance's
+/// `PairContact` also names.
+using WitnessKind = inside::PairWitness;
 
 /// "none", "triangles", "edges", "vertex_of_a_in_b", "vertex_of_b_in_a".
 [[nodiscard]] constexpr const char* to_string(WitnessKind kind) {
