@@ -54,8 +54,8 @@ Place place_of(std::string_view path) {
   return {};
 }
 
-// Comments and string literals blanked out (same length, newlines kept), so that names in them
-// are not taken for uses.
+}  // namespace
+
 std::string code_only(std::string_view text) {
   std::string out(text);
   enum class State { code, line_comment, block_comment, string, character } state = State::code;
@@ -107,6 +107,8 @@ std::string code_only(std::string_view text) {
   }
   return out;
 }
+
+namespace {
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;

@@ -32,6 +32,10 @@ struct SourceFile {
   std::string text;
 };
 
+/// `text` with comments and string and character literals blanked out (same length, newlines
+/// kept), so that names and braces in them are not taken for code.
+[[nodiscard]] std::string code_only(std::string_view text);
+
 /// Every violation in `files`, one readable line each ("src/clip/a.cpp:12: includes ..."):
 /// - a file in include/contain/<d>/, src/<d>/, cli/, python/src/ or scenes/ whose domain is not
 ///   in the order;

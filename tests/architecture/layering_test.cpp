@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "architecture/project_tree.h"
+
 namespace contain::test {
 namespace {
 
@@ -112,31 +114,6 @@ TEST(Layering, LinkingAHigherOrSiblingLibraryIsReported) {
 
 // The project itself.
 
-const std::filesystem::path kRoot = CONTAIN_SOURCE_DIR;
-
-std::string read(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<SourceFile> tree(std::initializer_list<const char*> folders, bool cmake_lists) {
-  std::vector<SourceFile> files;
-  for (const char* folder : folders) {
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kRoot / folder)) {
-      const std::filesystem::path& p = entry.path();
-      const bool wanted = cmake_lists ? p.filename() == "CMakeLists.txt"
-                                      : (p.extension() == ".h" || p.extension() == ".cpp");
-      if (!entry.is_regular_file() || !wanted) continue;
-      files.push_back({std::filesystem::relative(p, kRoot).generic_string(), read(p)});
-    }
-  }
-  std::sort(files.begin(), files.end(),
-            [](const SourceFile& a, const SourceFile& b) { return a.path < b.path; });
-  return files;
-}
-
 LayerOrder project_order() {
   return layer_order_from_doc(read(kRoot / "docs/architecture.md"));
 }
@@ -155,18 +132,12 @@ TEST(Layering, ProjectFilesUseOnlyLowerLayersAndTheirPublicHeaders) {
   const auto files = tree({"include", "src", "cli", "python/src", "scenes"}, false);
   ASSERT_GT(files.size(), 100u);
   const auto problems = check_layering(project_order(), files);
-  std::string all;
-  for (const std::string& p : problems)
-    all += p + "\n";
-  EXPECT_TRUE(problems.empty()) << all;
+  EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 TEST(Layering, ProjectLibrariesLinkOnlyLowerLayers) {
   const auto problems = check_link_order(project_order(), tree({"src"}, true));
-  std::string all;
-  for (const std::string& p : problems)
-    all += p + "\n";
-  EXPECT_TRUE(problems.empty()) << all;
+  EXPECT_TRUE(problems.empty()) << joined(problems);
 }
 
 }  // namespace
