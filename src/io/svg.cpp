@@ -28,13 +28,17 @@ double text_width(std::string_view text, double font_px) {
   return 0.62 * font_px * static_cast<double>(characters);
 }
 
-// A <text> element at (x, baseline y) that fits in `room` pixels: squeezed with textLength where
-// the estimate says it would run over.
+// A <text> element at (x, baseline y) that fits in `room` pixels: where the estimate says it would
+// run over, its font shrinks to fit (every renderer honours that) and textLength squeezes it too
+// (for a face wider than the estimate; librsvg and some viewers ignore textLength).
 std::string fitted_text(double x, double y, double font_px, std::string_view escaped,
                         std::string_view plain, double room) {
+  const double width = text_width(plain, font_px);
+  const bool over = width > room;
+  if (over) font_px *= std::max(room, 1.0) / width;
   std::string out =
       "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\" font-size=\"" + number(font_px) + "\"";
-  if (text_width(plain, font_px) > room) {
+  if (over) {
     out += " textLength=\"" + number(std::max(room, 1.0)) + "\" lengthAdjust=\"spacingAndGlyphs\"";
   }
   return out + ">" + std::string(escaped) + "</text>\n";
