@@ -129,7 +129,7 @@ Runs on `threads` threads (0: every core) without the GIL.
         }
         const MultiPolygon ra = to_region(a, "a");
         const MultiPolygon rb = to_region(b, "b");
-        const collide::RegionCollideOptions options{.fill = parse_fill(fill)};
+        const collide::RegionRegionOptions options{.fill = parse_fill(fill)};
         py::gil_scoped_release release;
         return collide::region_region(ra, rb, options);
       },

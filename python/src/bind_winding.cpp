@@ -72,7 +72,7 @@ void bind_winding(py::module_& m) {
         const Items t = as_items(triangles.object, 3, 3, "triangles");
         const Items p = as_items(points.object, 1, 3, "points");
         const std::size_t n = paired_count(t, p, "point_in_triangle");
-        const inside::TriangleOptions options{.method = parse_triangle_method(method)};
+        const inside::PointInTriangleOptions options{.method = parse_triangle_method(method)};
         std::vector<std::int8_t> out = each<std::int8_t>(n, threads, [&](std::size_t i) {
           const double* a = t.item(t.single ? 0 : i);
           const double* q = p.item(p.single ? 0 : i);

@@ -48,7 +48,7 @@ bool box_overlap(const Segment2& s, const Segment2& t) {
 }  // namespace
 
 Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
-                      const RegionCollideOptions& options) {
+                      const RegionRegionOptions& options) {
   Contact contact;
   const Edges ea = edges_of(a), eb = edges_of(b);
   if (ea.segments.empty() || eb.segments.empty()) return contact;

@@ -139,7 +139,7 @@ Vec2 vertex_at(const Edges& e, std::int32_t v) {
 }  // namespace
 
 PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
-                            const RegionPairOptions& options) {
+                            const RegionRegionOptions& options) {
   PairDistance2 out;
   const Edges ea = edges_of(a), eb = edges_of(b);
   const Found f = closest_edges(ea, eb);
@@ -175,7 +175,7 @@ PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
 }
 
 bool region_region_within(const MultiPolygon& a, const MultiPolygon& b, double d,
-                          const RegionPairOptions& options) {
+                          const RegionRegionOptions& options) {
   if (!(d >= 0)) return false;
   const Edges ea = edges_of(a), eb = edges_of(b);
   const Found f = closest_edges(ea, eb);

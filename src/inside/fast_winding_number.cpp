@@ -13,7 +13,7 @@
 
 namespace contain::inside {
 
-FastWindingNumber::FastWindingNumber(const Mesh& mesh, const FastWindingOptions& options) {
+FastWindingNumber::FastWindingNumber(const Mesh& mesh, const FastWindingNumberOptions& options) {
   triangles_.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     triangles_.push_back(mesh.triangle(t));

@@ -92,7 +92,8 @@ Location projected(const Triangle3& t, Vec3 p) {
 
 }  // namespace
 
-Location point_in_triangle(const Triangle3& triangle, Vec3 p, const TriangleOptions& options) {
+Location point_in_triangle(const Triangle3& triangle, Vec3 p,
+                           const PointInTriangleOptions& options) {
   if (collinear(triangle.a, triangle.b, triangle.c)) return in_degenerate(triangle, p);
   switch (options.method) {
     case TriangleMethod::same_side:

@@ -9,8 +9,8 @@
 namespace contain::inside {
 namespace {
 
-constexpr TriangleOptions kSameSide{.method = TriangleMethod::same_side};
-constexpr TriangleOptions kProjected{.method = TriangleMethod::projected};
+constexpr PointInTriangleOptions kSameSide{.method = TriangleMethod::same_side};
+constexpr PointInTriangleOptions kProjected{.method = TriangleMethod::projected};
 
 // The truth for a point in the triangle's plane (or its prism), from GMP rationals.
 Location oracle(const Triangle3& t, Vec3 p) {
@@ -28,7 +28,7 @@ Location oracle(const Triangle3& t, Vec3 p) {
 
 TEST(PointInTriangle, BothMethodsClassifyInteriorEdgesVerticesAndOutside) {
   const Triangle3 t{{0, 0, 0}, {4, 0, 0}, {0, 4, 4}};
-  for (const TriangleOptions& o : {kSameSide, kProjected}) {
+  for (const PointInTriangleOptions& o : {kSameSide, kProjected}) {
     EXPECT_EQ(point_in_triangle(t, {1, 1, 1}, o), Location::inside);
     EXPECT_EQ(point_in_triangle(t, {2, 0, 0}, o), Location::boundary);  // edge ab
     EXPECT_EQ(point_in_triangle(t, {2, 2, 2}, o), Location::boundary);  // edge bc
@@ -41,7 +41,7 @@ TEST(PointInTriangle, BothMethodsClassifyInteriorEdgesVerticesAndOutside) {
 
 TEST(PointInTriangle, WindingOfTheVerticesDoesNotMatter) {
   const Triangle3 ccw{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, cw{{0, 0, 1}, {0, 1, 1}, {1, 0, 1}};
-  for (const TriangleOptions& o : {kSameSide, kProjected}) {
+  for (const PointInTriangleOptions& o : {kSameSide, kProjected}) {
     EXPECT_EQ(point_in_triangle(ccw, {0.25, 0.25, 1}, o), Location::inside);
     EXPECT_EQ(point_in_triangle(cw, {0.25, 0.25, 1}, o), Location::inside);
     EXPECT_EQ(point_in_triangle(cw, {0.5, 0.5, 1}, o), Location::boundary);
@@ -57,7 +57,7 @@ TEST(PointInTriangle, SameSideAnswersForTheOrthogonalProjectionInThePrism) {
 
 TEST(PointInTriangle, DegenerateTriangleIsItsSegment) {
   const Triangle3 t{{0, 0, 0}, {1, 1, 1}, {3, 3, 3}};
-  for (const TriangleOptions& o : {kSameSide, kProjected}) {
+  for (const PointInTriangleOptions& o : {kSameSide, kProjected}) {
     EXPECT_EQ(point_in_triangle(t, {2, 2, 2}, o), Location::boundary);
     EXPECT_EQ(point_in_triangle(t, {4, 4, 4}, o), Location::outside);
     EXPECT_EQ(point_in_triangle(t, {1, 1, 0}, o), Location::outside);

@@ -8,7 +8,7 @@
 namespace contain::collide {
 
 /// How `region_region` reads its regions.
-struct RegionCollideOptions {
+struct RegionRegionOptions {
   /// The fill rule of both regions (all rings of a region together, as `inside::PolygonIndex`).
   /// With even-odd (default) or nonzero every edge borders a filled side, so an edge is in the
   /// closed region; with positive or negative an edge may bound nothing, and the answer is then
@@ -29,6 +29,6 @@ struct RegionCollideOptions {
 /// O((n + m) log(n + m) + candidate pairs). Reference: "Algorithms of Informatics" vol. 2, § 22.4,
 /// exercise 22.4-5.
 [[nodiscard]] Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
-                                    const RegionCollideOptions& options = {});
+                                    const RegionRegionOptions& options = {});
 
 }  // namespace contain::collide

@@ -28,7 +28,7 @@ struct PairDistance2 {
 };
 
 /// How `region_region` reads its regions.
-struct RegionPairOptions {
+struct RegionRegionOptions {
   /// The fill rule of both regions (as `collide::region_region` and `inside::PolygonIndex`).
   Fill fill = Fill::even_odd;
 };
@@ -40,10 +40,10 @@ struct RegionPairOptions {
 /// exactly in the other (inside::PolygonIndex): a vertex inside means nested, distance 0.
 /// O((n + m) log(n + m) + edge pairs near the closest distance). Exact on the given doubles.
 [[nodiscard]] PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
-                                          const RegionPairOptions& options = {});
+                                          const RegionRegionOptions& options = {});
 
 /// Is the distance between the regions at most d? Exact; d < 0 or NaN: false.
 [[nodiscard]] bool region_region_within(const MultiPolygon& a, const MultiPolygon& b, double d,
-                                        const RegionPairOptions& options = {});
+                                        const RegionRegionOptions& options = {});
 
 }  // namespace contain::distance

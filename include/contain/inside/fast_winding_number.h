@@ -15,7 +15,7 @@
 namespace contain::inside {
 
 /// How a `FastWindingNumber` trades accuracy for speed.
-struct FastWindingOptions {
+struct FastWindingNumberOptions {
   /// A node is treated as one dipole when the point is farther than `accuracy` times the
   /// node's radius from the node's area-weighted centre. Larger: more accurate, slower.
   double accuracy = 3.0;
@@ -31,7 +31,7 @@ class FastWindingNumber {
  public:
   FastWindingNumber() = default;
   /// Prepares `mesh` (validated: indices in range).
-  explicit FastWindingNumber(const Mesh& mesh, const FastWindingOptions& options = {});
+  explicit FastWindingNumber(const Mesh& mesh, const FastWindingNumberOptions& options = {});
 
   /// The generalized winding number at p (approximately `generalized_winding_number(mesh, p)`).
   [[nodiscard]] double evaluate(Vec3 p) const;

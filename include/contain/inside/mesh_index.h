@@ -41,7 +41,7 @@ struct MeshIndexOptions {
   std::size_t min_cells = 4096;
   /// ... and at most this many (memory: 5 bytes a cell, 4 per triangle-cell pair).
   std::size_t max_cells = std::size_t{1} << 24;
-  /// Accuracy of the winding number regime (see `FastWindingOptions`).
+  /// Accuracy of the winding number regime (see `FastWindingNumberOptions`).
   double winding_accuracy = 3.0;
 };
 

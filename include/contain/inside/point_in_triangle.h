@@ -25,7 +25,7 @@ enum class TriangleMethod : std::uint8_t {
 };
 
 /// How point_in_triangle works.
-struct TriangleOptions {
+struct PointInTriangleOptions {
   TriangleMethod method = TriangleMethod::projected;
 };
 
@@ -49,6 +49,6 @@ struct TriangleOptions {
 /// O(1). Reference: "Algorithms of Informatics" vol. 2, § 22.4, "point in triangle";
 /// exercise 22.4-5 is its 2D form.
 [[nodiscard]] Location point_in_triangle(const Triangle3& triangle, Vec3 p,
-                                         const TriangleOptions& options = {});
+                                         const PointInTriangleOptions& options = {});
 
 }  // namespace contain::inside
