@@ -104,7 +104,10 @@ int run_meshes(const CollideOptions& o) {
   const collide::MeshPair pair(a->mesh, b->mesh, {.transform_a = ta});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
-    if (solid) continue;
+    if (solid) {
+      warn_if_self_crossing(name, *mesh);  // one solid inside the other is found by ray parity
+      continue;
+    }
     const MeshReport r = validate_mesh(*mesh);
     warn(
         fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "

@@ -149,11 +149,15 @@ int run_scene_inside(const ManyOptions& o) {
   std::vector<char> warned(scene->meshes.size(), 0);
   for (std::size_t k = 0; k < index.size(); ++k) {
     const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
+    if (warned[m]) continue;
+    warned[m] = 1;
+    const std::string name = scene->mesh_files[m] + " (object " + scene->ids[k] + ")";
     const std::string warning =
         io::mesh_warning(index.object(k).regime(), index.object(k).report());
-    if (warning.empty() || warned[m]) continue;
-    warned[m] = 1;
-    warn(scene->mesh_files[m] + " (object " + scene->ids[k] + "): " + warning);
+    if (!warning.empty()) warn(name + ": " + warning);
+    if (index.object(k).regime() == inside::MeshRegime::closed_exact) {
+      warn_if_self_crossing(name, scene->meshes[m]);
+    }
   }
   auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);
   if (!text) return report(text.error());
@@ -167,8 +171,13 @@ int run_collide_scene(const std::string& file, bool json, int threads, const std
   std::vector<char> warned(scene->meshes.size(), 0);
   for (std::size_t k = 0; k < prepared.size(); ++k) {
     const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
-    if (prepared.is_solid(k) || warned[m]) continue;
+    if (warned[m]) continue;
     warned[m] = 1;
+    if (prepared.is_solid(k)) {
+      warn_if_self_crossing(scene->mesh_files[m] + " (object " + scene->ids[k] + ")",
+                            scene->meshes[m]);
+      continue;
+    }
     warn(scene->mesh_files[m] + " (object " + scene->ids[k] +
          "): not closed: read as a surface, which meets another shape only where they share a "
          "point");
