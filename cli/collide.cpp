@@ -208,7 +208,7 @@ Verb add_collide(CLI::App& app) {
                            "collide: --scene takes no shapes A B, transforms, poses, motions or "
                            "CCD queries (the scene file places its objects)"});
           }
-          return run_collide_scene(o->scene, o->json, o->threads, o->out);
+          return run_collide_scene(o->scene, o->json, o->threads, o->quiet, o->out);
         }
         if (c->kind.empty() && !c->queries.empty()) {
           // The kind decides how the 8 points of a query are read: guessing answers another
