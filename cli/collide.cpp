@@ -104,7 +104,10 @@ int run_meshes(const CollideOptions& o) {
   const collide::MeshPair pair(a->mesh, b->mesh, {.transform_a = ta});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
-    if (solid) continue;
+    if (solid) {
+      warn_if_self_crossing(name, *mesh);  // one solid inside the other is found by ray parity
+      continue;
+    }
     const MeshReport r = validate_mesh(*mesh);
     warn(
         fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "
@@ -205,7 +208,7 @@ Verb add_collide(CLI::App& app) {
                            "collide: --scene takes no shapes A B, transforms, poses, motions or "
                            "CCD queries (the scene file places its objects)"});
           }
-          return run_collide_scene(o->scene, o->json, o->threads, o->out);
+          return run_collide_scene(o->scene, o->json, o->threads, o->quiet, o->out);
         }
         if (c->kind.empty() && !c->queries.empty()) {
           // The kind decides how the 8 points of a query are read: guessing answers another

@@ -13,6 +13,8 @@
 #include <map>
 #include <string>
 
+#include "contain/collide/self_intersections.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 
@@ -25,6 +27,12 @@ int report(const Error& error) {
 
 void warn(std::string_view message) {
   std::cerr << "contain: warning: " << message << '\n';
+}
+
+void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
+  const std::string words =
+      io::mesh_warning(collide::self_intersections(mesh, {.keep = 1, .limit = 1}));
+  if (!words.empty()) warn(std::string(name) + ": " + words);
 }
 
 Result<MultiPolygon> read_region_warned(const std::string& path) {

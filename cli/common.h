@@ -11,6 +11,7 @@
 
 #include "contain/core/location.h"
 #include "contain/core/result.h"
+#include "contain/shapes/mesh.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/transform.h"
 
@@ -32,6 +33,12 @@ int report(const Error& error);
 
 /// Prints a warning on stderr (never on stdout, which holds only results).
 void warn(std::string_view message);
+
+/// Warns "NAME: mesh crosses itself (triangles I and J meet ...)" (io::mesh_warning's words) when
+/// the closed mesh read from `name` crosses itself: ray parity then reads a point inside two
+/// overlapping parts as outside (issue 24). The answers do not change. Stops at the first pair
+/// (`collide::self_intersections`, limit 1): about the cost of building the mesh's index.
+void warn_if_self_crossing(std::string_view name, const Mesh& mesh);
 
 /// The numbers of a list-valued option ("1,0,0,2.5" or "1 0 0 2.5"), all finite; `option` names
 /// the option in the error.

@@ -80,6 +80,8 @@ int run_mesh_points(const DistanceOptions& o) {
   const distance::MeshDistance prepared(file->mesh, {.signs = signs});
   if (signs && prepared.regime() != inside::MeshRegime::closed_exact) {
     warn_open_mesh(o.mesh, file->mesh);
+  } else if (signs) {
+    warn_if_self_crossing(o.mesh, file->mesh);  // the signs are inside's answers
   }
   const std::vector<Vec3>& p = points->points;
   std::string text;
@@ -208,7 +210,10 @@ int run_meshes(const DistanceOptions& o) {
   const distance::MeshPairDistance pair(a->mesh, b->mesh, {.transform_a = ta});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
-    if (solid) continue;
+    if (solid) {
+      warn_if_self_crossing(name, *mesh);  // a solid inside it decides distance 0
+      continue;
+    }
     const MeshReport r = validate_mesh(*mesh);
     warn(
         fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a "

@@ -75,6 +75,7 @@ int run_mesh(const InsideOptions& o) {
   const inside::MeshIndex index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
+  if (index.regime() == inside::MeshRegime::closed_exact) warn_if_self_crossing(o.mesh, file->mesh);
   const std::vector<Location> locations = locate_all(index, points->points, o);
   return emit(format_locations(locations, o.boundary), o.out);
 }

@@ -34,8 +34,10 @@ int run_layer(const ManyOptions& options);
 int run_scene_inside(const ManyOptions& options);
 
 /// contain collide --scene: one line per intersecting pair "ID1 ID2" (or a JSON object with
-/// the witness), pairs in file order.
-int run_collide_scene(const std::string& scene, bool json, int threads, const std::string& out);
+/// the witness), pairs in file order; progress over the candidate pairs on a terminal unless
+/// `quiet`.
+int run_collide_scene(const std::string& scene, bool json, int threads, bool quiet,
+                      const std::string& out);
 
 /// The library's objects of a scene as read (mesh numbers and transforms).
 [[nodiscard]] std::vector<inside::SceneObject> scene_objects(const io::Scene& scene);

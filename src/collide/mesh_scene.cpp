@@ -80,7 +80,12 @@ Contact MeshScene::collide(std::size_t i, std::size_t j) const {
 }
 
 std::vector<ScenePair> MeshScene::pairs(const BatchOptions& options) const {
-  const auto candidate = candidates();
+  return pairs(candidates(), options);
+}
+
+std::vector<ScenePair> MeshScene::pairs(
+    std::span<const std::pair<std::int32_t, std::int32_t>> candidate,
+    const BatchOptions& options) const {
   std::vector<Contact> contacts(candidate.size());
   // Pair tests differ in cost by orders of magnitude: threads take the next candidate as they
   // free up; each result goes to its own slot, so the answer does not depend on the threads.

@@ -118,6 +118,61 @@ TEST(Bvh, PairTraversalUnderATranslationFindsExactlyTheOverlappingPairs) {
   EXPECT_FALSE(expected.empty());
 }
 
+TEST(Bvh, SelfTraversalFindsEachOverlappingPairOfDistinctItemsOnce) {
+  const std::vector<Box3> boxes = random_boxes(900, 11);
+  const Bvh tree(boxes);
+  std::set<std::pair<std::int32_t, std::int32_t>> found;
+  const TraversalStats stats = traverse_self(
+      tree, [](const Node& x, const Node& y) { return x.box.overlaps(y.box); },
+      [&](std::int32_t i, std::int32_t j) {
+        EXPECT_NE(i, j);
+        if (boxes[static_cast<std::size_t>(i)].overlaps(boxes[static_cast<std::size_t>(j)])) {
+          EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "each pair once";
+        }
+        return Visit::proceed;
+      });
+  std::set<std::pair<std::int32_t, std::int32_t>> expected;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]))
+        expected.insert({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+  EXPECT_EQ(found, expected);
+  EXPECT_FALSE(expected.empty());
+  // About half the work of the pair traversal of the tree with itself.
+  const TraversalStats both = traverse_pairs(
+      tree, tree, [](const Node& x, const Node& y) { return x.box.overlaps(y.box); },
+      [](std::int32_t, std::int32_t) { return Visit::proceed; });
+  EXPECT_LT(stats.items, both.items);
+  EXPECT_FALSE(stats.stopped);
+}
+
+TEST(Bvh, SelfTraversalOfOneItemOrNoneVisitsNothingAndStopsOnRequest) {
+  const std::vector<Box3> one{{{0, 0, 0}, {1, 1, 1}}};
+  const auto count = [](const Bvh& tree) {
+    std::size_t n = 0;
+    (void)traverse_self(
+        tree, [](const Node&, const Node&) { return true; },
+        [&](std::int32_t, std::int32_t) {
+          ++n;
+          return Visit::proceed;
+        });
+    return n;
+  };
+  EXPECT_EQ(count(Bvh(one)), 0u);
+  EXPECT_EQ(count(Bvh()), 0u);
+  const std::vector<Box3> same(10, Box3{{0, 0, 0}, {1, 1, 1}});
+  EXPECT_EQ(count(Bvh(same)), 45u);
+  std::size_t seen = 0;
+  const TraversalStats stopped = traverse_self(
+      Bvh(same), [](const Node&, const Node&) { return true; },
+      [&](std::int32_t, std::int32_t) {
+        ++seen;
+        return seen == 3 ? Visit::stop : Visit::proceed;
+      });
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(seen, 3u);
+}
+
 TEST(Bvh, CoincidentBoxesStillGiveALogarithmicDepth) {
   const std::vector<Box3> boxes(4096, Box3{{1, 1, 1}, {2, 2, 2}});
   const Bvh bvh(boxes);

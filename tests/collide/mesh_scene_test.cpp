@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "collide/test_meshes.h"
@@ -135,6 +137,32 @@ TEST(MeshScene, RandomPosesOfSharedMeshesEqualThePairwiseTestOnEveryThreadCount)
     }
   }
   expect_witnesses_hold(meshes, objects, one);
+}
+
+TEST(MeshScene, PairsOverConsecutiveRangesOfTheCandidatesEqualAllPairs) {
+  // The command's progress asks in pieces (issue 24): the pieces must add up to the whole.
+  std::mt19937_64 rng(15);
+  const std::vector<Mesh> meshes{scenes::torus(1.0, 0.3, 16, 8),
+                                 test::box_mesh({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5})};
+  std::vector<SceneObject> objects;
+  for (int k = 0; k < 20; ++k)
+    objects.push_back({k % 2, test::random_pose(rng, 3.0)});
+  const MeshScene scene(meshes, objects);
+  const std::vector<ScenePair> all = scene.pairs();
+  ASSERT_GT(all.size(), 5u);
+  const auto candidates = scene.candidates();
+  for (const std::size_t step : {std::size_t{1}, std::size_t{3}, candidates.size()}) {
+    std::vector<ScenePair> pieces;
+    for (std::size_t begin = 0; begin < candidates.size(); begin += step) {
+      const std::size_t n = std::min(step, candidates.size() - begin);
+      const auto found = scene.pairs(std::span(candidates).subspan(begin, n), {.threads = 2});
+      pieces.insert(pieces.end(), found.begin(), found.end());
+    }
+    ASSERT_EQ(ids(pieces), ids(all)) << "step " << step;
+    for (std::size_t k = 0; k < all.size(); ++k)
+      EXPECT_EQ(pieces[k].contact.witness, all[k].contact.witness);
+  }
+  EXPECT_TRUE(scene.pairs(std::span<const std::pair<std::int32_t, std::int32_t>>{}).empty());
 }
 
 TEST(MeshScene, OpenSurfacesMeetOnlyWhereTheySharePoints) {

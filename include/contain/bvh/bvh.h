@@ -98,6 +98,15 @@ class Bvh {
 template <class Enter, class VisitPair>
 TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPair&& visit);
 
+/// Self traversal of one hierarchy (a mesh against itself): `visit(std::int32_t i, std::int32_t
+/// j) -> Visit` sees each unordered pair of distinct items i != j whose nodes `enter(const Node&,
+/// const Node&) -> bool` accepts exactly once (in either order), where `traverse_pairs(h, h)`
+/// would see it twice and each item with itself. A node is paired with itself without `enter`
+/// (its children then as both pairs and selves); two different nodes as in `traverse_pairs`.
+/// O(pairs of nodes entered + pairs of items visited), about half of `traverse_pairs(h, h)`.
+template <class Enter, class VisitPair>
+TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit);
+
 /// Surface area of a closed box (0 for an empty or flat one), the SAH's measure.
 [[nodiscard]] constexpr double surface_area(const Box3& box) {
   if (box.empty()) return 0.0;
@@ -145,43 +154,96 @@ TraversalStats Bvh::traverse(Enter&& enter, VisitItem&& visit) const {
   return stats;
 }
 
+namespace detail {
+
+// One step of a simultaneous descent: node x of a against node y of b (two different nodes when
+// a and b are one tree). Tests the pair with `enter`; at two leaves hands every pair of their
+// items to `visit`, otherwise pushes the children of the larger node. Returns false when the
+// visitor stopped the traversal.
+template <class Enter, class VisitPair>
+bool pair_step(const Bvh& a, const Bvh& b, std::int32_t x, std::int32_t y,
+               std::vector<std::pair<std::int32_t, std::int32_t>>& stack, TraversalStats& stats,
+               Enter& enter, VisitPair& visit) {
+  const Node& p = a.nodes()[static_cast<std::size_t>(x)];
+  const Node& q = b.nodes()[static_cast<std::size_t>(y)];
+  ++stats.nodes;
+  if (!enter(p, q)) return true;
+  if (p.is_leaf() && q.is_leaf()) {
+    const std::span<const std::int32_t> ia = a.items(), ib = b.items();
+    for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
+      for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
+        ++stats.items;
+        if (visit(ia[static_cast<std::size_t>(s)], ib[static_cast<std::size_t>(t)]) ==
+            Visit::stop) {
+          stats.stopped = true;
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+  const bool split_a = q.is_leaf() || (!p.is_leaf() && surface_area(p.box) >= surface_area(q.box));
+  if (split_a) {
+    stack.emplace_back(p.first, y);
+    stack.emplace_back(x + 1, y);
+  } else {
+    stack.emplace_back(x, q.first);
+    stack.emplace_back(x, y + 1);
+  }
+  return true;
+}
+
+}  // namespace detail
+
 template <class Enter, class VisitPair>
 TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPair&& visit) {
   TraversalStats stats;
   if (a.empty() || b.empty()) return stats;
-  const std::span<const Node> na = a.nodes(), nb = b.nodes();
-  const std::span<const std::int32_t> ia = a.items(), ib = b.items();
   std::vector<std::pair<std::int32_t, std::int32_t>> stack;
   stack.reserve(static_cast<std::size_t>(2 * (a.depth() + b.depth()) + 4));
   stack.emplace_back(0, 0);
   while (!stack.empty()) {
     const auto [x, y] = stack.back();
     stack.pop_back();
-    const Node& p = na[static_cast<std::size_t>(x)];
-    const Node& q = nb[static_cast<std::size_t>(y)];
-    ++stats.nodes;
-    if (!enter(p, q)) continue;
-    if (p.is_leaf() && q.is_leaf()) {
-      for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
-        for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
-          ++stats.items;
-          if (visit(ia[static_cast<std::size_t>(s)], ib[static_cast<std::size_t>(t)]) ==
-              Visit::stop) {
-            stats.stopped = true;
-            return stats;
-          }
-        }
-      }
+    if (!detail::pair_step(a, b, x, y, stack, stats, enter, visit)) break;
+  }
+  return stats;
+}
+
+template <class Enter, class VisitPair>
+TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit) {
+  TraversalStats stats;
+  if (tree.empty()) return stats;
+  const std::span<const std::int32_t> items = tree.items();
+  // (x, x) is a node against itself: the pairs within it. x != y are two disjoint subtrees
+  // (pushed only as siblings' descendants), so no pair of items comes twice.
+  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
+  stack.reserve(static_cast<std::size_t>(4 * tree.depth() + 4));
+  stack.emplace_back(0, 0);
+  while (!stack.empty()) {
+    const auto [x, y] = stack.back();
+    stack.pop_back();
+    if (x != y) {
+      if (!detail::pair_step(tree, tree, x, y, stack, stats, enter, visit)) break;
       continue;
     }
-    const bool split_a =
-        q.is_leaf() || (!p.is_leaf() && surface_area(p.box) >= surface_area(q.box));
-    if (split_a) {
-      stack.emplace_back(p.first, y);
-      stack.emplace_back(x + 1, y);
-    } else {
-      stack.emplace_back(x, q.first);
-      stack.emplace_back(x, y + 1);
+    const Node& node = tree.nodes()[static_cast<std::size_t>(x)];
+    ++stats.nodes;
+    if (!node.is_leaf()) {
+      stack.emplace_back(node.first, node.first);
+      stack.emplace_back(x + 1, node.first);
+      stack.emplace_back(x + 1, x + 1);
+      continue;
+    }
+    for (std::int32_t s = node.first; s < node.first + node.count; ++s) {
+      for (std::int32_t t = s + 1; t < node.first + node.count; ++t) {
+        ++stats.items;
+        if (visit(items[static_cast<std::size_t>(s)], items[static_cast<std::size_t>(t)]) ==
+            Visit::stop) {
+          stats.stopped = true;
+          return stats;
+        }
+      }
     }
   }
   return stats;

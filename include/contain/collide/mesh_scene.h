@@ -71,8 +71,14 @@ class MeshScene {
   /// the rounding bound, so slightly larger than the exact box.
   [[nodiscard]] const Box3& bounds(std::size_t k) const { return boxes_[k]; }
 
-  /// Every intersecting pair (a < b), sorted by a then b.
+  /// Every intersecting pair (a < b), sorted by a then b: `pairs(candidates(), options)`.
   [[nodiscard]] std::vector<ScenePair> pairs(const BatchOptions& options = {}) const;
+  /// The intersecting pairs among `candidates` (pairs of objects i != j, such as a range of
+  /// `candidates()`), in their order. Consecutive ranges of `candidates()` give `pairs()` in
+  /// pieces, so a long run can report progress between them (the command's `collide --scene`).
+  [[nodiscard]] std::vector<ScenePair> pairs(
+      std::span<const std::pair<std::int32_t, std::int32_t>> candidates,
+      const BatchOptions& options = {}) const;
   /// The exact test of objects i and j (i != j).
   [[nodiscard]] Contact collide(std::size_t i, std::size_t j) const;
 
