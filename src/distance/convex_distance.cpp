@@ -9,6 +9,7 @@
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/values/max_abs.h"
 #include "distance/flat_answer.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
@@ -18,13 +19,6 @@ namespace contain::distance {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double max_abs(std::span<const Vec3> points) {
-  double m = 0.0;
-  for (const Vec3& v : points)
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return m;
-}
 
 // The pair query in stages, each a function below; convex_convex and convex_convex_within
 // compose them and differ only at stage 4 (within may stop at a pair proven close enough) and

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 #include "distance/triangle_pair_bounds.h"
 
 namespace contain::distance::detail {
@@ -209,8 +210,7 @@ constexpr std::int32_t kMaxOriented = 256;
 
 // |c|_inf + sum_k h_k of a box.
 double box_extent(const OrientedBox& b) {
-  return std::max({std::fabs(b.c.x), std::fabs(b.c.y), std::fabs(b.c.z)}) +
-         ((b.h[0] + b.h[1]) + b.h[2]);
+  return max_abs(b.c) + ((b.h[0] + b.h[1]) + b.h[2]);
 }
 
 }  // namespace
@@ -316,7 +316,7 @@ OrientedPose oriented_pose(const Transform& tb, double extent_a, double extent_b
   double r1 = 0;
   for (const auto& row : tb.r)
     r1 = std::max(r1, (std::fabs(row[0]) + std::fabs(row[1])) + std::fabs(row[2]));
-  const double t = std::max({std::fabs(tb.t.x), std::fabs(tb.t.y), std::fabs(tb.t.z)});
+  const double t = max_abs(tb.t);
   pose.margin = 32 * kEps * ((extent_a + t) + r1 * extent_b);
   if (!std::isfinite(pose.margin)) pose.margin = std::numeric_limits<double>::infinity();
   return pose;

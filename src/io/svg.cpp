@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "contain/values/max_abs.h"
+
 namespace contain::io {
 namespace {
 
@@ -126,8 +128,7 @@ SvgCanvas::SvgCanvas(const Box2& world, double width_px)
   // A box wider than the largest double is drawn in quarter units, and one of subnormal or
   // nearly subnormal numbers in units of 2^-600 (both exact), so that its size, margin and
   // scale are finite and its shape is kept; to_pixels scales every point alike.
-  const double reach = std::max(
-      {std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});
+  const double reach = std::max(max_abs(box.min), max_abs(box.max));
   if (!std::isfinite(box.max.x - box.min.x) || !std::isfinite(box.max.y - box.min.y)) {
     unit_ = 0.25;
   } else if (reach < 1e-200) {
