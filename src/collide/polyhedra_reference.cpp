@@ -14,13 +14,6 @@
 namespace contain::collide {
 namespace {
 
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
 // Spheres apart by more than a relative 2^-30 of their sizes: a floating-point decision that
 // may only err towards "maybe touching" (the spheres hold every vertex exactly).
 bool spheres_apart(const Sphere& s, const Sphere& t) {

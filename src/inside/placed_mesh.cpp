@@ -13,13 +13,6 @@ namespace contain::inside {
 
 namespace {
 
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
 // Everything but the solidity, which the pair takes from A's index instead of validating A.
 void prepare(PlacedMesh& side, const bvh::BuildOptions& options) {
   side.bvh = bvh::Bvh(bvh::triangle_boxes(side.mesh), options);
