@@ -14,6 +14,7 @@
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/region_region.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 #include "contain/shapes/mesh_validation.h"
@@ -105,11 +106,7 @@ int run_meshes(const CollideOptions& o) {
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
     if (solid) continue;
-    const MeshReport r = validate_mesh(*mesh);
-    warn(
-        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "
-                    "which meets the other shape only where they share a point",
-                    name, r.border_edges, r.nonmanifold_edges));
+    warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));
   }
   std::vector<collide::Contact> contacts(poses.size());
   Progress progress("poses", poses.size(), !o.quiet && stderr_is_terminal());

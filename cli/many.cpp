@@ -169,9 +169,8 @@ int run_collide_scene(const std::string& file, bool json, int threads, const std
     const auto m = static_cast<std::size_t>(scene->mesh_of[k]);
     if (prepared.is_solid(k) || warned[m]) continue;
     warned[m] = 1;
-    warn(scene->mesh_files[m] + " (object " + scene->ids[k] +
-         "): not closed: read as a surface, which meets another shape only where they share a "
-         "point");
+    warn(io::open_mesh_warning(scene->mesh_files[m] + " (object " + scene->ids[k] + ")",
+                               io::OpenMeshReading::surface_contact_in_scene));
   }
   const std::vector<collide::ScenePair> pairs = prepared.pairs({.threads = threads});
   std::string text;
