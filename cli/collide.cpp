@@ -53,8 +53,7 @@ std::string mesh_json(const collide::Contact& c, const collide::MeshPair& pair, 
       break;
     case collide::WitnessKind::vertex_of_b_in_a:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_b_in_a\",\"vertex\":{},\"point\":{}}}",
-                      c.vertex,
-                      json_point(tb.apply(b.vertices[static_cast<std::size_t>(c.vertex)])));
+                      c.vertex, json_point(tb.apply(b.vertex(c.vertex))));
       break;
     default:
       break;

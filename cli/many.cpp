@@ -191,7 +191,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, const std
       const bool of_a = c.witness == collide::WitnessKind::vertex_of_a_in_b;
       const std::size_t k = static_cast<std::size_t>(of_a ? p.a : p.b);
       const Mesh& mesh = scene->meshes[static_cast<std::size_t>(scene->mesh_of[k])];
-      const Vec3 w = scene->transforms[k].apply(mesh.vertices[static_cast<std::size_t>(c.vertex)]);
+      const Vec3 w = scene->transforms[k].apply(mesh.vertex(c.vertex));
       witness = fmt::format(R"({{"kind":"{}","vertex":{},"point":[{},{},{}]}})",
                             collide::to_string(c.witness), c.vertex, w.x, w.y, w.z);
     }

@@ -244,7 +244,7 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
       for (std::int32_t i = n.first; i < n.first + n.count; ++i)
         for (const std::int32_t v :
              mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
-          moments[k].add(mesh.vertices[static_cast<std::size_t>(v)], r);
+          moments[k].add(mesh.vertex(v), r);
     } else {
       moments[k] = moments[k + 1];
       moments[k].add(moments[static_cast<std::size_t>(n.first)]);
@@ -262,7 +262,7 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
     for (std::int32_t i = lo; i < hi; ++i)
       for (const std::int32_t v :
            mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
-        points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+        points.push_back(mesh.vertex(v));
     const Moments& m = moments[k];
     Vec3 e[3];
     principal_frame(m, e);

@@ -247,9 +247,9 @@ std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle
   faces.reserve(mesh.triangles.size());
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const TriangleIndices& t = mesh.triangles[i];
-    const Vec3 a = mesh.vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = mesh.vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const Vec3 a = mesh.vertex(t[0]);
+    const Vec3 b = mesh.vertex(t[1]);
+    const Vec3 c = mesh.vertex(t[2]);
     const Vec3 n = cross(b - a, c - a);
     const double norm = length(n);
     const bool usable = norm > 0 && std::isfinite(norm);
@@ -274,7 +274,7 @@ std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle
     const TriangleIndices& t = mesh.triangles[f.index];
     std::string d = "M";
     for (int k = 0; k < 3; ++k) {
-      const Vec3 v = mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+      const Vec3 v = mesh.vertex(t[static_cast<std::size_t>(k)]);
       const Vec2 p = to_pixels({dot(v, axes.right), dot(v, axes.up)});
       d += (k == 0 ? "" : "L") + number(p.x) + " " + number(p.y);
     }
@@ -350,7 +350,7 @@ std::string mesh_svg(const Mesh& mesh, const PictureOptions& options) {
   used.reserve(3 * mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles)
     for (const std::int32_t v : t)
-      used.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+      used.push_back(mesh.vertex(v));
   SvgCanvas canvas(projected_bounds(used, options.view), options.width_px);
   const std::size_t drawn =
       canvas.mesh(mesh, options.view, {.max_triangles = options.max_triangles});
