@@ -151,7 +151,7 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
       return Error{ErrorKind::degenerate, "triangle " + std::to_string(t) + " is degenerate"};
     }
     faces.push_back(face);
-    for (std::int32_t i : tri)
+    for (std::int32_t i : mesh.triangles[t])
       used[static_cast<std::size_t>(i)] = true;
   }
   if (auto error = orient_convex(faces, mesh, used)) return std::move(*error);
