@@ -14,6 +14,7 @@
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/region_region.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
 #include "contain/shapes/mesh_validation.h"
@@ -52,8 +53,7 @@ std::string mesh_json(const collide::Contact& c, const collide::MeshPair& pair, 
       break;
     case collide::WitnessKind::vertex_of_b_in_a:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_b_in_a\",\"vertex\":{},\"point\":{}}}",
-                      c.vertex,
-                      json_point(tb.apply(b.vertices[static_cast<std::size_t>(c.vertex)])));
+                      c.vertex, json_point(tb.apply(b.vertex(c.vertex))));
       break;
     default:
       break;
@@ -108,11 +108,7 @@ int run_meshes(const CollideOptions& o) {
       warn_if_self_crossing(name, *mesh);  // one solid inside the other is found by ray parity
       continue;
     }
-    const MeshReport r = validate_mesh(*mesh);
-    warn(
-        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "
-                    "which meets the other shape only where they share a point",
-                    name, r.border_edges, r.nonmanifold_edges));
+    warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));
   }
   std::vector<collide::Contact> contacts(poses.size());
   Progress progress("poses", poses.size(), !o.quiet && stderr_is_terminal());

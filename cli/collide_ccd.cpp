@@ -12,6 +12,7 @@
 #include "contain/collide/moving_mesh_pair.h"
 #include "contain/io/ccd_queries.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/shapes/mesh_validation.h"
 #include "progress.h"
@@ -166,11 +167,7 @@ int run_moving_meshes(const CcdCliOptions& o) {
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
     if (solid) continue;
-    const MeshReport r = validate_mesh(*mesh);
-    warn(
-        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a surface, "
-                    "which meets the other shape only where they share a point",
-                    name, r.border_edges, r.nonmanifold_edges));
+    warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));
   }
   std::vector<collide::MeshImpact> impacts(motions.size());
   Progress progress("motions", motions.size(), !o.quiet && stderr_is_terminal());

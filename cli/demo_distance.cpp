@@ -160,8 +160,8 @@ Status clearance_scene(const Context& context) {
   std::vector<Segment2> edges;
   for (const TriangleIndices& t : bar.triangles) {
     for (int k = 0; k < 3; ++k) {
-      const Vec3 a = apart.apply(bar.vertices[static_cast<std::size_t>(t[k])]);
-      const Vec3 b = apart.apply(bar.vertices[static_cast<std::size_t>(t[(k + 1) % 3])]);
+      const Vec3 a = apart.apply(bar.vertex(t[k]));
+      const Vec3 b = apart.apply(bar.vertex(t[(k + 1) % 3]));
       edges.push_back({{a.x, a.y}, {b.x, b.y}});
     }
   }

@@ -17,6 +17,7 @@
 #include "contain/distance/region_distance.h"
 #include "contain/distance/region_pair_distance.h"
 #include "contain/io/mesh_io.h"
+#include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
@@ -46,13 +47,9 @@ std::string number(double x) {
   return fmt::format("{:.17g}", x);
 }
 
-// "not closed" warnings as data turned into words here (the contract: the same as `inside`).
+// "not closed" warnings as data turned into words in io (the contract: the same as `inside`).
 void warn_open_mesh(const std::string& name, const Mesh& mesh) {
-  const MeshReport r = validate_mesh(mesh);
-  warn(
-      fmt::format("{}: not closed ({} border edges, {} non-manifold edges): signs come from the "
-                  "generalized winding number (inside where >= 0.5)",
-                  name, r.border_edges, r.nonmanifold_edges));
+  warn(io::open_mesh_warning(name, validate_mesh(mesh), io::OpenMeshReading::winding_number_sign));
 }
 
 // An empty region has no boundary: its distance is infinite (documented) and nothing is within
@@ -214,11 +211,7 @@ int run_meshes(const DistanceOptions& o) {
       warn_if_self_crossing(name, *mesh);  // a solid inside it decides distance 0
       continue;
     }
-    const MeshReport r = validate_mesh(*mesh);
-    warn(
-        fmt::format("{}: not closed ({} border edges, {} non-manifold edges): read as a "
-                    "surface, whose distance is to its triangles only",
-                    name, r.border_edges, r.nonmanifold_edges));
+    warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_distance));
   }
   std::string text;
   if (o.has_within) {

@@ -179,9 +179,8 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
                             scene->meshes[m]);
       continue;
     }
-    warn(scene->mesh_files[m] + " (object " + scene->ids[k] +
-         "): not closed: read as a surface, which meets another shape only where they share a "
-         "point");
+    warn(io::open_mesh_warning(scene->mesh_files[m] + " (object " + scene->ids[k] + ")",
+                               io::OpenMeshReading::surface_contact_in_scene));
   }
   // The library's batch on consecutive ranges of the broad phase's candidates (pair tests vary
   // in cost, so a range of about 1% each), with progress between them on a terminal.
@@ -213,7 +212,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
       const bool of_a = c.witness == collide::WitnessKind::vertex_of_a_in_b;
       const std::size_t k = static_cast<std::size_t>(of_a ? p.a : p.b);
       const Mesh& mesh = scene->meshes[static_cast<std::size_t>(scene->mesh_of[k])];
-      const Vec3 w = scene->transforms[k].apply(mesh.vertices[static_cast<std::size_t>(c.vertex)]);
+      const Vec3 w = scene->transforms[k].apply(mesh.vertex(c.vertex));
       witness = fmt::format(R"({{"kind":"{}","vertex":{},"point":[{},{},{}]}})",
                             collide::to_string(c.witness), c.vertex, w.x, w.y, w.z);
     }

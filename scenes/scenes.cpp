@@ -79,13 +79,6 @@ std::vector<Transform> random_poses(std::size_t count, double reach, std::uint64
   return poses;
 }
 
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
 Mesh torus(double major, double minor, int rings, int sides) {
   Mesh mesh;
   for (int i = 0; i < rings; ++i) {

@@ -52,9 +52,6 @@ namespace contain::scenes {
 [[nodiscard]] std::vector<Transform> random_poses(std::size_t count, double reach,
                                                   std::uint64_t seed);
 
-/// `mesh` with every vertex mapped by `transform` (the triangles unchanged).
-[[nodiscard]] Mesh placed(const Mesh& mesh, const Transform& transform);
-
 /// An n x n grid of points spanning `box` in the plane z = `z`, row by row.
 [[nodiscard]] std::vector<Vec3> grid_points(const Box2& box, int n, double z);
 

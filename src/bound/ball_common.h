@@ -10,19 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "contain/values/max_abs.h"
 #include "contain/values/vec.h"
 
 namespace contain::bound::detail {
 
 template <class P>
 inline constexpr int dimension = static_cast<int>(sizeof(P) / sizeof(double));
-
-[[nodiscard]] inline double max_abs(Vec2 p) {
-  return std::max(std::abs(p.x), std::abs(p.y));
-}
-[[nodiscard]] inline double max_abs(Vec3 p) {
-  return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-}
 
 /// p * 2^e, coordinate by coordinate (exact unless the result leaves the normal range; a factor
 /// 2^e itself could overflow where the products do not).

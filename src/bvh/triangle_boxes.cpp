@@ -4,10 +4,8 @@ namespace contain::bvh {
 
 std::vector<Box3> triangle_boxes(const Mesh& mesh) {
   std::vector<Box3> boxes(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (std::int32_t v : mesh.triangles[t])
-      boxes[t].expand(mesh.vertices[static_cast<std::size_t>(v)]);
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    boxes[t] = bounding_box(mesh.triangle(t));
   return boxes;
 }
 

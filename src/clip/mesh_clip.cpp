@@ -134,8 +134,7 @@ Cut cut_by(const Mesh& mesh, const F& f, const Gradient& g) {
     const auto [it, fresh] = crossings.try_emplace(edge_key(i, j), 0);
     if (fresh) {
       it->second = static_cast<std::int32_t>(out.vertices.size());
-      out.vertices.push_back(detail::crossing_point(mesh.vertices[static_cast<std::size_t>(i)],
-                                                    mesh.vertices[static_cast<std::size_t>(j)], f));
+      out.vertices.push_back(detail::crossing_point(mesh.vertex(i), mesh.vertex(j), f));
       cut.on_plane.push_back(true);
     }
     return it->second;
@@ -149,9 +148,8 @@ Cut cut_by(const Mesh& mesh, const F& f, const Gradient& g) {
       any_out |= s[e] == Sign::negative;
     }
     if (!any_out) {
-      if (any_in || facing(mesh.vertices[static_cast<std::size_t>(t[0])],
-                           mesh.vertices[static_cast<std::size_t>(t[1])],
-                           mesh.vertices[static_cast<std::size_t>(t[2])], g) == Sign::negative) {
+      if (any_in ||
+          facing(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2]), g) == Sign::negative) {
         out.triangles.push_back(t);
       }
       continue;
@@ -315,7 +313,7 @@ Mesh compact(Mesh mesh) {
       auto& r = remap[static_cast<std::size_t>(i)];
       if (r < 0) {
         r = static_cast<std::int32_t>(vertices.size());
-        vertices.push_back(mesh.vertices[static_cast<std::size_t>(i)]);
+        vertices.push_back(mesh.vertex(i));
       }
       i = r;
     }
@@ -368,8 +366,7 @@ std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane) {
   const Cut cut = cut_by(mesh, f, gradient(f));
   std::vector<Segment3> out;
   for (const auto& [u, v] : border_on_plane(cut.mesh, cut.on_plane)) {
-    out.push_back({cut.mesh.vertices[static_cast<std::size_t>(u)],
-                   cut.mesh.vertices[static_cast<std::size_t>(v)]});
+    out.push_back({cut.mesh.vertex(u), cut.mesh.vertex(v)});
   }
   return out;
 }

@@ -38,9 +38,8 @@ template <class Place>
 bool strictly_inside(const inside::PlacedMesh& s, const Place& place, Vec3 q) {
   return inside::locate_by_ray(s.bvh, q, place, [&](std::int32_t t) {
            const TriangleIndices& tri = s.mesh.triangles[static_cast<std::size_t>(t)];
-           return Triangle3{place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[0])]),
-                            place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[1])]),
-                            place.apply(s.mesh.vertices[static_cast<std::size_t>(tri[2])])};
+           return Triangle3{place.apply(s.mesh.vertex(tri[0])), place.apply(s.mesh.vertex(tri[1])),
+                            place.apply(s.mesh.vertex(tri[2]))};
          }) == Location::inside;
 }
 

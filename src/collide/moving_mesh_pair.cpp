@@ -173,7 +173,7 @@ struct MovingMeshPair::Side {
   const WorldSweep* sweep = nullptr;
 
   [[nodiscard]] Vec3 position(std::int32_t v, int time) const {
-    const Vec3 local = mesh->vertices[static_cast<std::size_t>(v)];
+    const Vec3 local = mesh->vertex(v);
     if (motion != nullptr) return time == 0 ? motion->from.apply(local) : motion->to.apply(local);
     return (time == 0 ? at0 : at1)[static_cast<std::size_t>(v)];
   }

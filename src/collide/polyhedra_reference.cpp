@@ -14,13 +14,6 @@
 namespace contain::collide {
 namespace {
 
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
 // Spheres apart by more than a relative 2^-30 of their sizes: a floating-point decision that
 // may only err towards "maybe touching" (the spheres hold every vertex exactly).
 bool spheres_apart(const Sphere& s, const Sphere& t) {
@@ -42,22 +35,16 @@ bool misses_box(const Mesh& m, const std::vector<Box3>& triangle_boxes, bool sol
   return !(solid && index.locate(box.min) != Location::outside);
 }
 
-Triangle3 triangle(const Mesh& m, std::size_t t) {
-  const TriangleIndices& i = m.triangles[t];
-  return {m.vertices[static_cast<std::size_t>(i[0])], m.vertices[static_cast<std::size_t>(i[1])],
-          m.vertices[static_cast<std::size_t>(i[2])]};
-}
-
 // Stage 3b: every edge of `e` (taken per triangle, so the witness names a triangle holding the
 // edge; an interior edge is tested twice) against every face of `f`.
 bool edge_face(const Mesh& e, const Mesh& f, bool e_is_a, Contact& contact) {
   for (std::size_t t = 0; t < e.triangles.size(); ++t) {
-    const Triangle3 et = triangle(e, t);
+    const Triangle3 et = e.triangle(t);
     const Segment3 edges[3] = {{et.a, et.b}, {et.b, et.c}, {et.c, et.a}};
     for (const Segment3& s : edges) {
       for (std::size_t u = 0; u < f.triangles.size(); ++u) {
         ++contact.exact_tests;
-        if (segment_triangle_intersect(s, triangle(f, u))) {
+        if (segment_triangle_intersect(s, f.triangle(u))) {
           contact.intersect = true;
           contact.witness = WitnessKind::triangles;
           contact.triangle_a = static_cast<std::int32_t>(e_is_a ? t : u);

@@ -18,6 +18,7 @@
 
 #include "collide/placed_boxes.h"
 #include "contain/values/box.h"
+#include "contain/values/max_abs.h"
 #include "contain/values/transform.h"
 #include "contain/values/vec.h"
 
@@ -68,8 +69,7 @@ class SeparatingAxes {
                   0.5 * b.max.z - 0.5 * b.min.z};
     const Vec3 wa = a_.apply(ca), wb = b_.apply(cb);
     const Vec3 d = wa - wb;
-    const double size = std::max({std::fabs(wa.x), std::fabs(wa.y), std::fabs(wa.z),
-                                  std::fabs(wb.x), std::fabs(wb.y), std::fabs(wb.z)});
+    const double size = std::max(max_abs(wa), max_abs(wb));
     for (int k = 0; k < count_; ++k) {
       const Axis& x = axes_[static_cast<std::size_t>(k)];
       const double reach = x.a[0] * ha.x + x.a[1] * ha.y + x.a[2] * ha.z + x.b[0] * hb.x +

@@ -9,7 +9,9 @@
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
+#include "contain/values/max_abs.h"
 #include "distance/flat_answer.h"
+#include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
 
@@ -18,13 +20,6 @@ namespace contain::distance {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double max_abs(std::span<const Vec3> points) {
-  double m = 0.0;
-  for (const Vec3& v : points)
-    m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return m;
-}
 
 // The pair query in stages, each a function below; convex_convex and convex_convex_within
 // compose them and differ only at stage 4 (within may stop at a pair proven close enough) and
@@ -49,11 +44,6 @@ struct PlacedPair {
     return {wb[static_cast<std::size_t>(t[0])], wb[static_cast<std::size_t>(t[1])],
             wb[static_cast<std::size_t>(t[2])]};
   }
-};
-
-struct PairContender {
-  std::int32_t a, b;
-  double lo, hi;
 };
 
 // Stage 0: B's vertices placed by tb, into the thread's buffer; false if any is not finite.
@@ -174,7 +164,7 @@ void narrow(const PlacedPair& pair, Narrowed& left) {
 struct PairBuffers {
   std::vector<Vec3> wb;
   Narrowed left;
-  std::vector<PairContender> contenders;
+  std::vector<detail::PairContender> contenders;
 };
 
 // Stages 0 to 3: B placed, containment, GJK's narrowing. `narrowed` when the faces left are
@@ -199,7 +189,7 @@ Opened open_pair(const ConvexPolyhedron& a, double a_max_abs, const ConvexPolyhe
 // Stage 4: the pairs of the faces left, bounded; those that can be closest are kept, in (a, b)
 // order. Returns true, early, when a pair is proven within `proven` (squared; -infinity: never).
 bool collect_contenders(const PlacedPair& pair, const Narrowed& left, double proven,
-                        PairDistance3& out, std::vector<PairContender>& contenders) {
+                        PairDistance3& out, std::vector<detail::PairContender>& contenders) {
   contenders.clear();
   double best = left.upper;
   for (const std::int32_t fa : left.keep_a) {
@@ -214,28 +204,27 @@ bool collect_contenders(const PlacedPair& pair, const Narrowed& left, double pro
       best = std::min(best, hi);
     }
   }
-  std::erase_if(contenders, [&](const PairContender& c) { return c.lo > best; });
+  std::erase_if(contenders, [&](const detail::PairContender& c) { return c.lo > best; });
   out.contenders = contenders.size();
   return false;
 }
 
-// Stage 5: the exact stage among the contenders, in the order of the distance-tie rule.
+// Stage 5: the exact stage among the contenders, in the order of the distance-tie rule, as the
+// mesh and region pairs take it (least_contender.h). Stage 4 has already dropped the pairs its
+// best bound rules out, so no bound is passed (infinity drops nothing), and its (a, b) order is
+// the one least_contender sorts into: the same winner as a walk in collection order.
 predicates::FlatPair3 closest_contender(const PlacedPair& pair,
-                                        std::span<const PairContender> contenders,
+                                        std::vector<detail::PairContender>& contenders,
                                         PairDistance3& out) {
-  predicates::FlatPair3 winner{};
-  bool have = false;
-  for (const PairContender& c : contenders) {  // already in (a, b) order
-    const predicates::FlatPair3 flats =
-        predicates::closest_flats(pair.face_a(c.a), pair.face_b(c.b));
-    if (!have || predicates::compare_squared_distances(flats, winner) == Sign::negative) {
-      winner = flats;
-      out.triangle_a = c.a;
-      out.triangle_b = c.b;
-      have = true;
-    }
+  const detail::LeastContender<predicates::FlatPair3> winner =
+      detail::least_contender(contenders, kInf, [&](std::int32_t a, std::int32_t b) {
+        return predicates::closest_flats(pair.face_a(a), pair.face_b(b));
+      });
+  if (winner.found) {
+    out.triangle_a = winner.a;
+    out.triangle_b = winner.b;
   }
-  return winner;
+  return winner.pair;
 }
 
 }  // namespace

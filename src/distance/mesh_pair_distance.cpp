@@ -34,11 +34,6 @@ namespace {
 constexpr double kEps = predicates::unit_roundoff<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Triangle3 triangle_of(const std::vector<Vec3>& v, const TriangleIndices& t) {
-  return {v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
-          v[static_cast<std::size_t>(t[2])]};
-}
-
 // The gap of two intervals along one axis (0 when they overlap); plain comparisons, so that the
 // whole bound inlines into the descent's inner loop.
 inline double axis_gap(double a_min, double a_max, double b_min, double b_max) {
@@ -52,14 +47,6 @@ inline double box_box_lower_bound(const Box3& a, const Box3& b) {
   const double dy = axis_gap(a.min.y, a.max.y, b.min.y, b.max.y);
   const double dz = axis_gap(a.min.z, a.max.z, b.min.z, b.max.z);
   return ((dx * dx + dy * dy) + dz * dz) * (1 - 8 * kEps);
-}
-
-Box3 triangle_box(const Triangle3& t) {
-  Box3 box;
-  box.expand(t.a);
-  box.expand(t.b);
-  box.expand(t.c);
-  return box;
 }
 
 // Leaves of up to this many triangles have their placed triangles gathered once per leaf pair.
@@ -305,14 +292,13 @@ bvh::Visit MeshPairDistance::Descent::leaves(std::int32_t a, std::int32_t b) {
   for (std::int32_t t = 0; t < count_b; ++t) {
     const std::int32_t tbi = ib[static_cast<std::size_t>(q.first + t)];
     tris_b[t] = placed.vertices.triangle(mesh_b.triangles[static_cast<std::size_t>(tbi)]);
-    boxes_b[t] = triangle_box(tris_b[t]);
+    boxes_b[t] = bounding_box(tris_b[t]);
   }
   Triangle3 tris_a[kMaxLeaf];
   const std::int32_t count_a = std::min<std::int32_t>(p.count, kMaxLeaf);
   for (std::int32_t s = 0; s < count_a; ++s)
-    tris_a[s] = triangle_of(
-        mesh_a.vertices,
-        mesh_a.triangles[static_cast<std::size_t>(ia[static_cast<std::size_t>(p.first + s)])]);
+    tris_a[s] =
+        mesh_a.triangle(static_cast<std::size_t>(ia[static_cast<std::size_t>(p.first + s)]));
   if (count_a == p.count && count_b == q.count) {
     const Vec3 w = (p.box.min + p.box.max) - (leaf_box_b.min + leaf_box_b.max);
     if (detail::triangle_sets_quick_lower(std::span<const Triangle3>(tris_a, count_a),
@@ -322,10 +308,8 @@ bvh::Visit MeshPairDistance::Descent::leaves(std::int32_t a, std::int32_t b) {
   for (std::int32_t s = p.first; s < p.first + p.count; ++s) {
     const std::int32_t ta = ia[static_cast<std::size_t>(s)];
     const Triangle3 tri_a =
-        s - p.first < count_a
-            ? tris_a[s - p.first]
-            : triangle_of(mesh_a.vertices, mesh_a.triangles[static_cast<std::size_t>(ta)]);
-    const Box3 box_a = triangle_box(tri_a);
+        s - p.first < count_a ? tris_a[s - p.first] : mesh_a.triangle(static_cast<std::size_t>(ta));
+    const Box3 box_a = bounding_box(tri_a);
     if (box_box_lower_bound(box_a, leaf_box_b) > best) continue;
     for (std::int32_t t = q.first; t < q.first + q.count; ++t) {
       const std::int32_t tbi = ib[static_cast<std::size_t>(t)];
@@ -385,7 +369,7 @@ MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
   if (pair_.b.solid) {
     const Mesh& b = pair_.b.mesh;
     for (const std::int32_t v : pair_.a.components) {
-      const Vec3 q = pair_.a.mesh.vertices[static_cast<std::size_t>(v)];
+      const Vec3 q = pair_.a.mesh.vertex(v);
       const Location location = inside::locate_by_ray(
           pair_.b.bvh, q, [&](const Box3& local) { return bvh::placed_box(local, placed.tb); },
           [&](std::int32_t t) {
@@ -408,7 +392,7 @@ MeshPairDistance::Closest MeshPairDistance::closest(Descent& descent) const {
   const detail::LeastContender<predicates::FlatPair3> winner =
       detail::least_contender(contenders, descent.best, [&](std::int32_t a, std::int32_t b) {
         return predicates::closest_flats(
-            triangle_of(pair_.a.mesh.vertices, pair_.a.mesh.triangles[static_cast<std::size_t>(a)]),
+            pair_.a.mesh.triangle(static_cast<std::size_t>(a)),
             descent.placed.vertices.triangle(pair_.b.mesh.triangles[static_cast<std::size_t>(b)]));
       });
   return {winner.pair, winner.a, winner.b, contenders.size()};

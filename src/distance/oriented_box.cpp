@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 #include "distance/triangle_pair_bounds.h"
 
 namespace contain::distance::detail {
@@ -209,8 +210,7 @@ constexpr std::int32_t kMaxOriented = 256;
 
 // |c|_inf + sum_k h_k of a box.
 double box_extent(const OrientedBox& b) {
-  return std::max({std::fabs(b.c.x), std::fabs(b.c.y), std::fabs(b.c.z)}) +
-         ((b.h[0] + b.h[1]) + b.h[2]);
+  return max_abs(b.c) + ((b.h[0] + b.h[1]) + b.h[2]);
 }
 
 }  // namespace
@@ -244,7 +244,7 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
       for (std::int32_t i = n.first; i < n.first + n.count; ++i)
         for (const std::int32_t v :
              mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
-          moments[k].add(mesh.vertices[static_cast<std::size_t>(v)], r);
+          moments[k].add(mesh.vertex(v), r);
     } else {
       moments[k] = moments[k + 1];
       moments[k].add(moments[static_cast<std::size_t>(n.first)]);
@@ -262,7 +262,7 @@ std::vector<OrientedBox> oriented_boxes(const bvh::Bvh& bvh, const Mesh& mesh) {
     for (std::int32_t i = lo; i < hi; ++i)
       for (const std::int32_t v :
            mesh.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(i)])])
-        points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+        points.push_back(mesh.vertex(v));
     const Moments& m = moments[k];
     Vec3 e[3];
     principal_frame(m, e);
@@ -316,7 +316,7 @@ OrientedPose oriented_pose(const Transform& tb, double extent_a, double extent_b
   double r1 = 0;
   for (const auto& row : tb.r)
     r1 = std::max(r1, (std::fabs(row[0]) + std::fabs(row[1])) + std::fabs(row[2]));
-  const double t = std::max({std::fabs(tb.t.x), std::fabs(tb.t.y), std::fabs(tb.t.z)});
+  const double t = max_abs(tb.t);
   pose.margin = 32 * kEps * ((extent_a + t) + r1 * extent_b);
   if (!std::isfinite(pose.margin)) pose.margin = std::numeric_limits<double>::infinity();
   return pose;

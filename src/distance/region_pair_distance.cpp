@@ -12,6 +12,7 @@
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 #include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
@@ -47,7 +48,7 @@ Edges edges_of(const MultiPolygon& region) {
       b.expand(Vec3{s.a.x, s.a.y, 0});
       b.expand(Vec3{s.b.x, s.b.y, 0});
       boxes.push_back(b);
-      e.max_abs = std::max({e.max_abs, std::fabs(s.a.x), std::fabs(s.a.y)});
+      e.max_abs = std::max(e.max_abs, max_abs(s.a));
     }
   }
   e.tree = bvh::Bvh(boxes);

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 #include "distance/oriented_box.h"
 
 namespace contain::distance::detail {
@@ -51,7 +52,7 @@ void fill_lane(std::span<const Vec3> points, Vec3 o, bool principal, int lane, O
       const double t = dot(u[a], d);
       const double perm =
           (std::fabs(u[a].x * d.x) + std::fabs(u[a].y * d.y)) + std::fabs(u[a].z * d.z);
-      const double big = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+      const double big = max_abs(d);
       const double err = 8 * kEps * (perm + big) + 0x1p-1000;
       lo = std::min(lo, t - err);
       hi = std::max(hi, t + err);

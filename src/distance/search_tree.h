@@ -29,6 +29,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/box.h"
+#include "contain/values/max_abs.h"
 #include "contain/values/vec.h"
 
 namespace contain::distance::detail {
@@ -93,7 +94,7 @@ struct LanePoint {
 /// (or for infinite d) m is +inf and every lane's bound 0.
 [[nodiscard]] inline LanePoint lane_point(Vec3 p, Vec3 o) {
   const Vec3 d = p - o;
-  const double big = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+  const double big = max_abs(d);
   constexpr float kInf = std::numeric_limits<float>::infinity();
   if (!(big <= 0x1p100)) return {Float4{}, Float4{}, Float4{}, Float4{kInf, kInf, kInf, kInf}};
   // m in floats, rounded up: the product by a power of two is exact, the sum and the conversion

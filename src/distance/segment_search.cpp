@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 
 namespace contain::distance::detail {
 
@@ -59,8 +60,7 @@ SegmentSearch::SegmentSearch(std::span<const Segment2> segments, const bvh::Buil
   for (const Segment2& s : segments_) {
     corners.push_back({s.a.x, s.a.y, 0});
     corners.push_back({s.b.x, s.b.y, 0});
-    max_abs =
-        std::max({max_abs, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
+    max_abs = std::max({max_abs, values::max_abs(s.a), values::max_abs(s.b)});
   }
   tree_ = SearchTree(corners, 2, options);
   ordered_.reserve(segments_.size());

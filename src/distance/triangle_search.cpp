@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "contain/values/max_abs.h"
 
 namespace contain::distance::detail {
 
@@ -113,14 +114,10 @@ TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
     : triangles_(triangles.begin(), triangles.end()) {
   std::vector<Vec3> corners;
   corners.reserve(3 * triangles_.size());
-  double max_abs = 0.0;
-  for (const Triangle3& t : triangles_) {
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 v = t.corner(k);
-      corners.push_back(v);
-      max_abs = std::max({max_abs, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    }
-  }
+  for (const Triangle3& t : triangles_)
+    for (int k = 0; k < 3; ++k)
+      corners.push_back(t.corner(k));
+  const double scale = values::max_abs(std::span<const Vec3>(corners));
   tree_ = SearchTree(corners, 3, options);
   ordered_.reserve(triangles_.size());
   planes_.reserve(triangles_.size());
@@ -128,8 +125,8 @@ TriangleSearch::TriangleSearch(std::span<const Triangle3> triangles,
     ordered_.push_back(triangles_[static_cast<std::size_t>(i)]);
     planes_.emplace_back(ordered_.back());
   }
-  slack_ = triangle_slack(max_abs);
-  max_abs_ = max_abs;
+  slack_ = triangle_slack(scale);
+  max_abs_ = scale;
 }
 
 PlaneBound::PlaneBound(const Triangle3& t) {

@@ -7,24 +7,17 @@
 #include "contain/bvh/triangle_boxes.h"
 #include "contain/shapes/mesh_components.h"
 #include "contain/shapes/mesh_validation.h"
+#include "contain/values/max_abs.h"
 
 namespace contain::inside {
 
 namespace {
 
-Mesh placed(const Mesh& mesh, const Transform& transform) {
-  Mesh out = mesh;
-  for (Vec3& v : out.vertices)
-    v = transform.apply(v);
-  return out;
-}
-
 // Everything but the solidity, which the pair takes from A's index instead of validating A.
 void prepare(PlacedMesh& side, const bvh::BuildOptions& options) {
   side.bvh = bvh::Bvh(bvh::triangle_boxes(side.mesh), options);
   side.components = component_vertices(side.mesh);
-  for (const Vec3& v : side.mesh.vertices)
-    side.max_abs = std::max({side.max_abs, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  side.max_abs = std::max(side.max_abs, max_abs(std::span<const Vec3>(side.mesh.vertices)));
 }
 
 }  // namespace

@@ -297,7 +297,7 @@ std::string format_stl(const Mesh& mesh, MeshFormat format) {
     for (const TriangleIndices& t : mesh.triangles) {
       out += "facet normal 0 0 0\nouter loop\n";
       for (std::int32_t i : t) {
-        const Vec3& v = mesh.vertices[static_cast<std::size_t>(i)];
+        const Vec3& v = mesh.vertex(i);
         out += "vertex ";
         append_double(out, v.x);
         out += ' ';
@@ -319,9 +319,9 @@ std::string format_stl(const Mesh& mesh, MeshFormat format) {
   for (int i = 0; i < 4; ++i)
     out += static_cast<char>((n >> (8 * i)) & 0xFF);
   for (const TriangleIndices& t : mesh.triangles) {
-    const Vec3 a = mesh.vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = mesh.vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const Vec3 a = mesh.vertex(t[0]);
+    const Vec3 b = mesh.vertex(t[1]);
+    const Vec3 c = mesh.vertex(t[2]);
     Vec3 normal = cross(b - a, c - a);
     const double len = length(normal);
     normal = (len > 0.0 && std::isfinite(len)) ? (1.0 / len) * normal : Vec3{};

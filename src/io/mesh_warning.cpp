@@ -1,5 +1,7 @@
 #include "contain/io/mesh_warning.h"
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace contain::io {
@@ -8,6 +10,20 @@ namespace {
 // "1 edge", "2 edges"; `many` where the plural is not the word and an s.
 std::string plural(std::size_t n, const std::string& word, const std::string& many = "") {
   return std::to_string(n) + " " + (n == 1 ? word : many.empty() ? word + "s" : many);
+}
+
+std::string_view reading_words(OpenMeshReading reading) {
+  switch (reading) {
+    case OpenMeshReading::surface_contact:
+      return "read as a surface, which meets the other shape only where they share a point";
+    case OpenMeshReading::surface_contact_in_scene:
+      return "read as a surface, which meets another shape only where they share a point";
+    case OpenMeshReading::surface_distance:
+      return "read as a surface, whose distance is to its triangles only";
+    case OpenMeshReading::winding_number_sign:
+      return "signs come from the generalized winding number (inside where >= 0.5)";
+  }
+  return "";
 }
 
 std::string joined(const std::vector<std::string>& parts) {
@@ -73,6 +89,17 @@ std::string mesh_warning(const collide::SelfIntersections& found) {
          std::to_string(first.second) + " meet away from the corners they share" + more +
          ", counted from 0 in file order): answers come from closed-exact ray parity, "
          "which reads a point inside two overlapping parts as outside";
+}
+
+std::string open_mesh_warning(std::string_view name, const MeshReport& report,
+                              OpenMeshReading reading) {
+  return std::string(name) + ": not closed (" + std::to_string(report.border_edges) +
+         " border edges, " + std::to_string(report.nonmanifold_edges) +
+         " non-manifold edges): " + std::string(reading_words(reading));
+}
+
+std::string open_mesh_warning(std::string_view name, OpenMeshReading reading) {
+  return std::string(name) + ": not closed: " + std::string(reading_words(reading));
 }
 
 }  // namespace contain::io

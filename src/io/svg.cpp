@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "contain/values/max_abs.h"
+
 namespace contain::io {
 namespace {
 
@@ -130,8 +132,7 @@ SvgCanvas::SvgCanvas(const Box2& world, double width_px)
   // A box wider than the largest double is drawn in quarter units, and one of subnormal or
   // nearly subnormal numbers in units of 2^-600 (both exact), so that its size, margin and
   // scale are finite and its shape is kept; to_pixels scales every point alike.
-  const double reach = std::max(
-      {std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x), std::abs(box.max.y)});
+  const double reach = std::max(max_abs(box.min), max_abs(box.max));
   if (!std::isfinite(box.max.x - box.min.x) || !std::isfinite(box.max.y - box.min.y)) {
     unit_ = 0.25;
   } else if (reach < 1e-200) {
@@ -250,9 +251,9 @@ std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle
   faces.reserve(mesh.triangles.size());
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const TriangleIndices& t = mesh.triangles[i];
-    const Vec3 a = mesh.vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = mesh.vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const Vec3 a = mesh.vertex(t[0]);
+    const Vec3 b = mesh.vertex(t[1]);
+    const Vec3 c = mesh.vertex(t[2]);
     const Vec3 n = cross(b - a, c - a);
     const double norm = length(n);
     const bool usable = norm > 0 && std::isfinite(norm);
@@ -277,7 +278,7 @@ std::size_t SvgCanvas::mesh(const Mesh& mesh, const View3& view, const MeshStyle
     const TriangleIndices& t = mesh.triangles[f.index];
     std::string d = "M";
     for (int k = 0; k < 3; ++k) {
-      const Vec3 v = mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+      const Vec3 v = mesh.vertex(t[static_cast<std::size_t>(k)]);
       const Vec2 p = to_pixels({dot(v, axes.right), dot(v, axes.up)});
       d += (k == 0 ? "" : "L") + number(p.x) + " " + number(p.y);
     }
@@ -353,7 +354,7 @@ std::string mesh_svg(const Mesh& mesh, const PictureOptions& options) {
   used.reserve(3 * mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles)
     for (const std::int32_t v : t)
-      used.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+      used.push_back(mesh.vertex(v));
   SvgCanvas canvas(projected_bounds(used, options.view), options.width_px);
   const std::size_t drawn =
       canvas.mesh(mesh, options.view, {.max_triangles = options.max_triangles});

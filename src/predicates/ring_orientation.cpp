@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/unit_roundoff.h"
 #include "predicates/expansion.h"
 
 namespace contain::predicates {
@@ -65,7 +66,7 @@ std::optional<Sign> filter(const Edges& edges, Vec2 o) {
     s += l - r;
     p += std::fabs(l) + std::fabs(r);
   }
-  constexpr double kCoefficient = 0x1p-53 * (1.0 + 0x1p-20);
+  constexpr double kCoefficient = unit_roundoff<double> * (1.0 + 0x1p-20);
   const double bound = static_cast<double>(m + 3) * kCoefficient * p + DBL_MIN;
   if (s > bound) return Sign::positive;
   if (-s > bound) return Sign::negative;

@@ -146,15 +146,12 @@ Result<ConvexPolyhedron> ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   faces.reserve(mesh.triangles.size());
   std::vector<bool> used(mesh.vertices.size(), false);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const TriangleIndices& tri = mesh.triangles[t];
-    const Triangle3 face{mesh.vertices[static_cast<std::size_t>(tri[0])],
-                         mesh.vertices[static_cast<std::size_t>(tri[1])],
-                         mesh.vertices[static_cast<std::size_t>(tri[2])]};
+    const Triangle3 face = mesh.triangle(t);
     if (collinear(face.a, face.b, face.c)) {
       return Error{ErrorKind::degenerate, "triangle " + std::to_string(t) + " is degenerate"};
     }
     faces.push_back(face);
-    for (std::int32_t i : tri)
+    for (std::int32_t i : mesh.triangles[t])
       used[static_cast<std::size_t>(i)] = true;
   }
   if (auto error = orient_convex(faces, mesh, used)) return std::move(*error);

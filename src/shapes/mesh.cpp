@@ -24,4 +24,11 @@ Result<Mesh> Mesh::from_arrays(std::vector<Vec3> vertices, std::vector<TriangleI
   return Mesh{std::move(vertices), std::move(triangles)};
 }
 
+Mesh placed(const Mesh& mesh, const Transform& transform) {
+  Mesh out = mesh;
+  for (Vec3& v : out.vertices)
+    v = transform.apply(v);
+  return out;
+}
+
 }  // namespace contain::shapes

@@ -57,7 +57,7 @@ std::optional<double> brute_force(const Mesh& a, std::span<const Vec3> a0, std::
   return best;
 }
 
-std::vector<Vec3> placed(const Mesh& m, const Transform& t) {
+std::vector<Vec3> placed_vertices(const Mesh& m, const Transform& t) {
   std::vector<Vec3> out;
   for (const Vec3& v : m.vertices)
     out.push_back(t.apply(v));
@@ -76,8 +76,8 @@ TEST(MovingMeshPair, FastBoxThroughAThinPlateIsHitThoughBothPosesAreDisjoint) {
   // t = 2.94 / 6 = 0.49, rounded down; contact first at a face, so every primitive touching then
   // is a vertex-face or edge-edge pair at the same time.
   const std::optional<double> expected =
-      brute_force(plate, plate.vertices, plate.vertices, bullet, placed(bullet, motion.from),
-                  placed(bullet, motion.to));
+      brute_force(plate, plate.vertices, plate.vertices, bullet,
+                  placed_vertices(bullet, motion.from), placed_vertices(bullet, motion.to));
   ASSERT_TRUE(expected.has_value());
   EXPECT_EQ(m.time, *expected);
   EXPECT_NEAR(m.time, 0.49, 1e-15);
@@ -156,8 +156,9 @@ TEST(MovingMeshPair, HierarchyEqualsTheBruteForceMinimumOnRandomMotions) {
     const MeshImpact m = mesh_mesh_ccd(a, b, ma, mb);
     if (m.witness == MeshImpactWitness::initial) continue;
     ++runs;
-    const std::optional<double> expected = brute_force(a, placed(a, ma.from), placed(a, ma.to), b,
-                                                       placed(b, mb.from), placed(b, mb.to));
+    const std::optional<double> expected =
+        brute_force(a, placed_vertices(a, ma.from), placed_vertices(a, ma.to), b,
+                    placed_vertices(b, mb.from), placed_vertices(b, mb.to));
     ASSERT_EQ(m.hit, expected.has_value()) << "motion " << i;
     if (expected) {
       ++hits;
@@ -176,7 +177,8 @@ TEST(MovingMeshPair, WitnessPrimitiveHasTheReportedTimeByTheOracle) {
     const Motion mb{test::random_pose(rng, 1.0), test::random_pose(rng, 1.0)};
     const MeshImpact m = mesh_mesh_ccd(plate, bullet, {}, mb);
     if (!m.hit || m.witness == MeshImpactWitness::initial) continue;
-    const std::vector<Vec3> b0 = placed(bullet, mb.from), b1 = placed(bullet, mb.to);
+    const std::vector<Vec3> b0 = placed_vertices(bullet, mb.from),
+                            b1 = placed_vertices(bullet, mb.to);
     std::optional<double> t;
     if (m.witness == MeshImpactWitness::edges) {
       t = test::exact_edge_edge_time(

@@ -134,7 +134,7 @@ void check_pair(const Mesh& ma, const Mesh& mb, const ConvexDistance& a, const C
                 const MeshPairDistance& meshes, const Transform& tb, int& failures) {
   const PairDistance3 got = convex_convex(a, b, tb);
   const PairDistance3 reference = meshes.distance(tb);
-  const Mesh wb = scenes::placed(mb, tb);
+  const Mesh wb = placed(mb, tb);
   const test::PairOracle want = test::pair_oracle(ma, wb);
   const ConvexPolyhedron pa = *ConvexPolyhedron::from_mesh(ma);
   const auto pb = ConvexPolyhedron::from_mesh(wb);

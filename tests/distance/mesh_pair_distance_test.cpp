@@ -113,7 +113,7 @@ Transform rotation(double angle, Vec3 t) {
 void check_pose(const MeshPairDistance& pair, const Mesh& a, const Mesh& b, const Transform& tb,
                 int& failures) {
   const PairDistance3 got = pair.distance(tb);
-  const Mesh wb = scenes::placed(b, tb);
+  const Mesh wb = placed(b, tb);
   const test::PairOracle want = test::pair_oracle(a, wb);
   bool nested = false;
   if (want.d2 > 0) {

@@ -180,7 +180,7 @@ int check_lower(const Mesh& a, const Mesh& b, const Transform& tb, int& positive
   const bvh::Bvh ba(bvh::triangle_boxes(a)), bb(bvh::triangle_boxes(b));
   const std::vector<OrientedBox> oa = oriented_boxes(ba, a), ob = oriented_boxes(bb, b);
   const OrientedPose pose = oriented_pose(tb, oriented_extent(oa), oriented_extent(ob));
-  const Mesh wb = scenes::placed(b, tb);
+  const Mesh wb = placed(b, tb);
   const std::size_t na = a.triangles.size(), nb = b.triangles.size();
   std::vector<mpq_class> d2(na * nb);
   for (std::size_t i = 0; i < na; ++i)
@@ -260,7 +260,7 @@ TEST(OrientedBoxLower, IsNearTheGapOfTwoFacingSquaresAtAnyOrientation) {
   const double c = std::sqrt(0.5);
   Transform tilt;  // 45 degrees about x, then 45 about z
   tilt.r = {{{c, -c * c, c * c}, {c, c * c, -c * c}, {0, c, c}}};
-  const Mesh a = scenes::placed(square(0), tilt);
+  const Mesh a = placed(square(0), tilt);
   const Mesh b = square(0.1);
   const bvh::Bvh ba(bvh::triangle_boxes(a)), bb(bvh::triangle_boxes(b));
   const std::vector<OrientedBox> oa = oriented_boxes(ba, a), ob = oriented_boxes(bb, b);

@@ -64,7 +64,7 @@ TEST(LocateByRay, EqualsTheExactMeshIndexOfThePlacedTorusAtItsVerticesAndRandomP
              {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
              {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
     tf.t = {u(rng) * 100, u(rng), u(rng)};
-    const Mesh world = scenes::placed(torus.mesh, tf);
+    const Mesh world = placed(torus.mesh, tf);
     const MeshIndex index(world);
     std::vector<Vec3> points = world.vertices;  // every one on the surface
     for (int k = 0; k < 400; ++k)

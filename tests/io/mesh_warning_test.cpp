@@ -92,5 +92,26 @@ TEST(MeshWarning, SelfCrossingNamesTheFirstPairAndTheParityRule) {
       << mesh_warning(stopped);
 }
 
+TEST(OpenMeshWarning, NamesTheMeshItsCountsAndHowEachQueryReadsIt) {
+  MeshReport r = closed_report();
+  r.border_edges = 4;
+  r.nonmanifold_edges = 1;
+  EXPECT_EQ(open_mesh_warning("a.obj", r, OpenMeshReading::surface_contact),
+            "a.obj: not closed (4 border edges, 1 non-manifold edges): read as a surface, which "
+            "meets the other shape only where they share a point");
+  EXPECT_EQ(open_mesh_warning("b.off", r, OpenMeshReading::surface_distance),
+            "b.off: not closed (4 border edges, 1 non-manifold edges): read as a surface, whose "
+            "distance is to its triangles only");
+  EXPECT_EQ(open_mesh_warning("c.stl", r, OpenMeshReading::winding_number_sign),
+            "c.stl: not closed (4 border edges, 1 non-manifold edges): signs come from the "
+            "generalized winding number (inside where >= 0.5)");
+}
+
+TEST(OpenMeshWarning, WithoutAReportSaysOnlyThatTheMeshIsOpen) {
+  EXPECT_EQ(open_mesh_warning("m.obj (object 3)", OpenMeshReading::surface_contact_in_scene),
+            "m.obj (object 3): not closed: read as a surface, which meets another shape only where "
+            "they share a point");
+}
+
 }  // namespace
 }  // namespace contain::io

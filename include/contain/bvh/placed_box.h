@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "contain/predicates/unit_roundoff.h"
 #include "contain/values/box.h"
 #include "contain/values/transform.h"
 
@@ -29,7 +30,7 @@ namespace contain::bvh {
 /// widened by the proven rounding margin above. Inline: the pair descents call it per node.
 /// O(1).
 [[nodiscard]] inline Box3 placed_box(const Box3& local, const Transform& transform) {
-  constexpr double eps = 0x1p-53;
+  constexpr double eps = predicates::unit_roundoff<double>;
   const double lo[3] = {local.min.x, local.min.y, local.min.z};
   const double hi[3] = {local.max.x, local.max.y, local.max.z};
   const double t[3] = {transform.t.x, transform.t.y, transform.t.z};
@@ -60,14 +61,14 @@ namespace contain::bvh {
     out = std::max(
         out, std::fabs(t[i]) + ((std::fabs(r[0]) + std::fabs(r[1])) + std::fabs(r[2])) * max_abs);
   }
-  return out * (1 + 16 * 0x1p-53);
+  return out * (1 + 16 * predicates::unit_roundoff<double>);
 }
 
 /// A bound on |apply(v)_i - (R v + t)_i|, every coordinate i, for |v|_inf <= `max_abs`: how far
 /// a placed vertex lies from its exact image (gamma_4 of the largest s_i above, doubled for the
 /// bound's own rounding, plus the underflow of three products). O(1).
 [[nodiscard]] inline double placement_error(const Transform& transform, double max_abs) {
-  return 8 * 0x1p-53 * placed_max_abs(transform, max_abs) +
+  return 8 * predicates::unit_roundoff<double> * placed_max_abs(transform, max_abs) +
          4 * std::numeric_limits<double>::denorm_min();
 }
 

@@ -5,6 +5,7 @@
 /// keeps the facts as data (`inside::MeshIndex::regime()`, `MeshReport`).
 
 #include <string>
+#include <string_view>
 
 #include "contain/collide/self_intersections.h"
 #include "contain/inside/mesh_index.h"
@@ -34,5 +35,28 @@ namespace contain::io {
 /// the count when more than one was counted ("... and 5 more pairs"; "at least" when the search
 /// stopped at its limit). O(1).
 [[nodiscard]] std::string mesh_warning(const collide::SelfIntersections& found);
+
+/// How a pair or scene query reads a mesh that is not closed: the second half of its warning.
+enum class OpenMeshReading {
+  /// "read as a surface, which meets the other shape only where they share a point" (a pair).
+  surface_contact,
+  /// "read as a surface, which meets another shape only where they share a point" (a scene).
+  surface_contact_in_scene,
+  /// "read as a surface, whose distance is to its triangles only".
+  surface_distance,
+  /// "signs come from the generalized winding number (inside where >= 0.5)".
+  winding_number_sign,
+};
+
+/// One line for a user about the mesh `name` that is not closed and is answered as `reading`
+/// says: "NAME: not closed (B border edges, N non-manifold edges): READING" with the counts of
+/// `report` (written as numbers, "1 border edges" too: the command's words since the pair
+/// queries came). O(1).
+[[nodiscard]] std::string open_mesh_warning(std::string_view name, const MeshReport& report,
+                                            OpenMeshReading reading);
+
+/// The same line without the counts, where a query knows only that the mesh is open (a scene's
+/// objects): "NAME: not closed: READING". O(1).
+[[nodiscard]] std::string open_mesh_warning(std::string_view name, OpenMeshReading reading);
 
 }  // namespace contain::io

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contain/core/result.h"
+#include "contain/values/transform.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
@@ -41,10 +42,16 @@ struct Mesh {
   friend bool operator==(const Mesh&, const Mesh&) = default;
 };
 
+/// `mesh` with every vertex replaced by `transform.apply(v)`, the triangles unchanged: the
+/// doubles every exact decision on a placed mesh is made on (a pair query's A, the brute-force
+/// reference). The result is finite where the placed coordinates do not overflow. O(n).
+[[nodiscard]] Mesh placed(const Mesh& mesh, const Transform& transform);
+
 }  // namespace contain::shapes
 
 // Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
 namespace contain {
 using shapes::Mesh;
+using shapes::placed;
 using shapes::TriangleIndices;
 }  // namespace contain

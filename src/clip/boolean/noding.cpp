@@ -34,6 +34,7 @@
 #include "clip/boolean/chains.h"
 #include "clip/boolean/grid.h"
 #include "clip/boolean/piece_tests.h"
+#include "contain/values/max_abs.h"
 
 namespace contain::clip::detail {
 namespace {
@@ -90,8 +91,8 @@ class Noder {
     out_.first[n] = 2 * n;
     if (magnitude <= 0.0) {
       for (const NodingInput& s : segments_) {
-        magnitude = std::max(magnitude, std::max(std::fabs(s.a.x), std::fabs(s.a.y)));
-        magnitude = std::max(magnitude, std::max(std::fabs(s.b.x), std::fabs(s.b.y)));
+        magnitude = std::max(magnitude, max_abs(s.a));
+        magnitude = std::max(magnitude, max_abs(s.b));
       }
     }
     out_.event.reserve(room);
