@@ -35,6 +35,16 @@ void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
   if (!words.empty()) warn(std::string(name) + ": " + words);
 }
 
+std::future<std::string> start_self_crossing_check(std::string name, const Mesh& mesh,
+                                                   int threads) {
+  auto check = [name = std::move(name), &mesh] {
+    const std::string words =
+        io::mesh_warning(collide::self_intersections(mesh, {.keep = 1, .limit = 1}));
+    return words.empty() ? words : name + ": " + words;
+  };
+  return std::async(threads == 1 ? std::launch::deferred : std::launch::async, std::move(check));
+}
+
 Result<MultiPolygon> read_region_warned(const std::string& path) {
   io::WktNotes notes;
   auto region = io::read_region(path, &notes);

@@ -70,13 +70,19 @@ int run_csg(const InsideOptions& o) {
 int run_mesh(const InsideOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
+  // The self-crossing check matters only for a closed mesh, but it runs beside reading the
+  // points and building the index (which says whether the mesh is closed) to hide its cost.
+  std::future<std::string> crossing = start_self_crossing_check(o.mesh, file->mesh, o.threads);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   const inside::MeshIndex index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
-  if (index.regime() == inside::MeshRegime::closed_exact) warn_if_self_crossing(o.mesh, file->mesh);
   const std::vector<Location> locations = locate_all(index, points->points, o);
+  if (index.regime() == inside::MeshRegime::closed_exact) {
+    const std::string words = crossing.get();
+    if (!words.empty()) warn(words);
+  }
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
