@@ -24,20 +24,12 @@ Impact edge_edge_ccd(const CcdQuery& query) {
 
 void vertex_face_ccd(std::span<const CcdQuery> queries, std::span<Impact> out,
                      const BatchOptions& options) {
-  const std::size_t n = std::min(queries.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = vertex_face_ccd(queries[i]);
-  });
+  batch_map(queries, out, options, 4096, [](const CcdQuery& q) { return vertex_face_ccd(q); });
 }
 
 void edge_edge_ccd(std::span<const CcdQuery> queries, std::span<Impact> out,
                    const BatchOptions& options) {
-  const std::size_t n = std::min(queries.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = edge_edge_ccd(queries[i]);
-  });
+  batch_map(queries, out, options, 4096, [](const CcdQuery& q) { return edge_edge_ccd(q); });
 }
 
 }  // namespace contain::collide

@@ -18,11 +18,7 @@ Contact MeshPair::collide(const Transform& tb) const {
 
 void MeshPair::collide(std::span<const Transform> poses, std::span<Contact> out,
                        const BatchOptions& options) const {
-  const std::size_t n = std::min(poses.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = collide(poses[i]);
-  });
+  batch_map(poses, out, options, 4096, [&](const Transform& pose) { return collide(pose); });
 }
 
 Contact mesh_mesh(const Mesh& a, const Mesh& b, const Transform& transform_a,

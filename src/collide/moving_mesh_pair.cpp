@@ -394,11 +394,8 @@ MeshImpact MovingMeshPair::first_contact(std::span<const Vec3> b_at1) const {
 
 void MovingMeshPair::first_contact(std::span<const Motion> motions_b, std::span<MeshImpact> out,
                                    const BatchOptions& options) const {
-  const std::size_t n = std::min(motions_b.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = first_contact(motions_b[i]);
-  });
+  batch_map(motions_b, out, options, 4096,
+            [&](const Motion& motion) { return first_contact(motion); });
 }
 
 MeshImpact mesh_mesh_ccd(const Mesh& a, const Mesh& b, const Motion& motion_a,

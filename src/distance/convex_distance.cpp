@@ -255,7 +255,7 @@ Closest3 ConvexDistance::query(Vec3 p, const PointQuery& query) const {
 
 void ConvexDistance::query(std::span<const Vec3> points, std::span<Closest3> out,
                            const PointQuery& query, const BatchOptions& options) const {
-  const std::size_t n = std::min(points.size(), out.size());
+  const std::size_t n = batch_size(points.size(), out.size());
   surface_.query(points.first(n), out.first(n),
                  {.signed_distance = false, .closest_point = query.closest_point}, options);
   if (!query.signed_distance) return;

@@ -160,7 +160,7 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
 
 void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& q,
                          const BatchOptions& options) const {
-  const std::size_t n = std::min(points.size(), out.size());
+  const std::size_t n = batch_size(points.size(), out.size());
   // Points in Morton order of their position, so that neighbours in the order are neighbours in
   // space and each query starts from the previous one's closest triangle (a hint: it bounds the
   // search early and never changes an answer, which is exact).
@@ -194,11 +194,8 @@ bool MeshDistance::within(Vec3 p, double d) const {
 
 void MeshDistance::within(std::span<const Vec3> points, double d, std::span<std::uint8_t> out,
                           const BatchOptions& options) const {
-  const std::size_t n = std::min(points.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = within(points[i], d) ? 1 : 0;
-  });
+  batch_map(points, out, options, 4096,
+            [&](Vec3 p) -> std::uint8_t { return within(p, d) ? 1 : 0; });
 }
 
 MeshDistanceStats MeshDistance::stats() {

@@ -438,21 +438,14 @@ bool MeshPairDistance::within(const Transform& transform_b, double d) const {
 }
 void MeshPairDistance::distance(std::span<const Transform> poses, std::span<PairDistance3> out,
                                 const BatchOptions& options) const {
-  const std::size_t n = std::min(poses.size(), out.size());
   // Poses are heavy items: one is enough for a thread.
-  parallel_for(n, options, std::size_t{1}, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = distance(poses[i]);
-  });
+  batch_map(poses, out, options, 1, [&](const Transform& pose) { return distance(pose); });
 }
 
 void MeshPairDistance::within(std::span<const Transform> poses, double d,
                               std::span<std::uint8_t> out, const BatchOptions& options) const {
-  const std::size_t n = std::min(poses.size(), out.size());
-  parallel_for(n, options, std::size_t{1}, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = within(poses[i], d) ? 1 : 0;
-  });
+  batch_map(poses, out, options, 1,
+            [&](const Transform& pose) -> std::uint8_t { return within(pose, d) ? 1 : 0; });
 }
 
 PairDistance3 mesh_mesh(const Mesh& a, const Mesh& b, const Transform& transform_a,

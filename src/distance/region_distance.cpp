@@ -110,7 +110,7 @@ Closest2 RegionDistance::query_with_hint(Vec2 p, const PointQuery& query, std::i
 
 void RegionDistance::query(std::span<const Vec2> points, std::span<Closest2> out,
                            const PointQuery& q, const BatchOptions& options) const {
-  const std::size_t n = std::min(points.size(), out.size());
+  const std::size_t n = batch_size(points.size(), out.size());
   // Morton order with the previous point's edge as a hint, as MeshDistance does.
   const std::vector<std::uint32_t> order = detail::morton_order(points.first(n));
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
@@ -142,11 +142,8 @@ bool RegionDistance::within(Vec2 p, double d) const {
 
 void RegionDistance::within(std::span<const Vec2> points, double d, std::span<std::uint8_t> out,
                             const BatchOptions& options) const {
-  const std::size_t n = std::min(points.size(), out.size());
-  parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = within(points[i], d) ? 1 : 0;
-  });
+  batch_map(points, out, options, 4096,
+            [&](Vec2 p) -> std::uint8_t { return within(p, d) ? 1 : 0; });
 }
 
 Closest2 point_region(const MultiPolygon& region, Vec2 p, const PointQuery& query,

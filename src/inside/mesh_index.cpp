@@ -348,7 +348,7 @@ Location MeshIndex::locate_winding(Vec3 p) const {
 
 void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
                        const BatchOptions& options) const {
-  const std::size_t count = std::min(points.size(), out.size());
+  const std::size_t count = batch_size(points.size(), out.size());
   if (regime_ == MeshRegime::winding_number || state_.empty()) {
     parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
       for (std::size_t q = begin; q < end; ++q)

@@ -322,7 +322,7 @@ std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
 
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
                           const BatchOptions& options) const {
-  const std::size_t count = std::min(points.size(), out.size());
+  const std::size_t count = batch_size(points.size(), out.size());
   if (cells_.empty()) {
     std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count), Location::outside);
     return;

@@ -79,8 +79,8 @@ struct Impact {
 /// signs) or an end lies on the other segment.
 [[nodiscard]] Impact edge_edge_ccd(const CcdQuery& query);
 
-/// out[i] = vertex_face_ccd(queries[i]) for i < min(sizes), on `options.threads` threads (the
-/// answers do not depend on the thread count).
+/// out[i] = vertex_face_ccd(queries[i]) for every i (`out` has the inputs' size: `batch_size`), on
+/// `options.threads` threads (the answers do not depend on the thread count).
 void vertex_face_ccd(std::span<const CcdQuery> queries, std::span<Impact> out,
                      const BatchOptions& options = {});
 /// out[i] = edge_edge_ccd(queries[i]), as above.

@@ -53,7 +53,8 @@ class MeshPair {
   /// Does A meet B placed by `transform_b`?
   [[nodiscard]] Contact collide(const Transform& transform_b) const;
 
-  /// out[i] = collide(poses[i]) for i < min(sizes), in parallel on `options.threads` threads.
+  /// out[i] = collide(poses[i]) for every i (`out` has the inputs' size: `batch_size`), in parallel
+  /// on `options.threads` threads.
   void collide(std::span<const Transform> poses, std::span<Contact> out,
                const BatchOptions& options = {}) const;
 

@@ -117,8 +117,8 @@ class MovingMeshPair {
   /// position per vertex of B (precondition). Builds B's swept hierarchy for this query.
   [[nodiscard]] MeshImpact first_contact(std::span<const Vec3> b_at1) const;
 
-  /// out[i] = first_contact(motions_b[i]) for i < min(sizes), in parallel on `options.threads`
-  /// threads (answers independent of the thread count).
+  /// out[i] = first_contact(motions_b[i]) for every i (`out` has the inputs' size: `batch_size`),
+  /// in parallel on `options.threads` threads (answers independent of the thread count).
   void first_contact(std::span<const Motion> motions_b, std::span<MeshImpact> out,
                      const BatchOptions& options = {}) const;
 

@@ -3,7 +3,9 @@
 /// Batch work over all cores with std::thread: the library core needs no thread pool library.
 
 #include <algorithm>
+#include <cassert>
 #include <cstddef>
+#include <span>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -55,6 +57,28 @@ void parallel_for(std::size_t count, const BatchOptions& options, std::size_t mi
 template <class Body>
 void parallel_for(std::size_t count, const BatchOptions& options, Body&& body) {
   parallel_for(count, options, std::size_t{4096}, std::forward<Body>(body));
+}
+
+/// The one size rule of batch calls `f(inputs, out, ..., BatchOptions)` (docs/architecture.md,
+/// "Naming", rule 3): `out` has the inputs' size, and a different size is a programming error,
+/// asserted. A build without assertions answers the common prefix, so that nothing is written
+/// past `out` either way. Returns the number of items to answer.
+[[nodiscard]] inline std::size_t batch_size(std::size_t inputs, std::size_t out) {
+  assert(inputs == out && "a batch call's out span must have its inputs' size");
+  return std::min(inputs, out);
+}
+
+/// `out[i] = answer(inputs[i])` for every i (`batch_size`'s rule), in ranges of at least
+/// `min_chunk` items on up to `thread_count` threads: each answer is the same whatever the thread
+/// count. The loop of every batch call whose items need no shared state. `answer` must not throw.
+template <class In, class Out, class Answer>
+void batch_map(std::span<In> inputs, std::span<Out> out, const BatchOptions& options,
+               std::size_t min_chunk, Answer&& answer) {
+  parallel_for(batch_size(inputs.size(), out.size()), options, min_chunk,
+               [&](std::size_t begin, std::size_t end) {
+                 for (std::size_t i = begin; i < end; ++i)
+                   out[i] = answer(inputs[i]);
+               });
 }
 
 }  // namespace contain

@@ -44,7 +44,8 @@ class ConvexDistance {
 
   /// The distance from `p` to the surface, the closest point and face (`Closest3::feature`).
   [[nodiscard]] Closest3 query(Vec3 p, const PointQuery& query = {}) const;
-  /// out[i] = query(points[i]) for i < min(sizes), on `options.threads` threads (0: all).
+  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  /// `options.threads` threads (0: all).
   void query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
              const BatchOptions& options = {}) const;
   /// Is the unsigned distance from `p` to the surface at most `d`? Exact, no rounding.

@@ -88,7 +88,8 @@ class MeshDistance {
   /// infinite coordinate gets a NaN distance and feature -1.
   [[nodiscard]] Closest3 query(Vec3 p, const PointQuery& query = {}) const;
 
-  /// out[i] = query(points[i]) for i < min(sizes), on `options.threads` threads (0: all).
+  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  /// `options.threads` threads (0: all).
   void query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
              const BatchOptions& options = {}) const;
 
@@ -96,7 +97,8 @@ class MeshDistance {
   /// against d^2, no rounding. `d` < 0 or NaN, or a point that is not finite: false.
   [[nodiscard]] bool within(Vec3 p, double d) const;
 
-  /// out[i] = within(points[i], d) (1 or 0) for i < min(sizes), in parallel.
+  /// out[i] = within(points[i], d) (1 or 0) for every i (`out` has the inputs' size: `batch_size`),
+  /// in parallel.
   void within(std::span<const Vec3> points, double d, std::span<std::uint8_t> out,
               const BatchOptions& options = {}) const;
 

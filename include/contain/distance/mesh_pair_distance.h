@@ -95,7 +95,8 @@ class MeshPairDistance {
 
   /// The distance between A and B placed by `transform_b`.
   [[nodiscard]] PairDistance3 distance(const Transform& transform_b) const;
-  /// out[i] = distance(poses[i]) for i < min(sizes), in parallel on `options.threads` threads.
+  /// out[i] = distance(poses[i]) for every i (`out` has the inputs' size: `batch_size`), in
+  /// parallel on `options.threads` threads.
   void distance(std::span<const Transform> poses, std::span<PairDistance3> out,
                 const BatchOptions& options = {}) const;
 

@@ -67,7 +67,8 @@ class RegionDistance {
   /// The distance from `p` to the rings, its closest point and edge. A point that is not finite
   /// gets a NaN distance and ring = edge = -1.
   [[nodiscard]] Closest2 query(Vec2 p, const PointQuery& query = {}) const;
-  /// out[i] = query(points[i]) for i < min(sizes), on `options.threads` threads (0: all).
+  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  /// `options.threads` threads (0: all).
   void query(std::span<const Vec2> points, std::span<Closest2> out, const PointQuery& query = {},
              const BatchOptions& options = {}) const;
 

@@ -85,8 +85,8 @@ class MeshIndex {
   /// Where `point` lies.
   [[nodiscard]] Location locate(Vec3 point) const;
 
-  /// Locates `points[i]` into `out[i]` for i < min(points.size(), out.size()), in parallel on
-  /// `options.threads` threads (0: all). Deterministic.
+  /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
+  /// parallel on `options.threads` threads (0: all). Deterministic.
   void locate(std::span<const Vec3> points, std::span<Location> out,
               const BatchOptions& options = {}) const;
 

@@ -69,8 +69,8 @@ class PolygonIndex {
   /// Where `point` lies: exactly as `point_in_polygon(rings, point, {.fill})`.
   [[nodiscard]] Location locate(Vec2 point) const;
 
-  /// Locates `points[i]` into `out[i]` for i < min(points.size(), out.size()), in parallel on
-  /// `options.threads` threads (0: all hardware threads). Deterministic.
+  /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
+  /// parallel on `options.threads` threads (0: all hardware threads). Deterministic.
   void locate(std::span<const Vec2> points, std::span<Location> out,
               const BatchOptions& options = {}) const;
 
