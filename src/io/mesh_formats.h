@@ -37,4 +37,8 @@ inline void append_fan(std::vector<TriangleIndices>& triangles,
                                            std::vector<TriangleIndices> triangles, MeshInfo info,
                                            const std::string& source);
 
+/// Appends "PREFIX x y z\n" with the shortest round-trip form of each coordinate: the vertex
+/// lines of OBJ ("v "), OFF and ASCII PLY (""), and ASCII STL ("vertex ").
+void append_vertex_line(std::string& out, const char* prefix, Vec3 v);
+
 }  // namespace contain::io::detail

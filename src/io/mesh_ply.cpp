@@ -480,14 +480,8 @@ std::string format_ply(const Mesh& mesh, MeshFormat format) {
          std::to_string(mesh.triangles.size()) +
          "\nproperty list uchar int vertex_indices\nend_header\n";
   if (ascii) {
-    for (const Vec3& v : mesh.vertices) {
-      append_double(out, v.x);
-      out += ' ';
-      append_double(out, v.y);
-      out += ' ';
-      append_double(out, v.z);
-      out += '\n';
-    }
+    for (const Vec3& v : mesh.vertices)
+      append_vertex_line(out, "", v);
     for (const TriangleIndices& t : mesh.triangles) {
       out += "3 " + std::to_string(t[0]) + ' ' + std::to_string(t[1]) + ' ' + std::to_string(t[2]) +
              '\n';

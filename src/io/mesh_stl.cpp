@@ -296,16 +296,8 @@ std::string format_stl(const Mesh& mesh, MeshFormat format) {
     out += "solid contain\n";
     for (const TriangleIndices& t : mesh.triangles) {
       out += "facet normal 0 0 0\nouter loop\n";
-      for (std::int32_t i : t) {
-        const Vec3& v = mesh.vertex(i);
-        out += "vertex ";
-        append_double(out, v.x);
-        out += ' ';
-        append_double(out, v.y);
-        out += ' ';
-        append_double(out, v.z);
-        out += '\n';
-      }
+      for (std::int32_t i : t)
+        append_vertex_line(out, "vertex ", mesh.vertex(i));
       out += "endloop\nendfacet\n";
     }
     out += "endsolid contain\n";

@@ -348,8 +348,6 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   return finish_mesh(std::move(vertices), std::move(triangles), info, source);
 }
 
-namespace {
-
 void append_vertex_line(std::string& out, const char* prefix, Vec3 v) {
   out += prefix;
   append_double(out, v.x);
@@ -359,6 +357,8 @@ void append_vertex_line(std::string& out, const char* prefix, Vec3 v) {
   append_double(out, v.z);
   out += '\n';
 }
+
+namespace {
 
 void append_index_line(std::string& out, const char* prefix, const TriangleIndices& t, int base) {
   out += prefix;
