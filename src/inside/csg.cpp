@@ -394,10 +394,7 @@ Location CsgSolid::locate(Vec3 p) const {
 
 void CsgSolid::locate(std::span<const Vec3> points, std::span<Location> out,
                       const BatchOptions& options) const {
-  parallel_for(points.size(), options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = locate(points[i]);
-  });
+  batch_map(points, out, options, 4096, [&](Vec3 p) { return locate(p); });
 }
 
 Location point_in_csg(const CsgSolid& solid, Vec3 p) {

@@ -40,10 +40,7 @@ Location point_in_convex(const ConvexPolyhedron& polyhedron, std::span<const Vec
 
 void point_in_convex(const ConvexPolyhedron& polyhedron, std::span<const Vec3> points,
                      std::span<Location> out, const BatchOptions& options) {
-  parallel_for(points.size(), options, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      out[i] = point_in_convex(polyhedron, points[i]);
-  });
+  batch_map(points, out, options, 4096, [&](Vec3 p) { return point_in_convex(polyhedron, p); });
 }
 
 }  // namespace contain::inside

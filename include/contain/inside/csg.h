@@ -90,7 +90,8 @@ class CsgSolid {
   [[nodiscard]] Location locate(Vec3 p) const;
 
   /// locate() for every point, in parallel (core/parallel.h); out[i] is the answer for
-  /// points[i], the same whatever the thread count. Precondition: out.size() == points.size().
+  /// points[i], the same whatever the thread count. Precondition: out.size() == points.size()
+  /// (asserted: `batch_size`).
   void locate(std::span<const Vec3> points, std::span<Location> out,
               const BatchOptions& options = {}) const;
 

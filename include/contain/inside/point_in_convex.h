@@ -29,7 +29,7 @@ namespace contain::inside {
                                        std::span<const Vec3> placed, Vec3 p);
 
 /// point_in_convex for every point, in parallel; out[i] is the answer for points[i] whatever the
-/// thread count. Precondition: out.size() == points.size().
+/// thread count. Precondition: out.size() == points.size() (asserted: `batch_size`).
 void point_in_convex(const ConvexPolyhedron& polyhedron, std::span<const Vec3> points,
                      std::span<Location> out, const BatchOptions& options = {});
 
