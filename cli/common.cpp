@@ -17,6 +17,7 @@
 #include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
+#include "contain/shapes/mesh_validation.h"
 
 namespace contain::cli {
 
@@ -29,18 +30,28 @@ void warn(std::string_view message) {
   std::cerr << "contain: warning: " << message << '\n';
 }
 
-void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
+namespace {
+
+// The warning's line for a mesh that crosses itself, empty when it does not.
+std::string self_crossing_line(std::string_view name, const Mesh& mesh) {
   const std::string words =
       io::mesh_warning(collide::self_intersections(mesh, {.keep = 1, .limit = 1}));
-  if (!words.empty()) warn(std::string(name) + ": " + words);
+  return words.empty() ? words : std::string(name) + ": " + words;
+}
+
+}  // namespace
+
+void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
+  const std::string line = self_crossing_line(name, mesh);
+  if (!line.empty()) warn(line);
 }
 
 std::future<std::string> start_self_crossing_check(std::string name, const Mesh& mesh,
                                                    int threads) {
+  // Started before the index says whether the mesh is closed: an open mesh (answered by the
+  // winding number, where overlaps count) is not searched, so its run does not wait for it.
   auto check = [name = std::move(name), &mesh] {
-    const std::string words =
-        io::mesh_warning(collide::self_intersections(mesh, {.keep = 1, .limit = 1}));
-    return words.empty() ? words : name + ": " + words;
+    return validate_mesh(mesh).closed() ? self_crossing_line(name, mesh) : std::string();
   };
   return std::async(threads == 1 ? std::launch::deferred : std::launch::async, std::move(check));
 }

@@ -44,8 +44,8 @@ void warn_if_self_crossing(std::string_view name, const Mesh& mesh);
 
 /// The same check started beside the caller's own work (reading points, building the index,
 /// answering) when `threads` allows more than one thread, so that its cost overlaps theirs;
-/// with one thread it runs at once. `get()` gives the warning's words, empty when the mesh does
-/// not cross itself. `mesh` must outlive the result.
+/// with one thread it runs when asked. `get()` gives the warning's line, empty when the mesh is
+/// open (not searched) or does not cross itself. `mesh` must outlive the result.
 [[nodiscard]] std::future<std::string> start_self_crossing_check(std::string name, const Mesh& mesh,
                                                                  int threads);
 

@@ -70,8 +70,8 @@ int run_csg(const InsideOptions& o) {
 int run_mesh(const InsideOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
-  // The self-crossing check matters only for a closed mesh, but it runs beside reading the
-  // points and building the index (which says whether the mesh is closed) to hide its cost.
+  // The self-crossing check (closed meshes only) runs beside reading the points, building the
+  // index and answering, to hide its cost.
   std::future<std::string> crossing = start_self_crossing_check(o.mesh, file->mesh, o.threads);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
@@ -79,10 +79,7 @@ int run_mesh(const InsideOptions& o) {
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   const std::vector<Location> locations = locate_all(index, points->points, o);
-  if (index.regime() == inside::MeshRegime::closed_exact) {
-    const std::string words = crossing.get();
-    if (!words.empty()) warn(words);
-  }
+  if (const std::string line = crossing.get(); !line.empty()) warn(line);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
