@@ -306,8 +306,8 @@ int run_segments(const ClipOptions& o) {
 
 std::string polygon_wkt(const MultiPolygon& result) {
   if (result.polygons.empty()) return "POLYGON EMPTY\n";
-  if (result.polygons.size() == 1) return io::write_wkt(result.polygons.front()) + "\n";
-  return io::write_wkt(result) + "\n";
+  if (result.polygons.size() == 1) return io::format_wkt(result.polygons.front()) + "\n";
+  return io::format_wkt(result) + "\n";
 }
 
 // Where --tiles writes: one stream of lines "COLUMN ROW WKT", or with a pattern in --out one file
@@ -374,10 +374,10 @@ Result<TileOutput> tile_output(const std::string& out) {
 }
 
 std::string tile_file_text(const MultiPolygon& tile, const TileOutput& output) {
-  if (output.svg) return io::region_svg(tile);
+  if (output.svg) return io::format_svg(tile);
   if (output.format == io::RegionFormat::geojson) {
-    return (tile.polygons.size() == 1 ? io::write_geojson(tile.polygons.front())
-                                      : io::write_geojson(tile)) +
+    return (tile.polygons.size() == 1 ? io::format_geojson(tile.polygons.front())
+                                      : io::format_geojson(tile)) +
            "\n";
   }
   return polygon_wkt(tile);
@@ -516,15 +516,15 @@ int run_mesh(const ClipOptions& o) {
   if (!o.box.empty()) {
     auto box = box3_of(o.box);
     if (!box) return report(box.error());
-    result = clip::mesh_clip(file->mesh, *box, options);
+    result = clip::clip_mesh(file->mesh, *box, options);
   } else if (!o.halfspaces.empty()) {
     auto planes = planes_of(o);
     if (!planes) return report(planes.error());
-    result = clip::mesh_clip(file->mesh, *planes, options);
+    result = clip::clip_mesh(file->mesh, *planes, options);
   } else {
     auto solid = convex_solid_of(o.convex);
     if (!solid) return report(solid.error());
-    result = clip::mesh_clip(file->mesh, *solid, options);
+    result = clip::clip_mesh(file->mesh, *solid, options);
   }
   if (o.out.empty() || o.out == "-") return emit(io::format_mesh(result, io::MeshFormat::off), "");
   const Status written = io::write_mesh(result, o.out);

@@ -100,12 +100,13 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::string text;
   if (format == "geojson") {
-    text = result.polygons.size() == 1 ? io::write_geojson(result.polygons[0])
-                                       : io::write_geojson(result);
+    text = result.polygons.size() == 1 ? io::format_geojson(result.polygons[0])
+                                       : io::format_geojson(result);
   } else if (format == "svg") {
     text = svg_of(*subject, *clip_region, result);
   } else {
-    text = result.polygons.size() == 1 ? io::write_wkt(result.polygons[0]) : io::write_wkt(result);
+    text =
+        result.polygons.size() == 1 ? io::format_wkt(result.polygons[0]) : io::format_wkt(result);
   }
   text += '\n';
   return emit(text, out);

@@ -152,7 +152,7 @@ Status mesh_clip_scene(const Context& context) {
   const Mesh torus = demo_torus();
   const Plane keep[] = {{0, 0, -1, 0.25}, {1, 0, 0, 1.0}};  // z <= 0.25 and x >= -1
   const Stopwatch clock;
-  const Mesh cut = clip::mesh_clip(torus, keep, {.cut = clip::MeshCut::cap});
+  const Mesh cut = clip::clip_mesh(torus, keep, {.cut = clip::MeshCut::cap});
   const double ms = clock.ms();
   const MeshReport report = validate_mesh(cut);
   fmt::print("mesh clipping      torus by 2 half-spaces with caps: {} triangles in {:.2f} ms, {}\n",

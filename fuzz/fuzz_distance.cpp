@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(one.distance == test::nearest_double_sqrt(c.squared_distance));
   }
   const distance::MeshDistance prepared(*mesh, {.signs = false});
-  const distance::Closest3 got = prepared.query(p);
+  const distance::Closest3 got = prepared.distance(p);
   FUZZ_CHECK(got.distance == test::nearest_double_sqrt(best));
   FUZZ_CHECK(got.feature == best_t);
   FUZZ_CHECK(got.point.x == test::nearest_double(best_point.x));

@@ -102,7 +102,7 @@ void run(const std::string& name, const Mesh& mesh, std::size_t count, bool peer
   {
     Row row{"contain signed + closest point + triangle", build};
     row.query =
-        timed([&] { prepared.query(points, truth, {.signed_distance = true}, {.threads = 1}); });
+        timed([&] { prepared.distance(points, truth, {.signed_distance = true}, {.threads = 1}); });
     rows.push_back(row);
   }
   const auto stats = contain::distance::MeshDistance::stats();
@@ -110,8 +110,8 @@ void run(const std::string& name, const Mesh& mesh, std::size_t count, bool peer
     std::vector<Closest3> plain(points.size());
     Row row{"contain signed distance only", build};
     row.query = timed([&] {
-      prepared.query(points, plain, {.signed_distance = true, .closest_point = false},
-                     {.threads = 1});
+      prepared.distance(points, plain, {.signed_distance = true, .closest_point = false},
+                        {.threads = 1});
     });
     for (std::size_t i = 0; i < points.size(); ++i)
       row.distance_mismatches += plain[i].distance != truth[i].distance;

@@ -72,23 +72,21 @@ void clip_segments(std::span<const Segment2> s, const Box2& box, std::span<Segme
 }
 void clip_segments(std::span<const Segment3> s, const Plane& h, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  detail::clip_each(s, out, kept, options,
-                    [&](const Segment3& x) { return segment_halfspace(x, h); });
+  detail::clip_each(s, out, kept, options, [&](const Segment3& x) { return clip_segment(x, h); });
 }
 void clip_segments(std::span<const Segment2> s, const HalfPlane& h, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  detail::clip_each(s, out, kept, options,
-                    [&](const Segment2& x) { return segment_halfspace(x, h); });
+  detail::clip_each(s, out, kept, options, [&](const Segment2& x) { return clip_segment(x, h); });
 }
 void clip_segments(std::span<const Segment3> s, const Sphere& ball, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
   detail::clip_each(s, out, kept, options,
-                    [&](const Segment3& x) { return segment_sphere(x, ball); });
+                    [&](const Segment3& x) { return clip_segment(x, ball); });
 }
 void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
   detail::clip_each(s, out, kept, options,
-                    [&](const Segment2& x) { return segment_sphere(x, disc); });
+                    [&](const Segment2& x) { return clip_segment(x, disc); });
 }
 void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,

@@ -53,7 +53,7 @@ bool polytopes_meet(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   for (std::int32_t i = 0; i < faces_a; ++i) {
     const Triangle3 fa = a.face(i);
     for (std::int32_t j = 0; j < faces_b; ++j)
-      if (tri_tri_intersect(fa, b.face(j))) return true;
+      if (tri_tri(fa, b.face(j))) return true;
   }
   return inside::point_in_convex(b, a.vertices()[0]) != Location::outside ||
          inside::point_in_convex(a, b.vertices()[0]) != Location::outside;

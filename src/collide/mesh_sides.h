@@ -70,7 +70,7 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
                           pb.apply(vb[static_cast<std::size_t>(y[2])])};
         if (!box_of(p.a, p.b, p.c).overlaps(box_of(q.a, q.b, q.c))) return bvh::Visit::proceed;
         ++contact.exact_tests;
-        if (!tri_tri_intersect(p, q)) return bvh::Visit::proceed;
+        if (!tri_tri(p, q)) return bvh::Visit::proceed;
         contact.intersect = true;
         contact.witness = WitnessKind::triangles;
         contact.triangle_a = ta;

@@ -44,7 +44,7 @@ bool edge_face(const Mesh& e, const Mesh& f, bool e_is_a, Contact& contact) {
     for (const Segment3& s : edges) {
       for (std::size_t u = 0; u < f.triangles.size(); ++u) {
         ++contact.exact_tests;
-        if (segment_triangle_intersect(s, f.triangle(u))) {
+        if (segment_triangle(s, f.triangle(u))) {
           contact.intersect = true;
           contact.witness = WitnessKind::triangles;
           contact.triangle_a = static_cast<std::int32_t>(e_is_a ? t : u);
@@ -59,7 +59,7 @@ bool edge_face(const Mesh& e, const Mesh& f, bool e_is_a, Contact& contact) {
 
 }  // namespace
 
-ReferenceResult polyhedra_reference(const Mesh& a_local, const Mesh& b_local,
+ReferenceResult mesh_mesh_reference(const Mesh& a_local, const Mesh& b_local,
                                     const Transform& transform_a, const Transform& transform_b) {
   ReferenceResult r;
   const Mesh a = placed(a_local, transform_a), b = placed(b_local, transform_b);

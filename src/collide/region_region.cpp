@@ -60,7 +60,7 @@ Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
         const Segment2& t = eb.segments[static_cast<std::size_t>(j)];
         if (!box_overlap(s, t)) return bvh::Visit::proceed;
         ++contact.exact_tests;
-        if (!segments_intersect(s, t)) return bvh::Visit::proceed;
+        if (!segment_segment(s, t)) return bvh::Visit::proceed;
         contact.intersect = true;
         contact.witness = WitnessKind::edges;
         contact.triangle_a = i;

@@ -245,19 +245,19 @@ Result<ConvexDistance> ConvexDistance::prepare(const ConvexPolyhedron& polyhedro
   return out;
 }
 
-Closest3 ConvexDistance::query(Vec3 p, const PointQuery& query) const {
+Closest3 ConvexDistance::distance(Vec3 p, const PointQuery& query) const {
   Closest3 out =
-      surface_.query(p, {.signed_distance = false, .closest_point = query.closest_point});
+      surface_.distance(p, {.signed_distance = false, .closest_point = query.closest_point});
   if (query.signed_distance && std::isfinite(out.distance))
     detail::apply_sign(out, inside::point_in_convex(polyhedron_, p));
   return out;
 }
 
-void ConvexDistance::query(std::span<const Vec3> points, std::span<Closest3> out,
-                           const PointQuery& query, const BatchOptions& options) const {
+void ConvexDistance::distance(std::span<const Vec3> points, std::span<Closest3> out,
+                              const PointQuery& query, const BatchOptions& options) const {
   const std::size_t n = batch_size(points.size(), out.size());
-  surface_.query(points.first(n), out.first(n),
-                 {.signed_distance = false, .closest_point = query.closest_point}, options);
+  surface_.distance(points.first(n), out.first(n),
+                    {.signed_distance = false, .closest_point = query.closest_point}, options);
   if (!query.signed_distance) return;
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
@@ -273,7 +273,7 @@ bool ConvexDistance::within(Vec3 p, double d) const {
 Result<Closest3> point_convex(Vec3 p, const ConvexPolyhedron& polyhedron, const PointQuery& query) {
   auto prepared = ConvexDistance::prepare(polyhedron);
   if (!prepared) return prepared.error();
-  return prepared->query(p, query);
+  return prepared->distance(p, query);
 }
 
 // The pair stages composed for the distance: every face pair that can be closest reaches the

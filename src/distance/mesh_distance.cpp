@@ -122,7 +122,7 @@ std::size_t MeshDistance::size() const {
   return search_->size();
 }
 
-Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
+Closest3 MeshDistance::distance(Vec3 p, const PointQuery& query) const {
   return query_with_hint(p, query, -1);
 }
 
@@ -158,8 +158,8 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   return out;
 }
 
-void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& q,
-                         const BatchOptions& options) const {
+void MeshDistance::distance(std::span<const Vec3> points, std::span<Closest3> out,
+                            const PointQuery& q, const BatchOptions& options) const {
   const std::size_t n = batch_size(points.size(), out.size());
   // Points in Morton order of their position, so that neighbours in the order are neighbours in
   // space and each query starts from the previous one's closest triangle (a hint: it bounds the
@@ -208,7 +208,7 @@ void MeshDistance::reset_stats() {
 Closest3 point_mesh(const Mesh& mesh, Vec3 p, const PointQuery& query) {
   MeshDistanceOptions options;
   options.signs = query.signed_distance;
-  return MeshDistance(mesh, options).query(p, query);
+  return MeshDistance(mesh, options).distance(p, query);
 }
 
 }  // namespace contain::distance

@@ -317,7 +317,7 @@ Result<MultiPolygon> read_wkt(const std::filesystem::path& path, WktNotes* notes
   return parse_wkt(*text, detail::source_name(path), notes);
 }
 
-std::string write_wkt(const MultiPolygon& region) {
+std::string format_wkt(const MultiPolygon& region) {
   std::string out = "MULTIPOLYGON ";
   bool first = true;
   for (const Polygon& polygon : region.polygons) {
@@ -330,7 +330,7 @@ std::string write_wkt(const MultiPolygon& region) {
   return out;
 }
 
-std::string write_wkt(const Polygon& polygon) {
+std::string format_wkt(const Polygon& polygon) {
   std::string out = "POLYGON ";
   if (!has_points(polygon)) return out + "EMPTY";
   append_polygon(out, polygon);

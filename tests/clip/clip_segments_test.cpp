@@ -161,7 +161,7 @@ TEST(ClipSegments, OtherRegionsMatchTheOneShotClippers) {
   const Sphere ball{{0, 0, 0}, 1};
   clip::clip_segments(in, ball, out, kept, {.threads = 2});
   for (std::size_t i = 0; i < in.size(); ++i) {
-    const auto r = clip::segment_sphere(in[i], ball);
+    const auto r = clip::clip_segment(in[i], ball);
     ASSERT_EQ(kept[i], r.kept ? 1 : 0);
     if (r.kept) {
       EXPECT_EQ(out[i], r.segment);

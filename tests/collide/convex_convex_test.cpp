@@ -81,7 +81,7 @@ TEST(ConvexConvex, TetrahedraMatchThePolyhedronReferenceOnRandomAndTouchingPairs
   for (int i = 0; i < 250; ++i) {
     const Mesh a = tetrahedron(rng, 0, 4, {0, 0, 0});
     const Mesh b = tetrahedron(rng, 0, 4, {double(i % 3), 0, 0});
-    const bool want = polyhedra_reference(a, b).contact.intersect;
+    const bool want = mesh_mesh_reference(a, b).contact.intersect;
     const ConvexContact got = convex_intersect(shape_of(a), shape_of(b));
     EXPECT_EQ(got.intersect, want) << i;
     EXPECT_TRUE(got.exact);
@@ -96,7 +96,7 @@ TEST(ConvexConvex, TetrahedronAgainstBoxMatchesTheReference) {
   for (int i = 0; i < 150; ++i) {
     const Mesh a = tetrahedron(rng, 0, 5, {0, 0, 0});
     const Box3 box = random_box(rng, 1, 4);
-    const bool want = polyhedra_reference(a, box_mesh(box)).contact.intersect;
+    const bool want = mesh_mesh_reference(a, box_mesh(box)).contact.intersect;
     EXPECT_EQ(convex_intersect(shape_of(a), ConvexShape::box(box)).intersect, want) << i;
     EXPECT_EQ(convex_intersect(ConvexShape::box(box), shape_of(a)).intersect, want) << i;
   }

@@ -71,7 +71,7 @@ TEST(MeshPair, CrossingBeamsWithNoVertexInsideEitherIntersect) {
   const Mesh beam_x = box_mesh({-3, -0.5, -0.5}, {3, 0.5, 0.5});
   const Mesh beam_y = box_mesh({-0.5, -3, -0.25}, {0.5, 3, 0.25});
   EXPECT_TRUE(MeshPair(beam_x, beam_y).collide({}).intersect);
-  const ReferenceResult ref = polyhedra_reference(beam_x, beam_y);
+  const ReferenceResult ref = mesh_mesh_reference(beam_x, beam_y);
   EXPECT_TRUE(ref.contact.intersect);
   EXPECT_EQ(ref.stage, ReferenceStage::edges);
 }
@@ -105,8 +105,8 @@ TEST(MeshPair, FastPathAgreesWithTheSectionsReferenceOnRandomPoses) {
   for (int i = 0; i < 60; ++i) {
     const Transform t = test::random_pose(rng, 1.6);
     const bool fast = pair.collide(t).intersect;
-    ASSERT_EQ(fast, polyhedra_reference(torus, box, {}, t).contact.intersect) << i;
-    ASSERT_EQ(self.collide(t).intersect, polyhedra_reference(torus, torus, {}, t).contact.intersect)
+    ASSERT_EQ(fast, mesh_mesh_reference(torus, box, {}, t).contact.intersect) << i;
+    ASSERT_EQ(self.collide(t).intersect, mesh_mesh_reference(torus, torus, {}, t).contact.intersect)
         << i;
     hits += fast;
   }
@@ -138,13 +138,13 @@ TEST(MeshPair, BatchGivesTheSingleAnswers) {
 
 TEST(PolyhedraReference, BoundingVolumesAnswerFarApartPairs) {
   const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
-  EXPECT_EQ(polyhedra_reference(cube, cube, {}, translation({3, 0, 0})).stage,
+  EXPECT_EQ(mesh_mesh_reference(cube, cube, {}, translation({3, 0, 0})).stage,
             ReferenceStage::bounding_volumes);
   EXPECT_FALSE(
-      polyhedra_reference(cube, cube, {}, translation({1 + kTiny, 0, 0})).contact.intersect);
-  EXPECT_TRUE(polyhedra_reference(cube, cube, {}, translation({1, 1, 1})).contact.intersect);
+      mesh_mesh_reference(cube, cube, {}, translation({1 + kTiny, 0, 0})).contact.intersect);
+  EXPECT_TRUE(mesh_mesh_reference(cube, cube, {}, translation({1, 1, 1})).contact.intersect);
   const Mesh big = box_mesh({0, 0, 0}, {4, 4, 4});
-  const ReferenceResult nested = polyhedra_reference(big, cube, {}, translation({1, 1, 1}));
+  const ReferenceResult nested = mesh_mesh_reference(big, cube, {}, translation({1, 1, 1}));
   EXPECT_TRUE(nested.contact.intersect);
   EXPECT_EQ(nested.stage, ReferenceStage::vertices);
 }

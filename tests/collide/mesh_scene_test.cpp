@@ -56,8 +56,8 @@ void expect_witnesses_hold(const std::vector<Mesh>& meshes, const std::vector<Sc
                          t.apply(m.vertices[static_cast<std::size_t>(x[1])]),
                          t.apply(m.vertices[static_cast<std::size_t>(x[2])])};
       };
-      EXPECT_TRUE(tri_tri_intersect(world(ma, a.transform, p.contact.triangle_a),
-                                    world(mb, b.transform, p.contact.triangle_b)));
+      EXPECT_TRUE(tri_tri(world(ma, a.transform, p.contact.triangle_a),
+                          world(mb, b.transform, p.contact.triangle_b)));
     } else {
       EXPECT_TRUE(p.contact.witness == WitnessKind::vertex_of_a_in_b ||
                   p.contact.witness == WitnessKind::vertex_of_b_in_a);

@@ -89,11 +89,11 @@ TEST(ConvexDistance, PointsMatchTheExactOracleWithTheExactSign) {
     points.push_back(points.back() + Vec3{1e-9, -1e-9, 1e-9});
   }
   std::vector<Closest3> batch(points.size());
-  c.query(points, batch, {.signed_distance = true}, {.threads = 2});
+  c.distance(points, batch, {.signed_distance = true}, {.threads = 2});
   int failures = 0;
   for (std::size_t i = 0; i < points.size() && failures < 10; ++i) {
     const Vec3 p = points[i];
-    const Closest3 got = c.query(p, {.signed_distance = true});
+    const Closest3 got = c.distance(p, {.signed_distance = true});
     const std::string diff = test::compare_with_oracle(got, test::mesh_oracle(m, p), true);
     const Location where = inside::point_in_convex(solid, p);
     const bool sign_ok = where == Location::inside     ? got.distance < 0
@@ -113,7 +113,7 @@ TEST(ConvexDistance, WithinIsExactAtTheDistanceItself) {
   EXPECT_TRUE(c.within({1.5, 0.5, 0.5}, 0.5));
   EXPECT_FALSE(c.within({1.5, 0.5, 0.5}, std::nextafter(0.5, 0.0)));
   EXPECT_TRUE(c.within({0.5, 0.5, 0.5}, 0.5));  // the centre is 0.5 from every face
-  EXPECT_EQ(c.query({0.5, 0.5, 0.25}, {.signed_distance = true}).distance, -0.25);
+  EXPECT_EQ(c.distance({0.5, 0.5, 0.25}, {.signed_distance = true}).distance, -0.25);
 }
 
 TEST(ConvexDistance, APolyhedronOfPlanesOnlyIsRefusedWithAClearError) {

@@ -56,7 +56,7 @@ TEST(DistanceCorpus, SignedDistanceSignsMatchTheExactInsideTruthAndWithinBracket
     for (Vec3 p; points >> p.x >> p.y >> p.z;)
       ps.push_back(p);
     std::vector<Closest3> got(ps.size());
-    mesh.query(ps, got, {.signed_distance = true}, {.threads = 2});
+    mesh.distance(ps, got, {.signed_distance = true}, {.threads = 2});
     // Every point's sign; the within bracket on every point (every 10th under the sanitizers).
     std::size_t i = 0;
     for (std::string expected; truth >> expected; ++i) {

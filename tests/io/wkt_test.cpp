@@ -180,23 +180,23 @@ TEST(Wkt, WritesClosedRingsAndReadsBackBitForBit) {
     m.polygons.push_back(polygon);
   }
   m.polygons[0].rings[0][0] = {0.1, -0.0};
-  const std::string text = write_wkt(m);
+  const std::string text = format_wkt(m);
   EXPECT_EQ(text.rfind("MULTIPOLYGON (((0.1 -0, ", 0), 0u) << text;
   auto back = parse_wkt(text, "rt.wkt");
   ASSERT_TRUE(back.ok()) << back.error().what();
   EXPECT_EQ(*back, m);
   EXPECT_TRUE(std::signbit(back->polygons[0].rings[0][0].y));
 
-  auto single = parse_wkt(write_wkt(m.polygons[1]), "rt.wkt");
+  auto single = parse_wkt(format_wkt(m.polygons[1]), "rt.wkt");
   ASSERT_TRUE(single.ok());
   ASSERT_EQ(single->polygons.size(), 1u);
   EXPECT_EQ(single->polygons[0], m.polygons[1]);
 }
 
 TEST(Wkt, WritesTheEmptyForms) {
-  EXPECT_EQ(write_wkt(MultiPolygon{}), "MULTIPOLYGON EMPTY");
-  EXPECT_EQ(write_wkt(Polygon{}), "POLYGON EMPTY");
-  EXPECT_EQ(write_wkt(Polygon{{kSquare}}), "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))");
+  EXPECT_EQ(format_wkt(MultiPolygon{}), "MULTIPOLYGON EMPTY");
+  EXPECT_EQ(format_wkt(Polygon{}), "POLYGON EMPTY");
+  EXPECT_EQ(format_wkt(Polygon{{kSquare}}), "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))");
 }
 
 TEST(Wkt, ReadsAFileAndReportsAMissingOne) {
@@ -229,7 +229,7 @@ TEST(Wkt, ReadsEveryPolygonOfTheSharedCorpus) {
         if (r.ok()) {
           ++read;
           // and what is read writes back to the same region
-          auto again = parse_wkt(write_wkt(*r), name);
+          auto again = parse_wkt(format_wkt(*r), name);
           ASSERT_TRUE(again.ok());
           EXPECT_EQ(*again, *r);
         } else if (record.value("id", "") == "boost:issue_1138") {

@@ -102,7 +102,7 @@ def test_regions_from_rings_wkt_and_polygons_agree():
     assert from_rings == from_wkt == contain.Region.from_polygons([[shell, hole]])
     assert from_rings.area == pytest.approx(16 - 4)
     assert len(from_rings) == 1 and len(from_rings.rings) == 2
-    assert contain.write_wkt([shell]) == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
+    assert contain.format_wkt([shell]) == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
     assert contain.point_in_polygon(from_rings, [2, 2]) == contain.Location.outside
     assert contain.point_in_polygon([shell, hole], [0.5, 2]) == contain.Location.inside
     both = [shell, shell + 1]
@@ -118,7 +118,7 @@ def test_polygon_booleans_on_rings_and_wkt():
     expected = {"intersection": 2, "union": 6, "difference": 2, "xor": 4}
     for op, area in expected.items():
         assert contain.polygon_boolean(a, b, op).area == pytest.approx(area), op
-    text = contain.polygon_boolean(contain.write_wkt(a), contain.write_wkt(b), "intersection")
+    text = contain.polygon_boolean(contain.format_wkt(a), contain.format_wkt(b), "intersection")
     assert isinstance(text, str) and contain.parse_wkt(text).area == pytest.approx(2)
     with pytest.raises(ValueError, match="op must be"):
         contain.polygon_boolean(a, b, "minus")

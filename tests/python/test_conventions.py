@@ -58,7 +58,7 @@ def fill_answers(tmp_path):
         "PolygonIndex.from_file": lambda f: contain.PolygonIndex.from_file(tmp_path / "squares.wkt", fill=f).locate(probe).tolist(),
         "point_in_polygon": lambda f: int(contain.point_in_polygon(SQUARES, [1.5, 1.5], fill=f)),
         "point_in_convex_polygon": lambda f: contain.point_in_convex_polygon(SQUARES[0], probe, fill=f).tolist(),
-        "RegionDistance": lambda f: contain.RegionDistance(WKT, fill=f).query(probe, signed=True)["distance"].tolist(),
+        "RegionDistance": lambda f: contain.RegionDistance(WKT, fill=f).distance(probe, signed=True)["distance"].tolist(),
         "polygon_boolean": lambda f: contain.polygon_boolean(SQUARES, "POLYGON ((0 0, 9 0, 9 9, 0 9))", "intersection", fill=f).area,
         "clip_polylines": lambda f: [p.tolist() for p in contain.clip_polylines(road, SQUARES, fill=f)],
         "collide": lambda f: bool(contain.collide(SQUARES, "POLYGON ((1.2 1.2, 1.8 1.2, 1.8 1.8))", fill=f)),
@@ -111,7 +111,7 @@ def test_dask_locate_takes_boundary_report_as_int8_locations():
     import contain.dask
 
     points = da.from_array(np.array([[0.5, 0.5], [2, 1], [1.5, 1.5], [9, 9]]), chunks=(2, 2))
-    region = contain.write_wkt(SQUARES)
+    region = contain.format_wkt(SQUARES)
     report = contain.dask.locate(points, region, boundary="report").compute(scheduler="synchronous")
     assert report.dtype == np.int8
     assert report.tolist() == contain.PolygonIndex(SQUARES).locate(points.compute()).tolist()
@@ -292,3 +292,51 @@ def test_convex_pair_queries_carry_the_cpp_names_and_the_old_names_warn():
         warnings.simplefilter("error", DeprecationWarning)  # warnings as errors: raised, not lost
         with pytest.raises(DeprecationWarning):
             contain.convex_collide(ball, box)
+
+
+# --- the collision primitives under their C++ names ---------------------------------------------
+
+def test_primitive_pair_tests_carry_the_cpp_names_and_the_old_names_warn():
+    flat = np.array([[0, 0], [1, 0], [0, 1]], dtype=float)
+    others = np.stack([flat + [1, 0], flat + [2, 2]])
+    sa = np.array([[[0, 0], [2, 2]], [[0, 0], [1, 1]]], dtype=float)
+    sb = np.array([[[0, 2], [2, 0]], [[2, 2], [3, 3]]], dtype=float)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new names never warn
+        triangles = contain.tri_tri(flat, others)
+        segments = contain.segment_segment(sa, sb)
+    assert triangles.tolist() == [True, False] and segments.tolist() == [True, False]
+    with pytest.warns(DeprecationWarning, match="tri_tri_2d is deprecated: use contain.tri_tri"):
+        assert contain.tri_tri_2d(flat, others).tolist() == triangles.tolist()
+    with pytest.warns(DeprecationWarning,
+                      match="segments_intersect is deprecated: use contain.segment_segment"):
+        assert contain.segments_intersect(sa, sb).tolist() == segments.tolist()
+
+
+def test_distance_objects_answer_with_the_verb_distance_and_query_warns():
+    prepared = {
+        "MeshDistance": contain.MeshDistance(cube()),
+        "ConvexDistance": contain.ConvexDistance(contain.ConvexPolyhedron(cube())),
+    }
+    probe3 = np.array([[2.0, 0.5, 0.5], [0.5, 0.5, 0.25]])
+    for name, obj in prepared.items():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the new name never warns
+            new = obj.distance(probe3, signed=True)["distance"].tolist()
+        with pytest.warns(DeprecationWarning, match=f"{name}.query is deprecated: use {name}.distance"):
+            assert obj.query(probe3, signed=True)["distance"].tolist() == new
+    region = contain.RegionDistance("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))")
+    new = region.distance([[2, 1]], signed=True)["distance"].tolist()
+    assert new == [-1.0]
+    with pytest.warns(DeprecationWarning, match="RegionDistance.query is deprecated: use RegionDistance.distance"):
+        assert region.query([[2, 1]], signed=True)["distance"].tolist() == new
+
+
+def test_format_wkt_is_the_string_form_and_write_wkt_warns():
+    square = [[0, 0], [4, 0], [4, 4], [0, 4]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new name never warns
+        text = contain.format_wkt([square])
+    assert text == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
+    with pytest.warns(DeprecationWarning, match="write_wkt is deprecated: use contain.format_wkt"):
+        assert contain.write_wkt([square]) == text

@@ -28,7 +28,7 @@ namespace contain::clip {
 /// final; the rest (touching, nearly touching, parallel on a face, huge or tiny coordinates) are
 /// redone by the exact `liang_barsky`. So decisions equal `liang_barsky`'s exactly; points agree
 /// with it to rounding (the kernel may pick the other face at a corner tie) and lie in the
-/// closed box. The other regions call `segment_halfspace`, `segment_sphere` and `cyrus_beck`.
+/// closed box. The other regions call `clip_segment` (half-space, ball, disc) and `cyrus_beck`.
 /// O(n) work; O(n / threads) time.
 void clip_segments(std::span<const Segment3> segments, const Box3& box, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options = {});

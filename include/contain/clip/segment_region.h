@@ -29,8 +29,10 @@ using SegmentRegion3 = std::variant<Box3, std::vector<Plane>, ConvexPolyhedron, 
 /// Which clipper runs.
 enum class SegmentClipper : std::uint8_t {
   /// The region's own batch call of clip_segments.h: for a box the branch-free kernel with
-  /// exact decisions, for one half-space `segment_halfspace`, for several `cyrus_beck`, for a
-  /// convex polyhedron or ring `cyrus_beck` on its faces or edges, for a ball `segment_sphere`.
+  /// exact decisions, for one half-space `clip_segment(segment, half_space)`, for several
+  /// `cyrus_beck`, for a
+  /// convex polyhedron or ring `cyrus_beck` on its faces or edges, for a ball
+  /// `clip_segment(segment, ball)`.
   automatic,
   /// `cohen_sutherland` (outcodes; a box only).
   cohen_sutherland,

@@ -65,7 +65,7 @@ struct ConvexContact {
 ///   is certified by an exact test (predicates::side_of_plane on every vertex of both against
 ///   one plane with GJK's normal); without a certificate (touching, intersecting, or too close
 ///   for doubles) the exact stage decides: the closed solids meet iff some pair of faces meets
-///   (tri_tri_intersect) or a vertex of one is in the other (exact point location).
+///   (tri_tri) or a vertex of one is in the other (exact point location).
 /// - a sphere involved: the answer is GJK's, floating point: separated iff the distance
 ///   estimate exceeds about 1e-12 of the shapes' size; touching within that margin counts as
 ///   intersecting. `exact` is false.

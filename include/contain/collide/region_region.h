@@ -20,7 +20,7 @@ struct RegionRegionOptions {
 /// (or inside a hole's island) counts.
 ///
 /// Method: their boundaries meet iff some edge of A meets some edge of B (closed segments,
-/// exact orient2d: `segments_intersect`), with candidate pairs from a bounding volume hierarchy
+/// exact orient2d: `segment_segment`), with candidate pairs from a bounding volume hierarchy
 /// over each region's edges (`bvh::traverse_pairs`); if the boundaries are disjoint, every
 /// ring of one lies wholly inside or outside the other region, so one vertex per ring located
 /// exactly (`inside::PolygonIndex`) decides. The witness is an edge pair (`WitnessKind::edges`,

@@ -86,12 +86,12 @@ class MeshDistance {
 
   /// The distance from `p` to the surface, its closest point and triangle. A point with a NaN or
   /// infinite coordinate gets a NaN distance and feature -1.
-  [[nodiscard]] Closest3 query(Vec3 p, const PointQuery& query = {}) const;
+  [[nodiscard]] Closest3 distance(Vec3 p, const PointQuery& query = {}) const;
 
-  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  /// out[i] = distance(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
   /// `options.threads` threads (0: all).
-  void query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
-             const BatchOptions& options = {}) const;
+  void distance(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
+                const BatchOptions& options = {}) const;
 
   /// Is the (unsigned) distance from `p` to the surface at most `d`? Exact: squared distances
   /// against d^2, no rounding. `d` < 0 or NaN, or a point that is not finite: false.
@@ -120,7 +120,7 @@ class MeshDistance {
   bool signs_ = true;
 };
 
-/// One query: exactly `MeshDistance(mesh).query(p, query)`, building only what the query needs.
+/// One query: exactly `MeshDistance(mesh).distance(p, query)`, building only what the query needs.
 [[nodiscard]] Closest3 point_mesh(const Mesh& mesh, Vec3 p, const PointQuery& query = {});
 
 }  // namespace contain::distance

@@ -48,12 +48,12 @@ struct WktNotes {
 
 /// `MULTIPOLYGON (((x y, ...)), ...)`, or `MULTIPOLYGON EMPTY` when there is no polygon, with
 /// every ring closed (its first point repeated) and every coordinate written as the shortest
-/// decimal that reads back as the same double, so `parse_wkt(write_wkt(m)) == m` bit for bit for
+/// decimal that reads back as the same double, so `parse_wkt(format_wkt(m)) == m` bit for bit for
 /// rings of at least 3 points whose last point differs from the first. Polygons without rings
 /// are left out. One line, no newline at the end.
-[[nodiscard]] std::string write_wkt(const MultiPolygon& region);
+[[nodiscard]] std::string format_wkt(const MultiPolygon& region);
 
 /// `POLYGON ((x y, ...), ...)`, or `POLYGON EMPTY` for a polygon without rings (as above).
-[[nodiscard]] std::string write_wkt(const Polygon& polygon);
+[[nodiscard]] std::string format_wkt(const Polygon& polygon);
 
 }  // namespace contain::io
