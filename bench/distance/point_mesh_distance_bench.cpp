@@ -98,14 +98,15 @@ void run(const std::string& name, const Mesh& mesh, std::size_t count, bool peer
   const std::vector<Vec3> points =
       contain::scenes::uniform_points(prepared.index().bounds(), count, 1);
   std::vector<Closest3> truth(points.size());
-  contain::distance::MeshDistance::reset_stats();
+  contain::distance::MeshDistanceStats stats;
   {
     Row row{"contain signed + closest point + triangle", build};
-    row.query =
-        timed([&] { prepared.distance(points, truth, {.signed_distance = true}, {.threads = 1}); });
+    row.query = timed([&] {
+      stats =
+          prepared.distance_with_stats(points, truth, {.signed_distance = true}, {.threads = 1});
+    });
     rows.push_back(row);
   }
-  const auto stats = contain::distance::MeshDistance::stats();
   {
     std::vector<Closest3> plain(points.size());
     Row row{"contain signed distance only", build};

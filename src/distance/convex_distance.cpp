@@ -270,7 +270,7 @@ bool ConvexDistance::within(Vec3 p, double d) const {
   return surface_.within(p, d);
 }
 
-Result<Closest3> point_convex(Vec3 p, const ConvexPolyhedron& polyhedron, const PointQuery& query) {
+Result<Closest3> point_convex(const ConvexPolyhedron& polyhedron, Vec3 p, const PointQuery& query) {
   auto prepared = ConvexDistance::prepare(polyhedron);
   if (!prepared) return prepared.error();
   return prepared->distance(p, query);

@@ -31,7 +31,7 @@ Winner resolve(Vec2 p, const detail::SegmentSearch& search,
   for (const detail::Contender& c : contenders) {
     const Segment2& s = search.segment(c.item);
     const FlatPair2 pair{predicates::point_flat(p),
-                         predicates::feature_flat(s, predicates::closest_feature(p, s))};
+                         predicates::feature_flat(s, predicates::closest_feature(s, p))};
     if (best.edge < 0) {
       best = {c.item, pair};
       continue;
@@ -134,7 +134,7 @@ bool RegionDistance::within(Vec2 p, double d) const {
   for (const detail::Contender& c : undecided) {
     const Segment2& s = search_->segment(c.item);
     const FlatPair2 pair{predicates::point_flat(p),
-                         predicates::feature_flat(s, predicates::closest_feature(p, s))};
+                         predicates::feature_flat(s, predicates::closest_feature(s, p))};
     if (predicates::compare_squared_distance(pair, d) != Sign::positive) return true;
   }
   return false;

@@ -122,10 +122,10 @@ TEST(ConvexDistance, APolyhedronOfPlanesOnlyIsRefusedWithAClearError) {
   const auto c = ConvexDistance::prepare(*planes);
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error().kind, ErrorKind::unsupported);
-  EXPECT_FALSE(point_convex({0, 0, 0}, *planes).ok());
+  EXPECT_FALSE(point_convex(*planes, {0, 0, 0}).ok());
   const auto box = ConvexPolyhedron::from_mesh(scenes::box_mesh({{0, 0, 0}, {2, 2, 2}}));
   ASSERT_TRUE(box.ok());
-  EXPECT_EQ(point_convex({5, 1, 1}, *box)->distance, 3.0);
+  EXPECT_EQ(point_convex(*box, {5, 1, 1})->distance, 3.0);
 }
 
 // The pair against the brute-force GMP oracle over every face pair (and exact nesting), and

@@ -291,6 +291,34 @@ TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
   EXPECT_EQ(check_batch(torus, shuffled), 0);
 }
 
+// The counts of a batch's work come back from the call that did it (no hidden per-thread state):
+// one query per point whatever the thread count, every contender from a bounded triangle, and the
+// same answers as the plain batch.
+TEST(MeshDistance, DistanceWithStatsCountsTheWorkOfItsOwnBatchOnAnyThreadCount) {
+  const Mesh torus = scenes::torus(2.0, 0.7, 32, 16);
+  const MeshDistance prepared(torus);
+  const std::vector<Vec3> points = probe_points(torus, test::case_budget(4000, 5), 10);
+  std::vector<Closest3> plain(points.size()), one(points.size()), two(points.size());
+  prepared.distance(points, plain, {.signed_distance = true}, {.threads = 1});
+  const MeshDistanceStats a =
+      prepared.distance_with_stats(points, one, {.signed_distance = true}, {.threads = 1});
+  const MeshDistanceStats b =
+      prepared.distance_with_stats(points, two, {.signed_distance = true}, {.threads = 2});
+  EXPECT_EQ(a.queries, points.size());
+  EXPECT_EQ(b.queries, points.size());
+  EXPECT_GE(a.nodes, points.size());
+  EXPECT_LE(a.contenders, a.triangles);
+  EXPECT_GE(a.contenders, points.size());  // at least the winner of each query
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_EQ(one[i].distance, plain[i].distance);
+    ASSERT_EQ(two[i].distance, plain[i].distance);
+    ASSERT_EQ(two[i].feature, plain[i].feature);
+  }
+  const MeshDistanceStats none = prepared.distance_with_stats({}, {});
+  EXPECT_EQ(none.queries, 0u);
+  EXPECT_EQ(none.nodes, 0u);
+}
+
 TEST(MeshDistance, BatchAnswersEqualSingleAnswersOnAnyThreadCount) {
   const Mesh torus = scenes::torus(2.0, 0.7, 32, 16);
   const MeshDistance prepared(torus);

@@ -248,5 +248,23 @@ TEST(Wkt, ReadsEveryPolygonOfTheSharedCorpus) {
   EXPECT_GT(read, 2000);
 }
 
+// What the text held that OGC WKT does not allow comes back with the region, not through a
+// pointer: the lines of unclosed rings, none for closed ones, and the same errors as parse_wkt.
+TEST(Wkt, ParseWithNotesNamesTheLinesOfUnclosedRingsBesideTheSameRegion) {
+  const std::string text = "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)),\n((5 5, 6 5, 6 6)))";
+  const auto noted = parse_wkt_with_notes(text, "n.wkt");
+  ASSERT_TRUE(noted) << noted.error().what();
+  const auto plain = parse_wkt(text, "n.wkt");
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(noted->region, *plain);
+  EXPECT_EQ(noted->notes.unclosed_rings, std::vector<std::int64_t>{2});
+  const auto closed = parse_wkt_with_notes("POLYGON ((0 0, 1 0, 1 1, 0 0))", "c.wkt");
+  ASSERT_TRUE(closed);
+  EXPECT_TRUE(closed->notes.unclosed_rings.empty());
+  const auto bad = parse_wkt_with_notes("POLYGON ((0 0, 1 0", "b.wkt");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().kind, parse_wkt("POLYGON ((0 0, 1 0", "b.wkt").error().kind);
+}
+
 }  // namespace
 }  // namespace contain::io

@@ -69,7 +69,7 @@ class ConvexDistance {
 };
 
 /// One query: `ConvexDistance::prepare(polyhedron)->distance(p, query)`.
-[[nodiscard]] Result<Closest3> point_convex(Vec3 p, const ConvexPolyhedron& polyhedron,
+[[nodiscard]] Result<Closest3> point_convex(const ConvexPolyhedron& polyhedron, Vec3 p,
                                             const PointQuery& query = {});
 
 /// The distance between the solids A and B placed by `transform_b` (world = transform_b.apply

@@ -35,7 +35,7 @@ struct MeshDistanceOptions {
   bool signs = true;
 };
 
-/// Counts of the work of the queries made so far on one thread, for benchmarks.
+/// Counts of the work of a batch of queries (`MeshDistance::distance_with_stats`), for benchmarks.
 struct MeshDistanceStats {
   std::size_t queries = 0;
   std::size_t nodes = 0;      ///< hierarchy nodes entered
@@ -93,6 +93,12 @@ class MeshDistance {
   void distance(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
                 const BatchOptions& options = {}) const;
 
+  /// The same batch, returning the counts of its work (summed over its threads).
+  [[nodiscard]] MeshDistanceStats distance_with_stats(std::span<const Vec3> points,
+                                                      std::span<Closest3> out,
+                                                      const PointQuery& query = {},
+                                                      const BatchOptions& options = {}) const;
+
   /// Is the (unsigned) distance from `p` to the surface at most `d`? Exact: squared distances
   /// against d^2, no rounding. `d` < 0 or NaN, or a point that is not finite: false.
   [[nodiscard]] bool within(Vec3 p, double d) const;
@@ -108,12 +114,10 @@ class MeshDistance {
   [[nodiscard]] const inside::MeshIndex& index() const { return index_; }
   /// Number of triangles.
   [[nodiscard]] std::size_t size() const;
-  /// The work of all queries on this thread so far (reset with `reset_stats`).
-  [[nodiscard]] static MeshDistanceStats stats();
-  static void reset_stats();
 
  private:
-  [[nodiscard]] Closest3 query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const;
+  [[nodiscard]] Closest3 query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint,
+                                         MeshDistanceStats& stats) const;
 
   std::unique_ptr<detail::TriangleSearch> search_;
   inside::MeshIndex index_;
