@@ -249,14 +249,14 @@ clip::SegmentClipper clipper_of(const std::string& algorithm) {
 template <class S, class Region>
 Status clip_all(const std::vector<S>& in, const Region& region, std::vector<S>& out,
                 std::span<std::uint8_t> kept, const ClipOptions& o) {
-  const clip::SegmentClipOptions options{.clipper = clipper_of(o.algorithm), .threads = o.threads};
+  const clip::SegmentClipOptions options{.clipper = clipper_of(o.algorithm)};
   Status status = Ok{};
   Progress progress("segments", in.size(), !o.quiet && stderr_is_terminal());
   progress.run([&](std::size_t begin, std::size_t end) {
     if (!status) return;
     status = clip::clip_segments(std::span<const S>(in).subspan(begin, end - begin), region,
                                  std::span<S>(out).subspan(begin, end - begin),
-                                 kept.subspan(begin, end - begin), options);
+                                 kept.subspan(begin, end - begin), options, {.threads = o.threads});
   });
   return status;
 }

@@ -202,7 +202,7 @@ void bench_mesh_mesh() {
   std::size_t hits = 0, nested = 0;
   for (const auto& c : out) {
     hits += c.intersect;
-    nested += c.intersect && c.witness != collide::WitnessKind::triangles;
+    nested += c.intersect && c.witness != inside::PairWitness::triangles;
   }
   std::printf(
       "  %-38s %8.2f ms  (%.2f us/pose; build %.1f ms)  x 1.00  intersect %zu (nested %zu)\n",
@@ -238,7 +238,7 @@ void bench_mesh_mesh() {
   std::size_t fhits = 0, surface_disagree = 0;
   for (std::size_t i = 0; i < poses_n; ++i) {
     fhits += fr[i];
-    const bool surface = out[i].intersect && out[i].witness == collide::WitnessKind::triangles;
+    const bool surface = out[i].intersect && out[i].witness == inside::PairWitness::triangles;
     surface_disagree += surface != bool(fr[i]);
   }
   std::printf(

@@ -3,7 +3,7 @@
 The Python face of the contain C++ library. Two layers, as in C++: one-shot functions
 (point_in_polygon, point_in_mesh, collide, polygon_boolean, bounding_sphere, ...) and prepared
 objects that own their acceleration structure and answer batches on every core with the GIL
-released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, WindingNumber,
+released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, FastWindingNumber,
 MovingMeshPair). Continuous collision: vertex_face_ccd and edge_edge_ccd on (N, 8, 3) arrays,
 mesh_mesh_ccd and MovingMeshPair.
 
@@ -46,6 +46,7 @@ from ._contain import (
     ConvexPolyhedron,
     ConvexShape,
     Csg,
+    FastWindingNumber,
     CsgSolid,
     Location,
     Mesh,
@@ -61,7 +62,6 @@ from ._contain import (
     RegionLayer,
     SolidScene,
     RegionDistance,
-    WindingNumber,
     aabb,
     as_mesh,
     as_region,
@@ -120,6 +120,7 @@ __all__ = [
     "ConvexPolyhedron",
     "ConvexShape",
     "Csg",
+    "FastWindingNumber",
     "CsgSolid",
     "Location",
     "Mesh",
@@ -135,7 +136,6 @@ __all__ = [
     "RegionLayer",
     "SolidScene",
     "RegionDistance",
-    "WindingNumber",
     "aabb",
     "as_mesh",
     "as_region",
@@ -182,3 +182,17 @@ __all__ = [
     "write_mesh",
     "write_wkt",
 ]
+
+# Old names of classes, kept for now: each use warns (a DeprecationWarning naming the new one).
+_RENAMED = {"WindingNumber": "FastWindingNumber"}
+
+
+def __getattr__(name):
+    if name in _RENAMED:
+        import warnings
+
+        new = _RENAMED[name]
+        warnings.warn(f"contain.{name} is deprecated: use contain.{new} (the name of the C++ "
+                      "type; docs/python.md, Renamed)", DeprecationWarning, stacklevel=2)
+        return globals()[new]
+    raise AttributeError(f"module 'contain' has no attribute {name!r}")

@@ -286,11 +286,21 @@ locate_point(p). Example in contain.Csg.
            "tree"_a, "Validates and prepares a Csg (or its JSON form).")
       .def(
           "locate",
-          [](const inside::CsgSolid& solid, const ArrayLike& points, int threads) {
+          [](const inside::CsgSolid& solid, const ArrayLike& points, int threads) -> py::object {
+            if (is_one_point(points.object, 3)) {
+              return [&](const ArrayLike& point) -> py::object {
+                const Vec3 p = as_vec3(point.object, "point");
+                if (!is_finite(p)) fail(ErrorKind::invalid_value, "point has a NaN or Inf");
+                const Location where = solid.locate(p);
+                raise_implicit_error();
+                return location_object(where);
+              }(points);
+            }
             return to_numpy(solid_locate(solid, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, R"doc(
-Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 3). Runs on
+Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 3); one point
+(3,) gives one contain.Location. Runs on
 `threads` threads (0: every core) without the GIL (Python implicit functions take it per call).
 )doc")
       .def(
@@ -306,13 +316,14 @@ Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 
       .def(
           "locate_point",
           [](const inside::CsgSolid& solid, const ArrayLike& point) {
+            warn_deprecated("CsgSolid.locate_point", "CsgSolid.locate");
             const Vec3 p = as_vec3(point.object, "point");
             if (!is_finite(p)) fail(ErrorKind::invalid_value, "point has a NaN or Inf");
             const Location where = solid.locate(p);
             raise_implicit_error();
             return location_object(where);
           },
-          "point"_a, "Where one point lies, as a contain.Location.")
+          "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly("leaf_count", &inside::CsgSolid::leaf_count, "Leaves of the tree.")
       .def("__repr__", [](const inside::CsgSolid& solid) {
         return "contain.CsgSolid(" + std::to_string(solid.leaf_count()) + " leaves)";

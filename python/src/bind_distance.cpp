@@ -220,7 +220,7 @@ signed by the exact containment, the closest point and triangle, and the exact c
 
 Every decision is exact on the given doubles; each distance is the double nearest to the exact
 distance (rounded once), each closest-point coordinate too. For an open mesh signs come from
-the generalized winding number (`regime` says 'winding-number').
+the generalized winding number (`regime` says 'winding_number').
 
     >>> prepared = contain.MeshDistance(contain.read_mesh("part.stl"))
     >>> r = prepared.distance(points, signed=True)    # (N, 3) -> dict of arrays
@@ -272,7 +272,7 @@ the generalized winding number (`regime` says 'winding-number').
       .def_property_readonly(
           "regime",
           [](const distance::MeshDistance& prepared) { return to_string(prepared.regime()); },
-          "How signs are decided: 'closed-exact' or 'winding-number'.")
+          "How signs are decided: 'closed_exact' or 'winding_number'.")
       .def("__len__", &distance::MeshDistance::size, "Number of triangles.")
       .def("__repr__", [](const distance::MeshDistance& prepared) {
         return "contain.MeshDistance(" + std::to_string(prepared.size()) + " triangles, regime='" +

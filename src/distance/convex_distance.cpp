@@ -59,13 +59,13 @@ bool place(const ConvexPolyhedron& b, const Transform& tb, std::vector<Vec3>& wb
 bool nested(const PlacedPair& pair, PairDistance3& out) {
   const Vec3 va0 = pair.a.vertices()[0];
   if (inside::point_in_convex(pair.a, pair.wb[0]) == Location::inside) {
-    out.contact = PairContact::vertex_of_b_in_a;
+    out.contact = inside::PairWitness::vertex_of_b_in_a;
     out.vertex = 0;
     out.point_a = out.point_b = pair.wb[0];
     return true;
   }
   if (inside::point_in_convex(pair.b, pair.wb, va0) == Location::inside) {
-    out.contact = PairContact::vertex_of_a_in_b;
+    out.contact = inside::PairWitness::vertex_of_a_in_b;
     out.vertex = 0;
     out.point_a = out.point_b = va0;
     return true;
@@ -288,7 +288,8 @@ PairDistance3 convex_convex(const ConvexDistance& a, const ConvexDistance& b,
   if (state != Opening::narrowed) return out;
   (void)collect_contenders(pair, buffers.left, -kInf, out, buffers.contenders);
   const predicates::FlatPair3 winner = closest_contender(pair, buffers.contenders, out);
-  out.contact = predicates::flats_meet(winner) ? PairContact::triangles : PairContact::none;
+  out.contact =
+      predicates::flats_meet(winner) ? inside::PairWitness::triangles : inside::PairWitness::none;
   out.distance = predicates::rounded_distance(winner);
   const predicates::ClosestPoints3 points = predicates::rounded_closest_points(winner);
   out.point_a = points.a;

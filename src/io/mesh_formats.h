@@ -12,6 +12,9 @@
 
 namespace contain::io::detail {
 
+/// A format as the readers' messages word it for a person ("OBJ", "binary STL", ...).
+[[nodiscard]] const char* format_words(MeshFormat format);
+
 [[nodiscard]] Result<MeshFile> parse_obj(std::string_view text, const std::string& source);
 [[nodiscard]] Result<MeshFile> parse_off(std::string_view text, const std::string& source);
 [[nodiscard]] Result<MeshFile> parse_stl(std::string_view bytes, const std::string& source);

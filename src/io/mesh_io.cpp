@@ -8,7 +8,29 @@
 
 namespace contain::io {
 
-const char* format_name(MeshFormat format) {
+const char* to_string(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::obj:
+      return "obj";
+    case MeshFormat::off:
+      return "off";
+    case MeshFormat::stl_ascii:
+      return "stl_ascii";
+    case MeshFormat::stl_binary:
+      return "stl_binary";
+    case MeshFormat::ply_ascii:
+      return "ply_ascii";
+    case MeshFormat::ply_binary_little_endian:
+      return "ply_binary_little_endian";
+    case MeshFormat::ply_binary_big_endian:
+      return "ply_binary_big_endian";
+  }
+  return "mesh";
+}
+
+namespace detail {
+
+const char* format_words(MeshFormat format) {
   switch (format) {
     case MeshFormat::obj:
       return "OBJ";
@@ -27,6 +49,8 @@ const char* format_name(MeshFormat format) {
   }
   return "mesh";
 }
+
+}  // namespace detail
 
 std::optional<MeshFormat> mesh_format_for_path(const std::filesystem::path& path) {
   const std::string ext = detail::lower_extension(path);
@@ -116,7 +140,7 @@ Result<MeshFile> finish_mesh(std::vector<Vec3> vertices, std::vector<TriangleInd
                              MeshInfo info, const std::string& source) {
   if (triangles.empty()) {
     return make_error(ErrorKind::degenerate,
-                      std::string(format_name(info.format)) + " file without faces: no mesh",
+                      std::string(format_words(info.format)) + " file without faces: no mesh",
                       source);
   }
   auto mesh = Mesh::from_arrays(std::move(vertices), std::move(triangles));

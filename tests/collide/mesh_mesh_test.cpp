@@ -29,7 +29,7 @@ TEST(MeshPair, TouchingCubesIntersectAndGapsOfTwoToTheMinus30DoNot) {
   EXPECT_TRUE(pair.collide(translation({1 - kTiny, 1 - kTiny, 0})).intersect);  // penetration
   EXPECT_FALSE(pair.collide(translation({5, 5, 5})).intersect);
   const Contact c = pair.collide(translation({1, 0, 0}));
-  EXPECT_EQ(c.witness, WitnessKind::triangles);
+  EXPECT_EQ(c.witness, inside::PairWitness::triangles);
   EXPECT_GE(c.triangle_a, 0);
   EXPECT_GE(c.triangle_b, 0);
 }
@@ -38,10 +38,10 @@ TEST(MeshPair, NestedSolidsIntersectWithAContainedVertexWitnessBothWays) {
   const Mesh big = box_mesh({0, 0, 0}, {4, 4, 4}), small = box_mesh({0, 0, 0}, {1, 1, 1});
   const Contact in = MeshPair(big, small).collide(translation({1, 1, 1}));
   EXPECT_TRUE(in.intersect);
-  EXPECT_EQ(in.witness, WitnessKind::vertex_of_b_in_a);
+  EXPECT_EQ(in.witness, inside::PairWitness::vertex_of_b_in_a);
   const Contact rev = MeshPair(small, big).collide(translation({-1, -1, -1}));
   EXPECT_TRUE(rev.intersect);
-  EXPECT_EQ(rev.witness, WitnessKind::vertex_of_a_in_b);
+  EXPECT_EQ(rev.witness, inside::PairWitness::vertex_of_a_in_b);
   EXPECT_TRUE(MeshPair(big, small).collide(translation({3, 1, 1})).intersect);  // touching inside
   // Nested under a rotation (no surface contact): still intersecting.
   std::mt19937_64 rng(1);
@@ -58,10 +58,10 @@ TEST(MeshPair, VertexExactlyOnTheOtherSurfaceIntersectsWithATrianglePairWitness)
        {Vec3{-4, -1, -3}, Vec3{-4, -2, -2}, Vec3{-4, -2, -4}, Vec3{-4, -4, -4}}) {
     const Contact a_on_b = MeshPair(small, big).collide(translation(shift));
     EXPECT_TRUE(a_on_b.intersect);
-    EXPECT_EQ(a_on_b.witness, WitnessKind::triangles);
+    EXPECT_EQ(a_on_b.witness, inside::PairWitness::triangles);
     const Contact b_on_a = MeshPair(big, small).collide(translation(-1.0 * shift));
     EXPECT_TRUE(b_on_a.intersect);
-    EXPECT_EQ(b_on_a.witness, WitnessKind::triangles);
+    EXPECT_EQ(b_on_a.witness, inside::PairWitness::triangles);
   }
   EXPECT_FALSE(MeshPair(small, big).collide(translation({-4 - 0x1p-40, -1, -3})).intersect);
 }

@@ -145,13 +145,13 @@ void check_pair(const Mesh& ma, const Mesh& mb, const ConvexDistance& a, const C
   }
   const double d = nested ? 0.0 : test::nearest_double_sqrt(want.d2);
   bool ok = got.distance == d && reference.distance == d;
-  const bool vertex_witness =
-      got.contact == PairContact::vertex_of_a_in_b || got.contact == PairContact::vertex_of_b_in_a;
+  const bool vertex_witness = got.contact == inside::PairWitness::vertex_of_a_in_b ||
+                              got.contact == inside::PairWitness::vertex_of_b_in_a;
   if (vertex_witness) {
     ok = ok && (nested || want.d2 == 0);
   } else {
     ok = ok && !nested && got.triangle_a == want.a && got.triangle_b == want.b;
-    ok = ok && (want.d2 == 0) == (got.contact == PairContact::triangles);
+    ok = ok && (want.d2 == 0) == (got.contact == inside::PairWitness::triangles);
     // MeshPairDistance may witness an overlap by another vertex (its meshes keep the input's
     // vertex order); where both report the surfaces, the closest points agree bit for bit.
     if (reference.contact == got.contact)
@@ -201,11 +201,11 @@ TEST(ConvexConvex, TouchingNestedAndSeparatedBoxesOnALattice) {
   }
   EXPECT_EQ(failures, 0);
   t.t = {1.5, 1.5, 1.5};
-  EXPECT_EQ(convex_convex(a, b, t).contact, PairContact::vertex_of_b_in_a);
+  EXPECT_EQ(convex_convex(a, b, t).contact, inside::PairWitness::vertex_of_b_in_a);
   t.t = {-1.5, -1.5, -1.5};
-  EXPECT_EQ(convex_convex(b, a, t).contact, PairContact::vertex_of_a_in_b);
+  EXPECT_EQ(convex_convex(b, a, t).contact, inside::PairWitness::vertex_of_a_in_b);
   t.t = {4, 4, 4};  // corner to corner
-  EXPECT_EQ(convex_convex(a, b, t).contact, PairContact::triangles);
+  EXPECT_EQ(convex_convex(a, b, t).contact, inside::PairWitness::triangles);
   t.t = {6, 0, 0};
   EXPECT_EQ(convex_convex(a, b, t).distance, 2.0);
   EXPECT_TRUE(convex_convex_within(a, b, t, 2.0));
@@ -219,7 +219,7 @@ TEST(ConvexConvex, GjkLeavesFewFacePairsForSeparatedSolids) {
   Transform t;
   t.t = {2.5, 0.3, 0.2};
   const PairDistance3 d = convex_convex(a, a, t);
-  EXPECT_EQ(d.contact, PairContact::none);
+  EXPECT_EQ(d.contact, inside::PairWitness::none);
   EXPECT_GT(d.distance, 0.4);
   EXPECT_LT(d.node_pairs, 200u);
   const PairDistance3 reference = MeshPairDistance(m, m).distance(t);

@@ -122,7 +122,7 @@ TEST(DistanceCorpus, MeshPairsAreAtDistanceZeroExactlyWhereTheSolidsMeet) {
       const std::string where = "pose " + std::to_string(i + 1) + " (" +
                                 g["kinds"][i].get<std::string>() + ") " + to_string(d.contact);
       EXPECT_EQ(d.distance == 0, meet) << where << " distance " << d.distance;
-      EXPECT_EQ(d.contact != PairContact::none, meet) << where;
+      EXPECT_EQ(d.contact != inside::PairWitness::none, meet) << where;
       EXPECT_EQ(pair.within(tb, 0.0), meet) << where;
       if (!meet) {
         EXPECT_GT(d.distance, 0.0) << where;

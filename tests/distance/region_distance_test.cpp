@@ -205,14 +205,14 @@ TEST(RegionPairDistance, SeparatedTouchingCrossingAndNestedSquares) {
   EXPECT_EQ(region_region(big, MultiPolygon{{square(6, 0, 1)}}).distance, 2.0);
   const PairDistance2 touch = region_region(big, MultiPolygon{{square(4, 1, 1)}});
   EXPECT_EQ(touch.distance, 0.0);
-  EXPECT_EQ(touch.contact, PairContact::edges);
+  EXPECT_EQ(touch.contact, inside::PairWitness::edges);
   const PairDistance2 cross = region_region(big, MultiPolygon{{square(3.5, 1, 1)}});
-  EXPECT_EQ(cross.contact, PairContact::edges);
+  EXPECT_EQ(cross.contact, inside::PairWitness::edges);
   const PairDistance2 nested = region_region(big, MultiPolygon{{square(1, 1, 1)}});
-  EXPECT_EQ(nested.contact, PairContact::vertex_of_b_in_a);
+  EXPECT_EQ(nested.contact, inside::PairWitness::vertex_of_b_in_a);
   EXPECT_EQ(nested.distance, 0.0);
   EXPECT_EQ(region_region(MultiPolygon{{square(1, 1, 1)}}, big).contact,
-            PairContact::vertex_of_a_in_b);
+            inside::PairWitness::vertex_of_a_in_b);
   // inside the hole: not nested, the distance to the hole's ring
   Polygon holed = square(0, 0, 10);
   holed.rings.push_back({{2, 2}, {2, 8}, {8, 8}, {8, 2}});

@@ -13,6 +13,13 @@ import pytest
 import contain
 from meshes import cube
 
+
+def quiet(deprecated, *args):
+    """Calls a deprecated name without its warning (for tests of the rules it still follows)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        return deprecated(*args)
+
 SQUARES = [np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float),
            np.array([[1, 1], [3, 1], [3, 3], [1, 3]], dtype=float)]  # overlap at [1, 2]^2
 WKT = "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))"
@@ -172,7 +179,7 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
         forms = [answer(t) for t in shifted(3.0)]
         assert forms[0] == forms[1] == forms[2], (name, forms)
     batches = {
-        "MeshPair.collide_many": lambda p: pair.collide_many(p).tolist(),
+        "MeshPair.collide_many": lambda p: quiet(pair.collide_many, p).tolist(),  # deprecated
         "MeshPairDistance.distance": lambda p: distances.distance(p)["distance"].tolist(),
         "MeshPairDistance.within": lambda p: distances.within(p, 1.5).tolist(),
         "convex_convex": lambda p: contain.convex_convex(convex, convex, p)["distance"].tolist(),
@@ -195,14 +202,14 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
              np.array([[start[0], end[0]]]),
              np.array([[start[1], end[1]]]),
              np.array([[start[2], end[2]]])]
-    answers = [moving.first_contact_many(m)[1].tolist() for m in forms]
+    answers = [moving.first_contact(m)[1].tolist() for m in forms]
     assert answers[0] == answers[1] == answers[2] == answers[3] == [moving.first_contact(start[1], end[1]).time]
     with pytest.raises(ValueError, match=r"motions must have shape \(N, 24\)"):
-        moving.first_contact_many(np.zeros((1, 3, 4)))
+        quiet(moving.first_contact_many, np.zeros((1, 3, 4)))
     with pytest.raises(ValueError, match="last row"):
-        moving.first_contact_many(np.ones((1, 2, 4, 4)))
+        moving.first_contact(np.ones((1, 2, 4, 4)))
     with pytest.raises(contain.ContainError, match=r"motions\[1\]\[0\]: .*NaN"):  # motion 1's start
-        moving.first_contact_many(np.r_[forms[0], np.full((1, 24), np.inf)])
+        moving.first_contact(np.r_[forms[0], np.full((1, 24), np.inf)])
     with pytest.raises(contain.ContainError, match=r"transform_b: .*NaN"):
         contain.collide(box, box, transform_b=[np.nan] * 12)
 
@@ -235,7 +242,7 @@ def instances():
         "RegionDistance": contain.RegionDistance(WKT, fill="nonzero"),
         "RegionLayer": contain.RegionLayer([WKT]),
         "SolidScene": contain.SolidScene([box]),
-        "WindingNumber": contain.WindingNumber(box),
+        "FastWindingNumber": contain.FastWindingNumber(box),
     }
 
 
@@ -247,7 +254,7 @@ def test_every_class_has_a_repr_that_shows_what_it_holds():
     for name, item in objects.items():
         text = repr(item)
         assert text.startswith(f"contain.{name}") and "object at 0x" not in text, (name, text)
-    assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed-exact')"
+    assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed_exact')"
     assert repr(objects["RegionDistance"]) == "contain.RegionDistance(8 edges, fill='nonzero')"
     assert repr(objects["MeshPairDistance"]) == "contain.MeshPairDistance(a: 12 triangles, solid; b: 12 triangles, solid)"
     assert repr(objects["MovingMeshPair"]) == "contain.MovingMeshPair(a: 8 vertices, solid; b: 8 vertices, solid)"
@@ -340,3 +347,57 @@ def test_format_wkt_is_the_string_form_and_write_wkt_warns():
     assert text == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
     with pytest.warns(DeprecationWarning, match="write_wkt is deprecated: use contain.format_wkt"):
         assert contain.write_wkt([square]) == text
+
+
+def test_fast_winding_number_carries_the_cpp_name_and_the_old_name_warns():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new name never warns
+        new = contain.FastWindingNumber(cube()).evaluate([[0.5, 0.5, 0.5]])
+    with pytest.warns(DeprecationWarning, match="WindingNumber is deprecated: use contain.FastWindingNumber"):
+        old = contain.WindingNumber(cube()).evaluate([[0.5, 0.5, 0.5]])
+    assert old.tolist() == new.tolist()
+    assert "WindingNumber" not in contain.__all__
+    with pytest.raises(AttributeError):
+        contain.NoSuchName  # noqa: B018 - the module's __getattr__ still refuses unknown names
+
+
+def test_locate_takes_one_point_or_many_and_locate_point_warns():
+    objects = {
+        "MeshIndex": (contain.MeshIndex(cube()), [0.5, 0.5, 0.5]),
+        "PolygonIndex": (contain.PolygonIndex("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"), [1.0, 0.5]),
+        "CsgSolid": (contain.CsgSolid(contain.Csg.box([0, 0, 0], [1, 1, 1])), [2.0, 0.5, 0.5]),
+        "ConvexPolyhedron": (contain.ConvexPolyhedron(cube()), [0.5, 0.5, 0.5]),
+    }
+    for name, (obj, point) in objects.items():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the new form never warns
+            one = obj.locate(point)
+            many = obj.locate(np.array([point, point]))
+        assert isinstance(one, contain.Location), name
+        assert many.tolist() == [int(one), int(one)], name
+        with pytest.warns(DeprecationWarning, match=f"{name}.locate_point is deprecated: use {name}.locate"):
+            assert obj.locate_point(point) == one
+
+
+def test_pair_batches_are_the_single_call_names_and_the_old_names_warn():
+    pair = contain.MeshPair(cube(), cube())
+    poses = np.array([shifted(x)[1] for x in (3.0, 0.5)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new forms never warn
+        hits = pair.collide(poses)
+        one = pair.collide(poses[1])
+    assert hits.tolist() == [False, True] and one.intersect
+    with pytest.warns(DeprecationWarning, match="MeshPair.collide_many is deprecated: use MeshPair.collide"):
+        assert pair.collide_many(poses).tolist() == hits.tolist()
+    moving = contain.MovingMeshPair(cube(), cube())
+    start, end = shifted(3.0), shifted(0.5)
+    motions = np.array([[start[1], end[1]]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        hit, time = moving.first_contact(motions)
+        deformed = moving.first_contact(cube().vertices + [0.5, 0, 0])
+    assert hit.tolist() == [True] and time[0] == moving.first_contact(start[1], end[1]).time
+    with pytest.warns(DeprecationWarning, match=r"first_contact_many is deprecated: use MovingMeshPair.first_contact\(motions\)"):
+        assert moving.first_contact_many(motions)[1].tolist() == time.tolist()
+    with pytest.warns(DeprecationWarning, match=r"first_contact_deforming is deprecated"):
+        assert moving.first_contact_deforming(cube().vertices + [0.5, 0, 0]).time == deformed.time

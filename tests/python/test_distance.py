@@ -16,7 +16,7 @@ def test_mesh_distance_signed_closest_point_and_triangle():
     assert r["distance"][0] < 0 and r["location"][0] == 1
     assert r["distance"][2] == np.sqrt(3.0)  # the double nearest to the exact sqrt(3)
     assert r["triangle"].dtype == np.int32
-    assert prepared.regime == "closed-exact" and len(prepared) == 12
+    assert prepared.regime == "closed_exact" and len(prepared) == 12
     one = prepared.distance(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=1)
     two = prepared.distance(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=2)
     assert np.array_equal(one["distance"], two["distance"])

@@ -18,7 +18,8 @@ namespace contain::clip {
 /// Clips every segment: `kept[i]` is 1 when something of `segments[i]` is left and `out[i]` is
 /// then that part (zero-length when it only touches), 0 when nothing is left (`out[i]` is then
 /// unspecified). Results per index do not depend on the thread count.
-/// Preconditions: out.size() == kept.size() == segments.size(); finite coordinates.
+/// `out` and `kept` have the size of `segments` (asserted: a different size is a programming
+/// error; a build without assertions clips the common prefix). Finite coordinates.
 ///
 /// The box forms run a branch-free kernel (no data-dependent branch; GCC/Clang vector
 /// extensions: four segments per step in AVX2 where the CPU has it, chosen at run time, else

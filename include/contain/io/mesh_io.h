@@ -25,8 +25,9 @@ enum class MeshFormat : std::uint8_t {
   ply_binary_big_endian,
 };
 
-/// The name of a format as in messages ("OBJ", "binary STL", ...).
-[[nodiscard]] const char* format_name(MeshFormat format);
+/// The enumerator's name ("obj", "stl_binary", "ply_binary_little_endian", ...); the readers'
+/// messages word a format for a person ("binary STL").
+[[nodiscard]] const char* to_string(MeshFormat format);
 
 /// What a reader saw besides the mesh.
 struct MeshInfo {
