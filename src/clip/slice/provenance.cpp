@@ -35,6 +35,9 @@ bool in_box(Vec2 a, Vec2 b, Vec2 p) {
          p.y <= std::max(a.y, b.y);
 }
 bool on_segment(const CrossingSegment& s, Vec2 p) {
+  // An end of the segment, the common case (the engine keeps input vertices), needs no orient2d
+  // (whose exact stage a zero determinant always reaches).
+  if (p == s.from || p == s.to) return true;
   return in_box(s.from, s.to, p) && predicates::orient2d(s.from, s.to, p) == Sign::zero;
 }
 
@@ -63,9 +66,11 @@ struct Score {
     return triangle < o.triangle;
   }
 };
-Score score(const CrossingSegment& s, Vec2 p, Vec2 q) {
+// The score of segment s for the edge p -> q, or nothing when it cannot beat `best`.
+std::optional<Score> score(const CrossingSegment& s, Vec2 p, Vec2 q, const Score& best) {
   Score out;
   out.exact = on_segment(s, p) && on_segment(s, q);
+  if (!out.exact && best.exact) return std::nullopt;
   if (!out.exact) out.distance = std::max(distance_to(s, p), distance_to(s, q));
   const Vec2 e = q - p;
   const Vec2 d = s.to - s.from;
@@ -101,8 +106,8 @@ class Matcher {
 
  private:
   void consider(std::int32_t i, Vec2 p, Vec2 q, Score& best) const {
-    const Score s = score(segments_[static_cast<std::size_t>(i)], p, q);
-    if (s.better_than(best)) best = s;
+    const std::optional<Score> s = score(segments_[static_cast<std::size_t>(i)], p, q, best);
+    if (s && s->better_than(best)) best = *s;
   }
 
   // Segments whose boxes come within a few ulps of the edge's box (a snapped or rounded point
