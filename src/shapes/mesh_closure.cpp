@@ -47,9 +47,24 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
       }
     }
   }
-  std::sort(edges.begin(), edges.end(),
-            [](const EdgeUse& a, const EdgeUse& b) { return before(a, b); });
-  return edges;
+  // A counting sort by the lower vertex (vertex numbers are dense), then each vertex's few
+  // edges by `before`: the same order as sorting all by `before`, in linear time. The full sort
+  // was a quarter of slicing 100 planes through a 131k-triangle sphere.
+  std::vector<std::size_t> start(welded.vertices.size() + 1, 0);
+  for (const EdgeUse& e : edges)
+    ++start[static_cast<std::size_t>(std::min(e.from, e.to)) + 1];
+  for (std::size_t v = 1; v < start.size(); ++v)
+    start[v] += start[v - 1];
+  std::vector<EdgeUse> sorted(edges.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const EdgeUse& e : edges)
+    sorted[next[static_cast<std::size_t>(std::min(e.from, e.to))]++] = e;
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [](const EdgeUse& a, const EdgeUse& b) { return before(a, b); });
+  }
+  return sorted;
 }
 
 }  // namespace
