@@ -14,6 +14,7 @@
 #include "clip/slice/stages.h"
 #include "clip/slice_meshes.h"
 #include "contain/inside/point_in_polygon.h"
+#include "contain/predicates/rounded_crossing.h"
 #include "scenes/scenes.h"
 #include "support/case_budget.h"
 #include "support/slice_oracle.h"
@@ -258,8 +259,32 @@ TEST(SliceMesh, PlanesThroughVerticesAndAlongEdgesOfRotatedCubes) {
   for (const Vec3& v : both.vertices)
     values.push_back(v.z);  // planes through every vertex
   const std::vector<Section> sections = slice(both, values, Axis::z);
-  for (const Section& s : sections)
+  int new_points = 0;  // vertices that are neither a mesh vertex nor an edge's crossing
+  for (const Section& s : sections) {
     expect_section_right(both, 2, s, case_budget(150, 5), 10);
+    std::vector<Vec2> curve_points;
+    for (std::size_t t = 0; t < both.triangles.size(); ++t) {
+      const Triangle3 tri = both.triangle(t);
+      const Vec3 p[3] = {tri.a, tri.b, tri.c};
+      for (int i = 0; i < 3; ++i) {
+        const Vec3 u = p[i];
+        const Vec3 w = p[(i + 1) % 3];
+        if (u.z == s.value) curve_points.push_back({u.x, u.y});
+        if ((u.z - s.value) * (w.z - s.value) < 0) {
+          const Vec3 x = predicates::rounded_axis_crossing(u, w, 2, s.value);
+          curve_points.push_back({x.x, x.y});
+        }
+      }
+    }
+    for (const Ring& ring : s.region.all_rings()) {
+      for (const Vec2 q : ring) {
+        if (std::find(curve_points.begin(), curve_points.end(), q) == curve_points.end()) {
+          ++new_points;
+        }
+      }
+    }
+  }
+  EXPECT_GT(new_points, 0) << "the cubes' sections cross: the engine made points of its own";
 }
 
 TEST(SliceMesh, ProvenanceOfEdgesBetweenRoundedPointsIsTheSegmentTheyRunAlong) {
