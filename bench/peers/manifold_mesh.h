@@ -11,6 +11,7 @@
 
 #include <manifold/manifold.h>
 
+#include "bench/peers/peer_driver.h"
 #include "contain/io/mesh_io.h"
 
 namespace contain::bench {
@@ -70,6 +71,18 @@ namespace contain::bench {
                  static_cast<int>(solid.Status()));
     return std::nullopt;
   }
+  return solid;
+}
+
+// The solid of a mesh file for the slicing drivers, with the time of building it on stderr
+// ("kernel build"), or nothing after a message.
+[[nodiscard]] inline std::optional<manifold::Manifold> load_solid(const std::string& path,
+                                                                  int axis) {
+  const std::optional<Mesh> mesh = read_off(path);
+  if (!mesh) return std::nullopt;
+  const KernelClock clock;
+  std::optional<manifold::Manifold> solid = build_manifold(*mesh, path, axis);
+  if (solid) clock.report("build");
   return solid;
 }
 

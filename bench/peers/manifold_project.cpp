@@ -25,13 +25,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: manifold_project MESH.off [--axis x|y|z]\n");
     return 2;
   }
-  const std::optional<Mesh> mesh = read_off(args->mesh);
-  if (!mesh) return 3;
-
-  const KernelClock build_clock;
-  const std::optional<manifold::Manifold> solid = build_manifold(*mesh, args->mesh, args->axis);
+  const std::optional<manifold::Manifold> solid = load_solid(args->mesh, args->axis);
   if (!solid) return 3;
-  build_clock.report("build");
 
   const KernelClock project_clock;
   const manifold::Polygons outlines = solid->Project();

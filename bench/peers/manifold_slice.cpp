@@ -26,13 +26,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: manifold_slice MESH.off [--planes N] [--axis x|y|z]\n");
     return 2;
   }
-  const std::optional<Mesh> mesh = read_off(args->mesh);
-  if (!mesh) return 3;
-
-  const KernelClock build_clock;
-  const std::optional<manifold::Manifold> solid = build_manifold(*mesh, args->mesh, args->axis);
+  const std::optional<manifold::Manifold> solid = load_solid(args->mesh, args->axis);
   if (!solid) return 3;
-  build_clock.report("build");
 
   const manifold::Box box = solid->BoundingBox();
   const std::vector<double> values = plane_values(box.min.z, box.max.z, args->planes);
