@@ -71,7 +71,8 @@ int run_demo(const DemoOptions& o) {
                           demo::mesh_clip_scene,
                           demo::bound_scene,
                           demo::distance_slice_scene,
-                          demo::clearance_scene};
+                          demo::clearance_scene,
+                          demo::slice_scene};
   for (Scene scene : scenes) {
     const Status status = scene(context);
     if (!status) return report(status.error());

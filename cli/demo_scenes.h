@@ -63,5 +63,6 @@ Status mesh_clip_scene(const Context& context);
 Status bound_scene(const Context& context);
 Status distance_slice_scene(const Context& context);
 Status clearance_scene(const Context& context);
+Status slice_scene(const Context& context);
 
 }  // namespace contain::cli::demo
