@@ -235,6 +235,7 @@ def instances():
         "RegionDistance": contain.RegionDistance(WKT, fill="nonzero"),
         "RegionLayer": contain.RegionLayer([WKT]),
         "SolidScene": contain.SolidScene([box]),
+        "TileIterator": contain.iter_tiles(WKT, 2, 2),
         "WindingNumber": contain.WindingNumber(box),
     }
 
