@@ -270,6 +270,7 @@ def instances():
         "Region": contain.as_region(WKT),
         "RegionDistance": contain.RegionDistance(WKT, fill="nonzero"),
         "RegionLayer": contain.RegionLayer([WKT]),
+        "SelfIntersections": contain.self_intersections(box),
         "SolidScene": contain.SolidScene([box]),
         "TileIterator": contain.iter_tiles(WKT, 2, 2),
         "WindingNumber": contain.WindingNumber(box),
