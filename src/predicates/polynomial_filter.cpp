@@ -313,8 +313,8 @@ RealRoot root_at(const Coeffs& p, double x) {
 
 // ---- signs at roots beyond double precision -----------------------------------------------
 
-// Levels of refinement of a root below double spacing (each narrows the bracket by 2^53 or
-// more, or resolves a root hugging an end), once q is known not to vanish at the root.
+// Levels of refinement of a root below double spacing, once q is known not to vanish at the
+// root (each narrows the bracket: by 2^53 when its bisection reaches two adjacent doubles of u).
 constexpr int kLevels = 256;
 // Bisection steps of a level that may take exact signs of p.
 constexpr int kExactSteps = 4;
@@ -337,9 +337,9 @@ bool vanishes_at_root(const Coeffs& q, const RealRoot::State& s, const BigFloat&
 // the doubles of u resolve the root finely near u = 0 whatever its distance from t's doubles,
 // and their coefficients rounded to long double describe the polynomials near the root rather
 // than at 0; then the filter over t's doubles runs on u's. Each level moves them again onto the
-// pair of adjacent doubles of u left (narrower by 2^53 at least; read from its upper end when
-// the root hugs u = 1, where u's doubles are coarse). Nothing when the levels run out: the
-// caller's Tarski query answers.
+// bracket of u left, once the bisection reaches two adjacent doubles or p's sign there is a close
+// call past the first steps (read from its upper end when that is u = 1, where u's doubles are
+// coarse). Nothing when the levels run out: the caller's Tarski query answers.
 std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, const BigFloat& lo,
                                     const BigFloat& hi) {
   Coeffs p = moved(s.p, lo, hi - lo), qu = moved(q, lo, hi - lo);
