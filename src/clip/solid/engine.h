@@ -5,7 +5,8 @@
 //   refine.cpp     each triangle split by its constraints (triangulate.cpp: the constrained
 //                  triangulation), points on shared edges given to every triangle on the edge
 //   label.cpp      the winding numbers of every input on both sides of each refined face
-//   output.cpp     the faces on the result's boundary, rounded, checked exactly
+//   output.cpp     the faces on the result's boundary, sheets kept apart (sheets.cpp), rounded,
+//                  checked exactly (validate.cpp)
 // Private to clip.
 
 #include <array>
@@ -105,6 +106,14 @@ struct FaceLabel {
     Sign sense);
 [[nodiscard]] std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinement,
                                                  const PointStore& store);
+/// Faces with their corners renumbered so that sheets meeting along an edge or at a point have
+/// their own vertices there: `points[i]` is the exact point of new vertex i.
+struct Sheets {
+  std::vector<std::array<std::int32_t, 3>> faces;
+  std::vector<std::int32_t> points;
+};
+[[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                                     const PointStore& store);
 [[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
                                                      const std::vector<TriangleWork>& work,
                                                      const std::vector<FaceLabel>& labels,

@@ -160,3 +160,11 @@ Vec3 nearest_double(const ExactPoint& p) {
 }
 
 }  // namespace contain::clip::solid
+
+namespace contain::clip::solid {
+
+BigVec3 direction(const ExactPoint& a, const ExactPoint& b) {
+  return {b.x[0] * a.w - a.x[0] * b.w, b.x[1] * a.w - a.x[1] * b.w, b.x[2] * a.w - a.x[2] * b.w};
+}
+
+}  // namespace contain::clip::solid

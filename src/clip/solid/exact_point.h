@@ -65,3 +65,10 @@ struct ExactPoint {
 [[nodiscard]] Vec3 nearest_double(const ExactPoint& p);
 
 }  // namespace contain::clip::solid
+
+namespace contain::clip::solid {
+
+/// (b - a) times the positive factor a.w b.w: a vector with the direction of b - a, exact.
+[[nodiscard]] BigVec3 direction(const ExactPoint& a, const ExactPoint& b);
+
+}  // namespace contain::clip::solid

@@ -101,18 +101,12 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
     kept.push_back(back ? face.v : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
   }
+  const Sheets sheets = separate_sheets(kept, store);
   MeshBooleanResult result;
-  std::unordered_map<std::int32_t, std::int32_t> index;
-  for (const auto& t : kept) {
-    TriangleIndices out{};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto [it, fresh] =
-          index.try_emplace(t[k], static_cast<std::int32_t>(result.mesh.vertices.size()));
-      if (fresh) result.mesh.vertices.push_back(store.rounded(t[k]));
-      out[k] = it->second;
-    }
-    result.mesh.triangles.push_back(out);
-  }
+  for (const std::int32_t p : sheets.points)
+    result.mesh.vertices.push_back(store.rounded(p));
+  for (const auto& t : sheets.faces)
+    result.mesh.triangles.push_back({t[0], t[1], t[2]});
   const Status valid = check_written(result.mesh);
   if (!valid) return valid.error();
   result.shells = count_shells(result.mesh);
