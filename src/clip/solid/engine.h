@@ -44,6 +44,8 @@ class PointStore {
   }
   [[nodiscard]] Vec3 rounded(std::int32_t i) const { return rounded_[static_cast<std::size_t>(i)]; }
   [[nodiscard]] std::size_t size() const { return points_.size(); }
+  /// The first stored point with the same nearest doubles as point i (i itself when none).
+  [[nodiscard]] std::int32_t representative(std::int32_t i) const;
 
  private:
   std::vector<ExactPoint> points_;

@@ -173,6 +173,11 @@ std::int32_t PointStore::add(const ExactPoint& p) {
   return id;
 }
 
+std::int32_t PointStore::representative(std::int32_t i) const {
+  const Vec3 r = rounded(i);
+  return by_rounded_.at({r.x, r.y, r.z}).front();
+}
+
 std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
   std::vector<Box3> boxes(soup.triangles.size());
   for (std::size_t t = 0; t < boxes.size(); ++t) {

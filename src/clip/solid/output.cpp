@@ -8,8 +8,10 @@
 // has the same labels there (the rays count every coinciding face): the face of the triangle
 // with the lowest number among those covering it is written, the others are not.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -87,6 +89,41 @@ double signed_volume(const Mesh& mesh) {
   return six / 6.0;
 }
 
+// Points whose nearest doubles coincide become one vertex (the written mesh could not tell
+// them apart); faces that lose a corner so are dropped, and two faces that become the same
+// triangle in opposite directions cancel (rule solid-output). What this leaves is checked.
+std::vector<std::array<std::int32_t, 3>> merge_coincident(
+    const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
+  std::map<std::array<std::int32_t, 3>, std::vector<std::size_t>> by_corners;
+  std::vector<std::array<std::int32_t, 3>> merged;
+  for (const auto& f : faces) {
+    std::array<std::int32_t, 3> t = {store.representative(f[0]), store.representative(f[1]),
+                                     store.representative(f[2])};
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    merged.push_back(t);
+  }
+  // Cancel opposite pairs: key (a, b, c) with a smallest; its reverse is (a, c, b).
+  std::vector<bool> gone(merged.size(), false);
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const auto& t = merged[i];
+    const std::array<std::int32_t, 3> reverse = {t[0], t[2], t[1]};
+    auto it = by_corners.find(reverse);
+    if (it != by_corners.end() && !it->second.empty()) {
+      gone[it->second.back()] = true;
+      gone[i] = true;
+      it->second.pop_back();
+    } else {
+      by_corners[t].push_back(i);
+    }
+  }
+  std::vector<std::array<std::int32_t, 3>> out;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    if (!gone[i]) out.push_back(merged[i]);
+  }
+  return out;
+}
+
 }  // namespace
 
 Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
@@ -101,6 +138,7 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
     kept.push_back(back ? face.v : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
   }
+  kept = merge_coincident(kept, store);
   const Sheets sheets = separate_sheets(kept, store);
   MeshBooleanResult result;
   for (const std::int32_t p : sheets.points)
