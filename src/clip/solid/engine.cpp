@@ -14,7 +14,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   if (!soup) return soup.error();
   solid::PointStore store;
   for (const Vec3 v : soup->vertices)
-    (void)store.add(solid::exact_point(v));
+    (void)store.add(v);
   const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
   const solid::Refinement refinement = solid::refine(*soup, work, store);
   const std::vector<solid::FaceLabel> labels = solid::label_faces(*soup, refinement, store);

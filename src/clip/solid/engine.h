@@ -39,6 +39,8 @@ class PointStore {
  public:
   /// The point's number, new or that of an equal point already stored.
   std::int32_t add(const ExactPoint& p);
+  /// The same for a point of doubles (its own nearest doubles: no rounding to compute).
+  std::int32_t add(Vec3 v);
   [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
     return points_[static_cast<std::size_t>(i)];
   }
@@ -48,6 +50,8 @@ class PointStore {
   [[nodiscard]] std::int32_t representative(std::int32_t i) const;
 
  private:
+  std::int32_t add(const ExactPoint& p, Vec3 r);
+
   std::vector<ExactPoint> points_;
   std::vector<Vec3> rounded_;
   std::map<std::array<double, 3>, std::vector<std::int32_t>> by_rounded_;

@@ -36,15 +36,31 @@ std::int32_t vertex_id(const Soup& soup, std::int32_t t, int i) {
   return soup.triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)];
 }
 
-// Signs of t's corners against u's plane.
+// Signs of t's corners against u's plane; a corner u shares is on it without a test (the
+// filter of orient3d cannot decide an exact zero, the expansion stage would).
 std::array<Sign, 3> sides(const Soup& soup, std::int32_t t, std::int32_t u) {
   const Vec3 a = corner(soup, u, 0), b = corner(soup, u, 1), c = corner(soup, u, 2);
-  return {orient3d(a, b, c, corner(soup, t, 0)), orient3d(a, b, c, corner(soup, t, 1)),
-          orient3d(a, b, c, corner(soup, t, 2))};
+  const TriangleIndices& vu = soup.triangles[static_cast<std::size_t>(u)];
+  std::array<Sign, 3> s{};
+  for (int i = 0; i < 3; ++i) {
+    const std::int32_t id = vertex_id(soup, t, i);
+    s[static_cast<std::size_t>(i)] = (id == vu[0] || id == vu[1] || id == vu[2])
+                                         ? Sign::zero
+                                         : orient3d(a, b, c, corner(soup, t, i));
+  }
+  return s;
 }
 
-bool one_side(const std::array<Sign, 3>& s) {
-  return (s[0] == s[1] && s[1] == s[2] && s[0] != Sign::zero);
+// The corners off the plane all on one side, none on it but `shared` of them: the triangle
+// meets the plane at most in the corners the two triangles share (no corner shared: not at all).
+bool one_side(const std::array<Sign, 3>& s, int shared) {
+  int zeros = 0, positive = 0, negative = 0;
+  for (const Sign x : s) {
+    zeros += x == Sign::zero ? 1 : 0;
+    positive += x == Sign::positive ? 1 : 0;
+    negative += x == Sign::negative ? 1 : 0;
+  }
+  return zeros <= shared && zeros < 3 && (positive == 0 || negative == 0);
 }
 
 // The ends (one or two point ids) of t's part of u's plane, given t's signs against it (not all
@@ -130,15 +146,22 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
     return;
   }
   const int shared = shared_corners(soup, t, u);
-  const std::array<Sign, 3> su = sides(soup, u, t);
-  if (one_side(su)) return;
-  if (su[0] == Sign::zero && su[1] == Sign::zero && su[2] == Sign::zero) {
-    if (shared != 2 || folded(soup, t, u)) add_coplanar(soup, t, u, work);
+  if (shared == 2) {
+    // Neighbours across an edge meet beyond it only when folded into one plane.
+    const std::array<Sign, 3> su = sides(soup, u, t);
+    if (su[0] == Sign::zero && su[1] == Sign::zero && su[2] == Sign::zero && folded(soup, t, u)) {
+      add_coplanar(soup, t, u, work);
+    }
     return;
   }
-  if (shared == 2) return;  // different planes: they meet in the shared edge only
+  const std::array<Sign, 3> su = sides(soup, u, t);
+  if (one_side(su, shared)) return;
+  if (su[0] == Sign::zero && su[1] == Sign::zero && su[2] == Sign::zero) {
+    add_coplanar(soup, t, u, work);
+    return;
+  }
   const std::array<Sign, 3> st = sides(soup, t, u);
-  if (one_side(st)) return;
+  if (one_side(st, shared)) return;
   const BigVec3 line = predicates::cross(soup.normals[static_cast<std::size_t>(t)],
                                          soup.normals[static_cast<std::size_t>(u)]);
   int k = 0;
@@ -161,7 +184,14 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
 }  // namespace
 
 std::int32_t PointStore::add(const ExactPoint& p) {
-  const Vec3 r = nearest_double(p);
+  return add(p, nearest_double(p));
+}
+
+std::int32_t PointStore::add(Vec3 v) {
+  return add(exact_point(v), v);
+}
+
+std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   std::vector<std::int32_t>& bucket = by_rounded_[{r.x, r.y, r.z}];
   for (const std::int32_t i : bucket) {
     if (same_point(points_[static_cast<std::size_t>(i)], p)) return i;

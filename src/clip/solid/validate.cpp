@@ -131,7 +131,7 @@ Status check_written(const Mesh& mesh) {
   }
   PointStore store;
   for (const Vec3 v : soup->vertices)
-    (void)store.add(exact_point(v));
+    (void)store.add(v);
   const std::vector<TriangleWork> work = intersect_pairs(*soup, store);
   for (std::size_t t = 0; t < work.size(); ++t) {
     for (const Constraint& c : work[t].constraints) {
