@@ -13,25 +13,36 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <vector>
 
 #include "clip/solid/exact_point.h"
+#include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
 #include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::solid {
 
 /// Every input's triangles in one soup, vertices welded by exact position across inputs.
-struct Soup {
+class Soup {
+ public:
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
   std::vector<std::int32_t> input;  ///< the input of each triangle
-  std::vector<BigVec3> normals;     ///< exact (b - a) x (c - a) of each triangle
-  std::vector<bool> degenerate;     ///< zero area (normal zero): bounds nothing, skipped
+  /// The exact normal (b - a) x (c - a) of triangle t, computed on first use (most triangles
+  /// never need it). Not thread-safe: the engine runs on one thread.
+  [[nodiscard]] const BigVec3& normal(std::size_t t) const;
+  std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
+  std::vector<Box3> boxes;       ///< of each triangle (empty for a degenerate one)
+  bvh::Bvh tree;                 ///< over `boxes`: the pairs and the rays of the labels
   std::size_t inputs = 0;
+
+ private:
+  mutable std::vector<std::optional<BigVec3>> normals_;
 };
 
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).

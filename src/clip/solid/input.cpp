@@ -12,9 +12,12 @@
 #include <utility>
 
 #include "clip/solid/engine.h"
+#include "contain/predicates/orient2d.h"
 
 namespace contain::clip::solid {
 namespace {
+
+using predicates::orient2d;
 
 std::string coordinates(Vec3 v) {
   std::ostringstream out;
@@ -108,14 +111,35 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
     const Status closed = check_closed(soup, first, soup.triangles.size(), k);
     if (!closed) return closed.error();
   }
-  soup.normals.reserve(soup.triangles.size());
   for (const TriangleIndices& t : soup.triangles) {
-    soup.normals.push_back(exact_normal(soup.vertices[static_cast<std::size_t>(t[0])],
-                                        soup.vertices[static_cast<std::size_t>(t[1])],
-                                        soup.vertices[static_cast<std::size_t>(t[2])]));
-    soup.degenerate.push_back(predicates::is_zero(soup.normals.back()));
+    const Vec3 a = soup.vertices[static_cast<std::size_t>(t[0])];
+    const Vec3 b = soup.vertices[static_cast<std::size_t>(t[1])];
+    const Vec3 c = soup.vertices[static_cast<std::size_t>(t[2])];
+    // Zero area exactly when the three projections onto the coordinate planes have zero area.
+    soup.degenerate.push_back(orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+                              orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+                              orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero);
+    Box3 box;  // empty for a degenerate triangle: it meets nothing
+    if (!soup.degenerate.back()) {
+      for (const std::int32_t i : t)
+        box.expand(soup.vertices[static_cast<std::size_t>(i)]);
+    }
+    soup.boxes.push_back(box);
   }
+  soup.tree = bvh::Bvh(soup.boxes);
   return soup;
+}
+
+const BigVec3& Soup::normal(std::size_t t) const {
+  if (normals_.size() != triangles.size()) normals_.resize(triangles.size());
+  std::optional<BigVec3>& n = normals_[t];
+  if (!n) {
+    const TriangleIndices& v = triangles[t];
+    n = exact_normal(vertices[static_cast<std::size_t>(v[0])],
+                     vertices[static_cast<std::size_t>(v[1])],
+                     vertices[static_cast<std::size_t>(v[2])]);
+  }
+  return *n;
 }
 
 }  // namespace contain::clip::solid

@@ -76,7 +76,7 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
     if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
       ends.push_back(
           store.add(line_plane(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
-                               soup.normals[static_cast<std::size_t>(u)])));
+                               soup.normal(static_cast<std::size_t>(u)))));
     }
   }
   return ends;
@@ -108,8 +108,8 @@ int shared_corners(const Soup& soup, std::int32_t t, std::int32_t u) {
 // corners on the same side of the edge (exactly: the orientation of the four points in the
 // plane, by the sign of the normals' dot product, both normals non-zero).
 bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
-  const BigVec3& nt = soup.normals[static_cast<std::size_t>(t)];
-  const BigVec3& nu = soup.normals[static_cast<std::size_t>(u)];
+  const BigVec3& nt = soup.normal(static_cast<std::size_t>(t));
+  const BigVec3& nu = soup.normal(static_cast<std::size_t>(u));
   // Sharing edge p q: t = p q x, u = q p y when the two are oriented alike (a normal mesh):
   // normals agree (dot > 0) exactly when x and y lie on opposite sides. Oriented oppositely
   // (t = p q x, u = p q y): normals agree when x, y lie on the same side. Decide by the edge's
@@ -162,8 +162,8 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
   }
   const std::array<Sign, 3> st = sides(soup, t, u);
   if (one_side(st, shared)) return;
-  const BigVec3 line = predicates::cross(soup.normals[static_cast<std::size_t>(t)],
-                                         soup.normals[static_cast<std::size_t>(u)]);
+  const BigVec3 line = predicates::cross(soup.normal(static_cast<std::size_t>(t)),
+                                         soup.normal(static_cast<std::size_t>(u)));
   int k = 0;
   while (component(line, k).is_zero())
     ++k;
@@ -209,16 +209,10 @@ std::int32_t PointStore::representative(std::int32_t i) const {
 }
 
 std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
-  std::vector<Box3> boxes(soup.triangles.size());
-  for (std::size_t t = 0; t < boxes.size(); ++t) {
-    if (soup.degenerate[t]) continue;  // an empty box meets nothing
-    for (int i = 0; i < 3; ++i)
-      boxes[t].expand(corner(soup, static_cast<std::int32_t>(t), i));
-  }
-  const bvh::Bvh tree(boxes);
+  const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
   (void)bvh::traverse_self(
-      tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
+      soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::int32_t t, std::int32_t u) {
         if (boxes[static_cast<std::size_t>(t)].overlaps(boxes[static_cast<std::size_t>(u)])) {
           intersect_pair(soup, std::min(t, u), std::max(t, u), store, work);

@@ -46,7 +46,7 @@ Sign edge_side(Vec3 a, Vec3 b, const ExactPoint& p, int s) {
 // +1 / -1 when the +x ray from the perturbed point crosses triangle t (its normal pointing to
 // +x / -x), 0 when it misses.
 int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
-  const BigVec3& n = soup.normals[t];
+  const BigVec3& n = soup.normal(t);
   const Sign nx = n.x.sign();
   if (nx == Sign::zero) return 0;  // parallel to the ray: a generic ray misses it
   const TriangleIndices& v = soup.triangles[t];
@@ -121,13 +121,7 @@ std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
 
 std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinement,
                                    const PointStore& store) {
-  std::vector<Box3> boxes(soup.triangles.size());
-  for (std::size_t t = 0; t < boxes.size(); ++t) {
-    if (soup.degenerate[t]) continue;
-    for (const std::int32_t i : soup.triangles[t])
-      boxes[t].expand(soup.vertices[static_cast<std::size_t>(i)]);
-  }
-  const bvh::Bvh tree(boxes);
+  const bvh::Bvh& tree = soup.tree;
   const std::vector<std::size_t> patch = patches(soup, refinement);
   std::vector<FaceLabel> labels(refinement.faces.size());
   for (std::size_t f = 0; f < labels.size(); ++f) {
@@ -137,7 +131,7 @@ std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinemen
     const ExactPoint c =
         centroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2]));
     const Vec3 near = nearest_double(c);
-    const BigVec3& n = soup.normals[static_cast<std::size_t>(face.triangle)];
+    const BigVec3& n = soup.normal(static_cast<std::size_t>(face.triangle));
     const Sign first = n.y.sign() != Sign::zero
                            ? n.y.sign()
                            : (n.z.sign() != Sign::zero ? n.z.sign() : n.x.sign());

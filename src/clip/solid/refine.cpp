@@ -136,9 +136,9 @@ Local local_of(const Soup& soup, std::size_t t, const PointStore& store) {
   const TriangleIndices& v = soup.triangles[t];
   l.corners = {v[0], v[1], v[2]};
   l.a = soup.vertices[static_cast<std::size_t>(v[0])];
-  l.normal = &soup.normals[t];
-  l.axis = dropped_axis(soup.normals[t]);
-  l.sense = component(soup.normals[t], l.axis).sign();
+  l.normal = &soup.normal(t);
+  l.axis = dropped_axis(soup.normal(t));
+  l.sense = component(soup.normal(t), l.axis).sign();
   l.store = &store;
   return l;
 }
