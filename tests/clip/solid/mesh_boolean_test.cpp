@@ -133,6 +133,16 @@ TEST(MeshBoolean, SolidsTouchingAlongAnEdgeOrAtAPointKeepTheirSheetsApart) {
   EXPECT_EQ(exact_volume(x.mesh), 14);
 }
 
+// Found by the random lattice test: A and C meet in a face, B sits on C and against A's top
+// edge, D against all three. At (1, 1, 3) the union's surface touches itself along the edge to
+// (1, 2, 3) and is connected all around that corner: pairing the faces by wedges there would
+// write the edge twice; the other pairing keeps every directed edge matched once.
+TEST(MeshBoolean, ASurfacePinchedAlongAnEdgeIsWrittenWithEveryEdgeMatchedOnce) {
+  const std::vector<Mesh> in = {box_mesh({0, 0, 1}, {1, 2, 3}), box_mesh({1, 0, 3}, {2, 2, 4}),
+                                box_mesh({1, 0, 1}, {3, 1, 3}), box_mesh({0, 2, 0}, {2, 4, 4})};
+  EXPECT_EQ(exact_volume(checked(in, Op::union_).mesh), 26);
+}
+
 TEST(MeshBoolean, ATinyRotationGivesTheOraclesAnswer) {
   const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
   Mesh turned = a;  // about z by 1e-12 radians around the box's centre
