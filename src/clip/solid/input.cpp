@@ -2,6 +2,7 @@
 // point is one point whichever input names it), each input checked closed: every directed edge
 // occurs as often as its reverse, so its winding number is defined off its surface.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -29,20 +30,30 @@ std::string coordinates(Vec3 v) {
 // The first directed edge of input `which` (triangles [first, last) of the soup) that occurs
 // more often than its reverse, as an error; none when closed.
 Status check_closed(const Soup& soup, std::size_t first, std::size_t last, std::size_t which) {
-  std::map<std::pair<std::int32_t, std::int32_t>, std::int64_t> count;
+  // Each edge as (key of the pair, +1 for min -> max, -1 for max -> min), sorted: the balance of
+  // a pair is the sum over its run.
+  std::vector<std::pair<std::uint64_t, int>> uses;
+  uses.reserve(3 * (last - first));
   for (std::size_t t = first; t < last; ++t) {
     const TriangleIndices& v = soup.triangles[t];
     for (int i = 0; i < 3; ++i) {
       const std::int32_t a = v[static_cast<std::size_t>(i)],
                          b = v[static_cast<std::size_t>((i + 1) % 3)];
-      if (a == b) continue;
-      // +1 for a -> b, -1 for b -> a, kept on the pair (min, max).
-      count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+      if (a != b) uses.emplace_back(edge_key(a, b), a < b ? 1 : -1);
     }
   }
-  for (const auto& [edge, balance] : count) {
+  std::sort(uses.begin(), uses.end());
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    std::int64_t balance = 0;
+    for (; j < uses.size() && uses[j].first == uses[i].first; ++j)
+      balance += uses[j].second;
+    const std::uint64_t key = uses[i].first;
+    i = j;
     if (balance == 0) continue;
-    const auto [a, b] = balance > 0 ? edge : std::pair{edge.second, edge.first};
+    const auto lo = static_cast<std::int32_t>(key >> 32U);
+    const auto hi = static_cast<std::int32_t>(key & 0xffffffffU);
+    const auto [a, b] = balance > 0 ? std::pair{lo, hi} : std::pair{hi, lo};
     return Error{.kind = ErrorKind::invalid_value,
                  .message = "input " + std::to_string(which) +
                             " is not closed: the directed edge " +
