@@ -210,11 +210,11 @@ TEST(MeshBoolean, RandomSphereAndTetrahedraPairsAgreeWithTheOracle) {
     const Mesh a = icosphere(1, 1.0, {0, 0, 0});
     const Mesh b = icosphere(1, 0.8, {u(rng), u(rng), u(rng)});
     for (const Op op : all_ops)
-      (void)checked({a, b}, op, 100, static_cast<unsigned>(trial));
+      (void)checked({a, b}, op, 50, static_cast<unsigned>(trial));
     const Mesh t = tetrahedron({u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)},
                                {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)});
     for (const Op op : all_ops)
-      (void)checked({a, t}, op, 100, static_cast<unsigned>(trial));
+      (void)checked({a, t}, op, 50, static_cast<unsigned>(trial));
   }
 }
 
