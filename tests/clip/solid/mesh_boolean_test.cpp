@@ -298,6 +298,20 @@ TEST(MeshBoolean, AnOpenInputIsAnErrorNamingTheInputAndAnEdge) {
   EXPECT_NE(r.error().message.find(" -> "), std::string::npos) << r.error().message;
 }
 
+TEST(MeshBoolean, NonFiniteCoordinatesAndBadIndicesAreErrorsNamingTheInput) {
+  Mesh nan_box = box_mesh({0, 0, 0}, {1, 1, 1});
+  nan_box.vertices[3].y = std::nan("");
+  Mesh bad_index = box_mesh({0, 0, 0}, {1, 1, 1});
+  bad_index.triangles[0][1] = 8;
+  for (const Mesh& bad : {nan_box, bad_index}) {
+    const std::vector<Mesh> in = {box_mesh({0, 0, 0}, {2, 2, 2}), bad};
+    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().kind, ErrorKind::invalid_value);
+    EXPECT_NE(r.error().message.find("input 1"), std::string::npos) << r.error().message;
+  }
+}
+
 TEST(MeshBoolean, NoInputAndEmptyInputsAreTheEmptySolid) {
   const Result<clip::MeshBooleanResult> none = clip::mesh_boolean({});
   ASSERT_TRUE(none.ok());
