@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "clip/solid/engine.h"
@@ -88,7 +89,7 @@ int dropped_axis(const BigVec3& n) {
 Result<Soup> make_soup(std::span<const Mesh> inputs) {
   Soup soup;
   soup.inputs = inputs.size();
-  std::map<std::array<double, 3>, std::int32_t> welded;
+  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const Mesh& mesh = inputs[k];
     std::vector<std::int32_t> remap(mesh.vertices.size());
@@ -100,7 +101,7 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 " is not finite"};
       }
       // + 0.0 turns -0 into +0: one key per position.
-      const auto [it, fresh] = welded.try_emplace({v.x + 0.0, v.y + 0.0, v.z + 0.0},
+      const auto [it, fresh] = welded.try_emplace(Vec3{v.x + 0.0, v.y + 0.0, v.z + 0.0},
                                                   static_cast<std::int32_t>(soup.vertices.size()));
       if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
       remap[i] = it->second;
