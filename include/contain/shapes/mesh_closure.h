@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Is a mesh a solid's boundary? The rule of the solids in ../shared/spec/cli.md: a mesh is
+/// closed when each directed edge occurs as often as its reverse, so that its winding number is
+/// defined everywhere off its surface. Non-manifold edges (four triangles on one edge, two shells
+/// touching along an edge) are fine; a hole, a flipped triangle or a dangling face are not.
+
+#include <cstdint>
+#include <optional>
+
+#include "contain/shapes/mesh.h"
+#include "contain/values/vec.h"
+
+namespace contain::shapes {
+
+/// A directed edge that occurs more often than its reverse. Vertices are judged by position
+/// (as `weld_vertices` does), so an unwelded STL is judged as its welded twin.
+struct UnmatchedEdge {
+  Vec3 from;
+  Vec3 to;
+  std::int32_t triangle = 0;  ///< the first triangle (in file order) that has the edge from -> to
+  std::int64_t count = 0;     ///< occurrences of from -> to
+  std::int64_t reverse = 0;   ///< occurrences of to -> from (fewer than `count`)
+};
+
+/// One directed edge that breaks closedness, or nothing when every directed edge occurs as often
+/// as its reverse (an empty mesh is closed: the empty solid). Deterministic: of the unbalanced
+/// edges, the one whose first triangle comes first in the file, then by its corners' order.
+/// Triangles with a repeated corner add an edge and its reverse, so they never unbalance one.
+/// O(n log n) for n triangles.
+[[nodiscard]] std::optional<UnmatchedEdge> unmatched_edge(const Mesh& mesh);
+
+}  // namespace contain::shapes
+
+// Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
+namespace contain {
+using shapes::unmatched_edge;
+using shapes::UnmatchedEdge;
+}  // namespace contain

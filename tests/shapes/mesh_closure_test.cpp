@@ -1,0 +1,104 @@
+#include "contain/shapes/mesh_closure.h"
+
+#include <gtest/gtest.h>
+
+#include "scenes/scenes.h"
+
+namespace contain {
+namespace {
+
+Mesh unit_box() {
+  return scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}});
+}
+
+TEST(MeshClosure, BoxAndTorusAreClosed) {
+  EXPECT_FALSE(unmatched_edge(unit_box()).has_value());
+  EXPECT_FALSE(unmatched_edge(scenes::torus(2.0, 0.5, 24, 12)).has_value());
+}
+
+TEST(MeshClosure, EmptyMeshIsTheClosedEmptySolid) {
+  EXPECT_FALSE(unmatched_edge(Mesh{}).has_value());
+}
+
+TEST(MeshClosure, RemovedTriangleNamesTheFirstEdgeOfTheHole) {
+  Mesh m = unit_box();
+  const TriangleIndices gone = m.triangles[3];
+  m.triangles.erase(m.triangles.begin() + 3);
+  const std::optional<UnmatchedEdge> e = unmatched_edge(m);
+  ASSERT_TRUE(e.has_value());
+  // The hole's rim is the removed triangle's edges, each left without its reverse.
+  EXPECT_EQ(e->count, 1);
+  EXPECT_EQ(e->reverse, 0);
+  bool on_rim = false;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = m.vertex(gone[static_cast<std::size_t>(k)]);
+    const Vec3 b = m.vertex(gone[static_cast<std::size_t>((k + 1) % 3)]);
+    on_rim = on_rim || (e->from == b && e->to == a);
+  }
+  EXPECT_TRUE(on_rim);
+  const TriangleIndices& t = m.triangles[static_cast<std::size_t>(e->triangle)];
+  int corners_on_edge = 0;
+  for (const std::int32_t v : t) {
+    corners_on_edge += (m.vertex(v) == e->from || m.vertex(v) == e->to) ? 1 : 0;
+  }
+  EXPECT_EQ(corners_on_edge, 2);
+}
+
+TEST(MeshClosure, FlippedTriangleUnbalancesItsEdges) {
+  Mesh m = unit_box();
+  std::swap(m.triangles[0][1], m.triangles[0][2]);
+  const std::optional<UnmatchedEdge> e = unmatched_edge(m);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->count, 2);
+  EXPECT_EQ(e->reverse, 0);
+  EXPECT_EQ(e->triangle, 0);
+}
+
+TEST(MeshClosure, TwoBoxesSharingAnEdgeAreClosedThoughNotManifold) {
+  Mesh m = unit_box();
+  const Mesh other = scenes::box_mesh(Box3{{1, 1, 0}, {2, 2, 1}});
+  const auto offset = static_cast<std::int32_t>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (TriangleIndices t : other.triangles) {
+    for (std::int32_t& v : t)
+      v += offset;
+    m.triangles.push_back(t);
+  }
+  EXPECT_FALSE(unmatched_edge(m).has_value());
+}
+
+TEST(MeshClosure, UnweldedCopyIsJudgedByPosition) {
+  const Mesh box = unit_box();
+  Mesh soup;  // every triangle with its own three vertices, as an STL file stores them
+  for (std::size_t t = 0; t < box.triangles.size(); ++t) {
+    const Triangle3 tri = box.triangle(t);
+    const auto base = static_cast<std::int32_t>(soup.vertices.size());
+    soup.vertices.insert(soup.vertices.end(), {tri.a, tri.b, tri.c});
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  EXPECT_FALSE(unmatched_edge(soup).has_value());
+  soup.triangles.pop_back();
+  EXPECT_TRUE(unmatched_edge(soup).has_value());
+}
+
+TEST(MeshClosure, DegenerateTriangleWithARepeatedCornerIsNeutral) {
+  Mesh m = unit_box();
+  m.triangles.push_back({0, 0, 1});
+  EXPECT_FALSE(unmatched_edge(m).has_value());
+}
+
+TEST(MeshClosure, DoubledShellIsClosed) {
+  Mesh m = unit_box();
+  const std::size_t n = m.triangles.size();
+  for (std::size_t t = 0; t < n; ++t)
+    m.triangles.push_back(m.triangles[t]);
+  EXPECT_FALSE(unmatched_edge(m).has_value());
+  m.triangles.pop_back();
+  const std::optional<UnmatchedEdge> e = unmatched_edge(m);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->count, 2);
+  EXPECT_EQ(e->reverse, 1);
+}
+
+}  // namespace
+}  // namespace contain
