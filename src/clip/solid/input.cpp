@@ -1,6 +1,7 @@
 // Stage 1 of the mesh boolean: the inputs as one soup, vertices welded by exact position (a
-// point is one point whichever input names it), each input checked closed: every directed edge
-// occurs as often as its reverse, so its winding number is defined off its surface.
+// point is one point whichever input names it), each input checked closed by the solids' rule
+// (`unmatched_edge`: every directed edge as often as its reverse, so that its winding number is
+// defined off its surface).
 
 #include <algorithm>
 #include <array>
@@ -15,6 +16,7 @@
 
 #include "clip/solid/engine.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/shapes/mesh_closure.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -28,42 +30,16 @@ std::string coordinates(Vec3 v) {
   return out.str();
 }
 
-// The first directed edge of input `which` (triangles [first, last) of the soup) that occurs
-// more often than its reverse, as an error; none when closed.
-Status check_closed(const Soup& soup, std::size_t first, std::size_t last, std::size_t which) {
-  // Each edge as (key of the pair, +1 for min -> max, -1 for max -> min), sorted: the balance of
-  // a pair is the sum over its run.
-  std::vector<std::pair<std::uint64_t, int>> uses;
-  uses.reserve(3 * (last - first));
-  for (std::size_t t = first; t < last; ++t) {
-    const TriangleIndices& v = soup.triangles[t];
-    for (int i = 0; i < 3; ++i) {
-      const std::int32_t a = v[static_cast<std::size_t>(i)],
-                         b = v[static_cast<std::size_t>((i + 1) % 3)];
-      if (a != b) uses.emplace_back(edge_key(a, b), a < b ? 1 : -1);
-    }
-  }
-  std::sort(uses.begin(), uses.end());
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    std::int64_t balance = 0;
-    for (; j < uses.size() && uses[j].first == uses[i].first; ++j)
-      balance += uses[j].second;
-    const std::uint64_t key = uses[i].first;
-    i = j;
-    if (balance == 0) continue;
-    const auto lo = static_cast<std::int32_t>(key >> 32U);
-    const auto hi = static_cast<std::int32_t>(key & 0xffffffffU);
-    const auto [a, b] = balance > 0 ? std::pair{lo, hi} : std::pair{hi, lo};
-    return Error{.kind = ErrorKind::invalid_value,
-                 .message = "input " + std::to_string(which) +
-                            " is not closed: the directed edge " +
-                            coordinates(soup.vertices[static_cast<std::size_t>(a)]) + " -> " +
-                            coordinates(soup.vertices[static_cast<std::size_t>(b)]) + " occurs " +
-                            std::to_string(balance > 0 ? balance : -balance) +
-                            " more time(s) than its reverse"};
-  }
-  return Ok{};
+// The error naming input `which`'s first unbalanced directed edge, if any.
+Status check_closed(const Mesh& mesh, std::size_t which) {
+  const std::optional<UnmatchedEdge> edge = unmatched_edge(mesh);
+  if (!edge) return Ok{};
+  return Error{.kind = ErrorKind::invalid_value,
+               .message = "input " + std::to_string(which) + " is not closed: the directed edge " +
+                          coordinates(edge->from) + " -> " + coordinates(edge->to) + " (triangle " +
+                          std::to_string(edge->triangle) + ") occurs " +
+                          std::to_string(edge->count) + " time(s), its reverse " +
+                          std::to_string(edge->reverse)};
 }
 
 }  // namespace
@@ -106,7 +82,6 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
       if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
       remap[i] = it->second;
     }
-    const std::size_t first = soup.triangles.size();
     for (const TriangleIndices& t : mesh.triangles) {
       for (const std::int32_t i : t) {
         if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
@@ -120,7 +95,7 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 remap[static_cast<std::size_t>(t[2])]});
       soup.input.push_back(static_cast<std::int32_t>(k));
     }
-    const Status closed = check_closed(soup, first, soup.triangles.size(), k);
+    const Status closed = check_closed(mesh, k);
     if (!closed) return closed.error();
   }
   for (const TriangleIndices& t : soup.triangles) {
