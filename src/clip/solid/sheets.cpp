@@ -80,6 +80,8 @@ int q_corner(const Use& u) {
 // The faces around one edge held by more than two, sorted by angle, and which pairing is used:
 // each q -> p face with the face 1 + 2 shift places after it.
 struct Fan {
+  std::uint64_t key =
+      0;  // the edge (fans are kept in key order: the same output on every platform)
   std::vector<Use> sorted;
   std::size_t shift = 0;
 };
@@ -152,8 +154,10 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     if (list.size() <= 2) continue;  // a single face is left to the check
     sort_around(list, static_cast<std::int32_t>(key >> 32U),
                 static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
-    grouping.fans.push_back({std::move(list), 0});
+    grouping.fans.push_back({key, std::move(list), 0});
   }
+  std::sort(grouping.fans.begin(), grouping.fans.end(),
+            [](const Fan& a, const Fan& b) { return a.key < b.key; });
   UnionFind<std::size_t> corners = grouping.corners(faces.size());
   for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
     corners = grouping.corners(faces.size());
