@@ -255,13 +255,13 @@ TEST(MeshBoolean, ASphereWithItselfAndItselfTurnedAQuarter) {
   for (Vec3& v : turned.vertices)
     v = {-v.y, v.x, v.z};
   for (const Op op : all_ops) {
-    const clip::MeshBooleanResult same = checked({a, a}, op, 40);
+    const clip::MeshBooleanResult same = checked({a, a}, op, samples);
     if (op == Op::union_ || op == Op::intersection) {
       EXPECT_EQ(exact_volume(same.mesh), exact_volume(a));
     } else {
       EXPECT_TRUE(same.mesh.triangles.empty());
     }
-    if (op != Op::xor_) (void)checked({a, turned}, op, 40);
+    if (op != Op::xor_) (void)checked({a, turned}, op, samples);
   }
   const std::vector<Mesh> in = {a, turned};
   const Result<clip::MeshBooleanResult> x = clip::mesh_boolean(in, {.op = Op::xor_});
