@@ -53,8 +53,8 @@ struct MeshBooleanResult {
 /// ray per connected patch group, then the jumps across faces); a face is kept where
 /// `op(filled)` differs on its two sides, oriented with the in-side behind; where the result
 /// touches itself the sheets get their own vertices; vertices rounded to the nearest doubles
-/// and the written mesh checked exactly; when the check fails, points are merged in grid cells
-/// of 2^2, 2^5, ... 2^20 ulps of the largest input coordinate until it passes (a crude snap
+/// and the written mesh checked exactly; when the check fails, points closer than 2^2, 2^5, ...
+/// 2^20 ulps of the largest input coordinate are merged until it passes (a crude snap
 /// rounding; rules solid-* in docs/robustness.md). Coplanar output faces are not merged: each
 /// face of the result is a piece of an input triangle.
 ///

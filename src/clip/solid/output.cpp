@@ -129,8 +129,8 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
 
 // The written point of each point of `faces`: at level < 0, the first point with the same
 // nearest doubles (the written mesh could not tell them apart); at level >= 0, the first point
-// (by number) in the same cell of a grid of side ulp(scale) 2^level, the cluster of a crude
-// snap rounding.
+// (by number) of its cluster: points whose nearest doubles are within ulp(scale) 2^level of each
+// other in every coordinate are joined, transitively (a crude snap rounding).
 Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
                                const PointStore& store, int level, double scale) {
   std::vector<std::int32_t> ids;
@@ -146,13 +146,23 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
   }
   const double h =
       std::ldexp(std::nextafter(scale, std::numeric_limits<double>::infinity()) - scale, level);
-  std::map<std::array<double, 3>, std::int32_t> cell;
-  for (const std::int32_t i : ids) {
-    const Vec3 p = store.rounded(i);
-    const auto [it, fresh] =
-        cell.try_emplace({std::floor(p.x / h), std::floor(p.y / h), std::floor(p.z / h)}, i);
-    rep[i] = it->second;
+  std::vector<std::size_t> by_x(ids.size());
+  for (std::size_t k = 0; k < by_x.size(); ++k)
+    by_x[k] = k;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return store.rounded(ids[a]).x < store.rounded(ids[b]).x;
+  });
+  UnionFind<std::size_t> near(ids.size());  // the smallest index (so the smallest id) leads
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Vec3 p = store.rounded(ids[by_x[k]]);
+    for (std::size_t m = k + 1; m < by_x.size(); ++m) {
+      const Vec3 q = store.rounded(ids[by_x[m]]);
+      if (q.x - p.x > h) break;
+      if (std::fabs(q.y - p.y) <= h && std::fabs(q.z - p.z) <= h) near.unite(by_x[k], by_x[m]);
+    }
   }
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    rep[ids[k]] = ids[near.find(k)];
   return rep;
 }
 
