@@ -1,0 +1,180 @@
+// Stage 6a of the mesh boolean: sheets kept apart where the result touches itself (rule
+// solid-sheets in docs/robustness.md).
+//
+// Around an edge p q held by more than one pair of faces (two cubes sharing only an edge, the
+// xor of overlapping boxes), the faces are sorted by angle about the axis q - p (exactly: the
+// sign of det[q - p, r1 - p, r2 - p] within a half-turn from the first face's half-plane). A
+// face running q -> p has the result on its side of increasing angle (its normal, the result
+// behind it, points the other way), a face running p -> q on its side of decreasing angle: each
+// q -> p face bounds one wedge of the result with the next face counter-clockwise, and these two
+// are joined across the edge. Then the corners of faces joined across an edge (the one pair of a
+// manifold edge, the pairs found at the others) are grouped; each group is one written vertex,
+// so sheets meeting along an edge or at a point get their own vertices there.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "clip/solid/engine.h"
+#include "contain/core/union_find.h"
+
+namespace contain::clip::solid {
+namespace {
+
+struct Use {
+  std::size_t face;
+  int corner;    // the face's corner at the edge's first point (p of p q, the smaller id)
+  bool forward;  // the face runs p -> q
+};
+
+// The corner of the face that is on neither end of the edge.
+std::int32_t third(const std::vector<std::array<std::int32_t, 3>>& faces, const Use& u) {
+  const auto& v = faces[u.face];
+  // corners: p at u.corner; q is the next (forward) or previous corner; the third is the other.
+  const int q = u.forward ? (u.corner + 1) % 3 : (u.corner + 2) % 3;
+  return v[static_cast<std::size_t>(3 - u.corner - q)];
+}
+
+// Sorts the uses of edge p q by angle about q - p.
+void sort_around(std::vector<Use>& uses, std::int32_t p, std::int32_t q,
+                 const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
+  const ExactPoint& pp = store.point(p);
+  const BigVec3 axis = direction(pp, store.point(q));
+  std::vector<BigVec3> spoke;  // d x (r - p): the direction of each half-plane about the axis
+  for (const Use& u : uses)
+    spoke.push_back(predicates::cross(axis, direction(pp, store.point(third(faces, u)))));
+  const BigVec3 ref = spoke[0];
+  std::vector<int> half(uses.size());
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    const Sign s = predicates::dot(predicates::cross(ref, spoke[i]), axis).sign();
+    half[i] = s == Sign::positive ? 0
+              : s == Sign::negative
+                  ? 1
+                  : (predicates::dot(ref, spoke[i]).sign() == Sign::positive ? 0 : 1);
+  }
+  std::vector<std::size_t> order(uses.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (half[a] != half[b]) return half[a] < half[b];
+    // Within a half-turn, b follows a when it lies counter-clockwise of a about the axis.
+    return predicates::dot(predicates::cross(spoke[a], spoke[b]), axis).sign() == Sign::positive;
+  });
+  std::vector<Use> sorted;
+  for (const std::size_t i : order)
+    sorted.push_back(uses[i]);
+  uses = std::move(sorted);
+}
+
+}  // namespace
+
+namespace {
+
+int q_corner(const Use& u) {
+  return u.forward ? (u.corner + 1) % 3 : (u.corner + 2) % 3;
+}
+
+// The faces around one edge held by more than two, sorted by angle, and which pairing is used:
+// each q -> p face with the face 1 + 2 shift places after it.
+struct Fan {
+  std::uint64_t key =
+      0;  // the edge (fans are kept in key order: the same output on every platform)
+  std::vector<Use> sorted;
+  std::size_t shift = 0;
+};
+
+struct Grouping {
+  std::vector<std::pair<Use, Use>> manifold;  // the two faces of an edge held by two
+  std::vector<Fan> fans;
+
+  [[nodiscard]] UnionFind<std::size_t> corners(std::size_t faces) const {
+    UnionFind<std::size_t> sets(3 * faces);
+    const auto join = [&](const Use& a, const Use& b) {
+      sets.unite(3 * a.face + static_cast<std::size_t>(a.corner),
+                 3 * b.face + static_cast<std::size_t>(b.corner));
+      sets.unite(3 * a.face + static_cast<std::size_t>(q_corner(a)),
+                 3 * b.face + static_cast<std::size_t>(q_corner(b)));
+    };
+    for (const auto& [a, b] : manifold)
+      join(a, b);
+    for (const Fan& fan : fans) {
+      const std::size_t n = fan.sorted.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!fan.sorted[i].forward) join(fan.sorted[i], fan.sorted[(i + 1 + 2 * fan.shift) % n]);
+      }
+    }
+    return sets;
+  }
+
+  // Fans whose passes end in the same vertex pair (the edge would be written twice) move on to
+  // their next pairing; false when there was none.
+  bool shift_pinched(UnionFind<std::size_t>& sets) {
+    bool any = false;
+    for (Fan& fan : fans) {
+      std::vector<std::pair<std::size_t, std::size_t>> ends;
+      for (const Use& u : fan.sorted) {
+        if (u.forward) continue;
+        ends.emplace_back(sets.find(3 * u.face + static_cast<std::size_t>(u.corner)),
+                          sets.find(3 * u.face + static_cast<std::size_t>(q_corner(u))));
+      }
+      std::sort(ends.begin(), ends.end());
+      if (std::adjacent_find(ends.begin(), ends.end()) != ends.end()) {
+        fan.shift = (fan.shift + 1) % std::max<std::size_t>(fan.sorted.size() / 2, 1);
+        any = true;
+      }
+    }
+    return any;
+  }
+};
+
+}  // namespace
+
+// A pairing of the faces by angle joins the sheets that bound one wedge of the result; where a
+// sheet touches itself along an edge and is connected around both its ends (a vertex pinched
+// by the edge: boxes stacked in a staircase around a corner), that pairing leaves the two
+// passes with the same vertices at both ends, and the edge is paired the other way (each q -> p
+// face with a later face running p -> q). Both pairings hold the same triangles: the check of
+// the written mesh judges the result.
+Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                       const PointStore& store) {
+  std::unordered_map<std::uint64_t, std::vector<Use>> uses;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = faces[f][static_cast<std::size_t>(k)],
+                         b = faces[f][static_cast<std::size_t>((k + 1) % 3)];
+      uses[edge_key(a, b)].push_back({f, a < b ? k : (k + 1) % 3, a < b});
+    }
+  }
+  Grouping grouping;
+  for (auto& [key, list] : uses) {
+    if (list.size() == 2) grouping.manifold.emplace_back(list[0], list[1]);
+    if (list.size() <= 2) continue;  // a single face is left to the check
+    sort_around(list, static_cast<std::int32_t>(key >> 32U),
+                static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
+    grouping.fans.push_back({key, std::move(list), 0});
+  }
+  std::sort(grouping.fans.begin(), grouping.fans.end(),
+            [](const Fan& a, const Fan& b) { return a.key < b.key; });
+  UnionFind<std::size_t> corners = grouping.corners(faces.size());
+  for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
+    corners = grouping.corners(faces.size());
+  }
+  Sheets out;
+  std::unordered_map<std::size_t, std::int32_t> vertex;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::array<std::int32_t, 3> t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto [it, fresh] =
+          vertex.try_emplace(corners.find(3 * f + k), static_cast<std::int32_t>(out.points.size()));
+      if (fresh) out.points.push_back(faces[f][k]);
+      t[k] = it->second;
+    }
+    out.faces.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace contain::clip::solid
