@@ -45,7 +45,7 @@ collide::ConvexShape to_convex_shape(const py::handle& object, const char* name)
 collide::ConvexContact convex_intersect(const py::object& a, const py::object& b) {
   const collide::ConvexShape sa = to_convex_shape(a, "a"), sb = to_convex_shape(b, "b");
   py::gil_scoped_release release;
-  return collide::convex_intersect(sa, sb);
+  return collide::convex_convex(sa, sb);
 }
 
 std::string text(double x) {
@@ -218,7 +218,7 @@ decided exactly).
 
   m.def("convex_intersect", &convex_intersect, "a"_a, "b"_a, R"doc(
 Do two closed convex shapes share a point? GJK on their support functions (Gilbert, Johnson and
-Keerthi 1988), C++ collide::convex_intersect. a, b: a ConvexShape, or a convex mesh (anything
+Keerthi 1988), C++ collide::convex_convex. a, b: a ConvexShape, or a convex mesh (anything
 mesh-like) or ConvexPolyhedron made from one. Two polytopes (boxes, convex meshes): exact, a
 separating direction certified by exact side tests, touching and overlap decided by exact
 triangle tests. A ball involved: GJK's floating-point answer (`exact` False; touching within

@@ -92,7 +92,7 @@ Vec3 ConvexShape::support(Vec3 direction) const {
   return solid_.support(direction);
 }
 
-ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b) {
+ConvexContact convex_convex(const ConvexShape& a, const ConvexShape& b) {
   const bool polytopes = a.is_polytope() && b.is_polytope();
   const bound::GjkResult r = gjk(a, b);
   const double distance = r.origin_inside ? 0.0 : length(r.v);

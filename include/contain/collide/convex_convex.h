@@ -16,7 +16,7 @@ namespace contain::collide {
 /// a sphere, an axis-aligned box, or a convex polyhedron built from a closed convex mesh
 /// (ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: a ConvexPolyhedron
 /// (ConvexPolyhedron::from_box for a box) holds their vertices, faces and support function and
-/// locates points exactly for `convex_intersect`'s exact stage.
+/// locates points exactly for `convex_convex`'s exact stage.
 class ConvexShape {
  public:
   /// A closed ball. Precondition: radius >= 0, finite values.
@@ -44,7 +44,7 @@ class ConvexShape {
   ConvexPolyhedron solid_;  // polytopes
 };
 
-/// What `convex_intersect` found.
+/// What `convex_convex` found.
 struct ConvexContact {
   /// The closed shapes share a point.
   bool intersect = false;
@@ -71,6 +71,6 @@ struct ConvexContact {
 ///   intersecting. `exact` is false.
 /// Complexity: GJK O(iterations (V_a + V_b)), at most 64 iterations; the exact stage
 /// O(F_a F_b + V_a F_b + V_b F_a), taken for touching and intersecting polytope pairs.
-[[nodiscard]] ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b);
+[[nodiscard]] ConvexContact convex_convex(const ConvexShape& a, const ConvexShape& b);
 
 }  // namespace contain::collide
