@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// Exact booleans of solids given as triangle meshes (union, intersection, difference, xor of
+/// two or of many), and the repair of one solid (its self-intersections and overlaps resolved):
+/// issue 25, ../shared/spec/cli.md "Solids: booleans of meshes".
+
+#include <cstddef>
+#include <span>
+
+#include "contain/clip/polygon_boolean.h"
+#include "contain/core/result.h"
+#include "contain/shapes/mesh.h"
+
+namespace contain::clip {
+
+/// What is computed.
+struct MeshBooleanOptions {
+  Op op = Op::union_;
+};
+
+/// The written result and what it took.
+struct MeshBooleanResult {
+  /// The regularised result (no dangling faces, no zero-volume parts) on doubles: closed (each
+  /// directed edge matched by exactly one opposite directed edge), outward oriented, no
+  /// zero-area triangle, no two triangles meeting other than at shared vertices or a shared
+  /// edge, all of it true of the written doubles exactly. Where the exact result touches itself
+  /// along an edge or at a point, each sheet has its own vertices there (same positions).
+  /// An empty result is a mesh with no triangles.
+  Mesh mesh;
+  std::size_t shells = 0;  ///< connected sheets of `mesh` (by shared vertex indices)
+  double volume = 0.0;     ///< volume of the written mesh (sum of signed tetrahedra)
+  std::size_t moved = 0;   ///< vertices moved off their nearest double by the rounding repair
+};
+
+/// The solid `inputs[0] op inputs[1] op ...`: `union_` and `intersection` of all inputs,
+/// `difference` = inputs[0] minus the union of the rest, `xor_` = the points in an odd number
+/// of inputs. One input with `Op::union_`: that solid repaired. No input: the empty solid.
+///
+/// - `inputs`: closed meshes (each directed edge occurs as often as its reverse, so that the
+///   winding number is defined off the surface; non-manifold edges are fine). Each is the
+///   solid where its winding number is positive: self-intersecting meshes, nested shells and
+///   several shells per mesh are accepted, and a shell turned inside out subtracts. Zero-area
+///   triangles are allowed (they bound nothing). An empty mesh is the empty solid.
+///
+/// Method (engine in src/clip/solid/, one file per stage): candidate triangle pairs from a
+/// BVH over all triangles; each pair intersected exactly (the segment's ends are implicit
+/// points: an edge of one triangle through the other's plane, or three planes), coplanar pairs
+/// overlaid in their common plane; every input triangle refined by a constrained triangulation
+/// of its intersection segments with exact predicates on the implicit points; refined faces
+/// grouped by position and labelled with every input's winding number on both sides (one exact
+/// ray per connected patch group, then the jumps across faces); a face is kept where
+/// `op(filled)` differs on its two sides, oriented with the in-side behind; vertices rounded to
+/// the nearest doubles and the written mesh checked exactly (rules solid-* in
+/// docs/robustness.md).
+///
+/// Errors: `ErrorKind::invalid_value` for an input that is not closed (the message names the
+/// input index and one unmatched directed edge by its two vertex coordinates) or whose
+/// coordinates are not finite; `ErrorKind::degenerate` when rounding the exact result to
+/// doubles made it invalid and the repair could not restore validity (never an invalid mesh).
+[[nodiscard]] Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
+                                                     const MeshBooleanOptions& options = {});
+
+}  // namespace contain::clip
