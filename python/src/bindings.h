@@ -23,5 +23,6 @@ void bind_winding(py::module_& m);       // point_in_triangle, winding_number, W
 void bind_tile(py::module_& m);          // BoxClipper, tile
 void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
 void bind_distance(py::module_& m);      // MeshDistance, RegionDistance, MeshPairDistance
+void bind_mesh_boolean(py::module_& m);  // mesh_boolean, repair_solid, MeshBooleanResult
 
 }  // namespace contain::python
