@@ -165,7 +165,8 @@ struct Evaluator {
           return csg_leaf_mesh(bounds, bounds);  // all of space, inside the box
         }
         if (Status s = gather(node, path, inputs); !s) return s.error();
-        return boolean(path, inputs, node.op() == CsgOp::unite ? Op::union_ : Op::intersection);
+        return boolean(path + op_word(node.op()), inputs,
+                       node.op() == CsgOp::unite ? Op::union_ : Op::intersection);
       }
       case CsgOp::subtract: {
         const Csg& a = node.operands()[0];
@@ -180,7 +181,7 @@ struct Evaluator {
           if (!second) return second;
           inputs.push_back(std::move(*second));
         }
-        return boolean(path, inputs, Op::difference);
+        return boolean(path + op_word(node.op()), inputs, Op::difference);
       }
       case CsgOp::complement: {
         auto box = csg_leaf_mesh(bounds, bounds);
@@ -188,7 +189,7 @@ struct Evaluator {
         if (!operand) return operand;
         inputs.push_back(std::move(*box));
         inputs.push_back(std::move(*operand));
-        return boolean(path, inputs, Op::difference);
+        return boolean(path + op_word(node.op()), inputs, Op::difference);
       }
     }
     return Mesh{};
