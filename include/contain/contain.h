@@ -18,6 +18,7 @@
 #include "contain/clip/cohen_sutherland.h"
 #include "contain/clip/cyrus_beck.h"
 #include "contain/clip/liang_barsky.h"
+#include "contain/clip/mesh_boolean.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/clip/polygon_boolean.h"
 #include "contain/clip/polyline_clip.h"

@@ -1,0 +1,24 @@
+// The mesh boolean engine, stage by stage: soup, pair intersections, refinement, labels, output
+// (engine.h names the file of each stage).
+
+#include <span>
+#include <vector>
+
+#include "clip/solid/engine.h"
+
+namespace contain::clip {
+
+Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
+                                       const MeshBooleanOptions& options) {
+  Result<solid::Soup> soup = solid::make_soup(inputs);
+  if (!soup) return soup.error();
+  solid::PointStore store;
+  for (const Vec3 v : soup->vertices)
+    (void)store.add(v);
+  const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
+  const solid::Refinement refinement = solid::refine(*soup, work, store);
+  const std::vector<solid::FaceLabel> labels = solid::label_faces(*soup, refinement, store);
+  return solid::write_result(*soup, refinement, work, labels, store, options.op);
+}
+
+}  // namespace contain::clip

@@ -1,0 +1,139 @@
+#pragma once
+// The mesh boolean engine behind `clip::mesh_boolean`, stage by stage (one file each):
+//   input.cpp      the inputs as one welded triangle soup, closedness checked
+//   intersect.cpp  candidate pairs (BVH) and their exact intersections: constraints per triangle
+//   refine.cpp     each triangle split by its constraints (triangulate.cpp: the constrained
+//                  triangulation), points on shared edges given to every triangle on the edge
+//   label.cpp      the winding numbers of every input on both sides of each refined face
+//   output.cpp     the faces on the result's boundary, sheets kept apart (sheets.cpp), rounded,
+//                  checked exactly (validate.cpp)
+// Private to clip.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "clip/solid/exact_point.h"
+#include "contain/bvh/bvh.h"
+#include "contain/clip/mesh_boolean.h"
+#include "contain/core/result.h"
+#include "contain/shapes/mesh.h"
+#include "contain/values/box.h"
+
+namespace contain::clip::solid {
+
+/// Every input's triangles in one soup, vertices welded by exact position across inputs.
+class Soup {
+ public:
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  std::vector<std::int32_t> input;  ///< the input of each triangle
+  /// The exact normal (b - a) x (c - a) of triangle t, computed on first use (most triangles
+  /// never need it). Not thread-safe: the engine runs on one thread.
+  [[nodiscard]] const BigVec3& normal(std::size_t t) const;
+  std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
+  std::vector<Box3> boxes;       ///< of each triangle (empty for a degenerate one)
+  bvh::Bvh tree;                 ///< over `boxes`: the pairs and the rays of the labels
+  std::size_t inputs = 0;
+
+ private:
+  mutable std::vector<std::optional<BigVec3>> normals_;
+};
+
+/// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
+class PointStore {
+ public:
+  /// The point's number, new or that of an equal point already stored.
+  std::int32_t add(const ExactPoint& p);
+  /// The same for a point of doubles (its own nearest doubles: no rounding to compute).
+  std::int32_t add(Vec3 v);
+  [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
+    return points_[static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] Vec3 rounded(std::int32_t i) const { return rounded_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] std::size_t size() const { return points_.size(); }
+  /// The first stored point with the same nearest doubles as point i (i itself when none).
+  [[nodiscard]] std::int32_t representative(std::int32_t i) const;
+
+ private:
+  std::int32_t add(const ExactPoint& p, Vec3 r);
+
+  std::vector<ExactPoint> points_;
+  std::vector<Vec3> rounded_;
+  std::map<std::array<double, 3>, std::vector<std::int32_t>> by_rounded_;
+};
+
+/// The key of the undirected input edge between welded vertices a and b.
+[[nodiscard]] inline std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
+  const auto lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const auto hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (std::uint64_t{lo} << 32U) | hi;
+}
+inline constexpr std::uint64_t no_edge = ~std::uint64_t{0};
+
+/// A segment (or a point, a == b) that a triangle must have as edges of its refinement.
+struct Constraint {
+  std::int32_t a = 0, b = 0;
+  std::uint64_t edge = no_edge;  ///< the input edge it lies along (a coplanar partner's edge)
+};
+
+/// What the pair stage found for one triangle.
+struct TriangleWork {
+  std::vector<Constraint> constraints;
+  std::vector<std::int32_t> coplanar;  ///< triangles in its plane whose boxes meet it
+};
+
+/// One triangle of the refined surface, oriented as its input triangle.
+struct RefinedFace {
+  std::array<std::int32_t, 3> v{};
+  std::int32_t triangle = 0;
+};
+
+/// The refined surface: faces, and the edges that lie on intersection curves (sorted pairs).
+struct Refinement {
+  std::vector<RefinedFace> faces;
+  std::vector<std::uint64_t> curve_edges;  ///< edge_key of each piece of a constraint, sorted
+};
+
+/// Winding numbers of every input behind and in front of a face (front: where its normal
+/// points).
+struct FaceLabel {
+  std::vector<int> front, back;
+};
+
+/// The axis whose normal component is largest in magnitude (and non-zero): the one dropped to
+/// work in a triangle's plane.
+[[nodiscard]] int dropped_axis(const BigVec3& n);
+
+[[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
+[[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store);
+[[nodiscard]] Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work,
+                                PointStore& store);
+/// Triangles of the constrained triangulation of triangle `corners` (oriented positively in
+/// the projection dropping `axis` after multiplying orientations by `sense`) with `points`
+/// (inside it or on its edges) and `pieces` (non-crossing, no point in their interiors).
+[[nodiscard]] std::vector<std::array<std::int32_t, 3>> triangulate(
+    const std::array<std::int32_t, 3>& corners, std::span<const std::int32_t> points,
+    std::span<const std::array<std::int32_t, 2>> pieces, const PointStore& store, int axis,
+    Sign sense);
+[[nodiscard]] std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinement,
+                                                 const PointStore& store);
+/// Faces with their corners renumbered so that sheets meeting along an edge or at a point have
+/// their own vertices there: `points[i]` is the exact point of new vertex i.
+struct Sheets {
+  std::vector<std::array<std::int32_t, 3>> faces;
+  std::vector<std::int32_t> points;
+};
+[[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                                     const PointStore& store);
+[[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
+                                                     const std::vector<TriangleWork>& work,
+                                                     const std::vector<FaceLabel>& labels,
+                                                     const PointStore& store, Op op);
+
+}  // namespace contain::clip::solid

@@ -1,0 +1,74 @@
+#pragma once
+// Exact points of the mesh boolean: homogeneous coordinates (X, Y, Z, W), W > 0, on the one big
+// number, so that every point the arrangement makes (an input vertex, an edge through a plane,
+// two segments crossing in a triangle's plane) is held without rounding and every decision on
+// it is the sign of a polynomial (rule solid-exact-points in docs/robustness.md). Private to
+// clip.
+
+#include <array>
+#include <cstdint>
+
+#include "contain/predicates/big_float.h"
+#include "contain/predicates/sign.h"
+#include "contain/values/vec.h"
+
+namespace contain::clip::solid {
+
+using predicates::BigFloat;
+using predicates::BigVec3;
+
+/// (x / w, y / w, z / w) with w > 0.
+struct ExactPoint {
+  std::array<BigFloat, 3> x;
+  BigFloat w;
+};
+
+/// The double point v.
+[[nodiscard]] ExactPoint exact_point(Vec3 v);
+
+/// The exact normal (b - a) x (c - a) of a triangle of doubles.
+[[nodiscard]] BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c);
+
+/// Where the segment p q meets the plane through a with normal n. Precondition: p and q lie
+/// strictly on opposite sides of the plane.
+[[nodiscard]] ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, const BigVec3& n);
+
+/// Where the lines p1 p2 and q1 q2, all four in the plane through a with normal n, cross.
+/// `axis` is dropped to project (n[axis] != 0). Precondition: the projected lines cross in one
+/// point.
+[[nodiscard]] ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
+                                   const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis);
+
+/// Component i (0, 1, 2) of v.
+[[nodiscard]] const BigFloat& component(const BigVec3& v, int i);
+
+/// Exact equality of the points.
+[[nodiscard]] bool same_point(const ExactPoint& a, const ExactPoint& b);
+
+/// Sign of coordinate i of a - b.
+[[nodiscard]] Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i);
+
+/// Sign of the 2D orientation of a, b, c projected by dropping `axis` (the remaining axes in
+/// cyclic order axis + 1, axis + 2, so a triangle whose normal has n[axis] > 0 turns positive).
+[[nodiscard]] Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c,
+                                    int axis);
+
+/// Sign of n . (p - a): the side of the plane through a with normal n that p lies on.
+[[nodiscard]] Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n);
+
+/// (a + b) / 2 and (a + b + c) / 3, exactly.
+[[nodiscard]] ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b);
+[[nodiscard]] ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c);
+
+/// Each coordinate rounded to the nearest double (ties to even). Precondition: the coordinates
+/// are within the double range (they lie in the inputs' hull).
+[[nodiscard]] Vec3 nearest_double(const ExactPoint& p);
+
+}  // namespace contain::clip::solid
+
+namespace contain::clip::solid {
+
+/// (b - a) times the positive factor a.w b.w: a vector with the direction of b - a, exact.
+[[nodiscard]] BigVec3 direction(const ExactPoint& a, const ExactPoint& b);
+
+}  // namespace contain::clip::solid

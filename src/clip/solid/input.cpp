@@ -1,0 +1,145 @@
+// Stage 1 of the mesh boolean: the inputs as one soup, vertices welded by exact position (a
+// point is one point whichever input names it), each input checked closed: every directed edge
+// occurs as often as its reverse, so its winding number is defined off its surface.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "clip/solid/engine.h"
+#include "contain/predicates/orient2d.h"
+
+namespace contain::clip::solid {
+namespace {
+
+using predicates::orient2d;
+
+std::string coordinates(Vec3 v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+  return out.str();
+}
+
+// The first directed edge of input `which` (triangles [first, last) of the soup) that occurs
+// more often than its reverse, as an error; none when closed.
+Status check_closed(const Soup& soup, std::size_t first, std::size_t last, std::size_t which) {
+  std::map<std::pair<std::int32_t, std::int32_t>, std::int64_t> count;
+  for (std::size_t t = first; t < last; ++t) {
+    const TriangleIndices& v = soup.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t a = v[static_cast<std::size_t>(i)],
+                         b = v[static_cast<std::size_t>((i + 1) % 3)];
+      if (a == b) continue;
+      // +1 for a -> b, -1 for b -> a, kept on the pair (min, max).
+      count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+    }
+  }
+  for (const auto& [edge, balance] : count) {
+    if (balance == 0) continue;
+    const auto [a, b] = balance > 0 ? edge : std::pair{edge.second, edge.first};
+    return Error{.kind = ErrorKind::invalid_value,
+                 .message = "input " + std::to_string(which) +
+                            " is not closed: the directed edge " +
+                            coordinates(soup.vertices[static_cast<std::size_t>(a)]) + " -> " +
+                            coordinates(soup.vertices[static_cast<std::size_t>(b)]) + " occurs " +
+                            std::to_string(balance > 0 ? balance : -balance) +
+                            " more time(s) than its reverse"};
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+int dropped_axis(const BigVec3& n) {
+  int best = -1;
+  double size = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    std::int64_t e = 0;
+    const BigFloat& c = component(n, i);
+    if (c.is_zero()) continue;
+    const double m = std::fabs(c.frexp(e));
+    // Compare |c| by exponent first, then mantissa.
+    const double key = static_cast<double>(e) + m;
+    if (best < 0 || key > size) {
+      best = i;
+      size = key;
+    }
+  }
+  return best < 0 ? 2 : best;
+}
+
+Result<Soup> make_soup(std::span<const Mesh> inputs) {
+  Soup soup;
+  soup.inputs = inputs.size();
+  std::map<std::array<double, 3>, std::int32_t> welded;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const Mesh& mesh = inputs[k];
+    std::vector<std::int32_t> remap(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Vec3 v = mesh.vertices[i];
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        return Error{.kind = ErrorKind::invalid_value,
+                     .message = "input " + std::to_string(k) + ": vertex " + std::to_string(i) +
+                                " is not finite"};
+      }
+      // + 0.0 turns -0 into +0: one key per position.
+      const auto [it, fresh] = welded.try_emplace({v.x + 0.0, v.y + 0.0, v.z + 0.0},
+                                                  static_cast<std::int32_t>(soup.vertices.size()));
+      if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
+      remap[i] = it->second;
+    }
+    const std::size_t first = soup.triangles.size();
+    for (const TriangleIndices& t : mesh.triangles) {
+      for (const std::int32_t i : t) {
+        if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
+          return Error{.kind = ErrorKind::invalid_value,
+                       .message = "input " + std::to_string(k) + ": vertex index " +
+                                  std::to_string(i) + " out of range"};
+        }
+      }
+      soup.triangles.push_back({remap[static_cast<std::size_t>(t[0])],
+                                remap[static_cast<std::size_t>(t[1])],
+                                remap[static_cast<std::size_t>(t[2])]});
+      soup.input.push_back(static_cast<std::int32_t>(k));
+    }
+    const Status closed = check_closed(soup, first, soup.triangles.size(), k);
+    if (!closed) return closed.error();
+  }
+  for (const TriangleIndices& t : soup.triangles) {
+    const Vec3 a = soup.vertices[static_cast<std::size_t>(t[0])];
+    const Vec3 b = soup.vertices[static_cast<std::size_t>(t[1])];
+    const Vec3 c = soup.vertices[static_cast<std::size_t>(t[2])];
+    // Zero area exactly when the three projections onto the coordinate planes have zero area.
+    soup.degenerate.push_back(orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+                              orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+                              orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero);
+    Box3 box;  // empty for a degenerate triangle: it meets nothing
+    if (!soup.degenerate.back()) {
+      for (const std::int32_t i : t)
+        box.expand(soup.vertices[static_cast<std::size_t>(i)]);
+    }
+    soup.boxes.push_back(box);
+  }
+  soup.tree = bvh::Bvh(soup.boxes);
+  return soup;
+}
+
+const BigVec3& Soup::normal(std::size_t t) const {
+  if (normals_.size() != triangles.size()) normals_.resize(triangles.size());
+  std::optional<BigVec3>& n = normals_[t];
+  if (!n) {
+    const TriangleIndices& v = triangles[t];
+    n = exact_normal(vertices[static_cast<std::size_t>(v[0])],
+                     vertices[static_cast<std::size_t>(v[1])],
+                     vertices[static_cast<std::size_t>(v[2])]);
+  }
+  return *n;
+}
+
+}  // namespace contain::clip::solid

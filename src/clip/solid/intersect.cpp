@@ -1,0 +1,225 @@
+// Stage 2 of the mesh boolean: candidate pairs of triangles from one hierarchy over the soup,
+// and the exact intersection of each pair as constraints of both triangles (rule
+// solid-pair-intersection in docs/robustness.md).
+//
+// Two triangles T and U in different planes meet in a segment of the line where their planes
+// meet (or nowhere): T's part of that line runs between T's vertices on U's plane and the points
+// where T's edges cross it (orient3d signs on the input doubles decide which, exactly), U's part
+// likewise, and the intersection is the overlap of the two parts, ordered along the line by a
+// coordinate in which the line's direction nT x nU is non-zero. Its ends are input vertices or
+// edge-plane points (`line_plane`). Triangles in one plane are overlaid in that plane: each
+// gets the other's edges as constraints (the refinement keeps their pieces inside it) and the
+// other as a coplanar partner (which of them writes the common part is decided at output).
+// An intersection made only of corners the two share (neighbours in a mesh) is no constraint.
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "clip/solid/engine.h"
+#include "contain/bvh/bvh.h"
+#include "contain/predicates/orient3d.h"
+#include "contain/values/box.h"
+
+namespace contain::clip::solid {
+namespace {
+
+using predicates::orient3d;
+
+Vec3 corner(const Soup& soup, std::int32_t t, int i) {
+  return soup.vertices[static_cast<std::size_t>(
+      soup.triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)])];
+}
+
+std::int32_t vertex_id(const Soup& soup, std::int32_t t, int i) {
+  return soup.triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)];
+}
+
+// Signs of t's corners against u's plane; a corner u shares is on it without a test (the
+// filter of orient3d cannot decide an exact zero, the expansion stage would).
+std::array<Sign, 3> sides(const Soup& soup, std::int32_t t, std::int32_t u) {
+  const Vec3 a = corner(soup, u, 0), b = corner(soup, u, 1), c = corner(soup, u, 2);
+  const TriangleIndices& vu = soup.triangles[static_cast<std::size_t>(u)];
+  std::array<Sign, 3> s{};
+  for (int i = 0; i < 3; ++i) {
+    const std::int32_t id = vertex_id(soup, t, i);
+    s[static_cast<std::size_t>(i)] = (id == vu[0] || id == vu[1] || id == vu[2])
+                                         ? Sign::zero
+                                         : orient3d(a, b, c, corner(soup, t, i));
+  }
+  return s;
+}
+
+// The corners off the plane all on one side, none on it but `shared` of them: the triangle
+// meets the plane at most in the corners the two triangles share (no corner shared: not at all).
+bool one_side(const std::array<Sign, 3>& s, int shared) {
+  int zeros = 0, positive = 0, negative = 0;
+  for (const Sign x : s) {
+    zeros += x == Sign::zero ? 1 : 0;
+    positive += x == Sign::positive ? 1 : 0;
+    negative += x == Sign::negative ? 1 : 0;
+  }
+  return zeros <= shared && zeros < 3 && (positive == 0 || negative == 0);
+}
+
+// The ends (one or two point ids) of t's part of u's plane, given t's signs against it (not all
+// zero and not all on one side).
+std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32_t u,
+                                    const std::array<Sign, 3>& s, PointStore& store) {
+  std::vector<std::int32_t> ends;
+  for (int i = 0; i < 3; ++i) {
+    if (s[static_cast<std::size_t>(i)] == Sign::zero) ends.push_back(vertex_id(soup, t, i));
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
+      ends.push_back(
+          store.add(line_plane(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
+                               soup.normal(static_cast<std::size_t>(u)))));
+    }
+  }
+  return ends;
+}
+
+// The ends ordered by coordinate k (ascending); one end is used twice.
+std::array<std::int32_t, 2> ordered(const std::vector<std::int32_t>& ends, const PointStore& store,
+                                    int k) {
+  if (ends.size() == 1) return {ends[0], ends[0]};
+  if (compare_coordinate(store.point(ends[0]), store.point(ends[1]), k) == Sign::positive) {
+    return {ends[1], ends[0]};
+  }
+  return {ends[0], ends[1]};
+}
+
+bool shares(const Soup& soup, std::int32_t t, std::int32_t id) {
+  const TriangleIndices& v = soup.triangles[static_cast<std::size_t>(t)];
+  return v[0] == id || v[1] == id || v[2] == id;
+}
+
+int shared_corners(const Soup& soup, std::int32_t t, std::int32_t u) {
+  int n = 0;
+  for (int i = 0; i < 3; ++i)
+    n += shares(soup, u, vertex_id(soup, t, i)) ? 1 : 0;
+  return n;
+}
+
+// Two coplanar triangles sharing an edge overlap only when folded onto each other: their third
+// corners on the same side of the edge (exactly: the orientation of the four points in the
+// plane, by the sign of the normals' dot product, both normals non-zero).
+bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
+  const BigVec3& nt = soup.normal(static_cast<std::size_t>(t));
+  const BigVec3& nu = soup.normal(static_cast<std::size_t>(u));
+  // Sharing edge p q: t = p q x, u = q p y when the two are oriented alike (a normal mesh):
+  // normals agree (dot > 0) exactly when x and y lie on opposite sides. Oriented oppositely
+  // (t = p q x, u = p q y): normals agree when x, y lie on the same side. Decide by the edge's
+  // direction in both.
+  int direction = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::int32_t p = vertex_id(soup, t, i), q = vertex_id(soup, t, (i + 1) % 3);
+    for (int j = 0; j < 3; ++j) {
+      const std::int32_t r = vertex_id(soup, u, j), s = vertex_id(soup, u, (j + 1) % 3);
+      if (p == r && q == s) direction = 1;
+      if (p == s && q == r) direction = -1;
+    }
+  }
+  const Sign agree = predicates::dot(nt, nu).sign();
+  return direction == 1 ? agree == Sign::positive : agree == Sign::negative;
+}
+
+void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u,
+                  std::vector<TriangleWork>& work) {
+  for (const auto& [to, from] : {std::pair{t, u}, std::pair{u, t}}) {
+    TriangleWork& w = work[static_cast<std::size_t>(to)];
+    w.coplanar.push_back(from);
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t a = vertex_id(soup, from, i), b = vertex_id(soup, from, (i + 1) % 3);
+      w.constraints.push_back({a, b, edge_key(a, b)});
+    }
+  }
+}
+
+void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore& store,
+                    std::vector<TriangleWork>& work) {
+  if (soup.degenerate[static_cast<std::size_t>(t)] ||
+      soup.degenerate[static_cast<std::size_t>(u)]) {
+    return;
+  }
+  const int shared = shared_corners(soup, t, u);
+  if (shared == 2) {
+    // Neighbours across an edge meet beyond it only when folded into one plane.
+    const std::array<Sign, 3> su = sides(soup, u, t);
+    if (su[0] == Sign::zero && su[1] == Sign::zero && su[2] == Sign::zero && folded(soup, t, u)) {
+      add_coplanar(soup, t, u, work);
+    }
+    return;
+  }
+  const std::array<Sign, 3> su = sides(soup, u, t);
+  if (one_side(su, shared)) return;
+  if (su[0] == Sign::zero && su[1] == Sign::zero && su[2] == Sign::zero) {
+    add_coplanar(soup, t, u, work);
+    return;
+  }
+  const std::array<Sign, 3> st = sides(soup, t, u);
+  if (one_side(st, shared)) return;
+  const BigVec3 line = predicates::cross(soup.normal(static_cast<std::size_t>(t)),
+                                         soup.normal(static_cast<std::size_t>(u)));
+  int k = 0;
+  while (component(line, k).is_zero())
+    ++k;
+  const std::array<std::int32_t, 2> a = ordered(plane_cut(soup, t, u, st, store), store, k);
+  const std::array<std::int32_t, 2> b = ordered(plane_cut(soup, u, t, su, store), store, k);
+  const std::int32_t lo =
+      compare_coordinate(store.point(a[0]), store.point(b[0]), k) == Sign::negative ? b[0] : a[0];
+  const std::int32_t hi =
+      compare_coordinate(store.point(a[1]), store.point(b[1]), k) == Sign::positive ? b[1] : a[1];
+  if (compare_coordinate(store.point(lo), store.point(hi), k) == Sign::positive) return;
+  if (shares(soup, t, lo) && shares(soup, u, lo) && shares(soup, t, hi) && shares(soup, u, hi)) {
+    return;
+  }
+  work[static_cast<std::size_t>(t)].constraints.push_back({lo, hi});
+  work[static_cast<std::size_t>(u)].constraints.push_back({lo, hi});
+}
+
+}  // namespace
+
+std::int32_t PointStore::add(const ExactPoint& p) {
+  return add(p, nearest_double(p));
+}
+
+std::int32_t PointStore::add(Vec3 v) {
+  return add(exact_point(v), v);
+}
+
+std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
+  std::vector<std::int32_t>& bucket = by_rounded_[{r.x, r.y, r.z}];
+  for (const std::int32_t i : bucket) {
+    if (same_point(points_[static_cast<std::size_t>(i)], p)) return i;
+  }
+  const auto id = static_cast<std::int32_t>(points_.size());
+  points_.push_back(p);
+  rounded_.push_back(r);
+  bucket.push_back(id);
+  return id;
+}
+
+std::int32_t PointStore::representative(std::int32_t i) const {
+  const Vec3 r = rounded(i);
+  return by_rounded_.at({r.x, r.y, r.z}).front();
+}
+
+std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
+  const std::vector<Box3>& boxes = soup.boxes;
+  std::vector<TriangleWork> work(soup.triangles.size());
+  (void)bvh::traverse_self(
+      soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
+      [&](std::int32_t t, std::int32_t u) {
+        if (boxes[static_cast<std::size_t>(t)].overlaps(boxes[static_cast<std::size_t>(u)])) {
+          intersect_pair(soup, std::min(t, u), std::max(t, u), store, work);
+        }
+        return bvh::Visit::proceed;
+      });
+  return work;
+}
+
+}  // namespace contain::clip::solid

@@ -1,0 +1,155 @@
+// Stage 5 and 6 of the mesh boolean: the refined faces on the result's boundary, oriented with
+// the result behind them, one face for each set of coinciding faces, the exact points rounded to
+// their nearest doubles, and the written mesh checked exactly (rule solid-output in
+// docs/robustness.md).
+//
+// A face is on the boundary when the operation's answer differs on its two sides. Faces of
+// coplanar triangles that overlap lie in the overlap region of each of them, and each of them
+// has the same labels there (the rays count every coinciding face): the face of the triangle
+// with the lowest number among those covering it is written, the others are not.
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "clip/solid/engine.h"
+#include "clip/solid/validate.h"
+#include "contain/core/union_find.h"
+
+namespace contain::clip::solid {
+namespace {
+
+bool filled(Op op, const std::vector<int>& w) {
+  if (w.empty()) return false;
+  std::size_t count = 0;
+  for (const int x : w)
+    count += x > 0 ? 1 : 0;
+  switch (op) {
+    case Op::union_:
+      return count > 0;
+    case Op::intersection:
+      return count == w.size();
+    case Op::difference:
+      return w[0] > 0 && count == 1;
+    case Op::xor_:
+      return count % 2 == 1;
+  }
+  return false;
+}
+
+// The exact centroid of face f lies strictly inside coplanar triangle u.
+bool covered_by(const Soup& soup, std::int32_t u, const ExactPoint& c, int axis) {
+  const TriangleIndices& v = soup.triangles[static_cast<std::size_t>(u)];
+  const ExactPoint a = exact_point(soup.vertices[static_cast<std::size_t>(v[0])]);
+  const ExactPoint b = exact_point(soup.vertices[static_cast<std::size_t>(v[1])]);
+  const ExactPoint d = exact_point(soup.vertices[static_cast<std::size_t>(v[2])]);
+  const Sign turn = orient2d_dropped(a, b, d, axis);
+  return turn != Sign::zero && orient2d_dropped(a, b, c, axis) == turn &&
+         orient2d_dropped(b, d, c, axis) == turn && orient2d_dropped(d, a, c, axis) == turn;
+}
+
+bool owned(const Soup& soup, const RefinedFace& face, const TriangleWork& work,
+           const PointStore& store) {
+  bool any_lower = false;
+  for (const std::int32_t u : work.coplanar)
+    any_lower = any_lower || u < face.triangle;
+  if (!any_lower) return true;
+  const ExactPoint c =
+      centroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2]));
+  const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(face.triangle)));
+  for (const std::int32_t u : work.coplanar) {
+    if (u < face.triangle && covered_by(soup, u, c, axis)) return false;
+  }
+  return true;
+}
+
+std::size_t count_shells(const Mesh& mesh) {
+  UnionFind<std::size_t> sets(mesh.vertices.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]));
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
+  }
+  std::size_t shells = 0;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    shells += sets.find(i) == i ? 1 : 0;
+  return shells;
+}
+
+double signed_volume(const Mesh& mesh) {
+  double six = 0.0;
+  for (const TriangleIndices& t : mesh.triangles) {
+    const Vec3 a = mesh.vertex(t[0]), b = mesh.vertex(t[1]), c = mesh.vertex(t[2]);
+    six += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
+           a.z * (b.x * c.y - b.y * c.x);
+  }
+  return six / 6.0;
+}
+
+// Points whose nearest doubles coincide become one vertex (the written mesh could not tell
+// them apart); faces that lose a corner so are dropped, and two faces that become the same
+// triangle in opposite directions cancel (rule solid-output). What this leaves is checked.
+std::vector<std::array<std::int32_t, 3>> merge_coincident(
+    const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
+  std::map<std::array<std::int32_t, 3>, std::vector<std::size_t>> by_corners;
+  std::vector<std::array<std::int32_t, 3>> merged;
+  for (const auto& f : faces) {
+    std::array<std::int32_t, 3> t = {store.representative(f[0]), store.representative(f[1]),
+                                     store.representative(f[2])};
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    merged.push_back(t);
+  }
+  // Cancel opposite pairs: key (a, b, c) with a smallest; its reverse is (a, c, b).
+  std::vector<bool> gone(merged.size(), false);
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const auto& t = merged[i];
+    const std::array<std::int32_t, 3> reverse = {t[0], t[2], t[1]};
+    auto it = by_corners.find(reverse);
+    if (it != by_corners.end() && !it->second.empty()) {
+      gone[it->second.back()] = true;
+      gone[i] = true;
+      it->second.pop_back();
+    } else {
+      by_corners[t].push_back(i);
+    }
+  }
+  std::vector<std::array<std::int32_t, 3>> out;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    if (!gone[i]) out.push_back(merged[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
+                                       const std::vector<TriangleWork>& work,
+                                       const std::vector<FaceLabel>& labels,
+                                       const PointStore& store, Op op) {
+  std::vector<std::array<std::int32_t, 3>> kept;
+  for (std::size_t f = 0; f < refinement.faces.size(); ++f) {
+    const RefinedFace& face = refinement.faces[f];
+    const bool front = filled(op, labels[f].front), back = filled(op, labels[f].back);
+    if (front == back) continue;
+    if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
+    kept.push_back(back ? face.v : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
+  }
+  kept = merge_coincident(kept, store);
+  const Sheets sheets = separate_sheets(kept, store);
+  MeshBooleanResult result;
+  for (const std::int32_t p : sheets.points)
+    result.mesh.vertices.push_back(store.rounded(p));
+  for (const auto& t : sheets.faces)
+    result.mesh.triangles.push_back({t[0], t[1], t[2]});
+  const Status valid = check_written(result.mesh);
+  if (!valid) return valid.error();
+  result.shells = count_shells(result.mesh);
+  result.volume = signed_volume(result.mesh);
+  return result;
+}
+
+}  // namespace contain::clip::solid

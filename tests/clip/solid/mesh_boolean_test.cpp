@@ -1,0 +1,246 @@
+// Exact mesh booleans against the GMP oracle: the written mesh is valid (checked exactly, with
+// collide::self_intersections for crossings), its exact volume is the expected one where it is
+// known, and at random sample points its winding number says what the inputs' winding numbers
+// and the operation say.
+
+#include "contain/clip/mesh_boolean.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "clip/solid/solid_oracle.h"
+
+namespace contain::test {
+namespace {
+
+using clip::Op;
+
+constexpr std::array<Op, 4> all_ops = {Op::union_, Op::intersection, Op::difference, Op::xor_};
+
+// Runs the boolean and checks validity and the winding numbers at `samples` random points of
+// the inputs' box; returns the result.
+clip::MeshBooleanResult checked(const std::vector<Mesh>& inputs, Op op, int samples = 200,
+                                unsigned seed = 1) {
+  const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(inputs, {.op = op});
+  EXPECT_TRUE(r.ok()) << "op " << static_cast<int>(op) << ": " << (r.ok() ? "" : r.error().message);
+  if (!r.ok()) return {};
+  EXPECT_EQ(invalid_reason(r->mesh), "");
+  Box3 box;
+  for (const Mesh& m : inputs) {
+    for (const Vec3 v : m.vertices)
+      box.expand(v);
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked_points = 0;
+  for (int i = 0; i < samples; ++i) {
+    const Vec3 p{box.min.x + (box.max.x - box.min.x) * (1.2 * u(rng) - 0.1),
+                 box.min.y + (box.max.y - box.min.y) * (1.2 * u(rng) - 0.1),
+                 box.min.z + (box.max.z - box.min.z) * (1.2 * u(rng) - 0.1)};
+    std::vector<int> w;
+    bool usable = true;
+    for (const Mesh& m : inputs) {
+      const std::optional<int> x = exact_winding(m, p);
+      usable = usable && x.has_value();
+      w.push_back(x.value_or(0));
+    }
+    const std::optional<int> out = exact_winding(r->mesh, p);
+    if (!usable || !out) continue;
+    ++checked_points;
+    EXPECT_TRUE(*out == 0 || *out == 1) << "winding " << *out;
+    EXPECT_EQ(*out > 0, in_result(op, w)) << "at " << p.x << " " << p.y << " " << p.z;
+  }
+  EXPECT_GT(checked_points, samples / 2);
+  return *r;
+}
+
+double volume_of(const clip::MeshBooleanResult& r) {
+  return exact_volume(r.mesh).get_d();
+}
+
+TEST(MeshBoolean, OverlappingBoxesHaveTheExactVolumesOfEveryOperation) {
+  const std::vector<Mesh> in = {box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 4, 5})};
+  // |A| = 8, |B| = 24, |A n B| = 1.
+  const std::array<double, 4> expected = {31, 1, 7, 30};
+  for (std::size_t k = 0; k < all_ops.size(); ++k) {
+    const clip::MeshBooleanResult r = checked(in, all_ops[k]);
+    EXPECT_EQ(exact_volume(r.mesh), mpq_class(expected[k])) << static_cast<int>(all_ops[k]);
+    EXPECT_EQ(r.volume, expected[k]);
+  }
+}
+
+TEST(MeshBoolean, DisjointAndNestedBoxes) {
+  const Mesh a = box_mesh({0, 0, 0}, {4, 4, 4});
+  const Mesh inner = box_mesh({1, 1, 1}, {2, 2, 2});
+  const Mesh far = box_mesh({10, 0, 0}, {11, 1, 1});
+  EXPECT_EQ(volume_of(checked({a, far}, Op::union_)), 65);
+  EXPECT_EQ(checked({a, far}, Op::union_).shells, 2U);
+  EXPECT_EQ(checked({a, far}, Op::intersection).mesh.triangles.size(), 0U);
+  EXPECT_EQ(volume_of(checked({a, inner}, Op::difference)), 63);
+  EXPECT_EQ(checked({a, inner}, Op::difference).shells, 2U);
+  EXPECT_EQ(volume_of(checked({a, inner}, Op::intersection)), 1);
+  EXPECT_EQ(volume_of(checked({inner, a}, Op::difference)), 0);
+}
+
+TEST(MeshBoolean, TwoTetrahedraSharingAFaceUniteToAClosedSixTriangleSolid) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  const clip::MeshBooleanResult r =
+      checked({tetrahedron(a, b, c, {0, 0, 1}), tetrahedron(a, b, c, {0, 0, -1})}, Op::union_);
+  EXPECT_EQ(r.mesh.triangles.size(), 6U);
+  EXPECT_EQ(exact_volume(r.mesh), mpq_class(1, 3));
+}
+
+TEST(MeshBoolean, StackedAndOffsetBoxesWithCoplanarFaces) {
+  const Mesh a = box_mesh({0, 0, 0}, {2, 2, 1});
+  EXPECT_EQ(volume_of(checked({a, box_mesh({0, 0, 1}, {2, 2, 2})}, Op::union_)), 8);
+  EXPECT_EQ(volume_of(checked({a, box_mesh({1, 1, 1}, {3, 3, 2})}, Op::union_)), 8);
+  EXPECT_EQ(volume_of(checked({a, box_mesh({1, 1, 0}, {3, 3, 1})}, Op::union_)), 7);
+  EXPECT_EQ(volume_of(checked({a, box_mesh({1, 1, 0}, {3, 3, 1})}, Op::intersection)), 1);
+  EXPECT_EQ(volume_of(checked({a, box_mesh({1, 1, 0}, {3, 3, 1})}, Op::difference)), 3);
+  EXPECT_EQ(volume_of(checked({a, box_mesh({1, 1, 0}, {3, 3, 1})}, Op::xor_)), 6);
+}
+
+TEST(MeshBoolean, IdenticalSolidsAndACubeWithItselfRotated) {
+  const Mesh a = box_mesh({-1, -1, -1}, {1, 1, 1});
+  Mesh rotated = a;  // 90 degrees about z: (x, y) -> (-y, x), exact
+  for (Vec3& v : rotated.vertices)
+    v = {-v.y, v.x, v.z};
+  for (const Mesh& b : {a, rotated}) {
+    EXPECT_EQ(volume_of(checked({a, b}, Op::union_)), 8);
+    EXPECT_EQ(volume_of(checked({a, b}, Op::intersection)), 8);
+    EXPECT_EQ(checked({a, b}, Op::difference).mesh.triangles.size(), 0U);
+    EXPECT_EQ(checked({a, b}, Op::xor_).mesh.triangles.size(), 0U);
+  }
+}
+
+TEST(MeshBoolean, SolidsTouchingAlongAnEdgeOrAtAPointKeepTheirSheetsApart) {
+  const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
+  for (const Mesh& b : {box_mesh({1, 1, 0}, {2, 2, 1}), box_mesh({1, 1, 1}, {2, 2, 2})}) {
+    const clip::MeshBooleanResult r = checked({a, b}, Op::union_);
+    EXPECT_EQ(exact_volume(r.mesh), 2);
+    EXPECT_EQ(r.shells, 2U);
+    EXPECT_EQ(r.mesh.vertices.size(), 16U);  // each cube its own corners, shared ones twice
+    EXPECT_EQ(checked({a, b}, Op::intersection).mesh.triangles.size(), 0U);
+  }
+  // The xor of two boxes overlapping in a corner touches itself along the corner box's edges.
+  const clip::MeshBooleanResult x =
+      checked({box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 3, 3})}, Op::xor_);
+  EXPECT_EQ(exact_volume(x.mesh), 14);
+}
+
+TEST(MeshBoolean, ATinyRotationGivesTheOraclesAnswer) {
+  const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
+  Mesh turned = a;  // about z by 1e-12 radians around the box's centre
+  const double c = std::cos(1e-12), s = std::sin(1e-12);
+  for (Vec3& v : turned.vertices) {
+    v = {0.5 + c * (v.x - 0.5) - s * (v.y - 0.5), 0.5 + s * (v.x - 0.5) + c * (v.y - 0.5), v.z};
+  }
+  for (const Op op : all_ops)
+    (void)checked({a, turned}, op);
+}
+
+// Noise of 1e-14 makes slivers whose rounded corners are collinear. Until the snap-rounding
+// repair exists, the documented answer is an error of kind `degenerate`: never an invalid mesh.
+TEST(MeshBoolean, NoiseOfAFewUlpsGivesAValidMeshOrTheDegenerateError) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
+  Mesh noisy = a;
+  for (Vec3& v : noisy.vertices)
+    v = {v.x + 1e-14 * u(rng), v.y + 1e-14 * u(rng), v.z + 1e-14 * u(rng)};
+  const std::vector<Mesh> in = {a, noisy};
+  for (const Op op : all_ops) {
+    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in, {.op = op});
+    if (r.ok()) {
+      EXPECT_EQ(invalid_reason(r->mesh), "");
+    } else {
+      EXPECT_EQ(r.error().kind, ErrorKind::degenerate) << r.error().message;
+    }
+  }
+}
+
+TEST(MeshBoolean, SelfIntersectingInputIsRepairedAndAnInsideOutShellSubtracts) {
+  const Mesh two = joined(box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 3, 3}));
+  const clip::MeshBooleanResult repaired = checked({two}, Op::union_);
+  EXPECT_EQ(exact_volume(repaired.mesh), 15);
+  const Mesh hollow =
+      joined(box_mesh({0, 0, 0}, {4, 4, 4}), reversed(box_mesh({1, 1, 1}, {3, 3, 3})));
+  EXPECT_EQ(exact_volume(checked({hollow}, Op::union_).mesh), 56);
+}
+
+TEST(MeshBoolean, TinyAndLargeCoordinatesAndOneUlpShifts) {
+  const double s = std::ldexp(1.0, -30);
+  EXPECT_EQ(exact_volume(checked({box_mesh({0, 0, 0}, {2 * s, 2 * s, 2 * s}),
+                                  box_mesh({s, s, s}, {3 * s, 3 * s, 3 * s})},
+                                 Op::union_)
+                             .mesh),
+            mpq_class(15) * mpq_class(s) * mpq_class(s) * mpq_class(s));
+  const Vec3 o{1e6, -1e6, 1e6};
+  const Mesh big_a = box_mesh({o.x, o.y, o.z}, {o.x + 2, o.y + 2, o.z + 2});
+  const Mesh big_b = box_mesh({o.x + 1, o.y + 1, o.z + 1}, {o.x + 3, o.y + 3, o.z + 3});
+  EXPECT_EQ(exact_volume(checked({big_a, big_b}, Op::intersection).mesh), 1);
+  // B reaches one ulp beyond A: the union is that much longer, B minus A a sliver one ulp thick.
+  const double x1 = std::nextafter(1.0, 2.0);
+  const Mesh unit = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh shifted = box_mesh({0.5, 0, 0}, {x1, 1, 1});
+  EXPECT_EQ(exact_volume(checked({unit, shifted}, Op::union_).mesh), mpq_class(x1));
+  EXPECT_EQ(exact_volume(checked({unit, shifted}, Op::intersection).mesh), mpq_class(1, 2));
+  EXPECT_EQ(exact_volume(checked({shifted, unit}, Op::difference).mesh), mpq_class(x1) - 1);
+}
+
+TEST(MeshBoolean, RandomSphereAndTetrahedraPairsAgreeWithTheOracle) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 6; ++trial) {
+    const Mesh a = icosphere(1, 1.0, {0, 0, 0});
+    const Mesh b = icosphere(1, 0.8, {u(rng), u(rng), u(rng)});
+    for (const Op op : all_ops)
+      (void)checked({a, b}, op, 100, static_cast<unsigned>(trial));
+    const Mesh t = tetrahedron({u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)},
+                               {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)});
+    for (const Op op : all_ops)
+      (void)checked({a, t}, op, 100, static_cast<unsigned>(trial));
+  }
+}
+
+TEST(MeshBoolean, GridOfUnitCubesUnitesToOneBox) {
+  std::vector<Mesh> cubes;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      for (int k = 0; k < 4; ++k) {
+        cubes.push_back(box_mesh({double(i), double(j), double(k)},
+                                 {double(i + 1), double(j + 1), double(k + 1)}));
+      }
+    }
+  }
+  const clip::MeshBooleanResult r = checked(cubes, Op::union_, 50);
+  EXPECT_EQ(exact_volume(r.mesh), 64);
+  EXPECT_EQ(r.shells, 1U);
+}
+
+TEST(MeshBoolean, AnOpenInputIsAnErrorNamingTheInputAndAnEdge) {
+  Mesh open = box_mesh({0, 0, 0}, {1, 1, 1});
+  open.triangles.pop_back();
+  const std::vector<Mesh> in = {box_mesh({0, 0, 0}, {1, 1, 1}), open};
+  const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::invalid_value);
+  EXPECT_NE(r.error().message.find("input 1"), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find(" -> "), std::string::npos) << r.error().message;
+}
+
+TEST(MeshBoolean, NoInputAndEmptyInputsAreTheEmptySolid) {
+  const Result<clip::MeshBooleanResult> none = clip::mesh_boolean({});
+  ASSERT_TRUE(none.ok());
+  EXPECT_TRUE(none->mesh.triangles.empty());
+  const std::vector<Mesh> in = {Mesh{}, box_mesh({0, 0, 0}, {1, 1, 1})};
+  EXPECT_EQ(volume_of(checked(in, Op::union_)), 1);
+  EXPECT_TRUE(checked(in, Op::intersection).mesh.triangles.empty());
+}
+
+}  // namespace
+}  // namespace contain::test
