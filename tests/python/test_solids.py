@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import contain
-from meshes import cube, torus
+from meshes import cube
 
 
 def box(lo, hi):
@@ -157,13 +157,15 @@ def test_csg_to_mesh_cuts_a_box_by_a_half_space_and_subtracts_a_mesh():
 
 
 def test_the_boolean_releases_the_gil():
-    a = torus(rings=160, sides=80)
-    b = contain.Mesh(np.asarray(a.vertices) + [0.3, 0.2, 0.1], np.asarray(a.faces))
-    started, done = threading.Event(), threading.Event()
+    # 27 overlapping cubes united in one call (about a second here); the main thread keeps
+    # running Python meanwhile, which it could not if the call held the GIL.
+    parts = [box(0, 1.5) for _ in range(27)]
+    parts = [(v + [i % 3, i // 3 % 3, i // 9], f) for i, (v, f) in enumerate(parts)]
+    started, done, results = threading.Event(), threading.Event(), []
 
     def work():
         started.set()
-        contain.mesh_boolean(a, b, op="union")
+        results.append(contain.mesh_boolean(parts, op="union"))
         done.set()
 
     worker = threading.Thread(target=work)
@@ -174,3 +176,4 @@ def test_the_boolean_releases_the_gil():
         spins += 1
     worker.join()
     assert spins > 100
+    assert exact_volume(results[0].mesh) == Fraction(343, 8)  # (3 + 0.5)^3
