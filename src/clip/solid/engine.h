@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -45,6 +46,20 @@ class Soup {
   mutable std::vector<std::optional<BigVec3>> normals_;
 };
 
+/// Hashing and equality of points of doubles by value (+0 and -0 are one key: they are equal).
+struct Vec3Hash {
+  [[nodiscard]] std::size_t operator()(Vec3 v) const {
+    const std::hash<double> h;
+    return h(v.x + 0.0) ^ (h(v.y + 0.0) * 0x9e3779b97f4a7c15ULL) ^
+           (h(v.z + 0.0) * 0xc2b2ae3d27d4eb4fULL);
+  }
+};
+struct Vec3Equal {
+  [[nodiscard]] bool operator()(Vec3 a, Vec3 b) const {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  }
+};
+
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
 class PointStore {
  public:
@@ -65,7 +80,8 @@ class PointStore {
 
   std::vector<ExactPoint> points_;
   std::vector<Vec3> rounded_;
-  std::map<std::array<double, 3>, std::vector<std::int32_t>> by_rounded_;
+  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> first_;  // by nearest doubles
+  std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
 };
 
 /// The key of the undirected input edge between welded vertices a and b.

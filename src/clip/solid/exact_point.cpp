@@ -4,6 +4,8 @@
 
 #include "clip/solid/exact_point.h"
 
+#include "contain/predicates/orient2d.h"
+
 #include <bit>
 #include <cmath>
 #include <compare>
@@ -12,6 +14,10 @@
 
 namespace contain::clip::solid {
 namespace {
+
+double coordinate(Vec3 v, int i) {
+  return i == 0 ? v.x : (i == 1 ? v.y : v.z);
+}
 
 ExactPoint normalized(ExactPoint p) {
   if (p.w.sign() == Sign::negative) {
@@ -74,7 +80,7 @@ const BigFloat& component(const BigVec3& v, int i) {
 }
 
 ExactPoint exact_point(Vec3 v) {
-  return {{BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)}, BigFloat(1.0)};
+  return {{BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)}, BigFloat(1.0), true, v};
 }
 
 BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
@@ -110,6 +116,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 }
 
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
+  if (a.plain && b.plain) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
   for (std::size_t i = 0; i < 3; ++i) {
     if (a.x[i] * b.w != b.x[i] * a.w) return false;
   }
@@ -117,11 +124,21 @@ bool same_point(const ExactPoint& a, const ExactPoint& b) {
 }
 
 Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
+  if (a.plain && b.plain) {
+    const double x = coordinate(a.v, i), y = coordinate(b.v, i);
+    return x > y ? Sign::positive : (x < y ? Sign::negative : Sign::zero);
+  }
   const std::size_t k = static_cast<std::size_t>(i);
   return (a.x[k] * b.w - b.x[k] * a.w).sign();
 }
 
 Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis) {
+  if (a.plain && b.plain && c.plain) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    return predicates::orient2d({coordinate(a.v, u), coordinate(a.v, v)},
+                                {coordinate(b.v, u), coordinate(b.v, v)},
+                                {coordinate(c.v, u), coordinate(c.v, v)});
+  }
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
   const std::array<BigFloat, 3> m = cross3(pb, pc);

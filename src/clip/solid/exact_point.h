@@ -17,10 +17,13 @@ namespace contain::clip::solid {
 using predicates::BigFloat;
 using predicates::BigVec3;
 
-/// (x / w, y / w, z / w) with w > 0.
+/// (x / w, y / w, z / w) with w > 0. A point of doubles (`exact_point(v)`) also keeps v, so that
+/// predicates on points of doubles only take the filtered predicates of `predicates`.
 struct ExactPoint {
   std::array<BigFloat, 3> x;
   BigFloat w;
+  bool plain = false;  ///< the point is `v`, doubles (w = 1)
+  Vec3 v{};
 };
 
 /// The double point v.

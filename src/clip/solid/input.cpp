@@ -1,7 +1,9 @@
 // Stage 1 of the mesh boolean: the inputs as one soup, vertices welded by exact position (a
-// point is one point whichever input names it), each input checked closed: every directed edge
-// occurs as often as its reverse, so its winding number is defined off its surface.
+// point is one point whichever input names it), each input checked closed by the solids' rule
+// (`unmatched_edge`: every directed edge as often as its reverse, so that its winding number is
+// defined off its surface).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -9,10 +11,12 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "clip/solid/engine.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/shapes/mesh_closure.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -26,32 +30,16 @@ std::string coordinates(Vec3 v) {
   return out.str();
 }
 
-// The first directed edge of input `which` (triangles [first, last) of the soup) that occurs
-// more often than its reverse, as an error; none when closed.
-Status check_closed(const Soup& soup, std::size_t first, std::size_t last, std::size_t which) {
-  std::map<std::pair<std::int32_t, std::int32_t>, std::int64_t> count;
-  for (std::size_t t = first; t < last; ++t) {
-    const TriangleIndices& v = soup.triangles[t];
-    for (int i = 0; i < 3; ++i) {
-      const std::int32_t a = v[static_cast<std::size_t>(i)],
-                         b = v[static_cast<std::size_t>((i + 1) % 3)];
-      if (a == b) continue;
-      // +1 for a -> b, -1 for b -> a, kept on the pair (min, max).
-      count[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
-    }
-  }
-  for (const auto& [edge, balance] : count) {
-    if (balance == 0) continue;
-    const auto [a, b] = balance > 0 ? edge : std::pair{edge.second, edge.first};
-    return Error{.kind = ErrorKind::invalid_value,
-                 .message = "input " + std::to_string(which) +
-                            " is not closed: the directed edge " +
-                            coordinates(soup.vertices[static_cast<std::size_t>(a)]) + " -> " +
-                            coordinates(soup.vertices[static_cast<std::size_t>(b)]) + " occurs " +
-                            std::to_string(balance > 0 ? balance : -balance) +
-                            " more time(s) than its reverse"};
-  }
-  return Ok{};
+// The error naming input `which`'s first unbalanced directed edge, if any.
+Status check_closed(const Mesh& mesh, std::size_t which) {
+  const std::optional<UnmatchedEdge> edge = unmatched_edge(mesh);
+  if (!edge) return Ok{};
+  return Error{.kind = ErrorKind::invalid_value,
+               .message = "input " + std::to_string(which) + " is not closed: the directed edge " +
+                          coordinates(edge->from) + " -> " + coordinates(edge->to) + " (triangle " +
+                          std::to_string(edge->triangle) + ") occurs " +
+                          std::to_string(edge->count) + " time(s), its reverse " +
+                          std::to_string(edge->reverse)};
 }
 
 }  // namespace
@@ -77,7 +65,7 @@ int dropped_axis(const BigVec3& n) {
 Result<Soup> make_soup(std::span<const Mesh> inputs) {
   Soup soup;
   soup.inputs = inputs.size();
-  std::map<std::array<double, 3>, std::int32_t> welded;
+  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const Mesh& mesh = inputs[k];
     std::vector<std::int32_t> remap(mesh.vertices.size());
@@ -89,12 +77,11 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 " is not finite"};
       }
       // + 0.0 turns -0 into +0: one key per position.
-      const auto [it, fresh] = welded.try_emplace({v.x + 0.0, v.y + 0.0, v.z + 0.0},
+      const auto [it, fresh] = welded.try_emplace(Vec3{v.x + 0.0, v.y + 0.0, v.z + 0.0},
                                                   static_cast<std::int32_t>(soup.vertices.size()));
       if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
       remap[i] = it->second;
     }
-    const std::size_t first = soup.triangles.size();
     for (const TriangleIndices& t : mesh.triangles) {
       for (const std::int32_t i : t) {
         if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
@@ -108,7 +95,7 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 remap[static_cast<std::size_t>(t[2])]});
       soup.input.push_back(static_cast<std::int32_t>(k));
     }
-    const Status closed = check_closed(soup, first, soup.triangles.size(), k);
+    const Status closed = check_closed(mesh, k);
     if (!closed) return closed.error();
   }
   for (const TriangleIndices& t : soup.triangles) {

@@ -192,20 +192,24 @@ std::int32_t PointStore::add(Vec3 v) {
 }
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
-  std::vector<std::int32_t>& bucket = by_rounded_[{r.x, r.y, r.z}];
-  for (const std::int32_t i : bucket) {
-    if (same_point(points_[static_cast<std::size_t>(i)], p)) return i;
-  }
   const auto id = static_cast<std::int32_t>(points_.size());
+  const auto [it, fresh] = first_.try_emplace(r, id);
+  if (!fresh) {
+    std::int32_t i = it->second;
+    for (;; i = next_[static_cast<std::size_t>(i)]) {
+      if (same_point(points_[static_cast<std::size_t>(i)], p)) return i;
+      if (next_[static_cast<std::size_t>(i)] < 0) break;
+    }
+    next_[static_cast<std::size_t>(i)] = id;
+  }
   points_.push_back(p);
   rounded_.push_back(r);
-  bucket.push_back(id);
+  next_.push_back(-1);
   return id;
 }
 
 std::int32_t PointStore::representative(std::int32_t i) const {
-  const Vec3 r = rounded(i);
-  return by_rounded_.at({r.x, r.y, r.z}).front();
+  return first_.at(rounded(i));
 }
 
 std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {

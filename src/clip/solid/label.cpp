@@ -90,26 +90,35 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
 // Patch of each face (a representative face number).
 std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
   struct Use {
+    std::uint64_t key;
     std::size_t face;
     bool forward;  // a < b in the face's direction
+    bool operator<(const Use& o) const { return key < o.key || (key == o.key && face < o.face); }
   };
-  std::unordered_map<std::uint64_t, std::vector<Use>> uses;
+  std::vector<Use> uses;
+  uses.reserve(3 * r.faces.size());
   for (std::size_t f = 0; f < r.faces.size(); ++f) {
     const auto& v = r.faces[f].v;
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = v[static_cast<std::size_t>(k)],
                          b = v[static_cast<std::size_t>((k + 1) % 3)];
-      uses[edge_key(a, b)].push_back({f, a < b});
+      uses.push_back({edge_key(a, b), f, a < b});
     }
   }
+  std::sort(uses.begin(), uses.end());
   UnionFind<std::size_t> sets(r.faces.size());
-  for (const auto& [key, list] : uses) {
-    if (list.size() != 2 || list[0].forward == list[1].forward) continue;
-    const std::int32_t ta = r.faces[list[0].face].triangle, tb = r.faces[list[1].face].triangle;
-    if (soup.input[static_cast<std::size_t>(ta)] != soup.input[static_cast<std::size_t>(tb)])
-      continue;
-    if (std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), key)) continue;
-    sets.unite(list[0].face, list[1].face);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].key == uses[i].key)
+      ++j;
+    const Use& x = uses[i];
+    const Use& y = uses[i + 1 < j ? i + 1 : i];
+    const bool pair = j - i == 2 && x.forward != y.forward &&
+                      soup.input[static_cast<std::size_t>(r.faces[x.face].triangle)] ==
+                          soup.input[static_cast<std::size_t>(r.faces[y.face].triangle)] &&
+                      !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), x.key);
+    if (pair) sets.unite(x.face, y.face);
+    i = j;
   }
   std::vector<std::size_t> out(r.faces.size());
   for (std::size_t f = 0; f < out.size(); ++f)

@@ -9,8 +9,10 @@
 // with the lowest number among those covering it is written, the others are not.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -89,16 +91,17 @@ double signed_volume(const Mesh& mesh) {
   return six / 6.0;
 }
 
-// Points whose nearest doubles coincide become one vertex (the written mesh could not tell
-// them apart); faces that lose a corner so are dropped, and two faces that become the same
-// triangle in opposite directions cancel (rule solid-output). What this leaves is checked.
+// Points merged into one vertex (rule solid-output): faces that lose a corner so are dropped,
+// and two faces that become the same triangle in opposite directions cancel. What this leaves
+// is checked.
+using Representative = std::unordered_map<std::int32_t, std::int32_t>;
+
 std::vector<std::array<std::int32_t, 3>> merge_coincident(
-    const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
+    const std::vector<std::array<std::int32_t, 3>>& faces, const Representative& rep) {
   std::map<std::array<std::int32_t, 3>, std::vector<std::size_t>> by_corners;
   std::vector<std::array<std::int32_t, 3>> merged;
   for (const auto& f : faces) {
-    std::array<std::int32_t, 3> t = {store.representative(f[0]), store.representative(f[1]),
-                                     store.representative(f[2])};
+    std::array<std::int32_t, 3> t = {rep.at(f[0]), rep.at(f[1]), rep.at(f[2])};
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     merged.push_back(t);
@@ -124,6 +127,57 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
   return out;
 }
 
+// The written point of each point of `faces`: at level < 0, the first point with the same
+// nearest doubles (the written mesh could not tell them apart); at level >= 0, the first point
+// (by number) of its cluster: points whose nearest doubles are within ulp(scale) 2^level of each
+// other in every coordinate are joined, transitively (a crude snap rounding).
+Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
+                               const PointStore& store, int level, double scale) {
+  std::vector<std::int32_t> ids;
+  for (const auto& f : faces)
+    ids.insert(ids.end(), f.begin(), f.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  Representative rep;
+  if (level < 0) {
+    for (const std::int32_t i : ids)
+      rep[i] = store.representative(i);
+    return rep;
+  }
+  const double h =
+      std::ldexp(std::nextafter(scale, std::numeric_limits<double>::infinity()) - scale, level);
+  std::vector<std::size_t> by_x(ids.size());
+  for (std::size_t k = 0; k < by_x.size(); ++k)
+    by_x[k] = k;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return store.rounded(ids[a]).x < store.rounded(ids[b]).x;
+  });
+  UnionFind<std::size_t> near(ids.size());  // the smallest index (so the smallest id) leads
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Vec3 p = store.rounded(ids[by_x[k]]);
+    for (std::size_t m = k + 1; m < by_x.size(); ++m) {
+      const Vec3 q = store.rounded(ids[by_x[m]]);
+      if (q.x - p.x > h) break;
+      if (std::fabs(q.y - p.y) <= h && std::fabs(q.z - p.z) <= h) near.unite(by_x[k], by_x[m]);
+    }
+  }
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    rep[ids[k]] = ids[near.find(k)];
+  return rep;
+}
+
+// The faces' mesh with points merged by `rep`, sheets kept apart.
+Mesh written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept, const Representative& rep,
+                  const PointStore& store) {
+  const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
+  Mesh mesh;
+  for (const std::int32_t p : sheets.points)
+    mesh.vertices.push_back(store.rounded(p));
+  for (const auto& t : sheets.faces)
+    mesh.triangles.push_back({t[0], t[1], t[2]});
+  return mesh;
+}
+
 }  // namespace
 
 Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
@@ -138,18 +192,29 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
     kept.push_back(back ? face.v : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
   }
-  kept = merge_coincident(kept, store);
-  const Sheets sheets = separate_sheets(kept, store);
-  MeshBooleanResult result;
-  for (const std::int32_t p : sheets.points)
-    result.mesh.vertices.push_back(store.rounded(p));
-  for (const auto& t : sheets.faces)
-    result.mesh.triangles.push_back({t[0], t[1], t[2]});
-  const Status valid = check_written(result.mesh);
-  if (!valid) return valid.error();
-  result.shells = count_shells(result.mesh);
-  result.volume = signed_volume(result.mesh);
-  return result;
+  double scale = 0.0;
+  for (const Vec3 v : soup.vertices) {
+    scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  }
+  scale = std::max(scale, std::numeric_limits<double>::min());
+  // Grid sides up to 2^20 ulps of the largest coordinate (about 2.3e-10 of it: within the 1e-9
+  // that ../shared/spec/cli.md allows), each tried only when the previous one failed the check.
+  Status valid = Ok{};
+  for (int level = -1; level <= 20; level += 3) {
+    const Representative rep = representatives(kept, store, level, scale);
+    MeshBooleanResult result;
+    result.mesh = written_mesh(kept, rep, store);
+    valid = check_written(result.mesh);
+    if (!valid) continue;
+    for (const auto& [i, r] : rep) {
+      const Vec3 a = store.rounded(i), b = store.rounded(r);
+      result.moved += (a.x != b.x || a.y != b.y || a.z != b.z) ? 1 : 0;
+    }
+    result.shells = count_shells(result.mesh);
+    result.volume = signed_volume(result.mesh);
+    return result;
+  }
+  return valid.error();
 }
 
 }  // namespace contain::clip::solid

@@ -71,6 +71,73 @@ void sort_around(std::vector<Use>& uses, std::int32_t p, std::int32_t q,
 
 }  // namespace
 
+namespace {
+
+int q_corner(const Use& u) {
+  return u.forward ? (u.corner + 1) % 3 : (u.corner + 2) % 3;
+}
+
+// The faces around one edge held by more than two, sorted by angle, and which pairing is used:
+// each q -> p face with the face 1 + 2 shift places after it.
+struct Fan {
+  std::uint64_t key =
+      0;  // the edge (fans are kept in key order: the same output on every platform)
+  std::vector<Use> sorted;
+  std::size_t shift = 0;
+};
+
+struct Grouping {
+  std::vector<std::pair<Use, Use>> manifold;  // the two faces of an edge held by two
+  std::vector<Fan> fans;
+
+  [[nodiscard]] UnionFind<std::size_t> corners(std::size_t faces) const {
+    UnionFind<std::size_t> sets(3 * faces);
+    const auto join = [&](const Use& a, const Use& b) {
+      sets.unite(3 * a.face + static_cast<std::size_t>(a.corner),
+                 3 * b.face + static_cast<std::size_t>(b.corner));
+      sets.unite(3 * a.face + static_cast<std::size_t>(q_corner(a)),
+                 3 * b.face + static_cast<std::size_t>(q_corner(b)));
+    };
+    for (const auto& [a, b] : manifold)
+      join(a, b);
+    for (const Fan& fan : fans) {
+      const std::size_t n = fan.sorted.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!fan.sorted[i].forward) join(fan.sorted[i], fan.sorted[(i + 1 + 2 * fan.shift) % n]);
+      }
+    }
+    return sets;
+  }
+
+  // Fans whose passes end in the same vertex pair (the edge would be written twice) move on to
+  // their next pairing; false when there was none.
+  bool shift_pinched(UnionFind<std::size_t>& sets) {
+    bool any = false;
+    for (Fan& fan : fans) {
+      std::vector<std::pair<std::size_t, std::size_t>> ends;
+      for (const Use& u : fan.sorted) {
+        if (u.forward) continue;
+        ends.emplace_back(sets.find(3 * u.face + static_cast<std::size_t>(u.corner)),
+                          sets.find(3 * u.face + static_cast<std::size_t>(q_corner(u))));
+      }
+      std::sort(ends.begin(), ends.end());
+      if (std::adjacent_find(ends.begin(), ends.end()) != ends.end()) {
+        fan.shift = (fan.shift + 1) % std::max<std::size_t>(fan.sorted.size() / 2, 1);
+        any = true;
+      }
+    }
+    return any;
+  }
+};
+
+}  // namespace
+
+// A pairing of the faces by angle joins the sheets that bound one wedge of the result; where a
+// sheet touches itself along an edge and is connected around both its ends (a vertex pinched
+// by the edge: boxes stacked in a staircase around a corner), that pairing leaves the two
+// passes with the same vertices at both ends, and the edge is paired the other way (each q -> p
+// face with a later face running p -> q). Both pairings hold the same triangles: the check of
+// the written mesh judges the result.
 Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                        const PointStore& store) {
   std::unordered_map<std::uint64_t, std::vector<Use>> uses;
@@ -78,34 +145,22 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = faces[f][static_cast<std::size_t>(k)],
                          b = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-      // Record the corner at the smaller id.
       uses[edge_key(a, b)].push_back({f, a < b ? k : (k + 1) % 3, a < b});
     }
   }
-  UnionFind<std::size_t> corners(3 * faces.size());
-  const auto join = [&](const Use& a, const Use& b) {
-    // a's corner at p with b's corner at p, and the two corners at q.
-    corners.unite(3 * a.face + static_cast<std::size_t>(a.corner),
-                  3 * b.face + static_cast<std::size_t>(b.corner));
-    const int qa = a.forward ? (a.corner + 1) % 3 : (a.corner + 2) % 3;
-    const int qb = b.forward ? (b.corner + 1) % 3 : (b.corner + 2) % 3;
-    corners.unite(3 * a.face + static_cast<std::size_t>(qa),
-                  3 * b.face + static_cast<std::size_t>(qb));
-  };
+  Grouping grouping;
   for (auto& [key, list] : uses) {
-    if (list.size() == 2) {
-      join(list[0], list[1]);
-      continue;
-    }
-    if (list.size() < 2) continue;  // left to the check
-    const auto p = static_cast<std::int32_t>(key >> 32U),
-               q = static_cast<std::int32_t>(key & 0xffffffffU);
-    sort_around(list, p, q, faces, store);
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const Use& u = list[i];
-      const Use& next = list[(i + 1) % list.size()];
-      if (!u.forward && next.forward) join(u, next);
-    }
+    if (list.size() == 2) grouping.manifold.emplace_back(list[0], list[1]);
+    if (list.size() <= 2) continue;  // a single face is left to the check
+    sort_around(list, static_cast<std::int32_t>(key >> 32U),
+                static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
+    grouping.fans.push_back({key, std::move(list), 0});
+  }
+  std::sort(grouping.fans.begin(), grouping.fans.end(),
+            [](const Fan& a, const Fan& b) { return a.key < b.key; });
+  UnionFind<std::size_t> corners = grouping.corners(faces.size());
+  for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
+    corners = grouping.corners(faces.size());
   }
   Sheets out;
   std::unordered_map<std::size_t, std::int32_t> vertex;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "clip/solid/solid_oracle.h"
+#include "support/case_budget.h"
 
 namespace contain::test {
 namespace {
@@ -132,6 +133,16 @@ TEST(MeshBoolean, SolidsTouchingAlongAnEdgeOrAtAPointKeepTheirSheetsApart) {
   EXPECT_EQ(exact_volume(x.mesh), 14);
 }
 
+// Found by the random lattice test: A and C meet in a face, B sits on C and against A's top
+// edge, D against all three. At (1, 1, 3) the union's surface touches itself along the edge to
+// (1, 2, 3) and is connected all around that corner: pairing the faces by wedges there would
+// write the edge twice; the other pairing keeps every directed edge matched once.
+TEST(MeshBoolean, ASurfacePinchedAlongAnEdgeIsWrittenWithEveryEdgeMatchedOnce) {
+  const std::vector<Mesh> in = {box_mesh({0, 0, 1}, {1, 2, 3}), box_mesh({1, 0, 3}, {2, 2, 4}),
+                                box_mesh({1, 0, 1}, {3, 1, 3}), box_mesh({0, 2, 0}, {2, 4, 4})};
+  EXPECT_EQ(exact_volume(checked(in, Op::union_).mesh), 26);
+}
+
 TEST(MeshBoolean, ATinyRotationGivesTheOraclesAnswer) {
   const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
   Mesh turned = a;  // about z by 1e-12 radians around the box's centre
@@ -195,15 +206,70 @@ TEST(MeshBoolean, TinyAndLargeCoordinatesAndOneUlpShifts) {
 TEST(MeshBoolean, RandomSphereAndTetrahedraPairsAgreeWithTheOracle) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int trial = 0; trial < 6; ++trial) {
+  for (int trial = 0; trial < case_budget(4, 2); ++trial) {
     const Mesh a = icosphere(1, 1.0, {0, 0, 0});
     const Mesh b = icosphere(1, 0.8, {u(rng), u(rng), u(rng)});
     for (const Op op : all_ops)
-      (void)checked({a, b}, op, 100, static_cast<unsigned>(trial));
+      (void)checked({a, b}, op, 50, static_cast<unsigned>(trial));
     const Mesh t = tetrahedron({u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)},
                                {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)});
     for (const Op op : all_ops)
-      (void)checked({a, t}, op, 100, static_cast<unsigned>(trial));
+      (void)checked({a, t}, op, 50, static_cast<unsigned>(trial));
+  }
+}
+
+// Boxes on a coarse integer lattice: faces coincide, overlap in part, touch along edges and at
+// corners all the time; three inputs at a time through every operation, and one n-ary union.
+TEST(MeshBoolean, RandomLatticeBoxesAgreeWithTheOracle) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> c(0, 4);
+  const auto random_box = [&] {
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = c(rng);
+      hi[k] = c(rng);
+      if (lo[k] > hi[k]) std::swap(lo[k], hi[k]);
+      if (lo[k] == hi[k]) ++hi[k];
+    }
+    return box_mesh({double(lo[0]), double(lo[1]), double(lo[2])},
+                    {double(hi[0]), double(hi[1]), double(hi[2])});
+  };
+  for (int trial = 0; trial < case_budget(8, 4); ++trial) {
+    const std::vector<Mesh> in = {random_box(), random_box(), random_box()};
+    for (const Op op : all_ops)
+      (void)checked(in, op, 60, static_cast<unsigned>(trial));
+  }
+  std::vector<Mesh> many;
+  for (int i = 0; i < 12; ++i)
+    many.push_back(random_box());
+  (void)checked(many, Op::union_, 100);
+}
+
+// A sphere turned a quarter about z keeps its poles: the two meshes cross at many points within
+// 1e-16 of each other. The exact arrangement is right for every operation (closed by point
+// number, sheets apart); rounding it needs the repair for difference (points merged) and, for
+// xor, more than the crude repair does: there the documented answer is the degenerate error.
+TEST(MeshBoolean, ASphereWithItselfAndItselfTurnedAQuarter) {
+  const Mesh a = icosphere(2, 1.0, {0, 0, 0});
+  Mesh turned = a;
+  for (Vec3& v : turned.vertices)
+    v = {-v.y, v.x, v.z};
+  const int samples = case_budget(40, 8);
+  for (const Op op : all_ops) {
+    const clip::MeshBooleanResult same = checked({a, a}, op, samples);
+    if (op == Op::union_ || op == Op::intersection) {
+      EXPECT_EQ(exact_volume(same.mesh), exact_volume(a));
+    } else {
+      EXPECT_TRUE(same.mesh.triangles.empty());
+    }
+    if (op != Op::xor_) (void)checked({a, turned}, op, samples);
+  }
+  const std::vector<Mesh> in = {a, turned};
+  const Result<clip::MeshBooleanResult> x = clip::mesh_boolean(in, {.op = Op::xor_});
+  if (x.ok()) {
+    EXPECT_EQ(invalid_reason(x->mesh), "");
+  } else {
+    EXPECT_EQ(x.error().kind, ErrorKind::degenerate) << x.error().message;
   }
 }
 
@@ -231,6 +297,20 @@ TEST(MeshBoolean, AnOpenInputIsAnErrorNamingTheInputAndAnEdge) {
   EXPECT_EQ(r.error().kind, ErrorKind::invalid_value);
   EXPECT_NE(r.error().message.find("input 1"), std::string::npos) << r.error().message;
   EXPECT_NE(r.error().message.find(" -> "), std::string::npos) << r.error().message;
+}
+
+TEST(MeshBoolean, NonFiniteCoordinatesAndBadIndicesAreErrorsNamingTheInput) {
+  Mesh nan_box = box_mesh({0, 0, 0}, {1, 1, 1});
+  nan_box.vertices[3].y = std::nan("");
+  Mesh bad_index = box_mesh({0, 0, 0}, {1, 1, 1});
+  bad_index.triangles[0][1] = 8;
+  for (const Mesh& bad : {nan_box, bad_index}) {
+    const std::vector<Mesh> in = {box_mesh({0, 0, 0}, {2, 2, 2}), bad};
+    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().kind, ErrorKind::invalid_value);
+    EXPECT_NE(r.error().message.find("input 1"), std::string::npos) << r.error().message;
+  }
 }
 
 TEST(MeshBoolean, NoInputAndEmptyInputsAreTheEmptySolid) {

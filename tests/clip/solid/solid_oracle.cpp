@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "contain/collide/self_intersections.h"
+#include "scenes/scenes.h"
 #include "support/exact.h"
 
 namespace contain::test {
@@ -98,19 +99,7 @@ bool in_result(clip::Op op, std::span<const int> windings) {
 }
 
 Mesh box_mesh(Vec3 lo, Vec3 hi) {
-  Mesh m;
-  for (int i = 0; i < 8; ++i) {
-    m.vertices.push_back(
-        {(i & 1) != 0 ? hi.x : lo.x, (i & 2) != 0 ? hi.y : lo.y, (i & 4) != 0 ? hi.z : lo.z});
-  }
-  // Faces as quads (counter-clockwise from outside), two triangles each.
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return m;
+  return scenes::box_mesh(Box3{lo, hi});
 }
 
 Mesh tetrahedron(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
