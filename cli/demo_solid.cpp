@@ -25,7 +25,7 @@ Status solid_scene(const Context& context) {
       unmatched_edge(mesh) ? "NOT closed" : "closed");
   if (Status s = io::write_mesh(mesh, context.dir / "solid-bracket.obj"); !s) return s;
   record("solid-bracket.obj");
-  const io::View3 view{.azimuth_deg = -60.0, .elevation_deg = 35.0};
+  const io::View3 view{.azimuth_deg = 60.0, .elevation_deg = 40.0};  // from the front, above
   io::SvgCanvas canvas(io::projected_bounds(mesh.vertices, view), 800);
   canvas.title("contain clip --csg: bracket, exact mesh booleans");
   canvas.mesh(mesh, view);
