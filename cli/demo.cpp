@@ -72,7 +72,8 @@ int run_demo(const DemoOptions& o) {
                           demo::solid_scene,
                           demo::bound_scene,
                           demo::distance_slice_scene,
-                          demo::clearance_scene};
+                          demo::clearance_scene,
+                          demo::slice_scene};
   for (Scene scene : scenes) {
     const Status status = scene(context);
     if (!status) return report(status.error());

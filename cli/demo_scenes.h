@@ -64,5 +64,6 @@ Status solid_scene(const Context& context);
 Status bound_scene(const Context& context);
 Status distance_slice_scene(const Context& context);
 Status clearance_scene(const Context& context);
+Status slice_scene(const Context& context);
 
 }  // namespace contain::cli::demo

@@ -13,6 +13,7 @@ Verb add_demo(CLI::App& app);
 Verb add_clip(CLI::App& app);
 Verb add_collide(CLI::App& app);
 Verb add_distance(CLI::App& app);
+Verb add_slice(CLI::App& app);
 
 /// Every verb, in the order `contain --help` lists them.
 std::vector<Verb> all_verbs(CLI::App& app);

@@ -10,28 +10,16 @@
 
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/point_in_mesh.h"
+#include "fuzz_meshes.h"
 #include "fuzz_support.h"
 
 namespace {
 
 using namespace contain;
 
-constexpr std::array<TriangleIndices, 8> kOctahedron{
-    {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
-constexpr std::array<TriangleIndices, 12> kCube{{{0, 2, 1},
-                                                 {0, 3, 2},
-                                                 {4, 5, 6},
-                                                 {4, 6, 7},
-                                                 {0, 1, 5},
-                                                 {0, 5, 4},
-                                                 {1, 2, 6},
-                                                 {1, 6, 5},
-                                                 {2, 3, 7},
-                                                 {2, 7, 6},
-                                                 {3, 0, 4},
-                                                 {3, 4, 7}}};
-constexpr std::array<TriangleIndices, 8> kTwoTetrahedra{
-    {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}, {4, 5, 6}, {4, 7, 5}, {5, 7, 6}, {6, 7, 4}}};
+using fuzz::kCube;
+using fuzz::kOctahedron;
+using fuzz::kTwoTetrahedra;
 
 }  // namespace
 

@@ -128,10 +128,18 @@ py::array_t<std::int64_t> query_pairs(const inside::HolderTable& table,
 }
 
 void check_policy(const std::string& boundary) {
-  if (boundary != "inside" && boundary != "outside" && boundary != "raise") {
-    throw py::value_error("boundary must be 'inside', 'outside' or 'raise', got '" + boundary +
-                          "'");
+  if (boundary != "inside" && boundary != "outside" && boundary != "raise" &&
+      boundary != "report") {
+    throw py::value_error("boundary must be 'inside', 'outside', 'raise' or 'report', got '" +
+                          boundary + "'");
   }
+}
+
+// locate's answer: the pairs, or for 'report' (the command's default `--boundary report`, whose
+// `ID:on` marks a boundary holder) the pairs with their locations, as holders() gives them.
+py::object located(const inside::HolderTable& table, const std::string& boundary) {
+  if (boundary == "report") return py::cast(pair_arrays(table, [](Location) { return true; }));
+  return query_pairs(table, boundary);
 }
 
 template <class Index, class Point>
@@ -162,8 +170,10 @@ into ids), sorted by point then shape. Exact on the given doubles.
 
 points: (N, {dim}) array of real numbers (a C-contiguous float64 array is read in place).
 boundary: what a point exactly on a shape's boundary gives: 'inside' (the pair is kept, as
-    predicate='intersects' / 'covered_by'), 'outside' (left out, as 'within'), or 'raise'
-    (ContainError naming the first such point).
+    predicate='intersects' / 'covered_by'), 'outside' (left out, as 'within'), 'raise'
+    (ContainError naming the first such point), or 'report' (the command's default
+    --boundary report, whose ID:on marks such a holder): the tuple (pairs, location) of
+    holders(), location 1 inside, 0 on the boundary, for each pair of 'inside'.
 threads: threads for the batch (0: every core); the answer does not depend on it.
 )doc";
 
@@ -279,7 +289,7 @@ of a source holding several. Coordinates are the doubles of the file.
           [](const Layer& layer, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_policy(boundary);
-            return query_pairs(
+            return located(
                 locate_table<inside::RegionLayer, Vec2>(layer.index, points.object, 2, threads),
                 boundary);
           },
@@ -387,7 +397,7 @@ Example:
           [](const Scene& scene, const ArrayLike& points, const std::string& boundary,
              int threads) {
             check_policy(boundary);
-            return query_pairs(
+            return located(
                 locate_table<inside::SolidScene, Vec3>(scene.solids(), points.object, 3, threads),
                 boundary);
           },

@@ -1,4 +1,5 @@
-// contain.validate_mesh (contain.MeshReport) and contain.weld_vertices.
+// contain.validate_mesh (contain.MeshReport), contain.weld_vertices and
+// contain.self_intersections (contain.SelfIntersections).
 
 #include <pybind11/stl.h>
 
@@ -8,6 +9,7 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/collide/self_intersections.h"
 #include "contain/shapes/mesh_validation.h"
 #include "shapes.h"
 
@@ -47,9 +49,82 @@ py::dict report_dict(const MeshReport& r) {
   return d;
 }
 
+// The pairs as an (K, 2) int32 array, first < second in each row.
+py::array_t<std::int32_t> pair_array(const std::vector<collide::TrianglePair>& pairs) {
+  py::array_t<std::int32_t> out({static_cast<py::ssize_t>(pairs.size()), py::ssize_t{2}});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    view(static_cast<py::ssize_t>(k), 0) = pairs[k].first;
+    view(static_cast<py::ssize_t>(k), 1) = pairs[k].second;
+  }
+  return out;
+}
+
+std::size_t count_argument(long long value, const char* name) {
+  if (value < 0) throw py::value_error(std::string(name) + " must be at least 0");
+  return static_cast<std::size_t>(value);
+}
+
+void bind_self_intersections(py::module_& m) {
+  using collide::SelfIntersections;
+  py::class_<SelfIntersections>(m, "SelfIntersections", R"doc(
+What contain.self_intersections found: pairs of triangles of one mesh that meet where they are
+not joined. pairs: (K, 2) int32 array of triangle numbers (first < second), the first K <= keep
+pairs found, in a deterministic order; count: pairs found (every pair unless the search stopped
+at limit: stopped). bool(result): the mesh crosses (or folds onto) itself.
+)doc")
+      .def_property_readonly(
+          "pairs", [](const SelfIntersections& s) { return pair_array(s.pairs); },
+          "(K, 2) int32 array: the first pairs found (at most keep), first < second a row.")
+      .def_readonly("count", &SelfIntersections::count,
+                    "Pairs found: all of them unless the search stopped at limit.")
+      .def_readonly("stopped", &SelfIntersections::stopped,
+                    "True when the search stopped at limit, so count may be short of the total.")
+      .def("__bool__", [](const SelfIntersections& s) { return !s.empty(); })
+      .def("__repr__", [](const SelfIntersections& s) {
+        std::string text = "contain.SelfIntersections(" + std::to_string(s.count) +
+                           (s.stopped ? "+" : "") + (s.count == 1 ? " pair" : " pairs");
+        if (!s.pairs.empty()) {
+          text += ", first (" + std::to_string(s.pairs.front().first) + ", " +
+                  std::to_string(s.pairs.front().second) + ")";
+        }
+        return text + ")";
+      });
+
+  m.def(
+      "self_intersections",
+      [](const MeshLike& mesh, long long keep, long long limit) {
+        const collide::SelfIntersectionsOptions options{.keep = count_argument(keep, "keep"),
+                                                        .limit = count_argument(limit, "limit")};
+        const MeshRef ref = to_mesh(mesh.object, "mesh");
+        py::gil_scoped_release release;
+        return collide::self_intersections(*ref, options);
+      },
+      "mesh"_a, py::kw_only(), "keep"_a = 8, "limit"_a = 0, R"doc(
+The pairs of triangles of a mesh (anything mesh-like) that meet where they are not joined: the
+check behind the command's warning that a closed mesh overlaps itself (inside() by ray parity
+then calls a point inside both overlapping parts 'out').
+
+Triangles that share a corner (a vertex at the same coordinates: an unwelded mesh is judged as
+its welded twin) count only when they meet beyond the corners they share (a triangle crossing
+its neighbour, a fold onto the neighbour's plane); triangles sharing nothing count for any
+common point, touching included. Degenerate and duplicated triangles are left to
+validate_mesh. Exact (orient3d and orient2d signs); deterministic; one thread, the GIL released.
+
+keep: at most this many pairs are returned in .pairs; limit: stop once this many are found
+(0: count every pair; 1 answers "does it cross itself at all" for the cost of the first pair).
+Returns a SelfIntersections (pairs, count, stopped; false when the mesh does not cross itself).
+
+Example:
+    >>> found = contain.self_intersections("part.stl", limit=1)
+    >>> if found: print("triangles", *found.pairs[0], "cross")
+)doc");
+}
+
 }  // namespace
 
 void bind_mesh_report(py::module_& m) {
+  bind_self_intersections(m);
   py::class_<MeshReport>(m, "MeshReport", R"doc(
 What a triangle mesh is as a surface (contain.validate_mesh): counts, the defects found and the
 properties they imply. Edges are unordered pairs of vertex indices (weld_vertices first if a

@@ -17,12 +17,13 @@ void bind_bound(py::module_& m);         // aabb, bounding_sphere, bounding_circ
 void bind_csg(py::module_& m);           // Csg, CsgSolid
 void bind_convex(py::module_& m);        // ConvexPolyhedron, ConvexShape, convex_collide
 void bind_clip_regions(py::module_& m);  // clip_polygon, clip_mesh, clip_polylines, ...
-void bind_mesh_report(py::module_& m);   // validate_mesh, MeshReport, weld_vertices
+void bind_mesh_report(py::module_& m);   // validate_mesh, MeshReport, self_intersections, ...
 void bind_primitives(py::module_& m);    // tri_tri, tri_tri_2d, pair_search, orient2d, ...
 void bind_winding(py::module_& m);       // point_in_triangle, winding_number, WindingNumber, ...
-void bind_tile(py::module_& m);          // BoxClipper, tile
+void bind_tile(py::module_& m);          // BoxClipper, tile, iter_tiles
 void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
 void bind_distance(py::module_& m);      // MeshDistance, RegionDistance, MeshPairDistance
 void bind_mesh_boolean(py::module_& m);  // mesh_boolean, repair_solid, MeshBooleanResult
+void bind_slice(py::module_& m);         // slice_mesh, shadow, mesh_section
 
 }  // namespace contain::python

@@ -220,6 +220,30 @@ BigFloat BigFloat::scaled(std::int64_t k) const {
   return r;
 }
 
+namespace {
+
+std::uint64_t power_mod(std::uint64_t base, std::uint64_t e, std::uint64_t m) {
+  std::uint64_t r = 1 % m;
+  for (; e != 0; e >>= 1) {
+    if ((e & 1U) != 0) r = r * base % m;
+    base = base * base % m;
+  }
+  return r;
+}
+
+}  // namespace
+
+std::uint32_t BigFloat::residue(std::uint32_t prime) const {
+  assert(prime % 2 == 1 && prime < (std::uint32_t{1} << 31));
+  std::uint64_t r = 0;  // below prime < 2^31: r * 2^32 + limb fits in 64 bits
+  for (std::size_t i = limbs_.size(); i-- > 0;)
+    r = ((r << 32) | limbs_[i]) % prime;
+  const std::uint64_t two = exponent_ >= 0 ? 2 : (prime + 1) / 2;  // (prime + 1) / 2 = 1 / 2
+  const auto e = static_cast<std::uint64_t>(exponent_ >= 0 ? exponent_ : -exponent_);
+  r = r * power_mod(two, e, prime) % prime;
+  return static_cast<std::uint32_t>(negative_ && r != 0 ? prime - r : r);
+}
+
 BigVec3 to_big(Vec3 v) {
   return {BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)};
 }

@@ -9,17 +9,27 @@
 // evaluated with a proven bound over an interval decide them in microseconds. Whatever the
 // bounds leave open goes to the exact stage unchanged, so the answers stay exact.
 //
-// - Isolation: Descartes' rule of signs in the Bernstein basis on [lo, hi], de Casteljau
-//   subdivision at dyadic midpoints with certified signs there (Basu, Pollack, Roy, "Algorithms
-//   in Real Algebraic Geometry", 2nd ed., 10.2). One sign variation and opposite certified end
-//   signs: exactly one root, simple, in the open interval.
+// - Isolation: Descartes' rule of signs in the Bernstein basis on [lo, hi], subdivision at
+//   doubles halfway in the order of doubles (so roots near 0 are reached in a few steps) with
+//   certified signs there (Basu, Pollack, Roy, "Algorithms in Real Algebraic Geometry", 2nd ed.,
+//   10.2). One sign variation and opposite certified end signs: exactly one root, simple, in the
+//   open interval. Roots at lo or hi are divided out exactly first. Roots closer together than
+//   the doubles resolve (1 - 2^-1000 next to 1 - 2^-1001) are separated in deeper frames: the
+//   polynomial moved exactly onto the interval left (t = origin + width u, u in [0, 1], read from
+//   its upper end when the roots hug it), whose doubles resolve anew.
 // - Signs at a root: the polynomial over the root's bracket of doubles (interval Horner), the
 //   bracket halved on the doubles (its signs certified the same way, exactly where not) until the
-//   sign is certified or the bracket is two adjacent doubles.
+//   sign is certified or the bracket is two adjacent doubles; then, unless a gcd modulo primes
+//   proves that q cannot vanish there, the exact zero test gcd(p, q mod p) (cheaper than a
+//   Tarski query); then the same filter on frames moved onto the bracket, level after level,
+//   until q's sign is certified (it is, q not vanishing at the root).
+//
+// Bounded cost: every loop has a cap (levels, calls); past one the exact stage answers.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -40,7 +50,6 @@ using WideCoeffs = std::vector<Wide>;
 // 2^+-16382; the margin keeps products with the interval's points finite).
 constexpr std::int64_t kMaxExponent = 12000;
 constexpr int kMaxDegree = 12;
-constexpr int kMaxDepth = 64;
 
 // c's coefficients within their bounds: BigFloat::frexp is within 2^-52 of the value relative
 // (2^-50 taken), scaled by a power of two exactly. Nothing when an exponent is out of range.
@@ -149,107 +158,216 @@ int max_variations(const std::vector<std::optional<Sign>>& signs) {
   return std::max({neg, pos, all_zero, 0});
 }
 
+// c(origin + width u) times a power of two, exactly: the Taylor shift (c(u + origin) by
+// synthetic division, Knuth, TAOCP vol. 2, 4.6.4), then u^k scaled by width^k.
+Coeffs moved(Coeffs c, const BigFloat& origin, const BigFloat& width) {
+  const std::size_t n = c.size();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    for (std::size_t k = n - 1; k-- > i;)
+      c[k] = c[k] + origin * c[k + 1];
+  }
+  BigFloat power(1.0);
+  for (std::size_t k = 1; k < n; ++k) {
+    power = power * width;
+    c[k] = c[k] * power;
+  }
+  trim(c);
+  // A power of two scales every value alike (signs and roots kept): the largest coefficient
+  // near 1, so that frames of narrow intervals (width^k far below 2^-16382) stay in long
+  // double's range.
+  std::int64_t top = std::numeric_limits<std::int64_t>::min();
+  for (const BigFloat& x : c) {
+    std::int64_t e = 0;
+    if (x.frexp(e) != 0.0) top = std::max(top, e);
+  }
+  if (top != std::numeric_limits<std::int64_t>::min()) {
+    for (BigFloat& x : c)
+      x = x.scaled(-top);
+  }
+  return c;
+}
+
+// Where the isolation runs: t itself (level 0, the doubles of [lo, hi]; origin 0, width 1), or
+// u in [0, 1] with t = origin + width u and the polynomial moved there exactly from the frame
+// above (deeper levels, for roots closer than the doubles of the level above resolve: u's
+// doubles resolve finely near u = 0, and the moved coefficients rounded describe p near its
+// roots rather than at 0). A negative width reads the interval from its upper end, for roots
+// hugging it, where u's doubles would be coarse.
+struct Frame {
+  const Coeffs& p;  // the polynomial in this frame's variable, exact
+  const WideCoeffs& pw;
+  BigFloat origin, width;
+  double top = 1.0;                 // the frame's upper end in its variable
+  double below = 0.0, above = 0.0;  // doubles enclosing the frame in t (levels >= 1)
+  int level = 0;
+  [[nodiscard]] BigFloat at(double u) const { return origin + width * BigFloat(u); }
+  [[nodiscard]] bool reversed() const { return width.sign() == Sign::negative; }
+};
+
+// Levels of the isolation (each narrows an interval by 2^53 at least, or resolves a root
+// hugging an end) and calls of `isolate` for one polynomial (uncertain signs may split many
+// intervals): past them, the exact isolation answers.
+constexpr int kMaxLevels = 24;
+constexpr int kMaxCalls = 2048;
+
 struct Isolation {
   const Coeffs& p;
   std::vector<RealRoot>& out;
+  int max_levels = 0;
+  int calls = 0;
 };
 
-// Roots of the polynomial with scaled Bernstein coefficients b on [a, b_end] (doubles), whose
-// end signs are certified; false when the bounds do not certify an isolation.
-bool isolate(const WideCoeffs& b, double a, double b_end, Sign s_a, Sign s_b, int depth,
+bool isolate(double a, double b_end, Sign s_a, Sign s_b, bool fresh, const Frame& frame,
+             Isolation& iso);
+
+// Isolation on [a, b_end] of the frame in a new frame over it, read from b_end when that is
+// the frame's upper end (the interval's ends keep their signs).
+bool isolate_deeper(double a, double b_end, Sign s_a, Sign s_b, const Frame& frame,
+                    Isolation& iso) {
+  if (frame.level + 1 >= iso.max_levels) return false;
+  const bool flip = b_end == frame.top;
+  const BigFloat start(flip ? b_end : a);
+  const BigFloat step = flip ? BigFloat(a) - BigFloat(b_end) : BigFloat(b_end) - BigFloat(a);
+  const Coeffs p = moved(frame.p, start, step);
+  const std::optional<WideCoeffs> pw = to_wide(p);
+  if (!pw) return false;
+  const Frame deeper{p,
+                     *pw,
+                     frame.at(flip ? b_end : a),
+                     frame.width * step,
+                     1.0,
+                     frame.level == 0 ? a : frame.below,
+                     frame.level == 0 ? b_end : frame.above,
+                     frame.level + 1};
+  return flip ? isolate(0.0, 1.0, s_b, s_a, true, deeper, iso)
+              : isolate(0.0, 1.0, s_a, s_b, true, deeper, iso);
+}
+
+void emit(double a, double b_end, Sign s_a, Sign s_b, const Frame& frame, Isolation& iso) {
+  auto state = std::make_shared<RealRoot::State>();
+  state->p = iso.p;
+  const bool rev = frame.reversed();
+  state->lo = frame.at(rev ? b_end : a);
+  state->hi = frame.at(rev ? a : b_end);
+  state->sign_lo = rev ? s_b : s_a;
+  iso.out.emplace_back(std::move(state), frame.level == 0 ? a : frame.below,
+                       frame.level == 0 ? b_end : frame.above, false);
+}
+
+// The roots in (a, b_end) (doubles of the frame's variable, end signs certified and nonzero),
+// appended in increasing order of t; false when the bounds do not certify an isolation. Each
+// interval gets its Bernstein coefficients from the frame's (so the split point may be any
+// double: halving the doubles in between, which reaches roots near 0 in a few steps); an
+// interval split from a bigger one whose coefficients no longer certify, or two adjacent
+// doubles, goes to a deeper frame.
+bool isolate(double a, double b_end, Sign s_a, Sign s_b, bool fresh, const Frame& frame,
              Isolation& iso) {
-  std::vector<std::optional<Sign>> signs;
-  signs.reserve(b.size());
-  signs.push_back(s_a);
-  for (std::size_t k = 1; k + 1 < b.size(); ++k)
+  if (++iso.calls > kMaxCalls) return false;
+  const WideCoeffs b = scaled_bernstein(frame.pw, a, b_end);
+  std::vector<std::optional<Sign>> signs{s_a};
+  bool uncertain = false;
+  for (std::size_t k = 1; k + 1 < b.size(); ++k) {
     signs.push_back(certified(b[k]));
+    uncertain = uncertain || !signs.back();
+  }
   signs.push_back(s_b);
   const int var = max_variations(signs);
   if (var == 0) return true;
-  if (var == 1 && s_a != Sign::zero && s_b == -s_a) {
-    auto state = std::make_shared<RealRoot::State>();
-    state->p = iso.p;
-    state->lo = BigFloat(a);
-    state->hi = BigFloat(b_end);
-    state->sign_lo = s_a;
-    iso.out.emplace_back(std::move(state), a, b_end, false);
+  if (var == 1 && s_b == -s_a) {
+    emit(a, b_end, s_a, s_b, frame, iso);
     return true;
   }
-  if (depth >= kMaxDepth) return false;
-  // The midpoint must be a double strictly inside (the dyadic midpoint of doubles is one unless
-  // the ends are adjacent or far apart in exponent and precision).
-  const double mid = a + 0.5 * (b_end - a);
-  if (!(mid > a && mid < b_end) || BigFloat(mid) + BigFloat(mid) != BigFloat(a) + BigFloat(b_end)) {
-    return false;
+  const std::int64_t ka = order_key(a), kb = order_key(b_end);
+  if (key_distance(ka, kb) < 2 || (uncertain && !fresh)) {
+    return isolate_deeper(a, b_end, s_a, s_b, frame, iso);
   }
-  // de Casteljau at 1/2: the left half's coefficients are the first of each level, the right
-  // half's the last (in reverse).
-  const std::size_t n = b.size() - 1;
-  WideCoeffs level = b, left(n + 1), right(n + 1);
-  const Wide half(0.5);
-  left[0] = level[0];
-  right[n] = level[n];
-  for (std::size_t r = 1; r <= n; ++r) {
-    for (std::size_t k = 0; k + r <= n; ++k)
-      level[k] = (level[k] + level[k + 1]) * half;
-    left[r] = level[0];
-    right[n - r] = level[n - r];
+  const double mid = from_key(middle_key(ka, kb));
+  const Sign s_mid = sign_at_double(frame.p, frame.pw, mid);
+  if (s_mid == Sign::zero) return false;
+  if (frame.reversed()) {
+    return isolate(mid, b_end, s_mid, s_b, false, frame, iso) &&
+           isolate(a, mid, s_a, s_mid, false, frame, iso);
   }
-  const std::optional<Sign> s_mid = certified(left[n]);
-  if (!s_mid || *s_mid == Sign::zero) return false;
-  return isolate(left, a, mid, s_a, *s_mid, depth + 1, iso) &&
-         isolate(right, mid, b_end, *s_mid, s_b, depth + 1, iso);
+  return isolate(a, mid, s_a, s_mid, false, frame, iso) &&
+         isolate(mid, b_end, s_mid, s_b, false, frame, iso);
+}
+
+// Divides c by (t - x) while x is a root; true when it was one.
+bool divide_out(Coeffs& c, double x) {
+  bool root = false;
+  while (degree_of(c) >= 1 && sign_at(c, BigFloat(x)) == Sign::zero) {
+    c = deflate(c, BigFloat(x));
+    root = true;
+  }
+  return root;
+}
+
+RealRoot root_at(const Coeffs& p, double x) {
+  auto state = std::make_shared<RealRoot::State>();
+  state->p = p;
+  state->lo = BigFloat(x);
+  state->hi = state->lo;
+  state->exact = true;
+  return RealRoot(std::move(state), x, x, true);
 }
 
 // ---- signs at roots beyond double precision -----------------------------------------------
 
-BigFloat magnitude(const BigFloat& x) {
-  return x.sign() == Sign::negative ? -x : x;
+// Levels of refinement of a root below double spacing, once q is known not to vanish at the
+// root (each narrows the bracket: by 2^53 when its bisection reaches two adjacent doubles of u).
+constexpr int kLevels = 256;
+// Bisection steps of a level that may take exact signs of p.
+constexpr int kExactSteps = 4;
+
+// Whether q vanishes at the root in (lo, hi) (exact ends, not roots of p): exactly when the root
+// is one of g = gcd(p, q mod p)'s, that is when g changes sign on (lo, hi): g divides p, so its
+// roots there are at most the root, simple. Cheaper than the Tarski query (no product P' q, so
+// coefficients half as long), and asked only when the modular bound leaves a common root open.
+bool vanishes_at_root(const Coeffs& q, const RealRoot::State& s, const BigFloat& lo,
+                      const BigFloat& hi) {
+  const Coeffs r = positive_pseudo_remainder(q, s.p);
+  if (r.empty()) return true;
+  const Coeffs g = gcd(s.p, r);
+  return degree_of(g) >= 1 && sign_at(g, lo) != sign_at(g, hi);
 }
 
-BigFloat value_at(const Coeffs& q, const BigFloat& t) {
-  BigFloat value = q.back();
-  for (std::size_t k = q.size() - 1; k-- > 0;)
-    value = value * t + q[k];
-  return value;
-}
-
-// Max |q'| over [-m, m] and above: sum k |q_k| m^(k-1), exactly.
-BigFloat derivative_bound(const Coeffs& q, const BigFloat& m) {
-  BigFloat sum, power(1.0);
-  for (std::size_t k = 1; k < q.size(); ++k) {
-    sum = sum + BigFloat(static_cast<double>(k)) * magnitude(q[k]) * power;
-    power = power * m;
-  }
-  return sum;
-}
-
-constexpr int kRefineSteps = 2048;
-
-// The sign of q at the root when q keeps one sign on a bracket of the root: the root's interval
-// (within the doubles a <= b) halved on dyadic numbers with exact signs of p, and q's exact
-// values at the ends with a bound on its variation (|q(t) - q(lo)| <= max |q'| (hi - lo)).
-// Signs that are not close calls at double precision are decided within ~64 more halvings;
-// nothing when q (nearly) vanishes at the root: the caller's Tarski query answers.
-std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, double a, double b) {
-  BigFloat lo = std::max(s.lo, BigFloat(a)), hi = std::min(s.hi, BigFloat(b));
-  Sign sign_lo = s.sign_lo;
-  if (lo != s.lo) {
-    sign_lo = sign_at(s.p, lo);
-    if (sign_lo == Sign::zero) return sign_at(q, lo);
-  }
-  for (int step = 0; step < kRefineSteps; ++step) {
-    if (step % 16 == 0) {
-      const BigFloat ql = value_at(q, lo), qh = value_at(q, hi);
-      if (ql.sign() != Sign::zero && qh.sign() == ql.sign()) {
-        const BigFloat m = std::max(magnitude(lo), magnitude(hi));
-        if (magnitude(ql) > derivative_bound(q, m) * (hi - lo)) return ql.sign();
-      }
+// The sign of q at the root in (lo, hi) (exact ends, p of sign sign_lo at lo, of the opposite
+// sign at hi, one simple root between), the root closer to a double spacing than the filter
+// over t resolved. p and q are moved to u in [0, 1] (t = lo + (hi - lo) u), exactly, so that
+// the doubles of u resolve the root finely near u = 0 whatever its distance from t's doubles,
+// and their coefficients rounded to long double describe the polynomials near the root rather
+// than at 0; then the filter over t's doubles runs on u's. Each level moves them again onto the
+// bracket of u left, once the bisection reaches two adjacent doubles or p's sign there is a close
+// call past the first steps (read from its upper end when that is u = 1, where u's doubles are
+// coarse). Nothing when the levels run out: the caller's Tarski query answers.
+std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, const BigFloat& lo,
+                                    const BigFloat& hi) {
+  Coeffs p = moved(s.p, lo, hi - lo), qu = moved(q, lo, hi - lo);
+  Sign s0 = s.sign_lo;  // p's sign at u = 0
+  for (int level = 0; level < kLevels; ++level) {
+    const std::optional<WideCoeffs> pw = to_wide(p), qw = to_wide(qu);
+    if (!pw || !qw) return std::nullopt;
+    std::int64_t a = order_key(0.0), b = order_key(1.0);
+    for (int step = 0;; ++step) {
+      if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) return *v;
+      if (key_distance(a, b) < 2) break;
+      const std::int64_t mk = middle_key(a, b);
+      const double m = from_key(mk);
+      // Once p's sign is a close call in this frame, the next frame is cheaper than exact
+      // signs (the first steps take them, so that every level narrows the bracket).
+      std::optional<Sign> sm = certified(over(*pw, m, m));
+      if (!sm && step >= kExactSteps) break;
+      if (!sm) sm = sign_at(p, BigFloat(m));
+      if (*sm == Sign::zero) return sign_at_double(qu, *qw, m);  // the root is at u = m
+      (*sm == s0 ? a : b) = mk;
     }
-    const BigFloat mid = (lo + hi).scaled(-1);
-    const Sign sm = sign_at(s.p, mid);
-    if (sm == Sign::zero) return sign_at(q, mid);
-    (sm == sign_lo ? lo : hi) = mid;
+    const double ua = from_key(a), ub = from_key(b);
+    const bool flip = ub == 1.0;
+    const BigFloat origin(flip ? ub : ua);
+    const BigFloat width = flip ? BigFloat(ua) - BigFloat(ub) : BigFloat(ub) - BigFloat(ua);
+    p = moved(std::move(p), origin, width);
+    qu = moved(std::move(qu), origin, width);
+    if (flip) s0 = -s0;
   }
   return std::nullopt;
 }
@@ -259,13 +377,23 @@ std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, d
 std::optional<std::vector<RealRoot>> filtered_real_roots(const Coeffs& p, double lo, double hi) {
   const int n = degree_of(p);
   if (!(lo < hi) || n < 1 || n > kMaxDegree) return std::nullopt;
-  const std::optional<WideCoeffs> pw = to_wide(p);
-  if (!pw) return std::nullopt;
-  const Sign s_lo = sign_at_double(p, *pw, lo), s_hi = sign_at_double(p, *pw, hi);
-  if (s_lo == Sign::zero || s_hi == Sign::zero) return std::nullopt;
+  // Roots at the ends are divided out exactly, so that the isolation sees nonzero end signs.
+  Coeffs inner = p;
+  const bool root_lo = divide_out(inner, lo), root_hi = divide_out(inner, hi);
   std::vector<RealRoot> out;
-  Isolation iso{p, out};
-  if (!isolate(scaled_bernstein(*pw, lo, hi), lo, hi, s_lo, s_hi, 0, iso)) return std::nullopt;
+  if (root_lo) out.push_back(root_at(p, lo));
+  if (degree_of(inner) >= 1) {
+    const std::optional<WideCoeffs> pw = to_wide(inner);
+    if (!pw) return std::nullopt;
+    const Sign s_lo = sign_at_double(inner, *pw, lo), s_hi = sign_at_double(inner, *pw, hi);
+    // Deeper frames only for a squarefree p: roots of higher multiplicity never separate.
+    Isolation iso{inner, out, gcd_degree_bound(inner, derivative(inner)) == 0 ? kMaxLevels : 1};
+    const Frame top{inner, *pw, BigFloat(), BigFloat(1.0), hi};
+    if (!isolate(lo, hi, s_lo, s_hi, true, top, iso)) {
+      return std::nullopt;
+    }
+  }
+  if (root_hi) out.push_back(root_at(p, hi));
   return out;
 }
 
@@ -293,7 +421,10 @@ std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root) {
     }
     (below ? a : b) = mk;
   }
-  return sign_on_refined(q, s, from_key(a), from_key(b));
+  const BigFloat lo = std::max(s.lo, BigFloat(from_key(a))),
+                 hi = std::min(s.hi, BigFloat(from_key(b)));
+  if (gcd_degree_bound(q, s.p) > 0 && vanishes_at_root(q, s, lo, hi)) return Sign::zero;
+  return sign_on_refined(q, s, lo, hi);
 }
 
 Sign sign_at_double(const Coeffs& p, double t) {

@@ -40,6 +40,9 @@ void trim(Coeffs& c);
 [[nodiscard]] std::vector<Coeffs> sturm_sequence(const Coeffs& p);
 /// Sign changes of the sequence's values at x, zeros skipped.
 [[nodiscard]] int variations(const std::vector<Coeffs>& seq, const BigFloat& x);
+/// An upper bound of the degree of gcd(a, b) (a, b not zero) from gcds modulo two primes
+/// (polynomial_modular.cpp): 0 proves that a and b have no common root.
+[[nodiscard]] int gcd_degree_bound(const Coeffs& a, const Coeffs& b);
 
 // Filters in long double with error bounds (polynomial_filter.cpp): an answer is exact, nothing
 // means the bounds did not decide.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <tuple>
 #include <vector>
 
@@ -21,11 +22,16 @@ struct EdgeUse {
 // The undirected edge {from, to} first, then the direction, then the file order, so that the
 // uses of one edge and of its reverse are neighbours and each run starts at its first triangle.
 bool before(const EdgeUse& a, const EdgeUse& b) {
-  const auto key = [](const EdgeUse& e) {
-    return std::make_tuple(std::min(e.from, e.to), std::max(e.from, e.to), e.from, e.triangle,
-                           e.corner);
+  // The undirected edge packed in one word (vertex numbers are non-negative int32), compared
+  // first: most comparisons of the sort end there.
+  const auto edge = [](const EdgeUse& e) {
+    return (static_cast<std::uint64_t>(std::min(e.from, e.to)) << 32) |
+           static_cast<std::uint64_t>(std::max(e.from, e.to));
   };
-  return key(a) < key(b);
+  const std::uint64_t ea = edge(a);
+  const std::uint64_t eb = edge(b);
+  if (ea != eb) return ea < eb;
+  return std::tie(a.from, a.triangle, a.corner) < std::tie(b.from, b.triangle, b.corner);
 }
 
 std::vector<EdgeUse> directed_edges(const Mesh& welded) {
@@ -41,8 +47,24 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
       }
     }
   }
-  std::sort(edges.begin(), edges.end(), before);
-  return edges;
+  // A counting sort by the lower vertex (vertex numbers are dense), then each vertex's few
+  // edges by `before`: the same order as sorting all by `before`, in linear time. The full sort
+  // was a quarter of slicing 100 planes through a 131k-triangle sphere.
+  std::vector<std::size_t> start(welded.vertices.size() + 1, 0);
+  for (const EdgeUse& e : edges)
+    ++start[static_cast<std::size_t>(std::min(e.from, e.to)) + 1];
+  for (std::size_t v = 1; v < start.size(); ++v)
+    start[v] += start[v - 1];
+  std::vector<EdgeUse> sorted(edges.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const EdgeUse& e : edges)
+    sorted[next[static_cast<std::size_t>(std::min(e.from, e.to))]++] = e;
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [](const EdgeUse& a, const EdgeUse& b) { return before(a, b); });
+  }
+  return sorted;
 }
 
 }  // namespace

@@ -44,7 +44,8 @@ TEST_F(DemoCli, RunsEveryCapabilityWritesThePicturesItNamesAndReportsTheDistance
        {"inside-polygon.svg", "inside-csg.svg", "inside-mesh.svg", "collide.svg", "collide-ccd.svg",
         "clip-segments.svg", "clip-sutherland-hodgman.svg", "clip-boolean.svg", "clip-mesh.svg",
         "clip-mesh.obj", "clip-mesh.ply", "bound-torus.svg", "distance-slice.svg",
-        "distance-clearance.svg", "solid-bracket.obj", "solid-bracket.svg"}) {
+        "distance-clearance.svg", "solid-bracket.obj", "solid-bracket.svg", "slice-layers.svg",
+        "slice-shadow.svg"}) {
     EXPECT_NE(run.out.find(name), std::string::npos) << name;
     const std::filesystem::path file = std::filesystem::path(out_) / name;
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
@@ -76,6 +77,9 @@ TEST_F(DemoCli, RunsEveryCapabilityWritesThePicturesItNamesAndReportsTheDistance
   ASSERT_NE(cells, std::string::npos);
   EXPECT_NE(slice.find("<line", cells), std::string::npos);
   EXPECT_NE(picture("distance-clearance.svg").find("closest pair"), std::string::npos);
+  // The slicing scene: stacked layers, one colour a level, and the shadows.
+  EXPECT_NE(run.out.find("slicing           37 layers"), std::string::npos) << run.out;
+  EXPECT_NE(picture("slice-layers.svg").find("#fde725"), std::string::npos);
 }
 
 }  // namespace

@@ -111,5 +111,27 @@ TEST(BigFloat, VectorHelpersMatchRationalCrossAndDot) {
   }
 }
 
+TEST(BigFloat, ResidueIsTheRationalValueModuloThePrime) {
+  // Products of three doubles of every magnitude (numerators of up to 159 bits, denominators
+  // powers of two up to 2^3222): num * den^-1 mod p, computed by GMP.
+  const std::vector<double> v = samples();
+  for (const unsigned long prime : {2147483647UL, 2147483629UL, 3UL, 65537UL}) {
+    const mpz_class p(prime);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      for (std::size_t j = i; j < v.size(); j += 3) {
+        const double z = v[(i + j) % v.size()];
+        const BigFloat x = BigFloat(v[i]) * BigFloat(v[j]) * BigFloat(z);
+        const mpq_class e = q(v[i]) * q(v[j]) * q(z);
+        mpz_class inv;
+        ASSERT_NE(mpz_invert(inv.get_mpz_t(), e.get_den_mpz_t(), p.get_mpz_t()), 0);
+        mpz_class expected = e.get_num() * inv % p;
+        if (expected < 0) expected += p;
+        ASSERT_EQ(x.residue(static_cast<std::uint32_t>(prime)), expected.get_ui())
+            << v[i] << " " << v[j] << " " << z << " mod " << prime;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contain::predicates

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <random>
@@ -212,6 +213,31 @@ TEST(Polynomial, MixedMagnitudeCoefficientsAgreeWithTheOracle) {
     const double lo = -std::ldexp(1.0, rnd.integer(-70, 70));
     const double hi = std::ldexp(1.0, rnd.integer(-70, 70));
     check(p, lo, hi, {factor(0.0), constant(std::ldexp(-1.0, rnd.integer(-1000, 1000)))});
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, RootsHuggingAnEndFarBelowADoubleApartAgreeWithTheOracle) {
+  // Roots 1 - 2^-k / m and 2^-k / m (k up to 1000: no double between them and the end), two or
+  // three of them within 2^-900 of each other, shared or nearly shared with the polynomials
+  // whose signs are asked: the clusters of hostile continuous-collision queries (1e300 next to
+  // 1e-300), which the filters separate in frames moved onto them.
+  Random rnd(6);
+  const auto near_end = [](bool high, int k, double m) {
+    return high ? constant(m) * (variable() - constant(1.0)) + constant(std::ldexp(1.0, -k))
+                : constant(m) * variable() - constant(std::ldexp(1.0, -k));
+  };
+  for (int i = 0; i < test::case_budget(120, 10); ++i) {
+    const bool high = rnd.integer(0, 1) == 0;
+    const int k = rnd.integer(60, 1000);
+    const double m = rnd.integer(1, 7);
+    const Both a = near_end(high, k, m);
+    const Both b = near_end(high, k + rnd.integer(0, 2), rnd.integer(1, 7));
+    const Both c = near_end(high, std::min(1070, k + rnd.integer(1, 60)), m);
+    Both p = a * b * (rnd.integer(0, 1) == 0 ? c : factor(rnd.uniform(0.0, 1.0)));
+    if (rnd.integer(0, 2) == 0) p = p * constant(std::ldexp(1.0, rnd.integer(-900, 900)));
+    const Both nearly_a = a + constant(std::ldexp(1.0, -std::min(1074, k + 40)));
+    check(p, 0.0, 1.0, {a, b, c, a * c, nearly_a, near_end(high, k + 1, m), constant(-1)});
     if (HasFailure()) return;
   }
 }

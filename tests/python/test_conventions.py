@@ -146,6 +146,42 @@ def test_dask_join_layer_takes_boundary_report_with_the_location_of_each_pair(tm
         contain.dask.join_layer(points, str(tmp_path / "squares.wkt"), boundary="raise")
 
 
+def test_layer_and_scene_locate_take_boundary_report_as_the_command_writes_id_on(tmp_path, cli):
+    import subprocess
+
+    (tmp_path / "squares.wkt").write_text("\n".join(["POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))",
+                                                     "POLYGON ((1 1, 3 1, 3 3, 1 3, 1 1))"]) + "\n")
+    layer = contain.RegionLayer.from_file(str(tmp_path / "squares.wkt"))
+    xy = np.array([[0.5, 0.5], [2, 1.5], [1.5, 1.5], [9, 9], [3, 2]])
+    pairs, location = layer.locate(xy, boundary="report")
+    assert location.dtype == np.int8 and pairs.dtype == np.int64
+    rows = list(zip(pairs[0].tolist(), pairs[1].tolist(), location.tolist()))
+    assert rows == [(0, 0, 1), (1, 0, 0), (1, 1, 1), (2, 0, 1), (2, 1, 1), (4, 1, 0)]
+    assert np.array_equal(pairs, layer.locate(xy, boundary="inside"))
+    held, where = layer.holders(xy)
+    assert np.array_equal(held, pairs) and np.array_equal(where, location)
+    # The command's default --boundary report: ID:on exactly where the location is 0.
+    np.savetxt(tmp_path / "p.txt", xy)
+    out = subprocess.run([cli, "inside", "--layer", str(tmp_path / "squares.wkt"), "--points",
+                          str(tmp_path / "p.txt")], capture_output=True, text=True, check=True).stdout.split("\n")
+    for p in range(len(xy)):
+        want = [f"{r}:on" if w == 0 else f"{r}" for q, r, w in rows if q == p] or ["-"]
+        assert out[p].split() == want, (p, out[p])
+    # A scene: a point on a face of the first cube and inside the second.
+    box = ([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+           [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+            [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+    scene = contain.SolidScene([box, box], [None, [1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0]])
+    points = np.array([[1.0, 0.5, 0.5], [0.25, 0.5, 0.5], [5, 5, 5]])
+    pairs, location = scene.locate(points, boundary="report")
+    assert list(zip(pairs[0].tolist(), pairs[1].tolist(), location.tolist())) == [
+        (0, 0, 0), (0, 1, 1), (1, 0, 1)]
+    assert scene.locate(points, boundary="outside").tolist() == [[0, 1], [1, 0]]
+    for index in (layer, scene):
+        with pytest.raises(ValueError, match="'report'"):
+            index.locate(xy if index is layer else points, boundary="on")
+
+
 # --- transforms and poses ----------------------------------------------------------------------
 
 def shifted(x):
@@ -235,7 +271,9 @@ def instances():
         "Region": contain.as_region(WKT),
         "RegionDistance": contain.RegionDistance(WKT, fill="nonzero"),
         "RegionLayer": contain.RegionLayer([WKT]),
+        "SelfIntersections": contain.self_intersections(box),
         "SolidScene": contain.SolidScene([box]),
+        "TileIterator": contain.iter_tiles(WKT, 2, 2),
         "WindingNumber": contain.WindingNumber(box),
     }
 

@@ -1,6 +1,7 @@
 // tests/data/clip: segments by boxes, polygons by boxes and half-planes, meshes cut and capped,
-// polygon booleans, and bad clip options, with their recorded results, checked through the library
-// and through the `contain clip` command.
+// polygon booleans, sections of solids (contain slice), and bad clip options, with their recorded
+// results, checked through the library and through the `contain clip` and `contain slice`
+// commands.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "contain/clip/liang_barsky.h"
 #include "contain/clip/mesh_clip.h"
 #include "contain/clip/polygon_boolean.h"
+#include "contain/clip/slice_mesh.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/number_table.h"
 #include "contain/io/region_io.h"
@@ -84,8 +86,29 @@ void expect_segments(const RegressionCase& c) {
   }
 }
 
+// Sections (contain slice): each recorded line is the plane's value, a tab and the section.
+void expect_sections(const RegressionCase& c) {
+  auto file = io::read_mesh(*c.option("--mesh"));
+  ASSERT_TRUE(file.ok()) << file.error().what();
+  std::vector<double> values;
+  for (std::size_t i = 0; i + 1 < c.run.size(); ++i) {
+    if (c.run[i] == "--z") values.push_back(std::stod(c.run[i + 1]));
+  }
+  auto sections = clip::slice_mesh(file->mesh, values);
+  ASSERT_TRUE(sections.ok()) << sections.error().what();
+  ASSERT_EQ(sections->size(), c.out.size());
+  for (std::size_t i = 0; i < c.out.size(); ++i) {
+    const std::size_t tab = c.out[i].find('\t');
+    ASSERT_NE(tab, std::string::npos);
+    EXPECT_EQ((*sections)[i].value, std::stod(c.out[i].substr(0, tab)));
+    expect_region((*sections)[i].region, {c.out[i].substr(tab + 1)});
+  }
+}
+
 void expect_library_result(const RegressionCase& c) {
-  if (const auto op = c.option("--op")) {
+  if (c.verb() == "slice") {
+    expect_sections(c);
+  } else if (const auto op = c.option("--op")) {
     const std::map<std::string, clip::Op> ops{{"intersection", clip::Op::intersection},
                                               {"union", clip::Op::union_},
                                               {"difference", clip::Op::difference},
@@ -128,7 +151,7 @@ TEST(RegressionCorpus, ClipCasesGiveTheirRecordedResultsThroughTheLibrary) {
   ASSERT_FALSE(cases.empty());
   for (const RegressionCase& c : cases) {
     SCOPED_TRACE("case " + c.name + " (cases.txt:" + std::to_string(c.line) + ")");
-    ASSERT_EQ(c.verb(), "clip");
+    ASSERT_TRUE(c.verb() == "clip" || c.verb() == "slice");
     // Refused options (inverted box, negative radius, --cap of an open mesh) are the command's
     // checks of its arguments: the command part below covers them.
     if (c.exit_code != 0) continue;

@@ -51,6 +51,10 @@ class BigFloat {
   [[nodiscard]] double frexp(std::int64_t& exponent) const;
   /// This value times 2^k, exactly.
   [[nodiscard]] BigFloat scaled(std::int64_t k) const;
+  /// The value modulo an odd prime below 2^31 (a negative power of two through the inverse of
+  /// 2), in [0, prime): for modular tests whose every answer is a certificate or a bound (the
+  /// degree of a polynomial gcd, `polynomial_state.h`), never a sign.
+  [[nodiscard]] std::uint32_t residue(std::uint32_t prime) const;
 
  private:
   void normalize();

@@ -1,0 +1,220 @@
+// contain slice: sections of a solid by planes, and its shadow (../shared/spec/cli.md).
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common.h"
+#include "contain/clip/slice_mesh.h"
+#include "contain/io/geojson.h"
+#include "contain/io/mesh_io.h"
+#include "contain/io/svg.h"
+#include "contain/io/wkt.h"
+#include "slice_svg.h"
+#include "verbs.h"
+
+namespace contain::cli {
+namespace {
+
+// More planes than this is a mistake (a step too small for the range), not a request.
+constexpr double kMaxPlanes = 1e7;
+
+struct SliceCliOptions {
+  std::string mesh;
+  std::vector<std::string> z;
+  std::string layers;
+  clip::Axis axis = clip::Axis::z;
+  std::string format = "wkt";
+  bool json = false;
+  bool shadow = false;
+  int threads = 0;
+  std::string out;
+  CLI::Option* format_option = nullptr;
+  CLI::Option* threads_option = nullptr;
+};
+
+// FROM + k STEP for k = 0, 1, ..., each rounded once (one fma: k and STEP are exact), stopping
+// before the first rounded value above TO.
+Result<std::vector<double>> layer_values(const std::string& text) {
+  auto numbers = parse_numbers(text, "--layers");
+  if (!numbers) return numbers.error();
+  if (numbers->size() != 3) {
+    return Error{ErrorKind::usage, "--layers: FROM,STEP,TO (three numbers), got '" + text + "'"};
+  }
+  const double from = (*numbers)[0];
+  const double step = (*numbers)[1];
+  const double to = (*numbers)[2];
+  if (!(step > 0)) {
+    return Error{ErrorKind::invalid_value,
+                 fmt::format("--layers: STEP must be positive, got {}", step)};
+  }
+  std::vector<double> out;
+  if (to < from) return out;
+  if ((to - from) / step >= kMaxPlanes) {
+    return Error{ErrorKind::invalid_value,
+                 fmt::format("--layers: {},{},{} gives more than 10^7 planes", from, step, to)};
+  }
+  for (double k = 0;; k += 1) {
+    const double value = std::fma(k, step, from);
+    if (value > to) break;
+    if (out.size() >= static_cast<std::size_t>(kMaxPlanes)) {
+      return Error{ErrorKind::invalid_value,
+                   fmt::format("--layers: {},{},{} gives more than 10^7 planes", from, step, to)};
+    }
+    out.push_back(value);
+  }
+  return out;
+}
+
+Result<std::vector<double>> plane_values(const SliceCliOptions& o) {
+  if (!o.layers.empty()) return layer_values(o.layers);
+  std::vector<double> out;
+  for (const std::string& text : o.z) {
+    auto numbers = parse_numbers(text, "--z");
+    if (!numbers) return numbers.error();
+    if (numbers->size() != 1) {
+      return Error{ErrorKind::usage, "--z: one number per --z, got '" + text + "'"};
+    }
+    out.push_back(numbers->front());
+  }
+  return out;
+}
+
+// The triangles of each ring as JSON arrays.
+std::string triangles_json(const clip::Section& s) {
+  std::string out = "[";
+  for (std::size_t r = 0; r < s.triangles.size(); ++r) {
+    out += r ? ",[" : "[";
+    for (std::size_t k = 0; k < s.triangles[r].size(); ++k) {
+      if (k > 0) out += ',';
+      out += std::to_string(s.triangles[r][k]);
+    }
+    out += "]";
+  }
+  return out + "]";
+}
+
+std::string format_sections(const std::vector<clip::Section>& sections, const SliceCliOptions& o) {
+  std::string text;
+  if (o.json) {
+    for (const clip::Section& s : sections) {
+      text += fmt::format("{{\"value\":{},\"wkt\":\"{}\",\"triangles\":{}}}\n", s.value,
+                          io::write_wkt(s.region), triangles_json(s));
+    }
+    return text;
+  }
+  if (o.format == "geojson") {
+    text = "{\"type\":\"FeatureCollection\",\"features\":[";
+    for (std::size_t i = 0; i < sections.size(); ++i) {
+      text +=
+          fmt::format("{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":{}}}",
+                      i ? "," : "", sections[i].value, io::write_geojson(sections[i].region));
+    }
+    return text + "]}\n";
+  }
+  if (o.format == "svg") {
+    return sections_svg(sections, 0.0,
+                        fmt::format("contain slice {}: {} sections", o.mesh, sections.size()));
+  }
+  for (const clip::Section& s : sections)
+    text += fmt::format("{}\t{}\n", s.value, io::write_wkt(s.region));
+  return text;
+}
+
+std::string format_shadow(const MultiPolygon& region, const SliceCliOptions& o) {
+  if (o.format == "geojson") return io::write_geojson(region) + "\n";
+  if (o.format == "svg") {
+    return io::region_svg(region, {.width_px = 800, .title = "contain slice --shadow " + o.mesh});
+  }
+  return io::write_wkt(region) + "\n";
+}
+
+int run_slice(SliceCliOptions o) {
+  for (char& c : o.format)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool planes = !o.z.empty() || !o.layers.empty();
+  if (o.shadow && (planes || o.json || o.threads_option->count() > 0)) {
+    return report(
+        {ErrorKind::usage, "slice --shadow takes no planes (--z, --layers), --json or --threads"});
+  }
+  if (!o.shadow && !planes) {
+    return report({ErrorKind::usage,
+                   "slice needs planes: --z Z (repeatable) or --layers "
+                   "FROM,STEP,TO, or --shadow"});
+  }
+  if (!o.z.empty() && !o.layers.empty()) {
+    return report({ErrorKind::usage, "slice: --z and --layers exclude each other"});
+  }
+  if (o.json && o.format_option->count() > 0) {
+    return report({ErrorKind::usage, "slice: --json writes its own lines; leave out --format"});
+  }
+  auto values = plane_values(o);
+  if (!values) return report(values.error());
+  auto file = io::read_mesh(o.mesh);
+  if (!file) return report(file.error());
+  const auto named = [&](Error e) {
+    e.source = o.mesh;
+    return report(e);
+  };
+  if (o.shadow) {
+    auto region = clip::shadow(file->mesh, {.axis = o.axis});
+    if (!region) return named(region.error());
+    return emit(format_shadow(*region, o), o.out);
+  }
+  auto sections = clip::slice_mesh(file->mesh, *values, {.axis = o.axis}, {.threads = o.threads});
+  if (!sections) return named(sections.error());
+  return emit(format_sections(*sections, o), o.out);
+}
+
+}  // namespace
+
+Verb add_slice(CLI::App& app) {
+  auto o = std::make_shared<SliceCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "slice",
+      "Sections of a solid by planes as exact 2D regions, with the triangle under each "
+      "edge; or its shadow");
+  cmd->add_option("--mesh", o->mesh,
+                  "the solid: a closed mesh (.obj .off .stl .ply), read by its winding number")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--z", o->z, "a plane's value along --axis (repeatable, in the order given)")
+      ->option_text("Z")
+      ->allow_extra_args(false);
+  cmd->add_option("--layers", o->layers,
+                  "the planes FROM + k STEP (k = 0, 1, ...), each rounded once, up to TO")
+      ->option_text("FROM,STEP,TO");
+  const std::map<std::string, clip::Axis> axes{
+      {"x", clip::Axis::x}, {"y", clip::Axis::y}, {"z", clip::Axis::z}};
+  cmd->add_option("--axis", o->axis,
+                  "the planes' normal (default z); coordinates (x,y) for z, (y,z) for x, (z,x) "
+                  "for y")
+      ->transform(CLI::CheckedTransformer(axes, CLI::ignore_case))
+      ->option_text("x|y|z");
+  o->format_option =
+      cmd->add_option("--format", o->format,
+                      "wkt: a line per plane, value TAB MULTIPOLYGON (default); geojson: a "
+                      "FeatureCollection with `value`; svg: every section, a colour a level")
+          ->check(CLI::IsMember({"wkt", "geojson", "svg"}, CLI::ignore_case))
+          ->option_text("wkt|geojson|svg");
+  cmd->add_flag("--json", o->json,
+                "a JSON object a line: value, wkt, and the triangle under each edge of each ring");
+  cmd->add_flag("--shadow", o->shadow,
+                "the projection of the solid along --axis (one MULTIPOLYGON) instead of sections");
+  add_threads_option(*cmd, o->threads);
+  o->threads_option = cmd->get_option("--threads");
+  cmd->add_option("--out", o->out, "write to FILE instead of stdout")->option_text("FILE");
+  cmd->footer(
+      "Examples:\n"
+      "  contain slice --mesh part.stl --layers 0,0.2,30      (layers for printing)\n"
+      "  contain slice --mesh part.stl --z 1.5 --z 2 --json  (with the triangle of each edge)\n"
+      "  contain slice --mesh part.stl --shadow --axis z --format svg --out footprint.svg");
+  return {cmd, [o]() { return run_slice(*o); }};
+}
+
+}  // namespace contain::cli

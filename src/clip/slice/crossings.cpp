@@ -1,0 +1,128 @@
+// Stage 2 of slicing: a plane's crossing segments, for the plane just above and just below.
+//
+// Rule slice-two-sides (docs/robustness.md): at the plane z = c + e (e -> 0+) a vertex with
+// z == c is below; at z = c - e it is above. For either side every triangle with vertices on
+// both sides is cut by the perturbed plane in a segment between its two crossing edges, and the
+// segment's limit as e -> 0 joins the exact crossings of those edges with z = c (a vertex on the
+// plane is its edges' crossing). The triangle's orientation directs it: from the edge going down
+// (above to below along the triangle's boundary) to the edge going up, which runs
+// counter-clockwise around the solid's section seen from +z (outward normal n: the tangent is
+// z x n). A triangle in the plane has all vertices on one side and gives nothing.
+
+#include <utility>
+
+#include "clip/slice/stages.h"
+#include "contain/predicates/rounded_crossing.h"
+
+namespace contain::clip::slice {
+
+namespace {
+
+constexpr std::uint64_t kVertexTag = 0xFFFFFFFFULL;
+
+std::uint64_t vertex_key(std::int32_t v) {
+  return (static_cast<std::uint64_t>(v) << 32) | kVertexTag;
+}
+std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+}
+
+struct Crossing {
+  std::uint64_t key;
+  Vec2 point;
+};
+
+// The rounded crossings of one plane by edge key: each edge's point is computed once, though
+// every triangle on the edge (two on a manifold) and both sides ask for it. Open addressing in a
+// power-of-two table with room for every crossing edge of the active triangles.
+class CrossingMemo {
+ public:
+  explicit CrossingMemo(std::size_t triangles) {
+    std::size_t size = 16;
+    while (size < 4 * triangles)
+      size *= 2;
+    slots_.assign(size, Slot{});
+  }
+  template <class Compute>
+  Vec2 get(std::uint64_t key, Compute&& compute) {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = (key * 0x9E3779B97F4A7C15ULL) >> 20 & mask;; i = (i + 1) & mask) {
+      Slot& slot = slots_[i];
+      if (!slot.used) {
+        slot = {key, compute(), true};
+        return slot.point;
+      }
+      if (slot.key == key) return slot.point;
+    }
+  }
+
+ private:
+  struct Slot {
+    std::uint64_t key = 0;
+    Vec2 point;
+    bool used = false;
+  };
+  std::vector<Slot> slots_;
+};
+
+// The crossing of the edge p-q (one endpoint above, one below on the chosen side) with z = c.
+Crossing crossing(const SweepMesh& mesh, std::int32_t p, std::int32_t q, double c,
+                  CrossingMemo& memo) {
+  const Vec3& a = mesh.vertices[static_cast<std::size_t>(p)];
+  const Vec3& b = mesh.vertices[static_cast<std::size_t>(q)];
+  const int k = mesh.frame.k;
+  if (coord(a, k) == c) return {vertex_key(p), project(a, mesh.frame)};
+  if (coord(b, k) == c) return {vertex_key(q), project(b, mesh.frame)};
+  const std::uint64_t key = edge_key(p, q);
+  return {key, memo.get(key, [&] {
+            return project(predicates::rounded_axis_crossing(a, b, k, c), mesh.frame);
+          })};
+}
+
+// The segment of triangle t on one side (`on_plane_above`: where a vertex with z == c counts),
+// appended to out when the triangle has vertices on both sides.
+void add_segment(const SweepMesh& mesh, std::int32_t t, double c, bool on_plane_above,
+                 CrossingMemo& memo, std::vector<CrossingSegment>& out) {
+  const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
+  bool above[3];
+  for (int i = 0; i < 3; ++i) {
+    const double z = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k);
+    above[i] = on_plane_above ? z >= c : z > c;
+  }
+  if (above[0] == above[1] && above[1] == above[2]) return;
+  int down = -1;  // the edge i -> i+1 going from above to below
+  int up = -1;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (above[i] && !above[j]) down = i;
+    if (!above[i] && above[j]) up = i;
+  }
+  const Crossing from = crossing(mesh, tri[down], tri[(down + 1) % 3], c, memo);
+  const Crossing to = crossing(mesh, tri[up], tri[(up + 1) % 3], c, memo);
+  out.push_back({from.key, to.key, from.point, to.point, t});
+}
+
+}  // namespace
+
+PlaneCurves crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active,
+                              double c) {
+  PlaneCurves out;
+  CrossingMemo memo(active.size());
+  out.above.reserve(active.size());
+  for (const std::int32_t t : active) {
+    const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    for (int i = 0; i < 3 && !out.touches; ++i) {
+      out.touches = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k) == c;
+    }
+    add_segment(mesh, t, c, false, memo, out.above);
+  }
+  if (out.touches) {
+    out.below.reserve(active.size());
+    for (const std::int32_t t : active)
+      add_segment(mesh, t, c, true, memo, out.below);
+  }
+  return out;
+}
+
+}  // namespace contain::clip::slice
