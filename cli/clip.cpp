@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "clip_boolean.h"
+#include "clip_solid.h"
 #include "common.h"
 #include "contain/clip/box_clipper.h"
 #include "contain/clip/clip_polygon.h"
@@ -526,10 +527,7 @@ int run_mesh(const ClipOptions& o) {
     if (!solid) return report(solid.error());
     result = clip::clip_mesh(file->mesh, *solid, options);
   }
-  if (o.out.empty() || o.out == "-") return emit(io::format_mesh(result, io::MeshFormat::off), "");
-  const Status written = io::write_mesh(result, o.out);
-  if (!written) return report(written.error());
-  return exit_ok;
+  return emit_mesh(result, o.out);
 }
 
 // The options of one form that another would silently drop (issue 24): a usage error naming
@@ -600,6 +598,8 @@ Verb add_clip(CLI::App& app) {
   cmd->add_flag("--cap", o->cap, "meshes: close the cut of a closed mesh with cap polygons");
   auto boolean = std::make_shared<ClipBooleanOptions>();  // --subject/--clip/--op: clip_boolean.cpp
   add_clip_boolean_options(*cmd, *boolean);
+  auto solid = std::make_shared<ClipSolidOptions>();  // meshes as solids: clip_solid.cpp
+  add_clip_solid_options(*cmd, *solid);
   add_threads_option(*cmd, o->threads);
   add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write the result to FILE (meshes: format by extension)")
@@ -615,20 +615,29 @@ Verb add_clip(CLI::App& app) {
       "  contain clip --polygon field.wkt --convex hull.wkt --out inside.wkt\n"
       "  contain clip a.wkt b.geojson --op union --format geojson\n"
       "  contain clip --subject a.wkt --clip b.wkt --op difference --fill nonzero --format svg\n"
+      "  contain clip --subject part.stl --clip hole.off --clip slot.off --op difference "
+      "--out part.obj\n"
+      "  contain clip --csg bracket.json --out bracket.obj --json\n"
       "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
       "touches the region prints a zero-length segment.");
-  return {cmd, [o, boolean, segments, polygon, mesh]() {
-            const bool by_region = segments->count() + polygon->count() + mesh->count() > 0;
-            if (clip_boolean_requested(*boolean)) {
-              if (by_region || !o->box.empty() || !o->halfspaces.empty() || !o->convex.empty() ||
-                  !o->sphere.empty() || !o->circle.empty() || !o->tiles.empty()) {
-                return report(usage(
-                    "a polygon boolean (--op) takes two regions only: --segments, --polygon, "
-                    "--mesh, --box, --halfspace, --convex, --sphere, --circle and --tiles belong "
-                    "to the other forms"));
-              }
-              return run_clip_boolean(*boolean, o->out);
+  return {cmd, [o, boolean, solid, segments, polygon, mesh]() {
+            const bool by_region = segments->count() + polygon->count() + mesh->count() > 0 ||
+                                   !o->box.empty() || !o->halfspaces.empty() ||
+                                   !o->convex.empty() || !o->sphere.empty() || !o->circle.empty() ||
+                                   !o->tiles.empty() || o->cap || o->keep_bridges ||
+                                   !o->algorithm.empty();
+            const bool solids = clip_solid_requested(*boolean, *solid);
+            if (by_region && (solids || clip_boolean_requested(*boolean))) {
+              return report(usage(
+                  "a boolean (--op, --csg) takes its shapes only: --segments, --polygon, --mesh, "
+                  "--box, --halfspace, --convex, --sphere, --circle, --tiles, --cap, "
+                  "--keep-bridges and --algorithm belong to the other forms"));
             }
+            if (solids) return run_clip_solid(*boolean, *solid, o->out);
+            if (solid->json) {
+              return report(usage("--json applies to mesh booleans (a mesh --subject, --csg)"));
+            }
+            if (clip_boolean_requested(*boolean)) return run_clip_boolean(*boolean, o->out);
             // Options of the booleans that the other forms would silently drop.
             for (const CLI::Option* ignored : {boolean->format_option, boolean->fill_option}) {
               if (ignored->count() > 0) {

@@ -15,6 +15,7 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/clip/csg_to_mesh.h"
 #include "contain/inside/csg.h"
 #include "contain/io/csg_json.h"
 #include "errors.h"
@@ -258,6 +259,27 @@ or text). Errors name the JSON path of the offending value.
           },
           "The kind of a leaf ('sphere', 'box', 'halfspace', 'convex', 'implicit', 'mesh'),\n"
           "None for an operation.")
+      .def(
+          "to_mesh",
+          [](const Csg& tree) {
+            Result<clip::MeshBooleanResult> result = Error{};
+            {
+              py::gil_scoped_release release;
+              result = clip::csg_to_mesh(tree);
+            }
+            return take(std::move(result));
+          },
+          R"doc(
+The tree's solid as one written mesh, by the exact mesh booleans (contain.mesh_boolean, one
+n-ary call per union or intersection): a contain.MeshBooleanResult whose .mesh is closed,
+outward and free of self-intersections on its doubles (docs/solids.md).
+Leaves: meshes (solids by their winding number), boxes, convex polyhedra, and half-spaces (or
+convex polyhedra given by planes) within a box: those are read inside the box of the tree's
+bounded solids (an intersection with a box, a difference from a mesh), and a tree whose solid is
+unbounded raises ContainError. A sphere or implicit leaf raises ContainError naming its place
+("difference[1].sphere: a sphere is not polyhedral ..."), before any boolean runs. Runs without
+the GIL.
+)doc")
       .def("__repr__", [](const Csg& c) {
         if (c.op() == CsgOp::leaf) return "contain.Csg." + leaf_name(c.solid()) + "(...)";
         return "contain.Csg(" + std::string(op_name(c.op())) + " of " +

@@ -23,6 +23,7 @@ void bind_winding(py::module_& m);       // point_in_triangle, winding_number, F
 void bind_tile(py::module_& m);          // BoxClipper, tile, iter_tiles
 void bind_layer(py::module_& m);         // RegionLayer, SolidScene (many shapes at once)
 void bind_distance(py::module_& m);      // MeshDistance, RegionDistance, MeshPairDistance
+void bind_mesh_boolean(py::module_& m);  // mesh_boolean, repair_solid, MeshBooleanResult
 void bind_slice(py::module_& m);         // slice_mesh, shadow, mesh_section
 
 }  // namespace contain::python

@@ -218,5 +218,28 @@ TEST(MeshIo, ReadsEveryMeshCaseAndConvertsItLosslessly) {
   EXPECT_EQ(count, 16);
 }
 
+TEST(MeshIo, AFileWithoutFacesIsRefusedUnlessTheEmptyMeshIsAllowed) {
+  // The mesh booleans read it as the empty solid, and write an empty result so.
+  for (const auto& [text, family] :
+       {std::pair<std::string, MeshFormat>{"OFF\n0 0 0\n", MeshFormat::off},
+        {"OFF\n2 0 0\n0 0 0\n1 1 1\n", MeshFormat::off},
+        {"v 0 0 0\n", MeshFormat::obj}}) {
+    auto refused = parse_mesh(text, family, "e");
+    ASSERT_FALSE(refused.ok()) << text;
+    EXPECT_EQ(refused.error().kind, ErrorKind::degenerate);
+    auto empty = parse_mesh(text, family, "e", {.allow_empty = true});
+    ASSERT_TRUE(empty.ok()) << empty.error().what();
+    EXPECT_TRUE(empty->mesh.triangles.empty());
+  }
+  EXPECT_EQ(
+      parse_mesh(format_mesh(Mesh{}, MeshFormat::off), MeshFormat::off, "e", {.allow_empty = true})
+          ->mesh,
+      Mesh{});
+  // Allowing no faces allows nothing else: a bad coordinate is still refused.
+  auto nan = parse_mesh("OFF\n1 0 0\nnan 0 0\n", MeshFormat::off, "e", {.allow_empty = true});
+  ASSERT_FALSE(nan.ok());
+  EXPECT_EQ(nan.error().kind, ErrorKind::invalid_value);
+}
+
 }  // namespace
 }  // namespace contain::io

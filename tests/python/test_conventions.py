@@ -266,6 +266,7 @@ def instances():
         "Csg": contain.Csg.sphere([0, 0, 0], 1),
         "CsgSolid": contain.CsgSolid(contain.Csg.sphere([0, 0, 0], 1)),
         "Mesh": box,
+        "MeshBooleanResult": contain.repair_solid(box),
         "MeshDistance": contain.MeshDistance(box),
         "MeshImpact": moving.first_contact(shifted(3.0)[1], shifted(0.5)[1]),
         "MeshIndex": contain.MeshIndex(box),
@@ -298,6 +299,8 @@ def test_every_class_has_a_repr_that_shows_what_it_holds():
     assert repr(objects["MovingMeshPair"]) == "contain.MovingMeshPair(a: 8 vertices, solid; b: 8 vertices, solid)"
     assert repr(objects["ConvexShape"]) == "contain.ConvexShape.sphere(center=[0.0, 0.0, 0.0], radius=1.5)"
     assert repr(objects["ConvexDistance"]) == "contain.ConvexDistance(12 faces, 8 vertices)"
+    assert repr(objects["MeshBooleanResult"]) == \
+        "contain.MeshBooleanResult(12 triangles, 1 shells, volume 1.0, 0 moved)"
     # The impact names its witness primitives, as its attributes hold them.
     impact = objects["MeshImpact"]
     assert impact.witness in ("vertex_a_face_b", "vertex_b_face_a", "edges")
