@@ -45,9 +45,9 @@ Mesh demo_torus() {
 // CSG: (ball ∪ box) − small ball, on a grid in the plane z = 0; grid lines meet the box faces
 // exactly, so the regularised boundary shows.
 Status csg_scene(const Context& context) {
-  const Csg tree = Csg::subtract(Csg::unite({Csg::leaf(Sphere{{0, 0, 0}, 1.0}),
-                                             Csg::leaf(Box3{{0, -0.5, -0.5}, {1.75, 0.5, 0.5}})}),
-                                 Csg::leaf(Sphere{{0.25, 0.25, 0}, 0.375}));
+  const Csg tree = Csg::difference(Csg::unite({Csg::leaf(Sphere{{0, 0, 0}, 1.0}),
+                                               Csg::leaf(Box3{{0, -0.5, -0.5}, {1.75, 0.5, 0.5}})}),
+                                   Csg::leaf(Sphere{{0.25, 0.25, 0}, 0.375}));
   auto solid = inside::CsgSolid::prepare(tree);
   if (!solid) return solid.error();
   const std::vector<Vec3> grid = scenes::grid_points({{-1.25, -1.25}, {2.0, 1.25}}, 161, 0.0);

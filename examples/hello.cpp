@@ -31,7 +31,7 @@ int main() {
   }
 
   // Solids: a unit ball united with a box, minus a half-space; regularised set operations.
-  const Csg tree = Csg::subtract(
+  const Csg tree = Csg::difference(
       Csg::unite({Csg::leaf(Sphere{{0, 0, 0}, 1}), Csg::leaf(Box3{{0, -1, -1}, {2, 1, 1}})}),
       Csg::leaf(Plane{0, 0, 1, -0.5}));  // removes z >= 0.5
   auto solid = inside::CsgSolid::prepare(tree);

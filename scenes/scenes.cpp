@@ -165,13 +165,13 @@ Mesh prism(Vec2 center, double radius, int sides, double z0, double z1) {
 Csg bracket_csg() {
   const Csg plate = Csg::leaf(Box3{{0, 0, 0}, {80, 40, 6}});
   const Csg wall = Csg::leaf(Box3{{0, 0, 6}, {80, 6, 40}});
-  const Csg rib = Csg::intersect(
+  const Csg rib = Csg::intersection(
       {Csg::leaf(Box3{{37, 6, 6}, {43, 30, 30}}), Csg::leaf(Plane{0, -1, -1, 36})});  // y + z <= 36
-  const Csg fillet = Csg::intersect({Csg::leaf(Box3{{60, 20, -1}, {81, 41, 7}}),
-                                     Csg::leaf(Plane{1, 1, 0, -110})});  // x + y >= 110
+  const Csg fillet = Csg::intersection({Csg::leaf(Box3{{60, 20, -1}, {81, 41, 7}}),
+                                        Csg::leaf(Plane{1, 1, 0, -110})});  // x + y >= 110
   const Csg holes[] = {Csg::leaf(CsgMesh(prism({15, 25}, 4, 16, -1, 7))),
                        Csg::leaf(CsgMesh(prism({65, 25}, 4, 16, -1, 7)))};
-  return Csg::subtract(Csg::unite({plate, wall, rib}), Csg::unite({holes[0], holes[1], fillet}));
+  return Csg::difference(Csg::unite({plate, wall, rib}), Csg::unite({holes[0], holes[1], fillet}));
 }
 
 }  // namespace contain::scenes

@@ -108,9 +108,9 @@ const char* op_name(CsgOp op) {
       return "leaf";
     case CsgOp::unite:
       return "union";
-    case CsgOp::intersect:
+    case CsgOp::intersection:
       return "intersection";
-    case CsgOp::subtract:
+    case CsgOp::difference:
       return "difference";
     case CsgOp::complement:
       return "complement";
@@ -215,12 +215,12 @@ evaluation of f; boundary where f == 0 exactly.
           "union", [](const py::args& args) { return Csg::unite(operands_of(args)); },
           "The union of the operands (Csg or JSON forms); of none: the empty set.")
       .def_static(
-          "intersection", [](const py::args& args) { return Csg::intersect(operands_of(args)); },
+          "intersection", [](const py::args& args) { return Csg::intersection(operands_of(args)); },
           "The intersection of the operands; of none: all of space.")
       .def_static(
           "difference",
           [](const py::object& a, const py::object& b) {
-            return Csg::subtract(to_csg(a), to_csg(b));
+            return Csg::difference(to_csg(a), to_csg(b));
           },
           "a"_a, "b"_a, "a minus b (regularised).")
       .def_static(
@@ -240,9 +240,10 @@ or text). Errors name the JSON path of the offending value.
            })
       .def("__and__",
            [](const Csg& a, const py::object& b) {
-             return Csg::intersect({a, to_csg(b)});
+             return Csg::intersection({a, to_csg(b)});
            })
-      .def("__sub__", [](const Csg& a, const py::object& b) { return Csg::subtract(a, to_csg(b)); })
+      .def("__sub__",
+           [](const Csg& a, const py::object& b) { return Csg::difference(a, to_csg(b)); })
       .def("__invert__", [](const Csg& a) { return Csg::complement(a); })
       .def_property_readonly(
           "op", [](const Csg& c) { return op_name(c.op()); },

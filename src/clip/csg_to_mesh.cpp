@@ -27,9 +27,9 @@ const char* op_word(CsgOp op) {
   switch (op) {
     case CsgOp::unite:
       return "union";
-    case CsgOp::intersect:
+    case CsgOp::intersection:
       return "intersection";
-    case CsgOp::subtract:
+    case CsgOp::difference:
       return "difference";
     case CsgOp::complement:
       return "complement";
@@ -81,7 +81,7 @@ std::optional<Box3> solid_box(const Csg& node) {
       }
       return box;
     }
-    case CsgOp::intersect: {
+    case CsgOp::intersection: {
       std::optional<Box3> box;
       for (const Csg& operand : operands) {
         const std::optional<Box3> b = solid_box(operand);
@@ -97,7 +97,7 @@ std::optional<Box3> solid_box(const Csg& node) {
       }
       return box;
     }
-    case CsgOp::subtract:
+    case CsgOp::difference:
       return solid_box(operands[0]);
     case CsgOp::complement:
       return std::nullopt;
@@ -160,15 +160,15 @@ struct Evaluator {
         return mesh;
       }
       case CsgOp::unite:
-      case CsgOp::intersect: {
-        if (node.op() == CsgOp::intersect && node.operands().empty()) {
+      case CsgOp::intersection: {
+        if (node.op() == CsgOp::intersection && node.operands().empty()) {
           return csg_leaf_mesh(bounds, bounds);  // all of space, inside the box
         }
         if (Status s = gather(node, path, inputs); !s) return s.error();
         return boolean(path + op_word(node.op()), inputs,
                        node.op() == CsgOp::unite ? Op::union_ : Op::intersection);
       }
-      case CsgOp::subtract: {
+      case CsgOp::difference: {
         const Csg& a = node.operands()[0];
         const Csg& b = node.operands()[1];
         auto first = evaluate(a, operand_path(path, node.op(), 0));

@@ -41,9 +41,9 @@ std::string op_name(CsgOp op) {
       return "leaf";
     case CsgOp::unite:
       return "union";
-    case CsgOp::intersect:
+    case CsgOp::intersection:
       return "intersection";
-    case CsgOp::subtract:
+    case CsgOp::difference:
       return "difference";
     case CsgOp::complement:
       return "complement";
@@ -292,7 +292,8 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh
       continue;
     }
     const std::size_t arity = t.operands().size();
-    if ((t.op() == CsgOp::subtract && arity != 2) || (t.op() == CsgOp::complement && arity != 1)) {
+    if ((t.op() == CsgOp::difference && arity != 2) ||
+        (t.op() == CsgOp::complement && arity != 1)) {
       return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + op_name(t.op()) +
                                                  " has " + std::to_string(arity) + " operands"};
     }
@@ -328,7 +329,7 @@ int CsgSolid::evaluate(std::int32_t index, const LeafValue& leaf_value) const {
       }
       return result;
     }
-    case CsgOp::intersect: {
+    case CsgOp::intersection: {
       int result = 1;
       for (std::int32_t k = 0; k < node.count; ++k) {
         const int v = child(k);
@@ -337,7 +338,7 @@ int CsgSolid::evaluate(std::int32_t index, const LeafValue& leaf_value) const {
       }
       return result;
     }
-    case CsgOp::subtract: {
+    case CsgOp::difference: {
       const int a = child(0);
       if (a == -1) return -1;
       return std::min(a, -child(1));

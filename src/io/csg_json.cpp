@@ -111,7 +111,7 @@ class Reader {
     if (!ops) return ops.error();
     if (ops->empty()) return fail(path, "expected at least one operand");
     return key == "union" ? Csg::unite(std::move(ops).value())
-                          : Csg::intersect(std::move(ops).value());
+                          : Csg::intersection(std::move(ops).value());
   }
 
   Result<Csg> difference(const json& j, const std::string& path) {
@@ -120,7 +120,7 @@ class Reader {
     }
     Result<std::vector<Csg>> ops = operands(j, path);
     if (!ops) return ops.error();
-    return Csg::subtract((*ops)[0], (*ops)[1]);
+    return Csg::difference((*ops)[0], (*ops)[1]);
   }
 
   Result<double> number(const json& j, const std::string& path) {

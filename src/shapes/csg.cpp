@@ -8,14 +8,14 @@ Csg Csg::leaf(CsgLeaf solid) {
 Csg Csg::unite(std::vector<Csg> operands) {
   return Csg(CsgOp::unite, std::move(operands), {});
 }
-Csg Csg::intersect(std::vector<Csg> operands) {
-  return Csg(CsgOp::intersect, std::move(operands), {});
+Csg Csg::intersection(std::vector<Csg> operands) {
+  return Csg(CsgOp::intersection, std::move(operands), {});
 }
-Csg Csg::subtract(Csg a, Csg b) {
+Csg Csg::difference(Csg a, Csg b) {
   std::vector<Csg> operands;
   operands.push_back(std::move(a));
   operands.push_back(std::move(b));
-  return Csg(CsgOp::subtract, std::move(operands), {});
+  return Csg(CsgOp::difference, std::move(operands), {});
 }
 Csg Csg::complement(Csg a) {
   std::vector<Csg> operands;

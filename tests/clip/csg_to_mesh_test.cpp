@@ -73,29 +73,29 @@ TEST(CsgToMesh, DemoBracketIsAValidSolidWithinRoundingOfTheExactVolume) {
 
 TEST(CsgToMesh, HalfSpaceWithinABoxIsTheBoxCut) {
   // z <= 0.75 and the unit box
-  expect_solid(Csg::intersect({box(0, 1), Csg::leaf(Plane{0, 0, -1, 0.75})}), mpq_class(3, 4));
+  expect_solid(Csg::intersection({box(0, 1), Csg::leaf(Plane{0, 0, -1, 0.75})}), mpq_class(3, 4));
   // the unit box minus z >= 0.5
-  expect_solid(Csg::subtract(box(0, 1), Csg::leaf(Plane{0, 0, 1, -0.5})), mpq_class(1, 2));
+  expect_solid(Csg::difference(box(0, 1), Csg::leaf(Plane{0, 0, 1, -0.5})), mpq_class(1, 2));
   // an unbounded convex polyhedron given by planes, within the box
   auto wedge = ConvexPolyhedron::from_planes({{1, 0, 0, -0.25}, {0, -1, 0, 0.5}});
   ASSERT_TRUE(wedge.ok());
-  expect_solid(Csg::intersect({box(0, 1), Csg::leaf(*wedge)}), mpq_class(3, 8));
+  expect_solid(Csg::intersection({box(0, 1), Csg::leaf(*wedge)}), mpq_class(3, 8));
 }
 
 TEST(CsgToMesh, ComplementInsideAnIntersectionIsADifference) {
-  expect_solid(Csg::intersect({box(0, 2), Csg::complement(box(1, 3))}), 7);
-  expect_solid(Csg::subtract(box(0, 2), Csg::complement(box(1, 3))), 1);
+  expect_solid(Csg::intersection({box(0, 2), Csg::complement(box(1, 3))}), 7);
+  expect_solid(Csg::difference(box(0, 2), Csg::complement(box(1, 3))), 1);
 }
 
 TEST(CsgToMesh, NestedUnionsAndDifferenceOfAUnionGiveTheExactVolume) {
   expect_solid(Csg::unite({box(0, 1), Csg::unite({box(2, 3), Csg::unite({box(4, 5)})})}), 3);
-  expect_solid(Csg::subtract(box(0, 4), Csg::unite({box(-1, 1), box(3, 5)})), 62);
-  expect_solid(Csg::intersect({box(0, 2), Csg::intersect({box(1, 3), box(1, 2)})}), 1);
+  expect_solid(Csg::difference(box(0, 4), Csg::unite({box(-1, 1), box(3, 5)})), 62);
+  expect_solid(Csg::intersection({box(0, 2), Csg::intersection({box(1, 3), box(1, 2)})}), 1);
 }
 
 TEST(CsgToMesh, EmptyTreesGiveAMeshWithNoTriangles) {
-  for (const Csg& tree : {Csg::unite({}), Csg::intersect({box(0, 1), box(2, 3)}),
-                          Csg::subtract(box(0, 1), box(-1, 2))}) {
+  for (const Csg& tree : {Csg::unite({}), Csg::intersection({box(0, 1), box(2, 3)}),
+                          Csg::difference(box(0, 1), box(-1, 2))}) {
     auto result = clip::csg_to_mesh(tree);
     ASSERT_TRUE(result.ok()) << result.error().what();
     EXPECT_TRUE(result->mesh.triangles.empty());
@@ -116,7 +116,7 @@ TEST(CsgToMesh, ALoneLeafIsRepaired) {
 
 TEST(CsgToMesh, NonPolyhedralLeavesAreRefusedByTheirPathBeforeAnyBoolean) {
   const Csg tree =
-      Csg::subtract(box(0, 1), Csg::unite({box(0, 0.5), Csg::leaf(Sphere{{0, 0, 0}, 0.5})}));
+      Csg::difference(box(0, 1), Csg::unite({box(0, 0.5), Csg::leaf(Sphere{{0, 0, 0}, 0.5})}));
   auto result = clip::csg_to_mesh(tree);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().kind, ErrorKind::unsupported);
@@ -127,7 +127,7 @@ TEST(CsgToMesh, NonPolyhedralLeavesAreRefusedByTheirPathBeforeAnyBoolean) {
     called = true;
     return 1.0;
   })));
-  result = clip::csg_to_mesh(Csg::intersect({box(0, 1), implicit}));
+  result = clip::csg_to_mesh(Csg::intersection({box(0, 1), implicit}));
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().message.rfind("intersection[1].complement.implicit: ", 0), 0u)
       << result.error().message;
@@ -135,9 +135,10 @@ TEST(CsgToMesh, NonPolyhedralLeavesAreRefusedByTheirPathBeforeAnyBoolean) {
 }
 
 TEST(CsgToMesh, UnboundedTreesAreRefused) {
-  for (const Csg& tree : {Csg::leaf(Plane{0, 0, 1, 0}), Csg::complement(box(0, 1)),
-                          Csg::unite({box(0, 1), Csg::leaf(Plane{0, 0, 1, 0})}), Csg::intersect({}),
-                          Csg::subtract(Csg::leaf(Plane{0, 0, 1, 0}), box(0, 1))}) {
+  for (const Csg& tree :
+       {Csg::leaf(Plane{0, 0, 1, 0}), Csg::complement(box(0, 1)),
+        Csg::unite({box(0, 1), Csg::leaf(Plane{0, 0, 1, 0})}), Csg::intersection({}),
+        Csg::difference(Csg::leaf(Plane{0, 0, 1, 0}), box(0, 1))}) {
     auto result = clip::csg_to_mesh(tree);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().kind, ErrorKind::invalid_value);

@@ -147,19 +147,19 @@ std::vector<std::pair<const char*, std::function<Csg(Csg)>>> trees() {
        }},
       {"intersection with an overlapping box",
        [=](Csg x) {
-         return Csg::intersect({x, box({0.5, 0, -1}, {2, 0.5, 2})});
+         return Csg::intersection({x, box({0.5, 0, -1}, {2, 0.5, 2})});
        }},
       {"minus a half-space through the middle",
        [](Csg x) {
-         return Csg::subtract(x, Csg::leaf(Plane{1, 0, 0, -0.5}));
+         return Csg::difference(x, Csg::leaf(Plane{1, 0, 0, -0.5}));
        }},
       {"minus a ball centred on a vertex",
        [](Csg x) {
-         return Csg::subtract(x, Csg::leaf(Sphere{{1, 1, 1}, 0.5}));
+         return Csg::difference(x, Csg::leaf(Sphere{{1, 1, 1}, 0.5}));
        }},
       {"intersection with a ball cutting the edges",
        [](Csg x) {
-         return Csg::intersect({x, Csg::leaf(Sphere{{0.5, 0.5, 0.5}, 0.75})});
+         return Csg::intersection({x, Csg::leaf(Sphere{{0.5, 0.5, 0.5}, 0.75})});
        }},
       {"union with a ball tangent to a face",
        [](Csg x) {
@@ -243,7 +243,7 @@ TEST(CsgMesh, TwoTouchingCubeMeshesUniteIntoOneBox) {
 
 TEST(CsgMesh, MeshMinusBallLeavesTheCutSurfaceOnTheBoundary) {
   const Csg cut =
-      Csg::subtract(mesh_leaf(cube_mesh({0, 0, 0}, {2, 2, 2})), Csg::leaf(Sphere{{1, 1, 2}, 1}));
+      Csg::difference(mesh_leaf(cube_mesh({0, 0, 0}, {2, 2, 2})), Csg::leaf(Sphere{{1, 1, 2}, 1}));
   const CsgSolid solid = prepared(cut);
   EXPECT_EQ(solid.locate({1, 1, 1}), Location::boundary);  // bottom of the ball
   EXPECT_EQ(solid.locate({1, 1, 0.5}), Location::inside);
@@ -252,9 +252,9 @@ TEST(CsgMesh, MeshMinusBallLeavesTheCutSurfaceOnTheBoundary) {
   EXPECT_EQ(solid.locate({0, 0, 2}), Location::boundary);  // a corner away from the ball
   EXPECT_EQ(solid.locate({0, 1, 2}), Location::boundary);  // where the ball meets two faces
   EXPECT_EQ(solid.locate({1, 0, 0}), Location::boundary);
-  expect_same(cut,
-              Csg::subtract(Csg::leaf(Box3{{0, 0, 0}, {2, 2, 2}}), Csg::leaf(Sphere{{1, 1, 2}, 1})),
-              "cube - ball");
+  expect_same(
+      cut, Csg::difference(Csg::leaf(Box3{{0, 0, 0}, {2, 2, 2}}), Csg::leaf(Sphere{{1, 1, 2}, 1})),
+      "cube - ball");
 }
 
 TEST(CsgMesh, MeshLeafAloneAgreesWithMeshIndex) {

@@ -30,7 +30,7 @@ Csg half(double a, double b, double c, double d) {
 
 TEST(Csg, SurfaceOfAInsideBIsBoundaryOfTheIntersectionAndInsideOfTheUnion) {
   const Csg a = ball({0, 0, 0}, 1), b = box({-2, -2, -2}, {2, 2, 2});
-  EXPECT_EQ(at(Csg::intersect({a, b}), {1, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::intersection({a, b}), {1, 0, 0}), Location::boundary);
   EXPECT_EQ(at(Csg::unite({a, b}), {1, 0, 0}), Location::inside);
 }
 
@@ -43,7 +43,7 @@ TEST(Csg, PointOnTheFaceSharedByTwoTouchingBoxesIsInsideTheirUnion) {
 }
 
 TEST(Csg, IntersectionOfBoxesTouchingAlongAFaceIsEmpty) {
-  const Csg i = Csg::intersect({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})});
+  const Csg i = Csg::intersection({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})});
   EXPECT_EQ(at(i, {1, 0.5, 0.5}), Location::outside);
 }
 
@@ -69,7 +69,7 @@ TEST(Csg, EightOctantBoxesFillTheirCommonCorner) {
 }
 
 TEST(Csg, BoundaryOfBInsideAIsBoundaryOfTheDifferenceAndBoundaryOfAInsideBIsRemoved) {
-  const Csg d = Csg::subtract(box({0, 0, 0}, {4, 4, 4}), ball({4, 2, 2}, 1));
+  const Csg d = Csg::difference(box({0, 0, 0}, {4, 4, 4}), ball({4, 2, 2}, 1));
   EXPECT_EQ(at(d, {3, 2, 2}), Location::boundary);  // on the ball, inside the box
   EXPECT_EQ(at(d, {4, 2, 2}), Location::outside);   // on the box, inside the ball
   EXPECT_EQ(at(d, {4, 2, 3}), Location::boundary);  // where both surfaces cross
@@ -96,9 +96,9 @@ TEST(Csg, ComplementOfComplementIsTheSolid) {
 }
 
 TEST(Csg, NestedDifferencesRestoreTheInnermostBox) {
-  const Csg shell = Csg::subtract(
+  const Csg shell = Csg::difference(
       box({0, 0, 0}, {4, 4, 4}),
-      Csg::subtract(box({1, 1, 1}, {3, 3, 3}), box({1.5, 1.5, 1.5}, {2.5, 2.5, 2.5})));
+      Csg::difference(box({1, 1, 1}, {3, 3, 3}), box({1.5, 1.5, 1.5}, {2.5, 2.5, 2.5})));
   EXPECT_EQ(at(shell, {2, 2, 2}), Location::inside);
   EXPECT_EQ(at(shell, {1.5, 2, 2}), Location::boundary);
   EXPECT_EQ(at(shell, {1.2, 2, 2}), Location::outside);
@@ -117,34 +117,34 @@ TEST(Csg, PointExactlyOnASphereIsBoundaryUnlessCovered) {
 TEST(Csg, SphereTangentToAPlaneFromOutsideLeavesACuspOnTheBoundaryOfTheUnion) {
   const Csg s = ball({0, 0, 1}, 1), below = half(0, 0, -1, 0);  // z <= 0
   EXPECT_EQ(at(Csg::unite({s, below}), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::intersect({s, below}), {0, 0, 0}), Location::outside);
-  EXPECT_EQ(at(Csg::subtract(below, s), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::subtract(s, below), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::intersection({s, below}), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::difference(below, s), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::difference(s, below), {0, 0, 0}), Location::boundary);
 }
 
 TEST(Csg, SphereTangentToAPlaneFromInsideIsOrderedByCurvature) {
   const Csg s = ball({0, 0, 1}, 1), above = half(0, 0, 1, 0);  // z >= 0
   EXPECT_EQ(at(Csg::unite({s, above}), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::intersect({s, above}), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::subtract(s, above), {0, 0, 0}), Location::outside);
-  EXPECT_EQ(at(Csg::subtract(above, s), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::intersection({s, above}), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::difference(s, above), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::difference(above, s), {0, 0, 0}), Location::boundary);
   EXPECT_EQ(at(Csg::unite({Csg::complement(above), s}), {0, 0, 0}), Location::boundary);
 }
 
 TEST(Csg, InternallyTangentSpheresAreOrderedByRadius) {
   const Csg small = ball({0, 0, 1}, 1), large = ball({0, 0, 2}, 2);
-  EXPECT_EQ(at(Csg::subtract(small, large), {0, 0, 0}), Location::outside);
-  EXPECT_EQ(at(Csg::subtract(large, small), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::difference(small, large), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::difference(large, small), {0, 0, 0}), Location::boundary);
   EXPECT_EQ(at(Csg::unite({small, large}), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::intersect({small, large}), {0, 0, 0}), Location::boundary);
+  EXPECT_EQ(at(Csg::intersection({small, large}), {0, 0, 0}), Location::boundary);
   const Csg same = ball({0, 0, 1}, 1);
-  EXPECT_EQ(at(Csg::subtract(small, same), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::difference(small, same), {0, 0, 0}), Location::outside);
 }
 
 TEST(Csg, ExternallyTangentSpheresTouchAtACusp) {
   const Csg up = ball({0, 0, 1}, 1), down = ball({0, 0, -1}, 1);
   EXPECT_EQ(at(Csg::unite({up, down}), {0, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::intersect({up, down}), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::intersection({up, down}), {0, 0, 0}), Location::outside);
   // The complement of the union has a thin region at the contact: still its boundary.
   EXPECT_EQ(at(Csg::complement(Csg::unite({up, down})), {0, 0, 0}), Location::boundary);
 }
@@ -153,7 +153,7 @@ TEST(Csg, ExternallyTangentSpheresTouchAtACusp) {
 // call the point inside, but the ball bends away along the edge and lets the wedge show.
 TEST(Csg, BallTangentAlongTheEdgeOfAWedgeIsSeenAtSecondOrder) {
   const Csg s = ball({-3, -4, 0}, 5);  // tangent plane 3x + 4y = 0 through the z axis
-  const Csg quadrant = Csg::intersect({half(-1, 0, 0, 0), half(0, -1, 0, 0)});  // x, y <= 0
+  const Csg quadrant = Csg::intersection({half(-1, 0, 0, 0), half(0, -1, 0, 0)});  // x, y <= 0
   EXPECT_EQ(at(Csg::unite({s, Csg::complement(quadrant)}), {0, 0, 0}), Location::boundary);
   EXPECT_EQ(at(Csg::unite({s, Csg::complement(quadrant)}), {0, 0, 7}), Location::boundary);
 }
@@ -168,7 +168,7 @@ TEST(Csg, SolidsWithoutInteriorAreEmpty) {
 
 TEST(Csg, EmptyUnionIsNothingAndEmptyIntersectionIsEverything) {
   EXPECT_EQ(at(Csg::unite({}), {0, 0, 0}), Location::outside);
-  EXPECT_EQ(at(Csg::intersect({}), {0, 0, 0}), Location::inside);
+  EXPECT_EQ(at(Csg::intersection({}), {0, 0, 0}), Location::inside);
 }
 
 TEST(Csg, ConvexLeavesFromMeshAndPlanesShareAFace) {
@@ -183,7 +183,7 @@ TEST(Csg, ConvexLeavesFromMeshAndPlanesShareAFace) {
   const Csg both = Csg::unite({Csg::leaf(*lower), Csg::leaf(*upper)});
   EXPECT_EQ(at(both, {0.25, 0.25, 0.5}), Location::inside);  // on the shared face
   EXPECT_EQ(at(both, {0.5, 0.5, 0}), Location::boundary);    // edge on the outer surface
-  EXPECT_EQ(at(Csg::intersect({Csg::leaf(*lower), Csg::leaf(*upper)}), {0.25, 0.25, 0.5}),
+  EXPECT_EQ(at(Csg::intersection({Csg::leaf(*lower), Csg::leaf(*upper)}), {0.25, 0.25, 0.5}),
             Location::outside);
 }
 
@@ -192,12 +192,12 @@ TEST(Csg, ImplicitLeafUsesItsEstimatedGradientAtItsBoundary) {
   const Csg upper = box({-1, -1, 0}, {1, 1, 1});
   EXPECT_EQ(at(Csg::unite({lower, upper}), {0, 0, 0}), Location::inside);
   EXPECT_EQ(at(Csg::unite({lower, upper}), {2, 0, 0}), Location::boundary);
-  EXPECT_EQ(at(Csg::intersect({lower, upper}), {0, 0, 0}), Location::outside);
+  EXPECT_EQ(at(Csg::intersection({lower, upper}), {0, 0, 0}), Location::outside);
 }
 
 TEST(CsgPrepare, RejectsInvalidLeavesNamingTheirPlace) {
-  auto negative = CsgSolid::prepare(Csg::intersect(
-      {box({0, 0, 0}, {1, 1, 1}), Csg::subtract(ball({0, 0, 0}, 1), ball({0, 0, 0}, -1))}));
+  auto negative = CsgSolid::prepare(Csg::intersection(
+      {box({0, 0, 0}, {1, 1, 1}), Csg::difference(ball({0, 0, 0}, 1), ball({0, 0, 0}, -1))}));
   ASSERT_FALSE(negative.ok());
   EXPECT_EQ(negative.error().message, "intersection[1].difference[1]: sphere radius is negative");
   EXPECT_FALSE(CsgSolid::prepare(box({0, 0, 0}, {-1, 1, 1})).ok());
@@ -223,8 +223,8 @@ TEST(Csg, RandomBoxTreesAgreeWithTheOctantOracle) {
     }
     if (kind == 1)
       return Csg::unite({random_tree(depth - 1), random_tree(depth - 1), random_tree(depth - 1)});
-    if (kind == 2) return Csg::intersect({random_tree(depth - 1), random_tree(depth - 1)});
-    if (kind == 3) return Csg::subtract(random_tree(depth - 1), random_tree(depth - 1));
+    if (kind == 2) return Csg::intersection({random_tree(depth - 1), random_tree(depth - 1)});
+    if (kind == 3) return Csg::difference(random_tree(depth - 1), random_tree(depth - 1));
     return Csg::complement(random_tree(depth - 1));
   };
   std::function<bool(const Csg&, Vec3)> contains = [&](const Csg& t, Vec3 p) -> bool {
@@ -236,12 +236,12 @@ TEST(Csg, RandomBoxTreesAgreeWithTheOctantOracle) {
           if (contains(c, p)) return true;
         }
         return false;
-      case CsgOp::intersect:
+      case CsgOp::intersection:
         for (const Csg& c : t.operands()) {
           if (!contains(c, p)) return false;
         }
         return true;
-      case CsgOp::subtract:
+      case CsgOp::difference:
         return contains(t.operands()[0], p) && !contains(t.operands()[1], p);
       case CsgOp::complement:
         return !contains(t.operands()[0], p);
@@ -276,7 +276,7 @@ TEST(Csg, RandomBoxTreesAgreeWithTheOctantOracle) {
 }
 
 TEST(CsgSolid, BatchAnswersEqualSingleAnswersWhateverTheThreadCount) {
-  const CsgSolid solid = prepared(Csg::subtract(
+  const CsgSolid solid = prepared(Csg::difference(
       Csg::unite({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})}), ball({1, 1, 1}, 0.5)));
   std::vector<Vec3> points;
   for (int i = -2; i <= 10; ++i) {

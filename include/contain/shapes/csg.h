@@ -47,10 +47,10 @@ using CsgLeaf = std::variant<Sphere, Box3, Plane, ConvexPolyhedron, ImplicitFunc
 /// The kind of a CSG node.
 enum class CsgOp : std::uint8_t {
   leaf,
-  unite,       ///< union of the operands; of none: the empty set
-  intersect,   ///< intersection of the operands; of none: all of space
-  subtract,    ///< first operand minus the second
-  complement,  ///< the (closure of the) complement of the one operand
+  unite,         ///< union of the operands; of none: the empty set
+  intersection,  ///< intersection of the operands; of none: all of space
+  difference,    ///< first operand minus the second
+  complement,    ///< the (closure of the) complement of the one operand
 };
 
 /// A CSG tree as a value: leaves and operations, built bottom-up. Not validated: prepare it with
@@ -60,12 +60,12 @@ class Csg {
   /// A leaf: Csg::leaf(Sphere{{0, 0, 0}, 1}), Csg::leaf(Box3{min, max}), ...
   [[nodiscard]] static Csg leaf(CsgLeaf solid);
   [[nodiscard]] static Csg unite(std::vector<Csg> operands);
-  [[nodiscard]] static Csg intersect(std::vector<Csg> operands);
-  [[nodiscard]] static Csg subtract(Csg a, Csg b);
+  [[nodiscard]] static Csg intersection(std::vector<Csg> operands);
+  [[nodiscard]] static Csg difference(Csg a, Csg b);
   [[nodiscard]] static Csg complement(Csg a);
 
   [[nodiscard]] CsgOp op() const { return op_; }
-  /// The operands of an operation (two for subtract, one for complement, none for a leaf).
+  /// The operands of an operation (two for difference, one for complement, none for a leaf).
   [[nodiscard]] std::span<const Csg> operands() const { return operands_; }
   /// The solid of a leaf. Precondition: op() == CsgOp::leaf.
   [[nodiscard]] const CsgLeaf& solid() const { return *leaf_; }
