@@ -150,6 +150,6 @@ struct Sheets {
 [[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
                                                      const std::vector<TriangleWork>& work,
                                                      const std::vector<FaceLabel>& labels,
-                                                     const PointStore& store, Op op);
+                                                     PointStore& store, Op op);
 
 }  // namespace contain::clip::solid

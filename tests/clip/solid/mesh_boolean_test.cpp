@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include "clip/solid/solid_oracle.h"
+#include "contain/distance/point_primitive.h"
 #include "support/case_budget.h"
 
 namespace contain::test {
@@ -154,22 +157,44 @@ TEST(MeshBoolean, ATinyRotationGivesTheOraclesAnswer) {
     (void)checked({a, turned}, op);
 }
 
-// Noise of 1e-14 makes slivers whose rounded corners are collinear. Until the snap-rounding
-// repair exists, the documented answer is an error of kind `degenerate`: never an invalid mesh.
-TEST(MeshBoolean, NoiseOfAFewUlpsGivesAValidMeshOrTheDegenerateError) {
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
+// The largest distance from a written vertex to the inputs' surfaces (the exact result's
+// boundary lies on them), over the largest input coordinate's magnitude.
+double farthest_vertex(const std::vector<Mesh>& inputs, const Mesh& out) {
+  double scale = 0.0;
+  for (const Mesh& m : inputs) {
+    for (const Vec3 v : m.vertices)
+      scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  }
+  double worst = 0.0;
+  for (const Vec3 v : out.vertices) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Mesh& m : inputs) {
+      for (const TriangleIndices& t : m.triangles) {
+        const Triangle3 tri{m.vertex(t[0]), m.vertex(t[1]), m.vertex(t[2])};
+        nearest = std::min(nearest, distance::point_triangle(v, tri).distance);
+      }
+    }
+    worst = std::max(worst, nearest);
+  }
+  return worst / scale;
+}
+
+// Noise of 1e-14 makes slivers whose rounded corners are collinear or folded: the iterated snap
+// rounding gives a valid mesh in every case (5 of these 32 ended in the degenerate error with
+// points merged on grids alone), every vertex within the spec's 1e-9 of the largest coordinate
+// of the exact boundary, and the oracle's winding numbers.
+TEST(MeshBoolean, NoiseOf1em14IsSnapRoundedToAValidMeshNearTheExactBoundary) {
   const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
-  Mesh noisy = a;
-  for (Vec3& v : noisy.vertices)
-    v = {v.x + 1e-14 * u(rng), v.y + 1e-14 * u(rng), v.z + 1e-14 * u(rng)};
-  const std::vector<Mesh> in = {a, noisy};
-  for (const Op op : all_ops) {
-    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in, {.op = op});
-    if (r.ok()) {
-      EXPECT_EQ(invalid_reason(r->mesh), "");
-    } else {
-      EXPECT_EQ(r.error().kind, ErrorKind::degenerate) << r.error().message;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Mesh noisy = a;
+    for (Vec3& v : noisy.vertices)
+      v = {v.x + 1e-14 * u(rng), v.y + 1e-14 * u(rng), v.z + 1e-14 * u(rng)};
+    const std::vector<Mesh> in = {a, noisy};
+    for (const Op op : all_ops) {
+      const clip::MeshBooleanResult r = checked(in, op, 100, seed);
+      EXPECT_LE(farthest_vertex(in, r.mesh), 1e-9) << "seed " << seed;
     }
   }
 }
@@ -247,8 +272,8 @@ TEST(MeshBoolean, RandomLatticeBoxesAgreeWithTheOracle) {
 
 // A sphere turned a quarter about z keeps its poles: the two meshes cross at many points within
 // 1e-16 of each other. The exact arrangement is right for every operation (closed by point
-// number, sheets apart); rounding it needs the repair for difference (points merged) and, for
-// xor, more than the crude repair does: there the documented answer is the degenerate error.
+// number, sheets apart); rounding it breaks the difference and the xor, which the iterated snap
+// rounding mends (the xor ended in the degenerate error with points merged on grids alone).
 TEST(MeshBoolean, ASphereWithItselfAndItselfTurnedAQuarter) {
   const Mesh a = icosphere(2, 1.0, {0, 0, 0});
   Mesh turned = a;
@@ -262,14 +287,8 @@ TEST(MeshBoolean, ASphereWithItselfAndItselfTurnedAQuarter) {
     } else {
       EXPECT_TRUE(same.mesh.triangles.empty());
     }
-    if (op != Op::xor_) (void)checked({a, turned}, op, samples);
-  }
-  const std::vector<Mesh> in = {a, turned};
-  const Result<clip::MeshBooleanResult> x = clip::mesh_boolean(in, {.op = Op::xor_});
-  if (x.ok()) {
-    EXPECT_EQ(invalid_reason(x->mesh), "");
-  } else {
-    EXPECT_EQ(x.error().kind, ErrorKind::degenerate) << x.error().message;
+    const clip::MeshBooleanResult r = checked({a, turned}, op, samples);
+    EXPECT_LE(farthest_vertex({a, turned}, r.mesh), 1e-9) << static_cast<int>(op);
   }
 }
 
