@@ -52,12 +52,13 @@ struct MeshBooleanResult {
 /// grouped by position and labelled with every input's winding number on both sides (one exact
 /// ray per connected patch group, then the jumps across faces); a face is kept where
 /// `op(filled)` differs on its two sides, oriented with the in-side behind; where the result
-/// touches itself the sheets get their own vertices; vertices rounded to the nearest doubles
-/// and the written mesh checked exactly; when the check fails, iterated snap rounding: the
-/// written mesh's own arrangement computed exactly again (as a union) and rounded, after three
-/// rounds also with points closer than 2^2, 2^5, ... 2^20 ulps of the largest input coordinate
-/// merged, at most 10 rounds (rules solid-* in docs/robustness.md). Coplanar output faces are not
-/// merged: each face of the result is a piece of an input triangle.
+/// touches itself the sheets get their own vertices (before that, adjacent output faces of one
+/// plane are merged and triangulated again without the points inside them that no other face
+/// holds; every point on their outlines stays, so the mesh stays closed); vertices rounded to the
+/// nearest doubles and the written mesh checked exactly; when the check fails, iterated snap
+/// rounding: the written mesh's own arrangement computed exactly again (as a union) and rounded,
+/// after three rounds also with points closer than 2^2, 2^5, ... 2^20 ulps of the largest input
+/// coordinate merged, at most 10 rounds (rules solid-* in docs/robustness.md).
 ///
 /// Complexity: O(n log n) for the hierarchy and the candidate pairs, then work per intersecting
 /// pair and per refined triangle (quadratic in the constraints of one triangle), one ray pair

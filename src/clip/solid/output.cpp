@@ -120,7 +120,7 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
     scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
   }
   scale = std::max(scale, std::numeric_limits<double>::min());
-  const Faces& faces = boundary.faces;
+  const Faces faces = merge_coplanar(soup, boundary, store);
   Result<Mesh> mesh = snap_round(faces, store, scale);
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result.

@@ -137,7 +137,7 @@ Result<Mesh> resolved(const Mesh& mesh, int level, double scale) {
   const Refinement refinement = refine(*soup, work, store);
   const std::vector<FaceLabel> labels = label_faces(*soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(*soup, refinement, work, labels, store, Op::union_);
-  const Faces& faces = boundary.faces;
+  const Faces faces = merge_coplanar(*soup, boundary, store);
   return written_mesh(faces, representatives(faces, store, level, scale), store);
 }
 

@@ -29,6 +29,12 @@ struct BoundaryFaces {
                                            const std::vector<FaceLabel>& labels,
                                            const PointStore& store, Op op);
 
+/// The faces with every region of adjacent faces in one plane (same orientation, joined across
+/// edges held by just those two faces) re-triangulated without the points inside it that no
+/// other face uses. Adds the corners of enclosing triangles to `store`.
+[[nodiscard]] Faces merge_coplanar(const Soup& soup, const BoundaryFaces& boundary,
+                                   PointStore& store);
+
 /// The faces written as doubles and checked exactly; where the check fails, iterated snap
 /// rounding: the written mesh's own arrangement computed exactly again (its crossings and
 /// overlaps resolved as a union) and rounded, then with points merged on coarser grids, for a

@@ -305,6 +305,40 @@ TEST(MeshBoolean, GridOfUnitCubesUnitesToOneBox) {
   const clip::MeshBooleanResult r = checked(cubes, Op::union_, 50);
   EXPECT_EQ(exact_volume(r.mesh), 64);
   EXPECT_EQ(r.shells, 1U);
+  // Each face of the big cube merged from 16 squares: its 16 outline points, 14 triangles.
+  EXPECT_EQ(r.mesh.triangles.size(), 6U * 14U);
+}
+
+// Coplanar pieces of the result merged and triangulated again: a face keeps only the points on
+// its outline (which its neighbours hold too), so the counts are those of the polyhedra
+// themselves, closed genus 0 (V = 2 + F / 2), with the exact volumes unchanged.
+TEST(MeshBoolean, CoplanarPiecesAreMergedIntoFewTriangles) {
+  const Mesh a = box_mesh({0, 0, 0}, {2, 2, 2});
+  const Mesh b = box_mesh({1, 1, 1}, {3, 3, 3});
+  // A minus its corner: 3 whole faces (2 each), 3 L-shaped ones (4 each), 3 squares of B (2).
+  const clip::MeshBooleanResult minus = checked({a, b}, Op::difference);
+  EXPECT_EQ(minus.mesh.triangles.size(), 24U);
+  EXPECT_EQ(minus.mesh.vertices.size(), 14U);
+  EXPECT_EQ(exact_volume(minus.mesh), 7);
+  // The union: 6 whole faces and 6 L-shaped ones.
+  const clip::MeshBooleanResult both = checked({a, b}, Op::union_);
+  EXPECT_EQ(both.mesh.triangles.size(), 36U);
+  EXPECT_EQ(both.mesh.vertices.size(), 20U);
+  EXPECT_EQ(exact_volume(both.mesh), 15);
+  // Two boxes stacked: the sides keep the points where the boxes meet (4 triangles each).
+  const clip::MeshBooleanResult stacked =
+      checked({box_mesh({0, 0, 0}, {2, 2, 1}), box_mesh({0, 0, 1}, {2, 2, 2})}, Op::union_);
+  EXPECT_EQ(stacked.mesh.triangles.size(), 20U);
+  EXPECT_EQ(exact_volume(stacked.mesh), 8);
+  // A box minus a smaller one reaching through its top: a cup. The rim keeps the 4 points where
+  // B's wall diagonals cross A's top plane (true vertices of the arrangement): a top face of
+  // 4 + 8 outline points with a hole (12 triangles), walls of 5 points (3 each), 2 + 8 + 2
+  // for the bottoms and the outer sides.
+  const clip::MeshBooleanResult cup =
+      checked({box_mesh({0, 0, 0}, {4, 4, 4}), box_mesh({1, 1, 1}, {3, 3, 5})}, Op::difference);
+  EXPECT_EQ(exact_volume(cup.mesh), 64 - 12);
+  EXPECT_EQ(cup.mesh.triangles.size(), 36U);
+  EXPECT_EQ(cup.mesh.vertices.size(), 20U);
 }
 
 TEST(MeshBoolean, AnOpenInputIsAnErrorNamingTheInputAndAnEdge) {
