@@ -199,6 +199,29 @@ TEST(MeshBoolean, NoiseOf1em14IsSnapRoundedToAValidMeshNearTheExactBoundary) {
   }
 }
 
+// The same on a sphere (80 triangles) against a copy with 1e-14 noise, and on boxes near 1e6
+// with noise of a few ulps there: slivers everywhere, each operation valid after snap rounding.
+TEST(MeshBoolean, NoisySphereAndFarBoxesAreSnapRoundedToValidMeshes) {
+  for (unsigned seed = 1; seed <= static_cast<unsigned>(case_budget(3, 1)); ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Mesh sphere = icosphere(1, 1.0, {0, 0, 0});
+    Mesh noisy = sphere;
+    for (Vec3& v : noisy.vertices)
+      v = {v.x + 1e-14 * u(rng), v.y + 1e-14 * u(rng), v.z + 1e-14 * u(rng)};
+    const Mesh far = box_mesh({1e6, 1e6, 1e6}, {1e6 + 1, 1e6 + 1, 1e6 + 1});
+    Mesh far_noisy = far;
+    for (Vec3& v : far_noisy.vertices)
+      v = {v.x + 1e-9 * u(rng), v.y + 1e-9 * u(rng), v.z + 1e-9 * u(rng)};
+    for (const Op op : all_ops) {
+      const clip::MeshBooleanResult r = checked({sphere, noisy}, op, 30, seed);
+      EXPECT_LE(farthest_vertex({sphere, noisy}, r.mesh), 1e-9) << "seed " << seed;
+      const clip::MeshBooleanResult q = checked({far, far_noisy}, op, 30, seed);
+      EXPECT_LE(farthest_vertex({far, far_noisy}, q.mesh), 1e-9) << "seed " << seed;
+    }
+  }
+}
+
 TEST(MeshBoolean, SelfIntersectingInputIsRepairedAndAnInsideOutShellSubtracts) {
   const Mesh two = joined(box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 3, 3}));
   const clip::MeshBooleanResult repaired = checked({two}, Op::union_);
