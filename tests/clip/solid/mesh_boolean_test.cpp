@@ -282,15 +282,41 @@ TEST(MeshBoolean, RandomLatticeBoxesAgreeWithTheOracle) {
     return box_mesh({double(lo[0]), double(lo[1]), double(lo[2])},
                     {double(hi[0]), double(hi[1]), double(hi[2])});
   };
+  // The exact volume of the result, a union of unit cells of the lattice: the cells with a
+  // point inside in it (a point whose +x ray meets no edge of a face's diagonal).
+  const auto in_cell = [](const std::vector<Mesh>& in, Op op, Vec3 corner) {
+    for (const Vec3 d : {Vec3{0.5, 0.5, 0.5}, Vec3{0.5, 0.37, 0.61}, Vec3{0.5, 0.23, 0.71}}) {
+      std::vector<int> w;
+      for (const Mesh& m : in) {
+        const std::optional<int> x = exact_winding(m, corner + d);
+        if (x) w.push_back(*x);
+      }
+      if (w.size() == in.size()) return in_result(op, w);
+    }
+    ADD_FAILURE() << "no usable point in the cell";
+    return false;
+  };
+  const auto lattice_volume = [&](const std::vector<Mesh>& in, Op op) {
+    int cells = 0;
+    for (int i = 0; i < 5; ++i) {
+      for (int j = 0; j < 5; ++j) {
+        for (int k = 0; k < 5; ++k)
+          cells += in_cell(in, op, {double(i), double(j), double(k)}) ? 1 : 0;
+      }
+    }
+    return cells;
+  };
   for (int trial = 0; trial < case_budget(8, 4); ++trial) {
     const std::vector<Mesh> in = {random_box(), random_box(), random_box()};
-    for (const Op op : all_ops)
-      (void)checked(in, op, 60, static_cast<unsigned>(trial));
+    for (const Op op : all_ops) {
+      const clip::MeshBooleanResult r = checked(in, op, 60, static_cast<unsigned>(trial));
+      EXPECT_EQ(exact_volume(r.mesh), lattice_volume(in, op));
+    }
   }
   std::vector<Mesh> many;
   for (int i = 0; i < 12; ++i)
     many.push_back(random_box());
-  (void)checked(many, Op::union_, 100);
+  EXPECT_EQ(exact_volume(checked(many, Op::union_, 100).mesh), lattice_volume(many, Op::union_));
 }
 
 // A sphere turned a quarter about z keeps its poles: the two meshes cross at many points within
