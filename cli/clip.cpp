@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "clip_boolean.h"
+#include "clip_solid.h"
 #include "common.h"
 #include "contain/clip/box_clipper.h"
 #include "contain/clip/clip_polygon.h"
@@ -249,14 +250,14 @@ clip::SegmentClipper clipper_of(const std::string& algorithm) {
 template <class S, class Region>
 Status clip_all(const std::vector<S>& in, const Region& region, std::vector<S>& out,
                 std::span<std::uint8_t> kept, const ClipOptions& o) {
-  const clip::SegmentClipOptions options{.clipper = clipper_of(o.algorithm), .threads = o.threads};
+  const clip::SegmentClipOptions options{.clipper = clipper_of(o.algorithm)};
   Status status = Ok{};
   Progress progress("segments", in.size(), !o.quiet && stderr_is_terminal());
   progress.run([&](std::size_t begin, std::size_t end) {
     if (!status) return;
     status = clip::clip_segments(std::span<const S>(in).subspan(begin, end - begin), region,
                                  std::span<S>(out).subspan(begin, end - begin),
-                                 kept.subspan(begin, end - begin), options);
+                                 kept.subspan(begin, end - begin), options, {.threads = o.threads});
   });
   return status;
 }
@@ -306,8 +307,8 @@ int run_segments(const ClipOptions& o) {
 
 std::string polygon_wkt(const MultiPolygon& result) {
   if (result.polygons.empty()) return "POLYGON EMPTY\n";
-  if (result.polygons.size() == 1) return io::write_wkt(result.polygons.front()) + "\n";
-  return io::write_wkt(result) + "\n";
+  if (result.polygons.size() == 1) return io::format_wkt(result.polygons.front()) + "\n";
+  return io::format_wkt(result) + "\n";
 }
 
 // Where --tiles writes: one stream of lines "COLUMN ROW WKT", or with a pattern in --out one file
@@ -374,10 +375,10 @@ Result<TileOutput> tile_output(const std::string& out) {
 }
 
 std::string tile_file_text(const MultiPolygon& tile, const TileOutput& output) {
-  if (output.svg) return io::region_svg(tile);
+  if (output.svg) return io::format_svg(tile);
   if (output.format == io::RegionFormat::geojson) {
-    return (tile.polygons.size() == 1 ? io::write_geojson(tile.polygons.front())
-                                      : io::write_geojson(tile)) +
+    return (tile.polygons.size() == 1 ? io::format_geojson(tile.polygons.front())
+                                      : io::format_geojson(tile)) +
            "\n";
   }
   return polygon_wkt(tile);
@@ -516,20 +517,17 @@ int run_mesh(const ClipOptions& o) {
   if (!o.box.empty()) {
     auto box = box3_of(o.box);
     if (!box) return report(box.error());
-    result = clip::mesh_clip(file->mesh, *box, options);
+    result = clip::clip_mesh(file->mesh, *box, options);
   } else if (!o.halfspaces.empty()) {
     auto planes = planes_of(o);
     if (!planes) return report(planes.error());
-    result = clip::mesh_clip(file->mesh, *planes, options);
+    result = clip::clip_mesh(file->mesh, *planes, options);
   } else {
     auto solid = convex_solid_of(o.convex);
     if (!solid) return report(solid.error());
-    result = clip::mesh_clip(file->mesh, *solid, options);
+    result = clip::clip_mesh(file->mesh, *solid, options);
   }
-  if (o.out.empty() || o.out == "-") return emit(io::format_mesh(result, io::MeshFormat::off), "");
-  const Status written = io::write_mesh(result, o.out);
-  if (!written) return report(written.error());
-  return exit_ok;
+  return emit_mesh(result, o.out);
 }
 
 // The options of one form that another would silently drop (issue 24): a usage error naming
@@ -600,6 +598,8 @@ Verb add_clip(CLI::App& app) {
   cmd->add_flag("--cap", o->cap, "meshes: close the cut of a closed mesh with cap polygons");
   auto boolean = std::make_shared<ClipBooleanOptions>();  // --subject/--clip/--op: clip_boolean.cpp
   add_clip_boolean_options(*cmd, *boolean);
+  auto solid = std::make_shared<ClipSolidOptions>();  // meshes as solids: clip_solid.cpp
+  add_clip_solid_options(*cmd, *solid);
   add_threads_option(*cmd, o->threads);
   add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write the result to FILE (meshes: format by extension)")
@@ -615,20 +615,29 @@ Verb add_clip(CLI::App& app) {
       "  contain clip --polygon field.wkt --convex hull.wkt --out inside.wkt\n"
       "  contain clip a.wkt b.geojson --op union --format geojson\n"
       "  contain clip --subject a.wkt --clip b.wkt --op difference --fill nonzero --format svg\n"
+      "  contain clip --subject part.stl --clip hole.off --clip slot.off --op difference "
+      "--out part.obj\n"
+      "  contain clip --csg bracket.json --out bracket.obj --json\n"
       "Segments print their clipped endpoints, or '-' where nothing is left; a segment that only "
       "touches the region prints a zero-length segment.");
-  return {cmd, [o, boolean, segments, polygon, mesh]() {
-            const bool by_region = segments->count() + polygon->count() + mesh->count() > 0;
-            if (clip_boolean_requested(*boolean)) {
-              if (by_region || !o->box.empty() || !o->halfspaces.empty() || !o->convex.empty() ||
-                  !o->sphere.empty() || !o->circle.empty() || !o->tiles.empty()) {
-                return report(usage(
-                    "a polygon boolean (--op) takes two regions only: --segments, --polygon, "
-                    "--mesh, --box, --halfspace, --convex, --sphere, --circle and --tiles belong "
-                    "to the other forms"));
-              }
-              return run_clip_boolean(*boolean, o->out);
+  return {cmd, [o, boolean, solid, segments, polygon, mesh]() {
+            const bool by_region = segments->count() + polygon->count() + mesh->count() > 0 ||
+                                   !o->box.empty() || !o->halfspaces.empty() ||
+                                   !o->convex.empty() || !o->sphere.empty() || !o->circle.empty() ||
+                                   !o->tiles.empty() || o->cap || o->keep_bridges ||
+                                   !o->algorithm.empty();
+            const bool solids = clip_solid_requested(*boolean, *solid);
+            if (by_region && (solids || clip_boolean_requested(*boolean))) {
+              return report(usage(
+                  "a boolean (--op, --csg) takes its shapes only: --segments, --polygon, --mesh, "
+                  "--box, --halfspace, --convex, --sphere, --circle, --tiles, --cap, "
+                  "--keep-bridges and --algorithm belong to the other forms"));
             }
+            if (solids) return run_clip_solid(*boolean, *solid, o->out);
+            if (solid->json) {
+              return report(usage("--json applies to mesh booleans (a mesh --subject, --csg)"));
+            }
+            if (clip_boolean_requested(*boolean)) return run_clip_boolean(*boolean, o->out);
             // Options of the booleans that the other forms would silently drop.
             for (const CLI::Option* ignored : {boolean->format_option, boolean->fill_option}) {
               if (ignored->count() > 0) {

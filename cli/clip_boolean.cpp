@@ -37,10 +37,12 @@ std::string svg_of(const MultiPolygon& subject, const MultiPolygon& clip,
 
 void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& o) {
   auto* subject = cmd.add_option("--subject", o.subject,
-                                 "subject region (.wkt or .geojson) of a polygon boolean")
+                                 "subject of a boolean: a region (.wkt or .geojson) or a solid "
+                                 "(a mesh: .obj .off .stl .ply)")
                       ->option_text("FILE");
-  auto* clip =
-      cmd.add_option("--clip", o.clip, "clip region (.wkt or .geojson)")->option_text("FILE");
+  auto* clip = cmd.add_option("--clip", o.clips,
+                              "clip of a boolean: a region, or a mesh (repeatable for meshes)")
+                   ->option_text("FILE");
   const std::map<std::string, clip::Op> ops{{"intersection", clip::Op::intersection},
                                             {"union", clip::Op::union_},
                                             {"difference", clip::Op::difference},
@@ -48,7 +50,6 @@ void add_clip_boolean_options(CLI::App& cmd, ClipBooleanOptions& o) {
   auto* op = cmd.add_option("--op", o.op, "the boolean: subject op clip")
                  ->transform(CLI::CheckedTransformer(ops, CLI::ignore_case))
                  ->option_text("intersection|union|difference|xor");
-  subject->needs(clip);
   subject->needs(op);
   clip->needs(subject);
   o.op_option = op;
@@ -83,15 +84,19 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
       return report({ErrorKind::usage, "clip A B needs --op intersection|union|difference|xor"});
     }
     o.subject = o.shapes[0];
-    o.clip = o.shapes[1];
+    o.clips = {o.shapes[1]};
   }
   if (o.subject.empty()) {
     return report({ErrorKind::usage,
                    "clip: --op needs the shapes: 'clip A B --op OP' or --subject A --clip B"});
   }
+  if (o.clips.size() != 1) {
+    return report({ErrorKind::usage, "clip: a polygon boolean takes one --clip region, got " +
+                                         std::to_string(o.clips.size())});
+  }
   auto subject = read_region_warned(o.subject);
   if (!subject) return report(subject.error());
-  auto clip_region = read_region_warned(o.clip);
+  auto clip_region = read_region_warned(o.clips[0]);
   if (!clip_region) return report(clip_region.error());
   const MultiPolygon result =
       clip::polygon_boolean(*subject, *clip_region, {.op = o.op, .fill = o.fill});
@@ -100,12 +105,13 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::string text;
   if (format == "geojson") {
-    text = result.polygons.size() == 1 ? io::write_geojson(result.polygons[0])
-                                       : io::write_geojson(result);
+    text = result.polygons.size() == 1 ? io::format_geojson(result.polygons[0])
+                                       : io::format_geojson(result);
   } else if (format == "svg") {
     text = svg_of(*subject, *clip_region, result);
   } else {
-    text = result.polygons.size() == 1 ? io::write_wkt(result.polygons[0]) : io::write_wkt(result);
+    text =
+        result.polygons.size() == 1 ? io::format_wkt(result.polygons[0]) : io::format_wkt(result);
   }
   text += '\n';
   return emit(text, out);

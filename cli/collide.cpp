@@ -43,15 +43,15 @@ std::string mesh_json(const collide::Contact& c, const collide::MeshPair& pair, 
                       const Transform& tb) {
   std::string w;
   switch (c.witness) {
-    case collide::WitnessKind::triangles:
+    case inside::PairWitness::triangles:
       w = fmt::format(",\"witness\":{{\"kind\":\"triangles\",\"triangle_a\":{},\"triangle_b\":{}}}",
                       c.triangle_a, c.triangle_b);
       break;
-    case collide::WitnessKind::vertex_of_a_in_b:
+    case inside::PairWitness::vertex_of_a_in_b:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_a_in_b\",\"vertex\":{},\"point\":{}}}",
                       c.vertex, json_point(pair.a_vertices()[static_cast<std::size_t>(c.vertex)]));
       break;
-    case collide::WitnessKind::vertex_of_b_in_a:
+    case inside::PairWitness::vertex_of_b_in_a:
       w = fmt::format(",\"witness\":{{\"kind\":\"vertex_of_b_in_a\",\"vertex\":{},\"point\":{}}}",
                       c.vertex, json_point(tb.apply(b.vertex(c.vertex))));
       break;
@@ -78,7 +78,7 @@ int run_regions(const CollideOptions& o) {
   const collide::Contact c = collide::region_region(*a, *b);
   if (!o.json) return emit(answer(c.intersect), o.out);
   std::string w;
-  if (c.witness == collide::WitnessKind::edges) {
+  if (c.witness == inside::PairWitness::edges) {
     w = fmt::format(",\"witness\":{{\"kind\":\"edges\",\"edge_a\":{},\"edge_b\":{}}}", c.triangle_a,
                     c.triangle_b);
   } else if (c.intersect) {

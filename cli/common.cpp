@@ -57,15 +57,13 @@ std::future<std::string> start_self_crossing_check(std::string name, const Mesh&
 }
 
 Result<MultiPolygon> read_region_warned(const std::string& path) {
-  io::WktNotes notes;
-  auto region = io::read_region(path, &notes);
-  if (region) {
-    for (const std::int64_t line : notes.unclosed_rings) {
-      warn(path + ":" + std::to_string(line) +
-           ": ring not closed (WKT repeats the first point at the end); read as closed");
-    }
+  auto read = io::read_region_with_notes(path);
+  if (!read) return read.error();
+  for (const std::int64_t line : read->notes.unclosed_rings) {
+    warn(path + ":" + std::to_string(line) +
+         ": ring not closed (WKT repeats the first point at the end); read as closed");
   }
-  return region;
+  return std::move(read->region);
 }
 
 Result<std::vector<double>> parse_numbers(std::string_view text, std::string_view option) {

@@ -69,6 +69,7 @@ int run_demo(const DemoOptions& o) {
                           demo::sutherland_hodgman_scene,
                           demo::boolean_scene,
                           demo::mesh_clip_scene,
+                          demo::solid_scene,
                           demo::bound_scene,
                           demo::distance_slice_scene,
                           demo::clearance_scene,

@@ -86,8 +86,9 @@ Status mesh_scene(const Context& context) {
   fmt::print(
       "point in mesh      {} points around a torus of {} triangles ({}): index {:.1f} ms, "
       "located in {:.1f} ms ({:.1f} M points/s): {} in, {} on, {} out\n",
-      cloud.size(), torus.triangles.size(), inside::to_string(index.regime()), build_ms, query_ms,
-      cloud.size() / query_ms / 1e3, c.inside, c.boundary, c.outside);
+      cloud.size(), torus.triangles.size(),
+      index.regime() == inside::MeshRegime::closed_exact ? "closed-exact" : "winding-number",
+      build_ms, query_ms, cloud.size() / query_ms / 1e3, c.inside, c.boundary, c.outside);
   // The slice z = 0.3 crosses the tube where the triangles are slanted; z = 0 would hit only
   // vertices of the mesh.
   const std::vector<Vec3> grid = scenes::grid_points({{-3, -3}, {3, 3}}, 161, 0.3);
@@ -152,7 +153,7 @@ Status mesh_clip_scene(const Context& context) {
   const Mesh torus = demo_torus();
   const Plane keep[] = {{0, 0, -1, 0.25}, {1, 0, 0, 1.0}};  // z <= 0.25 and x >= -1
   const Stopwatch clock;
-  const Mesh cut = clip::mesh_clip(torus, keep, {.cut = clip::MeshCut::cap});
+  const Mesh cut = clip::clip_mesh(torus, keep, {.cut = clip::MeshCut::cap});
   const double ms = clock.ms();
   const MeshReport report = validate_mesh(cut);
   fmt::print("mesh clipping      torus by 2 half-spaces with caps: {} triangles in {:.2f} ms, {}\n",

@@ -81,8 +81,8 @@ Status distance_slice_scene(const Context& context) {
                       -kHalf + (j + 0.5) * (2 * kHalf / kCells), kHeight});
   std::vector<distance::Closest3> answers(grid.size());
   const Stopwatch query;
-  prepared.query(grid, answers, {.signed_distance = true, .closest_point = false},
-                 {.threads = context.threads});
+  prepared.distance(grid, answers, {.signed_distance = true, .closest_point = false},
+                    {.threads = context.threads});
   const double query_ms = query.ms();
   std::vector<Location> locations;
   double deepest = 0, farthest = 0;

@@ -60,6 +60,7 @@ Status mesh_scene(const Context& context);
 Status collide_scene(const Context& context);
 Status ccd_scene(const Context& context);
 Status mesh_clip_scene(const Context& context);
+Status solid_scene(const Context& context);
 Status bound_scene(const Context& context);
 Status distance_slice_scene(const Context& context);
 Status clearance_scene(const Context& context);

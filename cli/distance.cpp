@@ -95,9 +95,10 @@ int run_mesh_points(const DistanceOptions& o) {
   }
   std::vector<distance::Closest3> answers(p.size());
   with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
-    prepared.query(std::span<const Vec3>(p).subspan(begin, end - begin),
-                   std::span<distance::Closest3>(answers).subspan(begin, end - begin),
-                   {.signed_distance = signs, .closest_point = o.closest}, {.threads = o.threads});
+    prepared.distance(std::span<const Vec3>(p).subspan(begin, end - begin),
+                      std::span<distance::Closest3>(answers).subspan(begin, end - begin),
+                      {.signed_distance = signs, .closest_point = o.closest},
+                      {.threads = o.threads});
   });
   for (const distance::Closest3& c : answers) {
     text += number(c.distance);
@@ -134,10 +135,10 @@ int run_polygon_points(const DistanceOptions& o) {
   }
   std::vector<distance::Closest2> answers(p.size());
   with_progress(p.size(), o, [&](std::size_t begin, std::size_t end) {
-    prepared.query(std::span<const Vec2>(p).subspan(begin, end - begin),
-                   std::span<distance::Closest2>(answers).subspan(begin, end - begin),
-                   {.signed_distance = o.signed_distance, .closest_point = o.closest},
-                   {.threads = o.threads});
+    prepared.distance(std::span<const Vec2>(p).subspan(begin, end - begin),
+                      std::span<distance::Closest2>(answers).subspan(begin, end - begin),
+                      {.signed_distance = o.signed_distance, .closest_point = o.closest},
+                      {.threads = o.threads});
   });
   for (const distance::Closest2& c : answers) {
     text += number(c.distance);

@@ -204,12 +204,12 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
     }
     const collide::Contact& c = p.contact;
     std::string witness;
-    if (c.witness == collide::WitnessKind::triangles) {
+    if (c.witness == inside::PairWitness::triangles) {
       witness = fmt::format(R"({{"kind":"triangles","triangle_a":{},"triangle_b":{}}})",
                             c.triangle_a, c.triangle_b);
     } else {
       // The vertex of one object inside the other, in world coordinates.
-      const bool of_a = c.witness == collide::WitnessKind::vertex_of_a_in_b;
+      const bool of_a = c.witness == inside::PairWitness::vertex_of_a_in_b;
       const std::size_t k = static_cast<std::size_t>(of_a ? p.a : p.b);
       const Mesh& mesh = scene->meshes[static_cast<std::size_t>(scene->mesh_of[k])];
       const Vec3 w = scene->transforms[k].apply(mesh.vertex(c.vertex));

@@ -104,7 +104,7 @@ std::string format_sections(const std::vector<clip::Section>& sections, const Sl
   if (o.json) {
     for (const clip::Section& s : sections) {
       text += fmt::format("{{\"value\":{},\"wkt\":\"{}\",\"triangles\":{}}}\n", s.value,
-                          io::write_wkt(s.region), triangles_json(s));
+                          io::format_wkt(s.region), triangles_json(s));
     }
     return text;
   }
@@ -113,7 +113,7 @@ std::string format_sections(const std::vector<clip::Section>& sections, const Sl
     for (std::size_t i = 0; i < sections.size(); ++i) {
       text +=
           fmt::format("{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":{}}}",
-                      i ? "," : "", sections[i].value, io::write_geojson(sections[i].region));
+                      i ? "," : "", sections[i].value, io::format_geojson(sections[i].region));
     }
     return text + "]}\n";
   }
@@ -122,16 +122,16 @@ std::string format_sections(const std::vector<clip::Section>& sections, const Sl
                         fmt::format("contain slice {}: {} sections", o.mesh, sections.size()));
   }
   for (const clip::Section& s : sections)
-    text += fmt::format("{}\t{}\n", s.value, io::write_wkt(s.region));
+    text += fmt::format("{}\t{}\n", s.value, io::format_wkt(s.region));
   return text;
 }
 
 std::string format_shadow(const MultiPolygon& region, const SliceCliOptions& o) {
-  if (o.format == "geojson") return io::write_geojson(region) + "\n";
+  if (o.format == "geojson") return io::format_geojson(region) + "\n";
   if (o.format == "svg") {
-    return io::region_svg(region, {.width_px = 800, .title = "contain slice --shadow " + o.mesh});
+    return io::format_svg(region, {.width_px = 800, .title = "contain slice --shadow " + o.mesh});
   }
-  return io::write_wkt(region) + "\n";
+  return io::format_wkt(region) + "\n";
 }
 
 int run_slice(SliceCliOptions o) {

@@ -48,11 +48,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       best_point = c.point;
       best_t = i;
     }
-    const distance::Closest3 one = distance::point_triangle(p, tri);
+    const distance::Closest3 one = distance::point_triangle(tri, p);
     FUZZ_CHECK(one.distance == test::nearest_double_sqrt(c.squared_distance));
   }
   const distance::MeshDistance prepared(*mesh, {.signs = false});
-  const distance::Closest3 got = prepared.query(p);
+  const distance::Closest3 got = prepared.distance(p);
   FUZZ_CHECK(got.distance == test::nearest_double_sqrt(best));
   FUZZ_CHECK(got.feature == best_t);
   FUZZ_CHECK(got.point.x == test::nearest_double(best_point.x));
@@ -67,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   const Vec2 a = in.point2(), b = in.point2(), q2 = in.point2();
   const test::ExactClosest2 c2 = test::exact_closest(q2, Segment2{a, b});
-  FUZZ_CHECK(distance::point_segment(q2, Segment2{a, b}).distance ==
+  FUZZ_CHECK(distance::point_segment(Segment2{a, b}, q2).distance ==
              test::nearest_double_sqrt(c2.squared_distance));
 
   // Two small meshes, B placed.

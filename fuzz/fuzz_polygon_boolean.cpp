@@ -58,8 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   MultiPolygon results[4];
   for (const clip::Op op :
        {clip::Op::intersection, clip::Op::union_, clip::Op::difference, clip::Op::xor_}) {
-    clip::PolygonBooleanStats stats;
-    const MultiPolygon r = clip::polygon_boolean(a, b, {.op = op, .fill = fill}, &stats);
+    const auto [r, stats] = clip::polygon_boolean_with_stats(a, b, {.op = op, .fill = fill});
     const ::testing::AssertionResult valid = test::is_valid_ogc(r);
     if (!valid) std::fprintf(stderr, "op %d: %s\n", static_cast<int>(op), valid.message());
     FUZZ_CHECK(valid);

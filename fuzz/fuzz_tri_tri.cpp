@@ -24,15 +24,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       v.z = 0.0;
   }
   const Triangle3 a{p[0], p[1], p[2]}, b{p[3], p[4], p[5]};
-  const bool hit = collide::tri_tri_intersect(a, b);
+  const bool hit = collide::tri_tri(a, b);
   FUZZ_CHECK(hit == test::exact_tri_tri_3d(a, b));
-  FUZZ_CHECK(collide::tri_tri_intersect(b, a) == hit);
-  FUZZ_CHECK(collide::tri_tri_intersect(Triangle3{a.b, a.c, a.a}, b) == hit);
-  FUZZ_CHECK(collide::tri_tri_intersect(a, Triangle3{b.a, b.c, b.b}) == hit);
+  FUZZ_CHECK(collide::tri_tri(b, a) == hit);
+  FUZZ_CHECK(collide::tri_tri(Triangle3{a.b, a.c, a.a}, b) == hit);
+  FUZZ_CHECK(collide::tri_tri(a, Triangle3{b.a, b.c, b.b}) == hit);
   if (flat) {
     const Triangle2 a2{{a.a.x, a.a.y}, {a.b.x, a.b.y}, {a.c.x, a.c.y}};
     const Triangle2 b2{{b.a.x, b.a.y}, {b.b.x, b.b.y}, {b.c.x, b.c.y}};
-    FUZZ_CHECK(collide::tri_tri_intersect(a2, b2) == hit);
+    FUZZ_CHECK(collide::tri_tri(a2, b2) == hit);
     FUZZ_CHECK(test::exact_tri_tri_2d(a2, b2) == hit);
   }
   return 0;

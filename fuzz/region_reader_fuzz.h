@@ -22,11 +22,11 @@ inline void check_region(const MultiPolygon& region) {
         FUZZ_CHECK(std::isfinite(p.x) && std::isfinite(p.y));
     }
   }
-  auto wkt = io::parse_wkt(io::write_wkt(region), "round trip");
+  auto wkt = io::parse_wkt(io::format_wkt(region), "round trip");
   if (!wkt) std::fprintf(stderr, "%s\n", wkt.error().what().c_str());
   FUZZ_CHECK(wkt.ok());
   FUZZ_CHECK(wkt->all_rings() == region.all_rings());
-  auto json = io::parse_geojson(io::write_geojson(region), "round trip");
+  auto json = io::parse_geojson(io::format_geojson(region), "round trip");
   if (!json) std::fprintf(stderr, "%s\n", json.error().what().c_str());
   FUZZ_CHECK(json.ok());
   FUZZ_CHECK(json->all_rings() == region.all_rings());

@@ -140,4 +140,38 @@ std::vector<Vec3> grid_points(const Box2& box, int n, double z) {
   return points;
 }
 
+Mesh prism(Vec2 center, double radius, int sides, double z0, double z1) {
+  Mesh mesh;
+  for (const double z : {z0, z1}) {
+    for (int i = 0; i < sides; ++i) {
+      const double angle = 2.0 * std::numbers::pi * i / sides;
+      mesh.vertices.push_back(
+          {center.x + radius * std::cos(angle), center.y + radius * std::sin(angle), z});
+    }
+  }
+  const std::int32_t n = sides;
+  for (std::int32_t i = 0; i < n; ++i) {
+    const std::int32_t next = (i + 1) % n;
+    if (i > 0 && next > 0) {
+      mesh.triangles.push_back({0, next, i});          // bottom, seen from below
+      mesh.triangles.push_back({n, n + i, n + next});  // top, seen from above
+    }
+    mesh.triangles.push_back({i, next, n + next});  // side, two triangles
+    mesh.triangles.push_back({i, n + next, n + i});
+  }
+  return mesh;
+}
+
+Csg bracket_csg() {
+  const Csg plate = Csg::leaf(Box3{{0, 0, 0}, {80, 40, 6}});
+  const Csg wall = Csg::leaf(Box3{{0, 0, 6}, {80, 6, 40}});
+  const Csg rib = Csg::intersect(
+      {Csg::leaf(Box3{{37, 6, 6}, {43, 30, 30}}), Csg::leaf(Plane{0, -1, -1, 36})});  // y + z <= 36
+  const Csg fillet = Csg::intersect({Csg::leaf(Box3{{60, 20, -1}, {81, 41, 7}}),
+                                     Csg::leaf(Plane{1, 1, 0, -110})});  // x + y >= 110
+  const Csg holes[] = {Csg::leaf(CsgMesh(prism({15, 25}, 4, 16, -1, 7))),
+                       Csg::leaf(CsgMesh(prism({65, 25}, 4, 16, -1, 7)))};
+  return Csg::subtract(Csg::unite({plate, wall, rib}), Csg::unite({holes[0], holes[1], fillet}));
+}
+
 }  // namespace contain::scenes

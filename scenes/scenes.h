@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contain/shapes/csg.h"
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/box.h"
@@ -54,5 +55,18 @@ namespace contain::scenes {
 
 /// An n x n grid of points spanning `box` in the plane z = `z`, row by row.
 [[nodiscard]] std::vector<Vec3> grid_points(const Box2& box, int n, double z);
+
+/// A closed, outward prism along z: the regular polygon of `sides` corners at `radius` around
+/// `center` (the first on the +x side), from z0 to z1. Corners rounded to doubles.
+[[nodiscard]] Mesh prism(Vec2 center, double radius, int sides, double z0, double z1);
+
+/// The CSG bracket of the demo, the docs and the mesh-boolean tests (mm): a plate 80 x 40 x 6
+/// united with an upright wall 80 x 6 x 34 on its back edge and a triangular rib (a box cut by
+/// the half-space y + z <= 36), minus two bolt holes (16-sided prisms of radius 4 through the
+/// plate at (15, 25) and (65, 25)) and a fillet block (a box cut by x + y >= 110, the plate's
+/// front right corner). Every exact intersection point is a double (the holes' walls meet the
+/// plate's faces at their own corners), so the exact volume is 37248 - 300 minus the holes'
+/// exact cross-sections times 6.
+[[nodiscard]] Csg bracket_csg();
 
 }  // namespace contain::scenes

@@ -69,7 +69,7 @@ bool gd_float(const Triangle3& A, const Triangle3& B) {
       d2[i] = sgn(dot(n, t2[i] - t1[0]));
   }
   if (d2[0] * d2[1] > 0 && d2[0] * d2[2] > 0) return false;
-  if ((d1[0] | d1[1] | d1[2]) == 0) return collide::tri_tri_intersect(A, B);  // coplanar: rare
+  if ((d1[0] | d1[1] | d1[2]) == 0) return collide::tri_tri(A, B);  // coplanar: rare
   auto canon = [](const int d[3], bool& flip) {
     for (int f = 1; f >= -1; f -= 2)
       for (int k = 0; k < 3; ++k)
@@ -111,7 +111,7 @@ void bench_tri_tri() {
   const double t_contain = median_ms(5, [&] {
     for (std::size_t r = 0; r < reps; ++r)
       for (std::size_t i = 0; i < pairs; ++i)
-        r_contain[i] = collide::tri_tri_intersect(a[i], b[i]);
+        r_contain[i] = collide::tri_tri(a[i], b[i]);
   });
   const double t_gd = median_ms(5, [&] {
     for (std::size_t r = 0; r < reps; ++r)
@@ -202,7 +202,7 @@ void bench_mesh_mesh() {
   std::size_t hits = 0, nested = 0;
   for (const auto& c : out) {
     hits += c.intersect;
-    nested += c.intersect && c.witness != collide::WitnessKind::triangles;
+    nested += c.intersect && c.witness != inside::PairWitness::triangles;
   }
   std::printf(
       "  %-38s %8.2f ms  (%.2f us/pose; build %.1f ms)  x 1.00  intersect %zu (nested %zu)\n",
@@ -238,7 +238,7 @@ void bench_mesh_mesh() {
   std::size_t fhits = 0, surface_disagree = 0;
   for (std::size_t i = 0; i < poses_n; ++i) {
     fhits += fr[i];
-    const bool surface = out[i].intersect && out[i].witness == collide::WitnessKind::triangles;
+    const bool surface = out[i].intersect && out[i].witness == inside::PairWitness::triangles;
     surface_disagree += surface != bool(fr[i]);
   }
   std::printf(

@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
   std::size_t nested = 0;
   std::set<std::pair<int, int>> surface;
   for (const collide::ScenePair& p : pairs) {
-    if (p.contact.witness == collide::WitnessKind::triangles) {
+    if (p.contact.witness == inside::PairWitness::triangles) {
       surface.insert({p.a, p.b});
     } else {
       ++nested;

@@ -49,12 +49,12 @@ double timed_ms(const std::function<void()>& f) {
 // "separate n a ms, touching n b ms, nested n c ms": poses of each kind (contain's answer) and
 // their mean time.
 std::string by_kind(const std::vector<PairDistance3>& answers, const std::vector<double>& ms) {
-  using contain::distance::PairContact;
+  using contain::inside::PairWitness;
   std::size_t n[3] = {0, 0, 0};
   double sum[3] = {0, 0, 0};
   for (std::size_t i = 0; i < answers.size(); ++i) {
-    const PairContact c = answers[i].contact;
-    const int k = c == PairContact::none ? 0 : c == PairContact::triangles ? 1 : 2;
+    const PairWitness c = answers[i].contact;
+    const int k = c == PairWitness::none ? 0 : c == PairWitness::triangles ? 1 : 2;
     ++n[k];
     sum[k] += ms[i];
   }
@@ -155,7 +155,7 @@ void run(const char* name, const Mesh& a, const Mesh& b, const std::vector<Trans
     if (want > 0) worst = std::max(worst, rel);
     if (want > 0 && rel > 1e-9) ++differ;
     if (want == 0 && got > 0) {
-      if (ours[i].contact == contain::distance::PairContact::triangles)
+      if (ours[i].contact == contain::inside::PairWitness::triangles)
         ++wrong_touch;
       else
         ++wrong_nested;

@@ -98,20 +98,21 @@ void run(const std::string& name, const Mesh& mesh, std::size_t count, bool peer
   const std::vector<Vec3> points =
       contain::scenes::uniform_points(prepared.index().bounds(), count, 1);
   std::vector<Closest3> truth(points.size());
-  contain::distance::MeshDistance::reset_stats();
+  contain::distance::MeshDistanceStats stats;
   {
     Row row{"contain signed + closest point + triangle", build};
-    row.query =
-        timed([&] { prepared.query(points, truth, {.signed_distance = true}, {.threads = 1}); });
+    row.query = timed([&] {
+      stats =
+          prepared.distance_with_stats(points, truth, {.signed_distance = true}, {.threads = 1});
+    });
     rows.push_back(row);
   }
-  const auto stats = contain::distance::MeshDistance::stats();
   {
     std::vector<Closest3> plain(points.size());
     Row row{"contain signed distance only", build};
     row.query = timed([&] {
-      prepared.query(points, plain, {.signed_distance = true, .closest_point = false},
-                     {.threads = 1});
+      prepared.distance(points, plain, {.signed_distance = true, .closest_point = false},
+                        {.threads = 1});
     });
     for (std::size_t i = 0; i < points.size(); ++i)
       row.distance_mismatches += plain[i].distance != truth[i].distance;

@@ -70,9 +70,9 @@ void run(const char* name, const std::vector<Ring>& rings, std::size_t count) {
       contain::scenes::uniform_points(contain::bounding_box(rings), count, 2);
   std::vector<contain::distance::Closest2> ours(points.size()), with_point(points.size());
   const double t_contain =
-      timed([&] { prepared.query(points, ours, {.closest_point = false}, {.threads = 1}); });
+      timed([&] { prepared.distance(points, ours, {.closest_point = false}, {.threads = 1}); });
   const double t_contain_point =
-      timed([&] { prepared.query(points, with_point, {}, {.threads = 1}); });
+      timed([&] { prepared.distance(points, with_point, {}, {.threads = 1}); });
   // within: a tenth of the region's size
   const contain::Box2 box = contain::bounding_box(rings);
   const double d = 0.1 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);

@@ -3,7 +3,7 @@
 The Python face of the contain C++ library. Two layers, as in C++: one-shot functions
 (point_in_polygon, point_in_mesh, collide, polygon_boolean, bounding_sphere, ...) and prepared
 objects that own their acceleration structure and answer batches on every core with the GIL
-released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, WindingNumber,
+released (MeshIndex, PolygonIndex, MeshPair, CsgSolid, ConvexPolyhedron, FastWindingNumber,
 MovingMeshPair). Continuous collision: vertex_face_ccd and edge_edge_ccd on (N, 8, 3) arrays,
 mesh_mesh_ccd and MovingMeshPair.
 
@@ -46,9 +46,11 @@ from ._contain import (
     ConvexPolyhedron,
     ConvexShape,
     Csg,
+    FastWindingNumber,
     CsgSolid,
     Location,
     Mesh,
+    MeshBooleanResult,
     MeshDistance,
     MeshImpact,
     MeshIndex,
@@ -63,7 +65,6 @@ from ._contain import (
     SolidScene,
     RegionDistance,
     TileIterator,
-    WindingNumber,
     aabb,
     as_mesh,
     as_region,
@@ -83,9 +84,11 @@ from ._contain import (
     convex_intersect,
     edge_edge_ccd,
     format_mesh,
+    format_wkt,
     generalized_winding_number,
     is_mesh_like,
     iter_tiles,
+    mesh_boolean,
     mesh_mesh_ccd,
     orient2d,
     orient3d,
@@ -99,6 +102,8 @@ from ._contain import (
     polygon_boolean,
     read_mesh,
     read_region,
+    repair_solid,
+    segment_segment,
     segment_triangle,
     segments_intersect,
     self_intersections,
@@ -125,9 +130,11 @@ __all__ = [
     "ConvexPolyhedron",
     "ConvexShape",
     "Csg",
+    "FastWindingNumber",
     "CsgSolid",
     "Location",
     "Mesh",
+    "MeshBooleanResult",
     "MeshDistance",
     "MeshImpact",
     "MeshIndex",
@@ -142,7 +149,6 @@ __all__ = [
     "SolidScene",
     "RegionDistance",
     "TileIterator",
-    "WindingNumber",
     "aabb",
     "as_mesh",
     "as_region",
@@ -162,9 +168,11 @@ __all__ = [
     "convex_intersect",
     "edge_edge_ccd",
     "format_mesh",
+    "format_wkt",
     "generalized_winding_number",
     "is_mesh_like",
     "iter_tiles",
+    "mesh_boolean",
     "mesh_mesh_ccd",
     "orient2d",
     "orient3d",
@@ -178,6 +186,8 @@ __all__ = [
     "polygon_boolean",
     "read_mesh",
     "read_region",
+    "repair_solid",
+    "segment_segment",
     "segment_triangle",
     "segments_intersect",
     "self_intersections",
@@ -192,3 +202,17 @@ __all__ = [
     "write_mesh",
     "write_wkt",
 ]
+
+# Old names of classes, kept for now: each use warns (a DeprecationWarning naming the new one).
+_RENAMED = {"WindingNumber": "FastWindingNumber"}
+
+
+def __getattr__(name):
+    if name in _RENAMED:
+        import warnings
+
+        new = _RENAMED[name]
+        warnings.warn(f"contain.{name} is deprecated: use contain.{new} (the name of the C++ "
+                      "type; docs/python.md, Renamed)", DeprecationWarning, stacklevel=2)
+        return globals()[new]
+    raise AttributeError(f"module 'contain' has no attribute {name!r}")

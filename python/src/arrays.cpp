@@ -132,6 +132,11 @@ Items as_items(const py::handle& object, py::ssize_t rows, py::ssize_t columns, 
   return items;
 }
 
+bool is_one_point(const py::handle& object, py::ssize_t dimension) {
+  const py::array array = py::array::ensure(object);
+  return array && array.ndim() == 1 && array.shape(0) == dimension;
+}
+
 std::size_t paired_count(const Items& a, const Items& b, const char* what) {
   if (a.size() == 1 && a.single) return b.size();
   if (b.size() == 1 && b.single) return a.size();

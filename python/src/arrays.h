@@ -59,6 +59,10 @@ struct Items {
 [[nodiscard]] Items as_items(const py::handle& object, py::ssize_t rows, py::ssize_t columns,
                              const char* name);
 
+/// True when `object` is one point of `dimension` numbers (shape (dimension,)), which a batch
+/// call such as `locate` answers with a scalar; anything else is read as a batch.
+[[nodiscard]] bool is_one_point(const py::handle& object, py::ssize_t dimension);
+
 /// The item count of a pair of batches, one of which may be a single item that pairs with every
 /// item of the other; ValueError when both are batches of different lengths.
 [[nodiscard]] std::size_t paired_count(const Items& a, const Items& b, const char* what);

@@ -80,8 +80,8 @@ Empty input gives min = +inf, max = -inf.
       "bounding_sphere",
       [](const ShapeLike& argument, const std::string& method, const std::string& vertices) {
         const py::handle shape = argument.object;
-        const bound::SphereOptions options{.method = parse_method(method),
-                                           .vertices = parse_vertices(vertices)};
+        const bound::BoundingSphereOptions options{.method = parse_method(method),
+                                                   .vertices = parse_vertices(vertices)};
         if (is_mesh_like(shape)) {
           const MeshRef ref = to_mesh(shape, "shape");
           const Mesh& mesh = *ref;
@@ -112,7 +112,7 @@ vertices (meshes): 'referenced' (default) or 'all', as in aabb.
       "bounding_circle",
       [](const ShapeLike& argument, const std::string& method) {
         const py::handle shape = argument.object;
-        const bound::CircleOptions options{.method = parse_method(method)};
+        const bound::BoundingCircleOptions options{.method = parse_method(method)};
         if (is_region_like(shape)) {
           const Circle c = take(bound::bounding_circle(to_region(shape, "shape"), options));
           return disc(c.center, c.radius);

@@ -118,6 +118,51 @@ std::vector<Vec3> to_positions(const py::handle& object, std::size_t count, cons
   return {v.begin(), v.end()};
 }
 
+// Which form of MovingMeshPair.first_contact a call is, by the first argument's shape: many
+// motions ((N, 24), (N, 2, 12), (N, 2, 3, 4), (N, 2, 4, 4)), B's vertices at t = 1 ((V, 3)), or
+// a pose ((12,), (3, 4), (4, 4), None).
+enum class FirstContactForm { pose, motions, deforming };
+
+FirstContactForm first_contact_form(const py::object& from_b, const py::object& to_b) {
+  if (from_b.is_none() || !to_b.is_none()) return FirstContactForm::pose;
+  const py::array array = py::array::ensure(from_b);
+  if (!array) return FirstContactForm::pose;
+  const auto dim = [&](py::ssize_t d) { return array.ndim() > d ? array.shape(d) : -1; };
+  if ((array.ndim() == 2 && dim(1) == 24) || (array.ndim() == 3 && dim(1) == 2) ||
+      array.ndim() == 4) {
+    return FirstContactForm::motions;
+  }
+  if (array.ndim() == 2 && dim(1) == 3) return FirstContactForm::deforming;
+  return FirstContactForm::pose;
+}
+
+py::tuple first_contacts(const collide::MovingMeshPair& pair, const py::handle& motions,
+                         int threads) {
+  const std::vector<collide::Motion> ms = to_motions(motions);
+  std::vector<collide::MeshImpact> out(ms.size());
+  {
+    py::gil_scoped_release release;
+    pair.first_contact(ms, out, BatchOptions{.threads = threads});
+  }
+  py::array_t<bool> hit(static_cast<py::ssize_t>(out.size()));
+  py::array_t<double> time(static_cast<py::ssize_t>(out.size()));
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    hit.mutable_data()[i] = out[i].hit;
+    time.mutable_data()[i] = out[i].time;
+  }
+  return py::make_tuple(hit, time);
+}
+
+py::object deforming_contact(const collide::MovingMeshPair& pair, const py::handle& b_at1) {
+  const std::vector<Vec3> positions = to_positions(b_at1, pair.b_vertex_count(), "b_at1");
+  collide::MeshImpact impact;
+  {
+    py::gil_scoped_release release;
+    impact = pair.first_contact(positions);
+  }
+  return py::cast(impact);
+}
+
 py::object optional_pair(const std::array<std::int32_t, 2>& e) {
   if (e[0] < 0) return py::none();
   return py::make_tuple(e[0], e[1]);
@@ -250,48 +295,52 @@ a double, with the witness pair of primitives.
            "and B.")
       .def(
           "first_contact",
-          [](const collide::MovingMeshPair& pair, const TransformLike& from_b,
-             const TransformLike& to_b) {
-            const collide::Motion motion = to_motion(from_b.object, to_b.object, "from_b", "to_b");
-            py::gil_scoped_release release;
-            return pair.first_contact(motion);
+          [](const collide::MovingMeshPair& pair, const py::object& from_b, const py::object& to_b,
+             int threads) -> py::object {
+            switch (first_contact_form(from_b, to_b)) {
+              case FirstContactForm::motions:
+                return first_contacts(pair, from_b, threads);
+              case FirstContactForm::deforming:
+                return deforming_contact(pair, from_b);
+              case FirstContactForm::pose:
+                break;
+            }
+            const collide::Motion motion = to_motion(from_b, to_b, "from_b", "to_b");
+            collide::MeshImpact impact;
+            {
+              py::gil_scoped_release release;
+              impact = pair.first_contact(motion);
+            }
+            return py::cast(impact);
           },
-          "from_b"_a = py::none(), "to_b"_a = py::none(),
-          "The first contact with B moving from from_b (t = 0) to to_b (t = 1; None: from_b). "
-          "A MeshImpact.")
+          "from_b"_a = py::none(), "to_b"_a = py::none(), py::kw_only(), "threads"_a = 0, R"doc(
+The first contact of A (on its own motion) and B, C++ MovingMeshPair::first_contact:
+- first_contact(from_b, to_b): B moving from from_b (t = 0) to to_b (t = 1; None: from_b),
+  poses (12,), (3, 4) or (4, 4); a MeshImpact.
+- first_contact(b_at1): B deforming from its own vertices (t = 0) to b_at1 (t = 1,
+  (len(b.vertices), 3)); a MeshImpact.
+- first_contact(motions): many motions of B, (N, 24) (placement at t = 0, then at t = 1, 12
+  numbers each), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4); (hit, time) arrays (N,), on
+  `threads` threads (0: every core) without the GIL.
+)doc")
       .def(
           "first_contact_deforming",
           [](const collide::MovingMeshPair& pair, const ArrayLike& b_at1) {
-            const std::vector<Vec3> positions =
-                to_positions(b_at1.object, pair.b_vertex_count(), "b_at1");
-            py::gil_scoped_release release;
-            return pair.first_contact(positions);
+            warn_deprecated("MovingMeshPair.first_contact_deforming",
+                            "MovingMeshPair.first_contact(b_at1)");
+            return deforming_contact(pair, b_at1.object);
           },
           "b_at1"_a,
-          "The first contact with B deforming from its own vertices (t = 0) to b_at1 (t = 1, "
-          "(len(b.vertices), 3)). A MeshImpact.")
+          "Deprecated: first_contact(b_at1) (a DeprecationWarning); the same MeshImpact.")
       .def(
           "first_contact_many",
           [](const collide::MovingMeshPair& pair, const ArrayLike& motions, int threads) {
-            const std::vector<collide::Motion> ms = to_motions(motions.object);
-            std::vector<collide::MeshImpact> out(ms.size());
-            {
-              py::gil_scoped_release release;
-              pair.first_contact(ms, out, BatchOptions{.threads = threads});
-            }
-            py::array_t<bool> hit(static_cast<py::ssize_t>(out.size()));
-            py::array_t<double> time(static_cast<py::ssize_t>(out.size()));
-            for (std::size_t i = 0; i < out.size(); ++i) {
-              hit.mutable_data()[i] = out[i].hit;
-              time.mutable_data()[i] = out[i].time;
-            }
-            return py::make_tuple(hit, time);
+            warn_deprecated("MovingMeshPair.first_contact_many",
+                            "MovingMeshPair.first_contact(motions)");
+            return first_contacts(pair, motions.object, threads);
           },
-          "motions"_a, py::kw_only(), "threads"_a = 0, R"doc(
-First contacts for many motions of B: (N, 24) (placement at t = 0, then at t = 1, 12 numbers
-each), (N, 2, 12), (N, 2, 3, 4) or (N, 2, 4, 4). Returns (hit, time) arrays (N,), on `threads`
-threads (0: every core) without the GIL.
-)doc")
+          "motions"_a, py::kw_only(), "threads"_a = 0,
+          "Deprecated: first_contact(motions) (a DeprecationWarning); the same (hit, time).")
       .def_property_readonly("a_is_solid", &collide::MovingMeshPair::a_is_solid,
                              "True when A is closed (a solid).")
       .def_property_readonly("b_is_solid", &collide::MovingMeshPair::b_is_solid,

@@ -237,7 +237,7 @@ Whether a segment misses, touches or crosses is decided exactly. Runs on `thread
           result = clip::polygon_boolean(ra, rb, options);
         }
         if (py::isinstance<py::str>(a.object) && py::isinstance<py::str>(b.object)) {
-          return py::str(io::write_wkt(result));
+          return py::str(io::format_wkt(result));
         }
         return py::cast(std::move(result));
       },

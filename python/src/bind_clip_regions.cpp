@@ -86,7 +86,7 @@ void bind_clip_regions(py::module_& m) {
           py::gil_scoped_release release;
           result = clip::clip_polygon(subject, ring, options);
         }
-        if (py::isinstance<py::str>(region.object)) return py::str(io::write_wkt(result));
+        if (py::isinstance<py::str>(region.object)) return py::str(io::format_wkt(result));
         return py::cast(std::move(result));
       },
       "region"_a, py::kw_only(), "halfspace"_a = py::none(), "box"_a = py::none(),
@@ -122,16 +122,16 @@ points are rounded (a few ulps), exact on box sides. Runs without the GIL.
         if (which == "halfspace") {
           const std::vector<Plane> planes = to_planes(halfspace, "halfspace");
           py::gil_scoped_release release;
-          return clip::mesh_clip(*subject, planes, options);
+          return clip::clip_mesh(*subject, planes, options);
         }
         if (which == "box") {
           const Box3 b = to_box3(box, "box");
           py::gil_scoped_release release;
-          return clip::mesh_clip(*subject, b, options);
+          return clip::clip_mesh(*subject, b, options);
         }
         const ConvexPolyhedron polyhedron = to_convex_polyhedron(convex, "convex");
         py::gil_scoped_release release;
-        return clip::mesh_clip(*subject, polyhedron, options);
+        return clip::clip_mesh(*subject, polyhedron, options);
       },
       "mesh"_a, py::kw_only(), "halfspace"_a = py::none(), "box"_a = py::none(),
       "convex"_a = py::none(), "cap"_a = false, R"doc(
@@ -169,7 +169,7 @@ stays welded, rounded to a few ulps (exact on box faces). Runs without the GIL.
         std::vector<clip::Polyline> pieces;
         {
           py::gil_scoped_release release;
-          pieces = clip::polyline_clip(paths, r, options);
+          pieces = clip::clip_polylines(paths, r, options);
         }
         py::list out;
         for (const clip::Polyline& piece : pieces)

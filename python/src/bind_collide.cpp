@@ -18,6 +18,29 @@ namespace {
 
 using namespace pybind11::literals;
 
+// Many poses of B: (N, 12), (N, 3, 4) or (N, 4, 4); one pose is (12,), (3, 4) or (4, 4).
+bool is_pose_batch(const py::handle& object) {
+  if (object.is_none()) return false;
+  const py::array array = py::array::ensure(object);
+  if (!array) return false;
+  return array.ndim() == 3 || (array.ndim() == 2 && array.shape(1) == 12);
+}
+
+py::array_t<bool> collide_poses(const collide::MeshPair& pair, const py::handle& poses,
+                                int threads) {
+  const std::vector<Transform> transforms = to_transforms(poses, "poses");
+  std::vector<collide::Contact> contacts(transforms.size());
+  {
+    py::gil_scoped_release release;
+    pair.collide(transforms, contacts, BatchOptions{.threads = threads});
+  }
+  py::array_t<bool> out(static_cast<py::ssize_t>(contacts.size()));
+  bool* data = out.mutable_data();
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    data[i] = contacts[i].intersect;
+  return out;
+}
+
 }  // namespace
 
 void bind_collide(py::module_& m) {
@@ -60,7 +83,7 @@ Transforms: None (identity), 12 numbers r00 r01 r02 t0 r10 r11 r12 t1 r20 r21 r2
 Example:
     >>> pair = contain.MeshPair(part, tool)
     >>> pair.collide(pose).intersect
-    >>> hits = pair.collide_many(poses)   # (N, 3, 4) -> (N,) bool, on every core
+    >>> hits = pair.collide(poses)        # (N, 3, 4) -> (N,) bool, on every core
 )doc")
       .def(py::init([](const MeshLike& a, const MeshLike& b, const TransformLike& transform_a) {
              const MeshRef ma = to_mesh(a.object, "a"), mb = to_mesh(b.object, "b");
@@ -73,31 +96,33 @@ Example:
            "Prepares A (placed once by transform_a) and B.")
       .def(
           "collide",
-          [](const collide::MeshPair& pair, const TransformLike& transform_b) {
+          [](const collide::MeshPair& pair, const TransformLike& transform_b,
+             int threads) -> py::object {
+            if (is_pose_batch(transform_b.object)) {
+              return collide_poses(pair, transform_b.object, threads);
+            }
             const Transform t = to_transform(transform_b.object, "transform_b");
-            py::gil_scoped_release release;
-            return pair.collide(t);
+            collide::Contact contact;
+            {
+              py::gil_scoped_release release;
+              contact = pair.collide(t);
+            }
+            return py::cast(contact);
           },
-          "transform_b"_a = py::none(), "Does A meet B placed by transform_b? A Contact.")
+          "transform_b"_a = py::none(), py::kw_only(), "threads"_a = 0, R"doc(
+Does A meet B placed by transform_b? One pose ((12,), (3, 4), (4, 4) or None) gives a Contact;
+many poses ((N, 12), (N, 3, 4) or (N, 4, 4)) give a bool array (N,), on `threads` threads (0:
+every core) without the GIL.
+)doc")
       .def(
           "collide_many",
           [](const collide::MeshPair& pair, const ArrayLike& poses, int threads) {
-            const std::vector<Transform> transforms = to_transforms(poses.object, "poses");
-            std::vector<collide::Contact> contacts(transforms.size());
-            {
-              py::gil_scoped_release release;
-              pair.collide(transforms, contacts, BatchOptions{.threads = threads});
-            }
-            py::array_t<bool> out(static_cast<py::ssize_t>(contacts.size()));
-            bool* data = out.mutable_data();
-            for (std::size_t i = 0; i < contacts.size(); ++i)
-              data[i] = contacts[i].intersect;
-            return out;
+            warn_deprecated("MeshPair.collide_many", "MeshPair.collide");
+            return collide_poses(pair, poses.object, threads);
           },
-          "poses"_a, py::kw_only(), "threads"_a = 0, R"doc(
-Whether A meets B under each pose: poses (N, 12), (N, 3, 4) or (N, 4, 4); a bool array (N,).
-Runs on `threads` threads (0: every core) without the GIL.
-)doc")
+          "poses"_a, py::kw_only(), "threads"_a = 0,
+          "Deprecated: collide(poses), which takes many poses too (a DeprecationWarning); the "
+          "same answer.")
       .def_property_readonly("a_is_solid", &collide::MeshPair::a_is_solid,
                              "True when A is closed (a solid), False for a surface.")
       .def_property_readonly("b_is_solid", &collide::MeshPair::b_is_solid,

@@ -45,7 +45,7 @@ collide::ConvexShape to_convex_shape(const py::handle& object, const char* name)
 collide::ConvexContact convex_intersect(const py::object& a, const py::object& b) {
   const collide::ConvexShape sa = to_convex_shape(a, "a"), sb = to_convex_shape(b, "b");
   py::gil_scoped_release release;
-  return collide::convex_intersect(sa, sb);
+  return collide::convex_convex(sa, sb);
 }
 
 std::string text(double x) {
@@ -85,11 +85,19 @@ ConvexPolyhedron, planes or a convex mesh may be given.
            "planes_or_mesh"_a, "From (M, 4) half-space planes or a closed convex mesh.")
       .def(
           "locate",
-          [](const ConvexPolyhedron& p, const ArrayLike& points, int threads) {
+          [](const ConvexPolyhedron& p, const ArrayLike& points, int threads) -> py::object {
+            if (is_one_point(points.object, 3)) {
+              return [&](const ArrayLike& point) -> py::object {
+                return location_object(
+                    inside::point_in_convex(p, finite_vec3(point.object, "point")));
+              }(points);
+            }
             return to_numpy(locate_all(p, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0,
-          "Where each (N, 3) point lies: int8 -1 outside, 0 boundary, 1 inside, exactly.")
+          "Where each (N, 3) point lies: int8 -1 outside, 0 boundary, 1 inside, exactly; one "
+          "point\n"
+          "(3,) gives one contain.Location.")
       .def(
           "contains",
           [](const ConvexPolyhedron& p, const ArrayLike& points, const std::string& boundary,
@@ -103,9 +111,10 @@ ConvexPolyhedron, planes or a convex mesh may be given.
       .def(
           "locate_point",
           [](const ConvexPolyhedron& p, const ArrayLike& point) {
+            warn_deprecated("ConvexPolyhedron.locate_point", "ConvexPolyhedron.locate");
             return location_object(inside::point_in_convex(p, finite_vec3(point.object, "point")));
           },
-          "point"_a, "Where one point lies, as a contain.Location.")
+          "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly(
           "planes",
           [](const ConvexPolyhedron& p) {
@@ -209,7 +218,7 @@ decided exactly).
 
   m.def("convex_intersect", &convex_intersect, "a"_a, "b"_a, R"doc(
 Do two closed convex shapes share a point? GJK on their support functions (Gilbert, Johnson and
-Keerthi 1988), C++ collide::convex_intersect. a, b: a ConvexShape, or a convex mesh (anything
+Keerthi 1988), C++ collide::convex_convex. a, b: a ConvexShape, or a convex mesh (anything
 mesh-like) or ConvexPolyhedron made from one. Two polytopes (boxes, convex meshes): exact, a
 separating direction certified by exact side tests, touching and overlap decided by exact
 triangle tests. A ball involved: GJK's floating-point answer (`exact` False; touching within

@@ -15,6 +15,7 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/clip/csg_to_mesh.h"
 #include "contain/inside/csg.h"
 #include "contain/io/csg_json.h"
 #include "errors.h"
@@ -258,6 +259,27 @@ or text). Errors name the JSON path of the offending value.
           },
           "The kind of a leaf ('sphere', 'box', 'halfspace', 'convex', 'implicit', 'mesh'),\n"
           "None for an operation.")
+      .def(
+          "to_mesh",
+          [](const Csg& tree) {
+            Result<clip::MeshBooleanResult> result = Error{};
+            {
+              py::gil_scoped_release release;
+              result = clip::csg_to_mesh(tree);
+            }
+            return take(std::move(result));
+          },
+          R"doc(
+The tree's solid as one written mesh, by the exact mesh booleans (contain.mesh_boolean, one
+n-ary call per union or intersection): a contain.MeshBooleanResult whose .mesh is closed,
+outward and free of self-intersections on its doubles (docs/solids.md).
+Leaves: meshes (solids by their winding number), boxes, convex polyhedra, and half-spaces (or
+convex polyhedra given by planes) within a box: those are read inside the box of the tree's
+bounded solids (an intersection with a box, a difference from a mesh), and a tree whose solid is
+unbounded raises ContainError. A sphere or implicit leaf raises ContainError naming its place
+("difference[1].sphere: a sphere is not polyhedral ..."), before any boolean runs. Runs without
+the GIL.
+)doc")
       .def("__repr__", [](const Csg& c) {
         if (c.op() == CsgOp::leaf) return "contain.Csg." + leaf_name(c.solid()) + "(...)";
         return "contain.Csg(" + std::string(op_name(c.op())) + " of " +
@@ -286,11 +308,21 @@ locate_point(p). Example in contain.Csg.
            "tree"_a, "Validates and prepares a Csg (or its JSON form).")
       .def(
           "locate",
-          [](const inside::CsgSolid& solid, const ArrayLike& points, int threads) {
+          [](const inside::CsgSolid& solid, const ArrayLike& points, int threads) -> py::object {
+            if (is_one_point(points.object, 3)) {
+              return [&](const ArrayLike& point) -> py::object {
+                const Vec3 p = as_vec3(point.object, "point");
+                if (!is_finite(p)) fail(ErrorKind::invalid_value, "point has a NaN or Inf");
+                const Location where = solid.locate(p);
+                raise_implicit_error();
+                return location_object(where);
+              }(points);
+            }
             return to_numpy(solid_locate(solid, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, R"doc(
-Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 3). Runs on
+Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 3); one point
+(3,) gives one contain.Location. Runs on
 `threads` threads (0: every core) without the GIL (Python implicit functions take it per call).
 )doc")
       .def(
@@ -306,13 +338,14 @@ Where each point lies: int8 (N,), -1 outside, 0 boundary, 1 inside. points: (N, 
       .def(
           "locate_point",
           [](const inside::CsgSolid& solid, const ArrayLike& point) {
+            warn_deprecated("CsgSolid.locate_point", "CsgSolid.locate");
             const Vec3 p = as_vec3(point.object, "point");
             if (!is_finite(p)) fail(ErrorKind::invalid_value, "point has a NaN or Inf");
             const Location where = solid.locate(p);
             raise_implicit_error();
             return location_object(where);
           },
-          "point"_a, "Where one point lies, as a contain.Location.")
+          "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly("leaf_count", &inside::CsgSolid::leaf_count, "Leaves of the tree.")
       .def("__repr__", [](const inside::CsgSolid& solid) {
         return "contain.CsgSolid(" + std::to_string(solid.leaf_count()) + " leaves)";

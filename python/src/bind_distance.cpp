@@ -52,8 +52,8 @@ py::dict mesh_query(const Prepared& prepared, const py::handle& points, bool sig
   std::vector<distance::Closest3> answers(p.size());
   {
     py::gil_scoped_release release;
-    prepared.query(p, answers, {.signed_distance = signed_distance, .closest_point = closest},
-                   {.threads = threads});
+    prepared.distance(p, answers, {.signed_distance = signed_distance, .closest_point = closest},
+                      {.threads = threads});
   }
   std::vector<double> d(p.size()), q(3 * p.size());
   std::vector<std::int32_t> tri(p.size());
@@ -84,8 +84,8 @@ py::dict region_query(const distance::RegionDistance& prepared, const py::handle
   std::vector<distance::Closest2> answers(p.size());
   {
     py::gil_scoped_release release;
-    prepared.query(p, answers, {.signed_distance = signed_distance, .closest_point = closest},
-                   {.threads = threads});
+    prepared.distance(p, answers, {.signed_distance = signed_distance, .closest_point = closest},
+                      {.threads = threads});
   }
   std::vector<double> d(p.size()), q(2 * p.size());
   std::vector<std::int32_t> ring(p.size()), edge(p.size());
@@ -220,10 +220,10 @@ signed by the exact containment, the closest point and triangle, and the exact c
 
 Every decision is exact on the given doubles; each distance is the double nearest to the exact
 distance (rounded once), each closest-point coordinate too. For an open mesh signs come from
-the generalized winding number (`regime` says 'winding-number').
+the generalized winding number (`regime` says 'winding_number').
 
     >>> prepared = contain.MeshDistance(contain.read_mesh("part.stl"))
-    >>> r = prepared.query(points, signed=True)    # (N, 3) -> dict of arrays
+    >>> r = prepared.distance(points, signed=True)    # (N, 3) -> dict of arrays
     >>> r["distance"], r["point"], r["triangle"]
 )doc")
       .def(py::init([](const MeshLike& mesh) {
@@ -235,13 +235,23 @@ the generalized winding number (`regime` says 'winding-number').
            "Prepares any mesh-like object (contain.as_mesh: a Mesh, a path, a trimesh or Open3D\n"
            "mesh, (vertices, faces)): its BVH and containment index.")
       .def(
-          "query",
+          "distance",
           [](const distance::MeshDistance& prepared, const ArrayLike& points, bool signed_distance,
              bool closest, int threads) {
             return mesh_query(prepared, points.object, signed_distance, closest, threads);
           },
           "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
           query3.c_str())
+      .def(
+          "query",
+          [](const distance::MeshDistance& prepared, const ArrayLike& points, bool signed_distance,
+             bool closest, int threads) {
+            warn_deprecated("MeshDistance.query", "MeshDistance.distance");
+            return mesh_query(prepared, points.object, signed_distance, closest, threads);
+          },
+          "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
+          "Deprecated: distance(points, ...), the C++ name (a DeprecationWarning); "
+          "the same answer.")
       .def(
           "within",
           [](const distance::MeshDistance& prepared, const ArrayLike& points, double d,
@@ -262,7 +272,7 @@ the generalized winding number (`regime` says 'winding-number').
       .def_property_readonly(
           "regime",
           [](const distance::MeshDistance& prepared) { return to_string(prepared.regime()); },
-          "How signs are decided: 'closed-exact' or 'winding-number'.")
+          "How signs are decided: 'closed_exact' or 'winding_number'.")
       .def("__len__", &distance::MeshDistance::size, "Number of triangles.")
       .def("__repr__", [](const distance::MeshDistance& prepared) {
         return "contain.MeshDistance(" + std::to_string(prepared.size()) + " triangles, regime='" +
@@ -274,7 +284,7 @@ A 2D region prepared for distance queries: the distance to its rings, signed by 
 location under the fill rule, the closest point and ring:edge, and the exact clearance test.
 
     >>> prepared = contain.RegionDistance("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))")
-    >>> prepared.query([[2, 1]], signed=True)["distance"]     # array([-1.])
+    >>> prepared.distance([[2, 1]], signed=True)["distance"]     # array([-1.])
 )doc")
       .def(py::init([](const RegionLike& region, const std::string& fill) {
              const MultiPolygon r = to_region(region.object, "region");
@@ -285,13 +295,23 @@ location under the fill rule, the closest point and ring:edge, and the exact cle
            "region"_a, py::kw_only(), "fill"_a = "even_odd",
            "Prepares a region (contain.Region, WKT or rings) under a fill rule.")
       .def(
-          "query",
+          "distance",
           [](const distance::RegionDistance& prepared, const ArrayLike& points,
              bool signed_distance, bool closest, int threads) {
             return region_query(prepared, points.object, signed_distance, closest, threads);
           },
           "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
           query2.c_str())
+      .def(
+          "query",
+          [](const distance::RegionDistance& prepared, const ArrayLike& points,
+             bool signed_distance, bool closest, int threads) {
+            warn_deprecated("RegionDistance.query", "RegionDistance.distance");
+            return region_query(prepared, points.object, signed_distance, closest, threads);
+          },
+          "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
+          "Deprecated: distance(points, ...), the C++ name (a DeprecationWarning); "
+          "the same answer.")
       .def(
           "within",
           [](const distance::RegionDistance& prepared, const ArrayLike& points, double d,
@@ -382,7 +402,7 @@ between two convex solids under poses of the second is contain.convex_convex (GJ
 decided exactly).
 
     >>> box = contain.ConvexDistance(contain.ConvexPolyhedron(cube_mesh))
-    >>> box.query([[2, 0.5, 0.5]], signed=True)["distance"]        # array([1.])
+    >>> box.distance([[2, 0.5, 0.5]], signed=True)["distance"]        # array([1.])
     >>> contain.convex_convex(box, other, poses)["distance"]        # (N,) per pose of other
 )doc")
       .def(py::init([](const py::handle& convex) {
@@ -394,13 +414,23 @@ decided exactly).
            "Prepares a contain.ConvexPolyhedron or a closed convex mesh (a polyhedron given only "
            "by planes has no faces to measure to: ContainError).")
       .def(
-          "query",
+          "distance",
           [](const distance::ConvexDistance& prepared, const ArrayLike& points,
              bool signed_distance, bool closest, int threads) {
             return mesh_query(prepared, points.object, signed_distance, closest, threads);
           },
           "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
           query3.c_str())
+      .def(
+          "query",
+          [](const distance::ConvexDistance& prepared, const ArrayLike& points,
+             bool signed_distance, bool closest, int threads) {
+            warn_deprecated("ConvexDistance.query", "ConvexDistance.distance");
+            return mesh_query(prepared, points.object, signed_distance, closest, threads);
+          },
+          "points"_a, py::kw_only(), "signed"_a = false, "closest"_a = true, "threads"_a = 0,
+          "Deprecated: distance(points, ...), the C++ name (a DeprecationWarning); "
+          "the same answer.")
       .def(
           "within",
           [](const distance::ConvexDistance& prepared, const ArrayLike& points, double d) {

@@ -96,6 +96,7 @@ Where each point lies: an int8 array of shape (N,), -1 outside, 0 on the boundar
 
 points: (N, {dim}) array of real numbers; a C-contiguous float64 array is read in place,
     any other layout or dtype is converted to one copy first. NaN/Inf raise ContainError.
+    One point of shape ({dim},) gives one contain.Location instead.
 threads: threads for the batch (0: every core). The GIL is released while it runs, and the
     answers do not depend on the thread count.
 )doc";
@@ -110,7 +111,9 @@ Otherwise as locate().
 
 std::string locate_doc(const char* dim) {
   std::string doc = kLocateDoc;
-  return doc.replace(doc.find("{dim}"), 5, dim);
+  for (std::size_t at = doc.find("{dim}"); at != std::string::npos; at = doc.find("{dim}"))
+    doc.replace(at, 5, dim);
+  return doc;
 }
 
 }  // namespace
@@ -174,7 +177,12 @@ Example:
           "path"_a, "Reads a mesh file (see contain.read_mesh) and prepares it.")
       .def(
           "locate",
-          [](const inside::MeshIndex& index, const ArrayLike& points, int threads) {
+          [](const inside::MeshIndex& index, const ArrayLike& points, int threads) -> py::object {
+            if (is_one_point(points.object, 3)) {
+              return [&](const ArrayLike& point) -> py::object {
+                return location_object(index.locate(point3(point.object)));
+              }(points);
+            }
             return to_numpy(mesh_locate(index, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, locate3.c_str())
@@ -189,12 +197,13 @@ Example:
       .def(
           "locate_point",
           [](const inside::MeshIndex& index, const ArrayLike& point) {
+            warn_deprecated("MeshIndex.locate_point", "MeshIndex.locate");
             return location_object(index.locate(point3(point.object)));
           },
-          "point"_a, "Where one point (x, y, z) lies, as a contain.Location.")
+          "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly(
           "regime", [](const inside::MeshIndex& index) { return to_string(index.regime()); },
-          "'closed-exact' (ray parity, every answer exact) or 'winding-number' (open or\n"
+          "'closed_exact' (ray parity, every answer exact) or 'winding_number' (open or\n"
           "non-manifold mesh: generalized winding number, boundary still exact).")
       .def_property_readonly(
           "report", [](const inside::MeshIndex& index) { return index.report(); },
@@ -266,7 +275,13 @@ Example:
           "Reads a region file (see contain.read_region) and prepares it.")
       .def(
           "locate",
-          [](const inside::PolygonIndex& index, const ArrayLike& points, int threads) {
+          [](const inside::PolygonIndex& index, const ArrayLike& points,
+             int threads) -> py::object {
+            if (is_one_point(points.object, 2)) {
+              return [&](const ArrayLike& point) -> py::object {
+                return location_object(index.locate(point2(point.object)));
+              }(points);
+            }
             return to_numpy(polygon_locate(index, points.object, threads));
           },
           "points"_a, py::kw_only(), "threads"_a = 0, locate2.c_str())
@@ -281,9 +296,10 @@ Example:
       .def(
           "locate_point",
           [](const inside::PolygonIndex& index, const ArrayLike& point) {
+            warn_deprecated("PolygonIndex.locate_point", "PolygonIndex.locate");
             return location_object(index.locate(point2(point.object)));
           },
-          "point"_a, "Where one point (x, y) lies, as a contain.Location.")
+          "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly(
           "fill", [](const inside::PolygonIndex& index) { return fill_name(index.fill()); },
           "The fill rule the region was prepared with.")

@@ -130,7 +130,7 @@ Example:
       .def(
           "_repr_svg_",
           [](const Mesh& mesh) {
-            return io::mesh_svg(mesh, {.max_triangles = kNotebookTriangles});
+            return io::format_svg(mesh, {.max_triangles = kNotebookTriangles});
           },
           "The mesh drawn shaded from the front right (the notebook view; see to_svg).")
       .def(
@@ -142,10 +142,11 @@ Example:
               throw py::value_error("azimuth and elevation must be finite degrees, got " +
                                     std::to_string(azimuth) + " and " + std::to_string(elevation));
             }
-            return io::mesh_svg(mesh, {.width_px = width,
-                                       .title = title,
-                                       .view = {.azimuth_deg = azimuth, .elevation_deg = elevation},
-                                       .max_triangles = max_triangles});
+            return io::format_svg(mesh,
+                                  {.width_px = width,
+                                   .title = title,
+                                   .view = {.azimuth_deg = azimuth, .elevation_deg = elevation},
+                                   .max_triangles = max_triangles});
           },
           py::kw_only(), "width"_a = 400.0, "azimuth"_a = -60.0, "elevation"_a = 25.0,
           "title"_a = "", "max_triangles"_a = 0, R"doc(
@@ -231,19 +232,19 @@ The region as a shapely geometry (a Polygon when it is one polygon, else a Multi
 through WKB, so every coordinate is the same double. Needs shapely (python3-shapely).
 )doc")
       .def(
-          "to_wkb", [](const MultiPolygon& region) { return py::bytes(io::write_wkb(region)); },
+          "to_wkb", [](const MultiPolygon& region) { return py::bytes(io::format_wkb(region)); },
           "Little-endian WKB of a MULTIPOLYGON with closed rings (contain.as_region reads it).")
       .def(
-          "to_geojson", [](const MultiPolygon& region) { return io::write_geojson(region); },
+          "to_geojson", [](const MultiPolygon& region) { return io::format_geojson(region); },
           "GeoJSON text of a MultiPolygon, shortest round-trip decimals.")
       .def(
-          "_repr_svg_", [](const MultiPolygon& region) { return io::region_svg(region); },
+          "_repr_svg_", [](const MultiPolygon& region) { return io::format_svg(region); },
           "The region drawn filled, holes as holes (the notebook view; see to_svg).")
       .def(
           "to_svg",
           [](const MultiPolygon& region, double width, const std::string& title) {
             check_picture_width(width);
-            return io::region_svg(region, {.width_px = width, .title = title});
+            return io::format_svg(region, {.width_px = width, .title = title});
           },
           py::kw_only(), "width"_a = 400.0, "title"_a = "",
           "An SVG picture of the region (the writer of contain demo), `width` pixels wide.")
@@ -262,7 +263,7 @@ through WKB, so every coordinate is the same double. Needs shapely (python3-shap
                              "relative to its first vertex with compensated sums, so far\n"
                              "coordinates lose little.")
       .def(
-          "to_wkt", [](const MultiPolygon& region) { return io::write_wkt(region); },
+          "to_wkt", [](const MultiPolygon& region) { return io::format_wkt(region); },
           "MULTIPOLYGON WKT with shortest round-trip decimals (parse_wkt reads it back exactly).")
       .def(
           "__len__", [](const MultiPolygon& region) { return region.polygons.size(); },
@@ -273,7 +274,7 @@ through WKB, so every coordinate is the same double. Needs shapely (python3-shap
           [](const MultiPolygon& region) {
             py::list polygons;
             for (const Polygon& polygon : region.polygons)
-              polygons.append(py::bytes(io::write_wkb(polygon)));
+              polygons.append(py::bytes(io::format_wkb(polygon)));
             return py::make_tuple(polygons);
           },
           [](const py::tuple& state) {
@@ -352,11 +353,20 @@ Parses one POLYGON or MULTIPOLYGON (Z/M ordinates dropped, EWKT SRID ignored, cl
 dropped). Raises ContainError naming `source` and the line for malformed text.
 )doc");
   m.def(
-      "write_wkt",
-      [](const RegionLike& region) { return io::write_wkt(to_region(region.object, "region")); },
+      "format_wkt",
+      [](const RegionLike& region) { return io::format_wkt(to_region(region.object, "region")); },
       "region"_a,
       "MULTIPOLYGON WKT of a region, every coordinate the shortest decimal that reads back "
-      "exactly.");
+      "exactly (C++ io::format_wkt).");
+  m.def(
+      "write_wkt",
+      [](const RegionLike& region) {
+        warn_deprecated("contain.write_wkt", "contain.format_wkt");
+        return io::format_wkt(to_region(region.object, "region"));
+      },
+      "region"_a,
+      "Deprecated: contain.format_wkt(region), the C++ name (a DeprecationWarning); the same "
+      "text.");
 }
 
 }  // namespace contain::python

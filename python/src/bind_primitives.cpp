@@ -1,5 +1,6 @@
-// Exact tests on batches of primitives: contain.tri_tri, tri_tri_2d, segment_triangle,
-// segments_intersect, pair_search (the broad phase), orient2d, orient3d.
+// Exact tests on batches of primitives: contain.tri_tri (2D and 3D), segment_triangle,
+// segment_segment, pair_search (the broad phase), orient2d, orient3d; tri_tri_2d and
+// segments_intersect, their old names, deprecated.
 
 #include <pybind11/stl.h>
 
@@ -48,6 +49,37 @@ py::object pairs(const Items& a, const Items& b, const char* what, int threads, 
     });
   }
   return to_bools(std::move(out), a.single && b.single);
+}
+
+// Triangles in the plane when the array's last axis holds 2D points or flat 2D triangles
+// ((N, 3, 2), (N, 6), (3, 2)); anything else is read as triangles in space, whose errors name
+// the 3D shapes.
+bool planar_items(const py::handle& object) {
+  const py::array array = py::array::ensure(object);
+  if (!array || array.ndim() < 1) return false;
+  const py::ssize_t last = array.shape(array.ndim() - 1);
+  return last == 2 || last == 6;
+}
+
+py::object tri_tri_3d(const ArrayLike& a, const ArrayLike& b, int threads) {
+  const Items ta = as_items(a.object, 3, 3, "a"), tb = as_items(b.object, 3, 3, "b");
+  return pairs(ta, tb, "tri_tri", threads, [&](std::size_t i) {
+    return collide::tri_tri(item_as<Triangle3>(ta, i), item_as<Triangle3>(tb, i));
+  });
+}
+
+py::object tri_tri_2d(const ArrayLike& a, const ArrayLike& b, int threads) {
+  const Items ta = as_items(a.object, 3, 2, "a"), tb = as_items(b.object, 3, 2, "b");
+  return pairs(ta, tb, "tri_tri", threads, [&](std::size_t i) {
+    return collide::tri_tri(item_as<Triangle2>(ta, i), item_as<Triangle2>(tb, i));
+  });
+}
+
+py::object segment_segment(const ArrayLike& a, const ArrayLike& b, int threads) {
+  const Items sa = as_items(a.object, 2, 2, "a"), sb = as_items(b.object, 2, 2, "b");
+  return pairs(sa, sb, "segment_segment", threads, [&](std::size_t i) {
+    return collide::segment_segment(item_as<Segment2>(sa, i), item_as<Segment2>(sb, i));
+  });
 }
 
 constexpr const char* kPairsDoc = R"doc(
@@ -131,32 +163,27 @@ py::object orientations(const std::vector<Items>& points, int threads, Sign4&& s
 
 void bind_primitives(py::module_& m) {
   static const std::string tri_doc = doc(R"doc(
-Do closed triangles in space share a point? a, b: (N, 3, 3) (three vertices x y z each), (N, 9)
-or one (3, 3) triangle. Crossing, touching at a vertex or along an edge and coplanar overlap
-all count; degenerate triangles are the segment or point they span (Guigue-Devillers with
-exact orient3d, docs/collision.md).)doc");
+Do closed triangles share a point? C++ collide::tri_tri. In space a, b: (N, 3, 3) (three
+vertices x y z each), (N, 9) or one (3, 3) triangle: crossing, touching at a vertex or along an
+edge and coplanar overlap all count; degenerate triangles are the segment or point they span
+(Guigue-Devillers with exact orient3d, docs/collision.md). In the plane (chosen by a's shape)
+a, b: (N, 3, 2), (N, 6) or one (3, 2) triangle, either winding: touching counts, and so does one
+inside the other (exercise 22.4-5).)doc");
   m.def(
       "tri_tri",
       [](const ArrayLike& a, const ArrayLike& b, int threads) {
-        const Items ta = as_items(a.object, 3, 3, "a"), tb = as_items(b.object, 3, 3, "b");
-        return pairs(ta, tb, "tri_tri", threads, [&](std::size_t i) {
-          return collide::tri_tri_intersect(item_as<Triangle3>(ta, i), item_as<Triangle3>(tb, i));
-        });
+        return planar_items(a.object) ? tri_tri_2d(a, b, threads) : tri_tri_3d(a, b, threads);
       },
       "a"_a, "b"_a, py::kw_only(), "threads"_a = 0, tri_doc.c_str());
-
-  static const std::string tri2_doc = doc(R"doc(
-Do closed triangles in the plane share a point? a, b: (N, 3, 2), (N, 6) or one (3, 2)
-triangle, either winding. Touching counts, and so does one inside the other (exercise 22.4-5).)doc");
   m.def(
       "tri_tri_2d",
       [](const ArrayLike& a, const ArrayLike& b, int threads) {
-        const Items ta = as_items(a.object, 3, 2, "a"), tb = as_items(b.object, 3, 2, "b");
-        return pairs(ta, tb, "tri_tri_2d", threads, [&](std::size_t i) {
-          return collide::tri_tri_intersect(item_as<Triangle2>(ta, i), item_as<Triangle2>(tb, i));
-        });
+        warn_deprecated("contain.tri_tri_2d", "contain.tri_tri");
+        return tri_tri_2d(a, b, threads);
       },
-      "a"_a, "b"_a, py::kw_only(), "threads"_a = 0, tri2_doc.c_str());
+      "a"_a, "b"_a, py::kw_only(), "threads"_a = 0,
+      "Deprecated: contain.tri_tri(a, b), which takes 2D triangles by their shape (a "
+      "DeprecationWarning); the same answer.");
 
   static const std::string seg_tri_doc = doc(R"doc(
 Does the closed segment meet the closed triangle? segments: (N, 2, 3), (N, 6) or one (2, 3);
@@ -167,24 +194,25 @@ triangles: (N, 3, 3), (N, 9) or one (3, 3). The section's edge-face test made ex
         const Items s = as_items(segments.object, 2, 3, "segments");
         const Items t = as_items(triangles.object, 3, 3, "triangles");
         return pairs(s, t, "segment_triangle", threads, [&](std::size_t i) {
-          return collide::segment_triangle_intersect(item_as<Segment3>(s, i),
-                                                     item_as<Triangle3>(t, i));
+          return collide::segment_triangle(item_as<Segment3>(s, i), item_as<Triangle3>(t, i));
         });
       },
       "segments"_a, "triangles"_a, py::kw_only(), "threads"_a = 0, seg_tri_doc.c_str());
 
   static const std::string seg_seg_doc = doc(R"doc(
-Do closed segments in the plane share a point? a, b: (N, 2, 2), (N, 4) or one (2, 2);
-collinear overlap and zero-length segments included.)doc");
+Do closed segments in the plane share a point? C++ collide::segment_segment. a, b: (N, 2, 2),
+(N, 4) or one (2, 2); collinear overlap and zero-length segments included.)doc");
+  m.def("segment_segment", &segment_segment, "a"_a, "b"_a, py::kw_only(), "threads"_a = 0,
+        seg_seg_doc.c_str());
   m.def(
       "segments_intersect",
       [](const ArrayLike& a, const ArrayLike& b, int threads) {
-        const Items sa = as_items(a.object, 2, 2, "a"), sb = as_items(b.object, 2, 2, "b");
-        return pairs(sa, sb, "segments_intersect", threads, [&](std::size_t i) {
-          return collide::segments_intersect(item_as<Segment2>(sa, i), item_as<Segment2>(sb, i));
-        });
+        warn_deprecated("contain.segments_intersect", "contain.segment_segment");
+        return segment_segment(a, b, threads);
       },
-      "a"_a, "b"_a, py::kw_only(), "threads"_a = 0, seg_seg_doc.c_str());
+      "a"_a, "b"_a, py::kw_only(), "threads"_a = 0,
+      "Deprecated: contain.segment_segment(a, b), the C++ name (a DeprecationWarning); the same "
+      "answer.");
 
   m.def(
       "pair_search",

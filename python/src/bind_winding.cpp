@@ -1,6 +1,6 @@
 // The textbook's smaller containment tests on batches: contain.point_in_triangle,
 // point_in_convex_polygon, winding_number (2D, exact), generalized_winding_number and
-// contain.WindingNumber (3D, floating point).
+// contain.FastWindingNumber (3D, floating point; WindingNumber, its old name, deprecated).
 
 #include <pybind11/stl.h>
 
@@ -160,14 +160,15 @@ The generalized winding number of a mesh (anything mesh-like) at (N, 3) points, 
 the signed solid angle of the surface over 4 pi (Jacobson et al. 2013): 1 inside and 0
 outside a closed outward surface, a smooth value for open or non-manifold ones (about 1/2 at a
 hole). accuracy=None sums every triangle exactly as written (O(n) a point); a number uses the
-fast hierarchical form (Barill et al. 2018; larger is more accurate): build a WindingNumber to
+fast hierarchical form (Barill et al. 2018; larger is more accurate): build a FastWindingNumber to
 reuse it. Floating point, undefined on the surface: use MeshIndex for exact in/on/out.
 )doc");
 
-  py::class_<inside::FastWindingNumber>(m, "WindingNumber", R"doc(
+  py::class_<inside::FastWindingNumber>(m, "FastWindingNumber", R"doc(
 A mesh prepared for generalized winding numbers at many points (a hierarchy of triangles with a
 far-field dipole per node; Barill, Dickson, Schmidt, Levin and Jacobson 2018). Floating point,
-deterministic. WindingNumber(mesh, accuracy=3.0); evaluate(points) -> float64 (N,).
+deterministic. FastWindingNumber(mesh, accuracy=3.0); evaluate(points) -> float64 (N,). C++
+inside::FastWindingNumber.
 )doc")
       .def(py::init([](const MeshLike& mesh, double accuracy) {
              if (!(accuracy > 0)) fail(ErrorKind::invalid_value, "accuracy must be > 0");
@@ -185,7 +186,7 @@ deterministic. WindingNumber(mesh, accuracy=3.0); evaluate(points) -> float64 (N
           "points"_a, py::kw_only(), "threads"_a = 0,
           "The winding number at each (N, 3) point, float64 (N,), on `threads` threads.")
       .def("__repr__", [](const inside::FastWindingNumber& w) {
-        return "contain.WindingNumber(" + std::to_string(w.triangles().size()) + " triangles)";
+        return "contain.FastWindingNumber(" + std::to_string(w.triangles().size()) + " triangles)";
       });
 }
 

@@ -393,14 +393,14 @@ py::object region_to_shapely(const MultiPolygon& region) {
     throw py::import_error("to_shapely() needs shapely (Debian: apt-get install python3-shapely)");
   }
   if (region.polygons.size() == 1) {
-    return wkb.attr("loads")(py::bytes(io::write_wkb(region.polygons.front())));
+    return wkb.attr("loads")(py::bytes(io::format_wkb(region.polygons.front())));
   }
-  return wkb.attr("loads")(py::bytes(io::write_wkb(region)));
+  return wkb.attr("loads")(py::bytes(io::format_wkb(region)));
 }
 
 py::dict region_geo_interface(const MultiPolygon& region) {
   // Shortest round-trip decimals read back by json as the same doubles.
-  return py::module_::import("json").attr("loads")(io::write_geojson(region));
+  return py::module_::import("json").attr("loads")(io::format_geojson(region));
 }
 
 Fill parse_fill(const std::string& fill) {

@@ -141,7 +141,7 @@ class MeshRef {
 /// a (3, 4) matrix [R | t] or a (4, 4) matrix whose last row is 0 0 0 1.
 [[nodiscard]] Transform to_transform(const py::handle& object, const char* name);
 
-/// Poses, THE rule of every batch that takes transforms (MeshPair.collide_many,
+/// Poses, THE rule of every batch that takes transforms (MeshPair.collide,
 /// MeshPairDistance, convex pairs, motions): (N, 12) rows in the contract's order, (N, 3, 4) or
 /// (N, 4, 4) matrices, or one transform as `to_transform` takes it ((12,), (3, 4), (4, 4)): a
 /// batch of one. TypeError / ValueError naming `name` and the accepted shapes; a NaN or infinite

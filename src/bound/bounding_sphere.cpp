@@ -7,7 +7,7 @@
 
 namespace contain::bound {
 
-Result<Sphere> bounding_sphere(std::span<const Vec3> points, const SphereOptions& options) {
+Result<Sphere> bounding_sphere(std::span<const Vec3> points, const BoundingSphereOptions& options) {
   auto ball = detail::enclose(points, options.method, [](Vec3 center, double radius, Vec3 p) {
     return predicates::side_of_sphere(Sphere{center, radius}, p);
   });
@@ -15,7 +15,7 @@ Result<Sphere> bounding_sphere(std::span<const Vec3> points, const SphereOptions
   return Sphere{ball->center, ball->radius};
 }
 
-Result<Sphere> bounding_sphere(const Mesh& mesh, const SphereOptions& options) {
+Result<Sphere> bounding_sphere(const Mesh& mesh, const BoundingSphereOptions& options) {
   if (options.vertices == MeshVertices::all) return bounding_sphere(mesh.vertices, options);
   const std::vector<Vec3> vertices = referenced_vertices(mesh);
   if (vertices.empty() && !mesh.vertices.empty()) {

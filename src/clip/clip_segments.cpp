@@ -15,6 +15,16 @@ namespace {
 static_assert(sizeof(Segment3) == 6 * sizeof(double) && std::is_standard_layout_v<Segment3>);
 static_assert(sizeof(Segment2) == 4 * sizeof(double) && std::is_standard_layout_v<Segment2>);
 
+// The batch rule of core/parallel.h: `out` and `kept` have the segments' size (asserted; a
+// build without assertions clips the common prefix and never writes past a span).
+template <class S>
+void common_size(std::span<const S>& s, std::span<S>& out, std::span<std::uint8_t>& kept) {
+  const std::size_t n = batch_size(batch_size(s.size(), out.size()), kept.size());
+  s = s.first(n);
+  out = out.first(n);
+  kept = kept.first(n);
+}
+
 template <int D, class Box>
 detail::KernelBox<D> kernel_box(const Box& box) {
   detail::KernelBox<D> kb{};
@@ -64,35 +74,40 @@ void raw_kernel(std::span<const S> segments, const Box& box, std::span<S> out,
 
 void clip_segments(std::span<const Segment3> s, const Box3& box, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
+  common_size(s, out, kept);
   box_batch<3>(s, box, out, kept, options, detail::best_box_kernel<3>());
 }
 void clip_segments(std::span<const Segment2> s, const Box2& box, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
+  common_size(s, out, kept);
   box_batch<2>(s, box, out, kept, options, detail::best_box_kernel<2>());
 }
 void clip_segments(std::span<const Segment3> s, const Plane& h, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  detail::clip_each(s, out, kept, options,
-                    [&](const Segment3& x) { return segment_halfspace(x, h); });
+  common_size(s, out, kept);
+  detail::clip_each(s, out, kept, options, [&](const Segment3& x) { return clip_segment(x, h); });
 }
 void clip_segments(std::span<const Segment2> s, const HalfPlane& h, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
-  detail::clip_each(s, out, kept, options,
-                    [&](const Segment2& x) { return segment_halfspace(x, h); });
+  common_size(s, out, kept);
+  detail::clip_each(s, out, kept, options, [&](const Segment2& x) { return clip_segment(x, h); });
 }
 void clip_segments(std::span<const Segment3> s, const Sphere& ball, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
+  common_size(s, out, kept);
   detail::clip_each(s, out, kept, options,
-                    [&](const Segment3& x) { return segment_sphere(x, ball); });
+                    [&](const Segment3& x) { return clip_segment(x, ball); });
 }
 void clip_segments(std::span<const Segment2> s, const Circle& disc, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
+  common_size(s, out, kept);
   detail::clip_each(s, out, kept, options,
-                    [&](const Segment2& x) { return segment_sphere(x, disc); });
+                    [&](const Segment2& x) { return clip_segment(x, disc); });
 }
 void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedron,
                    std::span<Segment3> out, std::span<std::uint8_t> kept,
                    const BatchOptions& options) {
+  common_size(s, out, kept);
   if (!polyhedron.faces().empty()) {
     const auto f = detail::face_functions(polyhedron.faces());
     detail::clip_each(s, out, kept, options, [&](const Segment3& x) {
@@ -107,6 +122,7 @@ void clip_segments(std::span<const Segment3> s, const ConvexPolyhedron& polyhedr
 }
 void clip_segments(std::span<const Segment2> s, const Ring& convex_ring, std::span<Segment2> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options) {
+  common_size(s, out, kept);
   const auto edges = detail::edge_functions(convex_ring);
   if (!edges) {
     for (auto& k : kept)

@@ -334,17 +334,17 @@ Mesh clip_all(const Mesh& mesh, const std::vector<F>& functions, const MeshClipO
 
 }  // namespace
 
-Mesh mesh_clip(const Mesh& mesh, std::span<const Plane> half_spaces,
+Mesh clip_mesh(const Mesh& mesh, std::span<const Plane> half_spaces,
                const MeshClipOptions& options) {
   return clip_all(mesh, detail::plane_functions(half_spaces), options);
 }
 
-Mesh mesh_clip(const Mesh& mesh, const Box3& box, const MeshClipOptions& options) {
+Mesh clip_mesh(const Mesh& mesh, const Box3& box, const MeshClipOptions& options) {
   if (box.empty()) return {};
-  return mesh_clip(mesh, box_halfspaces(box), options);
+  return clip_mesh(mesh, box_halfspaces(box), options);
 }
 
-Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
+Mesh clip_mesh(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                const MeshClipOptions& options) {
   if (!polyhedron.faces().empty()) {
     // One cut per plane: a face coplanar with an earlier one (a quad split in two) would cut
@@ -358,7 +358,7 @@ Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
     }
     return clip_all(mesh, faces, options);
   }
-  return mesh_clip(mesh, std::span<const Plane>(polyhedron.planes()), options);
+  return clip_mesh(mesh, std::span<const Plane>(polyhedron.planes()), options);
 }
 
 std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane) {

@@ -9,8 +9,15 @@
 namespace contain::clip {
 
 MultiPolygon polygon_boolean(std::span<const Ring> a, std::span<const Ring> b,
-                             const PolygonBooleanOptions& options, PolygonBooleanStats* stats) {
-  return detail::boolean_engine(a, b, options, stats);
+                             const PolygonBooleanOptions& options) {
+  return detail::boolean_engine(a, b, options, nullptr);
+}
+
+PolygonBooleanResult polygon_boolean_with_stats(std::span<const Ring> a, std::span<const Ring> b,
+                                                const PolygonBooleanOptions& options) {
+  PolygonBooleanResult result;
+  result.region = detail::boolean_engine(a, b, options, &result.stats);
+  return result;
 }
 
 MultiPolygon polygon_boolean(const MultiPolygon& a, const MultiPolygon& b,

@@ -6,9 +6,9 @@
 
 namespace contain::clip {
 
-std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines,
-                                    std::span<const Ring> region,
-                                    const PolylineClipOptions& options) {
+std::vector<Polyline> clip_polylines(std::span<const Polyline> polylines,
+                                     std::span<const Ring> region,
+                                     const PolylineClipOptions& options) {
   detail::ArrangementInput input;
   input.open_paths = true;
   input.add_rings(region, {.a = 1, .b = 0, .open = false});
@@ -55,10 +55,11 @@ std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines,
   return out;
 }
 
-std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines, const MultiPolygon& region,
-                                    const PolylineClipOptions& options) {
+std::vector<Polyline> clip_polylines(std::span<const Polyline> polylines,
+                                     const MultiPolygon& region,
+                                     const PolylineClipOptions& options) {
   const std::vector<Ring> rings = region.all_rings();
-  return polyline_clip(polylines, rings, options);
+  return clip_polylines(polylines, rings, options);
 }
 
 }  // namespace contain::clip

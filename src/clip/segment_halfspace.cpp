@@ -57,10 +57,10 @@ double crossing_parameter(const Segment3& s, const Plane& h) {
 double crossing_parameter(const Segment2& s, const HalfPlane& h) {
   return parameter(s.a, s.b, predicates::LineFunction{h});
 }
-ClippedSegment3 segment_halfspace(const Segment3& s, const Plane& h) {
+ClippedSegment3 clip_segment(const Segment3& s, const Plane& h) {
   return clip(s.a, s.b, predicates::PlaneFunction{h});
 }
-ClippedSegment2 segment_halfspace(const Segment2& s, const HalfPlane& h) {
+ClippedSegment2 clip_segment(const Segment2& s, const HalfPlane& h) {
   return clip(s.a, s.b, predicates::LineFunction{h});
 }
 

@@ -140,9 +140,9 @@ void clip_by_halfspaces(std::span<const S> in, const std::vector<H>& planes, std
 
 template <class S, class Region>
 Status clip_by_region(std::span<const S> segments, const Region& region, std::span<S> out,
-                      std::span<std::uint8_t> kept, const SegmentClipOptions& options) {
+                      std::span<std::uint8_t> kept, const SegmentClipOptions& options,
+                      const BatchOptions& batch) {
   if (Status valid = check(segments, region, out, kept, options); !valid) return valid;
-  const BatchOptions batch{.threads = options.threads};
   std::visit(
       [&](const auto& r) {
         using R = std::decay_t<decltype(r)>;
@@ -163,14 +163,14 @@ Status clip_by_region(std::span<const S> segments, const Region& region, std::sp
 
 Status clip_segments(std::span<const Segment2> segments, const SegmentRegion2& region,
                      std::span<Segment2> out, std::span<std::uint8_t> kept,
-                     const SegmentClipOptions& options) {
-  return clip_by_region(segments, region, out, kept, options);
+                     const SegmentClipOptions& options, const BatchOptions& batch) {
+  return clip_by_region(segments, region, out, kept, options, batch);
 }
 
 Status clip_segments(std::span<const Segment3> segments, const SegmentRegion3& region,
                      std::span<Segment3> out, std::span<std::uint8_t> kept,
-                     const SegmentClipOptions& options) {
-  return clip_by_region(segments, region, out, kept, options);
+                     const SegmentClipOptions& options, const BatchOptions& batch) {
+  return clip_by_region(segments, region, out, kept, options, batch);
 }
 
 }  // namespace contain::clip

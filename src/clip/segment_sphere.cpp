@@ -85,10 +85,10 @@ typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const Ball& 
 
 }  // namespace
 
-ClippedSegment3 segment_sphere(const Segment3& segment, const Sphere& ball) {
+ClippedSegment3 clip_segment(const Segment3& segment, const Sphere& ball) {
   return clip(segment.a, segment.b, ball);
 }
-ClippedSegment2 segment_sphere(const Segment2& segment, const Circle& disc) {
+ClippedSegment2 clip_segment(const Segment2& segment, const Circle& disc) {
   return clip(segment.a, segment.b, disc);
 }
 

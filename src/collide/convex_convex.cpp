@@ -53,7 +53,7 @@ bool polytopes_meet(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   for (std::int32_t i = 0; i < faces_a; ++i) {
     const Triangle3 fa = a.face(i);
     for (std::int32_t j = 0; j < faces_b; ++j)
-      if (tri_tri_intersect(fa, b.face(j))) return true;
+      if (tri_tri(fa, b.face(j))) return true;
   }
   return inside::point_in_convex(b, a.vertices()[0]) != Location::outside ||
          inside::point_in_convex(a, b.vertices()[0]) != Location::outside;
@@ -92,7 +92,7 @@ Vec3 ConvexShape::support(Vec3 direction) const {
   return solid_.support(direction);
 }
 
-ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b) {
+ConvexContact convex_convex(const ConvexShape& a, const ConvexShape& b) {
   const bool polytopes = a.is_polytope() && b.is_polytope();
   const bound::GjkResult r = gjk(a, b);
   const double distance = r.origin_inside ? 0.0 : length(r.v);

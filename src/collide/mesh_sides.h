@@ -70,9 +70,9 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
                           pb.apply(vb[static_cast<std::size_t>(y[2])])};
         if (!box_of(p.a, p.b, p.c).overlaps(box_of(q.a, q.b, q.c))) return bvh::Visit::proceed;
         ++contact.exact_tests;
-        if (!tri_tri_intersect(p, q)) return bvh::Visit::proceed;
+        if (!tri_tri(p, q)) return bvh::Visit::proceed;
         contact.intersect = true;
-        contact.witness = WitnessKind::triangles;
+        contact.witness = inside::PairWitness::triangles;
         contact.triangle_a = ta;
         contact.triangle_b = tb;
         return bvh::Visit::stop;
@@ -90,7 +90,7 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
       ++contact.exact_tests;
       if (strictly_inside(b, pb, q)) {
         contact.intersect = true;
-        contact.witness = WitnessKind::vertex_of_a_in_b;
+        contact.witness = inside::PairWitness::vertex_of_a_in_b;
         contact.vertex = v;
         return contact;
       }
@@ -104,7 +104,7 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
       ++contact.exact_tests;
       if (b_vertex_in_a(p)) {
         contact.intersect = true;
-        contact.witness = WitnessKind::vertex_of_b_in_a;
+        contact.witness = inside::PairWitness::vertex_of_b_in_a;
         contact.vertex = v;
         return contact;
       }

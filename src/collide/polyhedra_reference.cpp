@@ -44,9 +44,9 @@ bool edge_face(const Mesh& e, const Mesh& f, bool e_is_a, Contact& contact) {
     for (const Segment3& s : edges) {
       for (std::size_t u = 0; u < f.triangles.size(); ++u) {
         ++contact.exact_tests;
-        if (segment_triangle_intersect(s, f.triangle(u))) {
+        if (segment_triangle(s, f.triangle(u))) {
           contact.intersect = true;
-          contact.witness = WitnessKind::triangles;
+          contact.witness = inside::PairWitness::triangles;
           contact.triangle_a = static_cast<std::int32_t>(e_is_a ? t : u);
           contact.triangle_b = static_cast<std::int32_t>(e_is_a ? u : t);
           return true;
@@ -59,7 +59,7 @@ bool edge_face(const Mesh& e, const Mesh& f, bool e_is_a, Contact& contact) {
 
 }  // namespace
 
-ReferenceResult polyhedra_reference(const Mesh& a_local, const Mesh& b_local,
+ReferenceResult mesh_mesh_reference(const Mesh& a_local, const Mesh& b_local,
                                     const Transform& transform_a, const Transform& transform_b) {
   ReferenceResult r;
   const Mesh a = placed(a_local, transform_a), b = placed(b_local, transform_b);
@@ -86,7 +86,7 @@ ReferenceResult polyhedra_reference(const Mesh& a_local, const Mesh& b_local,
   }
   // (3) The full test: vertex containment both ways, then edge-face penetration both ways.
   r.stage = ReferenceStage::vertices;
-  auto vertex_in = [&](const Mesh& m, const inside::MeshIndex& index, WitnessKind kind) {
+  auto vertex_in = [&](const Mesh& m, const inside::MeshIndex& index, inside::PairWitness kind) {
     std::vector<bool> used(m.vertices.size(), false);
     for (const TriangleIndices& t : m.triangles) {
       for (const std::int32_t v : t)
@@ -104,8 +104,8 @@ ReferenceResult polyhedra_reference(const Mesh& a_local, const Mesh& b_local,
     }
     return false;
   };
-  if (b_solid && vertex_in(a, index_b, WitnessKind::vertex_of_a_in_b)) return r;
-  if (a_solid && vertex_in(b, index_a, WitnessKind::vertex_of_b_in_a)) return r;
+  if (b_solid && vertex_in(a, index_b, inside::PairWitness::vertex_of_a_in_b)) return r;
+  if (a_solid && vertex_in(b, index_a, inside::PairWitness::vertex_of_b_in_a)) return r;
   r.stage = ReferenceStage::edges;
   if (edge_face(a, b, true, r.contact) || edge_face(b, a, false, r.contact)) return r;
   r.stage = ReferenceStage::full_test;

@@ -60,9 +60,9 @@ Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
         const Segment2& t = eb.segments[static_cast<std::size_t>(j)];
         if (!box_overlap(s, t)) return bvh::Visit::proceed;
         ++contact.exact_tests;
-        if (!segments_intersect(s, t)) return bvh::Visit::proceed;
+        if (!segment_segment(s, t)) return bvh::Visit::proceed;
         contact.intersect = true;
-        contact.witness = WitnessKind::edges;
+        contact.witness = inside::PairWitness::edges;
         contact.triangle_a = i;
         contact.triangle_b = j;
         return bvh::Visit::stop;
@@ -70,7 +70,7 @@ Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
   contact.node_pairs = stats.nodes;
   if (contact.intersect) return contact;
   // Boundaries disjoint: each ring lies wholly on one side of the other region's boundary.
-  auto nested = [&](const Edges& e, const MultiPolygon& other, WitnessKind kind) {
+  auto nested = [&](const Edges& e, const MultiPolygon& other, inside::PairWitness kind) {
     const inside::PolygonIndex index(other, {.fill = options.fill});
     for (const std::int32_t v : e.ring_first) {
       ++contact.exact_tests;
@@ -83,7 +83,8 @@ Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
     }
     return false;
   };
-  if (!nested(ea, b, WitnessKind::vertex_of_a_in_b)) nested(eb, a, WitnessKind::vertex_of_b_in_a);
+  if (!nested(ea, b, inside::PairWitness::vertex_of_a_in_b))
+    nested(eb, a, inside::PairWitness::vertex_of_b_in_a);
   return contact;
 }
 

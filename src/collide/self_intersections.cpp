@@ -22,7 +22,7 @@ const Vec3& corner(const Triangle3& t, int k) {
   return k == 0 ? t.a : k == 1 ? t.b : t.c;
 }
 
-// A segment as the flat triangle spanned by it (segment_triangle_intersect takes degenerate
+// A segment as the flat triangle spanned by it (segment_triangle takes degenerate
 // triangles as their segment hull).
 Triangle3 flat(const Vec3& p, const Vec3& q) {
   return {p, q, q};
@@ -41,7 +41,7 @@ bool meet_beyond_shared(const Triangle3& a, const Triangle3& b) {
       }
     }
   }
-  if (shared == 0) return tri_tri_intersect(a, b);
+  if (shared == 0) return tri_tri(a, b);
   if (shared == 3) return false;  // a duplicated triangle: validate_mesh's finding
   if (shared == 1) {
     // P shared; the edges opposite P in a and in b.
@@ -51,7 +51,7 @@ bool meet_beyond_shared(const Triangle3& a, const Triangle3& b) {
     const int pb = in_b[static_cast<std::size_t>(pa)];
     const Segment3 far_a{corner(a, (pa + 1) % 3), corner(a, (pa + 2) % 3)};
     const Segment3 far_b{corner(b, (pb + 1) % 3), corner(b, (pb + 2) % 3)};
-    return segment_triangle_intersect(far_a, b) || segment_triangle_intersect(far_b, a);
+    return segment_triangle(far_a, b) || segment_triangle(far_b, a);
   }
   // Edge P Q shared: a = P Q a2, b = P Q b2 (as points; the index order does not matter).
   int ra = 0;
@@ -67,9 +67,8 @@ bool meet_beyond_shared(const Triangle3& a, const Triangle3& b) {
   // Not coplanar (the usual neighbours): the planes meet in the line P Q, which holds a ∩ b,
   // and each triangle meets that line in the edge P Q only. One orient3d.
   if (predicates::orient3d(p, q, a2, *b2) != Sign::zero) return false;
-  return segment_triangle_intersect({a2, a2}, b) || segment_triangle_intersect({*b2, *b2}, a) ||
-         segment_triangle_intersect({q, a2}, flat(p, *b2)) ||
-         segment_triangle_intersect({p, a2}, flat(q, *b2));
+  return segment_triangle({a2, a2}, b) || segment_triangle({*b2, *b2}, a) ||
+         segment_triangle({q, a2}, flat(p, *b2)) || segment_triangle({p, a2}, flat(q, *b2));
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ bool segments_intersect3(Vec3 s0, Vec3 s1, Vec3 t0, Vec3 t1) {
     for (k = 2; k > 0 && drop(s0, k) == drop(s1, k); --k) {
     }
   }
-  return segments_intersect({drop(s0, k), drop(s1, k)}, {drop(t0, k), drop(t1, k)});
+  return segment_segment({drop(s0, k), drop(s1, k)}, {drop(t0, k), drop(t1, k)});
 }
 
 // Segment (s0, s1) against a proper triangle whose projection along `axis` is proper: the
@@ -74,8 +74,7 @@ bool segment_proper_triangle(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis)
   if (o0 != Sign::zero && o0 == o1) return false;
   if (o0 == Sign::zero && o1 == Sign::zero) {
     const Vec2 p = drop(s0, axis), q = drop(s1, axis);
-    return tri_tri_intersect(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)},
-                             Triangle2{p, q, q});
+    return tri_tri(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{p, q, q});
   }
   const Sign e0 = orient3d(s0, s1, a, b), e1 = orient3d(s0, s1, b, c), e2 = orient3d(s0, s1, c, a);
   const bool any_pos = e0 == Sign::positive || e1 == Sign::positive || e2 == Sign::positive;
@@ -86,8 +85,7 @@ bool segment_proper_triangle(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis)
 bool point_in_proper_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c, int axis) {
   if (orient3d(a, b, c, p) != Sign::zero) return false;
   const Vec2 q = drop(p, axis);
-  return tri_tri_intersect(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)},
-                           Triangle2{q, q, q});
+  return tri_tri(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{q, q, q});
 }
 
 bool simplices_intersect(const Simplex3& s, int s_axis, const Simplex3& t, int t_axis) {
@@ -95,8 +93,8 @@ bool simplices_intersect(const Simplex3& s, int s_axis, const Simplex3& t, int t
   switch (s.dim * 3 + t.dim) {
     case 8: {  // two proper triangles, known to be coplanar here
       const int k = s_axis;
-      return tri_tri_intersect(Triangle2{drop(s.p[0], k), drop(s.p[1], k), drop(s.p[2], k)},
-                               Triangle2{drop(t.p[0], k), drop(t.p[1], k), drop(t.p[2], k)});
+      return tri_tri(Triangle2{drop(s.p[0], k), drop(s.p[1], k), drop(s.p[2], k)},
+                     Triangle2{drop(t.p[0], k), drop(t.p[1], k), drop(t.p[2], k)});
     }
     case 7:
       return segment_proper_triangle(t.p[0], t.p[1], s.p[0], s.p[1], s.p[2], s_axis);
@@ -192,7 +190,7 @@ constexpr std::array<SignPattern, 27> kPatterns = make_patterns();
 
 }  // namespace
 
-bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
+bool tri_tri(const Triangle3& a, const Triangle3& b) {
   // The six vertices, T1 as 0, 1, 2 and T2 as 3, 4, 5, share one filter bound; each plane's
   // normal is formed once for its three queries.
   const predicates::Orient3dSet<6> set({a.a, a.b, a.c, b.a, b.b, b.c});
@@ -233,8 +231,8 @@ bool tri_tri_intersect(const Triangle3& a, const Triangle3& b) {
   return (i_side != Sign::positive) & (j_side != Sign::positive);
 }
 
-bool segment_triangle_intersect(const Segment3& s, const Triangle3& t) {
-  return tri_tri_intersect(Triangle3{s.a, s.b, s.b}, t);
+bool segment_triangle(const Segment3& s, const Triangle3& t) {
+  return tri_tri(Triangle3{s.a, s.b, s.b}, t);
 }
 
 }  // namespace contain::collide

@@ -52,7 +52,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
     case 7:  // triangle, segment
       if (point_in_ccw(t.p[0], s.p) || point_in_ccw(t.p[1], s.p)) return true;
       for (int e = 0; e < 3; ++e) {
-        if (segments_intersect(
+        if (segment_segment(
                 {s.p[static_cast<std::size_t>(e)], s.p[static_cast<std::size_t>((e + 1) % 3)]},
                 {t.p[0], t.p[1]})) {
           return true;
@@ -62,7 +62,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
     case 6:  // triangle, point
       return point_in_ccw(t.p[0], s.p);
     case 4:  // segment, segment
-      return segments_intersect({s.p[0], s.p[1]}, {t.p[0], t.p[1]});
+      return segment_segment({s.p[0], s.p[1]}, {t.p[0], t.p[1]});
     case 3:  // segment, point
       return point_on_segment(t.p[0], s.p[0], s.p[1]);
     default:  // point, point
@@ -72,7 +72,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
 
 }  // namespace
 
-bool segments_intersect(const Segment2& a, const Segment2& b) {
+bool segment_segment(const Segment2& a, const Segment2& b) {
   if (a.a == a.b) return point_on_segment(a.a, b.a, b.b);
   if (b.a == b.b) return point_on_segment(b.a, a.a, a.b);
   const Sign o1 = orient2d(a.a, a.b, b.a), o2 = orient2d(a.a, a.b, b.b);
@@ -91,7 +91,7 @@ bool segments_intersect(const Segment2& a, const Segment2& b) {
   return true;
 }
 
-bool tri_tri_intersect(const Triangle2& a, const Triangle2& b) {
+bool tri_tri(const Triangle2& a, const Triangle2& b) {
   return simplices_intersect(simplex_of(a), simplex_of(b));
 }
 

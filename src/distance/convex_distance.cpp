@@ -59,13 +59,13 @@ bool place(const ConvexPolyhedron& b, const Transform& tb, std::vector<Vec3>& wb
 bool nested(const PlacedPair& pair, PairDistance3& out) {
   const Vec3 va0 = pair.a.vertices()[0];
   if (inside::point_in_convex(pair.a, pair.wb[0]) == Location::inside) {
-    out.contact = PairContact::vertex_of_b_in_a;
+    out.contact = inside::PairWitness::vertex_of_b_in_a;
     out.vertex = 0;
     out.point_a = out.point_b = pair.wb[0];
     return true;
   }
   if (inside::point_in_convex(pair.b, pair.wb, va0) == Location::inside) {
-    out.contact = PairContact::vertex_of_a_in_b;
+    out.contact = inside::PairWitness::vertex_of_a_in_b;
     out.vertex = 0;
     out.point_a = out.point_b = va0;
     return true;
@@ -245,19 +245,19 @@ Result<ConvexDistance> ConvexDistance::prepare(const ConvexPolyhedron& polyhedro
   return out;
 }
 
-Closest3 ConvexDistance::query(Vec3 p, const PointQuery& query) const {
+Closest3 ConvexDistance::distance(Vec3 p, const PointQuery& query) const {
   Closest3 out =
-      surface_.query(p, {.signed_distance = false, .closest_point = query.closest_point});
+      surface_.distance(p, {.signed_distance = false, .closest_point = query.closest_point});
   if (query.signed_distance && std::isfinite(out.distance))
     detail::apply_sign(out, inside::point_in_convex(polyhedron_, p));
   return out;
 }
 
-void ConvexDistance::query(std::span<const Vec3> points, std::span<Closest3> out,
-                           const PointQuery& query, const BatchOptions& options) const {
+void ConvexDistance::distance(std::span<const Vec3> points, std::span<Closest3> out,
+                              const PointQuery& query, const BatchOptions& options) const {
   const std::size_t n = batch_size(points.size(), out.size());
-  surface_.query(points.first(n), out.first(n),
-                 {.signed_distance = false, .closest_point = query.closest_point}, options);
+  surface_.distance(points.first(n), out.first(n),
+                    {.signed_distance = false, .closest_point = query.closest_point}, options);
   if (!query.signed_distance) return;
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
@@ -270,10 +270,10 @@ bool ConvexDistance::within(Vec3 p, double d) const {
   return surface_.within(p, d);
 }
 
-Result<Closest3> point_convex(Vec3 p, const ConvexPolyhedron& polyhedron, const PointQuery& query) {
+Result<Closest3> point_convex(const ConvexPolyhedron& polyhedron, Vec3 p, const PointQuery& query) {
   auto prepared = ConvexDistance::prepare(polyhedron);
   if (!prepared) return prepared.error();
-  return prepared->query(p, query);
+  return prepared->distance(p, query);
 }
 
 // The pair stages composed for the distance: every face pair that can be closest reaches the
@@ -288,7 +288,8 @@ PairDistance3 convex_convex(const ConvexDistance& a, const ConvexDistance& b,
   if (state != Opening::narrowed) return out;
   (void)collect_contenders(pair, buffers.left, -kInf, out, buffers.contenders);
   const predicates::FlatPair3 winner = closest_contender(pair, buffers.contenders, out);
-  out.contact = predicates::flats_meet(winner) ? PairContact::triangles : PairContact::none;
+  out.contact =
+      predicates::flats_meet(winner) ? inside::PairWitness::triangles : inside::PairWitness::none;
   out.distance = predicates::rounded_distance(winner);
   const predicates::ClosestPoints3 points = predicates::rounded_closest_points(winner);
   out.point_a = points.a;

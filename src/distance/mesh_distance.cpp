@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include "contain/predicates/closest_feature.h"
@@ -20,7 +21,15 @@ namespace {
 using predicates::Flat3;
 using predicates::FlatPair3;
 
-thread_local MeshDistanceStats t_stats;
+void add(MeshDistanceStats& total, const MeshDistanceStats& part) {
+  total.queries += part.queries;
+  total.nodes += part.nodes;
+  total.triangles += part.triangles;
+  total.cheap += part.cheap;
+  total.contenders += part.contenders;
+  total.exact_comparisons += part.exact_comparisons;
+  total.shared_features += part.shared_features;
+}
 
 std::vector<Triangle3> triangles_of(const Mesh& mesh) {
   std::vector<Triangle3> out;
@@ -77,7 +86,7 @@ bool no_nearer(Vec3 p, const Triangle3& t, const Triangle3& won, predicates::Tri
 // lowest index (distance-tie rule). Each contender's closest feature is decided exactly; equal
 // features need no comparison.
 Winner resolve(Vec3 p, const detail::TriangleSearch& search,
-               std::vector<detail::Contender>& contenders) {
+               std::vector<detail::Contender>& contenders, MeshDistanceStats& work) {
   // Lowest index first, so that a tie keeps the first one met.
   std::sort(contenders.begin(), contenders.end(),
             [](const detail::Contender& a, const detail::Contender& b) { return a.item < b.item; });
@@ -85,10 +94,10 @@ Winner resolve(Vec3 p, const detail::TriangleSearch& search,
   for (const detail::Contender& c : contenders) {
     const Triangle3& t = search.triangle(c.item);
     if (best.triangle >= 0 && no_nearer(p, t, search.triangle(best.triangle), best.feature)) {
-      ++t_stats.shared_features;
+      ++work.shared_features;
       continue;
     }
-    const predicates::TriangleFeature feature = predicates::closest_feature(p, t);
+    const predicates::TriangleFeature feature = predicates::closest_feature(t, p);
     const Flat3 flat = predicates::feature_flat(t, feature);
     const FlatPair3 pair{predicates::point_flat(p), flat};
     if (best.triangle < 0) {
@@ -96,7 +105,7 @@ Winner resolve(Vec3 p, const detail::TriangleSearch& search,
       continue;
     }
     if (predicates::same_flat(flat, best.pair.b)) continue;
-    ++t_stats.exact_comparisons;
+    ++work.exact_comparisons;
     if (predicates::compare_squared_distances(pair, best.pair) == Sign::negative) {
       best = {c.item, feature, pair};
     }
@@ -122,12 +131,14 @@ std::size_t MeshDistance::size() const {
   return search_->size();
 }
 
-Closest3 MeshDistance::query(Vec3 p, const PointQuery& query) const {
-  return query_with_hint(p, query, -1);
+Closest3 MeshDistance::distance(Vec3 p, const PointQuery& query) const {
+  MeshDistanceStats unused;
+  return query_with_hint(p, query, -1, unused);
 }
 
-Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const {
-  ++t_stats.queries;
+Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint,
+                                       MeshDistanceStats& work) const {
+  ++work.queries;
   Closest3 out;
   if (!is_finite(p)) {
     out.distance = std::numeric_limits<double>::quiet_NaN();
@@ -141,11 +152,11 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   thread_local std::vector<detail::Contender> contenders;
   detail::SearchStats stats;
   search_->contenders(p, contenders, &stats, hint);
-  t_stats.nodes += stats.nodes;
-  t_stats.triangles += stats.items;
-  t_stats.cheap += stats.cheap;
-  t_stats.contenders += contenders.size();
-  const Winner w = resolve(p, *search_, contenders);
+  work.nodes += stats.nodes;
+  work.triangles += stats.items;
+  work.cheap += stats.cheap;
+  work.contenders += contenders.size();
+  const Winner w = resolve(p, *search_, contenders, work);
   out = detail::answer(w.pair, query.closest_point);
   out.feature = w.triangle;
   if (query.signed_distance) {
@@ -158,22 +169,34 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   return out;
 }
 
-void MeshDistance::query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& q,
-                         const BatchOptions& options) const {
+void MeshDistance::distance(std::span<const Vec3> points, std::span<Closest3> out,
+                            const PointQuery& q, const BatchOptions& options) const {
+  static_cast<void>(distance_with_stats(points, out, q, options));
+}
+
+MeshDistanceStats MeshDistance::distance_with_stats(std::span<const Vec3> points,
+                                                    std::span<Closest3> out, const PointQuery& q,
+                                                    const BatchOptions& options) const {
+  MeshDistanceStats total;
+  std::mutex total_mutex;
   const std::size_t n = batch_size(points.size(), out.size());
   // Points in Morton order of their position, so that neighbours in the order are neighbours in
   // space and each query starts from the previous one's closest triangle (a hint: it bounds the
   // search early and never changes an answer, which is exact).
   const std::vector<std::uint32_t> order = detail::morton_order(points.first(n));
   parallel_for(n, options, [&](std::size_t begin, std::size_t end) {
+    MeshDistanceStats work;
     std::int32_t hint = -1;
     for (std::size_t k = begin; k < end; ++k) {
       detail::prefetch_ahead<>(order, k, end, points.data(), out.data());
       const std::size_t i = order[k];
-      out[i] = query_with_hint(points[i], q, hint);
+      out[i] = query_with_hint(points[i], q, hint, work);
       hint = out[i].feature;
     }
+    const std::lock_guard lock(total_mutex);
+    add(total, work);
   });
+  return total;
 }
 
 bool MeshDistance::within(Vec3 p, double d) const {
@@ -186,7 +209,7 @@ bool MeshDistance::within(Vec3 p, double d) const {
   for (const detail::Contender& c : undecided) {
     const Triangle3& t = search_->triangle(c.item);
     const FlatPair3 pair{predicates::point_flat(p),
-                         predicates::feature_flat(t, predicates::closest_feature(p, t))};
+                         predicates::feature_flat(t, predicates::closest_feature(t, p))};
     if (predicates::compare_squared_distance(pair, d) != Sign::positive) return true;
   }
   return false;
@@ -198,17 +221,10 @@ void MeshDistance::within(std::span<const Vec3> points, double d, std::span<std:
             [&](Vec3 p) -> std::uint8_t { return within(p, d) ? 1 : 0; });
 }
 
-MeshDistanceStats MeshDistance::stats() {
-  return t_stats;
-}
-void MeshDistance::reset_stats() {
-  t_stats = {};
-}
-
 Closest3 point_mesh(const Mesh& mesh, Vec3 p, const PointQuery& query) {
   MeshDistanceOptions options;
   options.signs = query.signed_distance;
-  return MeshDistance(mesh, options).query(p, query);
+  return MeshDistance(mesh, options).distance(p, query);
 }
 
 }  // namespace contain::distance

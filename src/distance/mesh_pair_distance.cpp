@@ -120,16 +120,16 @@ std::vector<std::int32_t> least_items(const bvh::Bvh& bvh) {
 
 }  // namespace
 
-const char* to_string(PairContact contact) {
+const char* to_string(inside::PairWitness contact) {
   switch (contact) {
-    case PairContact::triangles:
-    case PairContact::edges:
+    case inside::PairWitness::triangles:
+    case inside::PairWitness::edges:
       return "touching";
-    case PairContact::vertex_of_a_in_b:
+    case inside::PairWitness::vertex_of_a_in_b:
       return "vertex_of_a_in_b";
-    case PairContact::vertex_of_b_in_a:
+    case inside::PairWitness::vertex_of_b_in_a:
       return "vertex_of_b_in_a";
-    case PairContact::none:
+    case inside::PairWitness::none:
       break;
   }
   return "separate";
@@ -363,7 +363,7 @@ MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
   if (pair_.a.solid) {
     for (const std::int32_t v : pair_.b.components) {
       if (pair_.index_a.locate(placed.vertices[v]) == Location::inside)
-        return {PairContact::vertex_of_b_in_a, v, placed.vertices[v]};
+        return {inside::PairWitness::vertex_of_b_in_a, v, placed.vertices[v]};
     }
   }
   if (pair_.b.solid) {
@@ -375,7 +375,7 @@ MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
           [&](std::int32_t t) {
             return placed.vertices.triangle(b.triangles[static_cast<std::size_t>(t)]);
           });
-      if (location == Location::inside) return {PairContact::vertex_of_a_in_b, v, q};
+      if (location == Location::inside) return {inside::PairWitness::vertex_of_a_in_b, v, q};
     }
   }
   return {};
@@ -418,7 +418,8 @@ PairDistance3 MeshPairDistance::distance(const Transform& transform_b) const {
   out.contenders = c.contenders;
   out.triangle_a = c.a;
   out.triangle_b = c.b;
-  out.contact = predicates::flats_meet(c.pair) ? PairContact::triangles : PairContact::none;
+  out.contact =
+      predicates::flats_meet(c.pair) ? inside::PairWitness::triangles : inside::PairWitness::none;
   out.distance = predicates::rounded_distance(c.pair);
   const predicates::ClosestPoints3 points = predicates::rounded_closest_points(c.pair);
   out.point_a = points.a;

@@ -11,22 +11,22 @@ namespace contain::distance {
 using predicates::FlatPair3;
 using predicates::point_flat;
 
-Closest3 point_triangle(Vec3 p, const Triangle3& t) {
-  const predicates::TriangleFeature f = predicates::closest_feature(p, t);
+Closest3 point_triangle(const Triangle3& t, Vec3 p) {
+  const predicates::TriangleFeature f = predicates::closest_feature(t, p);
   return detail::answer({point_flat(p), predicates::feature_flat(t, f)}, true);
 }
 
-Closest3 point_segment(Vec3 p, const Segment3& s) {
-  const predicates::SegmentFeature f = predicates::closest_feature(p, s);
+Closest3 point_segment(const Segment3& s, Vec3 p) {
+  const predicates::SegmentFeature f = predicates::closest_feature(s, p);
   return detail::answer({point_flat(p), predicates::feature_flat(s, f)}, true);
 }
 
-Closest2 point_segment(Vec2 p, const Segment2& s) {
-  const predicates::SegmentFeature f = predicates::closest_feature(p, s);
+Closest2 point_segment(const Segment2& s, Vec2 p) {
+  const predicates::SegmentFeature f = predicates::closest_feature(s, p);
   return detail::answer({predicates::point_flat(p), predicates::feature_flat(s, f)}, true);
 }
 
-Closest3 point_box(Vec3 p, const Box3& box, const PointQuery& query) {
+Closest3 point_box(const Box3& box, Vec3 p, const PointQuery& query) {
   const Vec3 clamped{std::clamp(p.x, box.min.x, box.max.x), std::clamp(p.y, box.min.y, box.max.y),
                      std::clamp(p.z, box.min.z, box.max.z)};
   if (!(clamped == p)) {  // outside: the clamped point is the closest point of the solid box

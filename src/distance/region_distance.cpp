@@ -31,7 +31,7 @@ Winner resolve(Vec2 p, const detail::SegmentSearch& search,
   for (const detail::Contender& c : contenders) {
     const Segment2& s = search.segment(c.item);
     const FlatPair2 pair{predicates::point_flat(p),
-                         predicates::feature_flat(s, predicates::closest_feature(p, s))};
+                         predicates::feature_flat(s, predicates::closest_feature(s, p))};
     if (best.edge < 0) {
       best = {c.item, pair};
       continue;
@@ -77,7 +77,7 @@ std::size_t RegionDistance::size() const {
   return search_->size();
 }
 
-Closest2 RegionDistance::query(Vec2 p, const PointQuery& query) const {
+Closest2 RegionDistance::distance(Vec2 p, const PointQuery& query) const {
   return query_with_hint(p, query, -1);
 }
 
@@ -108,8 +108,8 @@ Closest2 RegionDistance::query_with_hint(Vec2 p, const PointQuery& query, std::i
   return out;
 }
 
-void RegionDistance::query(std::span<const Vec2> points, std::span<Closest2> out,
-                           const PointQuery& q, const BatchOptions& options) const {
+void RegionDistance::distance(std::span<const Vec2> points, std::span<Closest2> out,
+                              const PointQuery& q, const BatchOptions& options) const {
   const std::size_t n = batch_size(points.size(), out.size());
   // Morton order with the previous point's edge as a hint, as MeshDistance does.
   const std::vector<std::uint32_t> order = detail::morton_order(points.first(n));
@@ -134,7 +134,7 @@ bool RegionDistance::within(Vec2 p, double d) const {
   for (const detail::Contender& c : undecided) {
     const Segment2& s = search_->segment(c.item);
     const FlatPair2 pair{predicates::point_flat(p),
-                         predicates::feature_flat(s, predicates::closest_feature(p, s))};
+                         predicates::feature_flat(s, predicates::closest_feature(s, p))};
     if (predicates::compare_squared_distance(pair, d) != Sign::positive) return true;
   }
   return false;
@@ -150,7 +150,7 @@ Closest2 point_region(const MultiPolygon& region, Vec2 p, const PointQuery& quer
                       const RegionDistanceOptions& options) {
   RegionDistanceOptions o = options;
   o.signs = query.signed_distance;
-  return RegionDistance(region, o).query(p, query);
+  return RegionDistance(region, o).distance(p, query);
 }
 
 }  // namespace contain::distance

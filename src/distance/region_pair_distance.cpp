@@ -151,19 +151,19 @@ PairDistance2 region_region(const MultiPolygon& a, const MultiPolygon& b,
   const bool touching = predicates::flats_meet(f.pair);
   if (!touching) {
     if (const std::int32_t v = nested_vertex(eb, ea, options.fill); v >= 0) {
-      out.contact = PairContact::vertex_of_b_in_a;
+      out.contact = inside::PairWitness::vertex_of_b_in_a;
       out.vertex = v;
       out.point_a = out.point_b = vertex_at(eb, v);
       return out;
     }
     if (const std::int32_t v = nested_vertex(ea, eb, options.fill); v >= 0) {
-      out.contact = PairContact::vertex_of_a_in_b;
+      out.contact = inside::PairWitness::vertex_of_a_in_b;
       out.vertex = v;
       out.point_a = out.point_b = vertex_at(ea, v);
       return out;
     }
   }
-  out.contact = touching ? PairContact::edges : PairContact::none;
+  out.contact = touching ? inside::PairWitness::edges : inside::PairWitness::none;
   out.distance = predicates::rounded_distance(f.pair);
   const predicates::ClosestPoints2 points = predicates::rounded_closest_points(f.pair);
   out.point_a = points.a;

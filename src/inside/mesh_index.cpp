@@ -121,7 +121,7 @@ std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
 }  // namespace
 
 const char* to_string(MeshRegime regime) {
-  return regime == MeshRegime::closed_exact ? "closed-exact" : "winding-number";
+  return regime == MeshRegime::closed_exact ? "closed_exact" : "winding_number";
 }
 
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)

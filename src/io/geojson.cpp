@@ -311,7 +311,7 @@ Result<MultiPolygon> read_geojson(const std::filesystem::path& path) {
   return parse_geojson(*text, detail::source_name(path));
 }
 
-std::string write_geojson(const MultiPolygon& region) {
+std::string format_geojson(const MultiPolygon& region) {
   std::string out = R"({"type":"MultiPolygon","coordinates":[)";
   bool first = true;
   for (const Polygon& polygon : region.polygons) {
@@ -324,7 +324,7 @@ std::string write_geojson(const MultiPolygon& region) {
   return out;
 }
 
-std::string write_geojson(const Polygon& polygon) {
+std::string format_geojson(const Polygon& polygon) {
   std::string out = R"({"type":"Polygon","coordinates":)";
   append_polygon(out, polygon);
   out += '}';

@@ -101,20 +101,19 @@ Result<Layer> parse_wkt_layer(std::string_view text, const std::string& source,
     while (first < row.size() && detail::is_space(row[first]))
       ++first;
     if (first == row.size() || row[first] == '#') continue;
-    WktNotes notes;
-    auto region = parse_wkt(row, source, &notes);
+    auto region = parse_wkt_with_notes(row, source);
     if (!region) {
       Error error = region.error();
       error.line = line;  // parse_wkt counted lines of this row alone
       return error;
     }
-    if (!notes.unclosed_rings.empty()) {
+    if (!region->notes.unclosed_rings.empty()) {
       layer.warnings.push_back(source + ":" + std::to_string(line) +
                                ": ring not closed (WKT repeats the first point at the end); read "
                                "as closed");
     }
     layer.ids.push_back(std::to_string(layer.regions.size()));
-    layer.regions.push_back(std::move(*region));
+    layer.regions.push_back(std::move(region->region));
   }
   return layer;
 }

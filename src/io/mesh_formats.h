@@ -12,6 +12,9 @@
 
 namespace contain::io::detail {
 
+/// A format as the readers' messages word it for a person ("OBJ", "binary STL", ...).
+[[nodiscard]] const char* format_words(MeshFormat format);
+
 [[nodiscard]] Result<MeshFile> parse_obj(std::string_view text, const std::string& source);
 [[nodiscard]] Result<MeshFile> parse_off(std::string_view text, const std::string& source);
 [[nodiscard]] Result<MeshFile> parse_stl(std::string_view bytes, const std::string& source);
@@ -30,9 +33,9 @@ inline void append_fan(std::vector<TriangleIndices>& triangles,
   }
 }
 
-/// The finished reader result: rejects a mesh without triangles (ErrorKind::degenerate) and
-/// validates through Mesh::from_arrays (the readers have checked indices and coordinates already,
-/// so a failure there is reported as is).
+/// The finished reader result (a mesh without triangles is refused by parse_mesh, unless asked
+/// for): validates through Mesh::from_arrays (the readers have checked indices and coordinates
+/// already, so a failure there is reported as is).
 [[nodiscard]] Result<MeshFile> finish_mesh(std::vector<Vec3> vertices,
                                            std::vector<TriangleIndices> triangles, MeshInfo info,
                                            const std::string& source);

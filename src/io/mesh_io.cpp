@@ -8,7 +8,29 @@
 
 namespace contain::io {
 
-const char* format_name(MeshFormat format) {
+const char* to_string(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::obj:
+      return "obj";
+    case MeshFormat::off:
+      return "off";
+    case MeshFormat::stl_ascii:
+      return "stl_ascii";
+    case MeshFormat::stl_binary:
+      return "stl_binary";
+    case MeshFormat::ply_ascii:
+      return "ply_ascii";
+    case MeshFormat::ply_binary_little_endian:
+      return "ply_binary_little_endian";
+    case MeshFormat::ply_binary_big_endian:
+      return "ply_binary_big_endian";
+  }
+  return "mesh";
+}
+
+namespace detail {
+
+const char* format_words(MeshFormat format) {
   switch (format) {
     case MeshFormat::obj:
       return "OBJ";
@@ -28,6 +50,8 @@ const char* format_name(MeshFormat format) {
   return "mesh";
 }
 
+}  // namespace detail
+
 std::optional<MeshFormat> mesh_format_for_path(const std::filesystem::path& path) {
   const std::string ext = detail::lower_extension(path);
   if (ext == ".obj") return MeshFormat::obj;
@@ -37,7 +61,10 @@ std::optional<MeshFormat> mesh_format_for_path(const std::filesystem::path& path
   return std::nullopt;
 }
 
-Result<MeshFile> parse_mesh(std::string_view bytes, MeshFormat family, const std::string& source) {
+namespace {
+
+Result<MeshFile> parse_family(std::string_view bytes, MeshFormat family,
+                              const std::string& source) {
   switch (family) {
     case MeshFormat::obj:
       return detail::parse_obj(bytes, source);
@@ -54,7 +81,20 @@ Result<MeshFile> parse_mesh(std::string_view bytes, MeshFormat family, const std
   return detail::make_error(ErrorKind::unsupported, "unknown mesh format", source);
 }
 
-Result<MeshFile> read_mesh(const std::filesystem::path& path) {
+}  // namespace
+
+Result<MeshFile> parse_mesh(std::string_view bytes, MeshFormat family, const std::string& source,
+                            const MeshReadOptions& options) {
+  auto file = parse_family(bytes, family, source);
+  if (file && file->mesh.triangles.empty() && !options.allow_empty) {
+    return detail::make_error(
+        ErrorKind::degenerate,
+        std::string(detail::format_words(file->info.format)) + " file without faces: no mesh", source);
+  }
+  return file;
+}
+
+Result<MeshFile> read_mesh(const std::filesystem::path& path, const MeshReadOptions& options) {
   const std::optional<MeshFormat> format = mesh_format_for_path(path);
   if (!format) {
     return detail::make_error(ErrorKind::unsupported,
@@ -64,7 +104,7 @@ Result<MeshFile> read_mesh(const std::filesystem::path& path) {
   }
   auto bytes = detail::read_file(path);
   if (!bytes) return bytes.error();
-  return parse_mesh(*bytes, *format, detail::source_name(path));
+  return parse_mesh(*bytes, *format, detail::source_name(path), options);
 }
 
 std::string format_mesh(const Mesh& mesh, MeshFormat format) {
@@ -114,11 +154,6 @@ namespace detail {
 
 Result<MeshFile> finish_mesh(std::vector<Vec3> vertices, std::vector<TriangleIndices> triangles,
                              MeshInfo info, const std::string& source) {
-  if (triangles.empty()) {
-    return make_error(ErrorKind::degenerate,
-                      std::string(format_name(info.format)) + " file without faces: no mesh",
-                      source);
-  }
   auto mesh = Mesh::from_arrays(std::move(vertices), std::move(triangles));
   if (!mesh) {
     Error e = mesh.error();

@@ -1,5 +1,6 @@
 #include "contain/io/mesh_warning.h"
 
+#include <charconv>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,6 +101,29 @@ std::string open_mesh_warning(std::string_view name, const MeshReport& report,
 
 std::string open_mesh_warning(std::string_view name, OpenMeshReading reading) {
   return std::string(name) + ": not closed: " + std::string(reading_words(reading));
+}
+
+namespace {
+
+std::string shortest(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  return {text, end};
+}
+
+std::string point_words(Vec3 p) {
+  return "(" + shortest(p.x) + " " + shortest(p.y) + " " + shortest(p.z) + ")";
+}
+
+}  // namespace
+
+std::string open_solid_message(std::string_view name, const UnmatchedEdge& edge) {
+  return std::string(name) + ": not closed: the directed edge " + point_words(edge.from) + " -> " +
+         point_words(edge.to) + " of triangle " + std::to_string(edge.triangle) +
+         " (counted from 0 in file order, polygons split into fans) occurs " +
+         std::to_string(edge.count) + (edge.count == 1 ? " time" : " times") + ", its reverse " +
+         std::to_string(edge.reverse) + (edge.reverse == 1 ? " time" : " times") +
+         "; a solid's mesh has every directed edge as often as its reverse";
 }
 
 }  // namespace contain::io

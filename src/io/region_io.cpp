@@ -13,10 +13,24 @@ std::optional<RegionFormat> region_format(const std::filesystem::path& path) {
   return std::nullopt;
 }
 
-Result<MultiPolygon> read_region(const std::filesystem::path& path, WktNotes* notes) {
+Result<MultiPolygon> read_region(const std::filesystem::path& path) {
+  auto read = read_region_with_notes(path);
+  if (!read) return read.error();
+  return std::move(read->region);
+}
+
+Result<WktRegion> read_region_with_notes(const std::filesystem::path& path) {
   const std::optional<RegionFormat> format = region_format(path);
-  if (format == RegionFormat::wkt) return read_wkt(path, notes);
-  if (format == RegionFormat::geojson) return read_geojson(path);
+  if (format == RegionFormat::wkt) {
+    auto text = detail::read_file(path);
+    if (!text) return text.error();
+    return parse_wkt_with_notes(*text, detail::source_name(path));
+  }
+  if (format == RegionFormat::geojson) {
+    auto region = read_geojson(path);
+    if (!region) return region.error();
+    return WktRegion{.region = std::move(*region), .notes = {}};
+  }
   const std::string ext = detail::lower_extension(path);
   return detail::make_error(
       ErrorKind::unsupported,

@@ -341,7 +341,7 @@ std::string SvgCanvas::str() const {
   return out;
 }
 
-std::string region_svg(const MultiPolygon& region, const PictureOptions& options) {
+std::string format_svg(const MultiPolygon& region, const PictureOptions& options) {
   const std::vector<Ring> rings = region.all_rings();
   SvgCanvas canvas(bounding_box(rings), options.width_px);
   if (!options.title.empty()) canvas.title(options.title);
@@ -349,7 +349,7 @@ std::string region_svg(const MultiPolygon& region, const PictureOptions& options
   return canvas.str();
 }
 
-std::string mesh_svg(const Mesh& mesh, const PictureOptions& options) {
+std::string format_svg(const Mesh& mesh, const PictureOptions& options) {
   std::vector<Vec3> used;
   used.reserve(3 * mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles)

@@ -295,7 +295,7 @@ Result<MultiPolygon> parse_wkb(std::string_view bytes, const std::string& source
   return WkbReader(binary, source).read();
 }
 
-std::string write_wkb(const MultiPolygon& region) {
+std::string format_wkb(const MultiPolygon& region) {
   std::string out;
   std::size_t count = 0;
   for (const Polygon& polygon : region.polygons)
@@ -309,7 +309,7 @@ std::string write_wkb(const MultiPolygon& region) {
   return out;
 }
 
-std::string write_wkb(const Polygon& polygon) {
+std::string format_wkb(const Polygon& polygon) {
   std::string out;
   put_polygon(out, polygon);
   return out;

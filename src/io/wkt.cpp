@@ -307,17 +307,25 @@ bool has_points(const Polygon& polygon) {
 
 }  // namespace
 
-Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source, WktNotes* notes) {
-  return WktReader(detail::skip_bom(text), source, notes).read();
+Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source) {
+  return WktReader(detail::skip_bom(text), source, nullptr).read();
 }
 
-Result<MultiPolygon> read_wkt(const std::filesystem::path& path, WktNotes* notes) {
+Result<WktRegion> parse_wkt_with_notes(std::string_view text, const std::string& source) {
+  WktRegion read;
+  auto region = WktReader(detail::skip_bom(text), source, &read.notes).read();
+  if (!region) return region.error();
+  read.region = std::move(*region);
+  return read;
+}
+
+Result<MultiPolygon> read_wkt(const std::filesystem::path& path) {
   auto text = detail::read_file(path);
   if (!text) return text.error();
-  return parse_wkt(*text, detail::source_name(path), notes);
+  return parse_wkt(*text, detail::source_name(path));
 }
 
-std::string write_wkt(const MultiPolygon& region) {
+std::string format_wkt(const MultiPolygon& region) {
   std::string out = "MULTIPOLYGON ";
   bool first = true;
   for (const Polygon& polygon : region.polygons) {
@@ -330,7 +338,7 @@ std::string write_wkt(const MultiPolygon& region) {
   return out;
 }
 
-std::string write_wkt(const Polygon& polygon) {
+std::string format_wkt(const Polygon& polygon) {
   std::string out = "POLYGON ";
   if (!has_points(polygon)) return out + "EMPTY";
   append_polygon(out, polygon);

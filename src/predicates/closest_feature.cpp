@@ -70,10 +70,10 @@ bool collinear(Vec3 a, Vec3 b, Vec3 c) {
          orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
 }
 
-SegmentFeature closest_feature(Vec3 p, const Segment3& s) {
+SegmentFeature closest_feature(const Segment3& s, Vec3 p) {
   return segment_feature(p, s);
 }
-SegmentFeature closest_feature(Vec2 p, const Segment2& s) {
+SegmentFeature closest_feature(const Segment2& s, Vec2 p) {
   return segment_feature(p, s);
 }
 
@@ -139,7 +139,7 @@ bool proven(Vec3 p, const Triangle3& t, TriangleFeature f) {
 
 }  // namespace
 
-TriangleFeature closest_feature(Vec3 p, const Triangle3& t) {
+TriangleFeature closest_feature(const Triangle3& t, Vec3 p) {
   // Most calls: the floating-point region, proven by two or three exact signs.
   const TriangleFeature guess = guessed_feature(p, t);
   if (proven(p, t, guess)) {
@@ -165,7 +165,7 @@ TriangleFeature closest_feature(Vec3 p, const Triangle3& t) {
     const int j = (e + 1) % 3;
     const Segment3 s{t.corner(i), t.corner(j)};
     TriangleFeature f{};
-    switch (closest_feature(p, s)) {
+    switch (closest_feature(s, p)) {
       case SegmentFeature::vertex_a:
         f = vertex_named(t, i);
         break;
@@ -256,10 +256,10 @@ struct Least {
 
 FlatPair3 closest_flats(const Segment3& s, const Segment3& t) {
   Least<FlatPair3> least;
-  least.offer({point_flat(s.a), feature_flat(t, closest_feature(s.a, t))});
-  least.offer({point_flat(s.b), feature_flat(t, closest_feature(s.b, t))});
-  least.offer({feature_flat(s, closest_feature(t.a, s)), point_flat(t.a)});
-  least.offer({feature_flat(s, closest_feature(t.b, s)), point_flat(t.b)});
+  least.offer({point_flat(s.a), feature_flat(t, closest_feature(t, s.a))});
+  least.offer({point_flat(s.b), feature_flat(t, closest_feature(t, s.b))});
+  least.offer({feature_flat(s, closest_feature(s, t.a)), point_flat(t.a)});
+  least.offer({feature_flat(s, closest_feature(s, t.b)), point_flat(t.b)});
   if (s.a == s.b || t.a == t.b) return least.best;
   // The feet of the common perpendicular: s.a + x u, t.a + y v with x = (r x v) . m / |m|^2,
   // y = (r x u) . m / |m|^2 (r = t.a - s.a, m = u x v); strictly inside both segments.
@@ -294,14 +294,14 @@ FlatPair2 closest_flats(const Segment2& s, const Segment2& t) {
                                 : FlatPair2{line_flat(s.a, s.b), line_flat(t.b, t.a)};
   }
   Least<FlatPair2> least;
-  least.offer({point_flat(s.a), feature_flat(t, closest_feature(s.a, t))});
-  least.offer({point_flat(s.b), feature_flat(t, closest_feature(s.b, t))});
-  least.offer({feature_flat(s, closest_feature(t.a, s)), point_flat(t.a)});
-  least.offer({feature_flat(s, closest_feature(t.b, s)), point_flat(t.b)});
+  least.offer({point_flat(s.a), feature_flat(t, closest_feature(t, s.a))});
+  least.offer({point_flat(s.b), feature_flat(t, closest_feature(t, s.b))});
+  least.offer({feature_flat(s, closest_feature(s, t.a)), point_flat(t.a)});
+  least.offer({feature_flat(s, closest_feature(s, t.b)), point_flat(t.b)});
   return least.best;
 }
 
-bool segment_crosses_triangle(Vec3 p, Vec3 q, const Triangle3& t) {
+bool segment_crosses_triangle(const Triangle3& t, Vec3 p, Vec3 q) {
   const Sign op = orient3d(t.a, t.b, t.c, p);
   if (op == Sign::zero) return false;
   if (orient3d(t.a, t.b, t.c, q) != -op) return false;
@@ -314,7 +314,7 @@ FlatPair3 closest_flats(const Triangle3& s, const Triangle3& t) {
   const std::array<Vec3, 3> vs{s.a, s.b, s.c}, vt{t.a, t.b, t.c};
   for (int e = 0; e < 3; ++e) {
     const Vec3 p = vs[static_cast<std::size_t>(e)], q = vs[static_cast<std::size_t>((e + 1) % 3)];
-    if (segment_crosses_triangle(p, q, t)) {
+    if (segment_crosses_triangle(t, p, q)) {
       // The line from below the plane to above it (orient3d < 0 first).
       const bool p_below = orient3d(t.a, t.b, t.c, p) == Sign::negative;
       return {p_below ? line_flat(p, q) : line_flat(q, p), plane_flat(t.a, t.b, t.c)};
@@ -322,16 +322,16 @@ FlatPair3 closest_flats(const Triangle3& s, const Triangle3& t) {
   }
   for (int e = 0; e < 3; ++e) {
     const Vec3 p = vt[static_cast<std::size_t>(e)], q = vt[static_cast<std::size_t>((e + 1) % 3)];
-    if (segment_crosses_triangle(p, q, s)) {
+    if (segment_crosses_triangle(s, p, q)) {
       const bool p_below = orient3d(s.a, s.b, s.c, p) == Sign::negative;
       return {plane_flat(s.a, s.b, s.c), p_below ? line_flat(p, q) : line_flat(q, p)};
     }
   }
   Least<FlatPair3> least;
   for (const Vec3& v : vs)
-    least.offer({point_flat(v), feature_flat(t, closest_feature(v, t))});
+    least.offer({point_flat(v), feature_flat(t, closest_feature(t, v))});
   for (const Vec3& v : vt)
-    least.offer({feature_flat(s, closest_feature(v, s)), point_flat(v)});
+    least.offer({feature_flat(s, closest_feature(s, v)), point_flat(v)});
   for (int i = 0; i < 3; ++i) {
     const Segment3 es{vs[static_cast<std::size_t>(i)], vs[static_cast<std::size_t>((i + 1) % 3)]};
     for (int j = 0; j < 3; ++j) {

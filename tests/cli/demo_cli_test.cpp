@@ -44,7 +44,8 @@ TEST_F(DemoCli, RunsEveryCapabilityWritesThePicturesItNamesAndReportsTheDistance
        {"inside-polygon.svg", "inside-csg.svg", "inside-mesh.svg", "collide.svg", "collide-ccd.svg",
         "clip-segments.svg", "clip-sutherland-hodgman.svg", "clip-boolean.svg", "clip-mesh.svg",
         "clip-mesh.obj", "clip-mesh.ply", "bound-torus.svg", "distance-slice.svg",
-        "distance-clearance.svg", "slice-layers.svg", "slice-shadow.svg"}) {
+        "distance-clearance.svg", "solid-bracket.obj", "solid-bracket.svg", "slice-layers.svg",
+        "slice-shadow.svg"}) {
     EXPECT_NE(run.out.find(name), std::string::npos) << name;
     const std::filesystem::path file = std::filesystem::path(out_) / name;
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
@@ -56,6 +57,8 @@ TEST_F(DemoCli, RunsEveryCapabilityWritesThePicturesItNamesAndReportsTheDistance
   EXPECT_NE(run.out.find("cube nested in the tube      intersect"), std::string::npos);
   EXPECT_NE(run.out.find("bar through the hole         disjoint"), std::string::npos);
   EXPECT_NE(run.out.find("closed and consistently oriented"), std::string::npos);
+  EXPECT_NE(run.out.find("CSG bracket"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("vertices moved, closed"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("bullet through a thin plate: t = 0 disjoint, t = 1 disjoint; swept: hit"),
             std::string::npos);
   // The distance scenes: signs, the closest pair, touching and nesting.

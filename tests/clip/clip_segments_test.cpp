@@ -161,7 +161,7 @@ TEST(ClipSegments, OtherRegionsMatchTheOneShotClippers) {
   const Sphere ball{{0, 0, 0}, 1};
   clip::clip_segments(in, ball, out, kept, {.threads = 2});
   for (std::size_t i = 0; i < in.size(); ++i) {
-    const auto r = clip::segment_sphere(in[i], ball);
+    const auto r = clip::clip_segment(in[i], ball);
     ASSERT_EQ(kept[i], r.kept ? 1 : 0);
     if (r.kept) {
       EXPECT_EQ(out[i], r.segment);
@@ -177,6 +177,25 @@ TEST(ClipSegments, OtherRegionsMatchTheOneShotClippers) {
       EXPECT_EQ(out[i], r.segment);
     }
   }
+}
+
+// A short `out` or `kept` is a programming error (core/parallel.h's batch rule): an assertion in
+// builds that check them; elsewhere the common prefix is clipped and nothing is written past a
+// span (the sentinel beyond the short spans stays).
+TEST(ClipSegments, ASpanShorterThanTheSegmentsIsAssertedOrCutToThePrefix) {
+  const std::vector<Segment2> in(4, Segment2{{-1, 0.5}, {2, 0.5}});
+  EXPECT_DEBUG_DEATH(
+      {
+        std::vector<Segment2> out(4);
+        std::vector<std::uint8_t> kept(4, 7);
+        clip::clip_segments(in, Box2{{0, 0}, {1, 1}}, std::span<Segment2>(out).first(4),
+                            std::span<std::uint8_t>(kept).first(3));
+        EXPECT_EQ(kept, (std::vector<std::uint8_t>{1, 1, 1, 7}));
+        clip::clip_segments(in, Circle{{0, 0}, 1}, std::span<Segment2>(out).first(2),
+                            std::span<std::uint8_t>(kept).first(4));
+        EXPECT_EQ(kept[3], 7);
+      },
+      "inputs' size");
 }
 
 }  // namespace

@@ -36,9 +36,9 @@ void expect_solid(const Mesh& m, double volume, double tolerance) {
 
 TEST(MeshClip, CappedCubeCornerIsAClosedOutwardSolid) {
   const std::vector<Plane> cut = {{1, 1, 1, -1.5}};
-  const Mesh m = clip::mesh_clip(cube(), cut, {.cut = clip::MeshCut::cap});
+  const Mesh m = clip::clip_mesh(cube(), cut, {.cut = clip::MeshCut::cap});
   expect_solid(m, 0.5, 1e-12);  // the plane through the centre halves the cube
-  const Mesh open = clip::mesh_clip(cube(), cut);
+  const Mesh open = clip::clip_mesh(cube(), cut);
   EXPECT_FALSE(validate_mesh(open).closed());
   for (const Vec3& v : open.vertices)
     EXPECT_NE(exact_side_of_plane(cut[0], v), Sign::negative);
@@ -46,7 +46,7 @@ TEST(MeshClip, CappedCubeCornerIsAClosedOutwardSolid) {
 
 TEST(MeshClip, BoxClipOfCubeIsTheSmallCubeWithExactFaceCoordinates) {
   const Mesh m =
-      clip::mesh_clip(cube(), Box3{{0.25, 0.25, 0.25}, {2, 2, 2}}, {.cut = clip::MeshCut::cap});
+      clip::clip_mesh(cube(), Box3{{0.25, 0.25, 0.25}, {2, 2, 2}}, {.cut = clip::MeshCut::cap});
   expect_solid(m, 0.75 * 0.75 * 0.75, 1e-12);
   for (const Vec3& v : m.vertices) {
     EXPECT_TRUE(Box3({{0.25, 0.25, 0.25}, {1, 1, 1}}).contains(v));
@@ -55,9 +55,9 @@ TEST(MeshClip, BoxClipOfCubeIsTheSmallCubeWithExactFaceCoordinates) {
 
 TEST(MeshClip, FaceOnThePlaneStaysWhenItBoundsTheKeptSide) {
   const std::vector<Plane> x_le_1 = {{-1, 0, 0, 1}};
-  EXPECT_EQ(clip::mesh_clip(cube(), x_le_1).triangles.size(), 12u);
+  EXPECT_EQ(clip::clip_mesh(cube(), x_le_1).triangles.size(), 12u);
   const std::vector<Plane> x_ge_1 = {{1, 0, 0, -1}};
-  EXPECT_TRUE(clip::mesh_clip(cube(), x_ge_1, {.cut = clip::MeshCut::cap}).triangles.empty());
+  EXPECT_TRUE(clip::clip_mesh(cube(), x_ge_1, {.cut = clip::MeshCut::cap}).triangles.empty());
 }
 
 TEST(MeshClip, TorusCutThroughItsHoleGetsAnnularCapsAndStaysClosed) {
@@ -65,14 +65,14 @@ TEST(MeshClip, TorusCutThroughItsHoleGetsAnnularCapsAndStaysClosed) {
   const double full = validate_mesh(torus).signed_volume;
   // z >= 0.1 cuts the tube along an annulus (a cap with a hole).
   const std::vector<Plane> up = {{0, 0, 1, -0.1}};
-  const Mesh top = clip::mesh_clip(torus, up, {.cut = clip::MeshCut::cap});
+  const Mesh top = clip::clip_mesh(torus, up, {.cut = clip::MeshCut::cap});
   const MeshReport r = validate_mesh(top);
   EXPECT_TRUE(r.closed() && r.consistently_oriented()) << r.summary();
   EXPECT_GT(r.signed_volume, 0.0);
   EXPECT_LT(r.signed_volume, 0.5 * full);
   // x >= 0.3 cuts the ring twice: two disc-shaped caps.
   const std::vector<Plane> side = {{1, 0, 0, -0.3}};
-  const Mesh half = clip::mesh_clip(torus, side, {.cut = clip::MeshCut::cap});
+  const Mesh half = clip::clip_mesh(torus, side, {.cut = clip::MeshCut::cap});
   const MeshReport h = validate_mesh(half);
   EXPECT_TRUE(h.closed() && h.consistently_oriented() && h.manifold()) << h.summary();
   EXPECT_GT(h.signed_volume, 0.0);
@@ -85,8 +85,8 @@ TEST(MeshClip, ConvexMeshRegionGivesTheSameSolidAsItsPlanes) {
   Mesh moved = torus;
   for (Vec3& v : moved.vertices)
     v = v + Vec3{0.2, 0.5, 0.5};
-  const Mesh a = clip::mesh_clip(moved, *solid, {.cut = clip::MeshCut::cap});
-  const Mesh b = clip::mesh_clip(moved, Box3{{0, 0, 0}, {1, 1, 1}}, {.cut = clip::MeshCut::cap});
+  const Mesh a = clip::clip_mesh(moved, *solid, {.cut = clip::MeshCut::cap});
+  const Mesh b = clip::clip_mesh(moved, Box3{{0, 0, 0}, {1, 1, 1}}, {.cut = clip::MeshCut::cap});
   const MeshReport ra = validate_mesh(a), rb = validate_mesh(b);
   EXPECT_TRUE(ra.closed() && ra.consistently_oriented()) << ra.summary();
   EXPECT_TRUE(rb.closed() && rb.consistently_oriented()) << rb.summary();
@@ -179,7 +179,7 @@ TEST(MeshClip, LatticeBoxesThroughVerticesEdgesAndFacesGiveClosedSolids) {
           for (int s = 1; s <= 3; ++s) {
             const Box3 box{{double(x0), double(y0), double(z0)},
                            {double(x0 + s), double(y0 + 1 + s % 2), double(z0 + s)}};
-            const Mesh m = clip::mesh_clip(solid, box, {.cut = clip::MeshCut::cap});
+            const Mesh m = clip::clip_mesh(solid, box, {.cut = clip::MeshCut::cap});
             const int expected = cells_in(cells, box);
             if (expected == 0) continue;  // may touch along a face: no volume
             ++tried;
@@ -202,8 +202,8 @@ TEST(MeshClip, DiagonalPlanesThroughLatticeVerticesGiveClosedSolids) {
     for (const Plane h : {Plane{1, 1, 0, -3}, Plane{1, 0, -1, 0}, Plane{1, -1, 1, -1},
                           Plane{0, 1, 1, -2}, Plane{1, 1, 1, -4}, Plane{2, -1, 0, -1}}) {
       const std::vector<Plane> a{h}, b{{-h.a, -h.b, -h.c, -h.d}};
-      const MeshReport ra = validate_mesh(clip::mesh_clip(solid, a, {.cut = clip::MeshCut::cap}));
-      const MeshReport rb = validate_mesh(clip::mesh_clip(solid, b, {.cut = clip::MeshCut::cap}));
+      const MeshReport ra = validate_mesh(clip::clip_mesh(solid, a, {.cut = clip::MeshCut::cap}));
+      const MeshReport rb = validate_mesh(clip::clip_mesh(solid, b, {.cut = clip::MeshCut::cap}));
       ASSERT_TRUE(ra.closed() && ra.consistently_oriented()) << h.a << h.b << h.c << h.d;
       ASSERT_TRUE(rb.closed() && rb.consistently_oriented()) << h.a << h.b << h.c << h.d;
       EXPECT_NEAR(ra.signed_volume + rb.signed_volume, volume, 1e-12);
@@ -219,7 +219,7 @@ TEST(MeshClip, PinchedCapsAndCrossingsThatRoundTogetherStayClosed) {
   const Mesh l = voxels(l_cells);
   for (const double z : {0.5, 0.0}) {
     const std::vector<Plane> up{{0, 0, 1, -z}};
-    const Mesh m = clip::mesh_clip(l, up, {.cut = clip::MeshCut::cap});
+    const Mesh m = clip::clip_mesh(l, up, {.cut = clip::MeshCut::cap});
     const MeshReport r = validate_mesh(m);
     ASSERT_TRUE(r.closed() && r.consistently_oriented()) << z << "\n" << r.summary();
   }
@@ -228,7 +228,7 @@ TEST(MeshClip, PinchedCapsAndCrossingsThatRoundTogetherStayClosed) {
   const Mesh torus = scenes::torus(2.0, 0.5, 48, 24);
   const std::vector<Plane> equator{{0, 0, 1, 0}};
   const MeshReport half =
-      validate_mesh(clip::mesh_clip(torus, equator, {.cut = clip::MeshCut::cap}));
+      validate_mesh(clip::clip_mesh(torus, equator, {.cut = clip::MeshCut::cap}));
   EXPECT_TRUE(half.closed() && half.consistently_oriented()) << half.summary();
   // A bipyramid whose apex lies 1e-19 beyond the cut: its crossing points all round onto the
   // apex's (y, z); the result is closed or empty, never open.
@@ -239,7 +239,7 @@ TEST(MeshClip, PinchedCapsAndCrossingsThatRoundTogetherStayClosed) {
                    {5, 1, 2}, {5, 2, 3}, {5, 3, 4}, {5, 4, 1}};
   ASSERT_TRUE(validate_mesh(tip).closed());
   const std::vector<Plane> right{{1, 0, 0, 0}};
-  const Mesh cut = clip::mesh_clip(tip, right, {.cut = clip::MeshCut::cap});
+  const Mesh cut = clip::clip_mesh(tip, right, {.cut = clip::MeshCut::cap});
   const MeshReport r = validate_mesh(cut);
   EXPECT_TRUE(cut.triangles.empty() || (r.closed() && r.consistently_oriented())) << r.summary();
   EXPECT_EQ(r.border_edges, 0u);
@@ -288,7 +288,7 @@ TEST(MeshClip, FandiskByBoxesThroughItsVerticesStaysClosed) {
       box.min.y = bounds.min.y;
     }
     if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) continue;
-    const Mesh r = clip::mesh_clip(m, box, {.cut = clip::MeshCut::cap});
+    const Mesh r = clip::clip_mesh(m, box, {.cut = clip::MeshCut::cap});
     if (r.triangles.empty()) continue;
     const MeshReport rep = validate_mesh(r);
     ASSERT_TRUE(rep.closed() && rep.consistently_oriented()) << t << "\n" << rep.summary();
@@ -319,7 +319,7 @@ TEST(MeshClip, CapWhoseRoundedBorderAreaHasTheWrongSignOrIsZeroClosesTheSolid) {
     }
     ASSERT_TRUE(validate_mesh(prism).closed());
     const std::vector<Plane> z_le_0 = {{0, 0, -1, 0}};
-    const Mesh half = clip::mesh_clip(prism, z_le_0, {.cut = clip::MeshCut::cap});
+    const Mesh half = clip::clip_mesh(prism, z_le_0, {.cut = clip::MeshCut::cap});
     const MeshReport r = validate_mesh(half);
     EXPECT_TRUE(r.closed() && r.consistently_oriented() && r.manifold()) << r.summary();
     for (const Vec3& v : half.vertices)

@@ -119,9 +119,8 @@ TEST(PolygonBooleanExtreme, ScalingByAPowerOfTwoScalesTheResultBitForBit) {
       ASSERT_TRUE(is_valid_ogc(reference));
       for (const int k : {-1000, -904, -600, -300, 300, 900}) {
         SCOPED_TRACE(k);
-        PolygonBooleanStats stats;
-        const MultiPolygon r =
-            polygon_boolean(scaled(a, k), scaled(b, k), {.op = op, .fill = fill}, &stats);
+        const auto [r, stats] =
+            polygon_boolean_with_stats(scaled(a, k), scaled(b, k), {.op = op, .fill = fill});
         EXPECT_TRUE(stats.converged);
         EXPECT_EQ(r, scaled(reference, k));
       }
@@ -328,8 +327,7 @@ TEST(PolygonBooleanExtreme, NodingConvergesWhereHotPixelsDwarfTheFeatures) {
     for (const Op op : kOps) {
       for (const Fill fill : kFills) {
         SCOPED_TRACE(i * 16 + static_cast<std::size_t>(op) * 4 + static_cast<std::size_t>(fill));
-        PolygonBooleanStats stats;
-        const MultiPolygon r = polygon_boolean(a, b, {.op = op, .fill = fill}, &stats);
+        const auto [r, stats] = polygon_boolean_with_stats(a, b, {.op = op, .fill = fill});
         EXPECT_TRUE(stats.converged);
         EXPECT_TRUE(is_valid_ogc(r));
       }

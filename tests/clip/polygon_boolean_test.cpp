@@ -324,8 +324,8 @@ TEST(PolygonBoolean, SmoothRingsGiveValidOutputConsistentAreasAndFewGraphEdges) 
     for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive}) {
       const double area_a = area(run(a, none, Op::union_, fill));
       const double area_b = area(run(b, none, Op::union_, fill));
-      PolygonBooleanStats stats;
-      const MultiPolygon i = polygon_boolean(a, b, {.op = Op::intersection, .fill = fill}, &stats);
+      const auto [i, stats] =
+          polygon_boolean_with_stats(a, b, {.op = Op::intersection, .fill = fill});
       const MultiPolygon u = run(a, b, Op::union_, fill);
       const MultiPolygon d = run(a, b, Op::difference, fill);
       const MultiPolygon x = run(a, b, Op::xor_, fill);

@@ -27,10 +27,10 @@ double length(const std::vector<Polyline>& paths) {
 TEST(PolylineClip, LineThroughASquareSplitsIntoInsideAndOutsideParts) {
   const std::vector<Ring> square{box(0, 0, 2, 2)};
   const std::vector<Polyline> line{{{-1, 1}, {3, 1}}};
-  const auto in = polyline_clip(line, square, {.keep = PolylinePart::inside});
+  const auto in = clip_polylines(line, square, {.keep = PolylinePart::inside});
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0], (Polyline{{0, 1}, {2, 1}}));
-  const auto out = polyline_clip(line, square, {.keep = PolylinePart::outside});
+  const auto out = clip_polylines(line, square, {.keep = PolylinePart::outside});
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out[0], (Polyline{{-1, 1}, {0, 1}}));
   EXPECT_EQ(out[1], (Polyline{{2, 1}, {3, 1}}));
@@ -39,17 +39,17 @@ TEST(PolylineClip, LineThroughASquareSplitsIntoInsideAndOutsideParts) {
 TEST(PolylineClip, PathWhollyInsideIsReturnedBitForBit) {
   const std::vector<Ring> square{box(0, 0, 1, 1)};
   const std::vector<Polyline> path{{{0.1, 0.1}, {0.3, 0.7}, {0.9, 0.2}, {0.15, 0.95}}};
-  EXPECT_EQ(polyline_clip(path, square), path);
-  EXPECT_TRUE(polyline_clip(path, square, {.keep = PolylinePart::outside}).empty());
+  EXPECT_EQ(clip_polylines(path, square), path);
+  EXPECT_TRUE(clip_polylines(path, square, {.keep = PolylinePart::outside}).empty());
 }
 
 TEST(PolylineClip, PieceAlongTheBoundaryBelongsToTheInsidePart) {
   const std::vector<Ring> square{box(0, 0, 2, 2)};
   const std::vector<Polyline> path{{{-1, 0}, {3, 0}}};
-  const auto in = polyline_clip(path, square);
+  const auto in = clip_polylines(path, square);
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0], (Polyline{{0, 0}, {2, 0}}));
-  EXPECT_EQ(polyline_clip(path, square, {.keep = PolylinePart::outside}).size(), 2u);
+  EXPECT_EQ(clip_polylines(path, square, {.keep = PolylinePart::outside}).size(), 2u);
 }
 
 TEST(PolylineClip, HolesAndFillRulesDecideTheInside) {
@@ -57,8 +57,8 @@ TEST(PolylineClip, HolesAndFillRulesDecideTheInside) {
   const std::vector<Ring> region{box(0, 0, 3, 3), hole};
   const std::vector<Polyline> path{{{-1, 1.5}, {4, 1.5}}};
   // Even-odd: the hole is outside; nonzero with both counter-clockwise: it is filled.
-  EXPECT_EQ(polyline_clip(path, region, {.fill = Fill::even_odd}).size(), 2u);
-  EXPECT_EQ(polyline_clip(path, region, {.fill = Fill::nonzero}).size(), 1u);
+  EXPECT_EQ(clip_polylines(path, region, {.fill = Fill::even_odd}).size(), 2u);
+  EXPECT_EQ(clip_polylines(path, region, {.fill = Fill::nonzero}).size(), 1u);
 }
 
 TEST(PolylineClip, InsideAndOutsidePartsTileEveryPath) {
@@ -74,8 +74,8 @@ TEST(PolylineClip, InsideAndOutsidePartsTileEveryPath) {
     std::vector<Polyline> paths(1);
     for (int i = 0; i < 15; ++i)
       paths[0].push_back({u(rng), u(rng)});
-    const auto in = polyline_clip(paths, region, {.keep = PolylinePart::inside});
-    const auto out = polyline_clip(paths, region, {.keep = PolylinePart::outside});
+    const auto in = clip_polylines(paths, region, {.keep = PolylinePart::inside});
+    const auto out = clip_polylines(paths, region, {.keep = PolylinePart::outside});
     EXPECT_NEAR(length(in) + length(out), length(paths), 1e-12);
     for (const Polyline& p : in) {
       // Inner vertices lie in the region (the ends are rounded crossing points).

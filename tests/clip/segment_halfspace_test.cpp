@@ -19,14 +19,14 @@ TEST(SegmentHalfspace, TheSectionsThreeCases) {
   EXPECT_EQ(clip::segment_case(Segment3{{0, 0, 0}, {3, 0, 0}}, x_ge_0),
             clip::SegmentCase::inside);  // on the plane counts as in
   EXPECT_DOUBLE_EQ(clip::crossing_parameter(Segment3{{-1, 0, 0}, {3, 0, 0}}, x_ge_0), 0.25);
-  const auto r = clip::segment_halfspace(Segment3{{-1, 0, 0}, {3, 0, 0}}, x_ge_0);
+  const auto r = clip::clip_segment(Segment3{{-1, 0, 0}, {3, 0, 0}}, x_ge_0);
   ASSERT_TRUE(r.kept);
   EXPECT_EQ(r.segment.a, (Vec3{0, 0, 0}));
   EXPECT_EQ(r.segment.b, (Vec3{3, 0, 0}));
 }
 
 TEST(SegmentHalfspace, EndpointOnThePlaneWithTheOtherOutTouches) {
-  const auto r = clip::segment_halfspace(Segment2{{0, 1}, {-2, 3}}, HalfPlane{1, 0, 0});
+  const auto r = clip::clip_segment(Segment2{{0, 1}, {-2, 3}}, HalfPlane{1, 0, 0});
   ASSERT_TRUE(r.kept);
   EXPECT_EQ(r.segment.a, r.segment.b);
   EXPECT_EQ(r.segment.a, (Vec2{0, 1}));
@@ -43,7 +43,7 @@ TEST(SegmentHalfspace, RandomPlanesMatchTheOracleAndClippedPointsAreInside) {
     const Segment3 s = gen.segment3();
     const std::vector<Plane> one{p};
     const OracleClip o = oracle_clip(s, one);
-    const auto r = clip::segment_halfspace(s, p);
+    const auto r = clip::clip_segment(s, p);
     ASSERT_EQ(r.kept, o.kept);
     if (!r.kept) continue;
     EXPECT_EQ(r.t0 == r.t1 && s.a != s.b, o.touching);
@@ -56,9 +56,9 @@ TEST(SegmentHalfspace, RandomPlanesMatchTheOracleAndClippedPointsAreInside) {
 
 TEST(SegmentHalfspace, ZeroNormalIsAllOrNothing) {
   const Segment2 s{{0, 0}, {1, 1}};
-  EXPECT_TRUE(clip::segment_halfspace(s, HalfPlane{0, 0, 1}).kept);
-  EXPECT_TRUE(clip::segment_halfspace(s, HalfPlane{0, 0, 0}).kept);
-  EXPECT_FALSE(clip::segment_halfspace(s, HalfPlane{0, 0, -1}).kept);
+  EXPECT_TRUE(clip::clip_segment(s, HalfPlane{0, 0, 1}).kept);
+  EXPECT_TRUE(clip::clip_segment(s, HalfPlane{0, 0, 0}).kept);
+  EXPECT_FALSE(clip::clip_segment(s, HalfPlane{0, 0, -1}).kept);
 }
 
 }  // namespace

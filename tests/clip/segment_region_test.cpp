@@ -50,10 +50,11 @@ struct Clipped {
 };
 
 template <class S, class Region>
-Clipped<S> by_region(const std::vector<S>& in, const Region& region, SegmentClipOptions options) {
+Clipped<S> by_region(const std::vector<S>& in, const Region& region, SegmentClipOptions options,
+                     BatchOptions batch = {}) {
   Clipped<S> c(in.size());
   const Status s = clip_segments(std::span<const S>(in), region, std::span<S>(c.out),
-                                 std::span<std::uint8_t>(c.kept), options);
+                                 std::span<std::uint8_t>(c.kept), options, batch);
   EXPECT_TRUE(s.ok()) << s.error().what();
   return c;
 }
@@ -144,9 +145,9 @@ TEST(SegmentRegion, AnswersDoNotDependOnTheThreadCount) {
   const SegmentRegion3 box(Box3{{-1, -1, -1}, {1, 1, 1}});
   for (SegmentClipper clipper : {SegmentClipper::automatic, SegmentClipper::cohen_sutherland,
                                  SegmentClipper::liang_barsky, SegmentClipper::cyrus_beck}) {
-    const auto one = by_region(s3, box, {.clipper = clipper, .threads = 1});
-    EXPECT_TRUE(by_region(s3, box, {.clipper = clipper, .threads = 2}) == one);
-    EXPECT_TRUE(by_region(s3, box, {.clipper = clipper, .threads = 3}) == one);
+    const auto one = by_region(s3, box, {.clipper = clipper}, {.threads = 1});
+    EXPECT_TRUE(by_region(s3, box, {.clipper = clipper}, {.threads = 2}) == one);
+    EXPECT_TRUE(by_region(s3, box, {.clipper = clipper}, {.threads = 3}) == one);
   }
 }
 

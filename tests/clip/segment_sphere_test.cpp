@@ -44,7 +44,7 @@ TEST(SegmentSphere, DecisionsAreExactAndPointsLieInTheBall) {
   for (int i = 0; i < 20000; ++i) {
     const Segment3 s = gen.segment3();
     const auto [kept, touching] = oracle<Vec3>(s, ball.center, ball.radius, &exact);
-    const auto r = clip::segment_sphere(s, ball);
+    const auto r = clip::clip_segment(s, ball);
     ASSERT_EQ(r.kept, kept) << i;
     if (!r.kept) continue;
     if (touching) {
@@ -61,12 +61,12 @@ TEST(SegmentSphere, DecisionsAreExactAndPointsLieInTheBall) {
 
 TEST(SegmentSphere, TangentSegmentGivesOneTouchingPoint) {
   const Circle disc{{0, 0}, 1};
-  const auto r = clip::segment_sphere(Segment2{{-2, 1}, {2, 1}}, disc);
+  const auto r = clip::clip_segment(Segment2{{-2, 1}, {2, 1}}, disc);
   ASSERT_TRUE(r.kept);
   EXPECT_EQ(r.segment.a, r.segment.b);
   EXPECT_EQ(r.segment.a, (Vec2{0, 1}));
   EXPECT_FALSE(
-      clip::segment_sphere(Segment2{{-2, std::nextafter(1.0, 2.0)}, {2, 1.0000001}}, disc).kept);
+      clip::clip_segment(Segment2{{-2, std::nextafter(1.0, 2.0)}, {2, 1.0000001}}, disc).kept);
 }
 
 TEST(SegmentSphere, DiscMatchesTheExactOracle) {
@@ -75,7 +75,7 @@ TEST(SegmentSphere, DiscMatchesTheExactOracle) {
   for (int i = 0; i < 20000; ++i) {
     const Segment2 s = gen.segment2();
     const auto [kept, touching] = oracle<Vec2>(s, disc.center, disc.radius, &exact);
-    const auto r = clip::segment_sphere(s, disc);
+    const auto r = clip::clip_segment(s, disc);
     ASSERT_EQ(r.kept, kept) << i;
     if (!r.kept || touching) continue;
     EXPECT_NE(exact_side_of_circle(disc, r.segment.a), Sign::negative);
@@ -84,7 +84,7 @@ TEST(SegmentSphere, DiscMatchesTheExactOracle) {
 }
 
 TEST(SegmentSphere, CrossingSegmentIsCutAtBothSides) {
-  const auto r = clip::segment_sphere(Segment3{{-2, 0, 0}, {2, 0, 0}}, Sphere{{0, 0, 0}, 1});
+  const auto r = clip::clip_segment(Segment3{{-2, 0, 0}, {2, 0, 0}}, Sphere{{0, 0, 0}, 1});
   ASSERT_TRUE(r.kept);
   EXPECT_DOUBLE_EQ(r.segment.a.x, -1.0);
   EXPECT_DOUBLE_EQ(r.segment.b.x, 1.0);

@@ -39,8 +39,7 @@ TEST(CollideCorpus, TriangleTriangle3dMatchesExactTruth) {
   for (const auto& r : rows) {
     const Triangle3 a{v3(r["a"][0]), v3(r["a"][1]), v3(r["a"][2])};
     const Triangle3 b{v3(r["b"][0]), v3(r["b"][1]), v3(r["b"][2])};
-    EXPECT_EQ(tri_tri_intersect(a, b), r["truth"] == "intersect")
-        << "id " << r["id"] << " " << r["kind"];
+    EXPECT_EQ(tri_tri(a, b), r["truth"] == "intersect") << "id " << r["id"] << " " << r["kind"];
   }
 }
 
@@ -51,8 +50,7 @@ TEST(CollideCorpus, TriangleTriangle2dMatchesExactTruth) {
   for (const auto& r : rows) {
     const Triangle2 a{v2(r["a"][0]), v2(r["a"][1]), v2(r["a"][2])};
     const Triangle2 b{v2(r["b"][0]), v2(r["b"][1]), v2(r["b"][2])};
-    EXPECT_EQ(tri_tri_intersect(a, b), r["truth"] == "intersect")
-        << "id " << r["id"] << " " << r["kind"];
+    EXPECT_EQ(tri_tri(a, b), r["truth"] == "intersect") << "id " << r["id"] << " " << r["kind"];
   }
 }
 

@@ -66,7 +66,7 @@ TEST(ConvexConvex, BoxesMatchTheExactOverlapTestIncludingTouching) {
   int touching = 0;
   for (int i = 0; i < 3000; ++i) {
     const Box3 a = random_box(rng, 0, 6), b = random_box(rng, 0, 6);
-    const ConvexContact got = convex_intersect(ConvexShape::box(a), ConvexShape::box(b));
+    const ConvexContact got = convex_convex(ConvexShape::box(a), ConvexShape::box(b));
     EXPECT_EQ(got.intersect, a.overlaps(b)) << i;
     EXPECT_TRUE(got.exact);
     touching += a.overlaps(b) && (a.max.x == b.min.x || b.max.x == a.min.x || a.max.y == b.min.y ||
@@ -81,8 +81,8 @@ TEST(ConvexConvex, TetrahedraMatchThePolyhedronReferenceOnRandomAndTouchingPairs
   for (int i = 0; i < 250; ++i) {
     const Mesh a = tetrahedron(rng, 0, 4, {0, 0, 0});
     const Mesh b = tetrahedron(rng, 0, 4, {double(i % 3), 0, 0});
-    const bool want = polyhedra_reference(a, b).contact.intersect;
-    const ConvexContact got = convex_intersect(shape_of(a), shape_of(b));
+    const bool want = mesh_mesh_reference(a, b).contact.intersect;
+    const ConvexContact got = convex_convex(shape_of(a), shape_of(b));
     EXPECT_EQ(got.intersect, want) << i;
     EXPECT_TRUE(got.exact);
     hits += want;
@@ -96,9 +96,9 @@ TEST(ConvexConvex, TetrahedronAgainstBoxMatchesTheReference) {
   for (int i = 0; i < 150; ++i) {
     const Mesh a = tetrahedron(rng, 0, 5, {0, 0, 0});
     const Box3 box = random_box(rng, 1, 4);
-    const bool want = polyhedra_reference(a, box_mesh(box)).contact.intersect;
-    EXPECT_EQ(convex_intersect(shape_of(a), ConvexShape::box(box)).intersect, want) << i;
-    EXPECT_EQ(convex_intersect(ConvexShape::box(box), shape_of(a)).intersect, want) << i;
+    const bool want = mesh_mesh_reference(a, box_mesh(box)).contact.intersect;
+    EXPECT_EQ(convex_convex(shape_of(a), ConvexShape::box(box)).intersect, want) << i;
+    EXPECT_EQ(convex_convex(ConvexShape::box(box), shape_of(a)).intersect, want) << i;
   }
 }
 
@@ -106,11 +106,11 @@ TEST(ConvexConvex, NearlyTouchingBoxesAreDecidedExactly) {
   const Box3 a{{0, 0, 0}, {1, 1, 1}};
   const double gap = std::nextafter(1.0, 2.0);
   EXPECT_FALSE(
-      convex_intersect(ConvexShape::box(a), ConvexShape::box({{gap, 0, 0}, {2, 1, 1}})).intersect);
-  EXPECT_TRUE(convex_intersect(ConvexShape::box(a), ConvexShape::box({{1, 1, 1}, {2, 2, 2}}))
+      convex_convex(ConvexShape::box(a), ConvexShape::box({{gap, 0, 0}, {2, 1, 1}})).intersect);
+  EXPECT_TRUE(convex_convex(ConvexShape::box(a), ConvexShape::box({{1, 1, 1}, {2, 2, 2}}))
                   .intersect);  // a shared corner
   EXPECT_TRUE(
-      convex_intersect(ConvexShape::box(a), ConvexShape::box({{0.25, 0.25, 0.25}, {0.5, 0.5, 0.5}}))
+      convex_convex(ConvexShape::box(a), ConvexShape::box({{0.25, 0.25, 0.25}, {0.5, 0.5, 0.5}}))
           .intersect);  // nested
 }
 
@@ -123,7 +123,7 @@ TEST(ConvexConvex, SpheresAndBoxesMatchTheClosedFormAwayFromTouching) {
       const Sphere t{{u(rng), u(rng), u(rng)}, r(rng)};
       const double gap = length(s.center - t.center) - (s.radius + t.radius);
       if (std::fabs(gap) < 1e-9) continue;
-      const ConvexContact got = convex_intersect(ConvexShape::sphere(s), ConvexShape::sphere(t));
+      const ConvexContact got = convex_convex(ConvexShape::sphere(s), ConvexShape::sphere(t));
       EXPECT_EQ(got.intersect, gap < 0) << i;
       EXPECT_FALSE(got.exact);
       if (!got.intersect) {
@@ -138,9 +138,9 @@ TEST(ConvexConvex, SpheresAndBoxesMatchTheClosedFormAwayFromTouching) {
                    std::clamp(c.z, box.min.z, box.max.z)};
       const double gap = length(c - q) - s.radius;
       if (std::fabs(gap) < 1e-9) continue;
-      EXPECT_EQ(convex_intersect(ConvexShape::sphere(s), ConvexShape::box(box)).intersect, gap < 0)
+      EXPECT_EQ(convex_convex(ConvexShape::sphere(s), ConvexShape::box(box)).intersect, gap < 0)
           << i;
-      EXPECT_EQ(convex_intersect(ConvexShape::box(box), ConvexShape::sphere(s)).intersect, gap < 0)
+      EXPECT_EQ(convex_convex(ConvexShape::box(box), ConvexShape::sphere(s)).intersect, gap < 0)
           << i;
     }
   }
@@ -148,11 +148,11 @@ TEST(ConvexConvex, SpheresAndBoxesMatchTheClosedFormAwayFromTouching) {
 
 TEST(ConvexConvex, TouchingSpheresCountAsIntersecting) {
   EXPECT_TRUE(
-      convex_intersect(ConvexShape::sphere({{0, 0, 0}, 1}), ConvexShape::sphere({{3, 0, 0}, 2}))
+      convex_convex(ConvexShape::sphere({{0, 0, 0}, 1}), ConvexShape::sphere({{3, 0, 0}, 2}))
           .intersect);
-  EXPECT_TRUE(convex_intersect(ConvexShape::sphere({{0, 0, 0}, 1}),
-                               ConvexShape::box({{1, -1, -1}, {2, 1, 1}}))
-                  .intersect);
+  EXPECT_TRUE(
+      convex_convex(ConvexShape::sphere({{0, 0, 0}, 1}), ConvexShape::box({{1, -1, -1}, {2, 1, 1}}))
+          .intersect);
 }
 
 TEST(ConvexConvex, PolyhedronGivenByPlanesIsUnsupported) {

@@ -29,7 +29,7 @@ TEST(MeshPair, TouchingCubesIntersectAndGapsOfTwoToTheMinus30DoNot) {
   EXPECT_TRUE(pair.collide(translation({1 - kTiny, 1 - kTiny, 0})).intersect);  // penetration
   EXPECT_FALSE(pair.collide(translation({5, 5, 5})).intersect);
   const Contact c = pair.collide(translation({1, 0, 0}));
-  EXPECT_EQ(c.witness, WitnessKind::triangles);
+  EXPECT_EQ(c.witness, inside::PairWitness::triangles);
   EXPECT_GE(c.triangle_a, 0);
   EXPECT_GE(c.triangle_b, 0);
 }
@@ -38,10 +38,10 @@ TEST(MeshPair, NestedSolidsIntersectWithAContainedVertexWitnessBothWays) {
   const Mesh big = box_mesh({0, 0, 0}, {4, 4, 4}), small = box_mesh({0, 0, 0}, {1, 1, 1});
   const Contact in = MeshPair(big, small).collide(translation({1, 1, 1}));
   EXPECT_TRUE(in.intersect);
-  EXPECT_EQ(in.witness, WitnessKind::vertex_of_b_in_a);
+  EXPECT_EQ(in.witness, inside::PairWitness::vertex_of_b_in_a);
   const Contact rev = MeshPair(small, big).collide(translation({-1, -1, -1}));
   EXPECT_TRUE(rev.intersect);
-  EXPECT_EQ(rev.witness, WitnessKind::vertex_of_a_in_b);
+  EXPECT_EQ(rev.witness, inside::PairWitness::vertex_of_a_in_b);
   EXPECT_TRUE(MeshPair(big, small).collide(translation({3, 1, 1})).intersect);  // touching inside
   // Nested under a rotation (no surface contact): still intersecting.
   std::mt19937_64 rng(1);
@@ -58,10 +58,10 @@ TEST(MeshPair, VertexExactlyOnTheOtherSurfaceIntersectsWithATrianglePairWitness)
        {Vec3{-4, -1, -3}, Vec3{-4, -2, -2}, Vec3{-4, -2, -4}, Vec3{-4, -4, -4}}) {
     const Contact a_on_b = MeshPair(small, big).collide(translation(shift));
     EXPECT_TRUE(a_on_b.intersect);
-    EXPECT_EQ(a_on_b.witness, WitnessKind::triangles);
+    EXPECT_EQ(a_on_b.witness, inside::PairWitness::triangles);
     const Contact b_on_a = MeshPair(big, small).collide(translation(-1.0 * shift));
     EXPECT_TRUE(b_on_a.intersect);
-    EXPECT_EQ(b_on_a.witness, WitnessKind::triangles);
+    EXPECT_EQ(b_on_a.witness, inside::PairWitness::triangles);
   }
   EXPECT_FALSE(MeshPair(small, big).collide(translation({-4 - 0x1p-40, -1, -3})).intersect);
 }
@@ -71,7 +71,7 @@ TEST(MeshPair, CrossingBeamsWithNoVertexInsideEitherIntersect) {
   const Mesh beam_x = box_mesh({-3, -0.5, -0.5}, {3, 0.5, 0.5});
   const Mesh beam_y = box_mesh({-0.5, -3, -0.25}, {0.5, 3, 0.25});
   EXPECT_TRUE(MeshPair(beam_x, beam_y).collide({}).intersect);
-  const ReferenceResult ref = polyhedra_reference(beam_x, beam_y);
+  const ReferenceResult ref = mesh_mesh_reference(beam_x, beam_y);
   EXPECT_TRUE(ref.contact.intersect);
   EXPECT_EQ(ref.stage, ReferenceStage::edges);
 }
@@ -105,8 +105,8 @@ TEST(MeshPair, FastPathAgreesWithTheSectionsReferenceOnRandomPoses) {
   for (int i = 0; i < 60; ++i) {
     const Transform t = test::random_pose(rng, 1.6);
     const bool fast = pair.collide(t).intersect;
-    ASSERT_EQ(fast, polyhedra_reference(torus, box, {}, t).contact.intersect) << i;
-    ASSERT_EQ(self.collide(t).intersect, polyhedra_reference(torus, torus, {}, t).contact.intersect)
+    ASSERT_EQ(fast, mesh_mesh_reference(torus, box, {}, t).contact.intersect) << i;
+    ASSERT_EQ(self.collide(t).intersect, mesh_mesh_reference(torus, torus, {}, t).contact.intersect)
         << i;
     hits += fast;
   }
@@ -138,13 +138,13 @@ TEST(MeshPair, BatchGivesTheSingleAnswers) {
 
 TEST(PolyhedraReference, BoundingVolumesAnswerFarApartPairs) {
   const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
-  EXPECT_EQ(polyhedra_reference(cube, cube, {}, translation({3, 0, 0})).stage,
+  EXPECT_EQ(mesh_mesh_reference(cube, cube, {}, translation({3, 0, 0})).stage,
             ReferenceStage::bounding_volumes);
   EXPECT_FALSE(
-      polyhedra_reference(cube, cube, {}, translation({1 + kTiny, 0, 0})).contact.intersect);
-  EXPECT_TRUE(polyhedra_reference(cube, cube, {}, translation({1, 1, 1})).contact.intersect);
+      mesh_mesh_reference(cube, cube, {}, translation({1 + kTiny, 0, 0})).contact.intersect);
+  EXPECT_TRUE(mesh_mesh_reference(cube, cube, {}, translation({1, 1, 1})).contact.intersect);
   const Mesh big = box_mesh({0, 0, 0}, {4, 4, 4});
-  const ReferenceResult nested = polyhedra_reference(big, cube, {}, translation({1, 1, 1}));
+  const ReferenceResult nested = mesh_mesh_reference(big, cube, {}, translation({1, 1, 1}));
   EXPECT_TRUE(nested.contact.intersect);
   EXPECT_EQ(nested.stage, ReferenceStage::vertices);
 }

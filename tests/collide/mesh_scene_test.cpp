@@ -49,18 +49,18 @@ void expect_witnesses_hold(const std::vector<Mesh>& meshes, const std::vector<Sc
     const SceneObject& b = objects[static_cast<std::size_t>(p.b)];
     const Mesh& ma = meshes[static_cast<std::size_t>(a.mesh)];
     const Mesh& mb = meshes[static_cast<std::size_t>(b.mesh)];
-    if (p.contact.witness == WitnessKind::triangles) {
+    if (p.contact.witness == inside::PairWitness::triangles) {
       auto world = [](const Mesh& m, const Transform& t, std::int32_t k) {
         const TriangleIndices& x = m.triangles[static_cast<std::size_t>(k)];
         return Triangle3{t.apply(m.vertices[static_cast<std::size_t>(x[0])]),
                          t.apply(m.vertices[static_cast<std::size_t>(x[1])]),
                          t.apply(m.vertices[static_cast<std::size_t>(x[2])])};
       };
-      EXPECT_TRUE(tri_tri_intersect(world(ma, a.transform, p.contact.triangle_a),
-                                    world(mb, b.transform, p.contact.triangle_b)));
+      EXPECT_TRUE(tri_tri(world(ma, a.transform, p.contact.triangle_a),
+                          world(mb, b.transform, p.contact.triangle_b)));
     } else {
-      EXPECT_TRUE(p.contact.witness == WitnessKind::vertex_of_a_in_b ||
-                  p.contact.witness == WitnessKind::vertex_of_b_in_a);
+      EXPECT_TRUE(p.contact.witness == inside::PairWitness::vertex_of_a_in_b ||
+                  p.contact.witness == inside::PairWitness::vertex_of_b_in_a);
       EXPECT_GE(p.contact.vertex, 0);
     }
   }
@@ -82,7 +82,7 @@ TEST(MeshScene, NestedTouchingAndSeparatedCubesEqualThePairwiseTest) {
   EXPECT_EQ(ids(pairs),
             (std::vector<std::pair<std::int32_t, std::int32_t>>{{0, 1}, {0, 2}, {2, 3}}));
   EXPECT_EQ(ids(pairs), pairwise(meshes, objects));
-  EXPECT_EQ(pairs[0].contact.witness, WitnessKind::vertex_of_b_in_a);
+  EXPECT_EQ(pairs[0].contact.witness, inside::PairWitness::vertex_of_b_in_a);
   expect_witnesses_hold(meshes, objects, pairs);
   EXPECT_TRUE(scene.is_solid(0));
 }

@@ -102,7 +102,7 @@ TEST(MovingMeshPair, NestedSolidsAtTimeZeroGiveZero) {
   const MeshImpact m = mesh_mesh_ccd(outer, inner, {}, translate({0, 0, 0}, {0.1, 0, 0}));
   ASSERT_TRUE(m.hit);
   EXPECT_EQ(m.time, 0.0);
-  EXPECT_EQ(m.initial.witness, WitnessKind::vertex_of_b_in_a);
+  EXPECT_EQ(m.initial.witness, inside::PairWitness::vertex_of_b_in_a);
 }
 
 TEST(MovingMeshPair, MovingApartMisses) {

@@ -55,8 +55,8 @@ TEST(SelfIntersections, TwoOverlappingCubesInOneMeshCross) {
     // Every pair joins a face of the first cube (triangles 0..11) with one of the second.
     EXPECT_LT(pair.first, 12);
     EXPECT_GE(pair.second, 12);
-    EXPECT_TRUE(tri_tri_intersect(mesh.triangle(static_cast<std::size_t>(pair.first)),
-                                  mesh.triangle(static_cast<std::size_t>(pair.second))));
+    EXPECT_TRUE(tri_tri(mesh.triangle(static_cast<std::size_t>(pair.first)),
+                        mesh.triangle(static_cast<std::size_t>(pair.second))));
   }
 }
 
@@ -158,7 +158,7 @@ TEST(SelfIntersections, HierarchyFindsEveryPairOfASoup) {
   std::size_t brute = 0;
   for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
     for (std::size_t j = i + 1; j < soup.triangles.size(); ++j) {
-      brute += tri_tri_intersect(soup.triangle(i), soup.triangle(j)) ? 1 : 0;
+      brute += tri_tri(soup.triangle(i), soup.triangle(j)) ? 1 : 0;
     }
   }
   ASSERT_GT(brute, 0u);

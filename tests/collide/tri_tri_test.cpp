@@ -22,12 +22,12 @@ void expect_matches_oracle(const Triangle3& a, const Triangle3& b) {
   for (const auto& i : perm) {
     for (const auto& j : perm) {
       const Triangle3 x{pa[i[0]], pa[i[1]], pa[i[2]]}, y{pb[j[0]], pb[j[1]], pb[j[2]]};
-      ASSERT_EQ(tri_tri_intersect(x, y), truth)
+      ASSERT_EQ(tri_tri(x, y), truth)
           << "a=" << a.a.x << "," << a.a.y << "," << a.a.z << " " << a.b.x << "," << a.b.y << ","
           << a.b.z << " " << a.c.x << "," << a.c.y << "," << a.c.z << " b=" << b.a.x << "," << b.a.y
           << "," << b.a.z << " " << b.b.x << "," << b.b.y << "," << b.b.z << " " << b.c.x << ","
           << b.c.y << "," << b.c.z;
-      ASSERT_EQ(tri_tri_intersect(y, x), truth);
+      ASSERT_EQ(tri_tri(y, x), truth);
     }
   }
 }
@@ -79,8 +79,8 @@ TEST(TriTri3, SharedVertexAndSharedEdgeIntersect) {
     const Vec3 a = random_point(rng, -1, 1), b = random_point(rng, -1, 1),
                c = random_point(rng, -1, 1), d = random_point(rng, -1, 1),
                e = random_point(rng, -1, 1);
-    EXPECT_TRUE(tri_tri_intersect({a, b, c}, {a, d, e}));
-    EXPECT_TRUE(tri_tri_intersect({a, b, c}, {b, a, d}));
+    EXPECT_TRUE(tri_tri({a, b, c}, {a, d, e}));
+    EXPECT_TRUE(tri_tri({a, b, c}, {b, a, d}));
     expect_matches_oracle({a, b, c}, {a, d, e});
   }
 }
@@ -94,8 +94,8 @@ TEST(TriTri3, VertexOnEdgeOrFaceIsExactlyDecided) {
     const Vec3 a = q(), b = q(), c = q(), d = q(), e = q();
     const Vec3 on_edge = 0.5 * (a + b);
     const Vec3 on_face = 0.5 * (0.5 * (a + b) + c);
-    EXPECT_TRUE(tri_tri_intersect({a, b, c}, {on_edge, d, e}));
-    EXPECT_TRUE(tri_tri_intersect({a, b, c}, {on_face, d, e}));
+    EXPECT_TRUE(tri_tri({a, b, c}, {on_edge, d, e}));
+    EXPECT_TRUE(tri_tri({a, b, c}, {on_face, d, e}));
     expect_matches_oracle({a, b, c}, {on_edge, d, e});
     expect_matches_oracle({a, b, c}, {on_face, d, e});
   }
@@ -109,7 +109,7 @@ TEST(TriTri3, EdgeEdgeTouchGapAndTinyPenetrationAreDistinguished) {
     const Triangle3 a{{-1, 0, 0}, {1, 0, 0}, {0, 0, 1}};  // bottom edge along x at z = 0
     const Triangle3 b{{0, -1, shift}, {0, 1, shift}, {0, 0, shift - 1}};  // top edge along y
     const bool truth = shift >= 0.0;
-    EXPECT_EQ(tri_tri_intersect(a, b), truth) << shift;
+    EXPECT_EQ(tri_tri(a, b), truth) << shift;
     expect_matches_oracle(a, b);
   }
 }
@@ -130,14 +130,14 @@ TEST(TriTri3, PiercingByTinyAmountsMatchesOracle) {
 
 TEST(TriTri3, DegenerateTrianglesAreTheSegmentOrPointTheySpan) {
   const Triangle3 t{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
-  EXPECT_TRUE(tri_tri_intersect(t, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));  // segment through edge
-  EXPECT_TRUE(tri_tri_intersect(t, {{0.5, 0.5, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0}}));  // point
-  EXPECT_FALSE(tri_tri_intersect(t, {{1, 1.5, 0}, {1, 1.5, 0}, {1, 1.5, 0}}));
-  EXPECT_TRUE(tri_tri_intersect(t, {{-1, 1, 0}, {3, 1, 0}, {1, 1, 0}}));  // coplanar segment
-  EXPECT_FALSE(tri_tri_intersect(t, {{-1, 3, 0}, {3, 3, 0}, {1, 3, 0}}));
-  EXPECT_TRUE(segment_triangle_intersect({{0.2, 0.2, 1}, {0.2, 0.2, -1}}, t));
-  EXPECT_FALSE(segment_triangle_intersect({{0.2, 0.2, 1}, {0.2, 0.2, 0.5}}, t));
-  EXPECT_TRUE(segment_triangle_intersect({{0.2, 0.2, 1}, {0.2, 0.2, 0}}, t));
+  EXPECT_TRUE(tri_tri(t, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));             // segment through edge
+  EXPECT_TRUE(tri_tri(t, {{0.5, 0.5, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0}}));  // point
+  EXPECT_FALSE(tri_tri(t, {{1, 1.5, 0}, {1, 1.5, 0}, {1, 1.5, 0}}));
+  EXPECT_TRUE(tri_tri(t, {{-1, 1, 0}, {3, 1, 0}, {1, 1, 0}}));  // coplanar segment
+  EXPECT_FALSE(tri_tri(t, {{-1, 3, 0}, {3, 3, 0}, {1, 3, 0}}));
+  EXPECT_TRUE(segment_triangle({{0.2, 0.2, 1}, {0.2, 0.2, -1}}, t));
+  EXPECT_FALSE(segment_triangle({{0.2, 0.2, 1}, {0.2, 0.2, 0.5}}, t));
+  EXPECT_TRUE(segment_triangle({{0.2, 0.2, 1}, {0.2, 0.2, 0}}, t));
 }
 
 TEST(TriTri2, RandomAndGridPairsMatchExactOracle) {
@@ -158,17 +158,17 @@ TEST(TriTri2, RandomAndGridPairsMatchExactOracle) {
       b = {{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}};
     }
     const bool truth = test::exact_tri_tri_2d(a, b);
-    ASSERT_EQ(tri_tri_intersect(a, b), truth) << i;
-    ASSERT_EQ(tri_tri_intersect(b, a), truth) << i;
-    ASSERT_EQ(tri_tri_intersect(Triangle2{a.c, a.b, a.a}, b), truth) << i;
+    ASSERT_EQ(tri_tri(a, b), truth) << i;
+    ASSERT_EQ(tri_tri(b, a), truth) << i;
+    ASSERT_EQ(tri_tri(Triangle2{a.c, a.b, a.a}, b), truth) << i;
   }
 }
 
 TEST(TriTri2, StarOfDavidTrianglesIntersectWithNoVertexInsideTheOther) {
   const Triangle2 up{{0, 2}, {-1.7, -1}, {1.7, -1}}, down{{0, -2}, {1.7, 1}, {-1.7, 1}};
-  EXPECT_TRUE(tri_tri_intersect(up, down));
-  EXPECT_TRUE(tri_tri_intersect(Triangle2{{0, 0}, {1, 0}, {0, 1}}, {{1, 0}, {2, 0}, {2, 1}}));
-  EXPECT_FALSE(tri_tri_intersect(Triangle2{{0, 0}, {1, 0}, {0, 1}}, {{0.6, 0.6}, {2, 0}, {2, 1}}));
+  EXPECT_TRUE(tri_tri(up, down));
+  EXPECT_TRUE(tri_tri(Triangle2{{0, 0}, {1, 0}, {0, 1}}, {{1, 0}, {2, 0}, {2, 1}}));
+  EXPECT_FALSE(tri_tri(Triangle2{{0, 0}, {1, 0}, {0, 1}}, {{0.6, 0.6}, {2, 0}, {2, 1}}));
 }
 
 }  // namespace

@@ -89,11 +89,11 @@ TEST(ConvexDistance, PointsMatchTheExactOracleWithTheExactSign) {
     points.push_back(points.back() + Vec3{1e-9, -1e-9, 1e-9});
   }
   std::vector<Closest3> batch(points.size());
-  c.query(points, batch, {.signed_distance = true}, {.threads = 2});
+  c.distance(points, batch, {.signed_distance = true}, {.threads = 2});
   int failures = 0;
   for (std::size_t i = 0; i < points.size() && failures < 10; ++i) {
     const Vec3 p = points[i];
-    const Closest3 got = c.query(p, {.signed_distance = true});
+    const Closest3 got = c.distance(p, {.signed_distance = true});
     const std::string diff = test::compare_with_oracle(got, test::mesh_oracle(m, p), true);
     const Location where = inside::point_in_convex(solid, p);
     const bool sign_ok = where == Location::inside     ? got.distance < 0
@@ -113,7 +113,7 @@ TEST(ConvexDistance, WithinIsExactAtTheDistanceItself) {
   EXPECT_TRUE(c.within({1.5, 0.5, 0.5}, 0.5));
   EXPECT_FALSE(c.within({1.5, 0.5, 0.5}, std::nextafter(0.5, 0.0)));
   EXPECT_TRUE(c.within({0.5, 0.5, 0.5}, 0.5));  // the centre is 0.5 from every face
-  EXPECT_EQ(c.query({0.5, 0.5, 0.25}, {.signed_distance = true}).distance, -0.25);
+  EXPECT_EQ(c.distance({0.5, 0.5, 0.25}, {.signed_distance = true}).distance, -0.25);
 }
 
 TEST(ConvexDistance, APolyhedronOfPlanesOnlyIsRefusedWithAClearError) {
@@ -122,10 +122,10 @@ TEST(ConvexDistance, APolyhedronOfPlanesOnlyIsRefusedWithAClearError) {
   const auto c = ConvexDistance::prepare(*planes);
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error().kind, ErrorKind::unsupported);
-  EXPECT_FALSE(point_convex({0, 0, 0}, *planes).ok());
+  EXPECT_FALSE(point_convex(*planes, {0, 0, 0}).ok());
   const auto box = ConvexPolyhedron::from_mesh(scenes::box_mesh({{0, 0, 0}, {2, 2, 2}}));
   ASSERT_TRUE(box.ok());
-  EXPECT_EQ(point_convex({5, 1, 1}, *box)->distance, 3.0);
+  EXPECT_EQ(point_convex(*box, {5, 1, 1})->distance, 3.0);
 }
 
 // The pair against the brute-force GMP oracle over every face pair (and exact nesting), and
@@ -145,13 +145,13 @@ void check_pair(const Mesh& ma, const Mesh& mb, const ConvexDistance& a, const C
   }
   const double d = nested ? 0.0 : test::nearest_double_sqrt(want.d2);
   bool ok = got.distance == d && reference.distance == d;
-  const bool vertex_witness =
-      got.contact == PairContact::vertex_of_a_in_b || got.contact == PairContact::vertex_of_b_in_a;
+  const bool vertex_witness = got.contact == inside::PairWitness::vertex_of_a_in_b ||
+                              got.contact == inside::PairWitness::vertex_of_b_in_a;
   if (vertex_witness) {
     ok = ok && (nested || want.d2 == 0);
   } else {
     ok = ok && !nested && got.triangle_a == want.a && got.triangle_b == want.b;
-    ok = ok && (want.d2 == 0) == (got.contact == PairContact::triangles);
+    ok = ok && (want.d2 == 0) == (got.contact == inside::PairWitness::triangles);
     // MeshPairDistance may witness an overlap by another vertex (its meshes keep the input's
     // vertex order); where both report the surfaces, the closest points agree bit for bit.
     if (reference.contact == got.contact)
@@ -201,11 +201,11 @@ TEST(ConvexConvex, TouchingNestedAndSeparatedBoxesOnALattice) {
   }
   EXPECT_EQ(failures, 0);
   t.t = {1.5, 1.5, 1.5};
-  EXPECT_EQ(convex_convex(a, b, t).contact, PairContact::vertex_of_b_in_a);
+  EXPECT_EQ(convex_convex(a, b, t).contact, inside::PairWitness::vertex_of_b_in_a);
   t.t = {-1.5, -1.5, -1.5};
-  EXPECT_EQ(convex_convex(b, a, t).contact, PairContact::vertex_of_a_in_b);
+  EXPECT_EQ(convex_convex(b, a, t).contact, inside::PairWitness::vertex_of_a_in_b);
   t.t = {4, 4, 4};  // corner to corner
-  EXPECT_EQ(convex_convex(a, b, t).contact, PairContact::triangles);
+  EXPECT_EQ(convex_convex(a, b, t).contact, inside::PairWitness::triangles);
   t.t = {6, 0, 0};
   EXPECT_EQ(convex_convex(a, b, t).distance, 2.0);
   EXPECT_TRUE(convex_convex_within(a, b, t, 2.0));
@@ -219,7 +219,7 @@ TEST(ConvexConvex, GjkLeavesFewFacePairsForSeparatedSolids) {
   Transform t;
   t.t = {2.5, 0.3, 0.2};
   const PairDistance3 d = convex_convex(a, a, t);
-  EXPECT_EQ(d.contact, PairContact::none);
+  EXPECT_EQ(d.contact, inside::PairWitness::none);
   EXPECT_GT(d.distance, 0.4);
   EXPECT_LT(d.node_pairs, 200u);
   const PairDistance3 reference = MeshPairDistance(m, m).distance(t);

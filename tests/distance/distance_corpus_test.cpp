@@ -56,7 +56,7 @@ TEST(DistanceCorpus, SignedDistanceSignsMatchTheExactInsideTruthAndWithinBracket
     for (Vec3 p; points >> p.x >> p.y >> p.z;)
       ps.push_back(p);
     std::vector<Closest3> got(ps.size());
-    mesh.query(ps, got, {.signed_distance = true}, {.threads = 2});
+    mesh.distance(ps, got, {.signed_distance = true}, {.threads = 2});
     // Every point's sign; the within bracket on every point (every 10th under the sanitizers).
     std::size_t i = 0;
     for (std::string expected; truth >> expected; ++i) {
@@ -122,7 +122,7 @@ TEST(DistanceCorpus, MeshPairsAreAtDistanceZeroExactlyWhereTheSolidsMeet) {
       const std::string where = "pose " + std::to_string(i + 1) + " (" +
                                 g["kinds"][i].get<std::string>() + ") " + to_string(d.contact);
       EXPECT_EQ(d.distance == 0, meet) << where << " distance " << d.distance;
-      EXPECT_EQ(d.contact != PairContact::none, meet) << where;
+      EXPECT_EQ(d.contact != inside::PairWitness::none, meet) << where;
       EXPECT_EQ(pair.within(tb, 0.0), meet) << where;
       if (!meet) {
         EXPECT_GT(d.distance, 0.0) << where;

@@ -140,7 +140,7 @@ int check_mesh(const Mesh& mesh, const std::vector<Vec3>& points, bool check_wit
   const MeshDistance prepared(mesh);
   int failures = 0;
   for (const Vec3& p : points) {
-    const Closest3 got = prepared.query(p, {.signed_distance = true});
+    const Closest3 got = prepared.distance(p, {.signed_distance = true});
     const auto want = mesh_oracle(mesh, p);
     const std::string diff = compare_with_oracle(got, want, true);
     if (!diff.empty()) {
@@ -223,10 +223,10 @@ TEST(MeshDistance, HugeAndTinyCoordinatesStayExact) {
 int check_batch(const Mesh& mesh, const std::vector<Vec3>& points) {
   const MeshDistance prepared(mesh);
   std::vector<Closest3> batch(points.size());
-  prepared.query(points, batch, {.signed_distance = true}, {.threads = 1});
+  prepared.distance(points, batch, {.signed_distance = true}, {.threads = 1});
   int failures = 0;
   for (std::size_t i = 0; i < points.size() && failures < 10; ++i) {
-    const Closest3 single = prepared.query(points[i], {.signed_distance = true});
+    const Closest3 single = prepared.distance(points[i], {.signed_distance = true});
     const std::string diff = compare_with_oracle(batch[i], mesh_oracle(mesh, points[i]), true);
     const bool same = batch[i].distance == single.distance &&
                       std::signbit(batch[i].distance) == std::signbit(single.distance) &&
@@ -291,15 +291,43 @@ TEST(MeshDistance, HintedBatchesMatchTheOracleOnTiesFoldsDegeneratesAndScales) {
   EXPECT_EQ(check_batch(torus, shuffled), 0);
 }
 
+// The counts of a batch's work come back from the call that did it (no hidden per-thread state):
+// one query per point whatever the thread count, every contender from a bounded triangle, and the
+// same answers as the plain batch.
+TEST(MeshDistance, DistanceWithStatsCountsTheWorkOfItsOwnBatchOnAnyThreadCount) {
+  const Mesh torus = scenes::torus(2.0, 0.7, 32, 16);
+  const MeshDistance prepared(torus);
+  const std::vector<Vec3> points = probe_points(torus, test::case_budget(4000, 5), 10);
+  std::vector<Closest3> plain(points.size()), one(points.size()), two(points.size());
+  prepared.distance(points, plain, {.signed_distance = true}, {.threads = 1});
+  const MeshDistanceStats a =
+      prepared.distance_with_stats(points, one, {.signed_distance = true}, {.threads = 1});
+  const MeshDistanceStats b =
+      prepared.distance_with_stats(points, two, {.signed_distance = true}, {.threads = 2});
+  EXPECT_EQ(a.queries, points.size());
+  EXPECT_EQ(b.queries, points.size());
+  EXPECT_GE(a.nodes, points.size());
+  EXPECT_LE(a.contenders, a.triangles);
+  EXPECT_GE(a.contenders, points.size());  // at least the winner of each query
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_EQ(one[i].distance, plain[i].distance);
+    ASSERT_EQ(two[i].distance, plain[i].distance);
+    ASSERT_EQ(two[i].feature, plain[i].feature);
+  }
+  const MeshDistanceStats none = prepared.distance_with_stats({}, {});
+  EXPECT_EQ(none.queries, 0u);
+  EXPECT_EQ(none.nodes, 0u);
+}
+
 TEST(MeshDistance, BatchAnswersEqualSingleAnswersOnAnyThreadCount) {
   const Mesh torus = scenes::torus(2.0, 0.7, 32, 16);
   const MeshDistance prepared(torus);
   const std::vector<Vec3> points = probe_points(torus, test::case_budget(20000, 5), 9);
   std::vector<Closest3> one(points.size()), two(points.size());
-  prepared.query(points, one, {.signed_distance = true}, {.threads = 1});
-  prepared.query(points, two, {.signed_distance = true}, {.threads = 2});
+  prepared.distance(points, one, {.signed_distance = true}, {.threads = 1});
+  prepared.distance(points, two, {.signed_distance = true}, {.threads = 2});
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Closest3 single = prepared.query(points[i], {.signed_distance = true});
+    const Closest3 single = prepared.distance(points[i], {.signed_distance = true});
     ASSERT_EQ(one[i].distance, single.distance);
     ASSERT_EQ(two[i].distance, single.distance);
     ASSERT_EQ(two[i].feature, single.feature);
@@ -313,11 +341,11 @@ TEST(MeshDistance, BatchAnswersEqualSingleAnswersOnAnyThreadCount) {
 
 TEST(MeshDistance, EmptyMeshIsInfinitelyFarAndNonFinitePointsGetNaN) {
   const MeshDistance empty;
-  EXPECT_EQ(empty.query({0, 0, 0}).distance, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(empty.distance({0, 0, 0}).distance, std::numeric_limits<double>::infinity());
   EXPECT_FALSE(empty.within({0, 0, 0}, 1e300));
   const MeshDistance cube(lattice_cube());
-  EXPECT_TRUE(std::isnan(cube.query({std::nan(""), 0, 0}).distance));
-  EXPECT_TRUE(std::isnan(cube.query({0, std::numeric_limits<double>::infinity(), 0}).distance));
+  EXPECT_TRUE(std::isnan(cube.distance({std::nan(""), 0, 0}).distance));
+  EXPECT_TRUE(std::isnan(cube.distance({0, std::numeric_limits<double>::infinity(), 0}).distance));
   EXPECT_FALSE(cube.within({std::nan(""), 0, 0}, 1.0));
   EXPECT_FALSE(cube.within({0, 0, 0}, -1.0));
   EXPECT_FALSE(cube.within({0, 0, 0}, std::nan("")));
@@ -328,7 +356,7 @@ TEST(MeshDistance, OneShotEqualsPrepared) {
   const MeshDistance prepared(torus);
   for (const Vec3& p : probe_points(torus, test::case_budget(50, 5), 5)) {
     const Closest3 a = point_mesh(torus, p, {.signed_distance = true});
-    const Closest3 b = prepared.query(p, {.signed_distance = true});
+    const Closest3 b = prepared.distance(p, {.signed_distance = true});
     EXPECT_EQ(a.distance, b.distance);
     EXPECT_EQ(a.feature, b.feature);
     EXPECT_EQ(a.point, b.point);

@@ -124,17 +124,17 @@ void check_pose(const MeshPairDistance& pair, const Mesh& a, const Mesh& b, cons
   }
   const double d = nested ? 0.0 : test::nearest_double_sqrt(want.d2);
   bool ok = got.distance == d;
-  if (got.contact == PairContact::vertex_of_b_in_a ||
-      got.contact == PairContact::vertex_of_a_in_b) {
+  if (got.contact == inside::PairWitness::vertex_of_b_in_a ||
+      got.contact == inside::PairWitness::vertex_of_a_in_b) {
     // a vertex witness: distance 0, and the vertex strictly inside the other solid
-    const bool of_b = got.contact == PairContact::vertex_of_b_in_a;
+    const bool of_b = got.contact == inside::PairWitness::vertex_of_b_in_a;
     const Vec3 v = of_b ? wb.vertices[static_cast<std::size_t>(got.vertex)]
                         : a.vertices[static_cast<std::size_t>(got.vertex)];
     ok = ok && (nested || want.d2 == 0) &&
          inside::point_in_mesh(of_b ? a : wb, v) == Location::inside && got.point_a == v;
   } else {
     ok = ok && !nested && got.triangle_a == want.a && got.triangle_b == want.b;
-    if (want.d2 == 0) ok = ok && got.contact == PairContact::triangles;
+    if (want.d2 == 0) ok = ok && got.contact == inside::PairWitness::triangles;
   }
   if (!ok) {
     char buf[200];
@@ -179,7 +179,7 @@ TEST(MeshPairDistance, CrossingToriReportTheLowestMeetingPair) {
   for (Transform t : scenes::random_poses(test::case_budget(10, 5) + 2, 0.0, 23)) {
     const double angle = 0.7 * i++;
     t.t = {1.35 * std::cos(angle), 1.35 * std::sin(angle), 0.0};
-    if (pair.distance(t).contact == PairContact::triangles) ++touching;
+    if (pair.distance(t).contact == inside::PairWitness::triangles) ++touching;
     check_pose(pair, a, b, t, failures);
   }
   EXPECT_GT(touching, 0);
@@ -199,12 +199,12 @@ TEST(MeshPairDistance, TouchingNestedAndSeparatedBoxesOnALattice) {
   }
   EXPECT_EQ(failures, 0);
   t.t = {1.5, 1.5, 1.5};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::vertex_of_b_in_a);
+  EXPECT_EQ(pair.distance(t).contact, inside::PairWitness::vertex_of_b_in_a);
   const MeshPairDistance inverse(small, big);
   t.t = {-1.5, -1.5, -1.5};
-  EXPECT_EQ(inverse.distance(t).contact, PairContact::vertex_of_a_in_b);
+  EXPECT_EQ(inverse.distance(t).contact, inside::PairWitness::vertex_of_a_in_b);
   t.t = {4, 0, 0};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::triangles);
+  EXPECT_EQ(pair.distance(t).contact, inside::PairWitness::triangles);
   EXPECT_EQ(pair.distance(t).distance, 0.0);
   t.t = {6, 0, 0};
   EXPECT_EQ(pair.distance(t).distance, 2.0);
@@ -224,13 +224,13 @@ TEST(MeshPairDistance, VertexOfAExactlyOnBsFaceDiagonalEdgeOrCornerIsTouchingNot
     t.t = shift;
     const PairDistance3 d = pair.distance(t);
     EXPECT_EQ(d.distance, 0.0);
-    EXPECT_EQ(d.contact, PairContact::triangles) << shift.y << " " << shift.z;
+    EXPECT_EQ(d.contact, inside::PairWitness::triangles) << shift.y << " " << shift.z;
     EXPECT_GE(d.triangle_a, 0);
     EXPECT_TRUE(pair.within(t, 0.0));
   }
   // Just off the face, outside: a gap; just inside: nested.
   t.t = {-4 - 0x1p-40, -1, -3};
-  EXPECT_EQ(pair.distance(t).contact, PairContact::none);
+  EXPECT_EQ(pair.distance(t).contact, inside::PairWitness::none);
   EXPECT_FALSE(pair.within(t, 0.0));
   t.t = {-4 + 0x1p-40, -1, -3};
   EXPECT_EQ(pair.distance(t).distance, 0.0);

@@ -26,19 +26,19 @@ TEST(PointPrimitive, TriangleAndSegmentMatchTheOracleOnLatticeAndRandomPoints) {
     const Triangle3 t{pick(), pick(), pick()};
     const Vec3 p = pick();
     const test::ExactClosest3 want = test::exact_closest(p, t);
-    const Closest3 got = point_triangle(p, t);
+    const Closest3 got = point_triangle(t, p);
     ASSERT_EQ(got.distance, test::nearest_double_sqrt(want.squared_distance));
     ASSERT_EQ(got.point.x, test::nearest_double(want.point.x));
     ASSERT_EQ(got.point.y, test::nearest_double(want.point.y));
     ASSERT_EQ(got.point.z, test::nearest_double(want.point.z));
     const Segment3 s{t.a, t.b};
     const test::ExactClosest3 ws = test::exact_closest(p, s);
-    const Closest3 gs = point_segment(p, s);
+    const Closest3 gs = point_segment(s, p);
     ASSERT_EQ(gs.distance, test::nearest_double_sqrt(ws.squared_distance));
     ASSERT_EQ(gs.point.z, test::nearest_double(ws.point.z));
     const Segment2 s2{{t.a.x, t.a.y}, {t.b.x, t.b.y}};
     const test::ExactClosest2 w2 = test::exact_closest(Vec2{p.x, p.y}, s2);
-    const Closest2 g2 = point_segment(Vec2{p.x, p.y}, s2);
+    const Closest2 g2 = point_segment(s2, Vec2{p.x, p.y});
     ASSERT_EQ(g2.distance, test::nearest_double_sqrt(w2.squared_distance));
     ASSERT_EQ(g2.point.x, test::nearest_double(w2.point.x));
   }
@@ -50,7 +50,7 @@ TEST(PointPrimitive, BoxDistanceSignAndNearestFaceWithTiesToTheLowestFace) {
   for (int i = 0; i < 4000; ++i) {
     const Vec3 p =
         i % 2 == 0 ? lattice(rng, 8) : Vec3{std::ldexp(lattice(rng, 8).x, -3), 1.25, -0.5};
-    const Closest3 got = point_box(p, box, {.signed_distance = true});
+    const Closest3 got = point_box(box, p, {.signed_distance = true});
     const bool in = box.contains(p);
     if (!in) {
       const Vec3 c{std::clamp(p.x, -1.0, 1.0), std::clamp(p.y, -2.0, 2.0),

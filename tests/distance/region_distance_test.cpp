@@ -52,7 +52,7 @@ int check_region(const std::vector<Ring>& rings, const std::vector<Vec2>& points
   const RegionDistance prepared(std::span<const Ring>(rings), {.fill = fill});
   int failures = 0;
   for (const Vec2& p : points) {
-    const Closest2 got = prepared.query(p, {.signed_distance = true});
+    const Closest2 got = prepared.distance(p, {.signed_distance = true});
     const OracleAnswer want = oracle(rings, p);
     const double d = test::nearest_double_sqrt(want.squared_distance);
     const Vec2 q{test::nearest_double(want.point.x), test::nearest_double(want.point.y)};
@@ -163,10 +163,10 @@ TEST(RegionDistance, BatchEqualsSingleOnAnyThreadCountAndOneShotEqualsPrepared) 
   const RegionDistance prepared(polygon);
   const std::vector<Vec2> points = scenes::uniform_points(bounding_box(polygon.rings), 20000, 3);
   std::vector<Closest2> one(points.size()), two(points.size());
-  prepared.query(points, one, {.signed_distance = true}, {.threads = 1});
-  prepared.query(points, two, {.signed_distance = true}, {.threads = 2});
+  prepared.distance(points, one, {.signed_distance = true}, {.threads = 1});
+  prepared.distance(points, two, {.signed_distance = true}, {.threads = 2});
   for (std::size_t i = 0; i < points.size(); i += 7) {
-    const Closest2 single = prepared.query(points[i], {.signed_distance = true});
+    const Closest2 single = prepared.distance(points[i], {.signed_distance = true});
     ASSERT_EQ(one[i].distance, single.distance);
     ASSERT_EQ(two[i].distance, single.distance);
     ASSERT_EQ(two[i].edge, single.edge);
@@ -182,9 +182,9 @@ TEST(RegionDistance, BatchEqualsSingleOnAnyThreadCountAndOneShotEqualsPrepared) 
 
 TEST(RegionDistance, EmptyRegionAndNonFinitePoints) {
   const RegionDistance empty;
-  EXPECT_EQ(empty.query({0, 0}).distance, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(empty.distance({0, 0}).distance, std::numeric_limits<double>::infinity());
   const RegionDistance square(std::vector<Ring>{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
-  EXPECT_TRUE(std::isnan(square.query({std::nan(""), 0}).distance));
+  EXPECT_TRUE(std::isnan(square.distance({std::nan(""), 0}).distance));
   EXPECT_FALSE(square.within({0.5, 0.5}, -1));
   EXPECT_TRUE(square.within({0.5, 0.5}, 0.5));
   EXPECT_FALSE(square.within({0.5, 0.5}, std::nextafter(0.5, 0.0)));
@@ -205,14 +205,14 @@ TEST(RegionPairDistance, SeparatedTouchingCrossingAndNestedSquares) {
   EXPECT_EQ(region_region(big, MultiPolygon{{square(6, 0, 1)}}).distance, 2.0);
   const PairDistance2 touch = region_region(big, MultiPolygon{{square(4, 1, 1)}});
   EXPECT_EQ(touch.distance, 0.0);
-  EXPECT_EQ(touch.contact, PairContact::edges);
+  EXPECT_EQ(touch.contact, inside::PairWitness::edges);
   const PairDistance2 cross = region_region(big, MultiPolygon{{square(3.5, 1, 1)}});
-  EXPECT_EQ(cross.contact, PairContact::edges);
+  EXPECT_EQ(cross.contact, inside::PairWitness::edges);
   const PairDistance2 nested = region_region(big, MultiPolygon{{square(1, 1, 1)}});
-  EXPECT_EQ(nested.contact, PairContact::vertex_of_b_in_a);
+  EXPECT_EQ(nested.contact, inside::PairWitness::vertex_of_b_in_a);
   EXPECT_EQ(nested.distance, 0.0);
   EXPECT_EQ(region_region(MultiPolygon{{square(1, 1, 1)}}, big).contact,
-            PairContact::vertex_of_a_in_b);
+            inside::PairWitness::vertex_of_a_in_b);
   // inside the hole: not nested, the distance to the hole's ring
   Polygon holed = square(0, 0, 10);
   holed.rings.push_back({{2, 2}, {2, 8}, {8, 8}, {8, 2}});

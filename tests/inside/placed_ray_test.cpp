@@ -100,7 +100,7 @@ TEST(OnTriangle, DegenerateTrianglesHoldExactlyThePointsOfTheirSegmentByTheOracl
       EXPECT_FALSE(on_triangle(p, t));
     } else {
       EXPECT_EQ(on_triangle(p, t),
-                predicates::closest_feature(p, t) == predicates::TriangleFeature::face);
+                predicates::closest_feature(t, p) == predicates::TriangleFeature::face);
     }
   }
 }

@@ -105,14 +105,14 @@ TEST(GeoJson, WritesAndReadsBackBitForBit) {
     polygon.rings.push_back(ring);
     m.polygons.push_back(polygon);
   }
-  auto back = parse_geojson(write_geojson(m), "rt");
+  auto back = parse_geojson(format_geojson(m), "rt");
   ASSERT_TRUE(back.ok()) << back.error().what();
   EXPECT_EQ(*back, m);
-  auto single = parse_geojson(write_geojson(m.polygons[0]), "rt");
+  auto single = parse_geojson(format_geojson(m.polygons[0]), "rt");
   ASSERT_TRUE(single.ok());
   EXPECT_EQ(single->polygons.size(), 1u);
   EXPECT_EQ(single->polygons[0], m.polygons[0]);
-  EXPECT_EQ(write_geojson(MultiPolygon{}), R"({"type":"MultiPolygon","coordinates":[]})");
+  EXPECT_EQ(format_geojson(MultiPolygon{}), R"({"type":"MultiPolygon","coordinates":[]})");
 }
 
 TEST(GeoJson, ReadsAFileAndReportsAMissingOne) {

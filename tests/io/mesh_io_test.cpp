@@ -39,18 +39,30 @@ bool bitwise_equal(const Mesh& a, const Mesh& b) {
   return true;
 }
 
+// Strings the library returns are the enumerators' names (the naming rule 7); the readers'
+// messages keep the words for a person.
+TEST(MeshIo, FormatNamesAreTheEnumeratorsAndMessagesWordThemForAPerson) {
+  EXPECT_STREQ(to_string(MeshFormat::obj), "obj");
+  EXPECT_STREQ(to_string(MeshFormat::stl_ascii), "stl_ascii");
+  EXPECT_STREQ(to_string(MeshFormat::ply_binary_little_endian), "ply_binary_little_endian");
+  EXPECT_STREQ(to_string(MeshFormat::ply_binary_big_endian), "ply_binary_big_endian");
+  const auto empty = parse_mesh("solid x\nendsolid x\n", MeshFormat::stl_ascii, "e.stl");
+  ASSERT_FALSE(empty);
+  EXPECT_EQ(empty.error().message, "ASCII STL file without faces: no mesh");
+}
+
 TEST(MeshIo, LosslessFormatsRoundTripBitForBit) {
   const Mesh m = awkward_mesh();
   for (MeshFormat f : {MeshFormat::obj, MeshFormat::off, MeshFormat::ply_ascii,
                        MeshFormat::ply_binary_little_endian, MeshFormat::ply_binary_big_endian,
                        MeshFormat::stl_ascii}) {
     auto back = parse_mesh(format_mesh(m, f), f, "rt");
-    ASSERT_TRUE(back.ok()) << format_name(f) << ": " << back.error().what();
+    ASSERT_TRUE(back.ok()) << to_string(f) << ": " << back.error().what();
     EXPECT_EQ(back->info.format, f);
     EXPECT_EQ(back->info.faces, static_cast<std::int64_t>(m.triangles.size()));
     // STL welds -0 with +0 and cannot keep a vertex's identity apart from its position, but
     // this mesh has no duplicate positions, and corners come back in first-seen order.
-    EXPECT_TRUE(bitwise_equal(back->mesh, m)) << format_name(f);
+    EXPECT_TRUE(bitwise_equal(back->mesh, m)) << to_string(f);
   }
 }
 
@@ -129,7 +141,7 @@ TEST(MeshIo, SurvivesEveryTruncationAndRandomCorruption) {
                           f == MeshFormat::ply_binary_little_endian ||
                           f == MeshFormat::ply_binary_big_endian;
       if (binary) {
-        EXPECT_FALSE(r.ok()) << format_name(f) << " cut at " << n;
+        EXPECT_FALSE(r.ok()) << to_string(f) << " cut at " << n;
       }
     }
     for (int trial = 0; trial < 300; ++trial) {
@@ -200,10 +212,33 @@ TEST(MeshIo, ReadsEveryMeshCaseAndConvertsItLosslessly) {
     for (MeshFormat f : {MeshFormat::obj, MeshFormat::ply_binary_little_endian}) {
       auto back = parse_mesh(format_mesh(r->mesh, f), f, "rt");
       ASSERT_TRUE(back.ok());
-      EXPECT_TRUE(bitwise_equal(back->mesh, r->mesh)) << entry.path() << " " << format_name(f);
+      EXPECT_TRUE(bitwise_equal(back->mesh, r->mesh)) << entry.path() << " " << to_string(f);
     }
   }
   EXPECT_EQ(count, 16);
+}
+
+TEST(MeshIo, AFileWithoutFacesIsRefusedUnlessTheEmptyMeshIsAllowed) {
+  // The mesh booleans read it as the empty solid, and write an empty result so.
+  for (const auto& [text, family] :
+       {std::pair<std::string, MeshFormat>{"OFF\n0 0 0\n", MeshFormat::off},
+        {"OFF\n2 0 0\n0 0 0\n1 1 1\n", MeshFormat::off},
+        {"v 0 0 0\n", MeshFormat::obj}}) {
+    auto refused = parse_mesh(text, family, "e");
+    ASSERT_FALSE(refused.ok()) << text;
+    EXPECT_EQ(refused.error().kind, ErrorKind::degenerate);
+    auto empty = parse_mesh(text, family, "e", {.allow_empty = true});
+    ASSERT_TRUE(empty.ok()) << empty.error().what();
+    EXPECT_TRUE(empty->mesh.triangles.empty());
+  }
+  EXPECT_EQ(
+      parse_mesh(format_mesh(Mesh{}, MeshFormat::off), MeshFormat::off, "e", {.allow_empty = true})
+          ->mesh,
+      Mesh{});
+  // Allowing no faces allows nothing else: a bad coordinate is still refused.
+  auto nan = parse_mesh("OFF\n1 0 0\nnan 0 0\n", MeshFormat::off, "e", {.allow_empty = true});
+  ASSERT_FALSE(nan.ok());
+  EXPECT_EQ(nan.error().kind, ErrorKind::invalid_value);
 }
 
 }  // namespace

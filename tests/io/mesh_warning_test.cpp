@@ -113,5 +113,14 @@ TEST(OpenMeshWarning, WithoutAReportSaysOnlyThatTheMeshIsOpen) {
             "they share a point");
 }
 
+TEST(MeshWarning, OpenSolidNamesTheFileTheEdgeItsTriangleAndTheCounts) {
+  const UnmatchedEdge edge{
+      .from = {0, 0.1, -2}, .to = {1e300, 0, 0}, .triangle = 7, .count = 1, .reverse = 0};
+  EXPECT_EQ(open_solid_message("part.stl", edge),
+            "part.stl: not closed: the directed edge (0 0.1 -2) -> (1e+300 0 0) of triangle 7 "
+            "(counted from 0 in file order, polygons split into fans) occurs 1 time, its reverse 0 "
+            "times; a solid's mesh has every directed edge as often as its reverse");
+}
+
 }  // namespace
 }  // namespace contain::io

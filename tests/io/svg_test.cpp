@@ -84,21 +84,21 @@ TEST(Svg, MeshPastTheLimitDropsBackFacesFirstAndSaysSo) {
   SvgCanvas canvas(projected_bounds(m.vertices, {}), 300);
   // Seen from the default view three faces (six triangles) face the viewer.
   EXPECT_EQ(canvas.mesh(m, {}, {.max_triangles = 6}), 6u);
-  const std::string picture = mesh_svg(m, {.title = "cube", .max_triangles = 3});
+  const std::string picture = format_svg(m, {.title = "cube", .max_triangles = 3});
   EXPECT_NE(picture.find("cube (3 of 12 triangles drawn)"), std::string::npos) << picture;
 }
 
 TEST(Svg, RegionPictureFillsWithTheEvenOddRuleAndEscapesTheTitle) {
   const MultiPolygon region{
       {Polygon{{Ring{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, Ring{{1, 1}, {1, 3}, {3, 3}, {3, 1}}}}}};
-  const std::string svg = region_svg(region, {.title = "a < b & c"});
+  const std::string svg = format_svg(region, {.title = "a < b & c"});
   EXPECT_EQ(count(svg, "<path "), 1u);
   EXPECT_NE(svg.find("fill-rule=\"evenodd\""), std::string::npos);
   EXPECT_EQ(count(svg, "Z "), 2u);  // two rings, one path
   EXPECT_NE(svg.find("a &lt; b &amp; c"), std::string::npos);
   // An empty region and an empty mesh still give a whole document.
-  EXPECT_NE(region_svg(MultiPolygon{}).find("</svg>"), std::string::npos);
-  EXPECT_NE(mesh_svg(Mesh{}).find("</svg>"), std::string::npos);
+  EXPECT_NE(format_svg(MultiPolygon{}).find("</svg>"), std::string::npos);
+  EXPECT_NE(format_svg(Mesh{}).find("</svg>"), std::string::npos);
 }
 
 // Every number of the document (attributes and path data) is finite.
@@ -112,7 +112,7 @@ TEST(Svg, SubnormalHugeAndNanInputsGiveFiniteNumbersAndKeepTheShape) {
   };
   for (const MultiPolygon& region :
        {square(0, 1e-310), square(4e-320, 5e-320), square(-1.7e308, 1.7e308), square(0, 1e-200)}) {
-    const std::string svg = region_svg(region);
+    const std::string svg = format_svg(region);
     EXPECT_TRUE(only_finite_numbers(svg)) << svg;
     // The square fills the picture but its 4% margins: 400 px wide, from 14.81 to 385.19.
     EXPECT_NE(svg.find("M14.81 385.19 L385.19 385.19"), std::string::npos) << svg;
@@ -121,13 +121,13 @@ TEST(Svg, SubnormalHugeAndNanInputsGiveFiniteNumbersAndKeepTheShape) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   for (const double bad : {std::nan(""), inf, -inf}) {
     const std::string svg =
-        mesh_svg(triangle, {.view = {.azimuth_deg = bad, .elevation_deg = bad}});
+        format_svg(triangle, {.view = {.azimuth_deg = bad, .elevation_deg = bad}});
     EXPECT_TRUE(only_finite_numbers(svg)) << svg;
-    EXPECT_EQ(svg, mesh_svg(triangle)) << "a view angle that is not finite is the default";
-    EXPECT_TRUE(only_finite_numbers(region_svg(square(0, 1), {.width_px = bad})));
+    EXPECT_EQ(svg, format_svg(triangle)) << "a view angle that is not finite is the default";
+    EXPECT_TRUE(only_finite_numbers(format_svg(square(0, 1), {.width_px = bad})));
   }
-  EXPECT_TRUE(only_finite_numbers(region_svg(square(0, 1), {.width_px = -5})));
-  EXPECT_TRUE(only_finite_numbers(region_svg(square(0, 1), {.width_px = 1e-300})));
+  EXPECT_TRUE(only_finite_numbers(format_svg(square(0, 1), {.width_px = -5})));
+  EXPECT_TRUE(only_finite_numbers(format_svg(square(0, 1), {.width_px = 1e-300})));
 }
 
 // The numbers of attribute `name` in an element (its text up to '>').
@@ -192,7 +192,7 @@ TEST(Svg, TitlesAndLegendsFitInsideTheViewBox) {
     flat.legend("#2ca02c", label);
   expect_text_inside_view_box(flat.str());
   expect_text_inside_view_box(
-      region_svg(MultiPolygon{}, {.width_px = 50, .title = "an empty region"}));
+      format_svg(MultiPolygon{}, {.width_px = 50, .title = "an empty region"}));
 }
 
 }  // namespace

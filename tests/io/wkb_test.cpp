@@ -104,7 +104,7 @@ TEST(Wkb, DropsZAndMOrdinatesOfIsoAndEwkbCodesAndSkipsTheSrid) {
 }
 
 TEST(Wkb, ReadsTheHexFormOfPostgisInEitherCase) {
-  const std::string binary = write_wkb(MultiPolygon{{Polygon{{kSquare, kHole}}}});
+  const std::string binary = format_wkb(MultiPolygon{{Polygon{{kSquare, kHole}}}});
   std::string upper, lower;
   for (unsigned char c : binary) {
     constexpr char digits[] = "0123456789ABCDEF";
@@ -136,15 +136,15 @@ TEST(Wkb, WriterRoundTripsEveryDoubleBitForBitAndMatchesTheWktReading) {
       ring.push_back({x, y});
     }
     const MultiPolygon region{{Polygon{{ring}}}};
-    auto back = parse_wkb(write_wkb(region), "w");
+    auto back = parse_wkb(format_wkb(region), "w");
     ASSERT_TRUE(back.ok()) << back.error().what();
     EXPECT_EQ(*back, region);
-    auto via_wkt = parse_wkt(write_wkt(region), "t");
+    auto via_wkt = parse_wkt(format_wkt(region), "t");
     ASSERT_TRUE(via_wkt.ok());
     EXPECT_EQ(*back, *via_wkt);
   }
-  EXPECT_EQ(write_wkb(MultiPolygon{}).size(), 9u);  // MULTIPOLYGON EMPTY
-  auto one = parse_wkb(write_wkb(Polygon{{kSquare}}), "p");
+  EXPECT_EQ(format_wkb(MultiPolygon{}).size(), 9u);  // MULTIPOLYGON EMPTY
+  auto one = parse_wkb(format_wkb(Polygon{{kSquare}}), "p");
   ASSERT_TRUE(one.ok());
   EXPECT_EQ(one->polygons[0].rings[0], kSquare);
 }
@@ -155,10 +155,10 @@ TEST(Wkb, WriterRoundTripsEveryDoubleBitForBitAndMatchesTheWktReading) {
 TEST(Wkb, ARingStillEndingOnItsFirstPointSurvivesTheWriter) {
   const Ring ring{{0, 0}, {4, 0}, {2, 3}, {0, 0}};
   const MultiPolygon region{{Polygon{{ring}}}};
-  auto back = parse_wkb(write_wkb(region), "w");
+  auto back = parse_wkb(format_wkb(region), "w");
   ASSERT_TRUE(back.ok()) << back.error().what();
   EXPECT_EQ(back->all_rings(), region.all_rings());
-  auto via_wkt = parse_wkt(write_wkt(region), "t");
+  auto via_wkt = parse_wkt(format_wkt(region), "t");
   ASSERT_TRUE(via_wkt.ok());
   EXPECT_EQ(*back, *via_wkt);
 }

@@ -99,7 +99,7 @@ TriangleFeature contract_feature(const test::PointTriangleCase& c, const QVec3& 
 // of the oracle's.
 int check_case(const test::PointTriangleCase& c) {
   const test::ExactClosest3 want = test::exact_closest(c.p, c.t);
-  const TriangleFeature f = closest_feature(c.p, c.t);
+  const TriangleFeature f = closest_feature(c.t, c.p);
   const FlatPair3 pair{point_flat(c.p), feature_flat(c.t, f)};
   int failures = 0;
   if (exact_flat_distance(pair) != want.squared_distance) {
@@ -188,8 +188,8 @@ TEST(DistancePredicates, ComparisonOfTwoTrianglesDistancesIsTheExactSign) {
         u = {c.t.b, c.t.a, c.t.c + c.t.c};
         break;
     }
-    const FlatPair3 x{point_flat(c.p), feature_flat(c.t, closest_feature(c.p, c.t))};
-    const FlatPair3 y{point_flat(c.p), feature_flat(u, closest_feature(c.p, u))};
+    const FlatPair3 x{point_flat(c.p), feature_flat(c.t, closest_feature(c.t, c.p))};
+    const FlatPair3 y{point_flat(c.p), feature_flat(u, closest_feature(u, c.p))};
     const Sign want = test::sign_of(test::exact_closest(c.p, c.t).squared_distance -
                                     test::exact_closest(c.p, u).squared_distance);
     if (compare_squared_distances(x, y) != want) {

@@ -102,7 +102,7 @@ def test_regions_from_rings_wkt_and_polygons_agree():
     assert from_rings == from_wkt == contain.Region.from_polygons([[shell, hole]])
     assert from_rings.area == pytest.approx(16 - 4)
     assert len(from_rings) == 1 and len(from_rings.rings) == 2
-    assert contain.write_wkt([shell]) == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
+    assert contain.format_wkt([shell]) == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
     assert contain.point_in_polygon(from_rings, [2, 2]) == contain.Location.outside
     assert contain.point_in_polygon([shell, hole], [0.5, 2]) == contain.Location.inside
     both = [shell, shell + 1]
@@ -118,7 +118,7 @@ def test_polygon_booleans_on_rings_and_wkt():
     expected = {"intersection": 2, "union": 6, "difference": 2, "xor": 4}
     for op, area in expected.items():
         assert contain.polygon_boolean(a, b, op).area == pytest.approx(area), op
-    text = contain.polygon_boolean(contain.write_wkt(a), contain.write_wkt(b), "intersection")
+    text = contain.polygon_boolean(contain.format_wkt(a), contain.format_wkt(b), "intersection")
     assert isinstance(text, str) and contain.parse_wkt(text).area == pytest.approx(2)
     with pytest.raises(ValueError, match="op must be"):
         contain.polygon_boolean(a, b, "minus")
@@ -132,7 +132,7 @@ def test_mesh_files_round_trip_through_bytes_and_files(tmp_path):
     contain.write_mesh(mesh, path)
     assert contain.read_mesh(path) == mesh
     index = contain.MeshIndex.from_file(path)
-    assert index.locate_point([1, 0, 0]) == contain.Location.inside
+    assert index.locate([1, 0, 0]) == contain.Location.inside
     assert contain.point_in_mesh(mesh, [0, 0, 0]) == contain.Location.outside
     vertices, faces = mesh.vertices, mesh.faces
     assert np.array_equal(contain.MeshIndex(vertices, faces).locate(vertices), np.zeros(len(vertices)))
@@ -146,10 +146,10 @@ def test_mesh_collision_one_shot_and_batched():
     assert not pair.collide(shift(1.5))
     assert contain.collide(a, a, transform_b=shift(0.5)).witness == "triangles"
     poses = np.array([shift(x) for x in (0.5, 1.0, 1.0 + 2**-30, 3)]).reshape(4, 3, 4)
-    assert pair.collide_many(poses).tolist() == [True, True, False, False]
+    assert pair.collide(poses).tolist() == [True, True, False, False]
     four = np.tile(np.eye(4), (4, 1, 1))
     four[:, :3, :] = poses
-    assert pair.collide_many(four).tolist() == [True, True, False, False]
+    assert pair.collide(four).tolist() == [True, True, False, False]
     nested = contain.collide(torus(), a, transform_b=[0.1, 0, 0, 0.95, 0, 0.1, 0, 0, 0, 0, 0.1, 0])
     assert nested.intersect and nested.witness == "vertex_of_b_in_a"
     with pytest.raises(ValueError, match="last row"):

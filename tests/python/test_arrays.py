@@ -65,16 +65,17 @@ def test_empty_arrays_give_empty_answers(index):
 def test_wrong_shapes_raise_value_error_naming_the_expected_shape(index):
     with pytest.raises(ValueError, match=r"points must have shape \(N, 3\), got \(10, 2\)"):
         index.locate(np.zeros((10, 2)))
+    assert isinstance(index.locate(np.zeros(3)), contain.Location)  # one point: one Location
     with pytest.raises(ValueError, match=r"got \(3,\).*one point"):
-        index.locate(np.zeros(3))
+        index.contains(np.zeros(3), boundary="inside")
     with pytest.raises(ValueError, match=r"\(N, 3\), got \(2, 3, 1\)"):
         index.locate(np.zeros((2, 3, 1)))
     with pytest.raises(ValueError, match=r"points must have shape \(N, 2\), got \(4, 3\)"):
         contain.PolygonIndex(SQUARE).locate(np.zeros((4, 3)))
     with pytest.raises(ValueError, match=r"faces must have shape \(M, 3\)"):
         contain.Mesh(np.zeros((3, 3)), np.zeros((1, 4), dtype=np.int32))
-    with pytest.raises(ValueError, match=r"point must have shape \(3,\)"):
-        index.locate_point([1, 2])
+    with pytest.raises(ValueError, match=r"points must have shape \(N, 3\)"):
+        index.locate([1, 2])
 
 
 def test_wrong_dtypes_raise_type_error_naming_dtype_and_shape(index):

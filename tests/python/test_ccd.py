@@ -108,7 +108,7 @@ def test_moving_mesh_pairs_one_shot_prepared_batched_and_deforming():
     assert pair.first_contact(start, end).time == impact.time
     motions = np.stack([np.stack([start, end]), np.stack([start, translation(0.1, 0.2, 1)]),
                         np.stack([translation(0, 0, 0), end])])
-    hit, time = pair.first_contact_many(motions, threads=2)
+    hit, time = pair.first_contact(motions, threads=2)
     assert hit.tolist() == [True, False, True] and time[0] == 0.49 and time[2] == 0.0
     assert pair.first_contact(translation(0, 0, 0)).witness == "initial"
     # Deforming: the bullet's vertices at t = 1 given directly.
@@ -116,7 +116,7 @@ def test_moving_mesh_pairs_one_shot_prepared_batched_and_deforming():
     b_at0 = contain.Mesh(bullet.vertices + [0.1, 0.2, 3], bullet.faces)
     deformed = contain.mesh_mesh_ccd(plate, b_at0, b_at1=at1 + [0.1, 0.2, 3])
     assert deformed.time == 0.49
-    assert contain.MovingMeshPair(plate, b_at0).first_contact_deforming(at1 + [0.1, 0.2, 3]).time == 0.49
+    assert contain.MovingMeshPair(plate, b_at0).first_contact(at1 + [0.1, 0.2, 3]).time == 0.49
     with pytest.raises(ValueError):
         contain.mesh_mesh_ccd(plate, bullet, from_b=start, b_at1=at1)
 

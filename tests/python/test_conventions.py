@@ -13,6 +13,13 @@ import pytest
 import contain
 from meshes import cube
 
+
+def quiet(deprecated, *args):
+    """Calls a deprecated name without its warning (for tests of the rules it still follows)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        return deprecated(*args)
+
 SQUARES = [np.array([[0, 0], [2, 0], [2, 2], [0, 2]], dtype=float),
            np.array([[1, 1], [3, 1], [3, 3], [1, 3]], dtype=float)]  # overlap at [1, 2]^2
 WKT = "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))"
@@ -58,7 +65,7 @@ def fill_answers(tmp_path):
         "PolygonIndex.from_file": lambda f: contain.PolygonIndex.from_file(tmp_path / "squares.wkt", fill=f).locate(probe).tolist(),
         "point_in_polygon": lambda f: int(contain.point_in_polygon(SQUARES, [1.5, 1.5], fill=f)),
         "point_in_convex_polygon": lambda f: contain.point_in_convex_polygon(SQUARES[0], probe, fill=f).tolist(),
-        "RegionDistance": lambda f: contain.RegionDistance(WKT, fill=f).query(probe, signed=True)["distance"].tolist(),
+        "RegionDistance": lambda f: contain.RegionDistance(WKT, fill=f).distance(probe, signed=True)["distance"].tolist(),
         "polygon_boolean": lambda f: contain.polygon_boolean(SQUARES, "POLYGON ((0 0, 9 0, 9 9, 0 9))", "intersection", fill=f).area,
         "clip_polylines": lambda f: [p.tolist() for p in contain.clip_polylines(road, SQUARES, fill=f)],
         "collide": lambda f: bool(contain.collide(SQUARES, "POLYGON ((1.2 1.2, 1.8 1.2, 1.8 1.8))", fill=f)),
@@ -111,7 +118,7 @@ def test_dask_locate_takes_boundary_report_as_int8_locations():
     import contain.dask
 
     points = da.from_array(np.array([[0.5, 0.5], [2, 1], [1.5, 1.5], [9, 9]]), chunks=(2, 2))
-    region = contain.write_wkt(SQUARES)
+    region = contain.format_wkt(SQUARES)
     report = contain.dask.locate(points, region, boundary="report").compute(scheduler="synchronous")
     assert report.dtype == np.int8
     assert report.tolist() == contain.PolygonIndex(SQUARES).locate(points.compute()).tolist()
@@ -208,7 +215,7 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
         forms = [answer(t) for t in shifted(3.0)]
         assert forms[0] == forms[1] == forms[2], (name, forms)
     batches = {
-        "MeshPair.collide_many": lambda p: pair.collide_many(p).tolist(),
+        "MeshPair.collide_many": lambda p: quiet(pair.collide_many, p).tolist(),  # deprecated
         "MeshPairDistance.distance": lambda p: distances.distance(p)["distance"].tolist(),
         "MeshPairDistance.within": lambda p: distances.within(p, 1.5).tolist(),
         "convex_convex": lambda p: contain.convex_convex(convex, convex, p)["distance"].tolist(),
@@ -231,14 +238,14 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
              np.array([[start[0], end[0]]]),
              np.array([[start[1], end[1]]]),
              np.array([[start[2], end[2]]])]
-    answers = [moving.first_contact_many(m)[1].tolist() for m in forms]
+    answers = [moving.first_contact(m)[1].tolist() for m in forms]
     assert answers[0] == answers[1] == answers[2] == answers[3] == [moving.first_contact(start[1], end[1]).time]
     with pytest.raises(ValueError, match=r"motions must have shape \(N, 24\)"):
-        moving.first_contact_many(np.zeros((1, 3, 4)))
+        quiet(moving.first_contact_many, np.zeros((1, 3, 4)))
     with pytest.raises(ValueError, match="last row"):
-        moving.first_contact_many(np.ones((1, 2, 4, 4)))
+        moving.first_contact(np.ones((1, 2, 4, 4)))
     with pytest.raises(contain.ContainError, match=r"motions\[1\]\[0\]: .*NaN"):  # motion 1's start
-        moving.first_contact_many(np.r_[forms[0], np.full((1, 24), np.inf)])
+        moving.first_contact(np.r_[forms[0], np.full((1, 24), np.inf)])
     with pytest.raises(contain.ContainError, match=r"transform_b: .*NaN"):
         contain.collide(box, box, transform_b=[np.nan] * 12)
 
@@ -259,6 +266,7 @@ def instances():
         "Csg": contain.Csg.sphere([0, 0, 0], 1),
         "CsgSolid": contain.CsgSolid(contain.Csg.sphere([0, 0, 0], 1)),
         "Mesh": box,
+        "MeshBooleanResult": contain.repair_solid(box),
         "MeshDistance": contain.MeshDistance(box),
         "MeshImpact": moving.first_contact(shifted(3.0)[1], shifted(0.5)[1]),
         "MeshIndex": contain.MeshIndex(box),
@@ -273,7 +281,7 @@ def instances():
         "SelfIntersections": contain.self_intersections(box),
         "SolidScene": contain.SolidScene([box]),
         "TileIterator": contain.iter_tiles(WKT, 2, 2),
-        "WindingNumber": contain.WindingNumber(box),
+        "FastWindingNumber": contain.FastWindingNumber(box),
     }
 
 
@@ -285,12 +293,14 @@ def test_every_class_has_a_repr_that_shows_what_it_holds():
     for name, item in objects.items():
         text = repr(item)
         assert text.startswith(f"contain.{name}") and "object at 0x" not in text, (name, text)
-    assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed-exact')"
+    assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed_exact')"
     assert repr(objects["RegionDistance"]) == "contain.RegionDistance(8 edges, fill='nonzero')"
     assert repr(objects["MeshPairDistance"]) == "contain.MeshPairDistance(a: 12 triangles, solid; b: 12 triangles, solid)"
     assert repr(objects["MovingMeshPair"]) == "contain.MovingMeshPair(a: 8 vertices, solid; b: 8 vertices, solid)"
     assert repr(objects["ConvexShape"]) == "contain.ConvexShape.sphere(center=[0.0, 0.0, 0.0], radius=1.5)"
     assert repr(objects["ConvexDistance"]) == "contain.ConvexDistance(12 faces, 8 vertices)"
+    assert repr(objects["MeshBooleanResult"]) == \
+        "contain.MeshBooleanResult(12 triangles, 1 shells, volume 1.0, 0 moved)"
     # The impact names its witness primitives, as its attributes hold them.
     impact = objects["MeshImpact"]
     assert impact.witness in ("vertex_a_face_b", "vertex_b_face_a", "edges")
@@ -330,3 +340,105 @@ def test_convex_pair_queries_carry_the_cpp_names_and_the_old_names_warn():
         warnings.simplefilter("error", DeprecationWarning)  # warnings as errors: raised, not lost
         with pytest.raises(DeprecationWarning):
             contain.convex_collide(ball, box)
+
+
+# --- the collision primitives under their C++ names ---------------------------------------------
+
+def test_primitive_pair_tests_carry_the_cpp_names_and_the_old_names_warn():
+    flat = np.array([[0, 0], [1, 0], [0, 1]], dtype=float)
+    others = np.stack([flat + [1, 0], flat + [2, 2]])
+    sa = np.array([[[0, 0], [2, 2]], [[0, 0], [1, 1]]], dtype=float)
+    sb = np.array([[[0, 2], [2, 0]], [[2, 2], [3, 3]]], dtype=float)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new names never warn
+        triangles = contain.tri_tri(flat, others)
+        segments = contain.segment_segment(sa, sb)
+    assert triangles.tolist() == [True, False] and segments.tolist() == [True, False]
+    with pytest.warns(DeprecationWarning, match="tri_tri_2d is deprecated: use contain.tri_tri"):
+        assert contain.tri_tri_2d(flat, others).tolist() == triangles.tolist()
+    with pytest.warns(DeprecationWarning,
+                      match="segments_intersect is deprecated: use contain.segment_segment"):
+        assert contain.segments_intersect(sa, sb).tolist() == segments.tolist()
+
+
+def test_distance_objects_answer_with_the_verb_distance_and_query_warns():
+    prepared = {
+        "MeshDistance": contain.MeshDistance(cube()),
+        "ConvexDistance": contain.ConvexDistance(contain.ConvexPolyhedron(cube())),
+    }
+    probe3 = np.array([[2.0, 0.5, 0.5], [0.5, 0.5, 0.25]])
+    for name, obj in prepared.items():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the new name never warns
+            new = obj.distance(probe3, signed=True)["distance"].tolist()
+        with pytest.warns(DeprecationWarning, match=f"{name}.query is deprecated: use {name}.distance"):
+            assert obj.query(probe3, signed=True)["distance"].tolist() == new
+    region = contain.RegionDistance("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))")
+    new = region.distance([[2, 1]], signed=True)["distance"].tolist()
+    assert new == [-1.0]
+    with pytest.warns(DeprecationWarning, match="RegionDistance.query is deprecated: use RegionDistance.distance"):
+        assert region.query([[2, 1]], signed=True)["distance"].tolist() == new
+
+
+def test_format_wkt_is_the_string_form_and_write_wkt_warns():
+    square = [[0, 0], [4, 0], [4, 4], [0, 4]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new name never warns
+        text = contain.format_wkt([square])
+    assert text == "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)))"
+    with pytest.warns(DeprecationWarning, match="write_wkt is deprecated: use contain.format_wkt"):
+        assert contain.write_wkt([square]) == text
+
+
+def test_fast_winding_number_carries_the_cpp_name_and_the_old_name_warns():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new name never warns
+        new = contain.FastWindingNumber(cube()).evaluate([[0.5, 0.5, 0.5]])
+    with pytest.warns(DeprecationWarning, match="WindingNumber is deprecated: use contain.FastWindingNumber"):
+        old = contain.WindingNumber(cube()).evaluate([[0.5, 0.5, 0.5]])
+    assert old.tolist() == new.tolist()
+    assert "WindingNumber" not in contain.__all__
+    with pytest.raises(AttributeError):
+        contain.NoSuchName  # noqa: B018 - the module's __getattr__ still refuses unknown names
+
+
+def test_locate_takes_one_point_or_many_and_locate_point_warns():
+    objects = {
+        "MeshIndex": (contain.MeshIndex(cube()), [0.5, 0.5, 0.5]),
+        "PolygonIndex": (contain.PolygonIndex("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"), [1.0, 0.5]),
+        "CsgSolid": (contain.CsgSolid(contain.Csg.box([0, 0, 0], [1, 1, 1])), [2.0, 0.5, 0.5]),
+        "ConvexPolyhedron": (contain.ConvexPolyhedron(cube()), [0.5, 0.5, 0.5]),
+    }
+    for name, (obj, point) in objects.items():
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the new form never warns
+            one = obj.locate(point)
+            many = obj.locate(np.array([point, point]))
+        assert isinstance(one, contain.Location), name
+        assert many.tolist() == [int(one), int(one)], name
+        with pytest.warns(DeprecationWarning, match=f"{name}.locate_point is deprecated: use {name}.locate"):
+            assert obj.locate_point(point) == one
+
+
+def test_pair_batches_are_the_single_call_names_and_the_old_names_warn():
+    pair = contain.MeshPair(cube(), cube())
+    poses = np.array([shifted(x)[1] for x in (3.0, 0.5)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the new forms never warn
+        hits = pair.collide(poses)
+        one = pair.collide(poses[1])
+    assert hits.tolist() == [False, True] and one.intersect
+    with pytest.warns(DeprecationWarning, match="MeshPair.collide_many is deprecated: use MeshPair.collide"):
+        assert pair.collide_many(poses).tolist() == hits.tolist()
+    moving = contain.MovingMeshPair(cube(), cube())
+    start, end = shifted(3.0), shifted(0.5)
+    motions = np.array([[start[1], end[1]]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        hit, time = moving.first_contact(motions)
+        deformed = moving.first_contact(cube().vertices + [0.5, 0, 0])
+    assert hit.tolist() == [True] and time[0] == moving.first_contact(start[1], end[1]).time
+    with pytest.warns(DeprecationWarning, match=r"first_contact_many is deprecated: use MovingMeshPair.first_contact\(motions\)"):
+        assert moving.first_contact_many(motions)[1].tolist() == time.tolist()
+    with pytest.warns(DeprecationWarning, match=r"first_contact_deforming is deprecated"):
+        assert moving.first_contact_deforming(cube().vertices + [0.5, 0, 0]).time == deformed.time

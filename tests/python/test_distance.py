@@ -11,31 +11,31 @@ from meshes import cube
 
 def test_mesh_distance_signed_closest_point_and_triangle():
     prepared = contain.MeshDistance(cube())
-    r = prepared.query([[0.5, 0.5, 0.25], [3, 0.5, 0.5], [2, 2, 2]], signed=True)
+    r = prepared.distance([[0.5, 0.5, 0.25], [3, 0.5, 0.5], [2, 2, 2]], signed=True)
     assert r["distance"].dtype == np.float64 and r["point"].shape == (3, 3)
     assert r["distance"][0] < 0 and r["location"][0] == 1
     assert r["distance"][2] == np.sqrt(3.0)  # the double nearest to the exact sqrt(3)
     assert r["triangle"].dtype == np.int32
-    assert prepared.regime == "closed-exact" and len(prepared) == 12
-    one = prepared.query(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=1)
-    two = prepared.query(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=2)
+    assert prepared.regime == "closed_exact" and len(prepared) == 12
+    one = prepared.distance(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=1)
+    two = prepared.distance(np.random.default_rng(1).uniform(-1, 2, (5000, 3)), threads=2)
     assert np.array_equal(one["distance"], two["distance"])
     assert np.array_equal(one["triangle"], two["triangle"])
 
 
 def test_within_is_exact_at_d_and_non_finite_points_raise():
     prepared = contain.MeshDistance(cube())
-    d = float(prepared.query([[1.5, 0.5, 0.5]])["distance"][0])
+    d = float(prepared.distance([[1.5, 0.5, 0.5]])["distance"][0])
     assert prepared.within([[1.5, 0.5, 0.5]], d)[0]
     assert not prepared.within([[1.5, 0.5, 0.5]], np.nextafter(d, 0))[0]
     with pytest.raises(contain.ContainError):
-        prepared.query([[np.nan, 0, 0]])
+        prepared.distance([[np.nan, 0, 0]])
 
 
 def test_region_distance_rings_edges_and_fill():
     region = contain.RegionDistance(
         "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))")
-    r = region.query([[2, 2], [0.5, 0.5]], signed=True)
+    r = region.distance([[2, 2], [0.5, 0.5]], signed=True)
     assert list(r["distance"]) == [1.0, -0.5]
     assert list(r["ring"]) == [1, 0] and list(r["edge"]) == [0, 0]
     assert region.within([[2, 2]], 1.0)[0] and not region.within([[2, 2]], 0.5)[0]
@@ -56,12 +56,12 @@ def test_mesh_pair_distance_poses_touching_and_nesting():
 def test_convex_distance_points_pairs_under_poses_and_planes_refused():
     box = contain.ConvexDistance(contain.ConvexPolyhedron(cube()))
     assert len(box) == 12
-    r = box.query([[2, 0.5, 0.5], [0.5, 0.5, 0.25], [1, 1, 1]], signed=True)
+    r = box.distance([[2, 0.5, 0.5], [0.5, 0.5, 0.25], [1, 1, 1]], signed=True)
     assert list(r["distance"]) == [1.0, -0.25, 0.0]
     assert list(r["location"]) == [-1, 1, 0]
     # The same answers as the mesh query on the same faces.
-    mesh = contain.MeshDistance(cube()).query([[2, 0.5, 0.5], [3, 2, -1]])
-    got = box.query([[2, 0.5, 0.5], [3, 2, -1]])
+    mesh = contain.MeshDistance(cube()).distance([[2, 0.5, 0.5], [3, 2, -1]])
+    got = box.distance([[2, 0.5, 0.5], [3, 2, -1]])
     assert np.array_equal(mesh["distance"], got["distance"])
     assert np.array_equal(mesh["triangle"], got["triangle"])
     assert box.within([[2, 0.5, 0.5]], 1.0)[0] and not box.within([[2, 0.5, 0.5]], 0.5)[0]
@@ -96,10 +96,10 @@ def mesh_forms(tmp_path):
 def test_mesh_distance_and_pair_distance_take_every_form_of_the_mesh_rule(tmp_path):
     points = np.array([[0.5, 0.5, 0.25], [3, 0.5, 0.5], [2, 2, 2]])
     poses = np.array([[1, 0, 0, 3, 0, 1, 0, 0, 0, 0, 1, 0], [1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0]], dtype=float)
-    want = contain.MeshDistance(cube()).query(points, signed=True)
+    want = contain.MeshDistance(cube()).distance(points, signed=True)
     want_pair = contain.MeshPairDistance(cube(), cube()).distance(poses)
     for name, form in mesh_forms(tmp_path).items():
-        got = contain.MeshDistance(form).query(points, signed=True)
+        got = contain.MeshDistance(form).distance(points, signed=True)
         assert np.array_equal(got["distance"], want["distance"]), name
         assert np.array_equal(got["triangle"], want["triangle"]), name
         pair = contain.MeshPairDistance(form, form)
@@ -143,9 +143,9 @@ def test_within_refuses_nan_negative_and_infinite_d_as_the_command_does(tmp_path
 def test_an_empty_shape_is_infinitely_far_with_no_made_up_closest_point():
     for prepared, points in ((contain.RegionDistance("POLYGON EMPTY"), [[1, 1], [0, 0]]),
                              (contain.MeshDistance((np.zeros((1, 3)), np.zeros((0, 3), dtype=np.int64))), [[1, 1, 1], [0, 0, 0]])):
-        r = prepared.query(points, signed=True)
+        r = prepared.distance(points, signed=True)
         assert r["distance"].tolist() == [np.inf, np.inf] and r["location"].tolist() == [-1, -1]
         assert np.isnan(r["point"]).all()  # not (0, 0): no boundary point exists
         assert not prepared.within(points, 1e300).any()
     # A shape with a boundary keeps its points, also at the origin.
-    assert contain.RegionDistance("POLYGON ((0 0, 1 0, 1 1))").query([[0, 0]])["point"].tolist() == [[0.0, 0.0]]
+    assert contain.RegionDistance("POLYGON ((0 0, 1 0, 1 1))").distance([[0, 0]])["point"].tolist() == [[0.0, 0.0]]

@@ -292,12 +292,12 @@ def test_paths_are_accepted_wherever_a_path_is(tmp_path):
     mesh = cube()
     contain.write_mesh(mesh, tmp_path / "a.ply")
     assert contain.read_mesh(tmp_path / "a.ply") == mesh
-    assert contain.MeshIndex.from_file(tmp_path / "a.ply").locate_point([0.5, 0.5, 0.5]) == 1
+    assert contain.MeshIndex.from_file(tmp_path / "a.ply").locate([0.5, 0.5, 0.5]) == 1
     (tmp_path / "r.wkt").write_text("POLYGON ((0 0, 1 0, 1 1, 0 1))")
     assert contain.read_region(tmp_path / "r.wkt").area == 1
-    assert contain.PolygonIndex.from_file(tmp_path / "r.wkt").locate_point([0.5, 0.5]) == 1
+    assert contain.PolygonIndex.from_file(tmp_path / "r.wkt").locate([0.5, 0.5]) == 1
     (tmp_path / "s.json").write_text('{"sphere": {"center": [0, 0, 0], "radius": 1}}')
-    assert contain.CsgSolid(tmp_path / "s.json").locate_point([0, 0, 1]) == 0
+    assert contain.CsgSolid(tmp_path / "s.json").locate([0, 0, 1]) == 0
 
 
 def test_real_open3d_meshes_where_python3_open3d_is_installed():

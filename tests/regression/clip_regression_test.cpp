@@ -42,13 +42,13 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-// The command writes one polygon as POLYGON, the library's write_wkt(MultiPolygon) always as
+// The command writes one polygon as POLYGON, the library's format_wkt(MultiPolygon) always as
 // MULTIPOLYGON: the library result is compared with the recorded text read back, point by point.
 void expect_region(const MultiPolygon& result, const std::vector<std::string>& out) {
   ASSERT_EQ(out.size(), 1u);
   auto recorded = io::parse_wkt(out.front(), "cases.txt");
   ASSERT_TRUE(recorded.ok()) << recorded.error().what();
-  EXPECT_EQ(result, *recorded) << io::write_wkt(result);
+  EXPECT_EQ(result, *recorded) << io::format_wkt(result);
 }
 
 MultiPolygon read_region_or_fail(const std::string& path) {
@@ -137,7 +137,7 @@ void expect_library_result(const RegressionCase& c) {
     const std::vector<double> h = numbers(*c.option("--halfspace"), ',');
     ASSERT_EQ(h.size(), 4u);
     const std::vector<Plane> planes{{h[0], h[1], h[2], h[3]}};
-    const Mesh cut = clip::mesh_clip(file->mesh, planes, {.cut = clip::MeshCut::cap});
+    const Mesh cut = clip::clip_mesh(file->mesh, planes, {.cut = clip::MeshCut::cap});
     EXPECT_EQ(lines_of(io::format_mesh(cut, io::MeshFormat::off)), c.out);
   } else if (c.option("--segments")) {
     expect_segments(c);

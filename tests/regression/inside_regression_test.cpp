@@ -33,15 +33,15 @@ std::vector<std::string> library_answers(const RegressionCase& c) {
   std::vector<std::string> answers;
   const std::string points = c.option("--points").value_or("");
   if (const auto polygon = c.option("--polygon")) {
-    io::WktNotes notes;
-    auto region = io::read_region(*polygon, &notes);
+    auto region = io::read_region_with_notes(*polygon);
     EXPECT_TRUE(region.ok()) << region.error().what();
     auto p = io::read_points2(points);
     EXPECT_TRUE(p.ok()) << p.error().what();
     if (!region.ok() || !p.ok()) return answers;
     const bool warned = !c.err.empty();
-    EXPECT_EQ(!notes.unclosed_rings.empty(), warned) << "the reader's notes of unclosed rings";
-    const inside::PolygonIndex index(*region,
+    EXPECT_EQ(!region->notes.unclosed_rings.empty(), warned)
+        << "the reader's notes of unclosed rings";
+    const inside::PolygonIndex index(region->region,
                                      {.fill = fill_named(c.option("--fill").value_or(""))});
     for (const Vec2 q : p->points)
       answers.emplace_back(to_string(index.locate(q)));

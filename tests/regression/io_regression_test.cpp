@@ -60,12 +60,12 @@ std::string slurp(const std::string& path) {
 }
 
 // `lib wkb-roundtrip FILE`: the region read from FILE is written as WKT exactly as recorded, and
-// survives write_wkb / parse_wkb unchanged (commit 1b818be).
+// survives format_wkb / parse_wkb unchanged (commit 1b818be).
 void expect_wkb_roundtrip(const RegressionCase& c) {
   auto region = io::parse_wkb(slurp(c.lib[1]), c.lib[1]);
   ASSERT_TRUE(region.ok()) << region.error().what();
-  EXPECT_EQ(std::vector<std::string>{io::write_wkt(*region)}, c.out);
-  auto back = io::parse_wkb(io::write_wkb(*region), "written");
+  EXPECT_EQ(std::vector<std::string>{io::format_wkt(*region)}, c.out);
+  auto back = io::parse_wkb(io::format_wkb(*region), "written");
   ASSERT_TRUE(back.ok()) << back.error().what();
   EXPECT_EQ(*back, *region);
 }

@@ -140,7 +140,7 @@ TEST(MemoryGrowth, MeshReadersStayUnderTheirBytesPerTriangleAtEverySize) {
       ASSERT_EQ(triangles, mesh.triangles.size());
       const double per_triangle = static_cast<double>(peak) / static_cast<double>(triangles);
       EXPECT_LE(per_triangle, kMeshReaderBytesPerTriangle)
-          << io::format_name(format) << ", n = " << n << ": " << peak << " bytes at the peak";
+          << io::to_string(format) << ", n = " << n << ": " << peak << " bytes at the peak";
     }
   }
 }
@@ -163,7 +163,7 @@ TEST(MemoryGrowth, ClaimedCountsCostNothingUntilTheirBytesAreThere) {
       auto file = io::parse_mesh(input.first, input.second, "claims");
       EXPECT_FALSE(file.ok());
     });
-    EXPECT_LE(peak, 64 * 1024) << io::format_name(input.second);
+    EXPECT_LE(peak, 64 * 1024) << io::to_string(input.second);
   }
 }
 

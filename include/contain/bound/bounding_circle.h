@@ -14,7 +14,7 @@
 namespace contain::bound {
 
 /// Options of `bounding_circle`.
-struct CircleOptions {
+struct BoundingCircleOptions {
   /// The minimal circle (default) or Ritter's approximation.
   SphereMethod method = SphereMethod::exact;
 };
@@ -27,16 +27,16 @@ struct CircleOptions {
 /// Errors: `degenerate` for no points, `invalid_value` for NaN/Inf, `unsupported` when the
 /// radius would exceed the largest double.
 [[nodiscard]] Result<Circle> bounding_circle(std::span<const Vec2> points,
-                                             const CircleOptions& options = {});
+                                             const BoundingCircleOptions& options = {});
 
 /// The bounding circle of every ring point of a polygon (its vertices enclose all of it).
 /// An empty polygon is `ErrorKind::degenerate`.
 [[nodiscard]] Result<Circle> bounding_circle(const Polygon& polygon,
-                                             const CircleOptions& options = {});
+                                             const BoundingCircleOptions& options = {});
 
 /// The bounding circle of every ring point of every polygon (a region read from WKT/GeoJSON).
 /// No polygons, or only empty ones, is `ErrorKind::degenerate`.
 [[nodiscard]] Result<Circle> bounding_circle(const MultiPolygon& multi_polygon,
-                                             const CircleOptions& options = {});
+                                             const BoundingCircleOptions& options = {});
 
 }  // namespace contain::bound

@@ -16,7 +16,7 @@ namespace contain::bound {
 
 /// Options of `bounding_sphere`, for designated initialisers:
 /// `bounding_sphere(mesh, {.method = SphereMethod::ritter})`.
-struct SphereOptions {
+struct BoundingSphereOptions {
   /// The minimal sphere (default) or Ritter's approximation.
   SphereMethod method = SphereMethod::exact;
   /// Which mesh vertices are enclosed (the `Mesh` overload only).
@@ -57,11 +57,12 @@ struct SphereOptions {
 /// "Fast and robust smallest enclosing balls", ESA 1999; J. Ritter, "An efficient bounding
 /// sphere", Graphics Gems 1990.
 [[nodiscard]] Result<Sphere> bounding_sphere(std::span<const Vec3> points,
-                                             const SphereOptions& options = {});
+                                             const BoundingSphereOptions& options = {});
 
 /// The bounding sphere of a mesh's vertices, by default only those a triangle refers to
 /// (`options.vertices`); as the point overload otherwise. A mesh with no vertex to enclose is
 /// `ErrorKind::degenerate`.
-[[nodiscard]] Result<Sphere> bounding_sphere(const Mesh& mesh, const SphereOptions& options = {});
+[[nodiscard]] Result<Sphere> bounding_sphere(const Mesh& mesh,
+                                             const BoundingSphereOptions& options = {});
 
 }  // namespace contain::bound

@@ -2,7 +2,7 @@
 /// \file
 /// GJK: the distance between two convex sets given by their support functions, in floating point,
 /// with a lower bound and the approximate closest points. The guide of the exact convex queries
-/// above it (collide::convex_intersect certifies its separating direction; distance::
+/// above it (collide::convex_convex certifies its separating direction; distance::
 /// convex_convex keeps only the faces its direction cannot rule out); never a decision by itself.
 
 #include <array>

@@ -18,7 +18,8 @@ namespace contain::clip {
 /// Clips every segment: `kept[i]` is 1 when something of `segments[i]` is left and `out[i]` is
 /// then that part (zero-length when it only touches), 0 when nothing is left (`out[i]` is then
 /// unspecified). Results per index do not depend on the thread count.
-/// Preconditions: out.size() == kept.size() == segments.size(); finite coordinates.
+/// `out` and `kept` have the size of `segments` (asserted: a different size is a programming
+/// error; a build without assertions clips the common prefix). Finite coordinates.
 ///
 /// The box forms run a branch-free kernel (no data-dependent branch; GCC/Clang vector
 /// extensions: four segments per step in AVX2 where the CPU has it, chosen at run time, else
@@ -28,7 +29,7 @@ namespace contain::clip {
 /// final; the rest (touching, nearly touching, parallel on a face, huge or tiny coordinates) are
 /// redone by the exact `liang_barsky`. So decisions equal `liang_barsky`'s exactly; points agree
 /// with it to rounding (the kernel may pick the other face at a corner tie) and lie in the
-/// closed box. The other regions call `segment_halfspace`, `segment_sphere` and `cyrus_beck`.
+/// closed box. The other regions call `clip_segment` (half-space, ball, disc) and `cyrus_beck`.
 /// O(n) work; O(n / threads) time.
 void clip_segments(std::span<const Segment3> segments, const Box3& box, std::span<Segment3> out,
                    std::span<std::uint8_t> kept, const BatchOptions& options = {});

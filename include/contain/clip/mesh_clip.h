@@ -50,24 +50,24 @@ struct MeshClipOptions {
 /// surface stays closed; validate_mesh counts them). Unreferenced vertices are removed at the end.
 /// An empty result has no triangles. Complexity: O(n) per half-space plus O(k^2)..O(k^3) for a
 /// cap of k vertices.
-[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, std::span<const Plane> half_spaces,
+[[nodiscard]] Mesh clip_mesh(const Mesh& mesh, std::span<const Plane> half_spaces,
                              const MeshClipOptions& options = {});
 
 /// By a closed box (its six face half-spaces).
-[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const Box3& box,
+[[nodiscard]] Mesh clip_mesh(const Mesh& mesh, const Box3& box,
                              const MeshClipOptions& options = {});
 
 /// By a convex polyhedron: its planes, or the faces of the convex mesh it was made from.
-[[nodiscard]] Mesh mesh_clip(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
+[[nodiscard]] Mesh clip_mesh(const Mesh& mesh, const ConvexPolyhedron& polyhedron,
                              const MeshClipOptions& options = {});
 
 /// The section of a mesh by a plane: the border edges, lying on the plane, of the part of the
-/// surface in the closed half-space (the cut of `mesh_clip` by that one half-space, without
+/// surface in the closed half-space (the cut of `clip_mesh` by that one half-space, without
 /// caps), directed as that part uses them. The side of every vertex is exact; crossing points
-/// are rounded as in `mesh_clip` (exact on axis-aligned planes in the plane's own coordinate).
+/// are rounded as in `clip_mesh` (exact on axis-aligned planes in the plane's own coordinate).
 /// For a closed, consistently oriented mesh the segments chain into the closed loops a cap
 /// would fill. A closed mesh touching the plane along faces has no border there (those faces are
-/// kept whole or dropped, as in `mesh_clip`), so only transversal cuts give segments. An open
+/// kept whole or dropped, as in `clip_mesh`), so only transversal cuts give segments. An open
 /// mesh gives its section's pieces. O(n).
 [[nodiscard]] std::vector<Segment3> mesh_section(const Mesh& mesh, const Plane& plane);
 

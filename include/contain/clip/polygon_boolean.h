@@ -92,8 +92,18 @@ struct PolygonBooleanStats {
 /// edges near the small one; boxes whose intersection has no interior give the empty result in
 /// O(n).
 [[nodiscard]] MultiPolygon polygon_boolean(std::span<const Ring> a, std::span<const Ring> b,
-                                           const PolygonBooleanOptions& options = {},
-                                           PolygonBooleanStats* stats = nullptr);
+                                           const PolygonBooleanOptions& options = {});
+
+/// The region of `polygon_boolean(a, b, options)` and the counters of the run that made it.
+struct PolygonBooleanResult {
+  MultiPolygon region;
+  PolygonBooleanStats stats;
+};
+
+/// `polygon_boolean(a, b, options)` with the counters of its run (for benchmarks, `--json` and
+/// the fuzzer's check of `stats.converged`); the same region.
+[[nodiscard]] PolygonBooleanResult polygon_boolean_with_stats(
+    std::span<const Ring> a, std::span<const Ring> b, const PolygonBooleanOptions& options = {});
 
 /// The same for two multipolygons (all rings of each read together under the fill rule).
 [[nodiscard]] MultiPolygon polygon_boolean(const MultiPolygon& a, const MultiPolygon& b,

@@ -43,13 +43,13 @@ struct PolylineClipOptions {
 /// wholly inside is returned unchanged.
 ///
 /// Complexity: as `polygon_boolean`, for n edges of paths and region together.
-[[nodiscard]] std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines,
-                                                  std::span<const Ring> region,
-                                                  const PolylineClipOptions& options = {});
+[[nodiscard]] std::vector<Polyline> clip_polylines(std::span<const Polyline> polylines,
+                                                   std::span<const Ring> region,
+                                                   const PolylineClipOptions& options = {});
 
 /// The same for the rings of a multipolygon (all read together under the fill rule).
-[[nodiscard]] std::vector<Polyline> polyline_clip(std::span<const Polyline> polylines,
-                                                  const MultiPolygon& region,
-                                                  const PolylineClipOptions& options = {});
+[[nodiscard]] std::vector<Polyline> clip_polylines(std::span<const Polyline> polylines,
+                                                   const MultiPolygon& region,
+                                                   const PolylineClipOptions& options = {});
 
 }  // namespace contain::clip

@@ -38,8 +38,7 @@ enum class SegmentCase : std::uint8_t {
 /// tried step that brings it inside, so every returned point lies in the closed half-space
 /// (exactly). A zero-length input segment is kept iff its point is in. A plane with a = b = c = 0
 /// is all of space (d >= 0) or nothing. O(1) (the adjustment takes at most ~60 predicate calls).
-[[nodiscard]] ClippedSegment3 segment_halfspace(const Segment3& segment, const Plane& half_space);
-[[nodiscard]] ClippedSegment2 segment_halfspace(const Segment2& segment,
-                                                const HalfPlane& half_plane);
+[[nodiscard]] ClippedSegment3 clip_segment(const Segment3& segment, const Plane& half_space);
+[[nodiscard]] ClippedSegment2 clip_segment(const Segment2& segment, const HalfPlane& half_plane);
 
 }  // namespace contain::clip

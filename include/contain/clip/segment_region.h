@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "contain/core/parallel.h"
 #include "contain/core/result.h"
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/shapes/polygon.h"
@@ -29,8 +30,10 @@ using SegmentRegion3 = std::variant<Box3, std::vector<Plane>, ConvexPolyhedron, 
 /// Which clipper runs.
 enum class SegmentClipper : std::uint8_t {
   /// The region's own batch call of clip_segments.h: for a box the branch-free kernel with
-  /// exact decisions, for one half-space `segment_halfspace`, for several `cyrus_beck`, for a
-  /// convex polyhedron or ring `cyrus_beck` on its faces or edges, for a ball `segment_sphere`.
+  /// exact decisions, for one half-space `clip_segment(segment, half_space)`, for several
+  /// `cyrus_beck`, for a
+  /// convex polyhedron or ring `cyrus_beck` on its faces or edges, for a ball
+  /// `clip_segment(segment, ball)`.
   automatic,
   /// `cohen_sutherland` (outcodes; a box only).
   cohen_sutherland,
@@ -41,11 +44,9 @@ enum class SegmentClipper : std::uint8_t {
   cyrus_beck,
 };
 
-/// How `clip_segments` runs.
+/// Which clipper `clip_segments` runs (its threads: `BatchOptions`).
 struct SegmentClipOptions {
   SegmentClipper clipper = SegmentClipper::automatic;
-  /// Threads (0: every hardware thread).
-  int threads = 0;
 };
 
 /// Clips every segment by `region` with `options.clipper`: `kept[i]` is 1 when something of
@@ -60,17 +61,19 @@ struct SegmentClipOptions {
 /// - ErrorKind::invalid_value: a coordinate of a segment or a number of the region that is NaN or
 ///   infinite (the message names the segment, 0-based).
 ///
-/// Runs on `options.threads` threads; the answer of each segment does not depend on the thread
+/// Runs on `batch.threads` threads; the answer of each segment does not depend on the thread
 /// count. O(n) work for n segments (O(n k) for k half-spaces, faces or ring edges), O(n / threads)
 /// time. Reference: Algorithms of Informatics, vol. 2, § 22.4 (Cohen-Sutherland; exercise 22.4-6:
 /// convex regions), Liang and Barsky 1984, Cyrus and Beck 1978.
 [[nodiscard]] Status clip_segments(std::span<const Segment2> segments, const SegmentRegion2& region,
                                    std::span<Segment2> out, std::span<std::uint8_t> kept,
-                                   const SegmentClipOptions& options = {});
+                                   const SegmentClipOptions& options = {},
+                                   const BatchOptions& batch = {});
 
 /// The 3D form: the same rules, with `SegmentRegion3`.
 [[nodiscard]] Status clip_segments(std::span<const Segment3> segments, const SegmentRegion3& region,
                                    std::span<Segment3> out, std::span<std::uint8_t> kept,
-                                   const SegmentClipOptions& options = {});
+                                   const SegmentClipOptions& options = {},
+                                   const BatchOptions& batch = {});
 
 }  // namespace contain::clip

@@ -19,9 +19,9 @@ namespace contain::clip {
 /// floating point (the cancellation-free form), then checked with side_of_sphere and moved
 /// inward along the kept part if rounding put them outside (not possible for a tangent point).
 /// A zero radius is a single point. O(1).
-[[nodiscard]] ClippedSegment3 segment_sphere(const Segment3& segment, const Sphere& ball);
+[[nodiscard]] ClippedSegment3 clip_segment(const Segment3& segment, const Sphere& ball);
 
 /// The 2D form: a segment by the closed disc (side_of_circle).
-[[nodiscard]] ClippedSegment2 segment_sphere(const Segment2& segment, const Circle& disc);
+[[nodiscard]] ClippedSegment2 clip_segment(const Segment2& segment, const Circle& disc);
 
 }  // namespace contain::clip

@@ -16,7 +16,7 @@ namespace contain::collide {
 /// a sphere, an axis-aligned box, or a convex polyhedron built from a closed convex mesh
 /// (ConvexPolyhedron::from_mesh). Boxes and polyhedra are polytopes: a ConvexPolyhedron
 /// (ConvexPolyhedron::from_box for a box) holds their vertices, faces and support function and
-/// locates points exactly for `convex_intersect`'s exact stage.
+/// locates points exactly for `convex_convex`'s exact stage.
 class ConvexShape {
  public:
   /// A closed ball. Precondition: radius >= 0, finite values.
@@ -44,7 +44,7 @@ class ConvexShape {
   ConvexPolyhedron solid_;  // polytopes
 };
 
-/// What `convex_intersect` found.
+/// What `convex_convex` found.
 struct ConvexContact {
   /// The closed shapes share a point.
   bool intersect = false;
@@ -65,12 +65,12 @@ struct ConvexContact {
 ///   is certified by an exact test (predicates::side_of_plane on every vertex of both against
 ///   one plane with GJK's normal); without a certificate (touching, intersecting, or too close
 ///   for doubles) the exact stage decides: the closed solids meet iff some pair of faces meets
-///   (tri_tri_intersect) or a vertex of one is in the other (exact point location).
+///   (tri_tri) or a vertex of one is in the other (exact point location).
 /// - a sphere involved: the answer is GJK's, floating point: separated iff the distance
 ///   estimate exceeds about 1e-12 of the shapes' size; touching within that margin counts as
 ///   intersecting. `exact` is false.
 /// Complexity: GJK O(iterations (V_a + V_b)), at most 64 iterations; the exact stage
 /// O(F_a F_b + V_a F_b + V_b F_a), taken for touching and intersecting polytope pairs.
-[[nodiscard]] ConvexContact convex_intersect(const ConvexShape& a, const ConvexShape& b);
+[[nodiscard]] ConvexContact convex_convex(const ConvexShape& a, const ConvexShape& b);
 
 }  // namespace contain::collide

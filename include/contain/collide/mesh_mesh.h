@@ -34,7 +34,7 @@ using MeshPairOptions = inside::MeshPairOptions;
 /// Algorithm per query: a simultaneous descent of both hierarchies (A's built in world
 /// coordinates; B's in its own frame, its boxes mapped by the transform to enclosing world
 /// boxes widened by a bound on the rounding, so no pair is ever missed); at leaf pairs B's
-/// triangle is transformed, its box compared exactly and `tri_tri_intersect` decides. If no
+/// triangle is transformed, its box compared exactly and `tri_tri` decides. If no
 /// surfaces meet, solids can still be nested: the boundary of A ∩ B then consists of whole
 /// connected components of the two surfaces, so one vertex per component of A is located in B
 /// (exact perturbed +x ray parity against B's transformed triangles, docs/robustness.md) and

@@ -37,13 +37,13 @@ struct ReferenceResult {
 /// A), A misses B's box and so B (and the same with the roles exchanged); (3) the full test:
 /// every vertex of one located in the other solid (exact point in polyhedron,
 /// `inside::MeshIndex`; `boundary` counts), then every edge of one against every face of the
-/// other (`segment_triangle_intersect`: endpoints on opposite sides of the face plane by
+/// other (`segment_triangle`: endpoints on opposite sides of the face plane by
 /// orient3d, then the crossing in the face by the signs of three tetrahedra, never by computing
 /// the crossing point). Complete: if no vertex of either is in the other and the surfaces meet,
 /// an edge of one meets a face of the other.
 /// O(n m) for n and m triangles in stage 3 (hence the fast path). Reference: "Algorithms of
 /// Informatics" vol. 2, § 22.4, figure 22.25.
-[[nodiscard]] ReferenceResult polyhedra_reference(const Mesh& a, const Mesh& b,
+[[nodiscard]] ReferenceResult mesh_mesh_reference(const Mesh& a, const Mesh& b,
                                                   const Transform& transform_a = {},
                                                   const Transform& transform_b = {});
 

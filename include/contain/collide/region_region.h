@@ -20,14 +20,14 @@ struct RegionRegionOptions {
 /// (or inside a hole's island) counts.
 ///
 /// Method: their boundaries meet iff some edge of A meets some edge of B (closed segments,
-/// exact orient2d: `segments_intersect`), with candidate pairs from a bounding volume hierarchy
+/// exact orient2d: `segment_segment`), with candidate pairs from a bounding volume hierarchy
 /// over each region's edges (`bvh::traverse_pairs`); if the boundaries are disjoint, every
 /// ring of one lies wholly inside or outside the other region, so one vertex per ring located
-/// exactly (`inside::PolygonIndex`) decides. The witness is an edge pair (`WitnessKind::edges`,
-/// edges numbered along polygons, rings and vertices in order, edge i from vertex i to i + 1)
-/// or a contained vertex (numbered the same way). Empty regions meet nothing.
-/// O((n + m) log(n + m) + candidate pairs). Reference: "Algorithms of Informatics" vol. 2, § 22.4,
-/// exercise 22.4-5.
+/// exactly (`inside::PolygonIndex`) decides. The witness is an edge pair
+/// (`inside::PairWitness::edges`, edges numbered along polygons, rings and vertices in order, edge
+/// i from vertex i to i + 1) or a contained vertex (numbered the same way). Empty regions meet
+/// nothing. O((n + m) log(n + m) + candidate pairs). Reference: "Algorithms of Informatics" vol. 2,
+/// § 22.4, exercise 22.4-5.
 [[nodiscard]] Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
                                     const RegionRegionOptions& options = {});
 

@@ -50,7 +50,7 @@ struct SelfIntersections {
 /// Triangles share a corner when they have a vertex at the same coordinates (by value, so an
 /// unwelded mesh is judged as its welded twin). Such a pair always meets at the shared corners
 /// and counts only when it meets elsewhere too:
-/// - no shared corner: any common point counts (crossing or touching, `tri_tri_intersect`);
+/// - no shared corner: any common point counts (crossing or touching, `tri_tri`);
 /// - one shared corner P (a = P a1 a2, b = P b1 b2): a and b meet beyond P iff the edge a1 a2
 ///   meets b or the edge b1 b2 meets a (a triangle crossing its neighbour's interior, a fold
 ///   onto the neighbour's plane);
@@ -63,7 +63,7 @@ struct SelfIntersections {
 /// corners, it has an extreme point besides them, and an extreme point of a ∩ b lies on an edge
 /// of a or of b. An edge through a shared corner P that goes on into the other triangle either
 /// ends inside it (its far end is in the other triangle, so the far edge meets it) or leaves it
-/// through the other's edge opposite P. Each test is `segment_triangle_intersect` (a segment as
+/// through the other's edge opposite P. Each test is `segment_triangle` (a segment as
 /// a flat triangle, a point as a zero-length segment): orient3d and orient2d signs only.
 /// Degenerate triangles (collinear or coincident corners, decided exactly) are skipped: they
 /// bound no area, `validate_mesh` counts them, and a shared corner in the middle of one would

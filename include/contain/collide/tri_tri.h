@@ -23,13 +23,13 @@ namespace contain::collide {
 /// segment or point it spans (segment against triangle: the section's edge-face test with
 /// orient3d; segment against segment; point on a triangle or segment).
 /// O(1): about 6-8 orient3d calls.
-[[nodiscard]] bool tri_tri_intersect(const Triangle3& a, const Triangle3& b);
+[[nodiscard]] bool tri_tri(const Triangle3& a, const Triangle3& b);
 
 /// True when the closed segment `s` and the closed triangle `t` share a point (the section's
 /// edge-face test made exact: endpoints on opposite sides or on the plane by orient3d, then the
 /// crossing point in the face by the signs of the three tetrahedra (s, edge), never by computing
 /// the point). Coplanar: the 2D test in an exact projection. Degenerate `t` or zero-length `s`
 /// included. O(1).
-[[nodiscard]] bool segment_triangle_intersect(const Segment3& s, const Triangle3& t);
+[[nodiscard]] bool segment_triangle(const Segment3& s, const Triangle3& t);
 
 }  // namespace contain::collide

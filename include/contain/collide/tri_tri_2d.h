@@ -19,10 +19,10 @@ namespace contain::collide {
 /// Degenerate triangles (collinear or coincident vertices, decided exactly) are the segment or
 /// point they span, tested as such (closed segment intersection by orient2d and exact
 /// coordinate order along the segment). Exact for every finite input; O(1).
-[[nodiscard]] bool tri_tri_intersect(const Triangle2& a, const Triangle2& b);
+[[nodiscard]] bool tri_tri(const Triangle2& a, const Triangle2& b);
 
 /// True when the closed segments `a` and `b` share a point (exact orient2d, collinear overlap
 /// and zero-length segments included). O(1).
-[[nodiscard]] bool segments_intersect(const Segment2& a, const Segment2& b);
+[[nodiscard]] bool segment_segment(const Segment2& a, const Segment2& b);
 
 }  // namespace contain::collide

@@ -43,11 +43,11 @@ class ConvexDistance {
   [[nodiscard]] static Result<ConvexDistance> prepare(const ConvexPolyhedron& polyhedron);
 
   /// The distance from `p` to the surface, the closest point and face (`Closest3::feature`).
-  [[nodiscard]] Closest3 query(Vec3 p, const PointQuery& query = {}) const;
-  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  [[nodiscard]] Closest3 distance(Vec3 p, const PointQuery& query = {}) const;
+  /// out[i] = distance(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
   /// `options.threads` threads (0: all).
-  void query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
-             const BatchOptions& options = {}) const;
+  void distance(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
+                const BatchOptions& options = {}) const;
   /// Is the unsigned distance from `p` to the surface at most `d`? Exact, no rounding.
   [[nodiscard]] bool within(Vec3 p, double d) const;
 
@@ -68,8 +68,8 @@ class ConvexDistance {
   double max_abs_ = 0.0;
 };
 
-/// One query: `ConvexDistance::prepare(polyhedron)->query(p, query)`.
-[[nodiscard]] Result<Closest3> point_convex(Vec3 p, const ConvexPolyhedron& polyhedron,
+/// One query: `ConvexDistance::prepare(polyhedron)->distance(p, query)`.
+[[nodiscard]] Result<Closest3> point_convex(const ConvexPolyhedron& polyhedron, Vec3 p,
                                             const PointQuery& query = {});
 
 /// The distance between the solids A and B placed by `transform_b` (world = transform_b.apply

@@ -35,7 +35,7 @@ struct MeshDistanceOptions {
   bool signs = true;
 };
 
-/// Counts of the work of the queries made so far on one thread, for benchmarks.
+/// Counts of the work of a batch of queries (`MeshDistance::distance_with_stats`), for benchmarks.
 struct MeshDistanceStats {
   std::size_t queries = 0;
   std::size_t nodes = 0;      ///< hierarchy nodes entered
@@ -86,12 +86,18 @@ class MeshDistance {
 
   /// The distance from `p` to the surface, its closest point and triangle. A point with a NaN or
   /// infinite coordinate gets a NaN distance and feature -1.
-  [[nodiscard]] Closest3 query(Vec3 p, const PointQuery& query = {}) const;
+  [[nodiscard]] Closest3 distance(Vec3 p, const PointQuery& query = {}) const;
 
-  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  /// out[i] = distance(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
   /// `options.threads` threads (0: all).
-  void query(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
-             const BatchOptions& options = {}) const;
+  void distance(std::span<const Vec3> points, std::span<Closest3> out, const PointQuery& query = {},
+                const BatchOptions& options = {}) const;
+
+  /// The same batch, returning the counts of its work (summed over its threads).
+  [[nodiscard]] MeshDistanceStats distance_with_stats(std::span<const Vec3> points,
+                                                      std::span<Closest3> out,
+                                                      const PointQuery& query = {},
+                                                      const BatchOptions& options = {}) const;
 
   /// Is the (unsigned) distance from `p` to the surface at most `d`? Exact: squared distances
   /// against d^2, no rounding. `d` < 0 or NaN, or a point that is not finite: false.
@@ -108,19 +114,17 @@ class MeshDistance {
   [[nodiscard]] const inside::MeshIndex& index() const { return index_; }
   /// Number of triangles.
   [[nodiscard]] std::size_t size() const;
-  /// The work of all queries on this thread so far (reset with `reset_stats`).
-  [[nodiscard]] static MeshDistanceStats stats();
-  static void reset_stats();
 
  private:
-  [[nodiscard]] Closest3 query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint) const;
+  [[nodiscard]] Closest3 query_with_hint(Vec3 p, const PointQuery& query, std::int32_t hint,
+                                         MeshDistanceStats& stats) const;
 
   std::unique_ptr<detail::TriangleSearch> search_;
   inside::MeshIndex index_;
   bool signs_ = true;
 };
 
-/// One query: exactly `MeshDistance(mesh).query(p, query)`, building only what the query needs.
+/// One query: exactly `MeshDistance(mesh).distance(p, query)`, building only what the query needs.
 [[nodiscard]] Closest3 point_mesh(const Mesh& mesh, Vec3 p, const PointQuery& query = {});
 
 }  // namespace contain::distance

@@ -21,14 +21,14 @@
 namespace contain::distance {
 
 /// How two meshes relate at the answer of a `MeshPairDistance` query (and of the convex and
-/// region pairs): `none` (distance > 0), `triangles` (the surfaces share a point, distance 0:
-/// `triangle_a`, `triangle_b` meet; `edges` for regions), `vertex_of_a_in_b` / `vertex_of_b_in_a`
-/// (`vertex` inside the other solid: they overlap or nest, distance 0). Collide's witness type.
-using PairContact = inside::PairWitness;
-
+/// region pairs), as an `inside::PairWitness` (collide's witness type too): `none` (distance >
+/// 0), `triangles` (the surfaces share a point, distance 0: `triangle_a`, `triangle_b` meet;
+/// `edges` for regions), `vertex_of_a_in_b` / `vertex_of_b_in_a` (`vertex` inside the other
+/// solid: they overlap or nest, distance 0).
+///
 /// The words of a distance answer: "separate" (`none`), "touching" (`triangles`, `edges`),
 /// "vertex_of_a_in_b", "vertex_of_b_in_a".
-[[nodiscard]] const char* to_string(PairContact contact);
+[[nodiscard]] const char* to_string(inside::PairWitness contact);
 
 /// The answer of a mesh pair distance query.
 struct PairDistance3 {
@@ -45,7 +45,7 @@ struct PairDistance3 {
   /// -1 for nested answers.
   std::int32_t triangle_a = -1;
   std::int32_t triangle_b = -1;
-  PairContact contact = PairContact::none;
+  inside::PairWitness contact = inside::PairWitness::none;
   std::int32_t vertex = -1;    ///< nested answers: the contained vertex (in its own mesh)
   std::size_t node_pairs = 0;  ///< bounding volume pairs tested
   std::size_t contenders = 0;  ///< triangle pairs passed to the exact stage
@@ -116,7 +116,7 @@ class MeshPairDistance {
   struct Placed;   // B's vertices and nodes as placed by one pose (thread-local, on first use)
   struct Descent;  // the branch and bound over node pairs
   struct Nested {  // a component's vertex strictly inside the other solid, if any
-    PairContact contact = PairContact::none;
+    inside::PairWitness contact = inside::PairWitness::none;
     std::int32_t vertex = -1;
     Vec3 point{};
   };

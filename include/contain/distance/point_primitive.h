@@ -17,11 +17,11 @@ namespace contain::distance {
 /// (predicates::closest_feature), then the distance to that feature's flat is rounded once
 /// (predicates::rounded_distance). Degenerate triangles are their segment hull (or point).
 /// `feature` is -1. O(1); exact for every finite double.
-[[nodiscard]] Closest3 point_triangle(Vec3 p, const Triangle3& t);
+[[nodiscard]] Closest3 point_triangle(const Triangle3& t, Vec3 p);
 
 /// Distance from `p` to the closed segment `s` (a point where s.a == s.b); as `point_triangle`.
-[[nodiscard]] Closest3 point_segment(Vec3 p, const Segment3& s);
-[[nodiscard]] Closest2 point_segment(Vec2 p, const Segment2& s);
+[[nodiscard]] Closest3 point_segment(const Segment3& s, Vec3 p);
+[[nodiscard]] Closest2 point_segment(const Segment2& s, Vec2 p);
 
 /// Distance from `p` to the surface of the closed box `box` (non-empty: min <= max; flat boxes
 /// are allowed and are all surface). Unsigned: outside, the distance to the box (the closest point
@@ -29,6 +29,6 @@ namespace contain::distance {
 /// (`query.signed_distance`): negative inside, 0 on the surface. Inside, `feature` names the
 /// nearest face (0..5: -x, +x, -y, +y, -z, +z; ties to the lowest) and the closest point is p
 /// moved onto it (exact); outside `feature` is -1. O(1); exact.
-[[nodiscard]] Closest3 point_box(Vec3 p, const Box3& box, const PointQuery& query = {});
+[[nodiscard]] Closest3 point_box(const Box3& box, Vec3 p, const PointQuery& query = {});
 
 }  // namespace contain::distance

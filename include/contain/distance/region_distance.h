@@ -66,11 +66,11 @@ class RegionDistance {
 
   /// The distance from `p` to the rings, its closest point and edge. A point that is not finite
   /// gets a NaN distance and ring = edge = -1.
-  [[nodiscard]] Closest2 query(Vec2 p, const PointQuery& query = {}) const;
-  /// out[i] = query(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
+  [[nodiscard]] Closest2 distance(Vec2 p, const PointQuery& query = {}) const;
+  /// out[i] = distance(points[i]) for every i (`out` has the inputs' size: `batch_size`), on
   /// `options.threads` threads (0: all).
-  void query(std::span<const Vec2> points, std::span<Closest2> out, const PointQuery& query = {},
-             const BatchOptions& options = {}) const;
+  void distance(std::span<const Vec2> points, std::span<Closest2> out, const PointQuery& query = {},
+                const BatchOptions& options = {}) const;
 
   /// Is the distance from `p` to the rings at most `d`? Exact (squared distances against d^2).
   [[nodiscard]] bool within(Vec2 p, double d) const;
@@ -92,7 +92,7 @@ class RegionDistance {
   bool signs_ = true;
 };
 
-/// One query: exactly `RegionDistance(region, options).query(p, query)`.
+/// One query: exactly `RegionDistance(region, options).distance(p, query)`.
 [[nodiscard]] Closest2 point_region(const MultiPolygon& region, Vec2 p,
                                     const PointQuery& query = {},
                                     const RegionDistanceOptions& options = {});

@@ -23,7 +23,7 @@ struct PairDistance2 {
   /// The closest edges (rings counted from 0 in the order of all rings, polygon by polygon; edge
   /// k from vertex k to k + 1), ties to the lowest edge of A, then of B; -1 for nested answers.
   std::int32_t ring_a = -1, edge_a = -1, ring_b = -1, edge_b = -1;
-  PairContact contact = PairContact::none;
+  inside::PairWitness contact = inside::PairWitness::none;
   std::int32_t vertex = -1;  ///< nested answers: the contained vertex, counted over all rings
 };
 

@@ -30,7 +30,7 @@ enum class MeshRegime : std::uint8_t {
   winding_number,
 };
 
-/// "closed-exact" or "winding-number".
+/// The enumerator's name: "closed_exact" or "winding_number" (io words it for a person).
 [[nodiscard]] const char* to_string(MeshRegime regime);
 
 /// How a `MeshIndex` is built.

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// What proves how two shapes of a pair relate: the one witness type of collide's answers
-/// (`collide::WitnessKind`) and distance's (`distance::PairContact`), both names of this enum.
+/// (`collide::Contact::witness`) and distance's (`distance::PairDistance3::contact`).
 
 #include <cstdint>
 

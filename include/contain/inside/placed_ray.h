@@ -27,7 +27,7 @@ namespace contain::inside {
   if (!between(q.x, t.a.x, t.b.x, t.c.x) || !between(q.y, t.a.y, t.b.y, t.c.y) ||
       !between(q.z, t.a.z, t.b.z, t.c.z))
     return false;
-  const predicates::TriangleFeature f = predicates::closest_feature(q, t);
+  const predicates::TriangleFeature f = predicates::closest_feature(t, q);
   if (f == predicates::TriangleFeature::face)
     return predicates::orient3d(t.a, t.b, t.c, q) == Sign::zero;
   return predicates::flats_meet(

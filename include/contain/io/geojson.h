@@ -31,12 +31,12 @@ namespace contain::io {
 [[nodiscard]] Result<MultiPolygon> read_geojson(const std::filesystem::path& path);
 
 /// `{"type":"MultiPolygon","coordinates":[...]}` with closed rings and shortest round-trip
-/// numbers, so `parse_geojson(write_geojson(m)) == m` bit for bit for rings of at least 3 points
+/// numbers, so `parse_geojson(format_geojson(m)) == m` bit for bit for rings of at least 3 points
 /// whose last point differs from the first. Ring directions are written as given (RFC 7946 asks
 /// for counter-clockwise shells; the writer does not reorder). One line, no newline at the end.
-[[nodiscard]] std::string write_geojson(const MultiPolygon& region);
+[[nodiscard]] std::string format_geojson(const MultiPolygon& region);
 
 /// `{"type":"Polygon","coordinates":[...]}`, as above.
-[[nodiscard]] std::string write_geojson(const Polygon& polygon);
+[[nodiscard]] std::string format_geojson(const Polygon& polygon);
 
 }  // namespace contain::io

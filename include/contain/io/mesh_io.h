@@ -25,8 +25,9 @@ enum class MeshFormat : std::uint8_t {
   ply_binary_big_endian,
 };
 
-/// The name of a format as in messages ("OBJ", "binary STL", ...).
-[[nodiscard]] const char* format_name(MeshFormat format);
+/// The enumerator's name ("obj", "stl_binary", "ply_binary_little_endian", ...); the readers'
+/// messages word a format for a person ("binary STL").
+[[nodiscard]] const char* to_string(MeshFormat format);
 
 /// What a reader saw besides the mesh.
 struct MeshInfo {
@@ -49,6 +50,13 @@ struct MeshFile {
 /// readers detect the encoding from the content); nothing for another extension.
 [[nodiscard]] std::optional<MeshFormat> mesh_format_for_path(const std::filesystem::path& path);
 
+/// How `read_mesh` and `parse_mesh` read.
+struct MeshReadOptions {
+  /// Accept a well-formed file with no faces as the empty mesh (the empty solid of the mesh
+  /// booleans, and what they write for an empty result) instead of ErrorKind::degenerate.
+  bool allow_empty = false;
+};
+
 /// Reads a mesh, choosing the reader by the extension (`mesh_format_for_path`).
 ///
 /// Formats: OBJ (`v x y z [w]` — w ignored; `f` with `a`, `a/b`, `a//c`, `a/b/c` and negative
@@ -70,14 +78,16 @@ struct MeshFile {
 /// (empty file, bad header, a non-number, truncated data, fewer elements than the header counts,
 /// trailing garbage); ErrorKind::invalid_value (NaN/Inf coordinates, an index out of range or
 /// 0 in OBJ); ErrorKind::degenerate (a face of fewer than 3 vertices, a mesh without
-/// triangles). Text formats name the 1-based line; binary formats give the byte offset in the
-/// message. Linear time; numbers via std::from_chars (correctly rounded).
-[[nodiscard]] Result<MeshFile> read_mesh(const std::filesystem::path& path);
+/// triangles unless `options.allow_empty`). Text formats name the 1-based line; binary formats give
+/// the byte offset in the message. Linear time; numbers via std::from_chars (correctly rounded).
+[[nodiscard]] Result<MeshFile> read_mesh(const std::filesystem::path& path,
+                                         const MeshReadOptions& options = {});
 
 /// Parses mesh bytes already in memory. `family` picks the reader: obj, off, either STL or
 /// either PLY value (the encoding is detected from the bytes). `source` names them in errors.
 [[nodiscard]] Result<MeshFile> parse_mesh(std::string_view bytes, MeshFormat family,
-                                          const std::string& source);
+                                          const std::string& source,
+                                          const MeshReadOptions& options = {});
 
 /// The bytes of `mesh` in `format`. OBJ, OFF and ASCII PLY write every coordinate as the
 /// shortest decimal that reads back as the same double, so reading gives the same mesh bit for

@@ -9,6 +9,7 @@
 
 #include "contain/collide/self_intersections.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/shapes/mesh_closure.h"
 #include "contain/shapes/mesh_validation.h"
 
 namespace contain::io {
@@ -58,5 +59,12 @@ enum class OpenMeshReading {
 /// The same line without the counts, where a query knows only that the mesh is open (a scene's
 /// objects): "NAME: not closed: READING". O(1).
 [[nodiscard]] std::string open_mesh_warning(std::string_view name, OpenMeshReading reading);
+
+/// One line for a user about the mesh `name` that is not a solid's boundary (the solids of the
+/// mesh booleans, `shapes::unmatched_edge`): "NAME: not closed: the directed edge (x y z) -> (x y
+/// z) of triangle T (counted from 0 in file order, polygons split into fans) occurs N times, its
+/// reverse M times; a solid's mesh has every directed edge as often as its reverse". Coordinates
+/// are the shortest decimals that read back as the same doubles. O(1).
+[[nodiscard]] std::string open_solid_message(std::string_view name, const UnmatchedEdge& edge);
 
 }  // namespace contain::io

@@ -22,8 +22,10 @@ enum class RegionFormat { wkt, geojson };
 /// Reads a region: `.wkt` with `read_wkt`, `.geojson` (and `.json`) with `read_geojson`; the
 /// extension is compared case-insensitively. Another extension is ErrorKind::unsupported naming
 /// it; every reader error comes back as is (source = the path, line where one applies).
-/// `notes`, when given, receives what a WKT file held that OGC WKT does not allow.
-[[nodiscard]] Result<MultiPolygon> read_region(const std::filesystem::path& path,
-                                               WktNotes* notes = nullptr);
+[[nodiscard]] Result<MultiPolygon> read_region(const std::filesystem::path& path);
+
+/// `read_region` with the notes of what a WKT file held that OGC WKT does not allow (none for
+/// GeoJSON); the same region and the same errors.
+[[nodiscard]] Result<WktRegion> read_region_with_notes(const std::filesystem::path& path);
 
 }  // namespace contain::io

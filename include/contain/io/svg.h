@@ -113,7 +113,7 @@ class SvgCanvas {
   std::string title_;
 };
 
-/// What `region_svg` and `mesh_svg` draw.
+/// What `format_svg` and `format_svg` draw.
 struct PictureOptions {
   double width_px = 400.0;
   std::string title;              ///< a caption at the top ("": none)
@@ -123,11 +123,11 @@ struct PictureOptions {
 
 /// A whole SVG document showing one region: filled under the even-odd rule of its rings (holes
 /// show as holes), outlined, scaled to its bounding box. The notebook view of contain.Region.
-[[nodiscard]] std::string region_svg(const MultiPolygon& region,
+[[nodiscard]] std::string format_svg(const MultiPolygon& region,
                                      const PictureOptions& options = {});
 
 /// A whole SVG document showing one mesh in `options.view`, shaded (see `SvgCanvas::mesh`). The
 /// notebook view of contain.Mesh.
-[[nodiscard]] std::string mesh_svg(const Mesh& mesh, const PictureOptions& options = {});
+[[nodiscard]] std::string format_svg(const Mesh& mesh, const PictureOptions& options = {});
 
 }  // namespace contain::io

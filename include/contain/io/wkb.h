@@ -31,11 +31,11 @@ namespace contain::io {
 [[nodiscard]] Result<MultiPolygon> parse_wkb(std::string_view bytes, const std::string& source);
 
 /// Little-endian WKB of a MULTIPOLYGON (type 6) with every ring closed (its first point
-/// repeated), so that `parse_wkb(write_wkb(m)) == m` bit for bit for rings of at least 3 points
+/// repeated), so that `parse_wkb(format_wkb(m)) == m` bit for bit for rings of at least 3 points
 /// whose last point differs from the first. Polygons without rings are left out.
-[[nodiscard]] std::string write_wkb(const MultiPolygon& region);
+[[nodiscard]] std::string format_wkb(const MultiPolygon& region);
 
 /// Little-endian WKB of a POLYGON (type 3), as above.
-[[nodiscard]] std::string write_wkb(const Polygon& polygon);
+[[nodiscard]] std::string format_wkb(const Polygon& polygon);
 
 }  // namespace contain::io

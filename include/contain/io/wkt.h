@@ -21,6 +21,12 @@ struct WktNotes {
   std::vector<std::int64_t> unclosed_rings;
 };
 
+/// A region read from WKT with what its text held that OGC WKT does not allow.
+struct WktRegion {
+  MultiPolygon region;
+  WktNotes notes;
+};
+
 /// Parses one POLYGON or MULTIPOLYGON, or a GEOMETRYCOLLECTION of them (nested up to 64 deep;
 /// its region is all its members' polygons, as for GeoJSON's GeometryCollection and WKB; a member
 /// of another type is ErrorKind::unsupported).
@@ -30,7 +36,7 @@ struct WktNotes {
 /// coordinates of 3 or 4 ordinates — every extra ordinate (z, m) is dropped, as the region is 2D;
 /// any white space and newlines between tokens; an EWKT `SRID=n;` prefix (ignored). A POLYGON gives
 /// a MultiPolygon of one polygon. Rings go through `Polygon::from_rings`: the closing point is
-/// dropped (an unclosed ring is accepted as closed, and its line is added to `notes`).
+/// dropped (an unclosed ring is accepted as closed; `parse_wkt_with_notes` names its line).
 ///
 /// Errors, each naming `source` and the 1-based line: ErrorKind::parse (unknown keyword, missing
 /// parenthesis or comma, text that is not a number, trailing text, empty input, coordinates of
@@ -39,21 +45,24 @@ struct WktNotes {
 /// ErrorKind::degenerate (a ring of fewer than 3 distinct points). Numbers are read with
 /// std::from_chars, so the shortest round-trip decimal of a double reads back as exactly that
 /// double. Linear time.
-[[nodiscard]] Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source,
-                                             WktNotes* notes = nullptr);
+[[nodiscard]] Result<MultiPolygon> parse_wkt(std::string_view text, const std::string& source);
+
+/// `parse_wkt` with the notes of what the text held that OGC WKT does not allow (the lines of
+/// unclosed rings); the same region and the same errors.
+[[nodiscard]] Result<WktRegion> parse_wkt_with_notes(std::string_view text,
+                                                     const std::string& source);
 
 /// Reads a WKT file (see `parse_wkt`); a missing or unreadable file is ErrorKind::io.
-[[nodiscard]] Result<MultiPolygon> read_wkt(const std::filesystem::path& path,
-                                            WktNotes* notes = nullptr);
+[[nodiscard]] Result<MultiPolygon> read_wkt(const std::filesystem::path& path);
 
 /// `MULTIPOLYGON (((x y, ...)), ...)`, or `MULTIPOLYGON EMPTY` when there is no polygon, with
 /// every ring closed (its first point repeated) and every coordinate written as the shortest
-/// decimal that reads back as the same double, so `parse_wkt(write_wkt(m)) == m` bit for bit for
+/// decimal that reads back as the same double, so `parse_wkt(format_wkt(m)) == m` bit for bit for
 /// rings of at least 3 points whose last point differs from the first. Polygons without rings
 /// are left out. One line, no newline at the end.
-[[nodiscard]] std::string write_wkt(const MultiPolygon& region);
+[[nodiscard]] std::string format_wkt(const MultiPolygon& region);
 
 /// `POLYGON ((x y, ...), ...)`, or `POLYGON EMPTY` for a polygon without rings (as above).
-[[nodiscard]] std::string write_wkt(const Polygon& polygon);
+[[nodiscard]] std::string format_wkt(const Polygon& polygon);
 
 }  // namespace contain::io

@@ -46,12 +46,12 @@ enum class SegmentFeature : std::uint8_t { vertex_a, vertex_b, interior };
 ///   a, b, c; an edge of zero length is its vertex.
 /// A degenerate triangle (collinear corners) is its segment hull and never answers `face`.
 /// O(1); exact for every finite double.
-[[nodiscard]] TriangleFeature closest_feature(Vec3 p, const Triangle3& t);
+[[nodiscard]] TriangleFeature closest_feature(const Triangle3& t, Vec3 p);
 
 /// The feature of the closed segment `s` closest to `p`: `vertex_a` where dot_sign(a, b, p) <= 0
 /// (also for a segment of zero length), `vertex_b` where dot_sign(b, a, p) <= 0, else `interior`.
-[[nodiscard]] SegmentFeature closest_feature(Vec3 p, const Segment3& s);
-[[nodiscard]] SegmentFeature closest_feature(Vec2 p, const Segment2& s);
+[[nodiscard]] SegmentFeature closest_feature(const Segment3& s, Vec3 p);
+[[nodiscard]] SegmentFeature closest_feature(const Segment2& s, Vec2 p);
 
 /// The flat carrying a feature: a vertex, the line of an edge, the plane of the face.
 [[nodiscard]] Flat3 feature_flat(const Triangle3& t, TriangleFeature f);
@@ -80,6 +80,6 @@ enum class SegmentFeature : std::uint8_t { vertex_a, vertex_b, interior };
 
 /// True when the closed segment p q crosses the interior of triangle t: p and q strictly on
 /// either side of its plane and the line p q strictly inside its three edges (exact orient3d).
-[[nodiscard]] bool segment_crosses_triangle(Vec3 p, Vec3 q, const Triangle3& t);
+[[nodiscard]] bool segment_crosses_triangle(const Triangle3& t, Vec3 p, Vec3 q);
 
 }  // namespace contain::predicates

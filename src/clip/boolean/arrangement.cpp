@@ -145,7 +145,7 @@ std::vector<std::uint32_t> Arrangement::number_vertices(const ArrangementInput& 
   const std::vector<std::uint32_t>& first = noded_.first;
   const std::size_t nchains = input.segments.size();
   // Which points are vertices: the noding's events, the ends of paths, every point of an open
-  // path (polyline_clip reads its pieces one by one). The end of a linked segment is the start
+  // path (clip_polylines reads its pieces one by one). The end of a linked segment is the start
   // of the next one (alias): it takes that start's vertex, and is a vertex when either is.
   std::vector<char>& is_vertex = noded_.event;
   struct Keyed {
@@ -206,7 +206,7 @@ std::vector<Arrangement::Piece> Arrangement::collect_runs(const ArrangementInput
   // would meet its inner points); single pieces, keyed by their vertex pair, merge into edges.
   // The pieces of a run have consecutive ids (point index - segment index).
   std::vector<Piece> pieces;
-  // Pieces to half-edges, for polyline_clip's open paths only.
+  // Pieces to half-edges, for clip_polylines's open paths only.
   piece_half_.assign(any_open ? np - nchains : 0, -1);
   edge_.clear();
   std::size_t c = 0;

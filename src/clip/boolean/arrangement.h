@@ -1,7 +1,7 @@
 #pragma once
 // The noded arrangement of the booleans: a planar graph of the input edges of A and B (and of
 // open paths), each edge carrying its multiplicity in A and in B, every face its winding numbers.
-// Private to polygon_boolean and polyline_clip.
+// Private to polygon_boolean and clip_polylines.
 
 #include <cstdint>
 #include <functional>
@@ -42,7 +42,7 @@ struct ArrangementInput {
     labels.reserve(n);
     links.reserve(n);
   }
-  /// Some labels are open (polyline_clip): their pieces are read one by one.
+  /// Some labels are open (clip_polylines): their pieces are read one by one.
   bool open_paths = false;
   /// Largest coordinate for the noding's hot pixels; 0: that of the segments.
   double magnitude = 0.0;
