@@ -171,7 +171,7 @@ double farthest_vertex(const std::vector<Mesh>& inputs, const Mesh& out) {
     for (const Mesh& m : inputs) {
       for (const TriangleIndices& t : m.triangles) {
         const Triangle3 tri{m.vertex(t[0]), m.vertex(t[1]), m.vertex(t[2])};
-        nearest = std::min(nearest, distance::point_triangle(v, tri).distance);
+        nearest = std::min(nearest, distance::point_triangle(tri, v).distance);
       }
     }
     worst = std::max(worst, nearest);
