@@ -4,8 +4,9 @@
 //
 // Rounding each exact point to its nearest doubles moves it by at most half an ulp, but a
 // sliver thinner than that can fold over, and faces can cross. As CGAL 6.1 does for triangle
-// soups (Polygon_mesh_processing::autorefine_triangle_soup with apply_iterative_snap_rounding,
-// after Lazard and Valque 2024), the rounded mesh is then refined exactly again: its crossings
+// soups (autorefine_triangle_soup with snap rounding: cgal.org/2025/06/13/autorefine-and-snap,
+// inria hal-04907149; round, find the new intersections, refine, round again), the rounded mesh
+// is then refined exactly again: its crossings
 // and overlaps become exact points and edges of its own arrangement (the engine's stages on the
 // written mesh, kept as a union, so folds of zero volume vanish), which are rounded in turn.
 // Each round moves the surface by at most half an ulp per coordinate. Rounds that still fail
