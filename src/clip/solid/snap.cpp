@@ -6,14 +6,13 @@
 // sliver thinner than that can fold over, and faces can cross. As CGAL 6.1 does for triangle
 // soups (autorefine_triangle_soup with snap rounding: cgal.org/2025/06/13/autorefine-and-snap,
 // inria hal-04907149; round, find the new intersections, refine, round again), the rounded mesh
-// is then refined exactly again: its crossings
-// and overlaps become exact points and edges of its own arrangement (the engine's stages on the
-// written mesh, kept as a union, so folds of zero volume vanish), which are rounded in turn.
-// Each round moves the surface by at most half an ulp per coordinate. Rounds that still fail
-// also merge points whose doubles are close on a grid growing from 2^2 to 2^20 ulps of the
-// largest coordinate (hot cells: what meets one cell becomes one vertex), which removes the
-// slivers that keep folding. The number of rounds is bounded, so this ends; a mesh is returned
-// only when the exact check of its doubles passes.
+// is then refined exactly again: its crossings and overlaps become exact points and edges of
+// its own arrangement (the engine's stages on the written mesh, kept as a union, so folds of
+// zero volume vanish), which are rounded in turn. Each round moves the surface by at most half
+// an ulp per coordinate. Rounds that still fail also merge points whose doubles are close on a
+// grid growing from 2^2 to 2^20 ulps of the largest coordinate (hot cells: what meets one cell
+// becomes one vertex), which removes the slivers that keep folding. The number of rounds is
+// bounded, so this ends; a mesh is returned only when the exact check of its doubles passes.
 
 #include "clip/solid/snap.h"
 
