@@ -29,8 +29,8 @@ struct MeshBooleanResult {
   Mesh mesh;
   std::size_t shells = 0;  ///< connected sheets of `mesh` (by shared vertex indices)
   double volume = 0.0;     ///< volume of the written mesh (sum of signed tetrahedra)
-  /// Points written at another point's position by the rounding repair (merged into a vertex
-  /// nearby), 0 when every vertex is the double nearest to its exact point.
+  /// Written positions that are not the nearest doubles of an exact point of the result (made
+  /// by the snap-rounding repair), 0 when every vertex is the double nearest to its exact point.
   std::size_t moved = 0;
 };
 
@@ -52,11 +52,13 @@ struct MeshBooleanResult {
 /// grouped by position and labelled with every input's winding number on both sides (one exact
 /// ray per connected patch group, then the jumps across faces); a face is kept where
 /// `op(filled)` differs on its two sides, oriented with the in-side behind; where the result
-/// touches itself the sheets get their own vertices; vertices rounded to the nearest doubles
-/// and the written mesh checked exactly; when the check fails, points closer than 2^2, 2^5, ...
-/// 2^20 ulps of the largest input coordinate are merged until it passes (a crude snap
-/// rounding; rules solid-* in docs/robustness.md). Coplanar output faces are not merged: each
-/// face of the result is a piece of an input triangle.
+/// touches itself the sheets get their own vertices (before that, adjacent output faces of one
+/// plane are merged and triangulated again without the points inside them that no other face
+/// holds; every point on their outlines stays, so the mesh stays closed); vertices rounded to the
+/// nearest doubles and the written mesh checked exactly; when the check fails, iterated snap
+/// rounding: the written mesh's own arrangement computed exactly again (as a union) and rounded,
+/// after three rounds also with points closer than 2^2, 2^5, ... 2^20 ulps of the largest input
+/// coordinate merged, at most 10 rounds (rules solid-* in docs/robustness.md).
 ///
 /// Complexity: O(n log n) for the hierarchy and the candidate pairs, then work per intersecting
 /// pair and per refined triangle (quadratic in the constraints of one triangle), one ray pair
@@ -66,9 +68,8 @@ struct MeshBooleanResult {
 /// Errors: `ErrorKind::invalid_value` for an input that is not closed (the message names the
 /// input index and one unmatched directed edge by its two vertex coordinates) or whose
 /// coordinates are not finite or whose indices are out of range; `ErrorKind::degenerate` when
-/// rounding the exact result to doubles made it invalid and the repair could not restore
-/// validity (seen with 1e-14 noise and with crossings within 1e-16 of each other): never an
-/// invalid mesh.
+/// rounding the exact result to doubles made it invalid and 10 rounds of the repair could not
+/// restore validity (not seen in the tests): never an invalid mesh.
 [[nodiscard]] Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
                                                      const MeshBooleanOptions& options = {});
 

@@ -5,8 +5,9 @@
 //   refine.cpp     each triangle split by its constraints (triangulate.cpp: the constrained
 //                  triangulation), points on shared edges given to every triangle on the edge
 //   label.cpp      the winding numbers of every input on both sides of each refined face
-//   output.cpp     the faces on the result's boundary, sheets kept apart (sheets.cpp), rounded,
-//                  checked exactly (validate.cpp)
+//   output.cpp     the faces on the result's boundary, coplanar ones merged (merge_faces.cpp),
+//                  sheets kept apart (sheets.cpp), rounded and repaired by snap rounding
+//                  (snap.cpp, snap.h), checked exactly (validate.cpp)
 // Private to clip.
 
 #include <array>
@@ -150,6 +151,6 @@ struct Sheets {
 [[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
                                                      const std::vector<TriangleWork>& work,
                                                      const std::vector<FaceLabel>& labels,
-                                                     const PointStore& store, Op op);
+                                                     PointStore& store, Op op);
 
 }  // namespace contain::clip::solid

@@ -15,11 +15,12 @@
 #include <limits>
 #include <map>
 #include <string>
-#include <unordered_map>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
-#include "clip/solid/validate.h"
+#include "clip/solid/snap.h"
 #include "contain/core/union_find.h"
 
 namespace contain::clip::solid {
@@ -91,130 +92,52 @@ double signed_volume(const Mesh& mesh) {
   return six / 6.0;
 }
 
-// Points merged into one vertex (rule solid-output): faces that lose a corner so are dropped,
-// and two faces that become the same triangle in opposite directions cancel. What this leaves
-// is checked.
-using Representative = std::unordered_map<std::int32_t, std::int32_t>;
-
-std::vector<std::array<std::int32_t, 3>> merge_coincident(
-    const std::vector<std::array<std::int32_t, 3>>& faces, const Representative& rep) {
-  std::map<std::array<std::int32_t, 3>, std::vector<std::size_t>> by_corners;
-  std::vector<std::array<std::int32_t, 3>> merged;
-  for (const auto& f : faces) {
-    std::array<std::int32_t, 3> t = {rep.at(f[0]), rep.at(f[1]), rep.at(f[2])};
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    merged.push_back(t);
-  }
-  // Cancel opposite pairs: key (a, b, c) with a smallest; its reverse is (a, c, b).
-  std::vector<bool> gone(merged.size(), false);
-  for (std::size_t i = 0; i < merged.size(); ++i) {
-    const auto& t = merged[i];
-    const std::array<std::int32_t, 3> reverse = {t[0], t[2], t[1]};
-    auto it = by_corners.find(reverse);
-    if (it != by_corners.end() && !it->second.empty()) {
-      gone[it->second.back()] = true;
-      gone[i] = true;
-      it->second.pop_back();
-    } else {
-      by_corners[t].push_back(i);
-    }
-  }
-  std::vector<std::array<std::int32_t, 3>> out;
-  for (std::size_t i = 0; i < merged.size(); ++i) {
-    if (!gone[i]) out.push_back(merged[i]);
-  }
-  return out;
-}
-
-// The written point of each point of `faces`: at level < 0, the first point with the same
-// nearest doubles (the written mesh could not tell them apart); at level >= 0, the first point
-// (by number) of its cluster: points whose nearest doubles are within ulp(scale) 2^level of each
-// other in every coordinate are joined, transitively (a crude snap rounding).
-Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
-                               const PointStore& store, int level, double scale) {
-  std::vector<std::int32_t> ids;
-  for (const auto& f : faces)
-    ids.insert(ids.end(), f.begin(), f.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  Representative rep;
-  if (level < 0) {
-    for (const std::int32_t i : ids)
-      rep[i] = store.representative(i);
-    return rep;
-  }
-  const double h =
-      std::ldexp(std::nextafter(scale, std::numeric_limits<double>::infinity()) - scale, level);
-  std::vector<std::size_t> by_x(ids.size());
-  for (std::size_t k = 0; k < by_x.size(); ++k)
-    by_x[k] = k;
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
-    return store.rounded(ids[a]).x < store.rounded(ids[b]).x;
-  });
-  UnionFind<std::size_t> near(ids.size());  // the smallest index (so the smallest id) leads
-  for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const Vec3 p = store.rounded(ids[by_x[k]]);
-    for (std::size_t m = k + 1; m < by_x.size(); ++m) {
-      const Vec3 q = store.rounded(ids[by_x[m]]);
-      if (q.x - p.x > h) break;
-      if (std::fabs(q.y - p.y) <= h && std::fabs(q.z - p.z) <= h) near.unite(by_x[k], by_x[m]);
-    }
-  }
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    rep[ids[k]] = ids[near.find(k)];
-  return rep;
-}
-
-// The faces' mesh with points merged by `rep`, sheets kept apart.
-Mesh written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept, const Representative& rep,
-                  const PointStore& store) {
-  const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
-  Mesh mesh;
-  for (const std::int32_t p : sheets.points)
-    mesh.vertices.push_back(store.rounded(p));
-  for (const auto& t : sheets.faces)
-    mesh.triangles.push_back({t[0], t[1], t[2]});
-  return mesh;
-}
-
 }  // namespace
 
-Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
-                                       const std::vector<TriangleWork>& work,
-                                       const std::vector<FaceLabel>& labels,
-                                       const PointStore& store, Op op) {
-  std::vector<std::array<std::int32_t, 3>> kept;
+BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
+                             const std::vector<TriangleWork>& work,
+                             const std::vector<FaceLabel>& labels, const PointStore& store, Op op) {
+  BoundaryFaces out;
   for (std::size_t f = 0; f < refinement.faces.size(); ++f) {
     const RefinedFace& face = refinement.faces[f];
     const bool front = filled(op, labels[f].front), back = filled(op, labels[f].back);
     if (front == back) continue;
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
-    kept.push_back(back ? face.v : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
+    out.faces.push_back(back ? face.v
+                             : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
+    out.triangle.push_back(face.triangle);
   }
+  return out;
+}
+
+Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
+                                       const std::vector<TriangleWork>& work,
+                                       const std::vector<FaceLabel>& labels, PointStore& store,
+                                       Op op) {
+  const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
   double scale = 0.0;
   for (const Vec3 v : soup.vertices) {
     scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
   }
   scale = std::max(scale, std::numeric_limits<double>::min());
-  // Grid sides up to 2^20 ulps of the largest coordinate (about 2.3e-10 of it: within the 1e-9
-  // that ../shared/spec/cli.md allows), each tried only when the previous one failed the check.
-  Status valid = Ok{};
-  for (int level = -1; level <= 20; level += 3) {
-    const Representative rep = representatives(kept, store, level, scale);
-    MeshBooleanResult result;
-    result.mesh = written_mesh(kept, rep, store);
-    valid = check_written(result.mesh);
-    if (!valid) continue;
-    for (const auto& [i, r] : rep) {
-      const Vec3 a = store.rounded(i), b = store.rounded(r);
-      result.moved += (a.x != b.x || a.y != b.y || a.z != b.z) ? 1 : 0;
-    }
-    result.shells = count_shells(result.mesh);
-    result.volume = signed_volume(result.mesh);
-    return result;
+  const Faces faces = merge_coplanar(soup, boundary, store);
+  Result<Mesh> mesh = snap_round(faces, store, scale);
+  if (!mesh) return mesh.error();
+  // Written positions that are not the nearest doubles of an exact point of the result.
+  std::unordered_set<Vec3, Vec3Hash, Vec3Equal> nearest, other;
+  for (const auto& f : faces) {
+    for (const std::int32_t i : f)
+      nearest.insert(store.rounded(i));
   }
-  return valid.error();
+  for (const Vec3 v : mesh->vertices) {
+    if (!nearest.contains(v)) other.insert(v);
+  }
+  MeshBooleanResult result;
+  result.mesh = std::move(*mesh);
+  result.moved = other.size();
+  result.shells = count_shells(result.mesh);
+  result.volume = signed_volume(result.mesh);
+  return result;
 }
 
 }  // namespace contain::clip::solid

@@ -105,11 +105,8 @@ bool coplanar_meet(const Soup& soup, std::int32_t t, std::int32_t u) {
 }
 
 Status failure(const std::string& what) {
-  return Error{
-      .kind = ErrorKind::degenerate,
-      .message =
-          "the result rounded to doubles is not valid (" + what +
-          "), and merging the points within 2^20 ulps of the largest coordinate did not mend it"};
+  return Error{.kind = ErrorKind::degenerate,
+               .message = "the result rounded to doubles is not valid (" + what + ")"};
 }
 
 }  // namespace

@@ -1,0 +1,234 @@
+// Stage 6b of the mesh boolean: coplanar output faces merged (rule solid-output in
+// docs/robustness.md). Each face of the result is a piece of an input triangle; the pieces of one
+// plane that meet across an edge (held by just those two faces, in opposite directions, their
+// third corners on opposite sides of it) form a region, and a region with points inside it that
+// no other face uses is triangulated again without them: the constrained triangulation of its
+// boundary edges and its remaining points inside an enclosing triangle (triangulate.cpp, exact
+// orientations of the implicit points), the region's triangles found by a walk from its boundary
+// edges that never crosses one. Every point on a region's boundary stays (neighbouring faces
+// hold it: dropping it would open the mesh), so the surface is the same point set, closed by
+// point number as before.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "clip/solid/engine.h"
+#include "clip/solid/snap.h"
+#include "contain/core/union_find.h"
+#include "contain/predicates/orient3d.h"
+
+namespace contain::clip::solid {
+namespace {
+
+using Face = std::array<std::int32_t, 3>;
+
+std::uint64_t directed_key(std::int32_t a, std::int32_t b) {
+  return (std::uint64_t{static_cast<std::uint32_t>(a)} << 32U) | static_cast<std::uint32_t>(b);
+}
+
+// Input triangles t and u lie in one plane.
+bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
+  if (t == u) return true;
+  const TriangleIndices& a = soup.triangles[static_cast<std::size_t>(t)];
+  const TriangleIndices& b = soup.triangles[static_cast<std::size_t>(u)];
+  const auto at = [&](std::int32_t i) { return soup.vertices[static_cast<std::size_t>(i)]; };
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (predicates::orient3d(at(a[0]), at(a[1]), at(a[2]), at(b[k])) != Sign::zero) return false;
+  }
+  return true;
+}
+
+// The faces joined into regions: across edges held by exactly two faces in opposite
+// directions, of one plane, lying on the two sides of the edge.
+UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
+                               const PointStore& store) {
+  std::unordered_map<std::uint64_t, std::vector<std::pair<std::size_t, int>>> uses;
+  for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const Face& v = boundary.faces[f];
+      uses[edge_key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % 3)])]
+          .emplace_back(f, k);
+    }
+  }
+  UnionFind<std::size_t> sets(boundary.faces.size());
+  for (const auto& [key, use] : uses) {
+    if (use.size() != 2) continue;
+    const auto [f, i] = use[0];
+    const auto [g, j] = use[1];
+    const Face& a = boundary.faces[f];
+    const Face& b = boundary.faces[g];
+    const std::int32_t p = a[static_cast<std::size_t>(i)],
+                       q = a[static_cast<std::size_t>((i + 1) % 3)];
+    if (b[static_cast<std::size_t>(j)] != q) continue;  // same direction: not one oriented plane
+    if (!same_plane(soup, boundary.triangle[f], boundary.triangle[g])) continue;
+    const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(boundary.triangle[f])));
+    const std::int32_t r = a[static_cast<std::size_t>((i + 2) % 3)];
+    const std::int32_t s = b[static_cast<std::size_t>((j + 2) % 3)];
+    const int sr = to_int(orient2d_dropped(store.point(p), store.point(q), store.point(r), axis));
+    const int ss = to_int(orient2d_dropped(store.point(p), store.point(q), store.point(s), axis));
+    if (sr * ss < 0) sets.unite(f, g);
+  }
+  return sets;
+}
+
+// Corners, counter-clockwise in the projection dropping `axis`, of a triangle of doubles whose
+// projection holds every point of `ids` well inside (the exact points are within half an ulp of
+// their nearest doubles).
+Face enclosing(const std::vector<std::int32_t>& ids, PointStore& store, int axis) {
+  const auto uv = [axis](Vec3 v) {
+    const double c[3] = {v.x, v.y, v.z};
+    return std::array<double, 2>{c[(axis + 1) % 3], c[(axis + 2) % 3]};
+  };
+  std::array<double, 2> lo = uv(store.rounded(ids[0])), hi = lo;
+  for (const std::int32_t i : ids) {
+    const auto p = uv(store.rounded(i));
+    for (std::size_t k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  const double cu = 0.5 * (lo[0] + hi[0]), cv = 0.5 * (lo[1] + hi[1]);
+  const double r = 2.0 * std::max(hi[0] - lo[0], hi[1] - lo[1]) +
+                   1e-10 * (std::fabs(cu) + std::fabs(cv)) + 1e-290;
+  const auto point = [&](double u, double v) {
+    double c[3] = {0.0, 0.0, 0.0};
+    c[(axis + 1) % 3] = u;
+    c[(axis + 2) % 3] = v;
+    return store.add(Vec3{c[0], c[1], c[2]});
+  };
+  return {point(cu - 4 * r, cv - 2 * r), point(cu + 4 * r, cv - 2 * r), point(cu, cv + 4 * r)};
+}
+
+// The region's triangles of the constrained triangulation `tris` (counter-clockwise in the
+// projection): those reached from the boundary edges' inner sides without crossing a boundary
+// edge, turned to the region's orientation. Nothing when a walk reaches the enclosing corners.
+std::optional<std::vector<Face>> inside(const std::vector<Face>& tris,
+                                        const std::vector<std::uint64_t>& outline, bool positive,
+                                        const Face& corners) {
+  std::unordered_map<std::uint64_t, std::size_t> by_edge;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    for (std::size_t k = 0; k < 3; ++k)
+      by_edge[directed_key(tris[t][k], tris[t][(k + 1) % 3])] = t;
+  }
+  std::unordered_set<std::uint64_t> walls;
+  std::vector<std::size_t> stack;
+  for (const std::uint64_t e : outline) {
+    const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
+    walls.insert(edge_key(a, b));
+    const auto it = by_edge.find(positive ? directed_key(a, b) : directed_key(b, a));
+    if (it == by_edge.end()) return std::nullopt;  // not an edge: the pieces were not recovered
+    stack.push_back(it->second);
+  }
+  std::vector<bool> seen(tris.size(), false);
+  std::vector<Face> out;
+  while (!stack.empty()) {
+    const std::size_t t = stack.back();
+    stack.pop_back();
+    if (seen[t]) continue;
+    seen[t] = true;
+    const Face& v = tris[t];
+    for (const std::int32_t c : corners) {
+      if (std::find(v.begin(), v.end(), c) != v.end()) return std::nullopt;
+    }
+    out.push_back(positive ? v : Face{v[0], v[2], v[1]});
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (walls.contains(edge_key(v[k], v[(k + 1) % 3]))) continue;
+      const auto it = by_edge.find(directed_key(v[(k + 1) % 3], v[k]));
+      if (it != by_edge.end()) stack.push_back(it->second);
+    }
+  }
+  return out;
+}
+
+// Region `faces` (indices into `all`) triangulated again without `dropped` points, or nothing
+// when there is nothing to drop or the walk failed (the faces are then kept as they are).
+std::optional<std::vector<Face>> retriangulated(const Soup& soup, const BoundaryFaces& all,
+                                                const std::vector<std::size_t>& faces,
+                                                const std::vector<std::int32_t>& keep,
+                                                const std::vector<std::uint64_t>& outline,
+                                                PointStore& store) {
+  const Face& first = all.faces[faces[0]];
+  const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(all.triangle[faces[0]])));
+  const bool positive = orient2d_dropped(store.point(first[0]), store.point(first[1]),
+                                         store.point(first[2]), axis) == Sign::positive;
+  std::vector<std::array<std::int32_t, 2>> pieces;
+  for (const std::uint64_t e : outline)
+    pieces.push_back({static_cast<std::int32_t>(e >> 32U), static_cast<std::int32_t>(e)});
+  const Face corners = enclosing(keep, store, axis);
+  const std::vector<Face> tris = triangulate(corners, keep, pieces, store, axis, Sign::positive);
+  return inside(tris, outline, positive, corners);
+}
+
+}  // namespace
+
+Faces merge_coplanar(const Soup& soup, const BoundaryFaces& boundary, PointStore& store) {
+  UnionFind<std::size_t> sets = regions(soup, boundary, store);
+  std::unordered_map<std::size_t, std::vector<std::size_t>> members;
+  for (std::size_t f = 0; f < boundary.faces.size(); ++f)
+    members[sets.find(f)].push_back(f);
+  // The region of each point, or none when faces of several regions hold it.
+  constexpr std::size_t shared = std::numeric_limits<std::size_t>::max();
+  std::unordered_map<std::int32_t, std::size_t> owner;
+  for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
+    for (const std::int32_t p : boundary.faces[f]) {
+      const auto [it, fresh] = owner.emplace(p, sets.find(f));
+      if (!fresh && it->second != sets.find(f)) it->second = shared;
+    }
+  }
+  Faces out;
+  std::vector<std::size_t> leaders;
+  for (const auto& [leader, faces] : members)
+    leaders.push_back(leader);
+  std::sort(leaders.begin(), leaders.end());  // deterministic output order
+  for (const std::size_t leader : leaders) {
+    const std::vector<std::size_t>& faces = members.at(leader);
+    std::unordered_set<std::uint64_t> directed;
+    for (const std::size_t f : faces) {
+      const Face& v = boundary.faces[f];
+      for (std::size_t k = 0; k < 3; ++k)
+        directed.insert(directed_key(v[k], v[(k + 1) % 3]));
+    }
+    std::vector<std::uint64_t> outline;  // directed edges whose reverse is in no region face
+    std::unordered_set<std::int32_t> on_outline;
+    for (const std::uint64_t e : directed) {
+      const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
+      if (directed.contains(directed_key(b, a))) continue;
+      outline.push_back(e);
+      on_outline.insert(a);
+      on_outline.insert(b);
+    }
+    std::sort(outline.begin(), outline.end());
+    std::vector<std::int32_t> keep;
+    bool drops = false;
+    for (const std::size_t f : faces) {
+      for (const std::int32_t p : boundary.faces[f]) {
+        if (on_outline.contains(p) || owner.at(p) != leader) {
+          keep.push_back(p);
+        } else {
+          drops = true;
+        }
+      }
+    }
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    std::optional<std::vector<Face>> merged;
+    if (drops) merged = retriangulated(soup, boundary, faces, keep, outline, store);
+    if (merged) {
+      out.insert(out.end(), merged->begin(), merged->end());
+    } else {
+      for (const std::size_t f : faces)
+        out.push_back(boundary.faces[f]);
+    }
+  }
+  return out;
+}
+
+}  // namespace contain::clip::solid
