@@ -104,6 +104,15 @@ ExactPoint normalized(ExactPoint p) {
   return with_bounds(std::move(p));
 }
 
+// p with its big numbers: p itself, or for a point of doubles (which stores none: most input
+// vertices never reach the big numbers) `scratch` filled from v.
+const ExactPoint& full(const ExactPoint& p, ExactPoint& scratch) {
+  if (!p.plain) return p;
+  scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
+  scratch.w = BigFloat(1.0);
+  return scratch;
+}
+
 // The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
 bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis,
                        Sign& s) {
@@ -115,7 +124,9 @@ bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoin
 }
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.
-std::array<BigFloat, 3> dropped(const ExactPoint& p, int axis) {
+std::array<BigFloat, 3> dropped(const ExactPoint& q, int axis) {
+  ExactPoint scratch;
+  const ExactPoint& p = full(q, scratch);
   return {p.x[static_cast<std::size_t>((axis + 1) % 3)],
           p.x[static_cast<std::size_t>((axis + 2) % 3)], p.w};
 }
@@ -159,6 +170,26 @@ double nearest_quotient(const BigFloat& x, const BigFloat& w) {
   return c;
 }
 
+// The exact tests behind the filters of same_point and compare_coordinate.
+bool same_exact(const ExactPoint& a, const ExactPoint& b) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (fa.x[i] * fb.w != fb.x[i] * fa.w) return false;
+  }
+  return true;
+}
+
+Sign compare_exact(const ExactPoint& a, const ExactPoint& b, std::size_t k) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  return (fa.x[k] * fb.w - fb.x[k] * fa.w).sign();
+}
+
 }  // namespace
 
 const BigFloat& component(const BigVec3& v, int i) {
@@ -166,12 +197,7 @@ const BigFloat& component(const BigVec3& v, int i) {
 }
 
 ExactPoint exact_point(Vec3 v) {
-  return {{BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)},
-          BigFloat(1.0),
-          true,
-          v,
-          {v.x, v.y, v.z},
-          {v.x, v.y, v.z}};
+  return {{}, BigFloat(), true, v, {v.x, v.y, v.z}, {v.x, v.y, v.z}};
 }
 
 BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
@@ -211,10 +237,7 @@ bool same_point(const ExactPoint& a, const ExactPoint& b) {
   for (std::size_t i = 0; i < 3; ++i) {
     if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
   }
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (a.x[i] * b.w != b.x[i] * a.w) return false;
-  }
-  return true;
+  return same_exact(a, b);
 }
 
 Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
@@ -225,7 +248,7 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
   const std::size_t k = static_cast<std::size_t>(i);
   if (a.hi[k] < b.lo[k]) return Sign::negative;
   if (a.lo[k] > b.hi[k]) return Sign::positive;
-  return (a.x[k] * b.w - b.x[k] * a.w).sign();
+  return compare_exact(a, b, k);
 }
 
 Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis) {
@@ -243,32 +266,45 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 }
 
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
+  ExactPoint sp;
+  const ExactPoint& fp = full(p, sp);
   const BigVec3 ba = predicates::to_big(a);
   BigFloat s;
   for (int i = 0; i < 3; ++i) {
-    s = s + component(n, i) * (p.x[static_cast<std::size_t>(i)] - component(ba, i) * p.w);
+    s = s + component(n, i) * (fp.x[static_cast<std::size_t>(i)] - component(ba, i) * fp.w);
   }
   return s.sign();
 }
 
 ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
   ExactPoint m;
   for (std::size_t i = 0; i < 3; ++i)
-    m.x[i] = a.x[i] * b.w + b.x[i] * a.w;
-  m.w = (a.w * b.w).scaled(1);
+    m.x[i] = fa.x[i] * fb.w + fb.x[i] * fa.w;
+  m.w = (fa.w * fb.w).scaled(1);
   return with_bounds(std::move(m));
 }
 
 ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  ExactPoint sc;
+  const ExactPoint& fc = full(c, sc);
   ExactPoint m;
-  const BigFloat bc = b.w * c.w, ac = a.w * c.w, ab = a.w * b.w;
+  const BigFloat bc = fb.w * fc.w, ac = fa.w * fc.w, ab = fa.w * fb.w;
   for (std::size_t i = 0; i < 3; ++i)
-    m.x[i] = a.x[i] * bc + b.x[i] * ac + c.x[i] * ab;
-  m.w = BigFloat(3.0) * ab * c.w;
+    m.x[i] = fa.x[i] * bc + fb.x[i] * ac + fc.x[i] * ab;
+  m.w = BigFloat(3.0) * ab * fc.w;
   return with_bounds(std::move(m));
 }
 
 Vec3 nearest_double(const ExactPoint& p) {
+  if (p.plain) return p.v;
   return {nearest_quotient(p.x[0], p.w), nearest_quotient(p.x[1], p.w),
           nearest_quotient(p.x[2], p.w)};
 }
@@ -278,7 +314,12 @@ Vec3 nearest_double(const ExactPoint& p) {
 namespace contain::clip::solid {
 
 BigVec3 direction(const ExactPoint& a, const ExactPoint& b) {
-  return {b.x[0] * a.w - a.x[0] * b.w, b.x[1] * a.w - a.x[1] * b.w, b.x[2] * a.w - a.x[2] * b.w};
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  return {fb.x[0] * fa.w - fa.x[0] * fb.w, fb.x[1] * fa.w - fa.x[1] * fb.w,
+          fb.x[2] * fa.w - fa.x[2] * fb.w};
 }
 
 }  // namespace contain::clip::solid
