@@ -72,16 +72,18 @@ Interval coordinate_interval(const ExactPoint& p, int i) {
   return {p.lo[k], p.hi[k]};
 }
 
-// An enclosure of x / w (w > 0): frexp gives each within a relative 2^-52 (BigFloat::frexp), the
-// quotient of the mantissas adds 2^-53 and ldexp's rounding into the subnormals at most 2^-1075
-// absolute: |q - x / w| <= 2^-50 |x / w| + 2^-1075, covered by 2^-49 |q| + 2^-1072 and one
-// outward step of each end.
+// An enclosure of x / w (w > 0): frexp gives each within a relative 2^-52 (+ 2^-64 from the
+// limbs it drops; BigFloat::frexp), the quotient of the mantissas adds 2^-53 and ldexp's
+// rounding into the subnormals at most 2^-1075 absolute: |q - x / w| < 2^-50.6 |x / w| +
+// 2^-1075, covered by 2^-49 |q| + 2^-1072 and one outward step of each end. An overflowing q
+// gives the whole line.
 Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
   if (x.is_zero()) return {0.0, 0.0};
   std::int64_t ex = 0, ew = 0;
   const double mx = x.frexp(ex), mw = w.frexp(ew);
   const std::int64_t e = std::clamp<std::int64_t>(ex - ew, -4000, 4000);
   const double q = std::ldexp(mx / mw, static_cast<int>(e));
+  if (!std::isfinite(q)) return {-infinity, infinity};  // beyond the doubles: decides nothing
   const double r = std::abs(q) * 0x1p-49 + 0x1p-1072;
   return {down(q - r), up(q + r)};
 }
