@@ -1,6 +1,7 @@
 #include "contain/bvh/bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 // Outline: top-down build over index ranges of `items_`. For each range: the bounds and the
@@ -20,9 +21,10 @@ struct Builder {
   std::vector<Node>& nodes;
   const BuildOptions& options;
   int depth = 0;
-  // Per-axis scratch of the SAH sweep, sized by the bins in use and reset per axis: arrays of
-  // the largest bin count (256 boxes, counts and costs, 16 KiB) constructed afresh at every node
-  // and axis cost more than the sweep itself (half of a self-intersection check's time).
+  // Scratch of the SAH sweep, sized by the bins in use (three axes' bins side by side) and reset
+  // per node: arrays of the largest bin count (256 boxes, counts and costs, 16 KiB) constructed
+  // afresh at every node and axis cost more than the sweep itself (half of a self-intersection
+  // check's time).
   std::vector<Box3> bin_box;
   std::vector<std::size_t> bin_count;
   std::vector<double> right_cost;
@@ -52,6 +54,65 @@ struct Builder {
     nodes[node].count = static_cast<std::int32_t>(end - begin);
   }
 
+  // The bins of every usable axis in one pass over the range (one load of each item's box and
+  // centroid instead of three); each axis's bins are what a pass of their own would give.
+  void fill_bins(const std::array<Binning, 3>& binning, std::size_t begin, std::size_t end,
+                 int bins) {
+    const auto total = static_cast<std::size_t>(3 * bins);
+    bin_box.assign(total, Box3{});
+    bin_count.assign(total, 0);
+    const std::array<bool, 3> usable = {binning[0].usable(), binning[1].usable(),
+                                        binning[2].usable()};
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec3 c = centroid(items[k]);
+      const Box3& b = boxes[static_cast<std::size_t>(items[k])];
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        if (!usable[axis]) continue;
+        const auto slot =
+            axis * static_cast<std::size_t>(bins) +
+            static_cast<std::size_t>(binning[axis].bin_of(axis_of(c, static_cast<int>(axis))));
+        bin_count[slot]++;
+        bin_box[slot].expand(b);
+      }
+    }
+  }
+
+  // The SAH costs of the bin boundaries of one axis; a cheaper one than `best_cost` replaces it.
+  // An empty bin changes neither side's box nor count, so its costs are those of the bin before
+  // it (right: after it), which a strict `<` never prefers: empty bins are skipped (small ranges
+  // fill few of them), and the tree is the one the full sweep builds.
+  void sweep(int axis, int bins, std::size_t n, double& best_cost, int& best_axis,
+             int& best_split) {
+    const std::size_t base = static_cast<std::size_t>(axis) * static_cast<std::size_t>(bins);
+    right_cost.assign(static_cast<std::size_t>(bins), 0.0);
+    Box3 acc;
+    std::size_t acc_n = 0;
+    for (int b = bins - 1; b > 0; --b) {
+      if (bin_count[base + static_cast<std::size_t>(b)] == 0 && b + 1 < bins) {
+        right_cost[static_cast<std::size_t>(b)] = right_cost[static_cast<std::size_t>(b) + 1];
+        continue;
+      }
+      acc.expand(bin_box[base + static_cast<std::size_t>(b)]);
+      acc_n += bin_count[base + static_cast<std::size_t>(b)];
+      right_cost[static_cast<std::size_t>(b)] = surface_area(acc) * static_cast<double>(acc_n);
+    }
+    acc = Box3{};
+    acc_n = 0;
+    for (int b = 0; b + 1 < bins; ++b) {
+      if (bin_count[base + static_cast<std::size_t>(b)] == 0) continue;
+      acc.expand(bin_box[base + static_cast<std::size_t>(b)]);
+      acc_n += bin_count[base + static_cast<std::size_t>(b)];
+      if (acc_n == 0 || acc_n == n) continue;
+      const double cost = surface_area(acc) * static_cast<double>(acc_n) +
+                          right_cost[static_cast<std::size_t>(b) + 1];
+      if (cost < best_cost) {
+        best_cost = cost;
+        best_axis = axis;
+        best_split = b + 1;
+      }
+    }
+  }
+
   void build(std::size_t node, std::size_t begin, std::size_t end, int level) {
     depth = std::max(depth, level);
     Box3 box, cbox;
@@ -70,38 +131,13 @@ struct Builder {
     double best_cost = std::numeric_limits<double>::infinity();
     int best_axis = -1, best_split = 0;
     const double parent_area = surface_area(box);
+    const std::array<Binning, 3> binning = {Binning(cbox.min.x, cbox.max.x, bins),
+                                            Binning(cbox.min.y, cbox.max.y, bins),
+                                            Binning(cbox.min.z, cbox.max.z, bins)};
+    fill_bins(binning, begin, end, bins);
     for (int axis = 0; axis < 3; ++axis) {
-      const Binning binning(axis_of(cbox.min, axis), axis_of(cbox.max, axis), bins);
-      if (!binning.usable()) continue;
-      bin_box.assign(static_cast<std::size_t>(bins), Box3{});
-      bin_count.assign(static_cast<std::size_t>(bins), 0);
-      right_cost.assign(static_cast<std::size_t>(bins), 0.0);
-      for (std::size_t k = begin; k < end; ++k) {
-        const int b = binning.bin_of(axis_of(centroid(items[k]), axis));
-        bin_count[static_cast<std::size_t>(b)]++;
-        bin_box[static_cast<std::size_t>(b)].expand(boxes[static_cast<std::size_t>(items[k])]);
-      }
-      Box3 acc;
-      std::size_t acc_n = 0;
-      for (int b = bins - 1; b > 0; --b) {
-        acc.expand(bin_box[static_cast<std::size_t>(b)]);
-        acc_n += bin_count[static_cast<std::size_t>(b)];
-        right_cost[static_cast<std::size_t>(b)] = surface_area(acc) * static_cast<double>(acc_n);
-      }
-      acc = Box3{};
-      acc_n = 0;
-      for (int b = 0; b + 1 < bins; ++b) {
-        acc.expand(bin_box[static_cast<std::size_t>(b)]);
-        acc_n += bin_count[static_cast<std::size_t>(b)];
-        if (acc_n == 0 || acc_n == n) continue;
-        const double cost = surface_area(acc) * static_cast<double>(acc_n) +
-                            right_cost[static_cast<std::size_t>(b) + 1];
-        if (cost < best_cost) {
-          best_cost = cost;
-          best_axis = axis;
-          best_split = b + 1;
-        }
-      }
+      if (!binning[static_cast<std::size_t>(axis)].usable()) continue;
+      sweep(axis, bins, n, best_cost, best_axis, best_split);
     }
     std::size_t mid = begin;
     if (best_axis >= 0) {
@@ -112,11 +148,11 @@ struct Builder {
         make_leaf(node, begin, end);
         return;
       }
-      const Binning binning(axis_of(cbox.min, best_axis), axis_of(cbox.max, best_axis), bins);
+      const Binning& split = binning[static_cast<std::size_t>(best_axis)];
       const auto it =
           std::partition(items.begin() + static_cast<std::ptrdiff_t>(begin),
                          items.begin() + static_cast<std::ptrdiff_t>(end), [&](std::int32_t i) {
-                           return binning.bin_of(axis_of(centroid(i), best_axis)) < best_split;
+                           return split.bin_of(axis_of(centroid(i), best_axis)) < best_split;
                          });
       mid = static_cast<std::size_t>(it - items.begin());
     }

@@ -62,8 +62,10 @@ struct MeshBooleanResult {
 ///
 /// Complexity: O(n log n) for the hierarchy and the candidate pairs, then work per intersecting
 /// pair and per refined triangle (quadratic in the constraints of one triangle), one ray pair
-/// per patch. All exact arithmetic is big-number arithmetic without a floating-point filter for
-/// now. Single-threaded, deterministic.
+/// per patch. Predicates on implicit points are decided by an interval filter first, by
+/// big-number arithmetic only when it cannot (rule solid-exact-points); the constructions of new
+/// points and their rounding to doubles are big-number arithmetic. Single-threaded,
+/// deterministic.
 ///
 /// Errors: `ErrorKind::invalid_value` for an input that is not closed (the message names the
 /// input index and one unmatched directed edge by its two vertex coordinates) or whose

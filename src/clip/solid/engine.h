@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <optional>
+#include <memory>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -44,7 +44,8 @@ class Soup {
   std::size_t inputs = 0;
 
  private:
-  mutable std::vector<std::optional<BigVec3>> normals_;
+  // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
+  mutable std::vector<std::unique_ptr<BigVec3>> normals_;
 };
 
 /// Hashing and equality of points of doubles by value (+0 and -0 are one key: they are equal).

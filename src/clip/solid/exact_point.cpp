@@ -1,11 +1,14 @@
-// Exact points: constructions in homogeneous coordinates and their predicates, all on
-// `predicates::BigFloat` (rule solid-exact-points). A floating-point filter in front of these is
-// left for later: correctness first.
+// Exact points: constructions in homogeneous coordinates and their predicates, exact on
+// `predicates::BigFloat` (rule solid-exact-points). In front of the big numbers, a filter: each
+// point keeps an interval enclosing each coordinate, and a predicate whose interval evaluation
+// (every operation rounded outward) excludes zero is decided by it; only the undecided ones (a
+// zero or a value within the intervals' width of zero) take the big numbers.
 
 #include "clip/solid/exact_point.h"
 
 #include "contain/predicates/orient2d.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <compare>
@@ -19,17 +22,113 @@ double coordinate(Vec3 v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
+// An interval of doubles [lo, hi]; every operation rounds its ends outward (one step beyond
+// the round-to-nearest result, which is within half a step of the exact end), so the result
+// encloses every value of the operation on the operands' values. Infinite or NaN ends (overflow)
+// make an interval that decides nothing (`sign_of` answers nothing).
+struct Interval {
+  double lo, hi;
+};
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+double down(double x) {
+  return std::nextafter(x, -infinity);
+}
+double up(double x) {
+  return std::nextafter(x, infinity);
+}
+
+Interval operator-(Interval a, Interval b) {
+  if (a.lo == a.hi && b.lo == b.hi) {
+    // Sterbenz and exact cases are common (a point of doubles minus another): still one step.
+    const double d = a.lo - b.lo;
+    return {down(d), up(d)};
+  }
+  return {down(a.lo - b.hi), up(a.hi - b.lo)};
+}
+
+Interval operator*(Interval a, Interval b) {
+  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  return {down(std::min(std::min(p[0], p[1]), std::min(p[2], p[3]))),
+          up(std::max(std::max(p[0], p[1]), std::max(p[2], p[3])))};
+}
+
+// The sign when every value of the interval has it; nothing otherwise.
+bool sign_of(Interval a, Sign& s) {
+  if (a.lo > 0.0 && a.lo <= a.hi) {  // false for NaN ends
+    s = Sign::positive;
+    return true;
+  }
+  if (a.hi < 0.0 && a.lo <= a.hi) {
+    s = Sign::negative;
+    return true;
+  }
+  return false;
+}
+
+Interval coordinate_interval(const ExactPoint& p, int i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {p.lo[k], p.hi[k]};
+}
+
+// An enclosure of x / w (w > 0): frexp gives each within a relative 2^-52 (+ 2^-64 from the
+// limbs it drops; BigFloat::frexp), the quotient of the mantissas adds 2^-53 and ldexp's
+// rounding into the subnormals at most 2^-1075 absolute: |q - x / w| < 2^-50.6 |x / w| +
+// 2^-1075, covered by 2^-49 |q| + 2^-1072 and one outward step of each end. An overflowing q
+// gives the whole line.
+Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
+  if (x.is_zero()) return {0.0, 0.0};
+  std::int64_t ex = 0, ew = 0;
+  const double mx = x.frexp(ex), mw = w.frexp(ew);
+  const std::int64_t e = std::clamp<std::int64_t>(ex - ew, -4000, 4000);
+  const double q = std::ldexp(mx / mw, static_cast<int>(e));
+  if (!std::isfinite(q)) return {-infinity, infinity};  // beyond the doubles: decides nothing
+  const double r = std::abs(q) * 0x1p-49 + 0x1p-1072;
+  return {down(q - r), up(q + r)};
+}
+
+ExactPoint with_bounds(ExactPoint p) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Interval c = quotient_interval(p.x[i], p.w);
+    p.lo[i] = c.lo;
+    p.hi[i] = c.hi;
+  }
+  return p;
+}
+
 ExactPoint normalized(ExactPoint p) {
   if (p.w.sign() == Sign::negative) {
     for (BigFloat& c : p.x)
       c = -c;
     p.w = -p.w;
   }
-  return p;
+  return with_bounds(std::move(p));
+}
+
+// p with its big numbers: p itself, or for a point of doubles (which stores none: most input
+// vertices never reach the big numbers) `scratch` filled from v.
+const ExactPoint& full(const ExactPoint& p, ExactPoint& scratch) {
+  if (!p.plain) return p;
+  scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
+  scratch.w = BigFloat(1.0);
+  return scratch;
+}
+
+// The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
+bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis,
+                       Sign& s) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Interval au = coordinate_interval(a, u), av = coordinate_interval(a, v);
+  const Interval d = (coordinate_interval(b, u) - au) * (coordinate_interval(c, v) - av) -
+                     (coordinate_interval(b, v) - av) * (coordinate_interval(c, u) - au);
+  return sign_of(d, s);
 }
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.
-std::array<BigFloat, 3> dropped(const ExactPoint& p, int axis) {
+std::array<BigFloat, 3> dropped(const ExactPoint& q, int axis) {
+  ExactPoint scratch;
+  const ExactPoint& p = full(q, scratch);
   return {p.x[static_cast<std::size_t>((axis + 1) % 3)],
           p.x[static_cast<std::size_t>((axis + 2) % 3)], p.w};
 }
@@ -73,6 +172,26 @@ double nearest_quotient(const BigFloat& x, const BigFloat& w) {
   return c;
 }
 
+// The exact tests behind the filters of same_point and compare_coordinate.
+bool same_exact(const ExactPoint& a, const ExactPoint& b) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (fa.x[i] * fb.w != fb.x[i] * fa.w) return false;
+  }
+  return true;
+}
+
+Sign compare_exact(const ExactPoint& a, const ExactPoint& b, std::size_t k) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  return (fa.x[k] * fb.w - fb.x[k] * fa.w).sign();
+}
+
 }  // namespace
 
 const BigFloat& component(const BigVec3& v, int i) {
@@ -80,7 +199,7 @@ const BigFloat& component(const BigVec3& v, int i) {
 }
 
 ExactPoint exact_point(Vec3 v) {
-  return {{BigFloat(v.x), BigFloat(v.y), BigFloat(v.z)}, BigFloat(1.0), true, v};
+  return {{}, BigFloat(), true, v, {v.x, v.y, v.z}, {v.x, v.y, v.z}};
 }
 
 BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
@@ -118,9 +237,9 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
   if (a.plain && b.plain) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
   for (std::size_t i = 0; i < 3; ++i) {
-    if (a.x[i] * b.w != b.x[i] * a.w) return false;
+    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
   }
-  return true;
+  return same_exact(a, b);
 }
 
 Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
@@ -129,7 +248,9 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
     return x > y ? Sign::positive : (x < y ? Sign::negative : Sign::zero);
   }
   const std::size_t k = static_cast<std::size_t>(i);
-  return (a.x[k] * b.w - b.x[k] * a.w).sign();
+  if (a.hi[k] < b.lo[k]) return Sign::negative;
+  if (a.lo[k] > b.hi[k]) return Sign::positive;
+  return compare_exact(a, b, k);
 }
 
 Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis) {
@@ -139,6 +260,7 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
                                 {coordinate(b.v, u), coordinate(b.v, v)},
                                 {coordinate(c.v, u), coordinate(c.v, v)});
   }
+  if (Sign s = Sign::zero; filtered_orient2d(a, b, c, axis, s)) return s;
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
   const std::array<BigFloat, 3> m = cross3(pb, pc);
@@ -146,32 +268,45 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 }
 
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
+  ExactPoint sp;
+  const ExactPoint& fp = full(p, sp);
   const BigVec3 ba = predicates::to_big(a);
   BigFloat s;
   for (int i = 0; i < 3; ++i) {
-    s = s + component(n, i) * (p.x[static_cast<std::size_t>(i)] - component(ba, i) * p.w);
+    s = s + component(n, i) * (fp.x[static_cast<std::size_t>(i)] - component(ba, i) * fp.w);
   }
   return s.sign();
 }
 
 ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
   ExactPoint m;
   for (std::size_t i = 0; i < 3; ++i)
-    m.x[i] = a.x[i] * b.w + b.x[i] * a.w;
-  m.w = (a.w * b.w).scaled(1);
-  return m;
+    m.x[i] = fa.x[i] * fb.w + fb.x[i] * fa.w;
+  m.w = (fa.w * fb.w).scaled(1);
+  return with_bounds(std::move(m));
 }
 
 ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  ExactPoint sc;
+  const ExactPoint& fc = full(c, sc);
   ExactPoint m;
-  const BigFloat bc = b.w * c.w, ac = a.w * c.w, ab = a.w * b.w;
+  const BigFloat bc = fb.w * fc.w, ac = fa.w * fc.w, ab = fa.w * fb.w;
   for (std::size_t i = 0; i < 3; ++i)
-    m.x[i] = a.x[i] * bc + b.x[i] * ac + c.x[i] * ab;
-  m.w = BigFloat(3.0) * ab * c.w;
-  return m;
+    m.x[i] = fa.x[i] * bc + fb.x[i] * ac + fc.x[i] * ab;
+  m.w = BigFloat(3.0) * ab * fc.w;
+  return with_bounds(std::move(m));
 }
 
 Vec3 nearest_double(const ExactPoint& p) {
+  if (p.plain) return p.v;
   return {nearest_quotient(p.x[0], p.w), nearest_quotient(p.x[1], p.w),
           nearest_quotient(p.x[2], p.w)};
 }
@@ -181,7 +316,12 @@ Vec3 nearest_double(const ExactPoint& p) {
 namespace contain::clip::solid {
 
 BigVec3 direction(const ExactPoint& a, const ExactPoint& b) {
-  return {b.x[0] * a.w - a.x[0] * b.w, b.x[1] * a.w - a.x[1] * b.w, b.x[2] * a.w - a.x[2] * b.w};
+  ExactPoint sa;
+  const ExactPoint& fa = full(a, sa);
+  ExactPoint sb;
+  const ExactPoint& fb = full(b, sb);
+  return {fb.x[0] * fa.w - fa.x[0] * fb.w, fb.x[1] * fa.w - fa.x[1] * fb.w,
+          fb.x[2] * fa.w - fa.x[2] * fb.w};
 }
 
 }  // namespace contain::clip::solid

@@ -17,13 +17,19 @@ namespace contain::clip::solid {
 using predicates::BigFloat;
 using predicates::BigVec3;
 
-/// (x / w, y / w, z / w) with w > 0. A point of doubles (`exact_point(v)`) also keeps v, so that
-/// predicates on points of doubles only take the filtered predicates of `predicates`.
+/// (x / w, y / w, z / w) with w > 0. A point of doubles (`exact_point(v)`) is only v (x and w
+/// are left zero, made from v when a predicate needs them), so that predicates on points of
+/// doubles only take the filtered predicates of `predicates` and most input vertices never
+/// allocate a big number. Every
+/// point also keeps an enclosure of its coordinates, lo[i] <= x[i] / w <= hi[i] (lo = hi = v for
+/// a point of doubles): the floating-point filter that decides most predicates on implicit
+/// points without the big numbers (rule solid-exact-points).
 struct ExactPoint {
   std::array<BigFloat, 3> x;
   BigFloat w;
-  bool plain = false;  ///< the point is `v`, doubles (w = 1)
+  bool plain = false;  ///< the point is `v`, doubles (x and w not stored)
   Vec3 v{};
+  std::array<double, 3> lo{}, hi{};
 };
 
 /// The double point v.

@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -119,12 +121,12 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
 
 const BigVec3& Soup::normal(std::size_t t) const {
   if (normals_.size() != triangles.size()) normals_.resize(triangles.size());
-  std::optional<BigVec3>& n = normals_[t];
+  std::unique_ptr<BigVec3>& n = normals_[t];
   if (!n) {
     const TriangleIndices& v = triangles[t];
-    n = exact_normal(vertices[static_cast<std::size_t>(v[0])],
-                     vertices[static_cast<std::size_t>(v[1])],
-                     vertices[static_cast<std::size_t>(v[2])]);
+    n = std::make_unique<BigVec3>(exact_normal(vertices[static_cast<std::size_t>(v[0])],
+                                               vertices[static_cast<std::size_t>(v[1])],
+                                               vertices[static_cast<std::size_t>(v[2])]));
   }
   return *n;
 }

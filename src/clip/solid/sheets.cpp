@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -140,18 +141,29 @@ struct Grouping {
 // the written mesh judges the result.
 Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                        const PointStore& store) {
-  std::unordered_map<std::uint64_t, std::vector<Use>> uses;
+  // Every use keyed by its edge, in face order within an edge (the order the fans start from):
+  // one sorted array rather than a list per edge.
+  std::vector<std::pair<std::uint64_t, Use>> uses;
+  uses.reserve(3 * faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = faces[f][static_cast<std::size_t>(k)],
                          b = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-      uses[edge_key(a, b)].push_back({f, a < b ? k : (k + 1) % 3, a < b});
+      uses.emplace_back(edge_key(a, b), Use{f, a < b ? k : (k + 1) % 3, a < b});
     }
   }
+  std::stable_sort(uses.begin(), uses.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   Grouping grouping;
-  for (auto& [key, list] : uses) {
-    if (list.size() == 2) grouping.manifold.emplace_back(list[0], list[1]);
-    if (list.size() <= 2) continue;  // a single face is left to the check
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    const std::uint64_t key = uses[i].first;
+    while (j < uses.size() && uses[j].first == key)
+      ++j;
+    if (j - i == 2) grouping.manifold.emplace_back(uses[i].second, uses[i + 1].second);
+    if (j - i <= 2) continue;  // a single face is left to the check
+    std::vector<Use> list;
+    for (std::size_t k = i; k < j; ++k)
+      list.push_back(uses[k].second);
     sort_around(list, static_cast<std::int32_t>(key >> 32U),
                 static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
     grouping.fans.push_back({key, std::move(list), 0});
