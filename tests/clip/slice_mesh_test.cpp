@@ -345,9 +345,9 @@ TEST(SliceMesh, GenericSectionAreasMatchTheExactArea) {
   }
 }
 
-// The engine's answer for one curve (union, positive) and its provenance: what convex_section
+// The engine's answer for one curve (union, positive) and its provenance: what simple_section
 // must reproduce exactly when it claims a plane.
-void expect_convex_section_is_the_engines(std::span<const clip::slice::CrossingSegment> segments,
+void expect_simple_section_is_the_engines(std::span<const clip::slice::CrossingSegment> segments,
                                           int& claimed, int& declined) {
   std::vector<std::vector<std::int32_t>> under;
   std::vector<Ring> rings = clip::slice::chain_rings(segments, &under);
@@ -355,7 +355,7 @@ void expect_convex_section_is_the_engines(std::span<const clip::slice::CrossingS
       clip::polygon_boolean(rings, {}, {.op = clip::Op::union_, .fill = Fill::positive});
   const auto engine_triangles = clip::slice::edge_triangles(engine, segments);
   Section fast;
-  if (!clip::slice::convex_section(rings, under, segments.size(), fast)) {
+  if (!clip::slice::simple_section(rings, under, segments.size(), fast)) {
     ++declined;
     return;
   }
@@ -377,10 +377,11 @@ std::vector<clip::slice::CrossingSegment> curve_of(const Mesh& mesh, double c) {
   return std::move(curves.above);
 }
 
-TEST(SliceMesh, ConvexSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
+TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
   // Spheres apart (disjoint boxes: claimed), overlapping (boxes meet: the engine), nested
   // (a hollow sphere's annulus: the engine), a torus (two rings, one inside: the engine), and
-  // random convex polygons as curves, some touching, some clockwise, some with a repeated point.
+  // random convex, star-shaped and self-crossing polygons as curves, some touching, some
+  // clockwise, some with a repeated point.
   const Mesh a = uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40);
   const Mesh far = joined(a, uv_sphere({3.1, 0.4, 0.05}, 0.9, 18, 29));
   const Mesh overlapping = joined(a, uv_sphere({0.7, 0.3, 0.0}, 0.8, 18, 29));
@@ -392,7 +393,7 @@ TEST(SliceMesh, ConvexSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
   for (const Mesh* mesh : {&a, &far, &overlapping, &hollow, &torus}) {
     for (int i = 0; i < case_budget(40, 4); ++i) {
       const double c = z(rng);
-      expect_convex_section_is_the_engines(curve_of(*mesh, c), claimed, declined);
+      expect_simple_section_is_the_engines(curve_of(*mesh, c), claimed, declined);
     }
   }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -411,19 +412,25 @@ TEST(SliceMesh, ConvexSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
         t = 6.283185307179586 * unit(rng);
       std::sort(angles.begin(), angles.end());
       if (unit(rng) < 0.2) std::reverse(angles.begin(), angles.end());
+      if (unit(rng) < 0.1) std::shuffle(angles.begin(), angles.end(), rng);  // self-crossing
+      // Half of the rings star-shaped (radii varying): concave, simple, around the center.
+      const bool star = unit(rng) < 0.5;
+      std::vector<Vec2> points;
+      for (const double t : angles) {
+        const double rt = star ? radius * (0.5 + 0.5 * unit(rng)) : radius;
+        points.push_back(center + rt * Vec2{std::cos(t), std::sin(t)});
+      }
       const std::uint64_t first = key;
       for (int k = 0; k < n; ++k) {
-        const double t0 = angles[static_cast<std::size_t>(k)];
-        const double t1 = angles[static_cast<std::size_t>((k + 1) % n)];
         const std::uint64_t to = k + 1 == n ? first : key + 1;
-        segments.push_back({key, to, center + radius * Vec2{std::cos(t0), std::sin(t0)},
-                            center + radius * Vec2{std::cos(t1), std::sin(t1)},
+        segments.push_back({key, to, points[static_cast<std::size_t>(k)],
+                            points[static_cast<std::size_t>((k + 1) % n)],
                             static_cast<std::int32_t>(segments.size())});
         ++key;
       }
     }
     std::shuffle(segments.begin(), segments.end(), rng);
-    expect_convex_section_is_the_engines(segments, claimed, declined);
+    expect_simple_section_is_the_engines(segments, claimed, declined);
   }
   EXPECT_GT(claimed, 0);
   EXPECT_GT(declined, 0);

@@ -82,12 +82,13 @@ struct PlaneCurves {
     std::vector<std::vector<std::int32_t>>* triangles = nullptr);
 
 /// The section of a plane through no vertex when the chained rings are already the answer:
-/// every ring strictly convex and counter-clockwise (exact orient2d at every vertex, one turn),
-/// their boxes pairwise disjoint, and every segment used by a ring. Then the rings are simple,
-/// disjoint and not nested, so `polygon_boolean` (union, positive) would return each ring as a
-/// polygon, in order, from its first point, and each edge's provenance is its own segment.
-/// False (out untouched) when that is not proven: the caller runs the 2D engine.
-[[nodiscard]] bool convex_section(std::vector<Ring>& rings,
+/// every ring proven simple and counter-clockwise (star-shaped about the mean of its vertices,
+/// or strictly convex: exact orient2d at every vertex, one turn), their boxes pairwise disjoint,
+/// and every segment used by a ring. Then the rings are simple, disjoint and not nested, so
+/// `polygon_boolean` (union, positive) would return each ring as a polygon, in order, from its
+/// first point, and each edge's provenance is its own segment. False (out untouched) when that
+/// is not proven: the caller runs the 2D engine.
+[[nodiscard]] bool simple_section(std::vector<Ring>& rings,
                                   std::vector<std::vector<std::int32_t>>& triangles,
                                   std::size_t segments, Section& out);
 

@@ -17,7 +17,7 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
     // are the section (rule slice-two-sides).
     std::vector<std::vector<std::int32_t>> under;
     std::vector<Ring> above = chain_rings(curves.above, &under);
-    if (convex_section(above, under, curves.above.size(), out)) return out;
+    if (simple_section(above, under, curves.above.size(), out)) return out;
     out.region = polygon_boolean(above, {}, {.op = Op::union_, .fill = Fill::positive});
     out.triangles = edge_triangles(out.region, curves.above);
     return out;
