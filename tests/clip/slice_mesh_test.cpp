@@ -2,11 +2,14 @@
 
 #include "contain/clip/slice_mesh.h"
 
+#include "contain/clip/polygon_boolean.h"
+
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -340,6 +343,97 @@ TEST(SliceMesh, GenericSectionAreasMatchTheExactArea) {
       EXPECT_GT(exact, 0);
     }
   }
+}
+
+// The engine's answer for one curve (union, positive) and its provenance: what simple_section
+// must reproduce exactly when it claims a plane.
+void expect_simple_section_is_the_engines(std::span<const clip::slice::CrossingSegment> segments,
+                                          int& claimed, int& declined) {
+  std::vector<std::vector<std::int32_t>> under;
+  std::vector<Ring> rings = clip::slice::chain_rings(segments, &under);
+  const MultiPolygon engine =
+      clip::polygon_boolean(rings, {}, {.op = clip::Op::union_, .fill = Fill::positive});
+  const auto engine_triangles = clip::slice::edge_triangles(engine, segments);
+  Section fast;
+  if (!clip::slice::simple_section(rings, under, segments.size(), fast)) {
+    ++declined;
+    return;
+  }
+  ++claimed;
+  ASSERT_EQ(fast.region.polygons.size(), engine.polygons.size());
+  for (std::size_t i = 0; i < engine.polygons.size(); ++i)
+    EXPECT_EQ(fast.region.polygons[i].rings, engine.polygons[i].rings) << "polygon " << i;
+  EXPECT_EQ(fast.triangles, engine_triangles);
+}
+
+// The crossing segments of the plane z = c through every triangle of `mesh` (c on no vertex).
+std::vector<clip::slice::CrossingSegment> curve_of(const Mesh& mesh, double c) {
+  const clip::slice::SweepMesh prepared =
+      clip::slice::prepare(mesh, clip::slice::frame_of(Axis::z));
+  std::vector<std::int32_t> all(prepared.triangles.size());
+  std::iota(all.begin(), all.end(), 0);
+  clip::slice::PlaneCurves curves = clip::slice::crossing_segments(prepared, all, c);
+  EXPECT_FALSE(curves.touches) << c;
+  return std::move(curves.above);
+}
+
+TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
+  // Spheres apart (disjoint boxes: claimed), overlapping (boxes meet: the engine), nested
+  // (a hollow sphere's annulus: the engine), a torus (two rings, one inside: the engine), and
+  // random convex, star-shaped and self-crossing polygons as curves, some touching, some
+  // clockwise, some with a repeated point.
+  const Mesh a = uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40);
+  const Mesh far = joined(a, uv_sphere({3.1, 0.4, 0.05}, 0.9, 18, 29));
+  const Mesh overlapping = joined(a, uv_sphere({0.7, 0.3, 0.0}, 0.8, 18, 29));
+  const Mesh hollow = joined(a, uv_sphere({0.0, 0.0, 0.0}, 0.5, 12, 17), true);
+  const Mesh torus = scenes::torus(2.0, 0.6, 32, 16);
+  int claimed = 0, declined = 0;
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> z(-0.95, 0.95);
+  for (const Mesh* mesh : {&a, &far, &overlapping, &hollow, &torus}) {
+    for (int i = 0; i < case_budget(40, 4); ++i) {
+      const double c = z(rng);
+      expect_simple_section_is_the_engines(curve_of(*mesh, c), claimed, declined);
+    }
+  }
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < case_budget(400, 4); ++i) {
+    std::vector<clip::slice::CrossingSegment> segments;
+    const int rings = 1 + static_cast<int>(unit(rng) * 3);
+    std::uint64_t key = 0;
+    for (int r = 0; r < rings; ++r) {
+      // Points on a circle at sorted angles: convex, occasionally collinear or repeated once
+      // rounded (tiny radius), clockwise when reversed.
+      const int n = 3 + static_cast<int>(unit(rng) * 8);
+      const double radius = unit(rng) < 0.1 ? 1e-300 : 0.2 + unit(rng);
+      const Vec2 center{3.0 * unit(rng), 3.0 * unit(rng)};
+      std::vector<double> angles(static_cast<std::size_t>(n));
+      for (double& t : angles)
+        t = 6.283185307179586 * unit(rng);
+      std::sort(angles.begin(), angles.end());
+      if (unit(rng) < 0.2) std::reverse(angles.begin(), angles.end());
+      if (unit(rng) < 0.1) std::shuffle(angles.begin(), angles.end(), rng);  // self-crossing
+      // Half of the rings star-shaped (radii varying): concave, simple, around the center.
+      const bool star = unit(rng) < 0.5;
+      std::vector<Vec2> points;
+      for (const double t : angles) {
+        const double rt = star ? radius * (0.5 + 0.5 * unit(rng)) : radius;
+        points.push_back(center + rt * Vec2{std::cos(t), std::sin(t)});
+      }
+      const std::uint64_t first = key;
+      for (int k = 0; k < n; ++k) {
+        const std::uint64_t to = k + 1 == n ? first : key + 1;
+        segments.push_back({key, to, points[static_cast<std::size_t>(k)],
+                            points[static_cast<std::size_t>((k + 1) % n)],
+                            static_cast<std::int32_t>(segments.size())});
+        ++key;
+      }
+    }
+    std::shuffle(segments.begin(), segments.end(), rng);
+    expect_simple_section_is_the_engines(segments, claimed, declined);
+  }
+  EXPECT_GT(claimed, 0);
+  EXPECT_GT(declined, 0);
 }
 
 TEST(SliceMesh, CrossingVerticesAreTheNearestDoubles) {

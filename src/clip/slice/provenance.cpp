@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -21,14 +22,6 @@
 namespace contain::clip::slice {
 
 namespace {
-
-struct Endpoint {
-  Vec2 p;
-  std::int32_t segment;
-};
-bool less(Vec2 a, Vec2 b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
 
 bool in_box(Vec2 a, Vec2 b, Vec2 p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
@@ -79,27 +72,70 @@ std::optional<Score> score(const CrossingSegment& s, Vec2 p, Vec2 q, const Score
   return out;
 }
 
-class Matcher {
+// The segments by endpoint: open addressing on the point's bits (+0 and -0 made one), each slot
+// the head of a list of segment ends. Built in O(k) per plane where sorting the 2k ends cost a
+// tenth of slicing 10,000 planes.
+class EndIndex {
  public:
-  explicit Matcher(std::span<const CrossingSegment> segments) : segments_(segments) {
-    ends_.reserve(2 * segments.size());
+  explicit EndIndex(std::span<const CrossingSegment> segments) {
+    std::size_t size = 16;
+    while (size < 4 * segments.size())
+      size *= 2;
+    slots_.assign(size, Slot{});
+    next_.resize(2 * segments.size());
     for (std::size_t i = 0; i < segments.size(); ++i) {
-      ends_.push_back({segments[i].from, static_cast<std::int32_t>(i)});
-      ends_.push_back({segments[i].to, static_cast<std::int32_t>(i)});
+      link(segments[i].from, static_cast<std::int32_t>(2 * i));
+      link(segments[i].to, static_cast<std::int32_t>(2 * i + 1));
     }
-    std::sort(ends_.begin(), ends_.end(), [](const Endpoint& a, const Endpoint& b) {
-      return less(a.p, b.p) || (a.p == b.p && a.segment < b.segment);
-    });
+  }
+  // Calls f(segment) for each end of a segment at p.
+  template <class F>
+  void each_at(Vec2 p, F&& f) const {
+    for (std::int32_t e = slots_[find(p)].head; e >= 0; e = next_[static_cast<std::size_t>(e)])
+      f(e >> 1);
   }
 
+ private:
+  struct Slot {
+    Vec2 p;
+    std::int32_t head = -1;
+  };
+  static std::uint64_t bits(double x) {
+    const double y = x + 0.0;  // -0 + 0 is +0: equal doubles, equal bits
+    std::uint64_t out = 0;
+    std::memcpy(&out, &y, sizeof out);
+    return out;
+  }
+  std::size_t find(Vec2 p) const {
+    const std::size_t mask = slots_.size() - 1;
+    const std::uint64_t h =
+        (bits(p.x) * 0x9E3779B97F4A7C15ULL) ^ (bits(p.y) * 0xC2B2AE3D27D4EB4FULL);
+    for (std::size_t i = (h >> 20) & mask;; i = (i + 1) & mask) {
+      if (slots_[i].head < 0 || slots_[i].p == p) return i;
+    }
+  }
+  void link(Vec2 p, std::int32_t end) {
+    Slot& slot = slots_[find(p)];
+    slot.p = p;
+    next_[static_cast<std::size_t>(end)] = slot.head;
+    slot.head = end;
+  }
+  std::vector<Slot> slots_;
+  std::vector<std::int32_t> next_;
+};
+
+class Matcher {
+ public:
+  explicit Matcher(std::span<const CrossingSegment> segments)
+      : segments_(segments), ends_(segments) {}
+
+  // The candidates are the segments with an end at p or q (the engine keeps input vertices),
+  // then, when none holds the edge exactly, the segments near it; the best by `Score`, whose
+  // order does not depend on the order of the candidates.
   std::int32_t triangle(Vec2 p, Vec2 q) {
     Score best;
-    for (const Vec2 end : {p, q}) {
-      auto it = std::lower_bound(ends_.begin(), ends_.end(), end,
-                                 [](const Endpoint& e, Vec2 x) { return less(e.p, x); });
-      for (; it != ends_.end() && it->p == end; ++it)
-        consider(it->segment, p, q, best);
-    }
+    for (const Vec2 end : {p, q})
+      ends_.each_at(end, [&](std::int32_t i) { consider(i, p, q, best); });
     if (!best.exact) near(p, q, best);
     return best.triangle == std::numeric_limits<std::int32_t>::max() ? -1 : best.triangle;
   }
@@ -148,7 +184,7 @@ class Matcher {
   }
 
   std::span<const CrossingSegment> segments_;
-  std::vector<Endpoint> ends_;
+  EndIndex ends_;
   std::optional<bvh::Bvh> tree_;
   double scale_ = 0.0;
 };

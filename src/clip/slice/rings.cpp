@@ -13,7 +13,8 @@
 
 namespace contain::clip::slice {
 
-std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments) {
+std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments,
+                              std::vector<std::vector<std::int32_t>>* triangles) {
   // Segments sorted by the key they leave; next[g] is the first unused one of each run.
   std::vector<std::int32_t> by_from;
   by_from.reserve(segments.size());
@@ -48,11 +49,15 @@ std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments) {
   for (const std::int32_t start : by_from) {
     if (used[static_cast<std::size_t>(start)]) continue;
     Ring ring;
+    std::vector<std::int32_t> under;  // the triangle of each edge, recorded while chaining
     for (std::int32_t s = start; s >= 0; s = take(segments[static_cast<std::size_t>(s)].to_key)) {
       used[static_cast<std::size_t>(s)] = 1;
       ring.push_back(segments[static_cast<std::size_t>(s)].from);
+      if (triangles != nullptr) under.push_back(segments[static_cast<std::size_t>(s)].triangle);
     }
-    if (ring.size() >= 3) rings.push_back(std::move(ring));
+    if (ring.size() < 3) continue;
+    rings.push_back(std::move(ring));
+    if (triangles != nullptr) triangles->push_back(std::move(under));
   }
   return rings;
 }

@@ -74,8 +74,23 @@ struct PlaneCurves {
 
 /// Closed paths through the segments, joined where one's to_key is another's from_key. The
 /// segments of a closed mesh balance at every key, so every walk closes; zero-length pieces
-/// (from_key == to_key) are left out. Deterministic for a given segment order.
-[[nodiscard]] std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments);
+/// (from_key == to_key) are left out, and so are paths of fewer than 3 points. Deterministic for
+/// a given segment order. `triangles`, when given, receives per ring the triangle of the segment
+/// each edge (point k to k + 1) comes from.
+[[nodiscard]] std::vector<Ring> chain_rings(
+    std::span<const CrossingSegment> segments,
+    std::vector<std::vector<std::int32_t>>* triangles = nullptr);
+
+/// The section of a plane through no vertex when the chained rings are already the answer:
+/// every ring proven simple and counter-clockwise (star-shaped about the mean of its vertices,
+/// or strictly convex: exact orient2d at every vertex, one turn), their boxes pairwise disjoint,
+/// and every segment used by a ring. Then the rings are simple, disjoint and not nested, so
+/// `polygon_boolean` (union, positive) would return each ring as a polygon, in order, from its
+/// first point, and each edge's provenance is its own segment. False (out untouched) when that
+/// is not proven: the caller runs the 2D engine.
+[[nodiscard]] bool simple_section(std::vector<Ring>& rings,
+                                  std::vector<std::vector<std::int32_t>>& triangles,
+                                  std::size_t segments, Section& out);
 
 /// For each ring of `region` (in `all_rings` order) and each of its edges, the triangle of a
 /// segment that the edge lies on: exactly (both ends on the segment, exact orient2d), else the

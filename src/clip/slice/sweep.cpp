@@ -12,14 +12,17 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
   const PlaneCurves curves = crossing_segments(mesh, active, c);
   Section out;
   out.value = c;
-  const std::vector<Ring> above = chain_rings(curves.above);
   if (!curves.touches) {
     // No vertex on the plane: both sides have the same curve, whose positive winding numbers
     // are the section (rule slice-two-sides).
+    std::vector<std::vector<std::int32_t>> under;
+    std::vector<Ring> above = chain_rings(curves.above, &under);
+    if (simple_section(above, under, curves.above.size(), out)) return out;
     out.region = polygon_boolean(above, {}, {.op = Op::union_, .fill = Fill::positive});
     out.triangles = edge_triangles(out.region, curves.above);
     return out;
   }
+  const std::vector<Ring> above = chain_rings(curves.above);
   const std::vector<Ring> below = chain_rings(curves.below);
   out.region = polygon_boolean(above, below, {.op = Op::intersection, .fill = Fill::positive});
   std::vector<CrossingSegment> both = curves.above;
