@@ -109,7 +109,9 @@ Limbs multiply_limbs(std::span<const std::uint32_t> a, std::span<const std::uint
 
 BigFloat::BigFloat(double x) {
   assert(std::isfinite(x) && "BigFloat takes finite doubles only");
-  if (x == 0.0) return;
+  // A broken precondition in a release build: zero, not an endless loop over the mantissa of
+  // frexp(inf) (an exact predicate handed an infinity must still return, if meaninglessly).
+  if (x == 0.0 || !std::isfinite(x)) return;
   negative_ = x < 0.0;
   int e = 0;
   // frexp is exact, subnormals included: |x| = f * 2^e with f in [0.5, 1).

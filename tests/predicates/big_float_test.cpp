@@ -3,11 +3,14 @@
 // helpers used by the CSG analysis and the perturbed ray.
 
 #include "contain/predicates/big_float.h"
+#include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
 
 #include <gtest/gtest.h>
 
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -132,6 +135,18 @@ TEST(BigFloat, ResidueIsTheRationalValueModuloThePrime) {
     }
   }
 }
+
+#ifdef NDEBUG
+// Non-finite input breaks the predicates' precondition (debug builds assert); a release build
+// must still return rather than loop over the mantissa of frexp(inf).
+TEST(BigFloat, InfinityOrNanInAReleaseBuildEndsInsteadOfLooping) {
+  EXPECT_TRUE(BigFloat(std::numeric_limits<double>::infinity()).is_zero());
+  EXPECT_TRUE(BigFloat(std::numeric_limits<double>::quiet_NaN()).is_zero());
+  const double inf = std::numeric_limits<double>::infinity();
+  (void)orient2d(Vec2{inf, 0}, Vec2{1, 0}, Vec2{0, 1});
+  (void)orient3d(Vec3{inf, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1});
+}
+#endif
 
 }  // namespace
 }  // namespace contain::predicates
