@@ -102,22 +102,6 @@ std::vector<Csg> operands_of(const py::args& args) {
   return operands;
 }
 
-const char* op_name(CsgOp op) {
-  switch (op) {
-    case CsgOp::leaf:
-      return "leaf";
-    case CsgOp::unite:
-      return "union";
-    case CsgOp::intersection:
-      return "intersection";
-    case CsgOp::difference:
-      return "difference";
-    case CsgOp::complement:
-      return "complement";
-  }
-  return "leaf";
-}
-
 std::string leaf_name(const CsgLeaf& leaf) {
   static constexpr const char* kNames[] = {"sphere", "box",      "halfspace",
                                            "convex", "implicit", "mesh"};
@@ -246,7 +230,7 @@ or text). Errors name the JSON path of the offending value.
            [](const Csg& a, const py::object& b) { return Csg::difference(a, to_csg(b)); })
       .def("__invert__", [](const Csg& a) { return Csg::complement(a); })
       .def_property_readonly(
-          "op", [](const Csg& c) { return op_name(c.op()); },
+          "op", [](const Csg& c) { return shapes::to_string(c.op()); },
           "'leaf', 'union', 'intersection', 'difference' or 'complement'.")
       .def_property_readonly(
           "operands",
@@ -283,7 +267,7 @@ the GIL.
 )doc")
       .def("__repr__", [](const Csg& c) {
         if (c.op() == CsgOp::leaf) return "contain.Csg." + leaf_name(c.solid()) + "(...)";
-        return "contain.Csg(" + std::string(op_name(c.op())) + " of " +
+        return "contain.Csg(" + std::string(shapes::to_string(c.op())) + " of " +
                std::to_string(c.operands().size()) + ")";
       });
 

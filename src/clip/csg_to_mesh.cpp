@@ -22,26 +22,9 @@
 namespace contain::clip {
 namespace {
 
-// The words of io::parse_csg_json's grammar, for the paths in messages.
-const char* op_word(CsgOp op) {
-  switch (op) {
-    case CsgOp::unite:
-      return "union";
-    case CsgOp::intersection:
-      return "intersection";
-    case CsgOp::difference:
-      return "difference";
-    case CsgOp::complement:
-      return "complement";
-    case CsgOp::leaf:
-      break;
-  }
-  return "leaf";
-}
-
 std::string operand_path(const std::string& path, CsgOp op, std::size_t i) {
   if (op == CsgOp::complement) return path + "complement.";
-  return path + op_word(op) + "[" + std::to_string(i) + "].";
+  return path + shapes::to_string(op) + "[" + std::to_string(i) + "].";
 }
 
 Error at(const std::string& path, Error error) {
@@ -165,7 +148,7 @@ struct Evaluator {
           return csg_leaf_mesh(bounds, bounds);  // all of space, inside the box
         }
         if (Status s = gather(node, path, inputs); !s) return s.error();
-        return boolean(path + op_word(node.op()), inputs,
+        return boolean(path + shapes::to_string(node.op()), inputs,
                        node.op() == CsgOp::unite ? Op::union_ : Op::intersection);
       }
       case CsgOp::difference: {
@@ -181,7 +164,7 @@ struct Evaluator {
           if (!second) return second;
           inputs.push_back(std::move(*second));
         }
-        return boolean(path + op_word(node.op()), inputs, Op::difference);
+        return boolean(path + shapes::to_string(node.op()), inputs, Op::difference);
       }
       case CsgOp::complement: {
         auto box = csg_leaf_mesh(bounds, bounds);
@@ -189,7 +172,7 @@ struct Evaluator {
         if (!operand) return operand;
         inputs.push_back(std::move(*box));
         inputs.push_back(std::move(*operand));
-        return boolean(path + op_word(node.op()), inputs, Op::difference);
+        return boolean(path + shapes::to_string(node.op()), inputs, Op::difference);
       }
     }
     return Mesh{};

@@ -35,22 +35,6 @@ bool finite(double v) {
   return std::isfinite(v);
 }
 
-std::string op_name(CsgOp op) {
-  switch (op) {
-    case CsgOp::leaf:
-      return "leaf";
-    case CsgOp::unite:
-      return "union";
-    case CsgOp::intersection:
-      return "intersection";
-    case CsgOp::difference:
-      return "difference";
-    case CsgOp::complement:
-      return "complement";
-  }
-  return "?";
-}
-
 // Empty string when the leaf is valid, else the reason; `kind` is set to what
 // the reason is.
 std::string check_leaf(const CsgLeaf& leaf, ErrorKind& kind) {
@@ -294,15 +278,17 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh
     const std::size_t arity = t.operands().size();
     if ((t.op() == CsgOp::difference && arity != 2) ||
         (t.op() == CsgOp::complement && arity != 1)) {
-      return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") + op_name(t.op()) +
-                                                 " has " + std::to_string(arity) + " operands"};
+      return Error{ErrorKind::invalid_value, (path.empty() ? "" : path + ": ") +
+                                                 shapes::to_string(t.op()) + " has " +
+                                                 std::to_string(arity) + " operands"};
     }
     solid.nodes_[at].first = static_cast<std::int32_t>(solid.children_.size());
     solid.nodes_[at].count = static_cast<std::int32_t>(arity);
     for (std::size_t k = 0; k < arity; ++k) {
       solid.children_.push_back(static_cast<std::int32_t>(queue.size()));
-      queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") + op_name(t.op()) + "[" +
-                                             std::to_string(k) + "]"});
+      queue.push_back({&t.operands()[k], path + (path.empty() ? "" : ".") +
+                                             shapes::to_string(t.op()) + "[" + std::to_string(k) +
+                                             "]"});
       solid.nodes_.push_back({});
     }
   }

@@ -2,6 +2,22 @@
 
 namespace contain::shapes {
 
+const char* to_string(CsgOp op) {
+  switch (op) {
+    case CsgOp::leaf:
+      break;
+    case CsgOp::unite:
+      return "union";
+    case CsgOp::intersection:
+      return "intersection";
+    case CsgOp::difference:
+      return "difference";
+    case CsgOp::complement:
+      return "complement";
+  }
+  return "leaf";
+}
+
 Csg Csg::leaf(CsgLeaf solid) {
   return Csg(CsgOp::leaf, {}, std::make_shared<const CsgLeaf>(std::move(solid)));
 }

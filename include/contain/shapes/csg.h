@@ -79,6 +79,10 @@ class Csg {
   std::shared_ptr<const CsgLeaf> leaf_;
 };
 
+/// The operation's word in the CSG JSON grammar and Python's `Csg.op`: `leaf`, `union`,
+/// `intersection`, `difference`, `complement` (`unite` is spelt `union` there, a C++ keyword).
+[[nodiscard]] const char* to_string(CsgOp op);
+
 }  // namespace contain::shapes
 
 // Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
