@@ -35,6 +35,10 @@ namespace contain::scenes {
 [[nodiscard]] std::vector<Vec3> uniform_points(const Box3& box, std::size_t count,
                                                std::uint64_t seed);
 
+/// A closed, outward oriented UV sphere: `rings` latitude bands, `sides` longitudes, the poles
+/// as single vertices (2 rings sides - 2 sides triangles), inscribed in the exact sphere.
+[[nodiscard]] Mesh uv_sphere(Vec3 center, double radius, int rings, int sides);
+
 /// A closed, outward oriented torus around the z axis: `major` and `minor` radii, `rings` x
 /// `sides` quads split into triangles.
 [[nodiscard]] Mesh torus(double major, double minor, int rings, int sides);

@@ -18,6 +18,8 @@
 
 #include "contain/clip/slice_mesh.h"
 
+#include "scenes/scenes.h"
+
 #ifdef CONTAIN_BENCH_HAS_CGAL
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_slicer.h>
@@ -27,31 +29,6 @@
 namespace {
 
 using namespace contain;
-
-Mesh uv_sphere(int rings, int sides) {
-  Mesh m;
-  m.vertices.push_back({0, 0, -1});
-  for (int i = 1; i < rings; ++i) {
-    const double phi = std::numbers::pi * (static_cast<double>(i) / rings - 0.5);
-    for (int j = 0; j < sides; ++j) {
-      const double theta = 2 * std::numbers::pi * j / sides;
-      m.vertices.push_back(
-          {std::cos(phi) * std::cos(theta), std::cos(phi) * std::sin(theta), std::sin(phi)});
-    }
-  }
-  m.vertices.push_back({0, 0, 1});
-  const auto at = [&](int ring, int j) { return 1 + (ring - 1) * sides + (j % sides); };
-  const int top = static_cast<int>(m.vertices.size()) - 1;
-  for (int j = 0; j < sides; ++j) {
-    m.triangles.push_back({0, at(1, j + 1), at(1, j)});
-    m.triangles.push_back({top, at(rings - 1, j), at(rings - 1, j + 1)});
-    for (int i = 1; i + 1 < rings; ++i) {
-      m.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-    }
-  }
-  return m;
-}
 
 double cpu_seconds() {
   timespec t{};
@@ -133,7 +110,8 @@ int main() {
     const char* name;
     Mesh mesh;
   };
-  const Scene scenes[] = {{"sphere131k", uv_sphere(256, 256)}, {"sphere524k", uv_sphere(512, 512)}};
+  const Scene scenes[] = {{"sphere131k", scenes::uv_sphere({0, 0, 0}, 1.0, 256, 256)},
+                          {"sphere524k", scenes::uv_sphere({0, 0, 0}, 1.0, 512, 512)}};
   for (const Scene& s : scenes) {
     for (const int n : {100, 10000}) {
       const std::vector<double> values = planes(n);

@@ -7,31 +7,6 @@
 
 namespace contain::test {
 
-Mesh uv_sphere(Vec3 center, double radius, int rings, int sides) {
-  Mesh m;
-  m.vertices.push_back(center + Vec3{0, 0, -radius});
-  for (int i = 1; i < rings; ++i) {
-    const double phi = std::numbers::pi * (static_cast<double>(i) / rings - 0.5);
-    for (int j = 0; j < sides; ++j) {
-      const double theta = 2 * std::numbers::pi * j / sides;
-      m.vertices.push_back(center + radius * Vec3{std::cos(phi) * std::cos(theta),
-                                                  std::cos(phi) * std::sin(theta), std::sin(phi)});
-    }
-  }
-  m.vertices.push_back(center + Vec3{0, 0, radius});
-  const auto at = [&](int ring, int j) { return 1 + (ring - 1) * sides + (j % sides); };
-  const int top = static_cast<int>(m.vertices.size()) - 1;
-  for (int j = 0; j < sides; ++j) {
-    m.triangles.push_back({0, at(1, j + 1), at(1, j)});
-    m.triangles.push_back({top, at(rings - 1, j), at(rings - 1, j + 1)});
-    for (int i = 1; i + 1 < rings; ++i) {
-      m.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-    }
-  }
-  return m;
-}
-
 Mesh voxel_mesh(int n, const std::function<bool(int, int, int)>& filled) {
   const auto in = [&](int i, int j, int k) {
     return i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < n && filled(i, j, k);

@@ -5,11 +5,11 @@
 #include <functional>
 
 #include "contain/shapes/mesh.h"
+#include "scenes/scenes.h"
 
 namespace contain::test {
 
-/// A closed, outward oriented UV sphere: `rings` latitude bands, `sides` longitudes.
-[[nodiscard]] Mesh uv_sphere(Vec3 center, double radius, int rings, int sides);
+using scenes::uv_sphere;  // the spheres of the slicing tests and slice_bench
 
 /// The boundary of the union of unit voxels [i, i+1] x [j, j+1] x [k, k+1], 0 <= i < n,
 /// 0 <= j < n, 0 <= k < n, for which `filled(i, j, k)`: two triangles per face between a
