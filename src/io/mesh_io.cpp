@@ -89,7 +89,8 @@ Result<MeshFile> parse_mesh(std::string_view bytes, MeshFormat family, const std
   if (file && file->mesh.triangles.empty() && !options.allow_empty) {
     return detail::make_error(
         ErrorKind::degenerate,
-        std::string(detail::format_words(file->info.format)) + " file without faces: no mesh", source);
+        std::string(detail::format_words(file->info.format)) + " file without faces: no mesh",
+        source);
   }
   return file;
 }
