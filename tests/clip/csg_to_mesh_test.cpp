@@ -20,15 +20,6 @@
 namespace contain::test {
 namespace {
 
-mpq_class exact_volume(const Mesh& mesh) {
-  mpq_class sum = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle3 tri = mesh.triangle(t);
-    sum += qdot(exact(tri.a), qcross(exact(tri.b), exact(tri.c)));
-  }
-  return sum / 6;
-}
-
 // Twice the exact area of the prism's bottom polygon (its first `sides` vertices, in order).
 mpq_class exact_area(const Mesh& prism, int sides) {
   mpq_class twice = 0;

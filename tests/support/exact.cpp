@@ -64,4 +64,13 @@ Sign exact_cross_dot(Vec3 a, Vec3 b, Vec3 p, Vec3 c) {
   return sign_of(qdot(qcross(ab, qsub(exact(p), qa)), qcross(ab, qsub(exact(c), qa))));
 }
 
+mpq_class exact_volume(const Mesh& mesh) {
+  mpq_class six = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle3 tri = mesh.triangle(t);
+    six += qdot(exact(tri.a), qcross(exact(tri.b), exact(tri.c)));
+  }
+  return six / 6;
+}
+
 }  // namespace contain::test

@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 
 #include "contain/predicates/sign.h"
+#include "contain/shapes/mesh.h"
 #include "contain/values/plane.h"
 #include "contain/values/sphere.h"
 #include "contain/values/vec.h"
@@ -29,6 +30,9 @@ struct QVec3 {
 [[nodiscard]] mpq_class qdot(const QVec3& a, const QVec3& b);
 [[nodiscard]] bool qzero(const QVec3& a);
 [[nodiscard]] Sign sign_of(const mpq_class& v);
+
+/// The exact volume a mesh encloses: the sum of its signed tetrahedra from the origin.
+[[nodiscard]] mpq_class exact_volume(const Mesh& mesh);
 
 [[nodiscard]] Sign exact_orient2d(Vec2 a, Vec2 b, Vec2 c);
 [[nodiscard]] Sign exact_orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d);

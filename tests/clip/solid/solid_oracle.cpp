@@ -53,15 +53,6 @@ std::optional<int> exact_winding(const Mesh& mesh, Vec3 point) {
   return w;
 }
 
-mpq_class exact_volume(const Mesh& mesh) {
-  mpq_class six = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle3 tri = mesh.triangle(t);
-    six += qdot(exact(tri.a), qcross(exact(tri.b), exact(tri.c)));
-  }
-  return six / 6;
-}
-
 std::string invalid_reason(const Mesh& mesh) {
   std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
   for (const TriangleIndices& t : mesh.triangles) {

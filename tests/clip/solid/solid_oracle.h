@@ -18,9 +18,6 @@ namespace contain::test {
 /// the mesh or the ray meets an edge or a vertex (the caller takes another sample).
 [[nodiscard]] std::optional<int> exact_winding(const Mesh& mesh, Vec3 p);
 
-/// The exact volume enclosed (sum of signed tetrahedra from the origin).
-[[nodiscard]] mpq_class exact_volume(const Mesh& mesh);
-
 /// Why `mesh` is not a valid written solid ("" when it is): every directed edge matched by
 /// exactly one opposite, no zero-area triangle (exact), no two triangles meeting other than at
 /// shared corners (collide::self_intersections).
