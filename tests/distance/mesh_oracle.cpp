@@ -27,20 +27,6 @@ Box3 box_of(const Triangle3& t) {
   return b;
 }
 
-// The exact squared distance from p to a box: a lower bound of the distance to anything inside it.
-mpq_class exact_box_gap(Vec3 p, const Box3& b) {
-  const double at[3] = {p.x, p.y, p.z};
-  const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
-  mpq_class sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    mpq_class g = 0;
-    if (at[k] < lo[k]) g = mpq_class(lo[k]) - mpq_class(at[k]);
-    if (at[k] > hi[k]) g = mpq_class(at[k]) - mpq_class(hi[k]);
-    sum += g * g;
-  }
-  return sum;
-}
-
 // The same gap in doubles: only an order of visit (nearest boxes first, so that the exact gap
 // skips most triangles), never a decision.
 double rough_box_gap(Vec3 p, const Box3& b) {
@@ -65,7 +51,7 @@ MeshOracleAnswer mesh_oracle(const Mesh& mesh, Vec3 p) {
   MeshOracleAnswer best;
   for (const auto& [rough, i] : order) {
     // A triangle whose box is exactly farther than the best cannot win or tie.
-    if (best.triangle >= 0 && exact_box_gap(p, boxes[i]) > best.squared_distance) continue;
+    if (best.triangle >= 0 && exact_squared_distance(p, boxes[i]) > best.squared_distance) continue;
     const ExactClosest3 c = exact_closest(p, triangle_of(mesh, i));
     const auto index = static_cast<std::int32_t>(i);
     if (best.triangle < 0 || c.squared_distance < best.squared_distance ||
