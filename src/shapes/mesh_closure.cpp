@@ -6,8 +6,6 @@
 #include <tuple>
 #include <vector>
 
-#include "contain/shapes/mesh_validation.h"
-
 namespace contain::shapes {
 namespace {
 
@@ -70,7 +68,10 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
 }  // namespace
 
 std::optional<UnmatchedEdge> unmatched_edge(const Mesh& mesh) {
-  const WeldResult weld = weld_vertices(mesh);
+  return unmatched_edge(weld_vertices(mesh));
+}
+
+std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld) {
   const std::vector<EdgeUse> edges = directed_edges(weld.mesh);
   std::optional<EdgeUse> worst;  // the unbalanced direction whose first triangle comes first
   std::int64_t worst_count = 0;

@@ -77,8 +77,17 @@ TEST(MeshClosure, UnweldedCopyIsJudgedByPosition) {
     soup.triangles.push_back({base, base + 1, base + 2});
   }
   EXPECT_FALSE(unmatched_edge(soup).has_value());
+  EXPECT_FALSE(unmatched_edge(weld_vertices(soup)).has_value());
   soup.triangles.pop_back();
-  EXPECT_TRUE(unmatched_edge(soup).has_value());
+  const auto edge = unmatched_edge(soup);
+  ASSERT_TRUE(edge.has_value());
+  // The answer from the welded mesh, which slicing reuses, is the same edge.
+  const auto from_weld = unmatched_edge(weld_vertices(soup));
+  ASSERT_TRUE(from_weld.has_value());
+  EXPECT_TRUE(from_weld->from == edge->from && from_weld->to == edge->to);
+  EXPECT_EQ(from_weld->triangle, edge->triangle);
+  EXPECT_EQ(from_weld->count, edge->count);
+  EXPECT_EQ(from_weld->reverse, edge->reverse);
 }
 
 TEST(MeshClosure, DegenerateTriangleWithARepeatedCornerIsNeutral) {
