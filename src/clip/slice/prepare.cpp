@@ -15,11 +15,14 @@ Frame frame_of(Axis axis) {
 }
 
 SweepMesh prepare(const Mesh& mesh, const Frame& frame) {
-  WeldResult weld = weld_vertices(mesh);
+  return prepare_welded(weld_vertices(mesh).mesh, frame);
+}
+
+SweepMesh prepare_welded(Mesh welded, const Frame& frame) {
   SweepMesh out;
   out.frame = frame;
-  out.vertices = std::move(weld.mesh.vertices);
-  out.triangles = std::move(weld.mesh.triangles);
+  out.vertices = std::move(welded.vertices);
+  out.triangles = std::move(welded.triangles);
   const std::size_t n = out.triangles.size();
   out.low.resize(n);
   out.high.resize(n);

@@ -84,7 +84,7 @@ std::vector<slice::CrossingSegment> net_segments(std::vector<Edge> edges) {
 }  // namespace
 
 Result<MultiPolygon> shadow(const Mesh& mesh, const SliceOptions& options) {
-  if (Status closed = slice::require_closed(mesh); !closed) return closed.error();
+  if (Status closed = slice::require_closed(weld_vertices(mesh)); !closed) return closed.error();
   const slice::Frame frame = slice::frame_of(options.axis);
   const std::vector<Ring> rings = slice::chain_rings(net_segments(facing_edges(mesh, frame)));
   return polygon_boolean(rings, {}, {.op = Op::union_, .fill = Fill::positive});
