@@ -19,7 +19,7 @@ namespace {
 constexpr double kUd = 0x1p-53;  // unit roundoff of double (kU is long double's)
 
 // Differences in this range keep the filter's products exact by two_product: rho0 lies in
-// [2^-401, 1], h1 rho0 and rho0 h3 in [2^-602, 2^200] with tails above 2^-710, normal doubles.
+// [2^-401, 1 + 2^-51], h1 rho0 and rho0 h3 in [2^-602, 2^201] with tails above 2^-710, normal.
 bool in_filter_range(double x) {
   const double a = std::fabs(x);
   return a >= 0x1p-200 && a <= 0x1p200;
@@ -45,20 +45,21 @@ bool rounds_to(double cand, double z, double bound) {
 }  // namespace
 
 // X = p + d1 rho with d1 = q - p and rho = d2 / d3, d2 = c - pk, d3 = qk - pk; each
-// difference d = h + l exactly (two_diff). rho is shared by the coordinates of one crossing:
-// rho0 = fl(h2 / h3), the residual R = d2 - rho0 d3 = (h2 - qh) - ql + l2 - rho0 l3 from the
-// exact product rho0 h3 = qh + ql, and rho1 = fl(r / h3), so rho = rho0 + rho1 + e with
-// (u = 2^-53; S the sum of the residual terms' absolute values) |R - r| <= 4.1 u S (four terms,
-// one rounded product) and |e| <= 2.02 u |rho1| + 4.2 u S / |h3| (d3 = h3 (1 + t), |t| <= u,
-// and the division's rounding). Products that underflow add at most 2^-1075 each: after the
-// division by |h3| >= 2^-200, under the 2^-860 term.
+// difference d = h + l exactly (two_diff). rho is shared by the coordinates of one crossing and
+// costs one division, by h3: i = fl(1 / h3), rho0 = fl(h2 i), the residual R = d2 - rho0 d3 =
+// (h2 - qh) - ql + l2 - rho0 l3 from the exact product rho0 h3 = qh + ql, and rho1 = fl(r i),
+// within 2.01 u of r / h3; so rho = rho0 + rho1 + e with (u = 2^-53; S the sum of the residual
+// terms' absolute values) |R - r| <= 4.1 u S (four terms, one rounded product) and
+// |e| <= 3.03 u |rho1| + 4.2 u S / |h3| (d3 = h3 (1 + t), |t| <= u). Products that underflow
+// add at most 2^-1075 each: after the division by |h3| >= 2^-200, under the 2^-860 term.
 CrossingRatio crossing_ratio(double pk, double qk, double c) {
   CrossingRatio out;
   double h2, l2, h3, l3;
   two_diff(c, pk, h2, l2);
   two_diff(qk, pk, h3, l3);
   if (!in_filter_range(h2) || !in_filter_range(h3)) return out;
-  out.rho0 = h2 / h3;
+  const double inverse = 1 / h3;
+  out.rho0 = h2 * inverse;
   double qh, ql;
   two_product(out.rho0, h3, qh, ql);
   const double terms[] = {h2 - qh, -ql, l2, -(out.rho0 * l3)};
@@ -68,8 +69,8 @@ CrossingRatio crossing_ratio(double pk, double qk, double c) {
     r += x;
     size += std::fabs(x);
   }
-  out.rho1 = r / h3;
-  out.error = 3 * kUd * std::fabs(out.rho1) + 5 * kUd * (size / std::fabs(h3)) + 0x1p-860;
+  out.rho1 = r * inverse;
+  out.error = 4 * kUd * std::fabs(out.rho1) + 5 * kUd * (size * std::fabs(inverse)) + 0x1p-860;
   out.valid = true;
   return out;
 }
