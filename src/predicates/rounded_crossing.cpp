@@ -44,35 +44,63 @@ bool rounds_to(double cand, double z, double bound) {
 
 }  // namespace
 
-// X = p + d1 rho with d1 = q - p and rho = d2 / d3, d2 = c - pk, d3 = qk - pk; each
-// difference d = h + l exactly (two_diff). rho is shared by the coordinates of one crossing and
-// costs one division, by h3: i = fl(1 / h3), rho0 = fl(h2 i), the residual R = d2 - rho0 d3 =
-// (h2 - qh) - ql + l2 - rho0 l3 from the exact product rho0 h3 = qh + ql, and rho1 = fl(r i),
-// within 2.01 u of r / h3; so rho = rho0 + rho1 + e with (u = 2^-53; S the sum of the residual
-// terms' absolute values) |R - r| <= 4.1 u S (four terms, one rounded product) and
-// |e| <= 3.03 u |rho1| + 4.2 u S / |h3| (d3 = h3 (1 + t), |t| <= u). Products that underflow
-// add at most 2^-1075 each: after the division by |h3| >= 2^-200, under the 2^-860 term.
+// X = p + d1 rho with d1 = q - p and rho = d2 / d3, d2 = c - pk, d3 = qk - pk. rho is shared by
+// the coordinates of one crossing and costs one division: rho0 = fl(fl(d2) fl(1 / fl(d3))), within
+// 4.01 u of rho (u = 2^-53; four roundings).
 CrossingRatio crossing_ratio(double pk, double qk, double c) {
   CrossingRatio out;
-  double h2, l2, h3, l3;
-  two_diff(c, pk, h2, l2);
-  two_diff(qk, pk, h3, l3);
+  out.pk = pk;
+  out.qk = qk;
+  out.c = c;
+  const double h2 = c - pk;
+  const double h3 = qk - pk;
   if (!in_filter_range(h2) || !in_filter_range(h3)) return out;
-  const double inverse = 1 / h3;
-  out.rho0 = h2 * inverse;
+  out.inverse = 1 / h3;
+  out.rho0 = h2 * out.inverse;
+  out.valid = true;
+  return out;
+}
+
+// The quick stage: t = fl(fl(q - p) rho0) is within 6.02 u |T| of T = d1 rho (six roundings) and
+// p + t = s + e exactly (two_sum), so X = s + e + d with |d| <= 6.03 u |t| < 7 u |t| (the bound's
+// own rounding included). Certain when X is not within that of a rounding boundary: most
+// crossings of a fine mesh, whose offsets |X - p| are small beside |X|.
+bool rounded_offset_quick(double p, double q, const CrossingRatio& rho, double& out) {
+  if (!rho.valid) return false;
+  const double h1 = q - p;
+  if (!in_filter_range(h1) || !(std::fabs(p) <= 0x1p200)) return false;
+  const double t = h1 * rho.rho0;
+  double s, e;
+  two_sum(p, t, s, e);
+  if (!rounds_to(s, e, 7 * kUd * std::fabs(t))) return false;
+  out = s;
+  return true;
+}
+
+// The double-double ratio: each difference d = h + l exactly (two_diff), the residual
+// R = d2 - rho0 d3 = (h2 - qh) - ql + l2 - rho0 l3 from the exact product rho0 h3 = qh + ql, and
+// rho1 = fl(r i) with i = fl(1 / h3), within 2.01 u of r / h3; so rho = rho0 + rho1 + e with
+// (S the sum of the residual terms' absolute values) |R - r| <= 4.1 u S (four terms, one
+// rounded product) and |e| <= 3.03 u |rho1| + 4.2 u S / |h3| (d3 = h3 (1 + t), |t| <= u).
+// Products that underflow add at most 2^-1075 each: after the division by |h3| >= 2^-200,
+// under the 2^-860 term.
+void refine_ratio(CrossingRatio& rho) {
+  if (!rho.valid || rho.refined) return;
+  double h2, l2, h3, l3;
+  two_diff(rho.c, rho.pk, h2, l2);
+  two_diff(rho.qk, rho.pk, h3, l3);
   double qh, ql;
-  two_product(out.rho0, h3, qh, ql);
-  const double terms[] = {h2 - qh, -ql, l2, -(out.rho0 * l3)};
+  two_product(rho.rho0, h3, qh, ql);
+  const double terms[] = {h2 - qh, -ql, l2, -(rho.rho0 * l3)};
   double r = 0.0;
   double size = 0.0;
   for (const double x : terms) {
     r += x;
     size += std::fabs(x);
   }
-  out.rho1 = r * inverse;
-  out.error = 4 * kUd * std::fabs(out.rho1) + 5 * kUd * (size * std::fabs(inverse)) + 0x1p-860;
-  out.valid = true;
-  return out;
+  rho.rho1 = r * rho.inverse;
+  rho.error = 4 * kUd * std::fabs(rho.rho1) + 5 * kUd * (size * std::fabs(rho.inverse)) + 0x1p-860;
+  rho.refined = true;
 }
 
 // Then d1 rho = ph + pl + h1 rho1 + l1 rho0 + l1 rho1 + d1 e with h1 rho0 = ph + pl exactly:
@@ -82,7 +110,7 @@ CrossingRatio crossing_ratio(double pk, double qk, double c) {
 // ones by margins covering the rounding of the bound; 2^-800 covers underflowed products. The
 // bound is about 20 u^2 |X - p|: only values that close to a rounding boundary go on.
 bool rounded_offset(double p, double q, const CrossingRatio& rho, double& out) {
-  if (!rho.valid) return false;
+  if (!rho.valid || !rho.refined) return false;
   double h1, l1;
   two_diff(q, p, h1, l1);
   if (!in_filter_range(h1) || !(std::fabs(p) <= 0x1p200)) return false;
@@ -108,7 +136,10 @@ bool rounded_offset(double p, double q, const CrossingRatio& rho, double& out) {
 }
 
 bool rounded_crossing_filter(double p, double q, double pk, double qk, double c, double& out) {
-  return rounded_offset(p, q, crossing_ratio(pk, qk, c), out);
+  CrossingRatio rho = crossing_ratio(pk, qk, c);
+  if (rounded_offset_quick(p, q, rho, out)) return true;
+  refine_ratio(rho);
+  return rounded_offset(p, q, rho, out);
 }
 
 // x = p + (q - p)(c - pk) / (qk - pk): the base p plus an offset whose numerator and
@@ -141,9 +172,10 @@ void set_coord(Vec3& p, int k, double x) {
 
 // The base p is the endpoint nearer to the plane, so the offset, and its rounding error, is
 // the smaller part.
-double crossing_coordinate(Vec3 p, Vec3 q, int k, int j, double c,
-                           const detail::CrossingRatio& rho) {
+double crossing_coordinate(Vec3 p, Vec3 q, int k, int j, double c, detail::CrossingRatio& rho) {
   double out = 0.0;
+  if (detail::rounded_offset_quick(coord(p, j), coord(q, j), rho, out)) return out;
+  detail::refine_ratio(rho);
   if (detail::rounded_offset(coord(p, j), coord(q, j), rho, out)) return out;
   return detail::rounded_crossing_exact(coord(p, j), coord(q, j), coord(p, k), coord(q, k), c);
 }
@@ -159,8 +191,7 @@ Vec3 rounded_axis_crossing(Vec3 a, Vec3 b, int axis, double c) {
   const Vec3 base = from_b ? b : a;
   const Vec3 other = from_b ? a : b;
   // The ratio (c - base) / (other - base) in double-double, shared by both coordinates.
-  const detail::CrossingRatio rho =
-      detail::crossing_ratio(coord(base, axis), coord(other, axis), c);
+  detail::CrossingRatio rho = detail::crossing_ratio(coord(base, axis), coord(other, axis), c);
   Vec3 out = a;
   set_coord(out, axis, c);
   for (int j = 0; j < 3; ++j) {

@@ -109,17 +109,39 @@ mpq_class exact_crossing(double p, double q, double pk, double qk, double c) {
   return mpq_class(p) + (mpq_class(q) - p) * (mpq_class(c) - pk) / (mpq_class(qk) - pk);
 }
 
-// The filter and the stages after it against GMP on one case; true when the filter decided.
-bool check_stages(double p, double q, double pk, double qk, double c) {
+// Which stages decided a case.
+struct Decided {
+  int quick = 0;
+  int double_double = 0;
+  int filter = 0;
+};
+
+// Each filter stage on its own, the whole filter and the stages after it against GMP on one
+// case; true when the filter decided.
+bool check_stages(double p, double q, double pk, double qk, double c, Decided* decided = nullptr) {
+  using namespace predicates::detail;
   const double want = exact_nearest(exact_crossing(p, q, pk, qk, c));
   const auto text = [&] {
     char buffer[160];
     std::snprintf(buffer, sizeof buffer, "p %a q %a pk %a qk %a c %a", p, q, pk, qk, c);
     return std::string(buffer);
   };
-  EXPECT_EQ(predicates::detail::rounded_crossing_exact(p, q, pk, qk, c), want) << text();
+  EXPECT_EQ(rounded_crossing_exact(p, q, pk, qk, c), want) << text();
+  Decided local;
+  Decided& d = decided != nullptr ? *decided : local;
+  CrossingRatio rho = crossing_ratio(pk, qk, c);
   double got = 0.0;
-  if (!predicates::detail::rounded_crossing_filter(p, q, pk, qk, c, got)) return false;
+  if (rounded_offset_quick(p, q, rho, got)) {
+    ++d.quick;
+    EXPECT_EQ(got, want) << "the quick stage certified a wrong double: " << text();
+  }
+  refine_ratio(rho);
+  if (rounded_offset(p, q, rho, got)) {
+    ++d.double_double;
+    EXPECT_EQ(got, want) << "the double-double stage certified a wrong double: " << text();
+  }
+  if (!rounded_crossing_filter(p, q, pk, qk, c, got)) return false;
+  ++d.filter;
   EXPECT_EQ(got, want) << "the filter certified a wrong double: " << text();
   return true;
 }
@@ -129,19 +151,25 @@ TEST(RoundedCrossingFilter, RandomCrossingsAreNearestAndAlmostAllDecidedByTheFil
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> exponent(-40, 40);
   const int cases = case_budget(20000, 10);
-  int decided = 0;
+  int crossings = 0;
+  Decided decided;
   for (int i = 0; i < cases; ++i) {
     const double s = std::ldexp(1.0, exponent(rng));
-    const double p = s * unit(rng), q = s * unit(rng), pk = s * unit(rng), qk = s * unit(rng);
+    // Half the cases as a fine mesh's edges: short beside their distance from the origin, where
+    // the quick stage decides; the others as long as that distance.
+    const double length = i % 2 == 0 ? s : s * 0x1p-8;
+    const double p = s * unit(rng), pk = s * unit(rng);
+    const double q = p + length * unit(rng), qk = pk + length * unit(rng);
     const double c = pk + (0.5 + 0.5 * unit(rng)) * (qk - pk);
-    if (pk == qk || c == pk || c == qk || c < std::min(pk, qk) || c > std::max(pk, qk)) {
-      ++decided;  // not a crossing: counted as decided, not checked
-      continue;
-    }
-    decided += check_stages(p, q, pk, qk, c) ? 1 : 0;
+    if (pk == qk || c == pk || c == qk || c < std::min(pk, qk) || c > std::max(pk, qk)) continue;
+    ++crossings;
+    (void)check_stages(p, q, pk, qk, c, &decided);
   }
-  // Its bound is about 100 u^2 of the offset: only near-ties may go on to the exact stages.
-  EXPECT_GE(decided, cases - cases / 100);
+  // The double-double bound is about 20 u^2 of the offset: only near-ties go on to the exact
+  // stages. The quick one (7 u of the offset) takes a good part of the cases.
+  EXPECT_GE(decided.filter, crossings - crossings / 100);
+  EXPECT_GE(decided.double_double, crossings - crossings / 100);
+  EXPECT_GE(decided.quick, crossings / 4);
 }
 
 TEST(RoundedCrossingFilter, TiesAndNearTiesAreNeverCertifiedWrongly) {
