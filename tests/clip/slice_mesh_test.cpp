@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "clip/boolean_checks.h"
@@ -375,6 +376,77 @@ std::vector<clip::slice::CrossingSegment> curve_of(const Mesh& mesh, double c) {
   clip::slice::PlaneCurves curves = clip::slice::crossing_segments(prepared, all, c);
   EXPECT_FALSE(curves.touches) << c;
   return std::move(curves.above);
+}
+
+// The rule of chain_rings spelled out: segments by (from_key, triangle, input position), each
+// walk starting at the first unused one and taking at each key the first unused segment leaving
+// it; zero-length pieces left out, walks of fewer than 3 points dropped.
+std::vector<Ring> reference_rings(std::span<const clip::slice::CrossingSegment> segments,
+                                  std::vector<std::vector<std::int32_t>>& triangles) {
+  std::vector<std::size_t> order(segments.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::tie(segments[a].from_key, segments[a].triangle) <
+           std::tie(segments[b].from_key, segments[b].triangle);
+  });
+  std::vector<char> used(segments.size(), 0);
+  const auto usable = [&](std::size_t i) {
+    return used[i] == 0 && segments[i].from_key != segments[i].to_key;
+  };
+  std::vector<Ring> rings;
+  for (const std::size_t start : order) {
+    if (!usable(start)) continue;
+    Ring ring;
+    std::vector<std::int32_t> under;
+    for (std::size_t s = start;;) {
+      used[s] = 1;
+      ring.push_back(segments[s].from);
+      under.push_back(segments[s].triangle);
+      const auto next = std::find_if(order.begin(), order.end(), [&](std::size_t i) {
+        return usable(i) && segments[i].from_key == segments[s].to_key;
+      });
+      if (next == order.end()) break;
+      s = *next;
+    }
+    if (ring.size() < 3) continue;
+    rings.push_back(std::move(ring));
+    triangles.push_back(std::move(under));
+  }
+  return rings;
+}
+
+TEST(SliceMesh, ChainedRingsFollowTheRuleWhateverTheOrderOfTheSegments) {
+  // Generic planes (every key left once: the cycles of a permutation), planes through vertices
+  // and along faces (keys left several times: the general walk), through spheres, a torus and
+  // stacked boxes, with the segments shuffled: the sweep hands them over in no fixed order.
+  const Mesh sphere = uv_sphere({0.0, 0.0, 0.0}, 1.0, 12, 17);
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  const Mesh stacked = joined(scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}}),
+                              scenes::box_mesh(Box3{{0, 0, 1}, {1, 1, 2}}));
+  std::mt19937_64 rng(26);
+  int cases = 0;
+  for (const Mesh* mesh : {&sphere, &torus, &stacked}) {
+    const clip::slice::SweepMesh prepared =
+        clip::slice::prepare(*mesh, clip::slice::frame_of(Axis::z));
+    std::vector<std::int32_t> all(prepared.triangles.size());
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<double> planes = {0.1234, -0.377, 0.5, 1.0};
+    for (std::size_t v = 0; v < prepared.vertices.size(); v += 7)
+      planes.push_back(prepared.vertices[v].z);
+    for (const double c : planes) {
+      clip::slice::PlaneCurves curves = clip::slice::crossing_segments(prepared, all, c);
+      for (std::vector<clip::slice::CrossingSegment>* side : {&curves.above, &curves.below}) {
+        std::shuffle(side->begin(), side->end(), rng);
+        std::vector<std::vector<std::int32_t>> want_under, got_under;
+        const std::vector<Ring> want = reference_rings(*side, want_under);
+        const std::vector<Ring> got = clip::slice::chain_rings(*side, &got_under);
+        ASSERT_EQ(got, want) << "plane " << c;
+        ASSERT_EQ(got_under, want_under) << "plane " << c;
+        ++cases;
+      }
+    }
+  }
+  EXPECT_GT(cases, 40);
 }
 
 TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {

@@ -40,25 +40,25 @@ Crossing crossing(const SweepMesh& mesh, std::int32_t p, std::int32_t q, double 
                   KeyTable<Vec2>& memo) {
   const Vec3& a = mesh.vertices[static_cast<std::size_t>(p)];
   const Vec3& b = mesh.vertices[static_cast<std::size_t>(q)];
-  const int k = mesh.frame.k;
-  if (coord(a, k) == c) return {vertex_key(p), project(a, mesh.frame)};
-  if (coord(b, k) == c) return {vertex_key(q), project(b, mesh.frame)};
+  if (a.z == c) return {vertex_key(p), {a.x, a.y}};
+  if (b.z == c) return {vertex_key(q), {b.x, b.y}};
   const std::uint64_t key = edge_key(p, q);
   const auto [point, fresh] = memo.insert(key);
-  if (fresh) *point = project(predicates::rounded_axis_crossing(a, b, k, c), mesh.frame);
+  if (fresh) {
+    const Vec3 x = predicates::rounded_axis_crossing(a, b, 2, c);
+    *point = {x.x, x.y};
+  }
   return {key, *point};
 }
 
 // The segment of triangle t on one side (`on_plane_above`: where a vertex with z == c counts),
 // appended to out when the triangle has vertices on both sides.
-void add_segment(const SweepMesh& mesh, std::int32_t t, double c, bool on_plane_above,
-                 KeyTable<Vec2>& memo, std::vector<CrossingSegment>& out) {
+void add_segment(const SweepMesh& mesh, std::int32_t t, const double (&z)[3], double c,
+                 bool on_plane_above, KeyTable<Vec2>& memo, std::vector<CrossingSegment>& out) {
   const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
   bool above[3];
-  for (int i = 0; i < 3; ++i) {
-    const double z = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k);
-    above[i] = on_plane_above ? z >= c : z > c;
-  }
+  for (int i = 0; i < 3; ++i)
+    above[i] = on_plane_above ? z[i] >= c : z[i] > c;
   if (above[0] == above[1] && above[1] == above[2]) return;
   int down = -1;  // the edge i -> i+1 going from above to below
   int up = -1;
@@ -80,16 +80,23 @@ void crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> acti
   out.below.clear();
   out.touches = false;
   memo.reset(2 * active.size());
-  for (const std::int32_t t : active) {
+  const auto heights = [&](std::int32_t t, double(&z)[3]) {
     const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
-    for (int i = 0; i < 3 && !out.touches; ++i) {
-      out.touches = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k) == c;
-    }
-    add_segment(mesh, t, c, false, memo, out.above);
+    for (int i = 0; i < 3; ++i)
+      z[i] = mesh.vertices[static_cast<std::size_t>(tri[i])].z;
+  };
+  for (const std::int32_t t : active) {
+    double z[3];
+    heights(t, z);
+    out.touches = out.touches || z[0] == c || z[1] == c || z[2] == c;
+    add_segment(mesh, t, z, c, false, memo, out.above);
   }
   if (out.touches) {
-    for (const std::int32_t t : active)
-      add_segment(mesh, t, c, true, memo, out.below);
+    for (const std::int32_t t : active) {
+      double z[3];
+      heights(t, z);
+      add_segment(mesh, t, z, c, true, memo, out.below);
+    }
   }
 }
 

@@ -41,8 +41,9 @@ struct Frame {
 [[nodiscard]] Status require_closed(const WeldResult& weld);
 
 /// The mesh as the sweep reads it: vertices welded by position (closedness and chaining judge
-/// vertices by position), triangles in file order, and the triangles that are not flat along
-/// the axis sorted by their lowest coordinate (then index).
+/// vertices by position), each as its coordinates (u, v, axis) in x, y, z, so that the sweep
+/// reads heights and section coordinates without the frame; triangles in file order, and the
+/// triangles that are not flat along the axis sorted by their lowest coordinate (then index).
 struct SweepMesh {
   Frame frame;
   std::vector<Vec3> vertices;
