@@ -52,16 +52,11 @@ bool chain_cycles(std::span<const CrossingSegment> segments, std::vector<Ring>& 
   }
   scratch.used.assign(segments.size(), 0);
   scratch.walk.clear();
-  struct Cycle {
-    std::uint64_t least = 0;  // the least from_key of the cycle
-    std::size_t begin = 0;    // in scratch.walk
-    std::size_t size = 0;
-    std::size_t first = 0;  // the position of `least` in the cycle
-  };
-  std::vector<Cycle> cycles;
+  std::vector<ChainCycle>& cycles = scratch.cycles;
+  cycles.clear();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     if (scratch.used[i] != 0 || segments[i].from_key == segments[i].to_key) continue;
-    Cycle cycle{segments[i].from_key, scratch.walk.size(), 0, 0};
+    ChainCycle cycle{segments[i].from_key, scratch.walk.size(), 0, 0};
     for (auto s = static_cast<std::int32_t>(i);;) {
       const auto u = static_cast<std::size_t>(s);
       scratch.used[u] = 1;
@@ -80,9 +75,9 @@ bool chain_cycles(std::span<const CrossingSegment> segments, std::vector<Ring>& 
     cycles.push_back(cycle);
   }
   std::sort(cycles.begin(), cycles.end(),
-            [](const Cycle& a, const Cycle& b) { return a.least < b.least; });
-  std::vector<std::int32_t> walk;
-  for (const Cycle& cycle : cycles) {
+            [](const ChainCycle& a, const ChainCycle& b) { return a.least < b.least; });
+  std::vector<std::int32_t>& walk = scratch.rotated;
+  for (const ChainCycle& cycle : cycles) {
     const auto begin = scratch.walk.begin() + static_cast<std::ptrdiff_t>(cycle.begin);
     const auto first = begin + static_cast<std::ptrdiff_t>(cycle.first);
     walk.assign(first, begin + static_cast<std::ptrdiff_t>(cycle.size));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -65,7 +66,7 @@ class KeyTable {
     std::size_t size = 16;
     while (size < 2 * entries)
       size *= 2;
-    if (size > slots_.size() || stamp_ == UINT32_MAX) {
+    if (size > slots_.size() || stamp_ == std::numeric_limits<std::uint32_t>::max()) {
       slots_.assign(std::max(size, slots_.size()), Slot{});
       stamp_ = 0;
     }
@@ -130,11 +131,22 @@ struct PlaneCurves {
 void crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
                        KeyTable<Vec2>& memo, PlaneCurves& out);
 
+/// One closed walk of chain_rings: `size` segments from `begin` in ChainScratch::walk, `first`
+/// the position of its least from_key, `least`.
+struct ChainCycle {
+  std::uint64_t least = 0;
+  std::size_t begin = 0;
+  std::size_t size = 0;
+  std::size_t first = 0;
+};
+
 /// The buffers of chain_rings, reused from plane to plane.
 struct ChainScratch {
   KeyTable<std::int32_t> leaving;  // from_key -> the one segment leaving it
   std::vector<char> used;
-  std::vector<std::int32_t> walk;     // the segments of the closed walks, one after another
+  std::vector<std::int32_t> walk;  // the segments of the closed walks, one after another
+  std::vector<ChainCycle> cycles;
+  std::vector<std::int32_t> rotated;  // one walk from its least key
   std::vector<std::int32_t> by_from;  // the general case: segments by (from_key, triangle)
   std::vector<std::size_t> cursor;
 };
