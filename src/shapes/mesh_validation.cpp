@@ -238,6 +238,7 @@ WeldResult weld_vertices(const Mesh& mesh) {
   const std::size_t n = mesh.vertices.size();
   PositionTable table(n);
   w.remap.resize(n);
+  w.mesh.vertices.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto fresh = static_cast<std::int32_t>(w.mesh.vertices.size());
     const std::int32_t found = table.find_or_add(mesh.vertices[i], w.mesh.vertices, fresh);
