@@ -30,7 +30,9 @@
 
 #include "clip/solid/engine.h"
 #include "clip/solid/validate.h"
+#include "contain/bvh/bvh.h"
 #include "contain/core/union_find.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -154,15 +156,39 @@ Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
 // The merge level of each repair round: rounding alone first, then grids of 2^2 ... 2^20 ulps.
 constexpr std::array<int, 10> round_levels = {-1, -1, -1, 2, 5, 8, 11, 14, 17, 20};
 
+// The soup with a hierarchy over the triangles of `region` only (the others get empty boxes):
+// the pair stage on it tests just their pairs, with the soup's own vertex and triangle numbers.
+Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
+  Soup out;
+  out.vertices = soup.vertices;
+  out.triangles = soup.triangles;
+  out.input = soup.input;
+  out.degenerate = soup.degenerate;
+  out.inputs = soup.inputs;
+  out.boxes.assign(soup.boxes.size(), Box3{});
+  for (const std::int32_t t : region)
+    out.boxes[static_cast<std::size_t>(t)] = soup.boxes[static_cast<std::size_t>(t)];
+  out.tree = bvh::Bvh(out.boxes);
+  return out;
+}
+
 // The written mesh's own arrangement, exactly, kept as a union (the solid where its winding
-// number is positive) and written at merge `level`.
-Result<Written> resolved(const Mesh& mesh, int level, double scale) {
+// number is positive) and written at merge `level`. Only the pairs of triangles of `crossing`
+// (those of the pairs the check found meeting wrongly) are intersected, all pairs when it is
+// empty: every other pair meets at shared corners or a shared edge, where the pair stage finds
+// nothing to add (coplanar neighbours that do not overlap give each other edges that have no
+// piece inside them), so the arrangement is the one of all pairs, at the cost of the few. The
+// labels still cast their rays through the whole mesh.
+Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
+                         double scale) {
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
   for (const Vec3 v : soup->vertices)
     (void)store.add(v);
-  const std::vector<TriangleWork> work = intersect_pairs(*soup, store);
+  const std::vector<TriangleWork> work = crossing.empty()
+                                             ? intersect_pairs(*soup, store)
+                                             : intersect_pairs(region_soup(*soup, crossing), store);
   const Refinement refinement = refine(*soup, work, store);
   const std::vector<FaceLabel> labels = label_faces(*soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(*soup, refinement, work, labels, store, Op::union_);
@@ -174,12 +200,14 @@ Result<Written> resolved(const Mesh& mesh, int level, double scale) {
 
 Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale) {
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
-  Status valid = check_written(written.mesh, written.kept);
+  std::vector<std::int32_t> crossing;
+  Status valid = check_written(written.mesh, written.kept, &crossing);
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
-    Result<Written> next = resolved(written.mesh, round_levels[round], scale);
+    Result<Written> next = resolved(written.mesh, crossing, round_levels[round], scale);
     if (!next) return next.error();
     written = std::move(*next);
-    valid = check_written(written.mesh, written.kept);
+    crossing.clear();
+    valid = check_written(written.mesh, written.kept, &crossing);
   }
   if (!valid) {
     return Error{.kind = ErrorKind::degenerate,

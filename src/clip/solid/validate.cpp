@@ -201,7 +201,7 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
     }
     soup.triangles.push_back(local);
     soup.input.push_back(0);
-    soup.degenerate.push_back(false);
+    soup.degenerate.push_back(false);  // zero-area triangles are never chosen
     soup.boxes.push_back(boxes[static_cast<std::size_t>(t)]);
   }
   soup.tree = bvh::Bvh(soup.boxes);
@@ -213,15 +213,20 @@ Status check_written(const Mesh& mesh) {
   return check_written(mesh, std::vector<bool>(mesh.vertices.size(), false));
 }
 
-Status check_written(const Mesh& mesh, const std::vector<bool>& kept) {
+Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
+                     std::vector<std::int32_t>* crossing) {
   if (!edges_matched(mesh)) return failure("an edge is not matched by exactly one opposite edge");
-  std::vector<bool> degenerate(mesh.triangles.size());
-  std::vector<Box3> boxes(mesh.triangles.size());
-  std::vector<std::int32_t> rounded;  // triangles with a corner that is not kept
+  Status status = Ok{};
+  std::vector<Box3> boxes(mesh.triangles.size());  // empty for a zero-area triangle
+  std::vector<std::int32_t> rounded;               // triangles with a corner that is not kept
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]), b = mesh.vertex(v[1]), c = mesh.vertex(v[2]);
-    if (zero_area(a, b, c)) return failure("a triangle has zero area");
+    if (zero_area(a, b, c)) {
+      if (crossing == nullptr) return failure("a triangle has zero area");
+      status = failure("a triangle has zero area");
+      continue;
+    }
     boxes[t].expand(a);
     boxes[t].expand(b);
     boxes[t].expand(c);
@@ -230,23 +235,36 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept) {
       rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
-  if (rounded.empty()) return Ok{};
-  const Soup soup = local_soup(mesh, neighbourhood(boxes, rounded), boxes);
+  if (rounded.empty()) return status;
+  const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
+  const Soup soup = local_soup(mesh, chosen, boxes);
   PointStore store;
   for (const Vec3 v : soup.vertices)
     (void)store.add(v);
   const std::vector<TriangleWork> work = intersect_pairs(soup, store);
+  std::vector<bool> bad(work.size(), false);
   for (std::size_t t = 0; t < work.size(); ++t) {
     for (const Constraint& c : work[t].constraints) {
-      if (c.edge == no_edge) return failure("two triangles cross");
+      // The partner holds the same constraint: it is marked at its own turn.
+      if (c.edge == no_edge) {
+        if (crossing == nullptr) return failure("two triangles cross");
+        status = failure("two triangles cross");
+        bad[t] = true;
+      }
     }
     for (const std::int32_t u : work[t].coplanar) {
       if (coplanar_meet(soup, static_cast<std::int32_t>(t), u)) {
-        return failure("two triangles in one plane overlap");
+        if (crossing == nullptr) return failure("two triangles in one plane overlap");
+        status = failure("two triangles in one plane overlap");
+        bad[t] = true;
+        bad[static_cast<std::size_t>(u)] = true;
       }
     }
   }
-  return Ok{};
+  for (std::size_t t = 0; t < bad.size(); ++t) {
+    if (bad[t]) crossing->push_back(chosen[t]);
+  }
+  return status;
 }
 
 }  // namespace contain::clip::solid

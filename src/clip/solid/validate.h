@@ -1,6 +1,7 @@
 #pragma once
 // The exact check of a written mesh (rule solid-output in docs/robustness.md). Private to clip.
 
+#include <cstdint>
 #include <vector>
 
 #include "contain/core/result.h"
@@ -21,6 +22,10 @@ namespace contain::clip::solid {
 /// corners or shared edges (validate.cpp says why), so such a pair can not fail; every other
 /// pair holds a triangle with a corner that is not kept, and is tested exactly as by the full
 /// check. Edges and areas are checked on every triangle. kept.size() == mesh.vertices.size().
-[[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept);
+/// With `crossing`, the check goes on after a failure of a pair or an area and appends every
+/// triangle of a pair that meets wrongly (ascending; zero-area triangles are not in it): the
+/// region a snap-rounding round repairs. An edge failure still returns at once.
+[[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
+                                   std::vector<std::int32_t>* crossing = nullptr);
 
 }  // namespace contain::clip::solid
