@@ -131,21 +131,38 @@ Status failure(const std::string& what) {
                .message = "the result rounded to doubles is not valid (" + what + ")"};
 }
 
-// Every directed edge once and its reverse once: sorted keys, no map.
+// Every directed edge once and its reverse once: the edges grouped by their first vertex (a
+// counting sort, each vertex's few ends sorted), then each reverse looked up in its group.
 bool edges_matched(const Mesh& mesh) {
-  std::vector<std::uint64_t> directed;
-  directed.reserve(3 * mesh.triangles.size());
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::size_t> start(n + 1, 0);
   for (const TriangleIndices& t : mesh.triangles) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      directed.push_back((std::uint64_t{static_cast<std::uint32_t>(t[k])} << 32U) |
-                         static_cast<std::uint32_t>(t[(k + 1) % 3]));
+    for (const std::int32_t v : t) {
+      if (v < 0 || static_cast<std::size_t>(v) >= n) return false;
+      ++start[static_cast<std::size_t>(v) + 1];
     }
   }
-  std::sort(directed.begin(), directed.end());
-  for (std::size_t i = 0; i < directed.size(); ++i) {
-    if (i + 1 < directed.size() && directed[i + 1] == directed[i]) return false;
-    const std::uint64_t reverse = (directed[i] << 32U) | (directed[i] >> 32U);
-    if (!std::binary_search(directed.begin(), directed.end(), reverse)) return false;
+  for (std::size_t v = 0; v < n; ++v)
+    start[v + 1] += start[v];
+  std::vector<std::int32_t> to(start[n]);
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const TriangleIndices& t : mesh.triangles) {
+    for (std::size_t k = 0; k < 3; ++k)
+      to[next[static_cast<std::size_t>(t[k])]++] = t[(k + 1) % 3];
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto first = to.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = to.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(first, last);
+    if (std::adjacent_find(first, last) != last) return false;  // an edge twice
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    for (std::size_t e = start[v]; e < start[v + 1]; ++e) {
+      const auto w = static_cast<std::size_t>(to[e]);
+      const auto first = to.begin() + static_cast<std::ptrdiff_t>(start[w]);
+      const auto last = to.begin() + static_cast<std::ptrdiff_t>(start[w + 1]);
+      if (!std::binary_search(first, last, static_cast<std::int32_t>(v))) return false;
+    }
   }
   return true;
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/solid_oracle.h"
@@ -101,8 +102,9 @@ TEST(CheckWritten, RestrictedAndFullChecksAgreeWithTheOracleOnMovedVertices) {
 // zero-area triangle; the untouched vertices are kept. The restricted check catches both, as
 // the full one. (Pushed straight down through the bottom vertex to (0, 0, -2) instead, the
 // mesh turns inside out without any two triangles meeting: no pair test sees that, full or
-// restricted, and the oracle calls it valid too.)
-TEST(CheckWritten, AFlippedAndAZeroAreaTriangleAreFoundFromTheirMovedCorner) {
+// restricted, and the oracle calls it valid too.) Edges not matched exactly once are found
+// whatever is kept.
+TEST(CheckWritten, AFoldedAndAZeroAreaTriangleAreFoundFromTheirMovedCornerAndBadEdgesAlways) {
   const Mesh octahedron{
       {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
       {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
@@ -121,6 +123,23 @@ TEST(CheckWritten, AFlippedAndAZeroAreaTriangleAreFoundFromTheirMovedCorner) {
   // still are.
   EXPECT_TRUE(check_written(flipped, std::vector<bool>(6, true)).ok());
   EXPECT_FALSE(check_written(flat, std::vector<bool>(6, true)).ok());
+  // One triangle turned over: three directed edges twice, three never reversed. The same
+  // triangle twice and its reverse twice: every edge matched, but twice. Both fail, kept or not.
+  Mesh turned = octahedron;
+  std::swap(turned.triangles[0][1], turned.triangles[0][2]);
+  Mesh doubled = octahedron;
+  for (int k = 0; k < 2; ++k) {
+    doubled.triangles.push_back(octahedron.triangles[0]);
+    doubled.triangles.push_back(
+        {octahedron.triangles[0][0], octahedron.triangles[0][2], octahedron.triangles[0][1]});
+  }
+  for (const Mesh* m : {&turned, &doubled}) {
+    EXPECT_EQ(check_written(*m, std::vector<bool>(6, true)).error().message.find("edge") ==
+                  std::string::npos,
+              false);
+    EXPECT_FALSE(check_written(*m).ok());
+    EXPECT_NE(invalid_reason(*m), "");
+  }
 }
 
 }  // namespace
