@@ -174,11 +174,13 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
 
 // The written mesh's own arrangement, exactly, kept as a union (the solid where its winding
 // number is positive) and written at merge `level`. Only the pairs of triangles of `crossing`
-// (those of the pairs the check found meeting wrongly) are intersected, all pairs when it is
-// empty: every other pair meets at shared corners or a shared edge, where the pair stage finds
-// nothing to add (coplanar neighbours that do not overlap give each other edges that have no
-// piece inside them), so the arrangement is the one of all pairs, at the cost of the few. The
-// labels still cast their rays through the whole mesh.
+// (those of the pairs the check found meeting wrongly; every triangle after an edge failure)
+// are intersected: every other pair meets at shared corners or a shared edge, where the pair
+// stage finds nothing to add (coplanar neighbours that do not overlap give each other edges
+// that have no piece inside them), and zero-area triangles are never intersected, so the
+// arrangement is the one of all pairs, at the cost of the few (none when the check failed only
+// on zero-area triangles: the round then drops them, they bound nothing). The labels still cast
+// their rays through the whole mesh.
 Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
                          double scale) {
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
@@ -186,7 +188,7 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   PointStore store;
   for (const Vec3 v : soup->vertices)
     (void)store.add(v);
-  const std::vector<TriangleWork> work = crossing.empty()
+  const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);
   const Refinement refinement = refine(*soup, work, store);

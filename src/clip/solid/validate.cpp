@@ -232,7 +232,12 @@ Status check_written(const Mesh& mesh) {
 
 Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
                      std::vector<std::int32_t>* crossing) {
-  if (!edges_matched(mesh)) return failure("an edge is not matched by exactly one opposite edge");
+  if (!edges_matched(mesh)) {
+    // No pair is known to be the cause: every triangle is the region to repair.
+    for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
+      crossing->push_back(static_cast<std::int32_t>(t));
+    return failure("an edge is not matched by exactly one opposite edge");
+  }
   Status status = Ok{};
   std::vector<Box3> boxes(mesh.triangles.size());  // empty for a zero-area triangle
   std::vector<std::int32_t> rounded;               // triangles with a corner that is not kept

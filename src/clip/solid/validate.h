@@ -24,7 +24,8 @@ namespace contain::clip::solid {
 /// check. Edges and areas are checked on every triangle. kept.size() == mesh.vertices.size().
 /// With `crossing`, the check goes on after a failure of a pair or an area and appends every
 /// triangle of a pair that meets wrongly (ascending; zero-area triangles are not in it): the
-/// region a snap-rounding round repairs. An edge failure still returns at once.
+/// region a snap-rounding round repairs. An edge failure returns at once with every triangle
+/// appended.
 [[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
                                    std::vector<std::int32_t>* crossing = nullptr);
 
