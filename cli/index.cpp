@@ -12,6 +12,7 @@
 #include "contain/inside/index_file.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/io/index_io.h"
+#include "contain/io/layer_io.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
@@ -20,48 +21,97 @@
 namespace contain::cli {
 namespace {
 
-int build_mesh_index(const std::string& mesh_path, const std::string& out) {
-  auto file = io::read_mesh(mesh_path);
+struct BuildOptions {
+  std::string mesh, layer, id, layer_name, out;
+  Fill fill = Fill::even_odd;
+};
+
+int build_mesh_index(const BuildOptions& o) {
+  auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
   const inside::MeshIndex index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
-  if (!warning.empty()) warn(mesh_path + ": " + warning);
-  if (Status s = io::write_index(inside::format_index(index), out); !s) return report(s.error());
+  if (!warning.empty()) warn(o.mesh + ": " + warning);
+  if (Status s = io::write_index(inside::format_index(index), o.out); !s) return report(s.error());
   return exit_ok;
 }
 
-}  // namespace
+int build_layer_index(const BuildOptions& o) {
+  auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
+  if (!layer) return report(layer.error());
+  for (const std::string& warning : layer->warnings)
+    warn(warning);
+  const inside::RegionLayer index(layer->regions, {.fill = o.fill});
+  const auto bytes =
+      inside::format_index(index, inside::fingerprint(layer->regions, o.fill), layer->ids);
+  if (Status s = io::write_index(bytes, o.out); !s) return report(s.error());
+  return exit_ok;
+}
 
-int run_inside_index(const PointQuery& o, const std::string& index_path, const std::string& mesh) {
-  auto file = io::read_index_file(index_path);
-  if (!file) return report(file.error());
-  if (file->header.kind != inside::IndexKind::mesh_index) {
-    return report({ErrorKind::invalid_value,
-                   fmt::format("holds a {}; contain inside --index answers from a mesh_index",
-                               inside::to_string(file->header.kind)),
-                   index_path});
+Error mismatch(const std::string& index, const std::string& shape, const std::string& rebuild) {
+  return {ErrorKind::invalid_value,
+          fmt::format("was built from another {} (fingerprints differ): build it again with "
+                      "'contain index build {} --out {}'",
+                      shape, rebuild, index),
+          index};
+}
+
+int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
+  if (!o.layer.empty()) {
+    return report({ErrorKind::invalid_value, "holds a mesh_index, not a layer's index", q.index});
   }
-  if (!mesh.empty()) {
-    auto source = io::read_mesh(mesh);
+  if (!q.mesh.empty()) {
+    auto source = io::read_mesh(q.mesh);
     if (!source) return report(source.error());
-    if (inside::fingerprint(source->mesh) != file->header.source) {
-      return report({ErrorKind::invalid_value,
-                     fmt::format("was built from another mesh than {} (the triangles' "
-                                 "fingerprints differ): build it again with 'contain index "
-                                 "build --mesh {} --out {}'",
-                                 mesh, mesh, index_path),
-                     index_path});
-    }
+    if (inside::fingerprint(source->mesh) != file.header.source)
+      return report(mismatch(q.index, "mesh than " + q.mesh, "--mesh " + q.mesh));
   }
-  auto index = io::read_mesh_index(*file, index_path);
+  auto index = io::read_mesh_index(file, q.index);
   if (!index) return report(index.error());
   const std::string warning = io::mesh_warning(index->regime(), index->report());
-  if (!warning.empty()) warn((mesh.empty() ? index_path : mesh) + ": " + warning);
+  if (!warning.empty()) warn((q.mesh.empty() ? q.index : q.mesh) + ": " + warning);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   std::vector<Location> locations(points->points.size());
   index->locate(points->points, locations, {.threads = o.threads});
   return emit(format_locations(locations, o.boundary), o.out);
+}
+
+int answer_from_layer_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
+  if (!q.mesh.empty()) {
+    return report({ErrorKind::invalid_value, "holds a layer's index, not a mesh_index", q.index});
+  }
+  auto saved = io::read_region_layer_index(file, q.index);
+  if (!saved) return report(saved.error());
+  if (q.fill_given && saved->layer.fill() != o.fill) {
+    return report({ErrorKind::invalid_value,
+                   "was built with another --fill rule than the one given", q.index});
+  }
+  if (!o.layer.empty()) {
+    auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});
+    if (!layer) return report(layer.error());
+    if (inside::fingerprint(layer->regions, saved->layer.fill()) != saved->source ||
+        layer->ids != saved->ids) {
+      return report(
+          mismatch(q.index, "layer (or other ids) than " + o.layer, "--layer " + o.layer));
+    }
+  }
+  std::vector<std::string> ids = saved->ids;
+  if (ids.empty()) {
+    for (std::size_t r = 0; r < saved->layer.size(); ++r)
+      ids.push_back(std::to_string(r));
+  }
+  return answer_layer(saved->layer, ids, o);
+}
+
+}  // namespace
+
+int run_inside_index(const ManyOptions& o, const IndexQuery& q) {
+  auto file = io::read_index_file(q.index);
+  if (!file) return report(file.error());
+  if (file->header.kind == inside::IndexKind::mesh_index)
+    return answer_from_mesh_index(o, q, *file);
+  return answer_from_layer_index(o, q, *file);
 }
 
 Verb add_index(CLI::App& app) {
@@ -72,23 +122,46 @@ Verb add_index(CLI::App& app) {
   cmd->require_subcommand(1);
   CLI::App* build = cmd->add_subcommand(
       "build",
-      "Prepare a shape's index and save it (a versioned binary file, checked on load: "
-      "magic, format version, byte order, the shape's fingerprint, checksums)");
-  auto mesh = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  build->add_option("--mesh", *mesh, "3D solid bounded by a triangle mesh (.obj .off .stl .ply)")
-      ->option_text("FILE")
-      ->required();
-  build->add_option("--out", *out, "the index file to write")->option_text("FILE")->required();
+      "Prepare a mesh's or a layer's index and save it (a versioned binary file, checked "
+      "on load: magic, format version, byte order, the shape's fingerprint, checksums)");
+  auto o = std::make_shared<BuildOptions>();
+  auto* mesh = build
+                   ->add_option("--mesh", o->mesh,
+                                "3D solid bounded by a triangle mesh (.obj .off .stl .ply)")
+                   ->option_text("FILE");
+  auto* layer =
+      build->add_option("--layer", o->layer, "many 2D regions with ids, as contain inside --layer")
+          ->option_text("FILE");
+  mesh->excludes(layer);
+  layer->excludes(mesh);
+  build->add_option("--id", o->id, "with --layer: the attribute holding the ids")
+      ->option_text("NAME")
+      ->needs(layer);
+  build->add_option("--layer-name", o->layer_name, "with --layer: the layer (table) to read")
+      ->option_text("NAME")
+      ->needs(layer);
+  add_fill_option(*build, o->fill);
+  build->add_option("--out", o->out, "the index file to write")->option_text("FILE")->required();
   build->footer(
       "Examples:\n"
       "  contain index build --mesh part.obj --out part.cidx\n"
       "  contain inside --index part.cidx --points probes.xyz\n"
       "  contain inside --mesh part.obj --index part.cidx --points probes.xyz   # checks that "
       "part.cidx was built from part.obj\n"
+      "  contain index build --layer counties.geojson --id GEOID --out counties.cidx\n"
+      "  contain inside --index counties.cidx --points gps.txt\n"
       "A damaged, truncated, foreign or mismatched index file is refused (exit 3), never "
-      "trusted. The file is for this build's format version and this machine's byte order.");
-  return {cmd, [mesh, out]() { return build_mesh_index(*mesh, *out); }};
+      "trusted. The file is for this build's format version and this machine's byte order "
+      "(docs/index-files.md).");
+  CLI::Option* fill = build->get_option("--fill");
+  return {cmd, [o, mesh, layer, fill]() {
+            if (mesh->count() + layer->count() == 0)
+              return report({ErrorKind::usage, "index build: give the shape: --mesh or --layer"});
+            if (mesh->count() > 0 && fill->count() > 0) {
+              return report({ErrorKind::usage, "index build: --fill reads the rings of a --layer"});
+            }
+            return mesh->count() > 0 ? build_mesh_index(*o) : build_layer_index(*o);
+          }};
 }
 
 }  // namespace contain::cli

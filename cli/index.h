@@ -7,8 +7,16 @@
 
 namespace contain::cli {
 
-/// contain inside --index FILE [--mesh MESH]: the saved index answers; with MESH, it must have
-/// been built from MESH's triangles (exit 3 naming both files otherwise).
-int run_inside_index(const PointQuery& query, const std::string& index, const std::string& mesh);
+/// The saved index of contain inside --index, and the shape it must have been built from.
+struct IndexQuery {
+  std::string index;        // --index FILE
+  std::string mesh;         // --mesh FILE, empty: not checked (the layer: ManyOptions::layer)
+  bool fill_given = false;  // --fill given: the layer's rule must be it
+};
+
+/// contain inside --index FILE [--mesh MESH | --layer LAYER]: the saved index answers (a mesh
+/// index as --mesh, a layer index as --layer, ids from the file); with MESH or LAYER, it must
+/// have been built from it (exit 3 naming both otherwise).
+int run_inside_index(const ManyOptions& query, const IndexQuery& index);
 
 }  // namespace contain::cli

@@ -135,11 +135,11 @@ Verb add_inside(CLI::App& app) {
     other->excludes(scene);
   }
   auto* index = cmd->add_option("--index", o->index,
-                                "a saved index (contain index build --mesh): answers without "
-                                "building one; with --mesh, refused unless built from that mesh "
-                                "(exit 3)")
+                                "a saved index (contain index build): answers without building "
+                                "one; with --mesh or --layer, refused unless built from it (exit "
+                                "3)")
                     ->option_text("FILE");
-  for (CLI::Option* other : {polygon, csg, layer, scene}) {
+  for (CLI::Option* other : {polygon, csg, scene}) {
     index->excludes(other);
     other->excludes(index);
   }
@@ -177,18 +177,20 @@ Verb add_inside(CLI::App& app) {
               return report({ErrorKind::usage, "inside: --id and --layer-name need --layer"});
             }
             // A fill rule reads rings: solids would silently drop it.
-            if (fill->count() > 0 &&
-                mesh->count() + csg->count() + scene->count() + index->count() > 0) {
+            if (fill->count() > 0 && mesh->count() + csg->count() + scene->count() > 0) {
               return report({ErrorKind::usage,
                              "inside: --fill reads the rings of 2D regions (--polygon, --layer); "
-                             "--mesh, --csg, --scene and --index are solids"});
+                             "--mesh, --csg and --scene are solids"});
             }
-            if (layer->count() > 0 || scene->count() > 0) {
+            if (layer->count() + scene->count() + index->count() > 0) {
               ManyOptions m = *many;
               static_cast<PointQuery&>(m) = *o;
+              if (index->count() > 0) {
+                return run_inside_index(
+                    m, {.index = o->index, .mesh = o->mesh, .fill_given = fill->count() > 0});
+              }
               return layer->count() > 0 ? run_layer(m) : run_scene_inside(m);
             }
-            if (index->count() > 0) return run_inside_index(*o, o->index, o->mesh);
             if (mesh->count() > 0) return run_mesh(*o);
             if (polygon->count() > 0) return run_polygon(*o);
             if (csg->count() > 0) return run_csg(*o);

@@ -103,4 +103,15 @@ Result<inside::MeshIndex> read_mesh_index(const std::string& path) {
   return read_mesh_index(*file, path);
 }
 
+Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
+                                                         const std::string& path) {
+  return named(inside::parse_region_layer(file.header), path);
+}
+
+Result<inside::SavedRegionLayer> read_region_layer_index(const std::string& path) {
+  auto file = read_index_file(path);
+  if (!file) return file.error();
+  return read_region_layer_index(*file, path);
+}
+
 }  // namespace contain::io

@@ -100,5 +100,7 @@ struct SavedRegionLayer {
 };
 /// The `RegionLayer` saved in `bytes`: answers exactly as the layer that was saved.
 [[nodiscard]] Result<SavedRegionLayer> parse_region_layer(std::span<const std::byte> bytes);
+/// The same from a header `parse_index_header` has already checked (no second checksum pass).
+[[nodiscard]] Result<SavedRegionLayer> parse_region_layer(const IndexHeader& checked);
 
 }  // namespace contain::inside

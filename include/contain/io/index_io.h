@@ -52,4 +52,10 @@ struct IndexFile {
 [[nodiscard]] Result<inside::MeshIndex> read_mesh_index(const IndexFile& file,
                                                         const std::string& path);
 
+/// The `RegionLayer` (and its ids) saved in `path`; errors (ErrorKind::io or parse) name the file.
+[[nodiscard]] Result<inside::SavedRegionLayer> read_region_layer_index(const std::string& path);
+/// The `RegionLayer` of an index file already read; errors name `path`.
+[[nodiscard]] Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
+                                                                       const std::string& path);
+
 }  // namespace contain::io
