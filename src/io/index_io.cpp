@@ -62,7 +62,8 @@ Result<MappedFile> map_file(const std::string& path) {
     return Error{ErrorKind::io, "not a regular file (an index is mapped into memory)", path};
   }
   if (st.st_size > 0) {
-    void* p = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    void* p = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ,
+                     MAP_PRIVATE | MAP_POPULATE, fd, 0);
     if (p == MAP_FAILED) {
       const Error error = io_error(path, "cannot map");
       ::close(fd);
