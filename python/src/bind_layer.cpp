@@ -337,7 +337,7 @@ of a source holding several. Coordinates are the doubles of the file.
       .def(
           "save",
           [](const Layer& layer, const std::filesystem::path& path) {
-            take(io::write_index(layer.bytes(), path.string()));
+            (void)take(io::write_index(layer.bytes(), path.string()));
           },
           "path"_a,
           "Writes the prepared layer and its ids to a file (docs/index-files.md);\n"

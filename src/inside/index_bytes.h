@@ -76,6 +76,25 @@ class Writer {
   std::vector<std::byte> bytes_;
 };
 
+// An array left in the file's bytes (no copy): elements read one by one, any alignment.
+template <class T>
+class View {
+ public:
+  View() = default;
+  View(const std::byte* data, std::size_t size) : data_(data), size_(size) {}
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] bool empty() const { return size_ == 0; }
+  T operator[](std::size_t i) const {
+    T value;
+    std::memcpy(&value, data_ + i * sizeof(T), sizeof(T));
+    return value;
+  }
+
+ private:
+  const std::byte* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 // Reads what Writer wrote. The first failure is kept (`error()`); later reads return zeros, so a
 // parser reads straight through and checks once at the end of each section.
 class Reader {
@@ -101,6 +120,18 @@ class Reader {
     if (n > 0) std::memcpy(values.data(), bytes_.data() + at_, values.size() * sizeof(T));
     at_ += values.size() * sizeof(T);
     return values;
+  }
+  // An array as `get_array` reads it, left in place.
+  template <class T>
+  View<T> get_view() {
+    const auto n = get<std::uint64_t>();
+    if (failed_ || n > (bytes_.size() - at_) / sizeof(T)) {
+      fail("an array's length runs past the end of the file");
+      return {};
+    }
+    const View<T> view(bytes_.data() + at_, static_cast<std::size_t>(n));
+    at_ += view.size() * sizeof(T);
+    return view;
   }
   // A count of records that each take at least `min_bytes` of the file.
   std::size_t get_count(std::size_t min_bytes) {

@@ -2,18 +2,21 @@
 // read here, in `MeshIndexFile::write` and `MeshIndexFile::read`, and nowhere else, so a change
 // of the index's members changes these two functions (and index_format_version).
 //
-// What is stored and what is recomputed: the triangles are stored as their corners (in the
-// index's order) and their float boxes and ray signs recomputed by the index's own stage
-// (read_triangles), so they can never disagree with the corners; a cell's triangle list stores
-// triangle numbers and its boxes are copied from the triangles; every stored number that indexes
-// an array is checked against it. The winding regime's tree is rebuilt from the triangles (the
-// file saves the mesh's validation, not that build).
+// What is stored and what is checked or recomputed: the triangles are stored whole (corners,
+// float box, ray sign, in the index's order) and checked against their corners (the sign
+// recomputed exactly, the box holding the corners: any such box is a correct rejection test); a
+// cell's triangle list stores triangle numbers and its boxes are copied from the triangles; every
+// stored number that indexes an array is checked against it. The winding regime's tree is
+// rebuilt from the triangles (the file saves the mesh's validation, not that build).
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 #include <utility>
 
 #include "contain/inside/index_file.h"
+#include "contain/predicates/perturbed_ray.h"
 #include "inside/index_bytes.h"
 
 namespace contain::inside {
@@ -21,8 +24,10 @@ namespace contain::inside {
 struct MeshIndexFile {
   static void write(const MeshIndex& index, index_bytes::Writer& w);
   static Result<MeshIndex> read(index_bytes::Reader& r);
-  static Result<MeshIndex> read_grid(MeshIndex index, std::span<const std::uint32_t> surface,
-                                     std::span<const std::uint32_t> refs);
+  static Status check_triangles(MeshIndex& index);
+  static Mesh soup(const MeshIndex& index);
+  static Result<MeshIndex> read_grid(MeshIndex index, index_bytes::View<std::uint32_t> surface,
+                                     index_bytes::View<std::uint32_t> refs);
   static std::uint64_t fingerprint(const MeshIndex& index);
 };
 
@@ -66,11 +71,23 @@ MeshReport read_report(index_bytes::Reader& r) {
 void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   w.put<std::uint8_t>(static_cast<std::uint8_t>(index.regime_));
   write_report(index.report_, w);
-  std::vector<Vec3> corners;
-  corners.reserve(3 * index.tris_.size());
-  for (const MeshIndex::Tri& t : index.tris_)
-    corners.insert(corners.end(), {t.a, t.b, t.c});
-  w.put_array<Vec3>(corners);
+  // The records are copied whole: a change of Tri's layout must change index_format_version.
+  static_assert(sizeof(MeshIndex::Tri) == 104 && offsetof(MeshIndex::Tri, lo) == 72 &&
+                    offsetof(MeshIndex::Tri, s) == 96,
+                "MeshIndex::Tri changed: update mesh_index_file.cpp and index_format_version");
+  // Member by member into zeroed records: the file never holds the padding's stale bytes.
+  std::vector<MeshIndex::Tri> tris(index.tris_.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const MeshIndex::Tri& from = index.tris_[t];
+    MeshIndex::Tri& to = tris[t];
+    to.a = from.a;
+    to.b = from.b;
+    to.c = from.c;
+    std::copy(std::begin(from.lo), std::end(from.lo), std::begin(to.lo));
+    std::copy(std::begin(from.hi), std::end(from.hi), std::begin(to.hi));
+    to.s = from.s;
+  }
+  w.put_array<MeshIndex::Tri>(tris);
   w.put(index.winding_.accuracy());
   w.put(index.x_);
   w.put(index.y_);
@@ -95,53 +112,39 @@ Result<MeshIndex> MeshIndexFile::read(index_bytes::Reader& r) {
   MeshIndex index;
   const auto regime = r.get<std::uint8_t>();
   index.report_ = read_report(r);
-  Mesh soup;  // the triangles in the index's order, three corners each
-  soup.vertices = r.get_array<Vec3>();
+  index.tris_ = r.get_array<MeshIndex::Tri>();
   const double accuracy = r.get_double();
   index.x_ = r.get_axis();
   index.y_ = r.get_axis();
   index.z_ = r.get_axis();
   index.state_ = r.get_array<std::uint8_t>();
-  const auto surface = r.get_array<std::uint32_t>();
+  const auto surface = r.get_view<std::uint32_t>();
   index.cell_start_ = r.get_array<std::uint32_t>();
-  const auto refs = r.get_array<std::uint32_t>();
+  const auto refs = r.get_view<std::uint32_t>();
   MeshIndex::Stats& s = index.stats_;
   for (std::size_t* v : {&s.triangles, &s.cells, &s.surface_cells, &s.cell_refs})
     *v = static_cast<std::size_t>(r.get<std::uint64_t>());
   if (Status done = r.finish(); !done) return done.error();
-
-  // The triangles: finite corners, fewer than 2^32 (CellRef numbers them in 32 bits).
   if (regime > 1) return bad("unknown mesh regime");
-  if (soup.vertices.size() % 3 != 0 || soup.vertices.size() / 3 >= (std::size_t{1} << 32))
-    return bad("the triangles' corners are not whole triangles");
-  for (const Vec3& v : soup.vertices)
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      return bad("a triangle corner is not finite");
-  const std::size_t triangles = soup.vertices.size() / 3;
-  soup.triangles.resize(triangles);
-  for (std::size_t t = 0; t < triangles; ++t) {
-    const auto v = static_cast<std::int32_t>(3 * t);
-    soup.triangles[t] = {v, v + 1, v + 2};
-  }
   index.regime_ = static_cast<MeshRegime>(regime);
-  index.read_triangles(soup);
-  index.stats_.triangles = triangles;
+  if (Status t = check_triangles(index); !t) return t.error();
   if (index.regime_ == MeshRegime::winding_number) {
     if (!(accuracy > 0.0) || !std::isfinite(accuracy)) return bad("winding accuracy");
-    if (triangles > 0) index.winding_ = FastWindingNumber(soup, {.accuracy = accuracy});
+    if (!index.tris_.empty())
+      index.winding_ = FastWindingNumber(soup(index), {.accuracy = accuracy});
     if (!index.state_.empty() || !index.cell_start_.empty() || !refs.empty())
       return bad("a winding-number index holds a grid");
     return index;
   }
-
   return read_grid(std::move(index), surface, refs);
 }
 
 // The exact regime's grid, checked: its axes span the triangles' box; every cell's state is 0, 1
 // or 2; surface cells numbered below their count; cell_start_ ascending from 0 to the references'
 // count; every reference a triangle.
-Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index, std::span<const std::uint32_t> surface,
-                                           std::span<const std::uint32_t> refs) {
+Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
+                                           index_bytes::View<std::uint32_t> surface,
+                                           index_bytes::View<std::uint32_t> refs) {
   const std::size_t triangles = index.tris_.size();
   index.nx_ = index.x_.cells();
   index.ny_ = index.y_.cells();
@@ -186,6 +189,39 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index, std::span<const std:
   index.stats_.ny = index.ny_;
   index.stats_.nz = index.nz_;
   return index;
+}
+
+// The triangles as the index's own stage (read_triangles) makes them: finite corners, fewer
+// than 2^32 (CellRef numbers them in 32 bits), the ray sign exactly the projection's, the float
+// box holding the corners (any such box is a correct rejection test). Sets the bounds.
+Status MeshIndexFile::check_triangles(MeshIndex& index) {
+  if (index.tris_.size() >= (std::size_t{1} << 32)) return bad("too many triangles");
+  for (const MeshIndex::Tri& t : index.tris_) {
+    for (const Vec3& v : {t.a, t.b, t.c}) {
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        return bad("a triangle corner is not finite");
+      const double c[3] = {v.x, v.y, v.z};
+      for (int d = 0; d < 3; ++d)
+        if (!(t.lo[d] <= c[d] && c[d] <= t.hi[d])) return bad("a triangle's box");
+      index.bounds_.expand(v);
+    }
+    if (t.s != predicates::projected_sign(t.a, t.b, t.c)) return bad("a triangle's ray sign");
+  }
+  index.stats_.triangles = index.tris_.size();
+  return Ok{};
+}
+
+// The triangles in the index's order, three corners each (the winding number's input).
+Mesh MeshIndexFile::soup(const MeshIndex& index) {
+  Mesh mesh;
+  mesh.vertices.reserve(3 * index.tris_.size());
+  mesh.triangles.reserve(index.tris_.size());
+  for (const MeshIndex::Tri& t : index.tris_) {
+    const auto v = static_cast<std::int32_t>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), {t.a, t.b, t.c});
+    mesh.triangles.push_back({v, v + 1, v + 2});
+  }
+  return mesh;
 }
 
 std::uint64_t MeshIndexFile::fingerprint(const MeshIndex& index) {
