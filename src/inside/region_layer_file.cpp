@@ -104,8 +104,12 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
   if (fill > static_cast<std::uint8_t>(Fill::negative)) return bad("unknown fill rule");
   index.fill_ = static_cast<Fill>(fill);
   if (index.cells_.empty()) {
-    if (!index.edge_cells_.empty() || !index.edges_.empty() || !index.side_edges_.empty())
-      return bad("a region without a grid holds edges");
+    // No grid: locate must stop at the box test, so the box holds no point (empty or NaN).
+    const Box2& b = index.bounds_;
+    if (!index.edge_cells_.empty() || !index.edges_.empty() || !index.side_edges_.empty() ||
+        (b.min.x <= b.max.x && b.min.y <= b.max.y)) {
+      return bad("a region without a grid holds edges or a box");
+    }
     return Ok{};
   }
   if (!grid_spans(index.x_, index.y_, index.bounds_, index.cells_.size()))

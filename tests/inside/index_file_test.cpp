@@ -232,5 +232,17 @@ TEST(RegionLayerFile, TruncatedFlippedAndCraftedFilesAreRefusedOrSafe) {
   }
 }
 
+TEST(RegionLayerFile, RegionWithoutAGridWhoseBoxHoldsPointsIsRefused) {
+  // One empty region: payload = fill (1 byte), region count (8), the region's fill (1), its box.
+  auto bytes = format_index(RegionLayer(std::vector<MultiPolygon>{MultiPolygon{}}), 0, {});
+  ASSERT_TRUE(parse_region_layer(bytes).ok());
+  const double box[4] = {0.0, 0.0, 1.0, 1.0};  // min.x, min.y, max.x, max.y
+  std::memcpy(bytes.data() + index_header_size + 10, box, sizeof box);
+  reseal(bytes);
+  const auto loaded = parse_region_layer(bytes);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_NE(loaded.error().message.find("without a grid"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace contain::inside
