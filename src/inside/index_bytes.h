@@ -165,7 +165,10 @@ class Reader {
     const double lo = get_double(), hi = get_double();
     if (failed_) return {};
     if (cells == 0) return {};
-    if (cells < 0 || cells > (1 << 24) || !(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) {
+    // Every grid stores at least a byte per cell, so an axis has at most as many cells as the
+    // payload has bytes: a crafted count cannot make the reader allocate more than the file.
+    if (cells < 0 || cells > (1 << 24) || static_cast<std::size_t>(cells) > bytes_.size() ||
+        !(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) {
       fail("a grid axis is malformed");
       return {};
     }
