@@ -11,6 +11,7 @@
 
 #include "contain/inside/index_file.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/inside/polygon_index.h"
 #include "contain/io/index_io.h"
 #include "contain/io/layer_io.h"
 #include "contain/io/mesh_io.h"
@@ -22,7 +23,7 @@ namespace contain::cli {
 namespace {
 
 struct BuildOptions {
-  std::string mesh, layer, id, layer_name, out;
+  std::string mesh, polygon, layer, id, layer_name, out;
   Fill fill = Fill::even_odd;
 };
 
@@ -33,6 +34,16 @@ int build_mesh_index(const BuildOptions& o) {
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   if (Status s = io::write_index(inside::format_index(index), o.out); !s) return report(s.error());
+  return exit_ok;
+}
+
+int build_polygon_index(const BuildOptions& o) {
+  auto region = read_region_warned(o.polygon);
+  if (!region) return report(region.error());
+  const inside::PolygonIndex index(*region, {.fill = o.fill});
+  const auto source = inside::fingerprint(std::span<const MultiPolygon>(&*region, 1), o.fill);
+  if (Status s = io::write_index(inside::format_index(index, source), o.out); !s)
+    return report(s.error());
   return exit_ok;
 }
 
@@ -57,8 +68,11 @@ Error mismatch(const std::string& index, const std::string& shape, const std::st
 }
 
 int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
-  if (!o.layer.empty()) {
-    return report({ErrorKind::invalid_value, "holds a mesh_index, not a layer's index", q.index});
+  if (!o.layer.empty() || !q.polygon.empty()) {
+    return report({ErrorKind::invalid_value,
+                   std::string("holds a mesh_index, not a ") +
+                       (o.layer.empty() ? "polygon_index" : "layer's index"),
+                   q.index});
   }
   if (!q.mesh.empty()) {
     auto source = io::read_mesh(q.mesh);
@@ -77,9 +91,40 @@ int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
+int answer_from_polygon_index(const ManyOptions& o, const IndexQuery& q,
+                              const io::IndexFile& file) {
+  if (!q.mesh.empty() || !o.layer.empty()) {
+    return report({ErrorKind::invalid_value,
+                   std::string("holds a polygon_index, not a ") +
+                       (o.layer.empty() ? "mesh_index" : "layer's index"),
+                   q.index});
+  }
+  auto index = io::read_polygon_index(file, q.index);
+  if (!index) return report(index.error());
+  if (q.fill_given && index->fill() != o.fill) {
+    return report({ErrorKind::invalid_value,
+                   "was built with another --fill rule than the one given", q.index});
+  }
+  if (!q.polygon.empty()) {
+    auto region = read_region_warned(q.polygon);
+    if (!region) return report(region.error());
+    const auto regions = std::span<const MultiPolygon>(&*region, 1);
+    if (inside::fingerprint(regions, index->fill()) != file.header.source)
+      return report(mismatch(q.index, "region than " + q.polygon, "--polygon " + q.polygon));
+  }
+  auto points = io::read_points2(o.points);
+  if (!points) return report(points.error());
+  std::vector<Location> locations(points->points.size());
+  index->locate(points->points, locations, {.threads = o.threads});
+  return emit(format_locations(locations, o.boundary), o.out);
+}
+
 int answer_from_layer_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
-  if (!q.mesh.empty()) {
-    return report({ErrorKind::invalid_value, "holds a layer's index, not a mesh_index", q.index});
+  if (!q.mesh.empty() || !q.polygon.empty()) {
+    return report({ErrorKind::invalid_value,
+                   std::string("holds a layer's index, not a ") +
+                       (q.mesh.empty() ? "polygon_index" : "mesh_index"),
+                   q.index});
   }
   auto saved = io::read_region_layer_index(file, q.index);
   if (!saved) return report(saved.error());
@@ -109,8 +154,14 @@ int answer_from_layer_index(const ManyOptions& o, const IndexQuery& q, const io:
 int run_inside_index(const ManyOptions& o, const IndexQuery& q) {
   auto file = io::read_index_file(q.index);
   if (!file) return report(file.error());
-  if (file->header.kind == inside::IndexKind::mesh_index)
-    return answer_from_mesh_index(o, q, *file);
+  switch (file->header.kind) {
+    case inside::IndexKind::mesh_index:
+      return answer_from_mesh_index(o, q, *file);
+    case inside::IndexKind::polygon_index:
+      return answer_from_polygon_index(o, q, *file);
+    case inside::IndexKind::region_layer:
+      break;
+  }
   return answer_from_layer_index(o, q, *file);
 }
 
@@ -122,18 +173,24 @@ Verb add_index(CLI::App& app) {
   cmd->require_subcommand(1);
   CLI::App* build = cmd->add_subcommand(
       "build",
-      "Prepare a mesh's or a layer's index and save it (a versioned binary file, checked "
+      "Prepare a mesh's, a region's or a layer's index and save it (a versioned binary file, "
+      "checked "
       "on load: magic, format version, byte order, the shape's fingerprint, checksums)");
   auto o = std::make_shared<BuildOptions>();
   auto* mesh = build
                    ->add_option("--mesh", o->mesh,
                                 "3D solid bounded by a triangle mesh (.obj .off .stl .ply)")
                    ->option_text("FILE");
+  auto* polygon =
+      build
+          ->add_option("--polygon", o->polygon, "2D region (.wkt POLYGON/MULTIPOLYGON or .geojson)")
+          ->option_text("FILE");
   auto* layer =
       build->add_option("--layer", o->layer, "many 2D regions with ids, as contain inside --layer")
           ->option_text("FILE");
-  mesh->excludes(layer);
-  layer->excludes(mesh);
+  for (CLI::Option* a : {mesh, polygon, layer})
+    for (CLI::Option* b : {mesh, polygon, layer})
+      if (a != b) a->excludes(b);
   build->add_option("--id", o->id, "with --layer: the attribute holding the ids")
       ->option_text("NAME")
       ->needs(layer);
@@ -148,19 +205,24 @@ Verb add_index(CLI::App& app) {
       "  contain inside --index part.cidx --points probes.xyz\n"
       "  contain inside --mesh part.obj --index part.cidx --points probes.xyz   # checks that "
       "part.cidx was built from part.obj\n"
+      "  contain index build --polygon coast.wkt --fill nonzero --out coast.cidx\n"
       "  contain index build --layer counties.geojson --id GEOID --out counties.cidx\n"
       "  contain inside --index counties.cidx --points gps.txt\n"
       "A damaged, truncated, foreign or mismatched index file is refused (exit 3), never "
       "trusted. The file is for this build's format version and this machine's byte order "
       "(docs/index-files.md).");
   CLI::Option* fill = build->get_option("--fill");
-  return {cmd, [o, mesh, layer, fill]() {
-            if (mesh->count() + layer->count() == 0)
-              return report({ErrorKind::usage, "index build: give the shape: --mesh or --layer"});
-            if (mesh->count() > 0 && fill->count() > 0) {
-              return report({ErrorKind::usage, "index build: --fill reads the rings of a --layer"});
+  return {cmd, [o, mesh, polygon, layer, fill]() {
+            if (mesh->count() + polygon->count() + layer->count() == 0) {
+              return report(
+                  {ErrorKind::usage, "index build: give the shape: --mesh, --polygon or --layer"});
             }
-            return mesh->count() > 0 ? build_mesh_index(*o) : build_layer_index(*o);
+            if (mesh->count() > 0 && fill->count() > 0) {
+              return report({ErrorKind::usage,
+                             "index build: --fill reads the rings of a --polygon or --layer"});
+            }
+            if (mesh->count() > 0) return build_mesh_index(*o);
+            return polygon->count() > 0 ? build_polygon_index(*o) : build_layer_index(*o);
           }};
 }
 

@@ -136,10 +136,10 @@ Verb add_inside(CLI::App& app) {
   }
   auto* index = cmd->add_option("--index", o->index,
                                 "a saved index (contain index build): answers without building "
-                                "one; with --mesh or --layer, refused unless built from it (exit "
-                                "3)")
+                                "one; with --mesh, --polygon or --layer, refused unless built "
+                                "from it (exit 3)")
                     ->option_text("FILE");
-  for (CLI::Option* other : {polygon, csg, scene}) {
+  for (CLI::Option* other : {csg, scene}) {
     index->excludes(other);
     other->excludes(index);
   }
@@ -186,8 +186,10 @@ Verb add_inside(CLI::App& app) {
               ManyOptions m = *many;
               static_cast<PointQuery&>(m) = *o;
               if (index->count() > 0) {
-                return run_inside_index(
-                    m, {.index = o->index, .mesh = o->mesh, .fill_given = fill->count() > 0});
+                return run_inside_index(m, {.index = o->index,
+                                            .mesh = o->mesh,
+                                            .polygon = o->polygon,
+                                            .fill_given = fill->count() > 0});
               }
               return layer->count() > 0 ? run_layer(m) : run_scene_inside(m);
             }

@@ -1,9 +1,9 @@
 // libFuzzer target: loading a saved index (inside::parse_mesh_index, parse_region_layer) on any
 // payload. The first byte chooses: 0 the bytes as a whole file (header checks), 1 a mesh index's
-// payload, 2 a layer's, framed under a correct header with correct checksums, so that the
-// mutations reach the payload's own checks instead of failing the checksum. A payload is refused
-// with a message or loads an index that answers without reading out of bounds (ASan), and that
-// saves and loads again to the same answers.
+// payload, 2 a layer's, 3 a polygon index's, framed under a correct header with correct checksums,
+// so that the mutations reach the payload's own checks instead of failing the checksum. A payload
+// is refused with a message or loads an index that answers without reading out of bounds (ASan),
+// and that saves and loads again to the same answers.
 #include <cstring>
 #include <vector>
 
@@ -38,15 +38,30 @@ std::vector<std::byte> framed(const std::uint8_t* payload, std::size_t size, Ind
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  const std::uint8_t mode = data[0] % 3;
+  const std::uint8_t mode = data[0] % 4;
   const std::vector<std::byte> bytes =
-      mode == 0
-          ? std::vector<std::byte>(reinterpret_cast<const std::byte*>(data) + 1,
-                                   reinterpret_cast<const std::byte*>(data) + size)
-          : framed(data + 1, size - 1, mode == 1 ? IndexKind::mesh_index : IndexKind::region_layer);
+      mode == 0 ? std::vector<std::byte>(reinterpret_cast<const std::byte*>(data) + 1,
+                                         reinterpret_cast<const std::byte*>(data) + size)
+                : framed(data + 1, size - 1,
+                         mode == 1   ? IndexKind::mesh_index
+                         : mode == 2 ? IndexKind::region_layer
+                                     : IndexKind::polygon_index);
   contain::fuzz::FuzzInput in(data, size);
-  const bool mesh = mode != 2;
-  if (mesh) {
+  if (mode == 3) {
+    auto index = contain::inside::parse_polygon_index(bytes);
+    if (!index) {
+      FUZZ_CHECK(!index.error().message.empty());
+      return 0;
+    }
+    auto again = contain::inside::parse_polygon_index(contain::inside::format_index(*index, 0));
+    FUZZ_CHECK(again.ok());
+    for (int i = 0; i < 16; ++i) {
+      const contain::Vec2 p{in.coordinate(), in.coordinate()};
+      FUZZ_CHECK(index->locate(p) == again->locate(p));
+    }
+    return 0;
+  }
+  if (mode != 2) {
     auto index = contain::inside::parse_mesh_index(bytes);
     if (!index) {
       FUZZ_CHECK(!index.error().message.empty());

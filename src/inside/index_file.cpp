@@ -62,6 +62,8 @@ const char* to_string(IndexKind kind) {
       return "mesh_index";
     case IndexKind::region_layer:
       return "region_layer";
+    case IndexKind::polygon_index:
+      return "polygon_index";
   }
   return "unknown";
 }
@@ -169,7 +171,8 @@ Result<IndexHeader> parse_index_header(std::span<const std::byte> bytes) {
   if (read_at<std::uint64_t>(bytes, at_checksum) != index_checksum(payload))
     return corrupt("the checksum does not match (the file is damaged)");
   const auto kind = static_cast<IndexKind>(read_at<std::uint32_t>(bytes, at_kind));
-  if (kind != IndexKind::mesh_index && kind != IndexKind::region_layer)
+  if (kind != IndexKind::mesh_index && kind != IndexKind::region_layer &&
+      kind != IndexKind::polygon_index)
     return corrupt("unknown index kind " + std::to_string(static_cast<std::uint32_t>(kind)));
   return IndexHeader{kind, read_at<std::uint64_t>(bytes, at_source), payload};
 }

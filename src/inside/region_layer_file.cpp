@@ -1,6 +1,7 @@
-// A RegionLayer (and each region's PolygonIndex) as bytes (contain/inside/index_file.h): every
-// member of both classes is written and read here, in RegionLayerFile's functions, and nowhere
-// else, so a change of their members changes these functions (and index_format_version).
+// A RegionLayer (and each region's PolygonIndex, or one PolygonIndex alone) as bytes
+// (contain/inside/index_file.h): every member of both classes is written and read here, in
+// RegionLayerFile's functions, and nowhere else, so a change of their members changes these
+// functions (and index_format_version).
 //
 // What is stored and what is recomputed: each region's index is stored whole and checked (every
 // number that indexes an array against it, every coordinate finite, the grid spanning the box);
@@ -198,6 +199,28 @@ std::vector<std::byte> format_index(const RegionLayer& layer, std::uint64_t sour
   for (const std::string& id : ids)
     w.put(id);
   return index_bytes::finish_index(w, IndexKind::region_layer, source);
+}
+
+std::vector<std::byte> format_index(const PolygonIndex& index, std::uint64_t source) {
+  index_bytes::Writer w;
+  RegionLayerFile::write(index, w);
+  return index_bytes::finish_index(w, IndexKind::polygon_index, source);
+}
+
+Result<PolygonIndex> parse_polygon_index(const IndexHeader& checked) {
+  if (checked.kind != IndexKind::polygon_index)
+    return index_bytes::wrong_kind(checked.kind, IndexKind::polygon_index);
+  index_bytes::Reader r(checked.payload);
+  PolygonIndex index;
+  if (Status s = RegionLayerFile::read(r, index); !s) return s.error();
+  if (Status done = r.finish(); !done) return done.error();
+  return index;
+}
+
+Result<PolygonIndex> parse_polygon_index(std::span<const std::byte> bytes) {
+  auto header = parse_index_header(bytes);
+  if (!header) return header.error();
+  return parse_polygon_index(*header);
 }
 
 Result<SavedRegionLayer> parse_region_layer(const IndexHeader& checked) {

@@ -104,6 +104,16 @@ Result<inside::MeshIndex> read_mesh_index(const std::string& path) {
   return read_mesh_index(*file, path);
 }
 
+Result<inside::PolygonIndex> read_polygon_index(const IndexFile& file, const std::string& path) {
+  return named(inside::parse_polygon_index(file.header), path);
+}
+
+Result<inside::PolygonIndex> read_polygon_index(const std::string& path) {
+  auto file = read_index_file(path);
+  if (!file) return file.error();
+  return read_polygon_index(*file, path);
+}
+
 Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
                                                          const std::string& path) {
   return named(inside::parse_region_layer(file.header), path);

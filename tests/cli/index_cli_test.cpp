@@ -106,6 +106,26 @@ TEST(IndexCli, SavedLayerIndexAnswersWithTheLayersIds) {
   EXPECT_EQ(run_contain({"inside", "--mesh", mesh, "--index", index}, kPoints).exit_code, 3);
 }
 
+TEST(IndexCli, SavedPolygonIndexAnswersAsThePolygonAndRefusesAnotherRegionOrFill) {
+  TempDir dir;
+  const std::string square =
+      dir.write("square.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1))\n");
+  const std::string other = dir.write("other.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\n");
+  const std::string index = (dir.path() / "square.cidx").string();
+  ASSERT_EQ(run_contain({"index", "build", "--polygon", square, "--out", index}).exit_code, 0);
+  const std::string points = "0.5 0.5\n2 2\n1 1\n4 2\n5 5\n1 2\n";
+  const CliRun fresh = run_contain({"inside", "--polygon", square}, points);
+  EXPECT_EQ(fresh.out, "in\nout\non\non\nout\non\n");
+  EXPECT_EQ(run_contain({"inside", "--index", index}, points).out, fresh.out);
+  EXPECT_EQ(run_contain({"inside", "--polygon", square, "--index", index}, points).out, fresh.out);
+  const CliRun mismatch = run_contain({"inside", "--polygon", other, "--index", index}, points);
+  EXPECT_EQ(mismatch.exit_code, 3);
+  EXPECT_NE(mismatch.err.find("other.wkt"), std::string::npos) << mismatch.err;
+  const CliRun fill = run_contain({"inside", "--index", index, "--fill", "nonzero"}, points);
+  EXPECT_EQ(fill.exit_code, 3);
+  EXPECT_NE(fill.err.find("--fill"), std::string::npos) << fill.err;
+}
+
 TEST(IndexCli, IndexBuildWithoutAShapeIsAUsageError) {
   TempDir dir;
   const CliRun run = run_contain({"index", "build", "--out", (dir.path() / "x").string()});

@@ -232,6 +232,34 @@ TEST(RegionLayerFile, TruncatedFlippedAndCraftedFilesAreRefusedOrSafe) {
   }
 }
 
+TEST(PolygonIndexFile, LoadedPolygonIndexAnswersExactlyAsFreshAndFlippedBytesAreRefused) {
+  std::mt19937_64 rng(13);
+  for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative}) {
+    const std::vector<Ring> rings = test::random_integer_rings(rng, 3, 12, 10);
+    const PolygonIndex fresh(rings, {.fill = fill});
+    const std::vector<MultiPolygon> region{MultiPolygon{{Polygon{rings}}}};
+    const auto bytes = format_index(fresh, fingerprint(region, fill));
+    auto loaded = parse_polygon_index(bytes);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().what();
+    EXPECT_EQ(loaded->fill(), fill);
+    EXPECT_EQ(parse_index_header(bytes)->source, fingerprint(region, fill));
+    std::vector<Vec2> points = scenes::uniform_points(Box2{{-1, -1}, {11, 11}}, 3000, 14);
+    for (int x = -1; x <= 11; ++x)  // the vertices, points on edges and on grid lines
+      for (int y = -1; y <= 11; ++y)
+        points.push_back({static_cast<double>(x), static_cast<double>(y)});
+    std::vector<Location> a(points.size()), b(points.size());
+    fresh.locate(points, a, {.threads = 1});
+    loaded->locate(points, b, {.threads = 1});
+    EXPECT_EQ(a, b);
+    for (std::size_t i = 0; i < bytes.size(); i += 23) {
+      auto damaged = bytes;
+      damaged[i] ^= std::byte{0x40};
+      ASSERT_FALSE(parse_polygon_index(damaged).ok()) << i;
+    }
+    EXPECT_FALSE(parse_region_layer(bytes).ok());  // another kind
+  }
+}
+
 TEST(RegionLayerFile, RegionWithoutAGridWhoseBoxHoldsPointsIsRefused) {
   // One empty region: payload = fill (1 byte), region count (8), the region's fill (1), its box.
   auto bytes = format_index(RegionLayer(std::vector<MultiPolygon>{MultiPolygon{}}), 0, {});

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Prepared indexes as bytes: a versioned, checked binary form of `MeshIndex` and `RegionLayer`,
+/// Prepared indexes as bytes: a versioned, checked binary form of `MeshIndex`, `PolygonIndex` and
+/// `RegionLayer`,
 /// so that a service or a batch job that queries the same shape again loads the index instead of
 /// building it (io reads and writes the files, memory mapped: contain/io/index_io.h).
 ///
@@ -40,11 +41,13 @@ namespace contain::inside {
 
 /// What a saved index holds.
 enum class IndexKind : std::uint32_t {
-  mesh_index = 1,    ///< a `MeshIndex`
-  region_layer = 2,  ///< a `RegionLayer` and its regions' ids
+  mesh_index = 1,     ///< a `MeshIndex`
+  region_layer = 2,   ///< a `RegionLayer` and its regions' ids
+  polygon_index = 3,  ///< a `PolygonIndex` (one region)
 };
 
-/// The enumerator's name: "mesh_index" or "region_layer" ("unknown" for another value).
+/// The enumerator's name: "mesh_index", "region_layer" or "polygon_index" ("unknown" for another
+/// value).
 [[nodiscard]] const char* to_string(IndexKind kind);
 
 /// The format version this build writes and reads; a file of another version is refused.
@@ -87,10 +90,19 @@ struct IndexHeader {
 [[nodiscard]] std::vector<std::byte> format_index(const RegionLayer& layer, std::uint64_t source,
                                                   std::span<const std::string> ids);
 
+/// The file bytes of `index` (kind polygon_index) built from a region of fingerprint `source`
+/// (`fingerprint({region}, fill)`).
+[[nodiscard]] std::vector<std::byte> format_index(const PolygonIndex& index, std::uint64_t source);
+
 /// The `MeshIndex` saved in `bytes`: answers exactly as the index that was saved.
 [[nodiscard]] Result<MeshIndex> parse_mesh_index(std::span<const std::byte> bytes);
 /// The same from a header `parse_index_header` has already checked (no second checksum pass).
 [[nodiscard]] Result<MeshIndex> parse_mesh_index(const IndexHeader& checked);
+
+/// The `PolygonIndex` saved in `bytes` (the region's fingerprint is the header's `source`).
+[[nodiscard]] Result<PolygonIndex> parse_polygon_index(std::span<const std::byte> bytes);
+/// The same from a header `parse_index_header` has already checked.
+[[nodiscard]] Result<PolygonIndex> parse_polygon_index(const IndexHeader& checked);
 
 /// A `RegionLayer` read back, with the ids saved beside it.
 struct SavedRegionLayer {

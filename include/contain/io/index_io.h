@@ -52,6 +52,12 @@ struct IndexFile {
 [[nodiscard]] Result<inside::MeshIndex> read_mesh_index(const IndexFile& file,
                                                         const std::string& path);
 
+/// The `PolygonIndex` of an index file already read; errors name `path`.
+[[nodiscard]] Result<inside::PolygonIndex> read_polygon_index(const IndexFile& file,
+                                                              const std::string& path);
+/// The `PolygonIndex` saved in `path`; errors (ErrorKind::io or parse) name the file.
+[[nodiscard]] Result<inside::PolygonIndex> read_polygon_index(const std::string& path);
+
 /// The `RegionLayer` (and its ids) saved in `path`; errors (ErrorKind::io or parse) name the file.
 [[nodiscard]] Result<inside::SavedRegionLayer> read_region_layer_index(const std::string& path);
 /// The `RegionLayer` of an index file already read; errors name `path`.
