@@ -67,12 +67,27 @@ Error mismatch(const std::string& index, const std::string& shape, const std::st
           index};
 }
 
+// "FILE: holds a HELD, not a WANTED": the index is of another kind than the shape given.
+Error other_kind(const std::string& index, const std::string& held, const std::string& wanted) {
+  return {ErrorKind::invalid_value, "holds a " + held + ", not a " + wanted, index};
+}
+
+Error other_fill(const std::string& index) {
+  return {ErrorKind::invalid_value, "was built with another --fill rule than the one given", index};
+}
+
+// One line per point, as contain inside --mesh / --polygon write them.
+template <class Index, class Point>
+int answer_points(const Index& index, const std::vector<Point>& points, const ManyOptions& o) {
+  std::vector<Location> locations(points.size());
+  index.locate(points, locations, {.threads = o.threads});
+  return emit(format_locations(locations, o.boundary), o.out);
+}
+
 int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
   if (!o.layer.empty() || !q.polygon.empty()) {
-    return report({ErrorKind::invalid_value,
-                   std::string("holds a mesh_index, not a ") +
-                       (o.layer.empty() ? "polygon_index" : "layer's index"),
-                   q.index});
+    return report(
+        other_kind(q.index, "mesh_index", o.layer.empty() ? "polygon_index" : "layer's index"));
   }
   if (!q.mesh.empty()) {
     auto source = io::read_mesh(q.mesh);
@@ -86,24 +101,19 @@ int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::
   if (!warning.empty()) warn((q.mesh.empty() ? q.index : q.mesh) + ": " + warning);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
-  std::vector<Location> locations(points->points.size());
-  index->locate(points->points, locations, {.threads = o.threads});
-  return emit(format_locations(locations, o.boundary), o.out);
+  return answer_points(*index, points->points, o);
 }
 
 int answer_from_polygon_index(const ManyOptions& o, const IndexQuery& q,
                               const io::IndexFile& file) {
   if (!q.mesh.empty() || !o.layer.empty()) {
-    return report({ErrorKind::invalid_value,
-                   std::string("holds a polygon_index, not a ") +
-                       (o.layer.empty() ? "mesh_index" : "layer's index"),
-                   q.index});
+    return report(
+        other_kind(q.index, "polygon_index", o.layer.empty() ? "mesh_index" : "layer's index"));
   }
   auto index = io::read_polygon_index(file, q.index);
   if (!index) return report(index.error());
   if (q.fill_given && index->fill() != o.fill) {
-    return report({ErrorKind::invalid_value,
-                   "was built with another --fill rule than the one given", q.index});
+    return report(other_fill(q.index));
   }
   if (!q.polygon.empty()) {
     auto region = read_region_warned(q.polygon);
@@ -114,23 +124,18 @@ int answer_from_polygon_index(const ManyOptions& o, const IndexQuery& q,
   }
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
-  std::vector<Location> locations(points->points.size());
-  index->locate(points->points, locations, {.threads = o.threads});
-  return emit(format_locations(locations, o.boundary), o.out);
+  return answer_points(*index, points->points, o);
 }
 
 int answer_from_layer_index(const ManyOptions& o, const IndexQuery& q, const io::IndexFile& file) {
   if (!q.mesh.empty() || !q.polygon.empty()) {
-    return report({ErrorKind::invalid_value,
-                   std::string("holds a layer's index, not a ") +
-                       (q.mesh.empty() ? "polygon_index" : "mesh_index"),
-                   q.index});
+    return report(
+        other_kind(q.index, "layer's index", q.mesh.empty() ? "polygon_index" : "mesh_index"));
   }
   auto saved = io::read_region_layer_index(file, q.index);
   if (!saved) return report(saved.error());
   if (q.fill_given && saved->layer.fill() != o.fill) {
-    return report({ErrorKind::invalid_value,
-                   "was built with another --fill rule than the one given", q.index});
+    return report(other_fill(q.index));
   }
   if (!o.layer.empty()) {
     auto layer = io::read_layer(o.layer, {.id = o.id, .layer_name = o.layer_name});

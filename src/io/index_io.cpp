@@ -94,24 +94,20 @@ Result<IndexFile> read_index_file(const std::string& path) {
   return IndexFile{std::move(*file), *header};
 }
 
+// Maps `path`, checks its header and reads the index with `read(file, path)`.
+template <class Read>
+auto read_whole(const std::string& path, Read read) -> decltype(read(IndexFile{}, path)) {
+  auto file = read_index_file(path);
+  if (!file) return file.error();
+  return read(*file, path);
+}
+
 Result<inside::MeshIndex> read_mesh_index(const IndexFile& file, const std::string& path) {
   return named(inside::parse_mesh_index(file.header), path);
 }
 
-Result<inside::MeshIndex> read_mesh_index(const std::string& path) {
-  auto file = read_index_file(path);
-  if (!file) return file.error();
-  return read_mesh_index(*file, path);
-}
-
 Result<inside::PolygonIndex> read_polygon_index(const IndexFile& file, const std::string& path) {
   return named(inside::parse_polygon_index(file.header), path);
-}
-
-Result<inside::PolygonIndex> read_polygon_index(const std::string& path) {
-  auto file = read_index_file(path);
-  if (!file) return file.error();
-  return read_polygon_index(*file, path);
 }
 
 Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
@@ -119,10 +115,19 @@ Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
   return named(inside::parse_region_layer(file.header), path);
 }
 
+Result<inside::MeshIndex> read_mesh_index(const std::string& path) {
+  return read_whole(path,
+                    [](const IndexFile& f, const std::string& p) { return read_mesh_index(f, p); });
+}
+
+Result<inside::PolygonIndex> read_polygon_index(const std::string& path) {
+  return read_whole(
+      path, [](const IndexFile& f, const std::string& p) { return read_polygon_index(f, p); });
+}
+
 Result<inside::SavedRegionLayer> read_region_layer_index(const std::string& path) {
-  auto file = read_index_file(path);
-  if (!file) return file.error();
-  return read_region_layer_index(*file, path);
+  return read_whole(
+      path, [](const IndexFile& f, const std::string& p) { return read_region_layer_index(f, p); });
 }
 
 }  // namespace contain::io
