@@ -7,6 +7,7 @@
 #include "clip/solid/exact_point.h"
 
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/rounded_crossing.h"
 
 #include <algorithm>
 #include <bit>
@@ -14,6 +15,8 @@
 #include <compare>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <utility>
 
 namespace contain::clip::solid {
 namespace {
@@ -106,13 +109,49 @@ ExactPoint normalized(ExactPoint p) {
   return with_bounds(std::move(p));
 }
 
-// p with its big numbers: p itself, or for a point of doubles (which stores none: most input
-// vertices never reach the big numbers) `scratch` filled from v.
+// The big numbers of a crossing: p + t (q - p) with t = dp / (dp - dq), dx = n . (x - a), as
+// (p dq - q dp) / (dq - dp).
+void crossing_numbers(const Crossing& k, ExactPoint& out) {
+  const BigVec3 bp = predicates::to_big(k.p), bq = predicates::to_big(k.q);
+  const BigVec3 ba = predicates::to_big(k.a);
+  const BigVec3 n = predicates::cross(predicates::to_big(k.b) - ba, predicates::to_big(k.c) - ba);
+  const BigFloat dp = predicates::dot(n, bp - ba), dq = predicates::dot(n, bq - ba);
+  const BigVec3 num = dq * bp - dp * bq;
+  out.x = {num.x, num.y, num.z};
+  out.w = dq - dp;
+  if (out.w.sign() == Sign::negative) {
+    for (BigFloat& c : out.x)
+      c = -c;
+    out.w = -out.w;
+  }
+}
+
+// p with its big numbers: p itself, the crossing's (made once), or for a point of doubles
+// (which stores none: most input vertices never reach the big numbers) `scratch` filled from v.
 const ExactPoint& full(const ExactPoint& p, ExactPoint& scratch) {
+  if (p.crossing) {
+    if (!p.crossing->exact) {
+      auto numbers = std::make_shared<ExactPoint>();
+      crossing_numbers(*p.crossing, *numbers);
+      p.crossing->exact = std::move(numbers);
+    }
+    return *p.crossing->exact;
+  }
   if (!p.plain) return p;
   scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
   scratch.w = BigFloat(1.0);
   return scratch;
+}
+
+// Both crossings of one segment (either direction) with the plane of one triangle (same
+// corners in the same order): the same point, with no arithmetic.
+bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
+  if (!a.crossing || !b.crossing) return false;
+  const Crossing& s = *a.crossing;
+  const Crossing& t = *b.crossing;
+  const auto eq = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
+  return eq(s.a, t.a) && eq(s.b, t.b) && eq(s.c, t.c) &&
+         ((eq(s.p, t.p) && eq(s.q, t.q)) || (eq(s.p, t.q) && eq(s.q, t.p)));
 }
 
 // The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
@@ -208,12 +247,16 @@ BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
   return predicates::cross(ba, ca);
 }
 
-ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, const BigVec3& n) {
-  const BigVec3 bp = predicates::to_big(p), bq = predicates::to_big(q), ba = predicates::to_big(a);
-  const BigFloat dp = predicates::dot(n, bp - ba), dq = predicates::dot(n, bq - ba);
-  // p + t (q - p) with t = dp / (dp - dq): (p dq - q dp) / (dq - dp).
-  const BigVec3 num = dq * bp - dp * bq;
-  return normalized({{num.x, num.y, num.z}, dq - dp});
+ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  ExactPoint out;
+  out.v = predicates::rounded_plane_crossing(p, q, a, b, c);
+  // The exact coordinate is within half a step of its nearest double on either side.
+  for (std::size_t i = 0; i < 3; ++i) {
+    out.lo[i] = down(coordinate(out.v, static_cast<int>(i)));
+    out.hi[i] = up(coordinate(out.v, static_cast<int>(i)));
+  }
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  return out;
 }
 
 ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
@@ -236,6 +279,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
   if (a.plain && b.plain) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
+  if (same_crossing(a, b)) return true;
   for (std::size_t i = 0; i < 3; ++i) {
     if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
   }
@@ -306,7 +350,7 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 }
 
 Vec3 nearest_double(const ExactPoint& p) {
-  if (p.plain) return p.v;
+  if (p.plain || p.crossing) return p.v;
   return {nearest_quotient(p.x[0], p.w), nearest_quotient(p.x[1], p.w),
           nearest_quotient(p.x[2], p.w)};
 }

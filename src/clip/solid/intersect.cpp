@@ -76,7 +76,7 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
     if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
       ends.push_back(
           store.add(line_plane(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
-                               soup.normal(static_cast<std::size_t>(u)))));
+                               corner(soup, u, 1), corner(soup, u, 2))));
     }
   }
   return ends;

@@ -43,7 +43,7 @@ std::optional<Known> crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const mpq_class t = dp / (dp - dq);
   const QVec3 qp = exact(p), qq = exact(q);
   const QVec3 x{qp.x + t * (qq.x - qp.x), qp.y + t * (qq.y - qp.y), qp.z + t * (qq.z - qp.z)};
-  return Known{clip::solid::line_plane(p, q, a, clip::solid::exact_normal(a, b, c)), x};
+  return Known{clip::solid::line_plane(p, q, a, b, c), x};
 }
 
 Known midpoint(const Known& a, const Known& b) {
