@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace contain::clip::solid {
@@ -231,7 +232,55 @@ Sign compare_exact(const ExactPoint& a, const ExactPoint& b, std::size_t k) {
   return (fa.x[k] * fb.w - fb.x[k] * fa.w).sign();
 }
 
+// The differences b - a and c - a of a triangle's corners, in doubles (rounded once each).
+std::array<Vec3, 2> edge_vectors(const std::array<Vec3, 3>& t) {
+  return {t[1] - t[0], t[2] - t[0]};
+}
+
+// Every non-zero component in [2^-200, 2^200]: products of four stay far from underflow and
+// overflow, so the a priori bound of `filtered_line_axis` holds.
+bool moderate(const std::array<Vec3, 2>& e) {
+  for (const Vec3 v : e) {
+    for (const double c : {v.x, v.y, v.z}) {
+      const double m = std::abs(c);
+      if (m != 0.0 && !(m >= 0x1p-200 && m <= 0x1p200)) return false;
+    }
+  }
+  return true;
+}
+
+// p x q, and the same on absolute values with every sign positive (the magnitude M of each
+// component's monomials).
+void cross_and_magnitude(Vec3 p, Vec3 q, Vec3& value, Vec3& magnitude) {
+  value = {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
+  const Vec3 ap{std::abs(p.x), std::abs(p.y), std::abs(p.z)};
+  const Vec3 aq{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
+  magnitude = {ap.y * aq.z + ap.z * aq.y, ap.z * aq.x + ap.x * aq.z, ap.x * aq.y + ap.y * aq.x};
+}
+
 }  // namespace
+
+// Each component of nt x nu is a polynomial of degree 4 in the rounded differences of the
+// corners, 5 roundings deep (difference, product, difference, product, difference), so (Higham,
+// "Accuracy and Stability of Numerical Algorithms", 3.1 and 3.3; no underflow or overflow in the
+// moderate range) its computed value is within gamma_5 M of the exact one, M the same expression
+// on absolute values, which 16 u m bounds (m: M computed, u = 2^-53). A computed m of 0 means
+// every monomial has an exactly zero factor: the component is exactly zero.
+std::optional<int> filtered_line_axis(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u) {
+  const std::array<Vec3, 2> et = edge_vectors(t), eu = edge_vectors(u);
+  if (!moderate(et) || !moderate(eu)) return std::nullopt;
+  Vec3 nt, mt, nu, mu, line, unused, m;
+  cross_and_magnitude(et[0], et[1], nt, mt);
+  cross_and_magnitude(eu[0], eu[1], nu, mu);
+  cross_and_magnitude(nt, nu, line, unused);
+  cross_and_magnitude(mt, mu, unused, m);
+  for (int k = 0; k < 3; ++k) {
+    const double value = coordinate(line, k), bound = coordinate(m, k);
+    if (std::abs(value) > 0x1p-49 * bound) return k;
+    if (bound != 0.0) return std::nullopt;
+  }
+  return std::nullopt;  // all three exactly zero: parallel planes, not this function's case
+}
 
 const BigFloat& component(const BigVec3& v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);

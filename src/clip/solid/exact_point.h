@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/sign.h"
@@ -61,6 +62,12 @@ struct ExactPoint {
 /// point.
 [[nodiscard]] ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
                                    const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis);
+
+/// The first axis k in which the direction nt x nu of the line where the planes of triangles t
+/// and u meet is non-zero (nt = (t1 - t0) x (t2 - t0), nu likewise), decided by a filter in
+/// doubles; nothing where the filter cannot decide (the exact normals must).
+[[nodiscard]] std::optional<int> filtered_line_axis(const std::array<Vec3, 3>& t,
+                                                    const std::array<Vec3, 3>& u);
 
 /// Component i (0, 1, 2) of v.
 [[nodiscard]] const BigFloat& component(const BigVec3& v, int i);

@@ -68,6 +68,17 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
   Soup soup;
   soup.inputs = inputs.size();
   std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
+  std::size_t vertices = 0, triangles = 0;
+  for (const Mesh& mesh : inputs) {
+    vertices += mesh.vertices.size();
+    triangles += mesh.triangles.size();
+  }
+  welded.reserve(vertices);
+  soup.vertices.reserve(vertices);
+  soup.triangles.reserve(triangles);
+  soup.input.reserve(triangles);
+  soup.degenerate.reserve(triangles);
+  soup.boxes.reserve(triangles);
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const Mesh& mesh = inputs[k];
     std::vector<std::int32_t> remap(mesh.vertices.size());
