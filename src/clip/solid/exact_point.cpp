@@ -150,9 +150,8 @@ bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
   if (!a.crossing || !b.crossing) return false;
   const Crossing& s = *a.crossing;
   const Crossing& t = *b.crossing;
-  const auto eq = [](Vec3 x, Vec3 y) { return x.x == y.x && x.y == y.y && x.z == y.z; };
-  return eq(s.a, t.a) && eq(s.b, t.b) && eq(s.c, t.c) &&
-         ((eq(s.p, t.p) && eq(s.q, t.q)) || (eq(s.p, t.q) && eq(s.q, t.p)));
+  return s.a == t.a && s.b == t.b && s.c == t.c &&
+         ((s.p == t.p && s.q == t.q) || (s.p == t.q && s.q == t.p));
 }
 
 // The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
@@ -258,6 +257,15 @@ void cross_and_magnitude(Vec3 p, Vec3 q, Vec3& value, Vec3& magnitude) {
   magnitude = {ap.y * aq.z + ap.z * aq.y, ap.z * aq.x + ap.x * aq.z, ap.x * aq.y + ap.y * aq.x};
 }
 
+// c is a crossing of the segment between points of doubles a and b (either direction): it lies
+// on their line, so every projection of the three is collinear. The commonest exact zero of the
+// refinement (a crossing on the triangle edge it was made from), decided with no arithmetic.
+bool on_defining_line(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  if (!c.crossing || !a.plain || !b.plain) return false;
+  const Crossing& k = *c.crossing;
+  return (a.v == k.p && b.v == k.q) || (a.v == k.q && b.v == k.p);
+}
+
 }  // namespace
 
 // Each component of nt x nu is a polynomial of degree 4 in the rounded differences of the
@@ -352,6 +360,9 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
     return predicates::orient2d({coordinate(a.v, u), coordinate(a.v, v)},
                                 {coordinate(b.v, u), coordinate(b.v, v)},
                                 {coordinate(c.v, u), coordinate(c.v, v)});
+  }
+  if (on_defining_line(a, b, c) || on_defining_line(b, c, a) || on_defining_line(c, a, b)) {
+    return Sign::zero;
   }
   if (Sign s = Sign::zero; filtered_orient2d(a, b, c, axis, s)) return s;
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
