@@ -92,16 +92,18 @@ Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
   return {down(q - r), up(q + r)};
 }
 
-ExactPoint with_bounds(ExactPoint p) {
+ExactPoint with_bounds(Homogeneous h) {
+  ExactPoint p;
   for (std::size_t i = 0; i < 3; ++i) {
-    const Interval c = quotient_interval(p.x[i], p.w);
+    const Interval c = quotient_interval(h.x[i], h.w);
     p.lo[i] = c.lo;
     p.hi[i] = c.hi;
   }
+  p.exact = std::make_shared<const Homogeneous>(std::move(h));
   return p;
 }
 
-ExactPoint normalized(ExactPoint p) {
+ExactPoint normalized(Homogeneous p) {
   if (p.w.sign() == Sign::negative) {
     for (BigFloat& c : p.x)
       c = -c;
@@ -112,7 +114,7 @@ ExactPoint normalized(ExactPoint p) {
 
 // The big numbers of a crossing: p + t (q - p) with t = dp / (dp - dq), dx = n . (x - a), as
 // (p dq - q dp) / (dq - dp).
-void crossing_numbers(const Crossing& k, ExactPoint& out) {
+void crossing_numbers(const Crossing& k, Homogeneous& out) {
   const BigVec3 bp = predicates::to_big(k.p), bq = predicates::to_big(k.q);
   const BigVec3 ba = predicates::to_big(k.a);
   const BigVec3 n = predicates::cross(predicates::to_big(k.b) - ba, predicates::to_big(k.c) - ba);
@@ -129,16 +131,16 @@ void crossing_numbers(const Crossing& k, ExactPoint& out) {
 
 // p with its big numbers: p itself, the crossing's (made once), or for a point of doubles
 // (which stores none: most input vertices never reach the big numbers) `scratch` filled from v.
-const ExactPoint& full(const ExactPoint& p, ExactPoint& scratch) {
+const Homogeneous& full(const ExactPoint& p, Homogeneous& scratch) {
   if (p.crossing) {
     if (!p.crossing->exact) {
-      auto numbers = std::make_shared<ExactPoint>();
+      auto numbers = std::make_shared<Homogeneous>();
       crossing_numbers(*p.crossing, *numbers);
       p.crossing->exact = std::move(numbers);
     }
     return *p.crossing->exact;
   }
-  if (!p.plain) return p;
+  if (!p.plain) return *p.exact;
   scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
   scratch.w = BigFloat(1.0);
   return scratch;
@@ -166,8 +168,8 @@ bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoin
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.
 std::array<BigFloat, 3> dropped(const ExactPoint& q, int axis) {
-  ExactPoint scratch;
-  const ExactPoint& p = full(q, scratch);
+  Homogeneous scratch;
+  const Homogeneous& p = full(q, scratch);
   return {p.x[static_cast<std::size_t>((axis + 1) % 3)],
           p.x[static_cast<std::size_t>((axis + 2) % 3)], p.w};
 }
@@ -213,10 +215,10 @@ double nearest_quotient(const BigFloat& x, const BigFloat& w) {
 
 // The exact tests behind the filters of same_point and compare_coordinate.
 bool same_exact(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   for (std::size_t i = 0; i < 3; ++i) {
     if (fa.x[i] * fb.w != fb.x[i] * fa.w) return false;
   }
@@ -224,10 +226,10 @@ bool same_exact(const ExactPoint& a, const ExactPoint& b) {
 }
 
 Sign compare_exact(const ExactPoint& a, const ExactPoint& b, std::size_t k) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   return (fa.x[k] * fb.w - fb.x[k] * fa.w).sign();
 }
 
@@ -295,7 +297,12 @@ const BigFloat& component(const BigVec3& v, int i) {
 }
 
 ExactPoint exact_point(Vec3 v) {
-  return {{}, BigFloat(), true, v, {v.x, v.y, v.z}, {v.x, v.y, v.z}};
+  ExactPoint p;
+  p.plain = true;
+  p.v = v;
+  p.lo = {v.x, v.y, v.z};
+  p.hi = p.lo;
+  return p;
 }
 
 BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
@@ -325,7 +332,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
   const BigFloat& nk = component(n, axis);
   // Lift to the plane n . X = n . a: n_k X_k = (n . a) w - n_u u - n_v v.
   const BigFloat d = predicates::dot(n, predicates::to_big(a));
-  ExactPoint out;
+  Homogeneous out;
   out.x[static_cast<std::size_t>(iu)] = x[0] * nk;
   out.x[static_cast<std::size_t>(iv)] = x[1] * nk;
   out.x[static_cast<std::size_t>(axis)] =
@@ -372,8 +379,8 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 }
 
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
-  ExactPoint sp;
-  const ExactPoint& fp = full(p, sp);
+  Homogeneous sp;
+  const Homogeneous& fp = full(p, sp);
   const BigVec3 ba = predicates::to_big(a);
   BigFloat s;
   for (int i = 0; i < 3; ++i) {
@@ -383,11 +390,11 @@ Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
 }
 
 ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
-  ExactPoint m;
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
+  Homogeneous m;
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * fb.w + fb.x[i] * fa.w;
   m.w = (fa.w * fb.w).scaled(1);
@@ -395,13 +402,13 @@ ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
 }
 
 ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
-  ExactPoint sc;
-  const ExactPoint& fc = full(c, sc);
-  ExactPoint m;
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
+  Homogeneous sc;
+  const Homogeneous& fc = full(c, sc);
+  Homogeneous m;
   const BigFloat bc = fb.w * fc.w, ac = fa.w * fc.w, ab = fa.w * fb.w;
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * bc + fb.x[i] * ac + fc.x[i] * ab;
@@ -411,8 +418,9 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 
 Vec3 nearest_double(const ExactPoint& p) {
   if (p.plain || p.crossing) return p.v;
-  return {nearest_quotient(p.x[0], p.w), nearest_quotient(p.x[1], p.w),
-          nearest_quotient(p.x[2], p.w)};
+  const Homogeneous& h = *p.exact;
+  return {nearest_quotient(h.x[0], h.w), nearest_quotient(h.x[1], h.w),
+          nearest_quotient(h.x[2], h.w)};
 }
 
 }  // namespace contain::clip::solid
@@ -420,10 +428,10 @@ Vec3 nearest_double(const ExactPoint& p) {
 namespace contain::clip::solid {
 
 BigVec3 direction(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   return {fb.x[0] * fa.w - fa.x[0] * fb.w, fb.x[1] * fa.w - fa.x[1] * fb.w,
           fb.x[2] * fa.w - fa.x[2] * fb.w};
 }

@@ -19,32 +19,35 @@ namespace contain::clip::solid {
 using predicates::BigFloat;
 using predicates::BigVec3;
 
-struct ExactPoint;
+/// Homogeneous coordinates (X, Y, Z, W) of a point, W > 0, exact.
+struct Homogeneous {
+  std::array<BigFloat, 3> x;
+  BigFloat w;
+};
 
 /// Where the segment p q crosses the plane of the triangle a b c: the doubles that define a
 /// crossing point, kept instead of its big numbers, which are made from them when a predicate
 /// first needs them and kept in `exact` (not thread-safe: the engine runs on one thread).
 struct Crossing {
   Vec3 p, q, a, b, c;
-  mutable std::shared_ptr<const ExactPoint> exact;
+  mutable std::shared_ptr<const Homogeneous> exact;
 };
 
-/// (x / w, y / w, z / w) with w > 0. A point of doubles (`exact_point(v)`) is only v (x and w
-/// are left zero, made from v when a predicate needs them), so that predicates on points of
-/// doubles only take the filtered predicates of `predicates` and most input vertices never
-/// allocate a big number. A crossing (`line_plane`) is likewise only its `Crossing` and its
-/// nearest doubles v, rounded by a filtered predicate: most crossings never allocate a big
-/// number either. Every point also keeps an enclosure of its coordinates,
-/// lo[i] <= x[i] / w <= hi[i] (lo = hi = v for a point of doubles; v's neighbours for a
-/// crossing): the floating-point filter that decides most predicates on implicit points without
-/// the big numbers (rule solid-exact-points).
+/// (x / w, y / w, z / w) with w > 0, the big numbers shared (immutable) by the copies of a point.
+/// A point of doubles (`exact_point(v)`) is only v (no big numbers: made from v when a predicate
+/// needs them), so that predicates on points of doubles only take the filtered predicates of
+/// `predicates` and most input vertices never allocate a big number. A crossing (`line_plane`)
+/// is likewise only its `Crossing` and its nearest doubles v, rounded by a filtered predicate:
+/// most crossings never allocate a big number either. Every point also keeps an enclosure of its
+/// coordinates, lo[i] <= x[i] / w <= hi[i] (lo = hi = v for a point of doubles; v's neighbours
+/// for a crossing): the floating-point filter that decides most predicates on implicit points
+/// without the big numbers (rule solid-exact-points).
 struct ExactPoint {
-  std::array<BigFloat, 3> x;
-  BigFloat w;
-  bool plain = false;  ///< the point is `v`, doubles (x and w not stored)
-  Vec3 v{};            ///< the point (plain) or its nearest doubles (a crossing)
+  std::shared_ptr<const Homogeneous> exact;  ///< set for the other constructed points
+  bool plain = false;                        ///< the point is `v`, doubles
+  Vec3 v{};  ///< the point (plain) or its nearest doubles (a crossing)
   std::array<double, 3> lo{}, hi{};
-  std::shared_ptr<const Crossing> crossing;  ///< set for a crossing (x and w not stored)
+  std::shared_ptr<const Crossing> crossing;  ///< set for a crossing
 };
 
 /// The double point v.
