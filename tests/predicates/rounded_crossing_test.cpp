@@ -6,13 +6,13 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
-#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
 
 #include "support/case_budget.h"
+#include "support/exact.h"
 
 namespace contain::test {
 namespace {
@@ -88,14 +88,6 @@ TEST(RoundedAxisCrossing, HardCasesNearTiesAndTinyRisesAreExact) {
 
 // ---- segments through the planes of triangles --------------------------------------------------
 
-std::array<mpq_class, 3> qsub(Vec3 x, Vec3 y) {
-  return {mpq_class(x.x) - y.x, mpq_class(x.y) - y.y, mpq_class(x.z) - y.z};
-}
-
-mpq_class qdot(const std::array<mpq_class, 3>& u, const std::array<mpq_class, 3>& v) {
-  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
 // The nearest double with ties to even: is_nearest, and on a tie the even neighbour.
 bool is_rounded(double x, const mpq_class& q) {
   if (!is_nearest(x, q)) return false;
@@ -111,16 +103,14 @@ bool is_rounded(double x, const mpq_class& q) {
 // Checks the crossing against the rationals; false (nothing checked) when p and q are not
 // strictly on opposite sides of the plane (the precondition).
 bool expect_plane_crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
-  const std::array<mpq_class, 3> ab = qsub(b, a), ac = qsub(c, a);
-  const std::array<mpq_class, 3> n = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                                      ab[0] * ac[1] - ab[1] * ac[0]};
-  const mpq_class dp = qdot(n, qsub(p, a)), dq = qdot(n, qsub(q, a));
+  const QVec3 n = qcross(qsub(exact(b), exact(a)), qsub(exact(c), exact(a)));
+  const mpq_class dp = qdot(n, qsub(exact(p), exact(a))), dq = qdot(n, qsub(exact(q), exact(a)));
   if (sgn(dp) * sgn(dq) >= 0) return false;
   const mpq_class t = dp / (dp - dq);
   const Vec3 got = predicates::rounded_plane_crossing(p, q, a, b, c);
   for (int j = 0; j < 3; ++j) {
-    const mpq_class exact = mpq_class(coord(p, j)) + t * (mpq_class(coord(q, j)) - coord(p, j));
-    EXPECT_TRUE(is_rounded(coord(got, j), exact))
+    const mpq_class x = mpq_class(coord(p, j)) + t * (mpq_class(coord(q, j)) - coord(p, j));
+    EXPECT_TRUE(is_rounded(coord(got, j), x))
         << "coordinate " << j << " of (" << p.x << " " << p.y << " " << p.z << ") (" << q.x << " "
         << q.y << " " << q.z << ") through (" << a.x << " " << a.y << " " << a.z << ") ...";
   }
