@@ -1,5 +1,6 @@
 #include "contain/predicates/rounded_crossing.h"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -201,6 +202,67 @@ Vec3 rounded_axis_crossing(Vec3 a, Vec3 b, int axis, double c) {
       continue;
     }
     set_coord(out, j, crossing_coordinate(base, other, axis, j, c, rho));
+  }
+  return out;
+}
+
+}  // namespace contain::predicates
+
+namespace contain::predicates {
+
+namespace {
+
+using detail::Mag;
+
+std::array<Mag, 3> diff(Vec3 x, Vec3 y) {
+  return {Mag(x.x) - Mag(y.x), Mag(x.y) - Mag(y.y), Mag(x.z) - Mag(y.z)};
+}
+
+Mag dot(const std::array<Mag, 3>& u, const std::array<Mag, 3>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+// Coordinate j of the crossing, exactly: (p_j d_q - q_j d_p) / (d_q - d_p), nearest double.
+double exact_plane_crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c, int j) {
+  const BigVec3 ba = to_big(a);
+  const BigVec3 n = cross(to_big(b) - ba, to_big(c) - ba);
+  const BigFloat dp = predicates::dot(n, to_big(p) - ba), dq = predicates::dot(n, to_big(q) - ba);
+  BigFloat num = BigFloat(coord(p, j)) * dq - BigFloat(coord(q, j)) * dp;
+  BigFloat den = dq - dp;
+  if (den.sign() == Sign::negative) {
+    num = -num;
+    den = -den;
+  }
+  return detail::quotient_stage_b(num, den);
+}
+
+}  // namespace
+
+Vec3 rounded_plane_crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  const std::array<Mag, 3> ab = diff(b, a), ac = diff(c, a);
+  const std::array<Mag, 3> n = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                                ab[0] * ac[1] - ab[1] * ac[0]};
+  Mag dp = dot(n, diff(p, a)), dq = dot(n, diff(q, a));
+  // The nearer endpoint as base (its offset, and the offset's error, is the smaller part);
+  // which one does not change the exactly rounded answer.
+  if (std::fabs(dp.v) > std::fabs(dq.v)) {
+    std::swap(p, q);
+    std::swap(dp, dq);
+  }
+  // x_j = p_j + (q_j - p_j) d_p / D with D = d_p - d_q = n . (p - q), taken positive.
+  const Mag den = dot(n, diff(p, q));
+  const double sign = den.v < 0 ? -1.0 : 1.0;
+  detail::ErrLD d = detail::bounded(den);
+  d.value = std::fabs(d.value);
+  Vec3 out = p;
+  for (int j = 0; j < 3; ++j) {
+    if (coord(p, j) == coord(q, j)) continue;  // the exact coordinate is p_j
+    const Mag off = (Mag(coord(q, j)) - Mag(coord(p, j))) * dp;
+    double x = 0.0;
+    if (!detail::offset_stage_a(coord(p, j), sign, detail::bounded(off), d, x)) {
+      x = exact_plane_crossing(p, q, a, b, c, j);
+    }
+    set_coord(out, j, x);
   }
   return out;
 }
