@@ -225,6 +225,7 @@ TEST(RoundedCrossingFilter, DegenerateAndExtremeInputsAreRefusedOrExact) {
       }
     }
   }
+}
 
 // ---- segments through the planes of triangles --------------------------------------------------
 
