@@ -50,7 +50,7 @@ struct Points3 {
 struct ChunkedReading {
   std::size_t chunk = std::size_t{1} << 20;
   int threads = 1;
-  std::size_t block = std::size_t{32} << 20;
+  std::size_t block = std::size_t{8} << 20;
 };
 
 /// Reads 2D points in pieces: `consume(points, share)` sees at most `reading.chunk` points at a
