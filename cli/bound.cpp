@@ -13,6 +13,7 @@
 #include "contain/bound/bounding_sphere.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/region_io.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -35,6 +36,7 @@ std::string json(Vec2 v) {
 int run_mesh(const BoundOptions& o) {
   auto file = io::read_mesh(o.file);
   if (!file) return report(file.error());
+  enter_phase(Phase::query);
   const Box3 box = bound::aabb(file->mesh);
   auto sphere = bound::bounding_sphere(file->mesh, {.method = o.method});
   if (!sphere) {
@@ -51,6 +53,7 @@ int run_mesh(const BoundOptions& o) {
 int run_region(const BoundOptions& o) {
   auto region = read_region_warned(o.file);
   if (!region) return report(region.error());
+  enter_phase(Phase::query);
   const Box2 box = bound::aabb(*region);
   auto circle = bound::bounding_circle(*region, {.method = o.method});
   if (!circle) {

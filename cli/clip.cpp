@@ -31,6 +31,7 @@
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/shapes/mesh_validation.h"
 #include "progress.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -275,6 +276,7 @@ int run_segments(const ClipOptions& o) {
   }
   auto table = io::read_number_table(o.segments, {.columns = {4, 6}});
   if (!table) return report(table.error());
+  enter_phase(Phase::query);
   const int columns =
       table->columns == 0 ? (o.sphere.empty() && o.halfspaces.empty() ? 4 : 6) : table->columns;
   const bool three_d = columns == 6;
@@ -416,6 +418,7 @@ int run_tiles(const ClipOptions& o) {
   if (!output) return report(output.error());
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
+  enter_phase(Phase::query);
   clip::TileGrid grid{.columns = static_cast<int>(nx), .rows = static_cast<int>(ny)};
   if (!o.box.empty()) {
     auto box = box2_of(o.box);
@@ -474,6 +477,7 @@ int run_polygon(const ClipOptions& o) {
   }
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
+  enter_phase(Phase::query);
   const clip::PolygonClipOptions options{.output = o.keep_bridges
                                                        ? clip::PolygonClipOutput::bridged
                                                        : clip::PolygonClipOutput::pieces};
@@ -508,6 +512,7 @@ int run_mesh(const ClipOptions& o) {
   }
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
+  enter_phase(Phase::query);
   const clip::MeshClipOptions options{.cut = o.cap ? clip::MeshCut::cap : clip::MeshCut::open};
   if (o.cap && !validate_mesh(file->mesh).closed()) {
     return report(

@@ -10,6 +10,7 @@
 #include "contain/io/region_io.h"
 #include "contain/io/svg.h"
 #include "contain/io/wkt.h"
+#include "timings.h"
 
 namespace contain::cli {
 namespace {
@@ -98,6 +99,7 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
   if (!subject) return report(subject.error());
   auto clip_region = read_region_warned(o.clips[0]);
   if (!clip_region) return report(clip_region.error());
+  enter_phase(Phase::query);
   const MultiPolygon result =
       clip::polygon_boolean(*subject, *clip_region, {.op = o.op, .fill = o.fill});
   std::string format = o.format;

@@ -20,6 +20,7 @@
 #include "contain/shapes/mesh_validation.h"
 #include "many.h"
 #include "progress.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -75,6 +76,7 @@ int run_regions(const CollideOptions& o) {
   if (!a) return report(a.error());
   auto b = read_region_warned(o.b);
   if (!b) return report(b.error());
+  enter_phase(Phase::query);
   const collide::Contact c = collide::region_region(*a, *b);
   if (!o.json) return emit(answer(c.intersect), o.out);
   std::string w;
@@ -101,6 +103,7 @@ int run_meshes(const CollideOptions& o) {
   if (!a) return report(a.error());
   auto b = io::read_mesh(o.b);
   if (!b) return report(b.error());
+  enter_phase(Phase::prepare);
   const collide::MeshPair pair(a->mesh, b->mesh, {.transform_a = ta});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
@@ -110,6 +113,7 @@ int run_meshes(const CollideOptions& o) {
     }
     warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));
   }
+  enter_phase(Phase::query);
   std::vector<collide::Contact> contacts(poses.size());
   Progress progress("poses", poses.size(), !o.quiet && stderr_is_terminal());
   progress.run([&](std::size_t begin, std::size_t end) {
@@ -117,6 +121,7 @@ int run_meshes(const CollideOptions& o) {
                  std::span<collide::Contact>(contacts).subspan(begin, end - begin),
                  {.threads = o.threads});
   });
+  enter_phase(Phase::write);
   std::string text;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     text +=

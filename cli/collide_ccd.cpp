@@ -16,6 +16,7 @@
 #include "contain/io/number_table.h"
 #include "contain/shapes/mesh_validation.h"
 #include "progress.h"
+#include "timings.h"
 
 namespace contain::cli {
 namespace {
@@ -93,6 +94,7 @@ int run_ccd_queries(const CcdCliOptions& o) {
   const bool vertex_face = o.kind == "vertex-face";
   auto read = io::read_ccd_queries(o.queries);
   if (!read) return report(read.error());
+  enter_phase(Phase::query);
   const std::vector<collide::CcdQuery>& queries = read->queries;
   std::vector<collide::Impact> impacts(queries.size());
   Progress progress("queries", queries.size(), !o.quiet && stderr_is_terminal());
@@ -163,12 +165,14 @@ int run_moving_meshes(const CcdCliOptions& o) {
   if (!a) return report(a.error());
   auto b = io::read_mesh(o.b);
   if (!b) return report(b.error());
+  enter_phase(Phase::prepare);
   const collide::MovingMeshPair pair(a->mesh, b->mesh, {.motion_a = *motion_a});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
     if (solid) continue;
     warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));
   }
+  enter_phase(Phase::query);
   std::vector<collide::MeshImpact> impacts(motions.size());
   Progress progress("motions", motions.size(), !o.quiet && stderr_is_terminal());
   progress.run(

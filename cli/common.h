@@ -3,8 +3,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fstream>
 #include <functional>
 #include <future>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -69,11 +71,31 @@ struct Placements {
                                                  const std::string& transform_b,
                                                  const std::string& poses_file);
 
+/// Where the answers go: the file `path`, or stdout when `path` is empty or "-"; written in
+/// pieces, so that long results need not be held whole. Opening it starts the write phase
+/// (--timings).
+class Output {
+ public:
+  [[nodiscard]] static Result<Output> open(const std::string& path);
+  [[nodiscard]] Status write(std::string_view text);
+  /// Flushes; an error when some write failed.
+  [[nodiscard]] Status close();
+
+ private:
+  std::unique_ptr<std::ofstream> file_;  // null: stdout
+  std::string path_;
+};
+
 /// Writes `text` to `path`, or to stdout when `path` is empty or "-".
 [[nodiscard]] Status write_output(std::string_view text, const std::string& path);
 
 /// Writes the results (see `write_output`) and returns the exit code: 0, or 3 when writing failed.
 [[nodiscard]] int emit(std::string_view text, const std::string& path);
+
+/// Writes one line per location (format_locations) to `path` as `emit` does, formatted in
+/// blocks on up to `threads` threads (0: every core), in order.
+[[nodiscard]] int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
+                                 const std::string& path, int threads);
 
 /// io::read_region, with a warning on stderr for each WKT ring that is not closed (read as
 /// closed: "FILE:LINE: warning: ring not closed ...").

@@ -23,6 +23,7 @@
 #include "contain/io/region_io.h"
 #include "contain/shapes/mesh_validation.h"
 #include "progress.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -73,6 +74,7 @@ int run_mesh_points(const DistanceOptions& o) {
   if (!file) return report(file.error());
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
+  enter_phase(Phase::prepare);
   const bool signs = o.signed_distance;
   const distance::MeshDistance prepared(file->mesh, {.signs = signs});
   if (signs && prepared.regime() != inside::MeshRegime::closed_exact) {
@@ -80,6 +82,7 @@ int run_mesh_points(const DistanceOptions& o) {
   } else if (signs) {
     warn_if_self_crossing(o.mesh, file->mesh);  // the signs are inside's answers
   }
+  enter_phase(Phase::query);
   const std::vector<Vec3>& p = points->points;
   std::string text;
   if (o.has_within) {
@@ -119,7 +122,9 @@ int run_polygon_points(const DistanceOptions& o) {
   }
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
+  enter_phase(Phase::prepare);
   const distance::RegionDistance prepared(*region, {.fill = o.fill, .signs = o.signed_distance});
+  enter_phase(Phase::query);
   const std::vector<Vec2>& p = points->points;
   std::string text;
   if (o.has_within) {
@@ -170,6 +175,7 @@ int run_regions(const DistanceOptions& o) {
   if (!a) return report(a.error());
   auto b = read_region_warned(o.b);
   if (!b) return report(b.error());
+  enter_phase(Phase::query);
   if (!o.has_within) {
     if (a->polygons.empty()) return report(no_closest_point(o.a));
     if (b->polygons.empty()) return report(no_closest_point(o.b));
@@ -205,6 +211,7 @@ int run_meshes(const DistanceOptions& o) {
   if (!a) return report(a.error());
   auto b = io::read_mesh(o.b);
   if (!b) return report(b.error());
+  enter_phase(Phase::prepare);
   const distance::MeshPairDistance pair(a->mesh, b->mesh, {.transform_a = ta});
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
@@ -214,6 +221,7 @@ int run_meshes(const DistanceOptions& o) {
     }
     warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_distance));
   }
+  enter_phase(Phase::query);
   std::string text;
   if (o.has_within) {
     std::vector<std::uint8_t> yes(poses.size());
@@ -229,6 +237,7 @@ int run_meshes(const DistanceOptions& o) {
                   std::span<distance::PairDistance3>(answers).subspan(begin, end - begin),
                   {.threads = o.threads});
   });
+  enter_phase(Phase::write);
   for (const distance::PairDistance3& d : answers) {
     if (o.json) {
       text += fmt::format(

@@ -1,6 +1,7 @@
 // contain inside: one line per point, "in", "on" or "out".
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "index.h"
 #include "many.h"
 #include "progress.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -28,61 +30,81 @@ struct InsideOptions : PointQuery {
   std::string index;  // --index FILE: a saved index (contain index build)
 };
 
-// Locates every point through `locator.locate(span, span, options)`, chunked for progress.
-template <class Locator, class Point>
-std::vector<Location> locate_all(const Locator& locator, const std::vector<Point>& points,
-                                 const InsideOptions& o) {
-  std::vector<Location> locations(points.size());
-  Progress progress("points", points.size(), !o.quiet && stderr_is_terminal());
-  progress.run([&](std::size_t begin, std::size_t end) {
-    locator.locate(std::span<const Point>(points).subspan(begin, end - begin),
-                   std::span<Location>(locations).subspan(begin, end - begin),
-                   {.threads = o.threads});
-  });
+// Reads the points a block at a time and answers each piece as it comes, keeping only the
+// answers (a byte a point): 10^8 points cost their answers and a block of text, not 2.4 GB of
+// points. Nothing is written before the whole file has been read, so a bad line late in the file
+// still gives exit 3 and no output.
+template <class Point, class Locator, class Read>
+Result<std::vector<Location>> locate_streamed(const Locator& locator, const InsideOptions& o,
+                                              Read&& read) {
+  std::vector<Location> locations;
+  Progress progress("points", 0, !o.quiet && stderr_is_terminal());
+  const Status status = read(
+      o.points, io::ChunkedReading{.threads = o.threads},
+      [&](std::span<const Point> points, double share) {
+        enter_phase(Phase::query);
+        const std::size_t at = locations.size();
+        // Room for all, estimated from the first piece.
+        if (at == 0 && share > 0.0 && share < 1.0) {
+          locations.reserve(
+              static_cast<std::size_t>(1.05 * static_cast<double>(points.size()) / share));
+        }
+        locations.resize(at + points.size());
+        locator.locate(points, std::span<Location>(locations).subspan(at), {.threads = o.threads});
+        progress.update_share(share, locations.size());
+        enter_phase(Phase::read);
+      });
+  if (!status) return status.error();
   return locations;
+}
+
+int answer(const Result<std::vector<Location>>& locations, const InsideOptions& o) {
+  if (!locations) return report(locations.error());
+  return emit_locations(*locations, o.boundary, o.out, o.threads);
 }
 
 int run_polygon(const InsideOptions& o) {
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
-  auto points = io::read_points2(o.points);
-  if (!points) return report(points.error());
+  enter_phase(Phase::prepare);
   const inside::PolygonIndex index(*region, {.fill = o.fill});
-  const std::vector<Location> locations = locate_all(index, points->points, o);
-  return emit(format_locations(locations, o.boundary), o.out);
+  enter_phase(Phase::read);
+  return answer(locate_streamed<Vec2>(index, o, io::read_points2_chunked), o);
 }
 
 int run_csg(const InsideOptions& o) {
   auto tree = io::read_csg_json(o.csg);
   if (!tree) return report(tree.error());
+  enter_phase(Phase::prepare);
   auto solid = inside::CsgSolid::prepare(*tree);
   if (!solid) {
     Error error = solid.error();
     if (error.source.empty()) error.source = o.csg;
     return report(error);
   }
-  auto points = io::read_points3(o.points);
-  if (!points) return report(points.error());
-  const std::vector<Location> locations = locate_all(*solid, points->points, o);
-  return emit(format_locations(locations, o.boundary), o.out);
+  enter_phase(Phase::read);
+  return answer(locate_streamed<Vec3>(*solid, o, io::read_points3_chunked), o);
 }
 
 // A closed mesh gets exact ray parity; any other mesh the generalized winding number, with a
-// warning naming the regime and why (the contract: never `out` everywhere in silence).
+// warning naming the regime and why (the contract: never `out` everywhere in silence), printed
+// once the points have been read (a bad point file gives its error alone, as before).
 int run_mesh(const InsideOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
-  // The self-crossing check (closed meshes only) runs beside reading the points, building the
-  // index and answering, to hide its cost.
+  enter_phase(Phase::prepare);
+  // The self-crossing check (closed meshes only) runs beside building the index, reading the
+  // points and answering, to hide its cost.
   std::future<std::string> crossing = start_self_crossing_check(o.mesh, file->mesh, o.threads);
-  auto points = io::read_points3(o.points);
-  if (!points) return report(points.error());
   const inside::MeshIndex index(file->mesh);
+  enter_phase(Phase::read);
+  auto locations = locate_streamed<Vec3>(index, o, io::read_points3_chunked);
+  if (!locations) return report(locations.error());
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
-  const std::vector<Location> locations = locate_all(index, points->points, o);
+  enter_phase(Phase::prepare);
   if (const std::string line = crossing.get(); !line.empty()) warn(line);
-  return emit(format_locations(locations, o.boundary), o.out);
+  return answer(locations, o);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common.h"
+#include "timings.h"
 #include "verbs.h"
 
 int main(int argc, char** argv) {
@@ -21,6 +22,10 @@ int main(int argc, char** argv) {
       "Exit status: 0 success, 2 usage error, 3 bad input (the message names the file "
       "and line).\nRun 'contain VERB --help' for a verb's options and examples.");
   std::vector<Verb> verbs = all_verbs(app);
+  bool show_timings = false;
+  for (const Verb& verb : verbs) {
+    if (verb.app->get_name() != "demo") add_timings_option(*verb.app, show_timings);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -35,7 +40,11 @@ int main(int argc, char** argv) {
   }
   try {
     for (const Verb& verb : verbs) {
-      if (verb.app->parsed()) return verb.run();
+      if (!verb.app->parsed()) continue;
+      if (show_timings) timings().start();
+      const int status = verb.run();
+      timings().print();
+      return status;
     }
   } catch (const std::bad_alloc&) {
     std::cerr << "contain: the input needs more memory than this machine has\n";

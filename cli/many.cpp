@@ -17,6 +17,7 @@
 #include "contain/io/points_io.h"
 #include "contain/io/scene_json.h"
 #include "progress.h"
+#include "timings.h"
 
 namespace contain::cli {
 namespace {
@@ -65,8 +66,10 @@ Result<std::string> locate_lines(const Locator& locator, const std::vector<std::
   std::string text;
   std::size_t done = 0;
   Progress progress("points", 0, !o.quiet && stderr_is_terminal());
-  const Status status =
-      read(o.points, std::size_t{1} << 20, [&](std::span<const Point> points, double share) {
+  const Status status = read(
+      o.points, io::ChunkedReading{.threads = o.threads},
+      [&](std::span<const Point> points, double share) {
+        enter_phase(Phase::query);
         append_lines(text, locator.locate(points, {.threads = o.threads}), ids, o.boundary);
         // Room for all the lines, estimated from the first piece: the string then does not
         // copy itself as it grows.
@@ -75,6 +78,7 @@ Result<std::string> locate_lines(const Locator& locator, const std::vector<std::
         }
         done += points.size();
         progress.update_share(share, done);
+        enter_phase(Phase::read);
       });
   if (!status) return status.error();
   return text;
@@ -126,12 +130,14 @@ int run_layer(const ManyOptions& o) {
     warn(warning);
   if (Status s = check_ids(layer->ids, "the layer's", io::layer_source_name(o.layer)); !s)
     return report(s.error());
+  enter_phase(Phase::prepare);
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
   return answer_layer(index, layer->ids, o);
 }
 
 int answer_layer(const inside::RegionLayer& index, const std::vector<std::string>& ids,
                  const ManyOptions& o) {
+  enter_phase(Phase::read);
   auto text = locate_lines<Vec2>(index, ids, o, io::read_points2_chunked);
   if (!text) return report(text.error());
   return emit(*text, o.out);
@@ -149,6 +155,7 @@ int run_scene_inside(const ManyOptions& o) {
   auto scene = io::read_scene_json(o.scene);
   if (!scene) return report(scene.error());
   if (Status s = check_ids(scene->ids, "the scene's", o.scene); !s) return report(s.error());
+  enter_phase(Phase::prepare);
   const inside::SolidScene index(scene->meshes, scene_objects(*scene));
   // An object whose mesh is not closed is answered by the winding number: say so, once a mesh.
   std::vector<char> warned(scene->meshes.size(), 0);
@@ -164,6 +171,7 @@ int run_scene_inside(const ManyOptions& o) {
       warn_if_self_crossing(name, scene->meshes[m]);
     }
   }
+  enter_phase(Phase::read);
   auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);
   if (!text) return report(text.error());
   return emit(*text, o.out);
@@ -173,6 +181,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
                       const std::string& out) {
   auto scene = io::read_scene_json(file);
   if (!scene) return report(scene.error());
+  enter_phase(Phase::prepare);
   const collide::MeshScene prepared(scene->meshes, scene_objects(*scene));
   std::vector<char> warned(scene->meshes.size(), 0);
   for (std::size_t k = 0; k < prepared.size(); ++k) {
@@ -189,6 +198,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
   }
   // The library's batch on consecutive ranges of the broad phase's candidates (pair tests vary
   // in cost, so a range of about 1% each), with progress between them on a terminal.
+  enter_phase(Phase::query);
   const auto candidates = prepared.candidates();
   std::vector<collide::ScenePair> pairs;
   Progress progress("candidate pairs", candidates.size(), !quiet && stderr_is_terminal());

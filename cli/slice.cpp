@@ -16,6 +16,7 @@
 #include "contain/io/svg.h"
 #include "contain/io/wkt.h"
 #include "slice_svg.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -157,6 +158,7 @@ int run_slice(SliceCliOptions o) {
   if (!values) return report(values.error());
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
+  enter_phase(Phase::query);
   const auto named = [&](Error e) {
     e.source = o.mesh;
     return report(e);

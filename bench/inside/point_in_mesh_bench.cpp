@@ -26,7 +26,7 @@
 #include "scenes/scenes.h"
 
 #ifdef CONTAIN_BENCH_HAS_EMBREE
-#include <embree3/rtcore.h>
+#include "bench/peers/embree_parity.h"
 
 #include <limits>
 #endif
@@ -68,19 +68,6 @@ struct Row {
   double query = 0.0;
   std::size_t mismatches = 0;
 };
-
-#ifdef CONTAIN_BENCH_HAS_EMBREE
-struct CountingContext {
-  RTCIntersectContext context;
-  int hits;
-};
-
-void count_and_reject(const RTCFilterFunctionNArguments* args) {
-  auto* ctx = reinterpret_cast<CountingContext*>(args->context);
-  ++ctx->hits;
-  args->valid[0] = 0;
-}
-#endif
 
 }  // namespace
 
@@ -137,7 +124,7 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 3; ++k)
           f[3 * t + static_cast<std::size_t>(k)] =
               static_cast<unsigned>(mesh.triangles[t][static_cast<std::size_t>(k)]);
-      rtcSetGeometryIntersectFilterFunction(geometry, count_and_reject);
+      rtcSetGeometryIntersectFilterFunction(geometry, contain::bench::count_and_reject);
       rtcCommitGeometry(geometry);
       rtcAttachGeometry(scene, geometry);
       rtcReleaseGeometry(geometry);
@@ -146,19 +133,8 @@ int main(int argc, char** argv) {
     std::vector<char> answer(points.size());
     row.query = best_of_three([&] {
       for (std::size_t i = 0; i < points.size(); ++i) {
-        CountingContext ctx{};
-        rtcInitIntersectContext(&ctx.context);
-        RTCRayHit rh{};
-        rh.ray.org_x = static_cast<float>(points[i].x);
-        rh.ray.org_y = static_cast<float>(points[i].y);
-        rh.ray.org_z = static_cast<float>(points[i].z);
-        rh.ray.dir_x = 1.0f;
-        rh.ray.tnear = 0.0f;
-        rh.ray.tfar = std::numeric_limits<float>::infinity();
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene, &ctx.context, &rh);
-        answer[i] = static_cast<char>(ctx.hits & 1);
+        answer[i] = static_cast<char>(
+            contain::bench::odd_crossings(scene, points[i].x, points[i].y, points[i].z));
       }
     });
     for (std::size_t i = 0; i < points.size(); ++i)

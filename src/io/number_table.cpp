@@ -27,11 +27,14 @@ std::string describe_counts(const std::vector<int>& allowed) {
 
 Result<NumberTable> parse_number_table(std::string_view text, const std::string& source,
                                        const NumberTableOptions& options) {
-  text = detail::skip_bom(text);
+  // A byte order mark is one only at the start of the whole text.
+  if (options.lines_before == 0) text = detail::skip_bom(text);
   NumberTable table;
   const char* p = text.data();
   const char* const end = p + text.size();
-  std::int64_t line = 0;
+  std::int64_t line = options.lines_before;
+  int columns = options.first_row_columns;
+  std::int64_t first_row_line = options.first_row_line;
   std::vector<double> row;
   // Room for every line: counting them is a fast pass, and capacity that stays unused is never
   // touched (no page faults); growing instead copied the values once or twice.
@@ -85,7 +88,7 @@ Result<NumberTable> parse_number_table(std::string_view text, const std::string&
         }
       }
       const int count = static_cast<int>(row.size());
-      if (table.columns == 0) {
+      if (columns == 0) {
         if (!options.columns.empty() && std::find(options.columns.begin(), options.columns.end(),
                                                   count) == options.columns.end()) {
           return make_error(ErrorKind::invalid_value,
@@ -93,14 +96,16 @@ Result<NumberTable> parse_number_table(std::string_view text, const std::string&
                                 describe_counts(options.columns),
                             source, line);
         }
-        table.columns = count;
-      } else if (count != table.columns) {
+        columns = count;
+        first_row_line = line;
+      } else if (count != columns) {
         return make_error(ErrorKind::invalid_value,
                           "found " + std::to_string(count) + " numbers on the line, but line " +
-                              std::to_string(table.lines.front()) + " has " +
-                              std::to_string(table.columns) + " (every line must have as many)",
+                              std::to_string(first_row_line) + " has " + std::to_string(columns) +
+                              " (every line must have as many)",
                           source, line);
       }
+      table.columns = columns;
       table.values.insert(table.values.end(), row.begin(), row.end());
       table.lines.push_back(line);
     }

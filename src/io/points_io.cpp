@@ -1,37 +1,39 @@
 #include "contain/io/points_io.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <optional>
-#include <tuple>
 #include <utility>
 
+#include "contain/core/parallel.h"
 #include "contain/io/number_table.h"
 #include "io/text_scan.h"
 
 namespace contain::io {
 namespace {
 
-Result<Points2> to_points2(Result<NumberTable> table) {
-  if (!table) return table.error();
-  Points2 out;
-  out.points.reserve(table->rows());
-  const std::vector<double>& v = table->values;
-  for (std::size_t i = 0; i < table->rows(); ++i)
-    out.points.push_back({v[2 * i], v[2 * i + 1]});
-  out.lines = std::move(table->lines);
-  return out;
+// The rows of a table of 2 or 3 columns as points, appended.
+template <class Point>
+void append_rows(const NumberTable& table, std::vector<Point>& points) {
+  const std::vector<double>& v = table.values;
+  points.reserve(points.size() + table.rows());
+  for (std::size_t i = 0; i < table.rows(); ++i) {
+    if constexpr (sizeof(Point) == 2 * sizeof(double)) {
+      points.push_back({v[2 * i], v[2 * i + 1]});
+    } else {
+      points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
+    }
+  }
 }
 
-Result<Points3> to_points3(Result<NumberTable> table) {
+template <class Points>
+Result<Points> to_points(Result<NumberTable> table) {
   if (!table) return table.error();
-  Points3 out;
-  out.points.reserve(table->rows());
-  const std::vector<double>& v = table->values;
-  for (std::size_t i = 0; i < table->rows(); ++i) {
-    out.points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
-  }
+  Points out;
+  append_rows(*table, out.points);
   out.lines = std::move(table->lines);
   return out;
 }
@@ -84,87 +86,191 @@ std::optional<std::pair<std::size_t, std::size_t>> parse_plain_piece(std::string
   return std::pair{static_cast<std::size_t>(p - all.data()), lines};
 }
 
-// The text once, then `chunk` lines at a time: the plain pieces straight into points, any other
-// through the table parser; line numbers in errors are made the file's own again.
+// One slice of a block, parsed on its own thread: its points, lines and the line of its first
+// point (from 1 within the slice; 0: none), or `failed` when the table parser found an error,
+// which is then found again in file order with the lines before it known.
 template <class Point>
-Status read_chunked(const std::filesystem::path& path, std::size_t chunk,
-                    const std::function<void(std::span<const Point>, double)>& consume) {
-  const bool standard_input = path == "-";
-  const std::string source = standard_input ? "<stdin>" : detail::source_name(path);
-  auto text = standard_input ? detail::read_stream(std::cin, source) : detail::read_file(path);
-  if (!text) return text.error();
-  const std::string_view all = detail::skip_bom(*text);
-  constexpr int kColumns = sizeof(Point) / sizeof(double);
-  const NumberTableOptions& options = kColumns == 2 ? kTwo : kThree;
-  chunk = std::max<std::size_t>(chunk, 1);
+struct Slice {
   std::vector<Point> points;
-  std::int64_t lines_before = 0;
-  std::size_t begin = 0;
-  while (begin < all.size()) {
-    points.clear();
-    std::size_t end = begin, lines = 0;
-    if (const auto plain = parse_plain_piece(all, begin, chunk, points)) {
-      std::tie(end, lines) = *plain;
-    } else {
-      points.clear();
-      while (end < all.size() && lines < chunk) {
-        const void* newline = std::memchr(all.data() + end, '\n', all.size() - end);
-        end = newline == nullptr
-                  ? all.size()
-                  : static_cast<std::size_t>(static_cast<const char*>(newline) - all.data()) + 1;
-        ++lines;
-      }
-      auto table = parse_number_table(all.substr(begin, end - begin), source, options);
-      if (!table) {
-        Error error = table.error();
-        if (error.line > 0) error.line += lines_before;
-        return error;
-      }
-      const std::vector<double>& v = table->values;
-      for (std::size_t i = 0; i < table->rows(); ++i) {
-        if constexpr (kColumns == 2) {
-          points.push_back({v[2 * i], v[2 * i + 1]});
-        } else {
-          points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
-        }
-      }
-    }
-    if (!points.empty()) {
-      consume(points, static_cast<double>(end) / static_cast<double>(all.size()));
-    }
-    lines_before += static_cast<std::int64_t>(lines);
-    begin = end;
+  std::int64_t lines = 0;
+  std::int64_t first_row = 0;
+  bool failed = false;
+};
+
+// The plain form first (straight into points); any other line through the table parser with its
+// rules.
+template <class Point>
+void parse_slice(std::string_view text, const std::string& source, Slice<Point>& slice) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  slice.points.clear();
+  slice.failed = false;
+  if (const auto plain = parse_plain_piece(text, 0, SIZE_MAX, slice.points)) {
+    slice.lines = static_cast<std::int64_t>(plain->second);
+    slice.first_row = slice.points.empty() ? 0 : 1;
+    return;
   }
+  slice.points.clear();
+  slice.lines =
+      std::count(text.begin(), text.end(), '\n') + (text.empty() || text.back() == '\n' ? 0 : 1);
+  // Lines numbered from 2: the table parser then skips no byte order mark (the reader skipped
+  // the file's own).
+  const std::int64_t offset = 1;
+  auto table = parse_number_table(
+      text, source,
+      {.columns = {kColumns}, .lines_before = offset, .first_row_line = 0, .first_row_columns = 0});
+  if (!table) {
+    slice.failed = true;
+    return;
+  }
+  slice.first_row = table->rows() == 0 ? 0 : table->lines.front() - offset;
+  append_rows(*table, slice.points);
+}
+
+// Where the slices of `text` (whole lines) start: about equal parts, each moved to the next line.
+std::vector<std::size_t> slice_starts(std::string_view text, int parts) {
+  std::vector<std::size_t> starts{0};
+  for (int t = 1; t < parts; ++t) {
+    std::size_t at = text.size() / static_cast<std::size_t>(parts) * static_cast<std::size_t>(t);
+    at = std::max(at, starts.back());
+    const std::size_t newline = text.find('\n', at);
+    at = newline == std::string_view::npos ? text.size() : newline + 1;
+    if (at > starts.back() && at < text.size()) starts.push_back(at);
+  }
+  starts.push_back(text.size());
+  return starts;
+}
+
+// What the file has given so far, to number lines and word errors as one pass over it would.
+struct ReadPosition {
+  std::int64_t lines = 0;
+  std::int64_t first_row = 0;  // the file's first point's line, 0: none yet
+  std::size_t bytes = 0;
+};
+
+// Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
+// `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
+// parsed again with the lines before it, for the error of one pass over the file.
+template <class Point>
+Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
+                   ReadPosition& at, std::uintmax_t file_size, std::vector<Slice<Point>>& slices,
+                   const std::function<void(std::span<const Point>, double)>& consume) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  const BatchOptions options{.threads = reading.threads};
+  const std::vector<std::size_t> starts =
+      slice_starts(text, thread_count(options, text.size(), std::size_t{1} << 20));
+  const std::size_t parts = starts.size() - 1;
+  if (slices.size() < parts) slices.resize(parts);
+  parallel_for(parts, options, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      parse_slice(text.substr(starts[k], starts[k + 1] - starts[k]), source, slices[k]);
+    }
+  });
+  const std::size_t chunk = std::max<std::size_t>(reading.chunk, 1);
+  for (std::size_t k = 0; k < parts; ++k) {
+    Slice<Point>& slice = slices[k];
+    if (slice.failed) {
+      auto table = parse_number_table(text.substr(starts[k], starts[k + 1] - starts[k]), source,
+                                      {.columns = {kColumns},
+                                       .lines_before = at.lines,
+                                       .first_row_line = at.first_row,
+                                       .first_row_columns = at.first_row == 0 ? 0 : kColumns});
+      if (!table) return table.error();
+      slice.points.clear();
+      append_rows(*table, slice.points);
+      slice.first_row = table->rows() == 0 ? 0 : table->lines.front() - at.lines;
+    }
+    if (at.first_row == 0 && slice.first_row != 0) at.first_row = at.lines + slice.first_row;
+    at.lines += slice.lines;
+    const double share = file_size == 0
+                             ? 0.0
+                             : std::min(1.0, static_cast<double>(at.bytes + starts[k + 1]) /
+                                                 static_cast<double>(file_size));
+    const std::span<const Point> points(slice.points);
+    for (std::size_t begin = 0; begin < points.size(); begin += chunk) {
+      consume(points.subspan(begin, std::min(chunk, points.size() - begin)), share);
+    }
+  }
+  at.bytes += text.size();
   return Ok{};
+}
+
+// The file a block at a time: each block's whole lines parsed (parse_block), the partial last
+// line carried to the next; a line longer than a block grows the block.
+template <class Point>
+Status read_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
+                    const std::function<void(std::span<const Point>, double)>& consume) {
+  auto input = detail::BlockInput::open(path);
+  if (!input) return input.error();
+  std::size_t block = std::max<std::size_t>(reading.block, 64);
+  std::unique_ptr<char[]> buffer(new char[block]);
+  std::size_t held = 0;  // bytes in the buffer
+  ReadPosition at;
+  std::vector<Slice<Point>> slices;
+  bool first = true;
+  while (true) {
+    auto got = input->read(buffer.get() + held, block - held);
+    if (!got) return got.error();
+    held += *got;
+    const bool last = *got == 0 || held < block;
+    std::string_view text(buffer.get(), held);
+    std::size_t whole = text.size();
+    if (!last) {
+      const std::size_t newline = text.rfind('\n');
+      if (newline == std::string_view::npos) {
+        // One line fills the block: a larger block holds it.
+        std::unique_ptr<char[]> larger(new char[2 * block]);
+        std::memcpy(larger.get(), buffer.get(), held);
+        buffer = std::move(larger);
+        block *= 2;
+        continue;
+      }
+      whole = newline + 1;
+    }
+    std::string_view lines = text.substr(0, whole);
+    if (first) {
+      const std::string_view skipped = detail::skip_bom(lines);
+      at.bytes = lines.size() - skipped.size();
+      lines = skipped;
+      first = false;
+    }
+    if (Status parsed =
+            parse_block(lines, reading, input->source(), at, input->size(), slices, consume);
+        !parsed) {
+      return parsed;
+    }
+    std::memmove(buffer.get(), buffer.get() + whole, held - whole);
+    held -= whole;
+    if (last && held == 0) return Ok{};
+  }
 }
 
 }  // namespace
 
 Result<Points2> parse_points2(std::string_view text, const std::string& source) {
-  return to_points2(parse_number_table(text, source, kTwo));
+  return to_points<Points2>(parse_number_table(text, source, kTwo));
 }
 Result<Points3> parse_points3(std::string_view text, const std::string& source) {
-  return to_points3(parse_number_table(text, source, kThree));
+  return to_points<Points3>(parse_number_table(text, source, kThree));
 }
 Result<Points2> read_points2(const std::filesystem::path& path) {
-  return to_points2(read_number_table(path, kTwo));
+  return to_points<Points2>(read_number_table(path, kTwo));
 }
 Result<Points3> read_points3(const std::filesystem::path& path) {
-  return to_points3(read_number_table(path, kThree));
+  return to_points<Points3>(read_number_table(path, kThree));
 }
-Status read_points2_chunked(const std::filesystem::path& path, std::size_t chunk,
+Status read_points2_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                             const std::function<void(std::span<const Vec2>, double)>& consume) {
-  return read_chunked<Vec2>(path, chunk, consume);
+  return read_chunked<Vec2>(path, reading, consume);
 }
-Status read_points3_chunked(const std::filesystem::path& path, std::size_t chunk,
+Status read_points3_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                             const std::function<void(std::span<const Vec3>, double)>& consume) {
-  return read_chunked<Vec3>(path, chunk, consume);
+  return read_chunked<Vec3>(path, reading, consume);
 }
 Result<Points2> read_points2(std::istream& in, const std::string& source) {
-  return to_points2(read_number_table(in, source, kTwo));
+  return to_points<Points2>(read_number_table(in, source, kTwo));
 }
 Result<Points3> read_points3(std::istream& in, const std::string& source) {
-  return to_points3(read_number_table(in, source, kThree));
+  return to_points<Points3>(read_number_table(in, source, kThree));
 }
 
 }  // namespace contain::io

@@ -5,10 +5,12 @@
 /// formatting with std::to_chars, and errors that name the source and line.
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <istream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "contain/core/result.h"
 
@@ -29,6 +31,33 @@ namespace contain::io::detail {
 /// The whole content of a file (binary-safe). Errors: ErrorKind::io naming the path (missing,
 /// a directory, unreadable).
 [[nodiscard]] Result<std::string> read_file(const std::filesystem::path& path);
+
+/// A file, or standard input for the path "-", read a block at a time: a long file costs the
+/// block in memory, not its size. Opening gives read_file's errors.
+class BlockInput {
+ public:
+  [[nodiscard]] static Result<BlockInput> open(const std::filesystem::path& path);
+  BlockInput(BlockInput&& other) noexcept;
+  BlockInput& operator=(BlockInput&& other) = delete;
+  BlockInput(const BlockInput&) = delete;
+  BlockInput& operator=(const BlockInput&) = delete;
+  ~BlockInput();
+
+  /// Reads up to `bytes` bytes into `to`; the count read, 0 at the end. ErrorKind::io when
+  /// reading fails.
+  [[nodiscard]] Result<std::size_t> read(char* to, std::size_t bytes);
+  /// The name in messages: the path, or "<stdin>".
+  [[nodiscard]] const std::string& source() const { return source_; }
+  /// The file's size in bytes when known (a regular file), else 0.
+  [[nodiscard]] std::uintmax_t size() const { return size_; }
+
+ private:
+  BlockInput(std::FILE* file, std::string source, std::uintmax_t size)
+      : file_(file), source_(std::move(source)), size_(size) {}
+  std::FILE* file_;
+  std::string source_;
+  std::uintmax_t size_;
+};
 
 /// The whole content of a stream; ErrorKind::io when the stream fails before its end.
 [[nodiscard]] Result<std::string> read_stream(std::istream& in, const std::string& source);

@@ -189,10 +189,11 @@ namespace {
 
 // The pieces of read_points*_chunked, in order, as one array.
 template <class Point, class Read>
-Result<std::vector<Point>> read_in_pieces(const std::filesystem::path& path, std::size_t chunk,
-                                          Read&& read) {
+Result<std::vector<Point>> read_in_pieces(const std::filesystem::path& path,
+                                          const ChunkedReading& reading, Read&& read) {
   std::vector<Point> all;
-  const Status status = read(path, chunk, [&](std::span<const Point> piece, double) {
+  const Status status = read(path, reading, [&](std::span<const Point> piece, double) {
+    EXPECT_LE(piece.size(), reading.chunk);
     all.insert(all.end(), piece.begin(), piece.end());
   });
   if (!status) return status.error();
@@ -210,8 +211,30 @@ bool same_bits(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   return true;
 }
 
+// The ways of reading a file in pieces the tests below compare with the whole-file reader: piece
+// sizes, blocks of a few lines (so that lines and slices straddle the ends of blocks) and threads.
+std::vector<ChunkedReading> readings() {
+  std::vector<ChunkedReading> out;
+  for (const std::size_t chunk : {1u, 7u, 64u, 1000u}) {
+    out.push_back({.chunk = chunk});
+  }
+  for (const std::size_t block : {64u, 100u, 997u, 4096u}) {
+    for (const int threads : {1, 2, 3}) {
+      out.push_back({.chunk = 50, .threads = threads, .block = block});
+    }
+  }
+  out.push_back({.threads = 0});
+  return out;
+}
+
+std::string describe(const ChunkedReading& r) {
+  return "chunk " + std::to_string(r.chunk) + " threads " + std::to_string(r.threads) + " block " +
+         std::to_string(r.block);
+}
+
 // Plain pieces are parsed straight into points, any other through the table parser: every
-// piece size gives the whole-file reader's doubles bit for bit, and its errors on the same line.
+// piece size, block and thread count gives the whole-file reader's doubles bit for bit, and its
+// errors (kind, line and message) exactly.
 TEST(PointsIo, ChunkedReadingGivesTheWholeFileReadersPointsBitForBitAndItsErrors) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1e3, 1e3);
@@ -245,36 +268,48 @@ TEST(PointsIo, ChunkedReadingGivesTheWholeFileReadersPointsBitForBitAndItsErrors
   const test::TempFile file(".txt", text + "1.5 -2.5");  // the last line without its newline
   const auto whole = read_points2(file.path());
   ASSERT_TRUE(whole.ok()) << whole.error().what();
-  for (const std::size_t chunk : {1u, 2u, 3u, 7u, 50u, 64u, 1000u}) {
-    const auto pieces = read_in_pieces<Vec2>(file.path(), chunk, read_points2_chunked);
-    ASSERT_TRUE(pieces.ok()) << chunk << ": " << pieces.error().what();
-    EXPECT_TRUE(same_bits(*pieces, whole->points)) << "piece size " << chunk;
+  for (const ChunkedReading& reading : readings()) {
+    const auto pieces = read_in_pieces<Vec2>(file.path(), reading, read_points2_chunked);
+    ASSERT_TRUE(pieces.ok()) << describe(reading) << ": " << pieces.error().what();
+    EXPECT_TRUE(same_bits(*pieces, whole->points)) << describe(reading);
   }
   // An error late in the file: the same kind, message and line whatever the piece size.
   for (const char* bad : {"1 x\n", "1 2 3\n", "1e999 2\n", "1,,2\n", "1 2,\n", "7\n"}) {
     const test::TempFile broken(".txt", text + bad);
     const auto expected = read_points2(broken.path());
     ASSERT_FALSE(expected.ok()) << bad;
-    for (const std::size_t chunk : {1u, 7u, 64u, 1000u}) {
-      const auto got = read_in_pieces<Vec2>(broken.path(), chunk, read_points2_chunked);
-      ASSERT_FALSE(got.ok()) << bad << " piece size " << chunk;
-      EXPECT_EQ(got.error().kind, expected.error().kind) << bad << chunk;
-      EXPECT_EQ(got.error().line, expected.error().line) << bad << chunk;
-      // A wrong count is worded against the piece's first line (or the expected count when the
-      // piece starts there); other messages are the whole file's.
-      if (std::string(bad) != "1 2 3\n" && std::string(bad) != "7\n") {
-        EXPECT_EQ(got.error().message, expected.error().message) << bad << chunk;
-      }
+    for (const ChunkedReading& reading : readings()) {
+      const auto got = read_in_pieces<Vec2>(broken.path(), reading, read_points2_chunked);
+      ASSERT_FALSE(got.ok()) << bad << describe(reading);
+      EXPECT_EQ(got.error().kind, expected.error().kind) << bad << describe(reading);
+      EXPECT_EQ(got.error().line, expected.error().line) << bad << describe(reading);
+      EXPECT_EQ(got.error().message, expected.error().message) << bad << describe(reading);
     }
   }
   // 3D: the same path with three columns.
   const test::TempFile three(".txt", "1 2 3\n4\t5 6\r\n# c\n7,8,9\n10 11 12");
   const auto whole3 = read_points3(three.path());
   ASSERT_TRUE(whole3.ok());
-  for (const std::size_t chunk : {1u, 2u, 100u}) {
-    const auto pieces = read_in_pieces<Vec3>(three.path(), chunk, read_points3_chunked);
-    ASSERT_TRUE(pieces.ok());
-    EXPECT_EQ(*pieces, whole3->points) << chunk;
+  for (const ChunkedReading& reading : readings()) {
+    const auto pieces = read_in_pieces<Vec3>(three.path(), reading, read_points3_chunked);
+    ASSERT_TRUE(pieces.ok()) << describe(reading);
+    EXPECT_EQ(*pieces, whole3->points) << describe(reading);
+  }
+  // A byte order mark and a header before the first point, a wrong count many blocks later: the
+  // message names the file's first point's line (3), as one pass over the file does.
+  std::string headed = "\xEF\xBB\xBF# x y z\n\n";
+  for (int i = 0; i < 200; ++i)
+    headed += std::to_string(i) + " 0.25 -1e-3\n";
+  const test::TempFile wrong(".txt", headed + "1 2\n");
+  const auto expected = read_points3(wrong.path());
+  ASSERT_FALSE(expected.ok());
+  EXPECT_NE(expected.error().message.find("line 3 has 3"), std::string::npos)
+      << expected.error().message;
+  for (const ChunkedReading& reading : readings()) {
+    const auto got = read_in_pieces<Vec3>(wrong.path(), reading, read_points3_chunked);
+    ASSERT_FALSE(got.ok()) << describe(reading);
+    EXPECT_EQ(got.error().line, expected.error().line) << describe(reading);
+    EXPECT_EQ(got.error().message, expected.error().message) << describe(reading);
   }
 }
 

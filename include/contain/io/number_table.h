@@ -19,6 +19,13 @@ struct NumberTableOptions {
   /// The numbers a row may hold (e.g. {2, 3}); every row must hold as many as the first row.
   /// Empty: any positive count, still the same on every row.
   std::vector<int> columns;
+  /// For text that continues a table (a reader parsing a long file piece by piece): the lines of
+  /// the table before this text (the text's first line is line `lines_before + 1` in the rows and
+  /// errors), and the line and count of the table's first row among them (0: no row yet), so that
+  /// a row with another count is named against it as in one pass over the whole file.
+  std::int64_t lines_before = 0;
+  std::int64_t first_row_line = 0;
+  int first_row_columns = 0;
 };
 
 /// Rows of numbers read from text, flat: row r is `values[r * columns .. r * columns + columns)`

@@ -43,17 +43,29 @@ struct Points3 {
 /// Reads 3D points from a file; the path "-" reads standard input ("<stdin>" in errors).
 [[nodiscard]] Result<Points3> read_points3(const std::filesystem::path& path);
 
-/// Reads 2D points in pieces: `consume(points, share)` sees the points of every `chunk` lines (at
-/// most `chunk` points, file order) in turn, `share` the part of the text read so far (0 to 1),
-/// so that a long file costs its text and one piece, not every point at once. The same syntax
-/// and errors as `read_points2`; at the first error the call returns it, after the pieces before
-/// it were consumed. The path "-" reads standard input.
+/// How the chunked readers read: pieces of at most `chunk` points, blocks of `block` bytes (the
+/// memory a long file costs, with the points of one block; a longer line grows the block), each
+/// block parsed on up to `threads` threads (0: every core) in slices split at line ends. The
+/// points, their order and the errors are the same whatever the threads and the block.
+struct ChunkedReading {
+  std::size_t chunk = std::size_t{1} << 20;
+  int threads = 1;
+  std::size_t block = std::size_t{8} << 20;
+};
+
+/// Reads 2D points in pieces: `consume(points, share)` sees at most `reading.chunk` points at a
+/// time, in file order, `share` the part of the file read so far (0 to 1; 0 when its size is not
+/// known, as for standard input), so that a long file costs a block of text and its points, not
+/// every point at once. The same syntax and errors as `read_points2` (the line, and the first
+/// row named in a wrong count, are the file's own); at the first error the call returns it,
+/// after the points before its block's slice were consumed. The path "-" reads standard input.
 [[nodiscard]] Status read_points2_chunked(
-    const std::filesystem::path& path, std::size_t chunk,
+    const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const Vec2>, double)>& consume);
+
 /// Reads 3D points in pieces (see `read_points2_chunked`).
 [[nodiscard]] Status read_points3_chunked(
-    const std::filesystem::path& path, std::size_t chunk,
+    const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const Vec3>, double)>& consume);
 
 /// Reads 2D points from a stream to its end; `source` names it in errors.
