@@ -17,6 +17,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
+#include "timings.h"
 #include "verbs.h"
 
 namespace contain::cli {
@@ -79,8 +80,10 @@ Error other_fill(const std::string& index) {
 // One line per point, as contain inside --mesh / --polygon write them.
 template <class Index, class Point>
 int answer_points(const Index& index, const std::vector<Point>& points, const ManyOptions& o) {
+  enter_phase(Phase::query);
   std::vector<Location> locations(points.size());
   index.locate(points, locations, {.threads = o.threads});
+  enter_phase(Phase::write);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
@@ -99,6 +102,7 @@ int answer_from_mesh_index(const ManyOptions& o, const IndexQuery& q, const io::
   if (!index) return report(index.error());
   const std::string warning = io::mesh_warning(index->regime(), index->report());
   if (!warning.empty()) warn((q.mesh.empty() ? q.index : q.mesh) + ": " + warning);
+  enter_phase(Phase::read);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   return answer_points(*index, points->points, o);
@@ -122,6 +126,7 @@ int answer_from_polygon_index(const ManyOptions& o, const IndexQuery& q,
     if (inside::fingerprint(regions, index->fill()) != file.header.source)
       return report(mismatch(q.index, "region than " + q.polygon, "--polygon " + q.polygon));
   }
+  enter_phase(Phase::read);
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
   return answer_points(*index, points->points, o);
@@ -157,6 +162,7 @@ int answer_from_layer_index(const ManyOptions& o, const IndexQuery& q, const io:
 }  // namespace
 
 int run_inside_index(const ManyOptions& o, const IndexQuery& q) {
+  enter_phase(Phase::prepare);  // loading a saved index is this run's preparation
   auto file = io::read_index_file(q.index);
   if (!file) return report(file.error());
   switch (file->header.kind) {
