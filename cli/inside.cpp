@@ -65,21 +65,18 @@ int run_csg(const InsideOptions& o) {
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
-// A closed mesh gets exact ray parity; any other mesh the generalized winding number, with a
-// warning naming the regime and why (the contract: never `out` everywhere in silence).
+// A closed mesh is the solid of its winding number, exactly (a self-intersecting one too: no
+// self-crossing check is needed); any other mesh the generalized winding number, with a warning
+// naming the regime and why (the contract: never `out` everywhere in silence).
 int run_mesh(const InsideOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
-  // The self-crossing check (closed meshes only) runs beside reading the points, building the
-  // index and answering, to hide its cost.
-  std::future<std::string> crossing = start_self_crossing_check(o.mesh, file->mesh, o.threads);
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
   const inside::MeshIndex index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   const std::vector<Location> locations = locate_all(index, points->points, o);
-  if (const std::string line = crossing.get(); !line.empty()) warn(line);
   return emit(format_locations(locations, o.boundary), o.out);
 }
 
@@ -101,8 +98,10 @@ Verb add_inside(CLI::App& app) {
                   ->option_text("FILE");
   auto* mesh = cmd->add_option("--mesh", o->mesh,
                                "3D solid bounded by a triangle mesh (.obj .off .stl .ply); exact "
-                               "for a closed mesh, generalized winding number (with a warning) "
-                               "otherwise")
+                               "for a closed mesh: 'in' where its winding number is positive "
+                               "(overlapping parts count once, an inside-out shell subtracts), "
+                               "'on' on the solid's boundary; generalized winding number (with a "
+                               "warning) otherwise")
                    ->option_text("FILE");
   auto many = std::make_shared<ManyOptions>();
   auto* layer = cmd->add_option("--layer", many->layer,

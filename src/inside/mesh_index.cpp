@@ -9,7 +9,9 @@
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
+#include "contain/shapes/mesh_closure.h"
 #include "contain/values/triangle.h"
+#include "inside/mesh_ray.h"
 
 // Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  validate_mesh             the report, which picks the regime (not closed: winding number);
@@ -19,10 +21,10 @@
 //  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
 //                            comparisons; big triangles tested against each cell's box along
 //                            their normal) -> surface cells and their triangle lists;
-//  settle_empty_cells        row by row from +x to -x, the answer at one point of each empty
-//                            cell, by the same run along the row that queries use (it stops at
-//                            the next empty cell to the right, whose answer is already known,
-//                            or at the end of the grid: outside).
+//  settle_empty_cells        row by row from +x to -x, the winding number at one point of each
+//                            empty cell, by the same run along the row that queries use (it
+//                            stops at the next empty cell to the right, whose count is already
+//                            known, or at the end of the grid: zero beyond).
 
 namespace contain::inside {
 
@@ -127,12 +129,18 @@ const char* to_string(MeshRegime regime) {
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
   read_triangles(mesh);
-  if (!report_.closed()) {
+  // The solid's closedness (every directed edge matched, by position) gives a winding number;
+  // by index, closed and consistently oriented implies it, and the search is needed only when
+  // the report cannot tell.
+  const bool matched = (report_.closed() && report_.consistently_oriented()) ||
+                       (!tris_.empty() && !unmatched_edge(mesh).has_value());
+  if (!matched && !report_.closed()) {
     regime_ = MeshRegime::winding_number;
     winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
     return;
   }
   regime_ = MeshRegime::closed_exact;
+  by_parity_ = !matched;
   if (tris_.empty()) return;
   const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
@@ -255,8 +263,9 @@ void MeshIndex::settle_empty_cells() {
       for (int i = nx_ - 1; i >= 0; --i) {
         if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
         const Vec3 m{x_.line(i), y, z};
-        const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
-        state_[row + static_cast<std::size_t>(i)] = odd ? 1 : 0;
+        const int count = i + 1 < nx_ ? count_run(m, row, i + 1, false) : 0;
+        state_[row + static_cast<std::size_t>(i)] = inside_by_count(count) ? 1 : 0;
+        surface_[row + static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(count);
       }
     }
   }
@@ -272,14 +281,17 @@ bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
   return point_in_triangle(Triangle3{t.a, t.b, t.c}, p) != Location::outside;
 }
 
-// Parity of the perturbed hits of the +x ray from q through the cells first, first + 1, ... of
-// the row until an empty cell (its answer is added) or the end of the grid (outside beyond).
-// q lies in cell `first` when q_in_first, else at or left of its lower plane in an empty cell.
-bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
-  bool odd = false;
+// Signed count of the perturbed hits of the +x ray from q through the cells first, first + 1,
+// ... of the row until an empty cell (its count is added) or the end of the grid (nothing
+// beyond). q lies in cell `first` when q_in_first, else at or left of its lower plane in an
+// empty cell.
+int MeshIndex::count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
+  int count = 0;
   for (int i = first; i < nx_; ++i) {
     const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
-    if (state < 2) return odd != (state == 1);
+    if (state < 2) {
+      return count + static_cast<std::int32_t>(surface_[row + static_cast<std::size_t>(i)]);
+    }
     const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
     // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
@@ -300,10 +312,10 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
         continue;
       }
       if (test_upper && predicates::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
-      odd = !odd;
+      count += to_int(t.s);
     }
   }
-  return odd;
+  return count;
 }
 
 Location MeshIndex::locate(Vec3 p) const {
@@ -324,13 +336,54 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
     if (!outside_box(refs_[r], p) && on_triangle(tris_[refs_[r].tri], p)) {
-      return Location::boundary;
+      return by_parity_ ? Location::boundary : locate_on_surface(p);
     }
   }
   // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
   // a point there that is not on the surface is outside (the solid's interior is open).
   if (p.y == bounds_.max.y || p.z == bounds_.max.z) return Location::outside;
-  return odd_run(p, row, i, true) ? Location::inside : Location::outside;
+  return inside_by_count(count_run(p, row, i, true)) ? Location::inside : Location::outside;
+}
+
+// A point on some triangle: the solid near it (inside/mesh_ray.h). Every triangle that the ray
+// from a sample near p may meet meets the closed segment from p along +x to the grid's end, so
+// it is listed in a closed cell of the rows whose closed (y, z) span holds p, from p's column on.
+Location MeshIndex::locate_on_surface(Vec3 p) const {
+  const auto [i0, i1] = x_.cells_meeting(p.x, p.x);
+  const auto [j0, j1] = y_.cells_meeting(p.y, p.y);
+  const auto [k0, k1] = z_.cells_meeting(p.z, p.z);
+  (void)i1;
+  std::vector<std::uint32_t> near;
+  for (int k = k0; k <= k1; ++k) {
+    for (int j = j0; j <= j1; ++j) {
+      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                               static_cast<std::size_t>(j)) *
+                              static_cast<std::size_t>(nx_);
+      for (int i = i0; i < nx_; ++i) {
+        const std::size_t c = row + static_cast<std::size_t>(i);
+        if (state_[c] != 2) continue;
+        const std::uint32_t cell = surface_[c];
+        for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
+          const CellRef& ref = refs_[r];
+          if ((p.x > ref.hi[0]) | (p.y < ref.lo[1]) | (p.y > ref.hi[1]) | (p.z < ref.lo[2]) |
+              (p.z > ref.hi[2])) {
+            continue;
+          }
+          near.push_back(ref.tri);
+        }
+      }
+    }
+  }
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  detail::MeshRay ray(p);
+  std::vector<detail::LocalConstraint> planes;
+  for (const std::uint32_t t : near) {
+    ray.add(tris_[t].a, tris_[t].b, tris_[t].c);
+    detail::add_plane_through(tris_[t].a, tris_[t].b, tris_[t].c, p, planes);
+  }
+  return detail::classify_surface_point(planes, ray,
+                                        [&](int count) { return inside_by_count(count); });
 }
 
 Location MeshIndex::locate_winding(Vec3 p) const {
