@@ -73,7 +73,9 @@ int run_mesh(const InsideOptions& o) {
   if (!file) return report(file.error());
   auto points = io::read_points3(o.points);
   if (!points) return report(points.error());
-  const inside::MeshIndex index(file->mesh);
+  // Few points: no grid (the index's cost model); the answers are the same.
+  const inside::MeshIndex index(file->mesh,
+                                {.queries = std::max<std::size_t>(points->points.size(), 1)});
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   const std::vector<Location> locations = locate_all(index, points->points, o);

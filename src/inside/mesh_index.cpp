@@ -120,6 +120,17 @@ std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
   return n;
 }
 
+// The cost model: building the grid takes about kGridCost a triangle, a query without it about
+// kDirectCost a triangle (one pass over all of them); with the grid a query costs next to
+// nothing. So the grid pays from about kGridCost / kDirectCost queries on, whatever the size.
+// Measured on a 100k-triangle torus and on armadillo, one thread (bench/results/debian12-2core/
+// point_in_mesh.txt): about 1.3 us a triangle to build, 4-6 ns a triangle a direct query.
+constexpr double kGridCost = 1300.0, kDirectCost = 5.0;
+
+bool few_queries(std::size_t queries) {
+  return queries > 0 && static_cast<double>(queries) * kDirectCost < kGridCost;
+}
+
 }  // namespace
 
 const char* to_string(MeshRegime regime) {
@@ -141,7 +152,7 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   }
   regime_ = MeshRegime::closed_exact;
   by_parity_ = !matched;
-  if (tris_.empty()) return;
+  if (tris_.empty() || few_queries(options.queries)) return;  // no grid: locate_direct
   const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
@@ -324,7 +335,8 @@ Location MeshIndex::locate(Vec3 p) const {
 }
 
 Location MeshIndex::locate_exact(Vec3 p) const {
-  if (state_.empty() || !bounds_.contains(p)) return Location::outside;
+  if (!bounds_.contains(p)) return Location::outside;
+  if (state_.empty()) return locate_direct(p);
   const int i = x_.cell_of(p.x);
   const int j = y_.cell_of(p.y);
   const int k = z_.cell_of(p.z);
@@ -343,6 +355,34 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   // a point there that is not on the surface is outside (the solid's interior is open).
   if (p.y == bounds_.max.y || p.z == bounds_.max.z) return Location::outside;
   return inside_by_count(count_run(p, row, i, true)) ? Location::inside : Location::outside;
+}
+
+// Without a grid (few queries): every triangle, the same tests. A triangle whose box misses the
+// closed ray from p neither holds p nor is crossed.
+Location MeshIndex::locate_direct(Vec3 p) const {
+  int count = 0;
+  for (const Tri& t : tris_) {
+    if ((p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) | (p.z > t.hi[2])) {
+      continue;
+    }
+    if (on_triangle(t, p)) {
+      if (by_parity_) return Location::boundary;
+      std::vector<std::uint32_t> near;
+      for (std::uint32_t u = 0; u < tris_.size(); ++u) {
+        const Tri& v = tris_[u];
+        if (!((p.x > v.hi[0]) | (p.y < v.lo[1]) | (p.y > v.hi[1]) | (p.z < v.lo[2]) |
+              (p.z > v.hi[2]))) {
+          near.push_back(u);
+        }
+      }
+      return classify_on_surface(p, near);
+    }
+    if (t.s != Sign::zero && predicates::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, p) &&
+        predicates::hit_side(t.a, t.b, t.c, t.s, p) > 0) {
+      count += to_int(t.s);
+    }
+  }
+  return inside_by_count(count) ? Location::inside : Location::outside;
 }
 
 // A point on some triangle: the solid near it (inside/mesh_ray.h). Every triangle that the ray
@@ -376,6 +416,11 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
   }
   std::sort(near.begin(), near.end());
   near.erase(std::unique(near.begin(), near.end()), near.end());
+  return classify_on_surface(p, near);
+}
+
+// p on the surface, `near` every triangle that the ray from a sample near p may meet.
+Location MeshIndex::classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const {
   detail::MeshRay ray(p);
   std::vector<detail::LocalConstraint> planes;
   for (const std::uint32_t t : near) {

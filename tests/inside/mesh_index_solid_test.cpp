@@ -111,8 +111,11 @@ TEST(MeshIndexSolid, SelfOverlappingAndInvertedBoxesAnswerTheExactSolidAndItsRep
     ASSERT_TRUE(repaired.ok()) << repaired.error().what();
     ASSERT_EQ(repaired->moved, 0u);  // integer corners: the repair is exact
     const MeshIndex solid(repaired->mesh);
+    const MeshIndex direct(mesh, {.queries = 1});  // no grid: every triangle tested
+    ASSERT_EQ(direct.stats().cells, 0u);
     for (const Vec3 q : probes(rng, 150, 50)) {
       const Location got = index.locate(q);
+      ASSERT_EQ(direct.locate(q), got) << trial << ": " << q.x << " " << q.y << " " << q.z;
       ASSERT_EQ(got, oracle_solid(mesh, q)) << trial << ": " << q.x << " " << q.y << " " << q.z;
       ASSERT_EQ(got, solid.locate(q)) << trial << ": " << q.x << " " << q.y << " " << q.z;
     }

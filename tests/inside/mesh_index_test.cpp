@@ -44,7 +44,8 @@ std::vector<Vec3> probe_points(const Mesh& mesh, double lo, double hi, double st
   return points;
 }
 
-// The index under several grid resolutions (one cell; default; fine) against the oracle.
+// The index under several grid resolutions (one cell; default; fine) and without a grid (few
+// queries: every triangle tested) against the oracle.
 void expect_matches_oracle(const Mesh& mesh, const std::vector<Vec3>& points) {
   std::vector<Location> truth;
   truth.reserve(points.size());
@@ -54,6 +55,7 @@ void expect_matches_oracle(const Mesh& mesh, const std::vector<Vec3>& points) {
       {.cells_per_triangle = 0.0, .min_cells = 1},
       {},
       {.cells_per_triangle = 200.0},
+      {.queries = 1},
   };
   for (const MeshIndexOptions& options : grids) {
     const MeshIndex index(mesh, options);

@@ -45,6 +45,11 @@ struct MeshIndexOptions {
   std::size_t max_cells = std::size_t{1} << 24;
   /// Accuracy of the winding number regime (see `FastWindingNumberOptions`).
   double winding_accuracy = 3.0;
+  /// How many points the caller means to locate (0: not known, many). Building the grid costs
+  /// about as much as 260 queries without it (a measured cost model, mesh_index.cpp, whatever
+  /// the mesh's size); for fewer queries the exact regime builds no grid and each query tests
+  /// every triangle, with the same answers.
+  std::size_t queries = 0;
 };
 
 /// A triangle mesh prepared for exact point location.
@@ -121,7 +126,7 @@ class MeshIndex {
   /// Sizes of the structure, for benchmarks and tuning.
   struct Stats {
     std::size_t triangles = 0;
-    std::size_t cells = 0;          ///< grid cells (exact regime)
+    std::size_t cells = 0;          ///< grid cells (exact regime; 0 without a grid: few queries)
     std::size_t surface_cells = 0;  ///< cells some triangle's box meets
     std::size_t cell_refs = 0;      ///< triangle-cell pairs
     int nx = 0, ny = 0, nz = 0;
@@ -155,7 +160,9 @@ class MeshIndex {
   [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
   [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
+  [[nodiscard]] Location locate_direct(Vec3 p) const;
   [[nodiscard]] Location locate_on_surface(Vec3 p) const;
+  [[nodiscard]] Location classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const;
   [[nodiscard]] Location locate_winding(Vec3 p) const;
 
   MeshRegime regime_ = MeshRegime::closed_exact;
