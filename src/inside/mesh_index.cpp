@@ -47,32 +47,47 @@ float float_above(double v) {
   return f;
 }
 
-// True only if the closed box and the triangle are certainly disjoint: their projections on the
+// True only if a closed box and the triangle are certainly disjoint: their projections on the
 // triangle's (floating-point) normal n, computed in floating point, are apart by more than a
 // bound on the rounding errors of both. Any fixed n separates exactly when the exact
-// projections are apart, so the answer needs no exact n. Overflow or NaN: never separated.
-template <class Tri>
-bool separated_by_plane(const Tri& t, const Box3& box) {
-  const Vec3 n = cross(t.b - t.a, t.c - t.a);
-  const double ta = dot(n, t.a), tb = dot(n, t.b), tc = dot(n, t.c);
-  const double tmin = std::min({ta, tb, tc}), tmax = std::max({ta, tb, tc});
-  double bmin = 0.0, bmax = 0.0, scale = 0.0;
-  const double nv[3] = {n.x, n.y, n.z};
-  const double lo[3] = {box.min.x, box.min.y, box.min.z}, hi[3] = {box.max.x, box.max.y, box.max.z};
-  const double tv[3][3] = {{t.a.x, t.b.x, t.c.x}, {t.a.y, t.b.y, t.c.y}, {t.a.z, t.b.z, t.c.z}};
-  for (int d = 0; d < 3; ++d) {
-    const double p = nv[d] * lo[d], q = nv[d] * hi[d];
-    bmin += std::min(p, q);
-    bmax += std::max(p, q);
-    const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), std::abs(tv[d][0]),
-                               std::abs(tv[d][1]), std::abs(tv[d][2])});
-    scale += std::abs(nv[d]) * m;
+// projections are apart, so the answer needs no exact n. Overflow or NaN: never separated. The
+// triangle's part is computed once (a big triangle is tested against many cells).
+class PlaneSeparation {
+ public:
+  PlaneSeparation() = default;
+  template <class Tri>
+  explicit PlaneSeparation(const Tri& t) : n_(cross(t.b - t.a, t.c - t.a)) {
+    const double ta = dot(n_, t.a), tb = dot(n_, t.b), tc = dot(n_, t.c);
+    tmin_ = std::min({ta, tb, tc});
+    tmax_ = std::max({ta, tb, tc});
+    const double tv[3][3] = {{t.a.x, t.b.x, t.c.x}, {t.a.y, t.b.y, t.c.y}, {t.a.z, t.b.z, t.c.z}};
+    for (int d = 0; d < 3; ++d)
+      tabs_[d] = std::max({std::abs(tv[d][0]), std::abs(tv[d][1]), std::abs(tv[d][2])});
   }
-  // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
-  // a generous multiple of u = 2^-53.
-  const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
-  return bmin > tmax + margin || bmax < tmin - margin;
-}
+
+  [[nodiscard]] bool separates(const Box3& box) const {
+    double bmin = 0.0, bmax = 0.0, scale = 0.0;
+    const double nv[3] = {n_.x, n_.y, n_.z};
+    const double lo[3] = {box.min.x, box.min.y, box.min.z};
+    const double hi[3] = {box.max.x, box.max.y, box.max.z};
+    for (int d = 0; d < 3; ++d) {
+      const double p = nv[d] * lo[d], q = nv[d] * hi[d];
+      bmin += std::min(p, q);
+      bmax += std::max(p, q);
+      const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), tabs_[d]});
+      scale += std::abs(nv[d]) * m;
+    }
+    // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
+    // a generous multiple of u = 2^-53.
+    const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
+    return bmin > tmax_ + margin || bmax < tmin_ - margin;
+  }
+
+ private:
+  Vec3 n_;
+  double tmin_ = 0.0, tmax_ = 0.0;
+  double tabs_[3] = {0.0, 0.0, 0.0};
+};
 
 // Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
 // max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
@@ -211,33 +226,38 @@ std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& box
   return sorted_boxes;
 }
 
-// Triangle boxes -> closed cells (two passes: count, then fill).
+// Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
+// counting sort by cell keeps that order within each cell.
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
-  std::vector<std::uint32_t> count(cell_count + 1, 0);
-  auto for_cells = [&](std::size_t t, auto&& f) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
+  pairs.reserve(4 * boxes.size());
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
     const Box3& b = boxes[t];
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
     const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
     const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
     // A triangle whose box spans several cells is tested against each cell's box along its
-    // normal, conservatively (separated_by_plane): fewer surface cells under big triangles.
+    // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
+    const PlaneSeparation plane = big ? PlaneSeparation(tris_[t]) : PlaneSeparation();
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
-          const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j),
-                     ku = static_cast<std::size_t>(k);
-          if (big &&
-              separated_by_plane(tris_[t], {{x_.line(i), y_.line(j), z_.line(k)},
-                                            {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
+          if (big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
+                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
             continue;
           }
-          f((ku * static_cast<std::size_t>(ny_) + ju) * static_cast<std::size_t>(nx_) + iu);
+          const std::size_t c = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                                 static_cast<std::size_t>(j)) *
+                                    static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(i);
+          pairs.emplace_back(c, static_cast<std::uint32_t>(t));
         }
-  };
-  for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(t, [&](std::size_t c) { ++count[c]; });
+  }
+  std::vector<std::uint32_t> count(cell_count, 0);
+  for (const auto& [c, t] : pairs)
+    ++count[c];
   state_.assign(cell_count, 0);
   surface_.assign(cell_count, 0);
   cell_start_.clear();
@@ -251,13 +271,10 @@ void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
     cell_start_.push_back(cell_start_.back() + count[c]);
   }
   refs_.resize(cell_start_.back());
-  for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(t, [&](std::size_t c) {
-      const Tri& tri = tris_[t];
-      refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]},
-                          {tri.hi[0], tri.hi[1], tri.hi[2]},
-                          static_cast<std::uint32_t>(t)};
-    });
+  for (const auto& [c, t] : pairs) {
+    const Tri& tri = tris_[t];
+    refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
+  }
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();
 }
