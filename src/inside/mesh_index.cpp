@@ -440,11 +440,15 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
 Location MeshIndex::classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const {
   detail::MeshRay ray(p);
   std::vector<detail::LocalConstraint> planes;
+  Triangle3 face;  // the first triangle through p with a plane
   for (const std::uint32_t t : near) {
-    ray.add(tris_[t].a, tris_[t].b, tris_[t].c);
-    detail::add_plane_through(tris_[t].a, tris_[t].b, tris_[t].c, p, planes);
+    const Tri& tri = tris_[t];
+    ray.add(tri.a, tri.b, tri.c);
+    const std::size_t before = planes.size();
+    detail::add_plane_through(tri.a, tri.b, tri.c, p, planes);
+    if (before == 0 && planes.size() == 1) face = {tri.a, tri.b, tri.c};
   }
-  return detail::classify_surface_point(planes, ray,
+  return detail::classify_surface_point(planes, face, p, ray,
                                         [&](int count) { return inside_by_count(count); });
 }
 

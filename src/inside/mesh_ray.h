@@ -4,6 +4,7 @@
 // through p; the neighbourhood analysis of MeshIndex and of CsgSolid's mesh leaves at p
 // (csg_local.h samples the open cells around p).
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -45,10 +46,34 @@ void add_plane_through(Vec3 a, Vec3 b, Vec3 c, Vec3 p, std::vector<LocalConstrai
 
 /// Where the surface point p lies in the solid whose inside is where `inside_at(count)` holds for
 /// the signed crossing count of `ray`: `inside` if every open cell around p is inside, `outside`
-/// if none is, else `boundary`.
+/// if none is, else `boundary`. `planes`: those of the triangles through p (add_plane_through);
+/// `face`: one of those triangles.
+///
+/// First a quick proof of the common answer: two samples just on either side of `face`, in its
+/// wedge at p (p + e d +- e^2 n + e^2 d1 x + e^2 d2 y, d from p to the face's centroid, n its
+/// normal). Where both lie off every plane through p (so off the surface) and one is inside and
+/// the other not, p is `boundary`, without the arrangement, whose sampling grows with the cube
+/// of the number of planes through p (a vertex of high degree).
 template <class InsideAt>
 [[nodiscard]] Location classify_surface_point(const std::vector<LocalConstraint>& planes,
-                                              const MeshRay& ray, const InsideAt& inside_at) {
+                                              const Triangle3& face, Vec3 p, const MeshRay& ray,
+                                              const InsideAt& inside_at) {
+  if (!planes.empty()) {
+    const BigVec3 d =
+        to_big(face.a) + to_big(face.b) + to_big(face.c) - to_big(p) - to_big(p) - to_big(p);
+    const BigVec3 n = cross(to_big(face.b) - to_big(face.a), to_big(face.c) - to_big(face.a));
+    const BigVec3 back = -n, x = to_big(Vec3{1, 0, 0}), y = to_big(Vec3{0.375, 1, 0.625});
+    const SymbolicOffset ahead{&d, &n, &x, &y}, behind{&d, &back, &x, &y};
+    const auto off_surface = [&](const SymbolicOffset& at) {
+      return std::none_of(planes.begin(), planes.end(), [&](const LocalConstraint& c) {
+        return sign_at(BigFloat(), c.normal, at) == Sign::zero;
+      });
+    };
+    if (off_surface(ahead) && off_surface(behind) &&
+        inside_at(ray.winding(ahead)) != inside_at(ray.winding(behind))) {
+      return Location::boundary;
+    }
+  }
   return classify_neighbourhood(planes, [&](std::span<const char>, const SymbolicOffset& at) {
     return inside_at(ray.winding(at));
   });

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -172,6 +173,35 @@ TEST(MeshIndexSolid, AClosedMeshWithInconsistentOrientationKeepsRayParity) {
   EXPECT_EQ(index.locate({1, 1, 1}), Location::inside);
   EXPECT_EQ(index.locate({1, 1, 0}), Location::boundary);
   EXPECT_EQ(index.locate({1, 1, 3}), Location::outside);
+}
+
+}  // namespace
+}  // namespace contain::inside
+
+namespace contain::inside {
+namespace {
+
+TEST(MeshIndexSolid, TheApexOfAConeOf512SidesIsBoundaryByTwoSamples) {
+  // 512 planes through the apex: the arrangement's sampling grows with their cube; the two
+  // samples on either side of one face prove the boundary at once.
+  constexpr int n = 512;
+  Mesh cone;
+  cone.vertices = {{0, 0, 1}, {0, 0, 0}};
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.141592653589793 * i / n;
+    cone.vertices.push_back({std::cos(a), std::sin(a), 0});
+  }
+  for (int i = 0; i < n; ++i) {
+    const std::int32_t a = 2 + i, b = 2 + (i + 1) % n;
+    cone.triangles.push_back({0, a, b});
+    cone.triangles.push_back({1, b, a});
+  }
+  for (const std::size_t queries : {std::size_t{0}, std::size_t{1}}) {
+    const MeshIndex index(cone, {.queries = queries});
+    EXPECT_EQ(index.locate({0, 0, 1}), Location::boundary);
+    EXPECT_EQ(index.locate({0, 0, 0}), Location::boundary);
+    EXPECT_EQ(index.locate({0, 0, 0.5}), Location::inside);
+  }
 }
 
 }  // namespace
