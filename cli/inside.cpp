@@ -13,6 +13,7 @@
 #include "contain/io/mesh_warning.h"
 #include "contain/io/points_io.h"
 #include "contain/io/region_io.h"
+#include "index.h"
 #include "many.h"
 #include "progress.h"
 #include "verbs.h"
@@ -24,6 +25,7 @@ struct InsideOptions : PointQuery {
   std::string mesh;
   std::string polygon;
   std::string csg;
+  std::string index;  // --index FILE: a saved index (contain index build)
 };
 
 // Locates every point through `locator.locate(span, span, options)`, chunked for progress.
@@ -133,6 +135,15 @@ Verb add_inside(CLI::App& app) {
     scene->excludes(other);
     other->excludes(scene);
   }
+  auto* index = cmd->add_option("--index", o->index,
+                                "a saved index (contain index build): answers without building "
+                                "one; with --mesh, --polygon or --layer, refused unless built "
+                                "from it (exit 3)")
+                    ->option_text("FILE");
+  for (CLI::Option* other : {csg, scene}) {
+    index->excludes(other);
+    other->excludes(index);
+  }
   polygon->excludes(csg);
   csg->excludes(polygon);
   mesh->excludes(polygon);
@@ -162,7 +173,7 @@ Verb add_inside(CLI::App& app) {
       "A point is 'on' only when it lies exactly on the boundary of the filled region (exact "
       "arithmetic on the given doubles).");
   CLI::Option* fill = cmd->get_option("--fill");
-  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name, fill]() {
+  return {cmd, [o, many, polygon, csg, mesh, layer, scene, id, layer_name, fill, index]() {
             if ((id->count() > 0 || layer_name->count() > 0) && layer->count() == 0) {
               return report({ErrorKind::usage, "inside: --id and --layer-name need --layer"});
             }
@@ -172,9 +183,15 @@ Verb add_inside(CLI::App& app) {
                              "inside: --fill reads the rings of 2D regions (--polygon, --layer); "
                              "--mesh, --csg and --scene are solids"});
             }
-            if (layer->count() > 0 || scene->count() > 0) {
+            if (layer->count() + scene->count() + index->count() > 0) {
               ManyOptions m = *many;
               static_cast<PointQuery&>(m) = *o;
+              if (index->count() > 0) {
+                return run_inside_index(m, {.index = o->index,
+                                            .mesh = o->mesh,
+                                            .polygon = o->polygon,
+                                            .fill_given = fill->count() > 0});
+              }
               return layer->count() > 0 ? run_layer(m) : run_scene_inside(m);
             }
             if (mesh->count() > 0) return run_mesh(*o);

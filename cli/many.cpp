@@ -127,7 +127,12 @@ int run_layer(const ManyOptions& o) {
   if (Status s = check_ids(layer->ids, "the layer's", io::layer_source_name(o.layer)); !s)
     return report(s.error());
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
-  auto text = locate_lines<Vec2>(index, layer->ids, o, io::read_points2_chunked);
+  return answer_layer(index, layer->ids, o);
+}
+
+int answer_layer(const inside::RegionLayer& index, const std::vector<std::string>& ids,
+                 const ManyOptions& o) {
+  auto text = locate_lines<Vec2>(index, ids, o, io::read_points2_chunked);
   if (!text) return report(text.error());
   return emit(*text, o.out);
 }

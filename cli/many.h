@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common.h"
+#include "contain/inside/region_layer.h"
 #include "contain/inside/solid_scene.h"
 #include "contain/io/scene_json.h"
 
@@ -31,6 +32,9 @@ struct ManyOptions : PointQuery {
 /// One line per point: the ids of the regions (solids) holding it, in file order, `ID:on` for a
 /// boundary point (folded by --boundary), `-` where none.
 int run_layer(const ManyOptions& options);
+/// The lines of run_layer from a layer already prepared (or loaded: contain inside --index).
+int answer_layer(const inside::RegionLayer& index, const std::vector<std::string>& ids,
+                 const ManyOptions& options);
 int run_scene_inside(const ManyOptions& options);
 
 /// contain collide --scene: one line per intersecting pair "ID1 ID2" (or a JSON object with

@@ -180,7 +180,8 @@ Verb add_slice(CLI::App& app) {
       "Sections of a solid by planes as exact 2D regions, with the triangle under each "
       "edge; or its shadow");
   cmd->add_option("--mesh", o->mesh,
-                  "the solid: a closed mesh (.obj .off .stl .ply), read by its winding number")
+                  "the solid: a closed mesh (.obj .off .stl .ply), read by its winding number "
+                  "(--shadow: any mesh)")
       ->required()
       ->option_text("FILE");
   cmd->add_option("--z", o->z, "a plane's value along --axis (repeatable, in the order given)")
@@ -205,7 +206,8 @@ Verb add_slice(CLI::App& app) {
   cmd->add_flag("--json", o->json,
                 "a JSON object a line: value, wkt, and the triangle under each edge of each ring");
   cmd->add_flag("--shadow", o->shadow,
-                "the projection of the solid along --axis (one MULTIPOLYGON) instead of sections");
+                "the projection of the mesh along --axis (one MULTIPOLYGON: the union of its "
+                "projected triangles, an open mesh's too) instead of sections");
   add_threads_option(*cmd, o->threads);
   o->threads_option = cmd->get_option("--threads");
   cmd->add_option("--out", o->out, "write to FILE instead of stdout")->option_text("FILE");

@@ -14,6 +14,7 @@ Verb add_clip(CLI::App& app);
 Verb add_collide(CLI::App& app);
 Verb add_distance(CLI::App& app);
 Verb add_slice(CLI::App& app);
+Verb add_index(CLI::App& app);
 
 /// Every verb, in the order `contain --help` lists them.
 std::vector<Verb> all_verbs(CLI::App& app);

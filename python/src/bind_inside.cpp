@@ -11,11 +11,13 @@
 #include "arguments.h"
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/inside/index_file.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/point_in_mesh.h"
 #include "contain/inside/point_in_polygon.h"
 #include "contain/inside/point_in_polygon_angle_sum.h"
 #include "contain/inside/polygon_index.h"
+#include "contain/io/index_io.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/region_io.h"
@@ -83,7 +85,8 @@ py::tuple box2(const Box2& box) {
   return py::make_tuple(py::array_t<double>(2, &box.min.x), py::array_t<double>(2, &box.max.x));
 }
 
-// Both indexes answer "not picklable" with the way to ship them instead.
+// PolygonIndex answers "not picklable" with the way to ship it instead (MeshIndex pickles
+// through its saved bytes, docs/index-files.md).
 py::tuple refuse_pickle(const py::handle& self) {
   throw py::type_error(std::string(py::str(py::type::of(self).attr("__name__"))) +
                        " is not picklable: ship the mesh or region (its file path, bytes or "
@@ -137,8 +140,9 @@ floating point), still with exact 'boundary'; `regime` and `warning` say which a
 Build: MeshIndex(mesh) for anything mesh-like (a Mesh, a path, a trimesh or Open3D mesh,
 (vertices, faces)), MeshIndex(vertices, faces), or MeshIndex.from_file(path); about
 O(n log n) for n triangles. Query: locate(points) -> int8 (-1/0/1), contains(points,
-boundary=...) -> bool, locate_point(p) -> Location. Not picklable: to use it on Dask workers
-ship the mesh (see contain.dask).
+boundary=...) -> bool, locate_point(p) -> Location. Save and load: index.save(path),
+MeshIndex.load(path) (a checked binary file, docs/index-files.md: loading costs a fraction of
+building); pickling goes through the same bytes.
 
 Example:
     >>> index = contain.MeshIndex(contain.read_mesh("part.obj"))
@@ -229,7 +233,38 @@ Example:
                             "grid"_a = py::make_tuple(s.nx, s.ny, s.nz));
           },
           "Sizes of the structure (triangles, cells, surface_cells, cell_refs, grid).")
-      .def("__reduce__", &refuse_pickle)
+      .def(
+          "save",
+          [](const inside::MeshIndex& index, const std::filesystem::path& path) {
+            (void)take(io::write_index(inside::format_index(index), path.string()));
+          },
+          "path"_a,
+          "Writes the index to a file (docs/index-files.md: a versioned binary file with the\n"
+          "fingerprint of the mesh's triangles and checksums); MeshIndex.load reads it back.")
+      .def_static(
+          "load",
+          [](const std::filesystem::path& path) {
+            auto loaded = [&] {
+              py::gil_scoped_release release;
+              return io::read_mesh_index(path.string());
+            }();
+            return take(std::move(loaded));
+          },
+          "path"_a,
+          "Reads an index that save() wrote (memory mapped, every field checked): it answers\n"
+          "exactly as the index that was saved. A damaged, truncated or foreign file raises\n"
+          "ContainError naming the file.")
+      .def(py::pickle(
+          [](const inside::MeshIndex& index) {
+            const std::vector<std::byte> bytes = inside::format_index(index);
+            return py::make_tuple(
+                py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.MeshIndex: bad pickle state");
+            const std::string bytes = state[0].cast<std::string>();
+            return take(inside::parse_mesh_index(std::as_bytes(std::span(bytes))));
+          }))
       .def("__repr__", [](const inside::MeshIndex& index) {
         return "contain.MeshIndex(" + std::to_string(index.stats().triangles) + " triangles, " +
                to_string(index.regime()) + ")";

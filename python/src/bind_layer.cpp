@@ -15,8 +15,10 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "contain/collide/mesh_scene.h"
+#include "contain/inside/index_file.h"
 #include "contain/inside/region_layer.h"
 #include "contain/inside/solid_scene.h"
+#include "contain/io/index_io.h"
 #include "contain/io/layer_io.h"
 #include "contain/io/scene_json.h"
 #include "errors.h"
@@ -27,10 +29,32 @@ namespace {
 
 using namespace pybind11::literals;
 
-// A layer and the ids of its regions.
+// A layer, the ids of its regions and the fingerprint of the regions (saved with it).
 struct Layer {
   inside::RegionLayer index;
   std::vector<std::string> ids;
+  std::uint64_t source = 0;
+
+  // The regions prepared under `fill` (the GIL released).
+  static Layer prepared(const std::vector<MultiPolygon>& regions, std::vector<std::string> ids,
+                        Fill fill) {
+    Layer layer{{}, std::move(ids), 0};
+    py::gil_scoped_release release;
+    layer.index = inside::RegionLayer(regions, {.fill = fill});
+    layer.source = inside::fingerprint(regions, fill);
+    return layer;
+  }
+  [[nodiscard]] std::vector<std::byte> bytes() const {
+    return inside::format_index(index, source, ids);
+  }
+  static Layer from(inside::SavedRegionLayer saved) {
+    std::vector<std::string> ids = std::move(saved.ids);
+    if (ids.empty()) {
+      for (std::size_t r = 0; r < saved.layer.size(); ++r)
+        ids.push_back(std::to_string(r));
+    }
+    return {std::move(saved.layer), std::move(ids), saved.source};
+  }
 };
 
 // A scene: its meshes (each distinct mesh once), objects and ids; the two prepared forms are
@@ -224,10 +248,8 @@ Example:
              for (const py::handle region : regions)
                polygons.push_back(to_region(region, "regions[k]"));
              const Fill rule = parse_fill(fill);
-             Layer layer{{}, ids_or_positions(ids, polygons.size(), "region")};
-             py::gil_scoped_release release;
-             layer.index = inside::RegionLayer(polygons, {.fill = rule});
-             return layer;
+             return Layer::prepared(polygons, ids_or_positions(ids, polygons.size(), "region"),
+                                    rule);
            }),
            "regions"_a, "ids"_a = py::none(), py::kw_only(), "fill"_a = "even_odd",
            "Prepares the regions (each a Region, WKT string or sequence of rings); ids: one\n"
@@ -249,10 +271,7 @@ Example:
                 throw py::error_already_set();
               }
             }
-            Layer layer{{}, std::move(read.ids)};
-            py::gil_scoped_release release;
-            layer.index = inside::RegionLayer(read.regions, {.fill = rule});
-            return layer;
+            return Layer::prepared(read.regions, std::move(read.ids), rule);
           },
           "source"_a, "id"_a = py::none(), "layer_name"_a = py::none(), py::kw_only(),
           "fill"_a = "even_odd", R"doc(
@@ -276,10 +295,7 @@ of a source holding several. Coordinates are the doubles of the file.
                                      : io::parse_geojson_layer(text, "<geojson>", options);
             }();
             io::Layer read = take(std::move(result));
-            Layer layer{{}, std::move(read.ids)};
-            py::gil_scoped_release release;
-            layer.index = inside::RegionLayer(read.regions, {.fill = rule});
-            return layer;
+            return Layer::prepared(read.regions, std::move(read.ids), rule);
           },
           "text"_a, "format"_a, "id"_a = py::none(), py::kw_only(), "fill"_a = "even_odd",
           "Parses a layer from text: format 'geojson' (a FeatureCollection) or 'wkt' (one\n"
@@ -318,7 +334,38 @@ of a source holding several. Coordinates are the doubles of the file.
           },
           "Sizes of the structure (regions, edges, cells, edge_refs, tree_nodes, bytes).")
       .def("__len__", [](const Layer& layer) { return layer.index.size(); })
-      .def("__reduce__", &refuse_pickle)
+      .def(
+          "save",
+          [](const Layer& layer, const std::filesystem::path& path) {
+            (void)take(io::write_index(layer.bytes(), path.string()));
+          },
+          "path"_a,
+          "Writes the prepared layer and its ids to a file (docs/index-files.md);\n"
+          "RegionLayer.load reads it back, as does 'contain inside --index'.")
+      .def_static(
+          "load",
+          [](const std::filesystem::path& path) {
+            auto loaded = [&] {
+              py::gil_scoped_release release;
+              return io::read_region_layer_index(path.string());
+            }();
+            return Layer::from(take(std::move(loaded)));
+          },
+          "path"_a,
+          "Reads a layer that save() (or 'contain index build --layer') wrote, every field\n"
+          "checked: it answers exactly as the layer that was saved. A damaged, truncated or\n"
+          "foreign file raises ContainError naming the file.")
+      .def(py::pickle(
+          [](const Layer& layer) {
+            const std::vector<std::byte> bytes = layer.bytes();
+            return py::make_tuple(
+                py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw py::value_error("contain.RegionLayer: bad pickle state");
+            const std::string bytes = state[0].cast<std::string>();
+            return Layer::from(take(inside::parse_region_layer(std::as_bytes(std::span(bytes)))));
+          }))
       .def("__repr__", [](const Layer& layer) {
         return "contain.RegionLayer(" + std::to_string(layer.index.size()) + " regions, " +
                std::to_string(layer.index.stats().edges) + " edges, fill='" +

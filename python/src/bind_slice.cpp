@@ -99,10 +99,10 @@ not depend on the count.
         return take(std::move(result));
       },
       "mesh"_a, py::kw_only(), "axis"_a = "z", R"doc(
-The shadow of a solid along `axis`: the union of its triangles projected onto a plane
-perpendicular to it, as a Region in the coordinates of slice_mesh. The mesh must be closed
-(ContainError naming an edge otherwise). Exact decisions; one 2D union of the silhouette edges
-(inner edges cancel), without the GIL.
+The shadow of a mesh along `axis`: the union of its triangles projected onto a plane
+perpendicular to it, as a Region in the coordinates of slice_mesh. Any mesh: a closed one (a
+solid) or an open surface (every triangle counts; triangles seen edge-on add no area). Exact
+decisions; one 2D union of the silhouette edges (inner edges cancel), without the GIL.
 )doc");
 
   m.def(

@@ -13,7 +13,8 @@
 
 namespace contain::inside {
 
-FastWindingNumber::FastWindingNumber(const Mesh& mesh, const FastWindingNumberOptions& options) {
+FastWindingNumber::FastWindingNumber(const Mesh& mesh, const FastWindingNumberOptions& options)
+    : accuracy_(options.accuracy) {
   triangles_.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     triangles_.push_back(mesh.triangle(t));

@@ -55,4 +55,32 @@ inline constexpr double kUnderflowGuard = DBL_MIN;
 [[nodiscard]] Sign side_of_plane_exact(const Plane& h, Vec3 p);
 [[nodiscard]] Sign side_of_line_exact(const HalfPlane& h, Vec2 p);
 
+/// The ratio (c - pk) / (qk - pk) of a crossing, shared by its coordinates: rho0 rounded
+/// (`crossing_ratio`, one division), then on demand (`refine_ratio`) rho0 + rho1 within `error`,
+/// a double-double with a running bound. Not `valid` when a difference is outside
+/// [2^-200, 2^200] in magnitude (zero included).
+struct CrossingRatio {
+  double pk = 0.0, qk = 0.0, c = 0.0;
+  double inverse = 0.0;  // fl(1 / fl(qk - pk))
+  double rho0 = 0.0;
+  double rho1 = 0.0;
+  double error = 0.0;
+  bool valid = false;
+  bool refined = false;
+};
+[[nodiscard]] CrossingRatio crossing_ratio(double pk, double qk, double c);
+void refine_ratio(CrossingRatio& rho);
+/// The double nearest to p + (q - p) rho, written to out when a bound proves it: in double from
+/// rho0 (quick), or in double-double from a refined ratio.
+[[nodiscard]] bool rounded_offset_quick(double p, double q, const CrossingRatio& rho, double& out);
+[[nodiscard]] bool rounded_offset(double p, double q, const CrossingRatio& rho, double& out);
+/// The filters of rounded_axis_crossing in turn (quick, then double-double): the double nearest
+/// to p + (q - p)(c - pk) / (qk - pk) (pk != qk, c between them), written to out when a bound
+/// proves it (true); false hands the case to the long double and exact stages. Refuses differences
+/// outside [2^-200, 2^200] in magnitude and |p| > 2^200.
+[[nodiscard]] bool rounded_crossing_filter(double p, double q, double pk, double qk, double c,
+                                           double& out);
+/// The stages after it: long double with a priori bounds, then exact BigFloat comparisons.
+[[nodiscard]] double rounded_crossing_exact(double p, double q, double pk, double qk, double c);
+
 }  // namespace contain::predicates::detail

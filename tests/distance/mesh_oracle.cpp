@@ -1,23 +1,62 @@
 #include "distance/mesh_oracle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "contain/values/box.h"
 #include "support/tri_tri_oracle.h"
 
 namespace contain::test {
 
+namespace {
+
+Triangle3 triangle_of(const Mesh& mesh, std::size_t i) {
+  const TriangleIndices& t = mesh.triangles[i];
+  return {mesh.vertices[static_cast<std::size_t>(t[0])],
+          mesh.vertices[static_cast<std::size_t>(t[1])],
+          mesh.vertices[static_cast<std::size_t>(t[2])]};
+}
+
+Box3 box_of(const Triangle3& t) {
+  Box3 b;
+  for (const Vec3& v : {t.a, t.b, t.c})
+    b.expand(v);
+  return b;
+}
+
+// The same gap in doubles: only an order of visit (nearest boxes first, so that the exact gap
+// skips most triangles), never a decision.
+double rough_box_gap(Vec3 p, const Box3& b) {
+  const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
+  const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+  const double dz = std::max({b.min.z - p.z, 0.0, p.z - b.max.z});
+  return dx * dx + dy * dy + dz * dz;
+}
+
+}  // namespace
+
 MeshOracleAnswer mesh_oracle(const Mesh& mesh, Vec3 p) {
-  MeshOracleAnswer best;
+  std::vector<std::pair<double, std::size_t>> order;
+  std::vector<Box3> boxes;
+  order.reserve(mesh.triangles.size());
+  boxes.reserve(mesh.triangles.size());
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-    const TriangleIndices& t = mesh.triangles[i];
-    const Triangle3 tri{mesh.vertices[static_cast<std::size_t>(t[0])],
-                        mesh.vertices[static_cast<std::size_t>(t[1])],
-                        mesh.vertices[static_cast<std::size_t>(t[2])]};
-    const ExactClosest3 c = exact_closest(p, tri);
-    if (best.triangle < 0 || c.squared_distance < best.squared_distance) {
-      best = {c.squared_distance, c.point, static_cast<std::int32_t>(i)};
+    boxes.push_back(box_of(triangle_of(mesh, i)));
+    order.emplace_back(rough_box_gap(p, boxes.back()), i);
+  }
+  std::sort(order.begin(), order.end());
+  MeshOracleAnswer best;
+  for (const auto& [rough, i] : order) {
+    // A triangle whose box is exactly farther than the best cannot win or tie.
+    if (best.triangle >= 0 && exact_squared_distance(p, boxes[i]) > best.squared_distance) continue;
+    const ExactClosest3 c = exact_closest(p, triangle_of(mesh, i));
+    const auto index = static_cast<std::int32_t>(i);
+    if (best.triangle < 0 || c.squared_distance < best.squared_distance ||
+        (c.squared_distance == best.squared_distance && index < best.triangle)) {
+      best = {c.squared_distance, c.point, index};
     }
   }
   return best;
@@ -65,11 +104,7 @@ mpq_class exact_triangle_pair(const Triangle3& s, const Triangle3& t) {
   return best;
 }
 
-namespace {
-
-// Exact squared distance between the boxes of two triangles: a lower bound of theirs, so that
-// the oracle skips pairs that cannot beat the best so far (still exact).
-mpq_class box_gap(const Triangle3& s, const Triangle3& t) {
+mpq_class triangle_box_gap(const Triangle3& s, const Triangle3& t) {
   Box3 x, y;
   for (const Vec3& v : {s.a, s.b, s.c})
     x.expand(v);
@@ -87,8 +122,6 @@ mpq_class box_gap(const Triangle3& s, const Triangle3& t) {
   return sum;
 }
 
-}  // namespace
-
 PairOracle pair_oracle(const Mesh& a, const Mesh& b) {
   PairOracle best;
   for (std::size_t i = 0; i < a.triangles.size(); ++i) {
@@ -101,7 +134,7 @@ PairOracle pair_oracle(const Mesh& a, const Mesh& b) {
       const Triangle3 t{b.vertices[static_cast<std::size_t>(tb[0])],
                         b.vertices[static_cast<std::size_t>(tb[1])],
                         b.vertices[static_cast<std::size_t>(tb[2])]};
-      if (best.a >= 0 && box_gap(s, t) > best.d2) continue;
+      if (best.a >= 0 && triangle_box_gap(s, t) > best.d2) continue;
       const mpq_class d = exact_triangle_pair(s, t);
       if (best.a < 0 || d < best.d2) best = {d, static_cast<int>(i), static_cast<int>(j)};
     }

@@ -35,6 +35,10 @@ struct MeshOracleAnswer {
 /// independent GMP test), else the least of the 6 vertex-triangle and 9 edge-edge distances.
 [[nodiscard]] mpq_class exact_triangle_pair(const Triangle3& s, const Triangle3& t);
 
+/// The exact squared distance between the boxes of two triangles: a lower bound of theirs, with
+/// which the oracles skip pairs that cannot matter (still exact).
+[[nodiscard]] mpq_class triangle_box_gap(const Triangle3& s, const Triangle3& t);
+
 /// The closest triangle pair of two meshes' surfaces (least exact squared distance, ties to the
 /// lowest triangle of a, then of b), brute force.
 struct PairOracle {

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <map>
+#include <random>
+#include <utility>
+
 #include "scenes/scenes.h"
 
 namespace contain {
@@ -77,8 +82,55 @@ TEST(MeshClosure, UnweldedCopyIsJudgedByPosition) {
     soup.triangles.push_back({base, base + 1, base + 2});
   }
   EXPECT_FALSE(unmatched_edge(soup).has_value());
+  EXPECT_FALSE(unmatched_edge(weld_vertices(soup)).has_value());
   soup.triangles.pop_back();
-  EXPECT_TRUE(unmatched_edge(soup).has_value());
+  const auto edge = unmatched_edge(soup);
+  ASSERT_TRUE(edge.has_value());
+  // The answer from the welded mesh, which slicing reuses, is the same edge.
+  const auto from_weld = unmatched_edge(weld_vertices(soup));
+  ASSERT_TRUE(from_weld.has_value());
+  EXPECT_TRUE(from_weld->from == edge->from && from_weld->to == edge->to);
+  EXPECT_EQ(from_weld->triangle, edge->triangle);
+  EXPECT_EQ(from_weld->count, edge->count);
+  EXPECT_EQ(from_weld->reverse, edge->reverse);
+}
+
+TEST(MeshClosure, ClosednessMatchesACountOfEveryDirectedEdgeOnRandomMeshes) {
+  // Random triangles over few vertices (repeated corners, doubled and reversed triangles, edges
+  // used by many triangles), then each made closed by adding its reverse: the quick balance test
+  // and the full search agree with a plain count of directed edges.
+  std::mt19937_64 rng(26);
+  std::uniform_int_distribution<std::int32_t> vertex(0, 7);
+  for (int round = 0; round < 300; ++round) {
+    Mesh mesh;
+    for (int i = 0; i < 8; ++i)
+      mesh.vertices.push_back({static_cast<double>(i), static_cast<double>(i * i), 0.0});
+    const int n = 1 + round % 9;
+    for (int t = 0; t < n; ++t)
+      mesh.triangles.push_back({vertex(rng), vertex(rng), vertex(rng)});
+    if (round % 2 == 1) {
+      for (int t = 0; t < n; ++t) {
+        const TriangleIndices f = mesh.triangles[static_cast<std::size_t>(t)];
+        mesh.triangles.push_back({f[0], f[2], f[1]});
+      }
+    }
+    std::map<std::pair<std::int32_t, std::int32_t>, int> count;
+    for (const TriangleIndices& f : mesh.triangles) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (f[k] != f[(k + 1) % 3]) ++count[{f[k], f[(k + 1) % 3]}];
+      }
+    }
+    bool closed = true;
+    for (const auto& [edge, uses] : count) {
+      const auto reverse = count.find({edge.second, edge.first});
+      closed = closed && reverse != count.end() && reverse->second == uses;
+    }
+    const auto edge = unmatched_edge(weld_vertices(mesh));
+    ASSERT_EQ(edge.has_value(), !closed) << "round " << round;
+    if (edge) {
+      EXPECT_NE(edge->count, edge->reverse);
+    }
+  }
 }
 
 TEST(MeshClosure, DegenerateTriangleWithARepeatedCornerIsNeutral) {

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "scenes/scenes.h"
 
@@ -139,6 +143,38 @@ TEST(MeshValidation, WeldingMergesExactlyEqualPositionsIncludingSignedZeros) {
   EXPECT_EQ(w.mesh.vertices.size(), 5u);
   EXPECT_EQ(w.mesh.triangles[1], (TriangleIndices{0, 1, 3}));
   EXPECT_EQ(w.remap[6], 4);
+}
+
+TEST(MeshValidation, WeldingKeepsFirstOccurrencesAndNeverMergesNaN) {
+  // Many repeats of few round positions (integers and halves, whose low bits are all zero) in a
+  // shuffled order: each vertex maps to the first vertex at its position, new numbers in order
+  // of first occurrence, exactly as a search by position finds them.
+  std::mt19937_64 rng(26);
+  std::uniform_int_distribution<int> cell(-6, 6);
+  Mesh soup;
+  for (int i = 0; i < 5000; ++i)
+    soup.vertices.push_back({cell(rng) / 2.0, cell(rng) * 1.0, cell(rng) == 0 ? -0.0 : 0.0});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  soup.vertices.push_back({nan, 0, 0});
+  soup.vertices.push_back({nan, 0, 0});
+  const WeldResult w = weld_vertices(soup);
+  std::vector<std::int32_t> first;  // the first vertex of each new number
+  for (std::size_t i = 0; i < soup.vertices.size(); ++i) {
+    const Vec3 p = soup.vertices[i];
+    std::int32_t want = -1;
+    for (std::size_t k = 0; k < first.size() && want < 0; ++k) {
+      const Vec3 q = soup.vertices[static_cast<std::size_t>(first[k])];
+      if (q.x == p.x && q.y == p.y && q.z == p.z) want = static_cast<std::int32_t>(k);
+    }
+    if (want < 0) {
+      want = static_cast<std::int32_t>(first.size());
+      first.push_back(static_cast<std::int32_t>(i));
+    }
+    ASSERT_EQ(w.remap[i], want) << "vertex " << i;
+  }
+  ASSERT_EQ(w.mesh.vertices.size(), first.size());
+  EXPECT_EQ(w.merged, soup.vertices.size() - first.size());
+  EXPECT_EQ(w.remap[5000] + 1, w.remap[5001]);  // NaN equals nothing, itself included
 }
 
 TEST(MeshValidation, TorusSceneHasGenusOne) {

@@ -193,4 +193,17 @@ double nearest_double_sqrt(const mpq_class& x) {
   });
 }
 
+mpq_class exact_squared_distance(Vec3 p, const Box3& b) {
+  const double at[3] = {p.x, p.y, p.z};
+  const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
+  mpq_class sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    mpq_class gap = 0;
+    if (at[k] < lo[k]) gap = mpq_class(lo[k]) - mpq_class(at[k]);
+    if (at[k] > hi[k]) gap = mpq_class(at[k]) - mpq_class(hi[k]);
+    sum += gap * gap;
+  }
+  return sum;
+}
+
 }  // namespace contain::test

@@ -7,6 +7,7 @@
 
 #include <gmpxx.h>
 
+#include "contain/values/box.h"
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
@@ -34,6 +35,10 @@ struct ExactClosest2 {
 /// distances).
 [[nodiscard]] mpq_class exact_squared_distance(const Segment3& s, const Segment3& t);
 [[nodiscard]] mpq_class exact_squared_distance(const Segment2& s, const Segment2& t);
+
+/// Squared distance from p to the closed box, exactly: a lower bound of the distance to anything
+/// inside it, with which the brute-force oracles skip what cannot matter.
+[[nodiscard]] mpq_class exact_squared_distance(Vec3 p, const Box3& b);
 
 /// The double nearest to x (ties to even; +-infinity beyond DBL_MAX + ulp/2).
 [[nodiscard]] double nearest_double(const mpq_class& x);

@@ -55,8 +55,10 @@ struct MeshBooleanResult {
 /// touches itself the sheets get their own vertices (before that, adjacent output faces of one
 /// plane are merged and triangulated again without the points inside them that no other face
 /// holds; every point on their outlines stays, so the mesh stays closed); vertices rounded to the
-/// nearest doubles and the written mesh checked exactly; when the check fails, iterated snap
-/// rounding: the written mesh's own arrangement computed exactly again (as a union) and rounded,
+/// nearest doubles and the written mesh checked exactly (pairs of triangles whose corners were
+/// all written exactly are faces of the exact arrangement and are not tested again); when the
+/// check fails, iterated snap rounding: the written mesh's own arrangement computed exactly
+/// again (as a union; only the pairs of the triangles that failed intersected) and rounded,
 /// after three rounds also with points closer than 2^2, 2^5, ... 2^20 ulps of the largest input
 /// coordinate merged, at most 10 rounds (rules solid-* in docs/robustness.md).
 ///

@@ -67,13 +67,16 @@ struct Section {
                                                       const SliceOptions& options = {},
                                                       const BatchOptions& batch = {});
 
-/// The shadow of the solid on a plane perpendicular to `options.axis`: the union of the
-/// projections of its triangles, in the section's 2D coordinates. For a closed mesh this is the
-/// union of the triangles facing +axis (those projected counter-clockwise, exact `orient2d`),
-/// and edges that two of them share in opposite directions cancel before the one call of the 2D
-/// engine under `Fill::positive`, so the work is that of the silhouette, not of n triangles.
-/// Errors: an open mesh, as `slice_mesh`. O(n log n) plus the 2D boolean of the
-/// remaining edges.
+/// The shadow of the mesh on a plane perpendicular to `options.axis`: the union of the
+/// projections of its triangles, in the section's 2D coordinates. For a closed mesh (a solid)
+/// this is the union of the triangles facing +axis (those projected counter-clockwise, exact
+/// `orient2d`); an open mesh (a surface, a sheet, a box without its lid) has no solid but the
+/// same union is well defined: every triangle counts, turned counter-clockwise. Triangles seen
+/// edge-on have no area and add nothing (a vertical wall alone has an empty shadow). Edges that
+/// two counted triangles share in opposite directions cancel before the one call of the 2D
+/// engine under `Fill::positive`, so the work is that of the silhouette (and folds), not of n
+/// triangles. No error for finite coordinates (the precondition of every exact predicate).
+/// O(n log n) plus the 2D boolean of the remaining edges.
 [[nodiscard]] Result<MultiPolygon> shadow(const Mesh& mesh, const SliceOptions& options = {});
 
 }  // namespace contain::clip

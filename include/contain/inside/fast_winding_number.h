@@ -38,6 +38,8 @@ class FastWindingNumber {
 
   /// The hierarchy over the triangles (item t is triangle t), for exact tests on the surface.
   [[nodiscard]] const bvh::Bvh& hierarchy() const { return bvh_; }
+  /// The accuracy it was built with (`FastWindingNumberOptions::accuracy`).
+  [[nodiscard]] double accuracy() const { return accuracy_; }
   /// The triangles, in the mesh's order.
   [[nodiscard]] std::span<const Triangle3> triangles() const { return triangles_; }
 
@@ -50,6 +52,7 @@ class FastWindingNumber {
   std::vector<Triangle3> triangles_;
   bvh::Bvh bvh_;
   std::vector<Dipole> dipoles_;  // per node
+  double accuracy_ = FastWindingNumberOptions{}.accuracy;
 };
 
 }  // namespace contain::inside

@@ -134,6 +134,9 @@ class MeshIndex {
   [[nodiscard]] Stats stats() const { return stats_; }
 
  private:
+  // Saving and loading (src/inside/mesh_index_file.cpp) read and write every member.
+  friend struct MeshIndexFile;
+
   struct Tri {
     Vec3 a, b, c;
     float lo[3], hi[3];  // box rounded outward to float: a quick, safe rejection test

@@ -95,6 +95,9 @@ class PolygonIndex {
   [[nodiscard]] std::size_t memory_bytes() const;
 
  private:
+  // Saving and loading (src/inside/region_layer_file.cpp) read and write every member.
+  friend struct RegionLayerFile;
+
   struct CellEdge {
     Vec2 a, b;  // as written: a -> b
   };

@@ -115,6 +115,9 @@ class RegionLayer {
   [[nodiscard]] Stats stats() const { return stats_; }
 
  private:
+  // Saving and loading (src/inside/region_layer_file.cpp) read and write every member.
+  friend struct RegionLayerFile;
+
   void build_grid(double cells_per_region);
   void locate_in_tree(Vec2 point, std::vector<Holder>& out) const;
 

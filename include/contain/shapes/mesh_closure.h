@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "contain/shapes/mesh.h"
+#include "contain/shapes/mesh_validation.h"
 #include "contain/values/vec.h"
 
 namespace contain::shapes {
@@ -29,6 +30,10 @@ struct UnmatchedEdge {
 /// Triangles with a repeated corner add an edge and its reverse, so they never unbalance one.
 /// O(n log n) for n triangles.
 [[nodiscard]] std::optional<UnmatchedEdge> unmatched_edge(const Mesh& mesh);
+
+/// The same answer from the mesh already welded (`weld_vertices(mesh)`), for callers that go on
+/// to use the welded mesh (slicing): the mesh is welded once, not once per question.
+[[nodiscard]] std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld);
 
 }  // namespace contain::shapes
 

@@ -33,63 +33,32 @@ struct Crossing {
   Vec2 point;
 };
 
-// The rounded crossings of one plane by edge key: each edge's point is computed once, though
-// every triangle on the edge (two on a manifold) and both sides ask for it. Open addressing in a
-// power-of-two table with room for every crossing edge of the active triangles.
-class CrossingMemo {
- public:
-  explicit CrossingMemo(std::size_t triangles) {
-    std::size_t size = 16;
-    while (size < 4 * triangles)
-      size *= 2;
-    slots_.assign(size, Slot{});
-  }
-  template <class Compute>
-  Vec2 get(std::uint64_t key, Compute&& compute) {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = (key * 0x9E3779B97F4A7C15ULL) >> 20 & mask;; i = (i + 1) & mask) {
-      Slot& slot = slots_[i];
-      if (!slot.used) {
-        slot = {key, compute(), true};
-        return slot.point;
-      }
-      if (slot.key == key) return slot.point;
-    }
-  }
-
- private:
-  struct Slot {
-    std::uint64_t key = 0;
-    Vec2 point;
-    bool used = false;
-  };
-  std::vector<Slot> slots_;
-};
-
 // The crossing of the edge p-q (one endpoint above, one below on the chosen side) with z = c.
+// Each edge's point is computed once per plane (`memo`, by edge key), though every triangle on
+// the edge (two on a manifold) and both sides ask for it.
 Crossing crossing(const SweepMesh& mesh, std::int32_t p, std::int32_t q, double c,
-                  CrossingMemo& memo) {
+                  KeyTable<Vec2>& memo) {
   const Vec3& a = mesh.vertices[static_cast<std::size_t>(p)];
   const Vec3& b = mesh.vertices[static_cast<std::size_t>(q)];
-  const int k = mesh.frame.k;
-  if (coord(a, k) == c) return {vertex_key(p), project(a, mesh.frame)};
-  if (coord(b, k) == c) return {vertex_key(q), project(b, mesh.frame)};
+  if (a.z == c) return {vertex_key(p), {a.x, a.y}};
+  if (b.z == c) return {vertex_key(q), {b.x, b.y}};
   const std::uint64_t key = edge_key(p, q);
-  return {key, memo.get(key, [&] {
-            return project(predicates::rounded_axis_crossing(a, b, k, c), mesh.frame);
-          })};
+  const auto [point, fresh] = memo.insert(key);
+  if (fresh) {
+    const Vec3 x = predicates::rounded_axis_crossing(a, b, 2, c);
+    *point = {x.x, x.y};
+  }
+  return {key, *point};
 }
 
 // The segment of triangle t on one side (`on_plane_above`: where a vertex with z == c counts),
 // appended to out when the triangle has vertices on both sides.
-void add_segment(const SweepMesh& mesh, std::int32_t t, double c, bool on_plane_above,
-                 CrossingMemo& memo, std::vector<CrossingSegment>& out) {
+void add_segment(const SweepMesh& mesh, std::int32_t t, const double (&z)[3], double c,
+                 bool on_plane_above, KeyTable<Vec2>& memo, std::vector<CrossingSegment>& out) {
   const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
   bool above[3];
-  for (int i = 0; i < 3; ++i) {
-    const double z = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k);
-    above[i] = on_plane_above ? z >= c : z > c;
-  }
+  for (int i = 0; i < 3; ++i)
+    above[i] = on_plane_above ? z[i] >= c : z[i] > c;
   if (above[0] == above[1] && above[1] == above[2]) return;
   int down = -1;  // the edge i -> i+1 going from above to below
   int up = -1;
@@ -105,23 +74,37 @@ void add_segment(const SweepMesh& mesh, std::int32_t t, double c, bool on_plane_
 
 }  // namespace
 
-PlaneCurves crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active,
-                              double c) {
-  PlaneCurves out;
-  CrossingMemo memo(active.size());
-  out.above.reserve(active.size());
-  for (const std::int32_t t : active) {
+void crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
+                       KeyTable<Vec2>& memo, PlaneCurves& out) {
+  out.above.clear();
+  out.below.clear();
+  out.touches = false;
+  memo.reset(2 * active.size());
+  const auto heights = [&](std::int32_t t, double(&z)[3]) {
     const TriangleIndices& tri = mesh.triangles[static_cast<std::size_t>(t)];
-    for (int i = 0; i < 3 && !out.touches; ++i) {
-      out.touches = coord(mesh.vertices[static_cast<std::size_t>(tri[i])], mesh.frame.k) == c;
-    }
-    add_segment(mesh, t, c, false, memo, out.above);
+    for (int i = 0; i < 3; ++i)
+      z[i] = mesh.vertices[static_cast<std::size_t>(tri[i])].z;
+  };
+  for (const std::int32_t t : active) {
+    double z[3];
+    heights(t, z);
+    out.touches = out.touches || z[0] == c || z[1] == c || z[2] == c;
+    add_segment(mesh, t, z, c, false, memo, out.above);
   }
   if (out.touches) {
-    out.below.reserve(active.size());
-    for (const std::int32_t t : active)
-      add_segment(mesh, t, c, true, memo, out.below);
+    for (const std::int32_t t : active) {
+      double z[3];
+      heights(t, z);
+      add_segment(mesh, t, z, c, true, memo, out.below);
+    }
   }
+}
+
+PlaneCurves crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active,
+                              double c) {
+  KeyTable<Vec2> memo;
+  PlaneCurves out;
+  crossing_segments(mesh, active, c, memo, out);
   return out;
 }
 

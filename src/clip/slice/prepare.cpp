@@ -15,19 +15,24 @@ Frame frame_of(Axis axis) {
 }
 
 SweepMesh prepare(const Mesh& mesh, const Frame& frame) {
-  WeldResult weld = weld_vertices(mesh);
+  return prepare_welded(weld_vertices(mesh).mesh, frame);
+}
+
+SweepMesh prepare_welded(Mesh welded, const Frame& frame) {
   SweepMesh out;
   out.frame = frame;
-  out.vertices = std::move(weld.mesh.vertices);
-  out.triangles = std::move(weld.mesh.triangles);
+  out.vertices.reserve(welded.vertices.size());
+  for (const Vec3& p : welded.vertices)
+    out.vertices.push_back({coord(p, frame.u), coord(p, frame.v), coord(p, frame.k)});
+  out.triangles = std::move(welded.triangles);
   const std::size_t n = out.triangles.size();
   out.low.resize(n);
   out.high.resize(n);
   for (std::size_t t = 0; t < n; ++t) {
     const TriangleIndices& tri = out.triangles[t];
-    const double a = coord(out.vertices[static_cast<std::size_t>(tri[0])], frame.k);
-    const double b = coord(out.vertices[static_cast<std::size_t>(tri[1])], frame.k);
-    const double c = coord(out.vertices[static_cast<std::size_t>(tri[2])], frame.k);
+    const double a = out.vertices[static_cast<std::size_t>(tri[0])].z;
+    const double b = out.vertices[static_cast<std::size_t>(tri[1])].z;
+    const double c = out.vertices[static_cast<std::size_t>(tri[2])].z;
     out.low[t] = std::min({a, b, c});
     out.high[t] = std::max({a, b, c});
     // A triangle flat along the axis never crosses a plane of the sweep: in its own plane it

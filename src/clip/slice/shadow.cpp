@@ -7,6 +7,12 @@
 // numbers is positive. Inner edges, shared by two such triangles in opposite directions, cancel
 // before the 2D engine sees them; what is left is balanced at every point and chains into
 // closed paths (rings.cpp), about the silhouette's size rather than the mesh's.
+//
+// An open mesh (a surface: terrain, a sheet, a box without its lid) bounds no solid, but the
+// union of its projected triangles is as well defined: every triangle counts, each turned
+// counter-clockwise, so the sum of winding numbers counts the triangles over a point and is
+// positive exactly on the union. Neighbours on the same side of a fold still cancel their
+// shared edge; a triangle seen edge-on has no area and adds nothing.
 
 #include <algorithm>
 #include <utility>
@@ -14,6 +20,7 @@
 #include "clip/slice/stages.h"
 #include "contain/clip/polygon_boolean.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/shapes/mesh_closure.h"
 
 namespace contain::clip {
 
@@ -30,13 +37,16 @@ struct Edge {
   int forward = 0;  // +1 for lo -> hi, -1 for hi -> lo
 };
 
-std::vector<Edge> facing_edges(const Mesh& mesh, const slice::Frame& frame) {
+// The projected edges of the triangles facing +axis (closed), or of all, counter-clockwise.
+std::vector<Edge> facing_edges(const Mesh& mesh, const slice::Frame& frame, bool closed) {
   std::vector<Edge> edges;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle3 tri = mesh.triangle(t);
-    const Vec2 p[3] = {slice::project(tri.a, frame), slice::project(tri.b, frame),
-                       slice::project(tri.c, frame)};
-    if (predicates::orient2d(p[0], p[1], p[2]) != Sign::positive) continue;
+    Vec2 p[3] = {slice::project(tri.a, frame), slice::project(tri.b, frame),
+                 slice::project(tri.c, frame)};
+    const Sign turn = predicates::orient2d(p[0], p[1], p[2]);
+    if (turn == Sign::zero || (closed && turn == Sign::negative)) continue;
+    if (turn == Sign::negative) std::swap(p[1], p[2]);
     for (int i = 0; i < 3; ++i) {
       const Vec2 a = p[i];
       const Vec2 b = p[(i + 1) % 3];
@@ -84,9 +94,10 @@ std::vector<slice::CrossingSegment> net_segments(std::vector<Edge> edges) {
 }  // namespace
 
 Result<MultiPolygon> shadow(const Mesh& mesh, const SliceOptions& options) {
-  if (Status closed = slice::require_closed(mesh); !closed) return closed.error();
+  const bool closed = !unmatched_edge(mesh).has_value();
   const slice::Frame frame = slice::frame_of(options.axis);
-  const std::vector<Ring> rings = slice::chain_rings(net_segments(facing_edges(mesh, frame)));
+  const std::vector<Ring> rings =
+      slice::chain_rings(net_segments(facing_edges(mesh, frame, closed)));
   return polygon_boolean(rings, {}, {.op = Op::union_, .fill = Fill::positive});
 }
 

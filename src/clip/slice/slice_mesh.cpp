@@ -8,6 +8,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "clip/slice/stages.h"
 #include "contain/shapes/mesh_closure.h"
@@ -27,8 +28,8 @@ std::string point_text(Vec3 p) {
 namespace slice {
 
 // An open mesh has no winding number off its surface: refused, naming one unbalanced edge.
-Status require_closed(const Mesh& mesh) {
-  const std::optional<UnmatchedEdge> edge = unmatched_edge(mesh);
+Status require_closed(const WeldResult& weld) {
+  const std::optional<UnmatchedEdge> edge = unmatched_edge(weld);
   if (!edge) return Ok{};
   return Error{ErrorKind::degenerate, "the mesh is not closed: the edge " + point_text(edge->from) +
                                           " -> " + point_text(edge->to) + " of triangle " +
@@ -47,8 +48,10 @@ Result<std::vector<Section>> slice_mesh(const Mesh& mesh, std::span<const double
                    "plane value " + std::to_string(i) + " is not a finite number"};
     }
   }
-  if (Status closed = slice::require_closed(mesh); !closed) return closed.error();
-  const slice::SweepMesh prepared = slice::prepare(mesh, slice::frame_of(options.axis));
+  WeldResult weld = weld_vertices(mesh);
+  if (Status closed = slice::require_closed(weld); !closed) return closed.error();
+  const slice::SweepMesh prepared =
+      slice::prepare_welded(std::move(weld.mesh), slice::frame_of(options.axis));
   std::vector<std::size_t> order(values.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),

@@ -5,13 +5,17 @@
 // paths through shared keys), provenance.cpp (the triangle under each output edge), sweep.cpp
 // (planes in sorted order, the active triangles, one section each), shadow.cpp.
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "contain/clip/slice_mesh.h"
 #include "contain/core/result.h"
 #include "contain/shapes/mesh.h"
+#include "contain/shapes/mesh_validation.h"
 #include "contain/shapes/polygon.h"
 #include "contain/values/vec.h"
 
@@ -33,12 +37,14 @@ struct Frame {
 }
 
 /// Ok, or `ErrorKind::degenerate` naming one directed edge (by position) that occurs more often
-/// than its reverse: an open mesh has no winding number off its surface.
-[[nodiscard]] Status require_closed(const Mesh& mesh);
+/// than its reverse: an open mesh has no winding number off its surface. `weld` is
+/// `weld_vertices(mesh)`, which the sweep goes on to use (the mesh is welded once).
+[[nodiscard]] Status require_closed(const WeldResult& weld);
 
 /// The mesh as the sweep reads it: vertices welded by position (closedness and chaining judge
-/// vertices by position), triangles in file order, and the triangles that are not flat along
-/// the axis sorted by their lowest coordinate (then index).
+/// vertices by position), each as its coordinates (u, v, axis) in x, y, z, so that the sweep
+/// reads heights and section coordinates without the frame; triangles in file order, and the
+/// triangles that are not flat along the axis sorted by their lowest coordinate (then index).
 struct SweepMesh {
   Frame frame;
   std::vector<Vec3> vertices;
@@ -46,7 +52,57 @@ struct SweepMesh {
   std::vector<double> low, high;     // per triangle, along the axis
   std::vector<std::int32_t> by_low;  // non-flat triangles, by low
 };
+[[nodiscard]] SweepMesh prepare_welded(Mesh welded, const Frame& frame);
+/// The same from a mesh not yet welded.
 [[nodiscard]] SweepMesh prepare(const Mesh& mesh, const Frame& frame);
+
+/// Open addressing from 64-bit keys to values, reused from plane to plane: `reset` empties it
+/// by a new stamp (no clearing, no allocation once grown) with room for `entries` keys at most
+/// half full.
+template <class V>
+class KeyTable {
+ public:
+  void reset(std::size_t entries) {
+    std::size_t size = 16;
+    while (size < 2 * entries)
+      size *= 2;
+    if (size > slots_.size() || stamp_ == std::numeric_limits<std::uint32_t>::max()) {
+      slots_.assign(std::max(size, slots_.size()), Slot{});
+      stamp_ = 0;
+    }
+    ++stamp_;
+  }
+  /// The value of key, or nullptr.
+  [[nodiscard]] V* find(std::uint64_t key) {
+    Slot& slot = slots_[probe(key)];
+    return slot.stamp == stamp_ ? &slot.value : nullptr;
+  }
+  /// The value of key and true when the key was absent (its value then default).
+  std::pair<V*, bool> insert(std::uint64_t key) {
+    Slot& slot = slots_[probe(key)];
+    if (slot.stamp == stamp_) return {&slot.value, false};
+    slot = {key, stamp_, V{}};
+    return {&slot.value, true};
+  }
+
+ private:
+  struct Slot {
+    std::uint64_t key = 0;
+    std::uint32_t stamp = 0;
+    V value{};
+  };
+  // The slot holding key, or the empty one where it would go.
+  [[nodiscard]] std::size_t probe(std::uint64_t key) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::uint64_t h = key * 0x9E3779B97F4A7C15ULL;
+    h ^= h >> 32;
+    for (std::size_t i = h & mask;; i = (i + 1) & mask) {
+      if (slots_[i].stamp != stamp_ || slots_[i].key == key) return i;
+    }
+  }
+  std::vector<Slot> slots_;
+  std::uint32_t stamp_ = 0;
+};
 
 /// One triangle's directed piece of a plane's curve: from the crossing of its edge going down
 /// to the crossing of its edge going up (so that the curve runs counter-clockwise around the
@@ -63,7 +119,7 @@ struct CrossingSegment {
 /// The curves of a plane: `above` for the plane just above c (a vertex on the plane counts
 /// below it), `below` for the plane just below (a vertex on it counts above). `touches` is
 /// false when no vertex of the active triangles lies on the plane; `below` is then left empty,
-/// being equal to `above`. `active`: triangle indices in increasing order.
+/// being equal to `above`. The segments come in the order of `active`.
 struct PlaneCurves {
   std::vector<CrossingSegment> above;
   std::vector<CrossingSegment> below;
@@ -71,15 +127,43 @@ struct PlaneCurves {
 };
 [[nodiscard]] PlaneCurves crossing_segments(const SweepMesh& mesh,
                                             std::span<const std::int32_t> active, double c);
+/// The same into `out` (its vectors reused), each crossing computed once through `memo`.
+void crossing_segments(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
+                       KeyTable<Vec2>& memo, PlaneCurves& out);
+
+/// One closed walk of chain_rings: `size` segments from `begin` in ChainScratch::walk, `first`
+/// the position of its least from_key, `least`.
+struct ChainCycle {
+  std::uint64_t least = 0;
+  std::size_t begin = 0;
+  std::size_t size = 0;
+  std::size_t first = 0;
+};
+
+/// The buffers of chain_rings, reused from plane to plane.
+struct ChainScratch {
+  KeyTable<std::int32_t> leaving;  // from_key -> the one segment leaving it
+  std::vector<char> used;
+  std::vector<std::int32_t> walk;  // the segments of the closed walks, one after another
+  std::vector<ChainCycle> cycles;
+  std::vector<std::int32_t> rotated;  // one walk from its least key
+  std::vector<std::int32_t> by_from;  // the general case: segments by (from_key, triangle)
+  std::vector<std::size_t> cursor;
+};
 
 /// Closed paths through the segments, joined where one's to_key is another's from_key. The
 /// segments of a closed mesh balance at every key, so every walk closes; zero-length pieces
-/// (from_key == to_key) are left out, and so are paths of fewer than 3 points. Deterministic for
-/// a given segment order. `triangles`, when given, receives per ring the triangle of the segment
-/// each edge (point k to k + 1) comes from.
+/// (from_key == to_key) are left out, and so are paths of fewer than 3 points. The walks are
+/// those of the segments in order of (from_key, triangle), taking at each key the first unused
+/// segment leaving it in that order (input order among equal pairs): so the answer does not
+/// depend on the order of segments of distinct triangles. `triangles`, when given, receives per
+/// ring the triangle of the segment each edge (point k to k + 1) comes from.
 [[nodiscard]] std::vector<Ring> chain_rings(
     std::span<const CrossingSegment> segments,
     std::vector<std::vector<std::int32_t>>* triangles = nullptr);
+[[nodiscard]] std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments,
+                                            std::vector<std::vector<std::int32_t>>* triangles,
+                                            ChainScratch& scratch);
 
 /// The section of a plane through no vertex when the chained rings are already the answer:
 /// every ring proven simple and counter-clockwise (star-shaped about the mean of its vertices,
@@ -99,9 +183,18 @@ struct PlaneCurves {
 [[nodiscard]] std::vector<std::vector<std::int32_t>> edge_triangles(
     const MultiPolygon& region, std::span<const CrossingSegment> segments);
 
-/// The section at c from the active triangles (increasing indices).
+/// What one thread of the sweep reuses from plane to plane.
+struct SweepScratch {
+  std::vector<std::int32_t> active;
+  KeyTable<Vec2> memo;
+  PlaneCurves curves;
+  std::vector<CrossingSegment> both;
+  ChainScratch chain;
+};
+
+/// The section at c from the active triangles (in any order: the answer does not depend on it).
 [[nodiscard]] Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active,
-                                 double c);
+                                 double c, SweepScratch& scratch);
 
 /// Sections of the planes values[order[i]] for i in [begin, end), `order` sorting the values
 /// increasingly: one sweep with an active set, each answer written to out[order[i]].

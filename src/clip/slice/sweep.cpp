@@ -8,24 +8,27 @@
 
 namespace contain::clip::slice {
 
-Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, double c) {
-  const PlaneCurves curves = crossing_segments(mesh, active, c);
+Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
+                   SweepScratch& scratch) {
+  PlaneCurves& curves = scratch.curves;
+  crossing_segments(mesh, active, c, scratch.memo, curves);
   Section out;
   out.value = c;
   if (!curves.touches) {
     // No vertex on the plane: both sides have the same curve, whose positive winding numbers
     // are the section (rule slice-two-sides).
     std::vector<std::vector<std::int32_t>> under;
-    std::vector<Ring> above = chain_rings(curves.above, &under);
+    std::vector<Ring> above = chain_rings(curves.above, &under, scratch.chain);
     if (simple_section(above, under, curves.above.size(), out)) return out;
     out.region = polygon_boolean(above, {}, {.op = Op::union_, .fill = Fill::positive});
     out.triangles = edge_triangles(out.region, curves.above);
     return out;
   }
-  const std::vector<Ring> above = chain_rings(curves.above);
-  const std::vector<Ring> below = chain_rings(curves.below);
+  const std::vector<Ring> above = chain_rings(curves.above, nullptr, scratch.chain);
+  const std::vector<Ring> below = chain_rings(curves.below, nullptr, scratch.chain);
   out.region = polygon_boolean(above, below, {.op = Op::intersection, .fill = Fill::positive});
-  std::vector<CrossingSegment> both = curves.above;
+  std::vector<CrossingSegment>& both = scratch.both;
+  both.assign(curves.above.begin(), curves.above.end());
   both.insert(both.end(), curves.below.begin(), curves.below.end());
   out.triangles = edge_triangles(out.region, both);
   return out;
@@ -34,8 +37,8 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
 void sweep(const SweepMesh& mesh, std::span<const double> values,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
            std::span<Section> out) {
-  std::vector<std::int32_t> active;
-  std::vector<std::int32_t> by_index;
+  SweepScratch scratch;
+  std::vector<std::int32_t>& active = scratch.active;
   std::size_t next = 0;  // the first triangle of by_low not yet active
   for (std::size_t i = begin; i < end; ++i) {
     const double c = values[order[i]];
@@ -43,13 +46,12 @@ void sweep(const SweepMesh& mesh, std::span<const double> values,
          ++next) {
       active.push_back(mesh.by_low[next]);
     }
-    // The planes increase: a triangle wholly below this one stays out of every later one.
+    // The planes increase: a triangle wholly below this one stays out of every later one. The
+    // order of `active` then depends on where this thread's run of planes began, but no answer
+    // depends on it (chain_rings, edge_triangles).
     std::erase_if(active,
                   [&](std::int32_t t) { return mesh.high[static_cast<std::size_t>(t)] < c; });
-    // File order, so that the section does not depend on how the planes were split over threads.
-    by_index = active;
-    std::sort(by_index.begin(), by_index.end());
-    out[order[i]] = section_at(mesh, by_index, c);
+    out[order[i]] = section_at(mesh, active, c, scratch);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "clip/solid/exact_point.h"
 
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/rounded_crossing.h"
 
 #include <algorithm>
 #include <bit>
@@ -14,6 +15,9 @@
 #include <compare>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <utility>
 
 namespace contain::clip::solid {
 namespace {
@@ -88,16 +92,18 @@ Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
   return {down(q - r), up(q + r)};
 }
 
-ExactPoint with_bounds(ExactPoint p) {
+ExactPoint with_bounds(Homogeneous h) {
+  ExactPoint p;
   for (std::size_t i = 0; i < 3; ++i) {
-    const Interval c = quotient_interval(p.x[i], p.w);
+    const Interval c = quotient_interval(h.x[i], h.w);
     p.lo[i] = c.lo;
     p.hi[i] = c.hi;
   }
+  p.exact = std::make_shared<const Homogeneous>(std::move(h));
   return p;
 }
 
-ExactPoint normalized(ExactPoint p) {
+ExactPoint normalized(Homogeneous p) {
   if (p.w.sign() == Sign::negative) {
     for (BigFloat& c : p.x)
       c = -c;
@@ -106,13 +112,48 @@ ExactPoint normalized(ExactPoint p) {
   return with_bounds(std::move(p));
 }
 
-// p with its big numbers: p itself, or for a point of doubles (which stores none: most input
-// vertices never reach the big numbers) `scratch` filled from v.
-const ExactPoint& full(const ExactPoint& p, ExactPoint& scratch) {
-  if (!p.plain) return p;
+// The big numbers of a crossing: p + t (q - p) with t = dp / (dp - dq), dx = n . (x - a), as
+// (p dq - q dp) / (dq - dp).
+void crossing_numbers(const Crossing& k, Homogeneous& out) {
+  const BigVec3 bp = predicates::to_big(k.p), bq = predicates::to_big(k.q);
+  const BigVec3 ba = predicates::to_big(k.a);
+  const BigVec3 n = predicates::cross(predicates::to_big(k.b) - ba, predicates::to_big(k.c) - ba);
+  const BigFloat dp = predicates::dot(n, bp - ba), dq = predicates::dot(n, bq - ba);
+  const BigVec3 num = dq * bp - dp * bq;
+  out.x = {num.x, num.y, num.z};
+  out.w = dq - dp;
+  if (out.w.sign() == Sign::negative) {
+    for (BigFloat& c : out.x)
+      c = -c;
+    out.w = -out.w;
+  }
+}
+
+// p with its big numbers: p itself, the crossing's (made once), or for a point of doubles
+// (which stores none: most input vertices never reach the big numbers) `scratch` filled from v.
+const Homogeneous& full(const ExactPoint& p, Homogeneous& scratch) {
+  if (p.crossing) {
+    if (!p.crossing->exact) {
+      auto numbers = std::make_shared<Homogeneous>();
+      crossing_numbers(*p.crossing, *numbers);
+      p.crossing->exact = std::move(numbers);
+    }
+    return *p.crossing->exact;
+  }
+  if (!p.plain) return *p.exact;
   scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
   scratch.w = BigFloat(1.0);
   return scratch;
+}
+
+// Both crossings of one segment (either direction) with the plane of one triangle (same
+// corners in the same order): the same point, with no arithmetic.
+bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
+  if (!a.crossing || !b.crossing) return false;
+  const Crossing& s = *a.crossing;
+  const Crossing& t = *b.crossing;
+  return s.a == t.a && s.b == t.b && s.c == t.c &&
+         ((s.p == t.p && s.q == t.q) || (s.p == t.q && s.q == t.p));
 }
 
 // The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
@@ -127,8 +168,8 @@ bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoin
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.
 std::array<BigFloat, 3> dropped(const ExactPoint& q, int axis) {
-  ExactPoint scratch;
-  const ExactPoint& p = full(q, scratch);
+  Homogeneous scratch;
+  const Homogeneous& p = full(q, scratch);
   return {p.x[static_cast<std::size_t>((axis + 1) % 3)],
           p.x[static_cast<std::size_t>((axis + 2) % 3)], p.w};
 }
@@ -174,10 +215,10 @@ double nearest_quotient(const BigFloat& x, const BigFloat& w) {
 
 // The exact tests behind the filters of same_point and compare_coordinate.
 bool same_exact(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   for (std::size_t i = 0; i < 3; ++i) {
     if (fa.x[i] * fb.w != fb.x[i] * fa.w) return false;
   }
@@ -185,21 +226,83 @@ bool same_exact(const ExactPoint& a, const ExactPoint& b) {
 }
 
 Sign compare_exact(const ExactPoint& a, const ExactPoint& b, std::size_t k) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   return (fa.x[k] * fb.w - fb.x[k] * fa.w).sign();
 }
 
+// The differences b - a and c - a of a triangle's corners, in doubles (rounded once each).
+std::array<Vec3, 2> edge_vectors(const std::array<Vec3, 3>& t) {
+  return {t[1] - t[0], t[2] - t[0]};
+}
+
+// Every non-zero component in [2^-200, 2^200]: products of four stay far from underflow and
+// overflow, so the a priori bound of `filtered_line_axis` holds.
+bool moderate(const std::array<Vec3, 2>& e) {
+  for (const Vec3 v : e) {
+    for (const double c : {v.x, v.y, v.z}) {
+      const double m = std::abs(c);
+      if (m != 0.0 && !(m >= 0x1p-200 && m <= 0x1p200)) return false;
+    }
+  }
+  return true;
+}
+
+// p x q, and the same on absolute values with every sign positive (the magnitude M of each
+// component's monomials).
+void cross_and_magnitude(Vec3 p, Vec3 q, Vec3& value, Vec3& magnitude) {
+  value = {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
+  const Vec3 ap{std::abs(p.x), std::abs(p.y), std::abs(p.z)};
+  const Vec3 aq{std::abs(q.x), std::abs(q.y), std::abs(q.z)};
+  magnitude = {ap.y * aq.z + ap.z * aq.y, ap.z * aq.x + ap.x * aq.z, ap.x * aq.y + ap.y * aq.x};
+}
+
+// c is a crossing of the segment between points of doubles a and b (either direction): it lies
+// on their line, so every projection of the three is collinear. The commonest exact zero of the
+// refinement (a crossing on the triangle edge it was made from), decided with no arithmetic.
+bool on_defining_line(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  if (!c.crossing || !a.plain || !b.plain) return false;
+  const Crossing& k = *c.crossing;
+  return (a.v == k.p && b.v == k.q) || (a.v == k.q && b.v == k.p);
+}
+
 }  // namespace
+
+// Each component of nt x nu is a polynomial of degree 4 in the rounded differences of the
+// corners, 5 roundings deep (difference, product, difference, product, difference), so (Higham,
+// "Accuracy and Stability of Numerical Algorithms", 3.1 and 3.3; no underflow or overflow in the
+// moderate range) its computed value is within gamma_5 M of the exact one, M the same expression
+// on absolute values, which 16 u m bounds (m: M computed, u = 2^-53). A computed m of 0 means
+// every monomial has an exactly zero factor: the component is exactly zero.
+std::optional<int> filtered_line_axis(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u) {
+  const std::array<Vec3, 2> et = edge_vectors(t), eu = edge_vectors(u);
+  if (!moderate(et) || !moderate(eu)) return std::nullopt;
+  Vec3 nt, mt, nu, mu, line, unused, m;
+  cross_and_magnitude(et[0], et[1], nt, mt);
+  cross_and_magnitude(eu[0], eu[1], nu, mu);
+  cross_and_magnitude(nt, nu, line, unused);
+  cross_and_magnitude(mt, mu, unused, m);
+  for (int k = 0; k < 3; ++k) {
+    const double value = coordinate(line, k), bound = coordinate(m, k);
+    if (std::abs(value) > 0x1p-49 * bound) return k;
+    if (bound != 0.0) return std::nullopt;
+  }
+  return std::nullopt;  // all three exactly zero: parallel planes, not this function's case
+}
 
 const BigFloat& component(const BigVec3& v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
 ExactPoint exact_point(Vec3 v) {
-  return {{}, BigFloat(), true, v, {v.x, v.y, v.z}, {v.x, v.y, v.z}};
+  ExactPoint p;
+  p.plain = true;
+  p.v = v;
+  p.lo = {v.x, v.y, v.z};
+  p.hi = p.lo;
+  return p;
 }
 
 BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
@@ -208,12 +311,16 @@ BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c) {
   return predicates::cross(ba, ca);
 }
 
-ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, const BigVec3& n) {
-  const BigVec3 bp = predicates::to_big(p), bq = predicates::to_big(q), ba = predicates::to_big(a);
-  const BigFloat dp = predicates::dot(n, bp - ba), dq = predicates::dot(n, bq - ba);
-  // p + t (q - p) with t = dp / (dp - dq): (p dq - q dp) / (dq - dp).
-  const BigVec3 num = dq * bp - dp * bq;
-  return normalized({{num.x, num.y, num.z}, dq - dp});
+ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  ExactPoint out;
+  out.v = predicates::rounded_plane_crossing(p, q, a, b, c);
+  // The exact coordinate is within half a step of its nearest double on either side.
+  for (std::size_t i = 0; i < 3; ++i) {
+    out.lo[i] = down(coordinate(out.v, static_cast<int>(i)));
+    out.hi[i] = up(coordinate(out.v, static_cast<int>(i)));
+  }
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  return out;
 }
 
 ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
@@ -225,7 +332,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
   const BigFloat& nk = component(n, axis);
   // Lift to the plane n . X = n . a: n_k X_k = (n . a) w - n_u u - n_v v.
   const BigFloat d = predicates::dot(n, predicates::to_big(a));
-  ExactPoint out;
+  Homogeneous out;
   out.x[static_cast<std::size_t>(iu)] = x[0] * nk;
   out.x[static_cast<std::size_t>(iv)] = x[1] * nk;
   out.x[static_cast<std::size_t>(axis)] =
@@ -236,6 +343,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
   if (a.plain && b.plain) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
+  if (same_crossing(a, b)) return true;
   for (std::size_t i = 0; i < 3; ++i) {
     if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
   }
@@ -260,6 +368,9 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
                                 {coordinate(b.v, u), coordinate(b.v, v)},
                                 {coordinate(c.v, u), coordinate(c.v, v)});
   }
+  if (on_defining_line(a, b, c) || on_defining_line(b, c, a) || on_defining_line(c, a, b)) {
+    return Sign::zero;
+  }
   if (Sign s = Sign::zero; filtered_orient2d(a, b, c, axis, s)) return s;
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
@@ -268,8 +379,8 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 }
 
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
-  ExactPoint sp;
-  const ExactPoint& fp = full(p, sp);
+  Homogeneous sp;
+  const Homogeneous& fp = full(p, sp);
   const BigVec3 ba = predicates::to_big(a);
   BigFloat s;
   for (int i = 0; i < 3; ++i) {
@@ -279,11 +390,11 @@ Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
 }
 
 ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
-  ExactPoint m;
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
+  Homogeneous m;
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * fb.w + fb.x[i] * fa.w;
   m.w = (fa.w * fb.w).scaled(1);
@@ -291,13 +402,13 @@ ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
 }
 
 ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
-  ExactPoint sc;
-  const ExactPoint& fc = full(c, sc);
-  ExactPoint m;
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
+  Homogeneous sc;
+  const Homogeneous& fc = full(c, sc);
+  Homogeneous m;
   const BigFloat bc = fb.w * fc.w, ac = fa.w * fc.w, ab = fa.w * fb.w;
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * bc + fb.x[i] * ac + fc.x[i] * ab;
@@ -306,9 +417,10 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 }
 
 Vec3 nearest_double(const ExactPoint& p) {
-  if (p.plain) return p.v;
-  return {nearest_quotient(p.x[0], p.w), nearest_quotient(p.x[1], p.w),
-          nearest_quotient(p.x[2], p.w)};
+  if (p.plain || p.crossing) return p.v;
+  const Homogeneous& h = *p.exact;
+  return {nearest_quotient(h.x[0], h.w), nearest_quotient(h.x[1], h.w),
+          nearest_quotient(h.x[2], h.w)};
 }
 
 }  // namespace contain::clip::solid
@@ -316,10 +428,10 @@ Vec3 nearest_double(const ExactPoint& p) {
 namespace contain::clip::solid {
 
 BigVec3 direction(const ExactPoint& a, const ExactPoint& b) {
-  ExactPoint sa;
-  const ExactPoint& fa = full(a, sa);
-  ExactPoint sb;
-  const ExactPoint& fb = full(b, sb);
+  Homogeneous sa;
+  const Homogeneous& fa = full(a, sa);
+  Homogeneous sb;
+  const Homogeneous& fb = full(b, sb);
   return {fb.x[0] * fa.w - fa.x[0] * fb.w, fb.x[1] * fa.w - fa.x[1] * fb.w,
           fb.x[2] * fa.w - fa.x[2] * fb.w};
 }

@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <optional>
 
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/sign.h"
@@ -17,19 +19,35 @@ namespace contain::clip::solid {
 using predicates::BigFloat;
 using predicates::BigVec3;
 
-/// (x / w, y / w, z / w) with w > 0. A point of doubles (`exact_point(v)`) is only v (x and w
-/// are left zero, made from v when a predicate needs them), so that predicates on points of
-/// doubles only take the filtered predicates of `predicates` and most input vertices never
-/// allocate a big number. Every
-/// point also keeps an enclosure of its coordinates, lo[i] <= x[i] / w <= hi[i] (lo = hi = v for
-/// a point of doubles): the floating-point filter that decides most predicates on implicit
-/// points without the big numbers (rule solid-exact-points).
-struct ExactPoint {
+/// Homogeneous coordinates (X, Y, Z, W) of a point, W > 0, exact.
+struct Homogeneous {
   std::array<BigFloat, 3> x;
   BigFloat w;
-  bool plain = false;  ///< the point is `v`, doubles (x and w not stored)
-  Vec3 v{};
+};
+
+/// Where the segment p q crosses the plane of the triangle a b c: the doubles that define a
+/// crossing point, kept instead of its big numbers, which are made from them when a predicate
+/// first needs them and kept in `exact` (not thread-safe: the engine runs on one thread).
+struct Crossing {
+  Vec3 p, q, a, b, c;
+  mutable std::shared_ptr<const Homogeneous> exact;
+};
+
+/// (x / w, y / w, z / w) with w > 0, the big numbers shared (immutable) by the copies of a point.
+/// A point of doubles (`exact_point(v)`) is only v (no big numbers: made from v when a predicate
+/// needs them), so that predicates on points of doubles only take the filtered predicates of
+/// `predicates` and most input vertices never allocate a big number. A crossing (`line_plane`)
+/// is likewise only its `Crossing` and its nearest doubles v, rounded by a filtered predicate:
+/// most crossings never allocate a big number either. Every point also keeps an enclosure of its
+/// coordinates, lo[i] <= x[i] / w <= hi[i] (lo = hi = v for a point of doubles; v's neighbours
+/// for a crossing): the floating-point filter that decides most predicates on implicit points
+/// without the big numbers (rule solid-exact-points).
+struct ExactPoint {
+  std::shared_ptr<const Homogeneous> exact;  ///< set for the other constructed points
+  bool plain = false;                        ///< the point is `v`, doubles
+  Vec3 v{};  ///< the point (plain) or its nearest doubles (a crossing)
   std::array<double, 3> lo{}, hi{};
+  std::shared_ptr<const Crossing> crossing;  ///< set for a crossing
 };
 
 /// The double point v.
@@ -38,15 +56,21 @@ struct ExactPoint {
 /// The exact normal (b - a) x (c - a) of a triangle of doubles.
 [[nodiscard]] BigVec3 exact_normal(Vec3 a, Vec3 b, Vec3 c);
 
-/// Where the segment p q meets the plane through a with normal n. Precondition: p and q lie
-/// strictly on opposite sides of the plane.
-[[nodiscard]] ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, const BigVec3& n);
+/// Where the segment p q meets the plane of the triangle a b c. Precondition: a, b, c not
+/// collinear; p and q lie strictly on opposite sides of the plane.
+[[nodiscard]] ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c);
 
 /// Where the lines p1 p2 and q1 q2, all four in the plane through a with normal n, cross.
 /// `axis` is dropped to project (n[axis] != 0). Precondition: the projected lines cross in one
 /// point.
 [[nodiscard]] ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
                                    const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis);
+
+/// The first axis k in which the direction nt x nu of the line where the planes of triangles t
+/// and u meet is non-zero (nt = (t1 - t0) x (t2 - t0), nu likewise), decided by a filter in
+/// doubles; nothing where the filter cannot decide (the exact normals must).
+[[nodiscard]] std::optional<int> filtered_line_axis(const std::array<Vec3, 3>& t,
+                                                    const std::array<Vec3, 3>& u);
 
 /// Component i (0, 1, 2) of v.
 [[nodiscard]] const BigFloat& component(const BigVec3& v, int i);

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -76,7 +77,7 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
     if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
       ends.push_back(
           store.add(line_plane(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
-                               soup.normal(static_cast<std::size_t>(u)))));
+                               corner(soup, u, 1), corner(soup, u, 2))));
     }
   }
   return ends;
@@ -127,6 +128,22 @@ bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
   return direction == 1 ? agree == Sign::positive : agree == Sign::negative;
 }
 
+// The first axis in which the direction nt x nu of the planes' line is non-zero (nt, nu the
+// normals (b - a) x (c - a), the triangles in different planes): the filter of `line_axis`, the
+// exact normals where it does not decide.
+int line_axis(const Soup& soup, std::int32_t t, std::int32_t u) {
+  const std::optional<int> k =
+      filtered_line_axis({corner(soup, t, 0), corner(soup, t, 1), corner(soup, t, 2)},
+                         {corner(soup, u, 0), corner(soup, u, 1), corner(soup, u, 2)});
+  if (k) return *k;
+  const BigVec3 line = predicates::cross(soup.normal(static_cast<std::size_t>(t)),
+                                         soup.normal(static_cast<std::size_t>(u)));
+  int axis = 0;
+  while (component(line, axis).is_zero())
+    ++axis;
+  return axis;
+}
+
 void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u,
                   std::vector<TriangleWork>& work) {
   for (const auto& [to, from] : {std::pair{t, u}, std::pair{u, t}}) {
@@ -162,11 +179,7 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
   }
   const std::array<Sign, 3> st = sides(soup, t, u);
   if (one_side(st, shared)) return;
-  const BigVec3 line = predicates::cross(soup.normal(static_cast<std::size_t>(t)),
-                                         soup.normal(static_cast<std::size_t>(u)));
-  int k = 0;
-  while (component(line, k).is_zero())
-    ++k;
+  const int k = line_axis(soup, t, u);
   const std::array<std::int32_t, 2> a = ordered(plane_cut(soup, t, u, st, store), store, k);
   const std::array<std::int32_t, 2> b = ordered(plane_cut(soup, u, t, su, store), store, k);
   const std::int32_t lo =

@@ -95,17 +95,33 @@ std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
     bool forward;  // a < b in the face's direction
     bool operator<(const Use& o) const { return key < o.key || (key == o.key && face < o.face); }
   };
-  std::vector<Use> uses;
-  uses.reserve(3 * r.faces.size());
+  // Sorted by (edge, face): a counting sort by the edge's lower point, then each point's few
+  // uses sorted (one sort of all uses was a third of the labels' time).
+  std::size_t points = 0;
+  for (const RefinedFace& face : r.faces) {
+    for (const std::int32_t p : face.v)
+      points = std::max(points, static_cast<std::size_t>(p) + 1);
+  }
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const RefinedFace& face : r.faces) {
+    for (std::size_t k = 0; k < 3; ++k)
+      ++start[static_cast<std::size_t>(std::min(face.v[k], face.v[(k + 1) % 3])) + 1];
+  }
+  for (std::size_t i = 1; i < start.size(); ++i)
+    start[i] += start[i - 1];
+  std::vector<Use> uses(start.back());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < r.faces.size(); ++f) {
     const auto& v = r.faces[f].v;
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = v[static_cast<std::size_t>(k)],
-                         b = v[static_cast<std::size_t>((k + 1) % 3)];
-      uses.push_back({edge_key(a, b), f, a < b});
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t a = v[k], b = v[(k + 1) % 3];
+      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {edge_key(a, b), f, a < b};
     }
   }
-  std::sort(uses.begin(), uses.end());
+  for (std::size_t i = 0; i + 1 < start.size(); ++i) {
+    std::sort(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
+              uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
+  }
   UnionFind<std::size_t> sets(r.faces.size());
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;

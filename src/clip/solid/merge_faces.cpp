@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -41,6 +42,8 @@ bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
   const TriangleIndices& b = soup.triangles[static_cast<std::size_t>(u)];
   const auto at = [&](std::int32_t i) { return soup.vertices[static_cast<std::size_t>(i)]; };
   for (std::size_t k = 0; k < 3; ++k) {
+    // A shared corner is on the plane: no test (an exact zero is the filter's slowest case).
+    if (b[k] == a[0] || b[k] == a[1] || b[k] == a[2]) continue;
     if (predicates::orient3d(at(a[0]), at(a[1]), at(a[2]), at(b[k])) != Sign::zero) return false;
   }
   return true;
@@ -50,19 +53,38 @@ bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
 // directions, of one plane, lying on the two sides of the edge.
 UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
                                const PointStore& store) {
-  std::unordered_map<std::uint64_t, std::vector<std::pair<std::size_t, int>>> uses;
+  // Every edge use as (edge, face, corner), sorted: one flat array, not a map of vectors (one
+  // allocation per edge was a tenth of the boolean).
+  struct Use {
+    std::uint64_t key;
+    std::size_t face;
+    int k;
+    bool operator<(const Use& o) const {
+      return key != o.key ? key < o.key : (face != o.face ? face < o.face : k < o.k);
+    }
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * boundary.faces.size());
   for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
+    const Face& v = boundary.faces[f];
     for (int k = 0; k < 3; ++k) {
-      const Face& v = boundary.faces[f];
-      uses[edge_key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % 3)])]
-          .emplace_back(f, k);
+      uses.push_back(
+          {edge_key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % 3)]), f,
+           k});
     }
   }
+  std::sort(uses.begin(), uses.end());
   UnionFind<std::size_t> sets(boundary.faces.size());
-  for (const auto& [key, use] : uses) {
-    if (use.size() != 2) continue;
-    const auto [f, i] = use[0];
-    const auto [g, j] = use[1];
+  for (std::size_t u = 0; u < uses.size();) {
+    std::size_t end = u + 1;
+    while (end < uses.size() && uses[end].key == uses[u].key)
+      ++end;
+    const std::size_t count = end - u;
+    const std::size_t first = u;
+    u = end;
+    if (count != 2) continue;
+    const std::size_t f = uses[first].face, g = uses[first + 1].face;
+    const int i = uses[first].k, j = uses[first + 1].k;
     const Face& a = boundary.faces[f];
     const Face& b = boundary.faces[g];
     const std::int32_t p = a[static_cast<std::size_t>(i)],
@@ -167,66 +189,104 @@ std::optional<std::vector<Face>> retriangulated(const Soup& soup, const Boundary
   return inside(tris, outline, positive, corners);
 }
 
+// The faces of one region (of `leader`, more than one face or a face with a repeated corner)
+// appended to `out`: merged when it holds points no other region uses, as they are otherwise.
+void merge_region(const Soup& soup, const BoundaryFaces& boundary,
+                  std::span<const std::size_t> region, std::size_t leader,
+                  const std::vector<std::size_t>& owner, PointStore& store, Faces& out) {
+  const std::vector<std::size_t> faces(region.begin(), region.end());
+  std::unordered_set<std::uint64_t> directed;
+  for (const std::size_t f : faces) {
+    const Face& v = boundary.faces[f];
+    for (std::size_t k = 0; k < 3; ++k)
+      directed.insert(directed_key(v[k], v[(k + 1) % 3]));
+  }
+  std::vector<std::uint64_t> outline;  // directed edges whose reverse is in no region face
+  std::unordered_set<std::int32_t> on_outline;
+  for (const std::uint64_t e : directed) {
+    const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
+    if (directed.contains(directed_key(b, a))) continue;
+    outline.push_back(e);
+    on_outline.insert(a);
+    on_outline.insert(b);
+  }
+  std::sort(outline.begin(), outline.end());
+  std::vector<std::int32_t> keep;
+  bool drops = false;
+  for (const std::size_t f : faces) {
+    for (const std::int32_t p : boundary.faces[f]) {
+      if (on_outline.contains(p) || owner[static_cast<std::size_t>(p)] != leader) {
+        keep.push_back(p);
+      } else {
+        drops = true;
+      }
+    }
+  }
+  std::sort(keep.begin(), keep.end());
+  keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+  std::optional<std::vector<Face>> merged;
+  if (drops) merged = retriangulated(soup, boundary, faces, keep, outline, store);
+  if (merged) {
+    out.insert(out.end(), merged->begin(), merged->end());
+  } else {
+    for (const std::size_t f : faces)
+      out.push_back(boundary.faces[f]);
+  }
+}
+
+// The region of each point (by point number), or `shared` when faces of several regions hold
+// it; `shared` too for points no face holds.
+std::vector<std::size_t> point_owners(const BoundaryFaces& boundary,
+                                      const std::vector<std::size_t>& leader, std::size_t points,
+                                      std::size_t shared) {
+  const std::size_t none = shared - 1;
+  std::vector<std::size_t> owner(points, none);
+  for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
+    for (const std::int32_t p : boundary.faces[f]) {
+      std::size_t& o = owner[static_cast<std::size_t>(p)];
+      o = (o == none || o == leader[f]) ? leader[f] : shared;
+    }
+  }
+  return owner;
+}
+
+bool distinct_corners(const Face& v) {
+  return v[0] != v[1] && v[1] != v[2] && v[2] != v[0];
+}
+
 }  // namespace
 
 Faces merge_coplanar(const Soup& soup, const BoundaryFaces& boundary, PointStore& store) {
   UnionFind<std::size_t> sets = regions(soup, boundary, store);
-  std::unordered_map<std::size_t, std::vector<std::size_t>> members;
-  for (std::size_t f = 0; f < boundary.faces.size(); ++f)
-    members[sets.find(f)].push_back(f);
-  // The region of each point, or none when faces of several regions hold it.
-  constexpr std::size_t shared = std::numeric_limits<std::size_t>::max();
-  std::unordered_map<std::int32_t, std::size_t> owner;
-  for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
-    for (const std::int32_t p : boundary.faces[f]) {
-      const auto [it, fresh] = owner.emplace(p, sets.find(f));
-      if (!fresh && it->second != sets.find(f)) it->second = shared;
-    }
+  const std::size_t n = boundary.faces.size();
+  // Each region's faces in ascending order, the regions by their leaders (their smallest face):
+  // flat arrays by counting, as deterministic as the order of the leaders.
+  std::vector<std::size_t> leader(n), start(n + 1, 0);
+  bool merges = false;
+  for (std::size_t f = 0; f < n; ++f) {
+    leader[f] = sets.find(f);
+    ++start[leader[f] + 1];
+    merges = merges || leader[f] != f || !distinct_corners(boundary.faces[f]);
   }
+  for (std::size_t f = 0; f < n; ++f)
+    start[f + 1] += start[f];
+  std::vector<std::size_t> members(n), fill(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < n; ++f)
+    members[fill[leader[f]]++] = f;
+  constexpr std::size_t shared = std::numeric_limits<std::size_t>::max();
+  // Only regions of several faces read the owners: most outputs (no coplanar faces) skip them.
+  const std::vector<std::size_t> owner =
+      merges ? point_owners(boundary, leader, store.size(), shared) : std::vector<std::size_t>{};
   Faces out;
-  std::vector<std::size_t> leaders;
-  for (const auto& [leader, faces] : members)
-    leaders.push_back(leader);
-  std::sort(leaders.begin(), leaders.end());  // deterministic output order
-  for (const std::size_t leader : leaders) {
-    const std::vector<std::size_t>& faces = members.at(leader);
-    std::unordered_set<std::uint64_t> directed;
-    for (const std::size_t f : faces) {
-      const Face& v = boundary.faces[f];
-      for (std::size_t k = 0; k < 3; ++k)
-        directed.insert(directed_key(v[k], v[(k + 1) % 3]));
+  out.reserve(n);
+  for (std::size_t l = 0; l < n; ++l) {
+    const std::size_t count = start[l + 1] - start[l];
+    if (count == 0) continue;
+    if (count == 1 && distinct_corners(boundary.faces[l])) {
+      out.push_back(boundary.faces[l]);  // its own region: every corner on its outline
+      continue;
     }
-    std::vector<std::uint64_t> outline;  // directed edges whose reverse is in no region face
-    std::unordered_set<std::int32_t> on_outline;
-    for (const std::uint64_t e : directed) {
-      const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
-      if (directed.contains(directed_key(b, a))) continue;
-      outline.push_back(e);
-      on_outline.insert(a);
-      on_outline.insert(b);
-    }
-    std::sort(outline.begin(), outline.end());
-    std::vector<std::int32_t> keep;
-    bool drops = false;
-    for (const std::size_t f : faces) {
-      for (const std::int32_t p : boundary.faces[f]) {
-        if (on_outline.contains(p) || owner.at(p) != leader) {
-          keep.push_back(p);
-        } else {
-          drops = true;
-        }
-      }
-    }
-    std::sort(keep.begin(), keep.end());
-    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
-    std::optional<std::vector<Face>> merged;
-    if (drops) merged = retriangulated(soup, boundary, faces, keep, outline, store);
-    if (merged) {
-      out.insert(out.end(), merged->begin(), merged->end());
-    } else {
-      for (const std::size_t f : faces)
-        out.push_back(boundary.faces[f]);
-    }
+    merge_region(soup, boundary, std::span(members).subspan(start[l], count), l, owner, store, out);
   }
   return out;
 }

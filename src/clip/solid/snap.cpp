@@ -30,7 +30,9 @@
 
 #include "clip/solid/engine.h"
 #include "clip/solid/validate.h"
+#include "contain/bvh/bvh.h"
 #include "contain/core/union_find.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -120,30 +122,75 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
   return rep;
 }
 
-// The faces' mesh with points merged by `rep`, sheets kept apart.
-Mesh written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept, const Representative& rep,
-                  const PointStore& store) {
-  const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
+// A point written exactly where it is: a point of doubles, or an implicit point whose
+// enclosure is one double in every coordinate. Others count as rounded even when exact (safe:
+// their triangles are checked).
+bool written_exactly(const ExactPoint& p) {
+  return p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]);
+}
+
+// The mesh and which of its vertices are kept for check_written: the one point of the faces
+// merged into it, written exactly.
+struct Written {
   Mesh mesh;
-  for (const std::int32_t p : sheets.points)
-    mesh.vertices.push_back(store.rounded(p));
+  std::vector<bool> kept;
+};
+
+// The faces' mesh with points merged by `rep`, sheets kept apart.
+Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
+                     const Representative& rep, const PointStore& store) {
+  const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
+  std::unordered_map<std::int32_t, int> merged;  // points merged into each representative
+  for (const auto& [point, into] : rep)
+    merged[into] += written_exactly(store.point(point)) ? 1 : 2;
+  Written out;
+  for (const std::int32_t p : sheets.points) {
+    out.mesh.vertices.push_back(store.rounded(p));
+    out.kept.push_back(merged[p] == 1);
+  }
   for (const auto& t : sheets.faces)
-    mesh.triangles.push_back({t[0], t[1], t[2]});
-  return mesh;
+    out.mesh.triangles.push_back({t[0], t[1], t[2]});
+  return out;
 }
 
 // The merge level of each repair round: rounding alone first, then grids of 2^2 ... 2^20 ulps.
 constexpr std::array<int, 10> round_levels = {-1, -1, -1, 2, 5, 8, 11, 14, 17, 20};
 
+// The soup with a hierarchy over the triangles of `region` only (the others get empty boxes):
+// the pair stage on it tests just their pairs, with the soup's own vertex and triangle numbers.
+Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
+  Soup out;
+  out.vertices = soup.vertices;
+  out.triangles = soup.triangles;
+  out.input = soup.input;
+  out.degenerate = soup.degenerate;
+  out.inputs = soup.inputs;
+  out.boxes.assign(soup.boxes.size(), Box3{});
+  for (const std::int32_t t : region)
+    out.boxes[static_cast<std::size_t>(t)] = soup.boxes[static_cast<std::size_t>(t)];
+  out.tree = bvh::Bvh(out.boxes);
+  return out;
+}
+
 // The written mesh's own arrangement, exactly, kept as a union (the solid where its winding
-// number is positive) and written at merge `level`.
-Result<Mesh> resolved(const Mesh& mesh, int level, double scale) {
+// number is positive) and written at merge `level`. Only the pairs of triangles of `crossing`
+// (those of the pairs the check found meeting wrongly; every triangle after an edge failure)
+// are intersected: every other pair meets at shared corners or a shared edge, where the pair
+// stage finds nothing to add (coplanar neighbours that do not overlap give each other edges
+// that have no piece inside them), and zero-area triangles are never intersected, so the
+// arrangement is the one of all pairs, at the cost of the few (none when the check failed only
+// on zero-area triangles: the round then drops them, they bound nothing). The labels still cast
+// their rays through the whole mesh.
+Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
+                         double scale) {
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
   for (const Vec3 v : soup->vertices)
     (void)store.add(v);
-  const std::vector<TriangleWork> work = intersect_pairs(*soup, store);
+  const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
+                                             ? intersect_pairs(*soup, store)
+                                             : intersect_pairs(region_soup(*soup, crossing), store);
   const Refinement refinement = refine(*soup, work, store);
   const std::vector<FaceLabel> labels = label_faces(*soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(*soup, refinement, work, labels, store, Op::union_);
@@ -154,13 +201,15 @@ Result<Mesh> resolved(const Mesh& mesh, int level, double scale) {
 }  // namespace
 
 Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale) {
-  Mesh mesh = written_mesh(faces, representatives(faces, store, -1, scale), store);
-  Status valid = check_written(mesh);
+  Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
+  std::vector<std::int32_t> crossing;
+  Status valid = check_written(written.mesh, written.kept, &crossing);
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
-    Result<Mesh> next = resolved(mesh, round_levels[round], scale);
+    Result<Written> next = resolved(written.mesh, crossing, round_levels[round], scale);
     if (!next) return next.error();
-    mesh = std::move(*next);
-    valid = check_written(mesh);
+    written = std::move(*next);
+    crossing.clear();
+    valid = check_written(written.mesh, written.kept, &crossing);
   }
   if (!valid) {
     return Error{.kind = ErrorKind::degenerate,
@@ -168,7 +217,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
                             " rounds of snap rounding (points merged up to 2^20 ulps of the "
                             "largest coordinate) did not mend it"};
   }
-  return mesh;
+  return std::move(written.mesh);
 }
 
 }  // namespace contain::clip::solid

@@ -3,20 +3,42 @@
 // constraint between triangles in different planes is a meeting beyond their shared corners;
 // triangles in one plane are tested in 2D with exact orient2d (closed edges against closed
 // triangles, the edges through a shared corner left out, as collide::self_intersections does).
+//
+// Why the pairs of triangles with three kept corners need no test. The engine's exact result
+// is conforming: each input triangle is refined by a constrained triangulation holding every
+// intersection with every other triangle (the pair stage computes a pair's points and segment
+// once and gives them to both triangles; the refinement gives a point on an input edge to every
+// triangle on that edge), so two refined faces meet in a common vertex, a common edge or not at
+// all. The boundary faces are some of them; merge_coplanar re-triangulates a region of one
+// plane inside its own outline, keeping every outline point and every point another face uses,
+// which keeps that property; the sheets only renumber vertices. A written triangle whose three
+// corners are kept (each written exactly at its exact point, and no other point of the faces
+// written at that position) is such an exact face at its exact position, never dropped nor
+// cancelled by the merging of points (that needs a corner shared with another point). So two
+// such triangles meet at shared corners or a shared edge, and the pair test, which depends only
+// on the two triangles' positions, passes on them. Every other pair that meets holds a triangle
+// r with a corner not kept; the other's box meets r's box, so both are in the local soup (the
+// triangles whose boxes meet a box of such a triangle), welded by position as the full soup is,
+// and tested as the full check tests them. The same holds in each snap-rounding round: the
+// written mesh's own arrangement is exact and conforming in turn. The tests compare the
+// restricted check with the full one on random and degenerate meshes.
 
 #include "clip/solid/validate.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "contain/bvh/bvh.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/values/box.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -109,40 +131,162 @@ Status failure(const std::string& what) {
                .message = "the result rounded to doubles is not valid (" + what + ")"};
 }
 
+// Every directed edge once and its reverse once: the edges grouped by their first vertex (a
+// counting sort, each vertex's few ends sorted), then each reverse looked up in its group.
+bool edges_matched(const Mesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::size_t> start(n + 1, 0);
+  for (const TriangleIndices& t : mesh.triangles) {
+    for (const std::int32_t v : t) {
+      if (v < 0 || static_cast<std::size_t>(v) >= n) return false;
+      ++start[static_cast<std::size_t>(v) + 1];
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v)
+    start[v + 1] += start[v];
+  std::vector<std::int32_t> to(start[n]);
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const TriangleIndices& t : mesh.triangles) {
+    for (std::size_t k = 0; k < 3; ++k)
+      to[next[static_cast<std::size_t>(t[k])]++] = t[(k + 1) % 3];
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto first = to.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = to.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(first, last);
+    if (std::adjacent_find(first, last) != last) return false;  // an edge twice
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    for (std::size_t e = start[v]; e < start[v + 1]; ++e) {
+      const auto w = static_cast<std::size_t>(to[e]);
+      const auto first = to.begin() + static_cast<std::ptrdiff_t>(start[w]);
+      const auto last = to.begin() + static_cast<std::ptrdiff_t>(start[w + 1]);
+      if (!std::binary_search(first, last, static_cast<std::int32_t>(v))) return false;
+    }
+  }
+  return true;
+}
+
+// Zero area exactly when the three projections onto the coordinate planes have zero area.
+bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+}
+
+// The triangles whose boxes meet the box of a triangle of `rounded` (those included): every
+// triangle that can meet one of them. A hierarchy over the rounded triangles' boxes only, one
+// query per triangle.
+std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
+                                        const std::vector<std::int32_t>& rounded) {
+  if (rounded.size() == boxes.size()) return rounded;
+  std::vector<Box3> own;
+  own.reserve(rounded.size());
+  for (const std::int32_t t : rounded)
+    own.push_back(boxes[static_cast<std::size_t>(t)]);
+  const bvh::Bvh tree(own);
+  std::vector<std::int32_t> near;
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    const Box3& box = boxes[t];
+    if (!tree.bounds().overlaps(box)) continue;
+    const bvh::TraversalStats seen =
+        tree.traverse([&](const bvh::Node& node, std::int32_t) { return node.box.overlaps(box); },
+                      [&](std::int32_t i) {
+                        return own[static_cast<std::size_t>(i)].overlaps(box) ? bvh::Visit::stop
+                                                                              : bvh::Visit::proceed;
+                      });
+    if (seen.stopped) near.push_back(static_cast<std::int32_t>(t));
+  }
+  return near;
+}
+
+// The soup of the triangles `chosen` of the written mesh (none of zero area), welded by
+// position as the pair stage needs: sheets kept apart at one position share corners there.
+Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
+                const std::vector<Box3>& boxes) {
+  Soup soup;
+  soup.inputs = 1;
+  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
+  for (const std::int32_t t : chosen) {
+    TriangleIndices local{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec3 v = mesh.vertex(mesh.triangles[static_cast<std::size_t>(t)][k]);
+      const auto [it, fresh] =
+          welded.try_emplace(v, static_cast<std::int32_t>(soup.vertices.size()));
+      if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
+      local[k] = it->second;
+    }
+    soup.triangles.push_back(local);
+    soup.input.push_back(0);
+    soup.degenerate.push_back(false);  // zero-area triangles are never chosen
+    soup.boxes.push_back(boxes[static_cast<std::size_t>(t)]);
+  }
+  soup.tree = bvh::Bvh(soup.boxes);
+  return soup;
+}
 }  // namespace
 
 Status check_written(const Mesh& mesh) {
-  std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
-  for (const TriangleIndices& t : mesh.triangles) {
-    for (std::size_t k = 0; k < 3; ++k)
-      ++directed[{t[k], t[(k + 1) % 3]}];
+  return check_written(mesh, std::vector<bool>(mesh.vertices.size(), false));
+}
+
+Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
+                     std::vector<std::int32_t>* crossing) {
+  if (!edges_matched(mesh)) {
+    // No pair is known to be the cause: every triangle is the region to repair.
+    for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
+      crossing->push_back(static_cast<std::int32_t>(t));
+    return failure("an edge is not matched by exactly one opposite edge");
   }
-  for (const auto& [edge, count] : directed) {
-    const auto reverse = directed.find({edge.second, edge.first});
-    if (count != 1 || reverse == directed.end() || reverse->second != 1) {
-      return failure("an edge is not matched by exactly one opposite edge");
+  Status status = Ok{};
+  std::vector<Box3> boxes(mesh.triangles.size());  // empty for a zero-area triangle
+  std::vector<std::int32_t> rounded;               // triangles with a corner that is not kept
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const TriangleIndices& v = mesh.triangles[t];
+    const Vec3 a = mesh.vertex(v[0]), b = mesh.vertex(v[1]), c = mesh.vertex(v[2]);
+    if (zero_area(a, b, c)) {
+      if (crossing == nullptr) return failure("a triangle has zero area");
+      status = failure("a triangle has zero area");
+      continue;
+    }
+    boxes[t].expand(a);
+    boxes[t].expand(b);
+    boxes[t].expand(c);
+    if (!kept[static_cast<std::size_t>(v[0])] || !kept[static_cast<std::size_t>(v[1])] ||
+        !kept[static_cast<std::size_t>(v[2])]) {
+      rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
-  const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
-  if (!soup) return failure(soup.error().message);
-  for (const bool flat : soup->degenerate) {
-    if (flat) return failure("a triangle has zero area");
-  }
+  if (rounded.empty()) return status;
+  const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
+  const Soup soup = local_soup(mesh, chosen, boxes);
   PointStore store;
-  for (const Vec3 v : soup->vertices)
+  for (const Vec3 v : soup.vertices)
     (void)store.add(v);
-  const std::vector<TriangleWork> work = intersect_pairs(*soup, store);
+  const std::vector<TriangleWork> work = intersect_pairs(soup, store);
+  std::vector<bool> bad(work.size(), false);
   for (std::size_t t = 0; t < work.size(); ++t) {
     for (const Constraint& c : work[t].constraints) {
-      if (c.edge == no_edge) return failure("two triangles cross");
+      // The partner holds the same constraint: it is marked at its own turn.
+      if (c.edge == no_edge) {
+        if (crossing == nullptr) return failure("two triangles cross");
+        status = failure("two triangles cross");
+        bad[t] = true;
+      }
     }
     for (const std::int32_t u : work[t].coplanar) {
-      if (coplanar_meet(*soup, static_cast<std::int32_t>(t), u)) {
-        return failure("two triangles in one plane overlap");
+      if (coplanar_meet(soup, static_cast<std::int32_t>(t), u)) {
+        if (crossing == nullptr) return failure("two triangles in one plane overlap");
+        status = failure("two triangles in one plane overlap");
+        bad[t] = true;
+        bad[static_cast<std::size_t>(u)] = true;
       }
     }
   }
-  return Ok{};
+  for (std::size_t t = 0; t < bad.size(); ++t) {
+    if (bad[t]) crossing->push_back(chosen[t]);
+  }
+  return status;
 }
 
 }  // namespace contain::clip::solid

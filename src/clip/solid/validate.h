@@ -1,6 +1,9 @@
 #pragma once
 // The exact check of a written mesh (rule solid-output in docs/robustness.md). Private to clip.
 
+#include <cstdint>
+#include <vector>
+
 #include "contain/core/result.h"
 #include "contain/shapes/mesh.h"
 
@@ -8,7 +11,22 @@ namespace contain::clip::solid {
 
 /// Ok when, on the mesh's doubles exactly: every directed edge occurs once and its reverse
 /// once, no triangle has zero area, and no two triangles meet other than at corners at the same
-/// positions or a shared edge. Otherwise `ErrorKind::degenerate` naming what failed.
+/// positions or a shared edge. Otherwise `ErrorKind::degenerate` naming what failed. Every pair
+/// of triangles whose boxes meet is tested (the full check).
 [[nodiscard]] Status check_written(const Mesh& mesh);
+
+/// The same check, with the pairs of triangles whose corners are all `kept` left out: kept[v]
+/// says that vertex v is written exactly at its exact point, the only point of the exact
+/// arrangement the engine wrote there, so that a triangle with three kept corners is a face of
+/// that exact arrangement itself. The faces of the exact arrangement meet only at shared
+/// corners or shared edges (validate.cpp says why), so such a pair can not fail; every other
+/// pair holds a triangle with a corner that is not kept, and is tested exactly as by the full
+/// check. Edges and areas are checked on every triangle. kept.size() == mesh.vertices.size().
+/// With `crossing`, the check goes on after a failure of a pair or an area and appends every
+/// triangle of a pair that meets wrongly (ascending; zero-area triangles are not in it): the
+/// region a snap-rounding round repairs. An edge failure returns at once with every triangle
+/// appended.
+[[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
+                                   std::vector<std::int32_t>* crossing = nullptr);
 
 }  // namespace contain::clip::solid

@@ -11,10 +11,12 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include "support/exact.h"
+#include "support/exact_distance.h"
 
 namespace contain::test {
 namespace {
@@ -43,7 +45,7 @@ std::optional<Known> crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const mpq_class t = dp / (dp - dq);
   const QVec3 qp = exact(p), qq = exact(q);
   const QVec3 x{qp.x + t * (qq.x - qp.x), qp.y + t * (qq.y - qp.y), qp.z + t * (qq.z - qp.z)};
-  return Known{clip::solid::line_plane(p, q, a, clip::solid::exact_normal(a, b, c)), x};
+  return Known{clip::solid::line_plane(p, q, a, b, c), x};
 }
 
 Known midpoint(const Known& a, const Known& b) {
@@ -119,6 +121,87 @@ TEST(SolidExactPoint, DegenerateImplicitPointsFallBackToExactZeros) {
     const Known off = plain({std::nextafter(q.x, 2.0), q.y, q.z});
     expect_exact(kp, off, *x);
     expect_exact(*x, kp, off);
+  }
+}
+
+// A crossing's nearest doubles (the filtered rounding, BigFloat only where it cannot certify)
+// against the rationals', and its equality with the same point made another way.
+void expect_rounded(const Known& x) {
+  const Vec3 got = clip::solid::nearest_double(x.point);
+  EXPECT_EQ(got.x, nearest_double(x.q.x));
+  EXPECT_EQ(got.y, nearest_double(x.q.y));
+  EXPECT_EQ(got.z, nearest_double(x.q.z));
+}
+
+TEST(SolidExactPoint, CrossingsRoundToTheNearestDoublesOfTheRationals) {
+  std::mt19937_64 rng(13);
+  int tested = 0;
+  while (tested < 300) {
+    const double s = std::ldexp(1.0, static_cast<int>(rng() % 61) - 30);
+    const auto at = [&] { return random_point(rng) * s; };
+    const Vec3 p = at(), q = at();
+    if (const std::optional<Known> x = crossing(p, q, at(), at(), at())) {
+      expect_rounded(*x);
+      ++tested;
+    }
+  }
+  // Degenerate: through a corner, along an edge, at a double, and at huge and tiny scales.
+  for (const double s : {1.0, 1e300, 1e-300, 0x1p-1060}) {
+    const Vec3 a{0, 0, 0}, b{s, 0, 0}, c{0, s, 0};
+    for (const auto& [p, q] :
+         {std::pair{Vec3{0, 0, -s}, Vec3{0, 0, s}},
+          std::pair{Vec3{s, 0, -3 * s}, Vec3{s, 0, 0.5 * s}},
+          std::pair{Vec3{0.5 * s, 0.25 * s, -s}, Vec3{0.5 * s, 0.5 * s, s}},
+          std::pair{Vec3{0.3 * s, -0.2 * s, -s}, Vec3{0.1 * s, 0.7 * s, 3 * s}}}) {
+      const std::optional<Known> x = crossing(p, q, a, b, c);
+      ASSERT_TRUE(x.has_value()) << s;
+      expect_rounded(*x);
+      // The same point as the crossing of the reversed segment with the plane's corners in
+      // another order (no shortcut: the exact path) and of a second segment through it.
+      const std::optional<Known> y = crossing(q, p, c, a, b);
+      ASSERT_TRUE(y.has_value());
+      EXPECT_TRUE(clip::solid::same_point(x->point, y->point));
+      EXPECT_TRUE(clip::solid::same_point(x->point, crossing(q, p, a, b, c)->point));
+    }
+  }
+}
+
+// The filter of the intersection line's direction against the exact cross product of the exact
+// normals: when it answers, its axis is the first non-zero component.
+void expect_line_axis(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u, bool decides) {
+  const QVec3 nt = qcross(qsub(exact(t[1]), exact(t[0])), qsub(exact(t[2]), exact(t[0])));
+  const QVec3 nu = qcross(qsub(exact(u[1]), exact(u[0])), qsub(exact(u[2]), exact(u[0])));
+  const QVec3 line = qcross(nt, nu);
+  const std::optional<int> k = clip::solid::filtered_line_axis(t, u);
+  if (decides) {
+    EXPECT_TRUE(k.has_value());
+  }
+  if (!k) return;
+  for (int i = 0; i < *k; ++i)
+    EXPECT_EQ(sgn(coord(line, i)), 0) << "axis " << *k << " is not the first non-zero one";
+  EXPECT_NE(sgn(coord(line, *k)), 0) << "axis " << *k << " is zero";
+}
+
+TEST(SolidExactPoint, FilteredLineAxisIsTheFirstNonZeroComponentOfTheExactDirection) {
+  std::mt19937_64 rng(17);
+  for (int i = 0; i < 300; ++i) {
+    const std::array<Vec3, 3> t{random_point(rng), random_point(rng), random_point(rng)};
+    const std::array<Vec3, 3> u{random_point(rng), random_point(rng), random_point(rng)};
+    expect_line_axis(t, u, true);  // random planes: far from parallel, the filter decides
+  }
+  // Directions with exactly zero components: planes z = 0 and x = 0 meet along y (x and z
+  // components zero); planes z = 0 and y = x meet along z = 0, (1, 1, 0).
+  const std::array<Vec3, 3> flat{Vec3{0.1, 0.2, 0}, Vec3{1.3, 0.7, 0}, Vec3{0.4, 1.9, 0}};
+  expect_line_axis(flat, {Vec3{0, 0.3, 0.1}, Vec3{0, 1.1, -0.4}, Vec3{0, -0.2, 0.9}}, true);
+  expect_line_axis(flat, {Vec3{0.3, 0.3, 0.1}, Vec3{1.1, 1.1, -0.4}, Vec3{-0.2, -0.2, 0.9}}, false);
+  // Nearly parallel planes (a direction below the filter's resolution) and 1e+-300: the filter
+  // answers rightly or not at all.
+  const double tilt = 0x1p-60;
+  expect_line_axis(flat, {Vec3{0.1, 0.2, tilt}, Vec3{1.3, 0.7, 0}, Vec3{0.4, 1.9, -tilt}}, false);
+  for (const double s : {1e300, 1e-300, 1e50, 1e-50}) {
+    const std::array<Vec3, 3> t{flat[0] * s, flat[1] * s, flat[2] * s};
+    expect_line_axis(t, {Vec3{0, 0.3, 0.1} * s, Vec3{0, 1.1, -0.4} * s, Vec3{0, -0.2, 0.9} * s},
+                     s == 1e50 || s == 1e-50);
   }
 }
 

@@ -1,0 +1,133 @@
+// Saved indexes as files: written whole, read through mmap (POSIX; io is outside the
+// dependency-free core).
+
+#include "contain/io/index_io.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <utility>
+
+namespace contain::io {
+
+namespace {
+
+Error io_error(const std::string& path, const std::string& what) {
+  return {ErrorKind::io, what + ": " + std::strerror(errno), path};
+}
+
+template <class T>
+Result<T> named(Result<T> result, const std::string& path) {
+  if (result) return result;
+  Error error = result.error();
+  error.source = path;
+  return error;
+}
+
+}  // namespace
+
+MappedFile::MappedFile(MappedFile&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  if (this != &other) {
+    MappedFile gone(std::move(*this));
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+MappedFile::~MappedFile() {
+  if (data_ != nullptr) ::munmap(const_cast<std::byte*>(data_), size_);
+}
+
+Result<MappedFile> map_file(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return io_error(path, "cannot open");
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const Error error = io_error(path, "cannot read");
+    ::close(fd);
+    return error;
+  }
+  MappedFile file;
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return Error{ErrorKind::io, "not a regular file (an index is mapped into memory)", path};
+  }
+  if (st.st_size > 0) {
+    void* p = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ,
+                     MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (p == MAP_FAILED) {
+      const Error error = io_error(path, "cannot map");
+      ::close(fd);
+      return error;
+    }
+    file.data_ = static_cast<const std::byte*>(p);
+    file.size_ = static_cast<std::size_t>(st.st_size);
+  }
+  ::close(fd);
+  return file;
+}
+
+Status write_index(std::span<const std::byte> bytes, const std::string& path) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return io_error(path, "cannot create");
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) return io_error(path, "cannot write");
+  return Ok{};
+}
+
+Result<IndexFile> read_index_file(const std::string& path) {
+  auto file = map_file(path);
+  if (!file) return file.error();
+  auto header = named(inside::parse_index_header(file->bytes()), path);
+  if (!header) return header.error();
+  return IndexFile{std::move(*file), *header};
+}
+
+// Maps `path`, checks its header and reads the index with `read(file, path)`.
+template <class Read>
+auto read_whole(const std::string& path, Read read) -> decltype(read(IndexFile{}, path)) {
+  auto file = read_index_file(path);
+  if (!file) return file.error();
+  return read(*file, path);
+}
+
+Result<inside::MeshIndex> read_mesh_index(const IndexFile& file, const std::string& path) {
+  return named(inside::parse_mesh_index(file.header), path);
+}
+
+Result<inside::PolygonIndex> read_polygon_index(const IndexFile& file, const std::string& path) {
+  return named(inside::parse_polygon_index(file.header), path);
+}
+
+Result<inside::SavedRegionLayer> read_region_layer_index(const IndexFile& file,
+                                                         const std::string& path) {
+  return named(inside::parse_region_layer(file.header), path);
+}
+
+Result<inside::MeshIndex> read_mesh_index(const std::string& path) {
+  return read_whole(path,
+                    [](const IndexFile& f, const std::string& p) { return read_mesh_index(f, p); });
+}
+
+Result<inside::PolygonIndex> read_polygon_index(const std::string& path) {
+  return read_whole(
+      path, [](const IndexFile& f, const std::string& p) { return read_polygon_index(f, p); });
+}
+
+Result<inside::SavedRegionLayer> read_region_layer_index(const std::string& path) {
+  return read_whole(
+      path, [](const IndexFile& f, const std::string& p) { return read_region_layer_index(f, p); });
+}
+
+}  // namespace contain::io

@@ -1,0 +1,278 @@
+#include "contain/inside/index_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "inside/mesh_test_meshes.h"
+#include "inside/polygon_random.h"
+#include "scenes/scenes.h"
+
+namespace contain::inside {
+namespace {
+
+// Random points in a box grown by a quarter on each side, plus the degenerate ones: every
+// vertex, every edge's midpoint, the points of a coarse lattice (on grid planes and faces).
+std::vector<Vec3> probes(const Mesh& mesh, std::size_t count, std::uint64_t seed) {
+  Box3 box;
+  for (const Vec3& v : mesh.vertices)
+    box.expand(v);
+  const Vec3 grow = 0.25 * (box.max - box.min);
+  std::vector<Vec3> points =
+      scenes::uniform_points(Box3{box.min - grow, box.max + grow}, count, seed);
+  points.insert(points.end(), mesh.vertices.begin(), mesh.vertices.end());
+  for (const TriangleIndices& t : mesh.triangles) {
+    points.push_back(0.5 * mesh.vertex(t[0]) + 0.5 * mesh.vertex(t[1]));
+    points.push_back((1.0 / 3.0) * (mesh.vertex(t[0]) + mesh.vertex(t[1]) + mesh.vertex(t[2])));
+  }
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j)
+      for (int k = 0; k <= 8; ++k)
+        points.push_back(box.min + Vec3{i / 8.0 * (box.max.x - box.min.x),
+                                        j / 8.0 * (box.max.y - box.min.y),
+                                        k / 8.0 * (box.max.z - box.min.z)});
+  return points;
+}
+
+void expect_same_answers(const MeshIndex& fresh, const MeshIndex& loaded,
+                         const std::vector<Vec3>& points) {
+  EXPECT_EQ(loaded.regime(), fresh.regime());
+  EXPECT_EQ(loaded.report().closed(), fresh.report().closed());
+  EXPECT_EQ(loaded.report().edges, fresh.report().edges);
+  EXPECT_EQ(loaded.report().genus, fresh.report().genus);
+  EXPECT_EQ(loaded.report().signed_volume, fresh.report().signed_volume);
+  EXPECT_EQ(loaded.bounds().min, fresh.bounds().min);
+  EXPECT_EQ(loaded.bounds().max, fresh.bounds().max);
+  EXPECT_EQ(loaded.stats().cells, fresh.stats().cells);
+  EXPECT_EQ(loaded.stats().cell_refs, fresh.stats().cell_refs);
+  std::vector<Location> a(points.size()), b(points.size());
+  fresh.locate(points, a, {.threads = 1});
+  loaded.locate(points, b, {.threads = 1});
+  EXPECT_EQ(a, b);
+  for (std::size_t i = 0; i < points.size(); i += 7)
+    ASSERT_EQ(loaded.locate(points[i]), a[i]) << i;
+}
+
+MeshIndex round_trip(const MeshIndex& index) {
+  auto loaded = parse_mesh_index(format_index(index));
+  EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().what());
+  return loaded.ok() ? std::move(loaded).value() : MeshIndex{};
+}
+
+// The header's two checksums made right again after a payload change: the file then reaches
+// the payload's own checks (a crafted file, not a damaged one).
+void reseal(std::vector<std::byte>& bytes) {
+  const auto payload = std::span<const std::byte>(bytes).subspan(index_header_size);
+  const std::uint64_t sum = index_checksum(payload);
+  std::memcpy(bytes.data() + 40, &sum, 8);
+  const std::uint64_t head = index_checksum(std::span<const std::byte>(bytes).first(56));
+  std::memcpy(bytes.data() + 56, &head, 8);
+}
+
+TEST(MeshIndexFile, LoadedClosedMeshesAnswerExactlyAsFresh) {
+  for (const Mesh& mesh : {test::grid_cube(-1, 1, 3), test::l_prism(), test::octahedron(2.0),
+                           scenes::torus(1.0, 0.4, 24, 12)}) {
+    const MeshIndex fresh(mesh);
+    ASSERT_EQ(fresh.regime(), MeshRegime::closed_exact);
+    expect_same_answers(fresh, round_trip(fresh), probes(mesh, 3000, 7));
+  }
+}
+
+TEST(MeshIndexFile, LoadedOpenMeshAnswersExactlyAsFreshWithItsWindingAccuracy) {
+  Mesh open = test::grid_cube(0, 1, 2);
+  open.triangles.pop_back();  // a hole: the winding number regime
+  for (double accuracy : {2.0, 3.0}) {
+    const MeshIndex fresh(open, {.winding_accuracy = accuracy});
+    ASSERT_EQ(fresh.regime(), MeshRegime::winding_number);
+    expect_same_answers(fresh, round_trip(fresh), probes(open, 2000, 8));
+  }
+}
+
+TEST(MeshIndexFile, EmptyMeshRoundTripsToAnIndexWithNothingInside) {
+  const MeshIndex empty{Mesh{}};
+  const MeshIndex loaded = round_trip(empty);
+  EXPECT_EQ(loaded.locate(Vec3{0, 0, 0}), Location::outside);
+  EXPECT_EQ(loaded.stats().triangles, 0u);
+}
+
+TEST(MeshIndexFile, FingerprintIsTheTrianglesWhateverTheirOrderOrUnusedVertices) {
+  const Mesh mesh = test::l_prism();
+  Mesh shuffled = mesh;
+  std::mt19937_64 rng(3);
+  std::shuffle(shuffled.triangles.begin(), shuffled.triangles.end(), rng);
+  shuffled.vertices.push_back({9, 9, 9});  // used by no triangle
+  EXPECT_EQ(fingerprint(shuffled), fingerprint(mesh));
+  EXPECT_EQ(fingerprint(MeshIndex(mesh)), fingerprint(mesh));
+  const auto header = parse_index_header(format_index(MeshIndex(mesh)));
+  ASSERT_TRUE(header.ok());
+  EXPECT_EQ(header->source, fingerprint(mesh));
+  Mesh moved = mesh;
+  moved.vertices[0].x = std::nextafter(moved.vertices[0].x, 10.0);
+  EXPECT_NE(fingerprint(moved), fingerprint(mesh));
+}
+
+TEST(MeshIndexFile, EveryTruncationAndEveryFlippedByteIsAClearError) {
+  const auto bytes = format_index(MeshIndex(test::octahedron(1.0)));
+  for (std::size_t n = 0; n < bytes.size(); ++n) {
+    const auto loaded = parse_mesh_index(std::span<const std::byte>(bytes).first(n));
+    ASSERT_FALSE(loaded.ok()) << n;
+    EXPECT_EQ(loaded.error().kind, ErrorKind::parse);
+  }
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    auto damaged = bytes;
+    damaged[i] ^= std::byte{0x10};
+    const auto loaded = parse_mesh_index(damaged);
+    ASSERT_FALSE(loaded.ok()) << i;
+    EXPECT_NE(loaded.error().message.find("contain index"), std::string::npos)
+        << loaded.error().message;
+  }
+}
+
+TEST(MeshIndexFile, ForeignAndOtherKindAndOtherVersionFilesAreRefusedByName) {
+  const std::string text = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto foreign =
+      parse_mesh_index(std::as_bytes(std::span<const char>(text.data(), text.size())));
+  ASSERT_FALSE(foreign.ok());
+  EXPECT_NE(foreign.error().message.find("magic"), std::string::npos);
+
+  const std::vector<MultiPolygon> regions{MultiPolygon{{Polygon{{{{0, 0}, {1, 0}, {0, 1}}}}}}};
+  const auto layer = format_index(RegionLayer(regions), fingerprint(regions, Fill::even_odd), {});
+  const auto wrong_kind = parse_mesh_index(layer);
+  ASSERT_FALSE(wrong_kind.ok());
+  EXPECT_NE(wrong_kind.error().message.find("region_layer"), std::string::npos);
+
+  auto later = format_index(MeshIndex(test::octahedron(1.0)));
+  const std::uint32_t version = index_format_version + 1;
+  std::memcpy(later.data() + 8, &version, 4);
+  reseal(later);
+  const auto refused = parse_mesh_index(later);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("version"), std::string::npos);
+}
+
+// A crafted payload (checksums made right) never reads out of bounds: it is refused, or it
+// loads an index whose every array access is in range (the sanitizer builds check this).
+TEST(MeshIndexFile, CraftedPayloadsAreRefusedOrAnswerWithoutReadingOutOfBounds) {
+  const Mesh mesh = test::octahedron(1.0);
+  const auto bytes = format_index(MeshIndex(mesh, {.min_cells = 8}));
+  std::vector<Vec3> points = probes(mesh, 50, 9);
+  points.resize(60);  // the random ones and the vertices
+  std::size_t refused = 0, loaded_count = 0;
+  for (std::size_t i = index_header_size; i < bytes.size(); ++i) {
+    auto crafted = bytes;
+    crafted[i] ^= std::byte{0xff};
+    reseal(crafted);
+    const auto loaded = parse_mesh_index(crafted);
+    if (!loaded.ok()) {
+      ++refused;
+      continue;
+    }
+    ++loaded_count;  // e.g. a changed report count or a cell's answer: loads, and stays in bounds
+    std::vector<Location> out(points.size());
+    loaded->locate(points, out, {.threads = 1});
+  }
+  EXPECT_GT(refused, 0u);
+  EXPECT_GT(loaded_count, 0u);
+}
+
+std::vector<MultiPolygon> random_layer(std::mt19937_64& rng, int count) {
+  std::vector<MultiPolygon> regions;
+  for (int r = 0; r < count; ++r) {
+    MultiPolygon region;
+    region.polygons.push_back(Polygon{test::random_integer_rings(rng, 2, 9, 12)});
+    regions.push_back(std::move(region));
+  }
+  regions.push_back(MultiPolygon{});  // an empty region holds no point
+  return regions;
+}
+
+TEST(RegionLayerFile, LoadedLayersAnswerExactlyAsFreshUnderEveryFill) {
+  std::mt19937_64 rng(11);
+  const std::vector<MultiPolygon> regions = random_layer(rng, 40);
+  std::vector<Vec2> points;
+  std::uniform_real_distribution<double> coordinate(-1.0, 13.0);
+  for (int i = 0; i < 2000; ++i)
+    points.push_back({coordinate(rng), coordinate(rng)});
+  for (int x = -1; x <= 13; ++x)  // integer points: the vertices, on edges, on grid lines
+    for (int y = -1; y <= 13; ++y)
+      points.push_back({static_cast<double>(x), static_cast<double>(y)});
+  const std::vector<std::string> ids{regions.size(), "id"};
+  for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative}) {
+    const RegionLayer fresh(regions, {.fill = fill});
+    auto loaded = parse_region_layer(format_index(fresh, fingerprint(regions, fill), ids));
+    ASSERT_TRUE(loaded.ok()) << loaded.error().what();
+    EXPECT_EQ(loaded->ids, ids);
+    EXPECT_EQ(loaded->source, fingerprint(regions, fill));
+    EXPECT_EQ(loaded->layer.fill(), fill);
+    EXPECT_EQ(loaded->layer.stats().edge_refs, fresh.stats().edge_refs);
+    const HolderTable a = fresh.locate(points, {.threads = 1});
+    const HolderTable b = loaded->layer.locate(points, {.threads = 1});
+    EXPECT_EQ(a, b);
+  }
+  EXPECT_NE(fingerprint(regions, Fill::even_odd), fingerprint(regions, Fill::nonzero));
+}
+
+TEST(RegionLayerFile, TruncatedFlippedAndCraftedFilesAreRefusedOrSafe) {
+  std::mt19937_64 rng(12);
+  const std::vector<MultiPolygon> regions = random_layer(rng, 3);
+  const auto bytes = format_index(RegionLayer(regions), 1, {});
+  for (std::size_t n = 0; n < bytes.size(); n += 3)
+    ASSERT_FALSE(parse_region_layer(std::span<const std::byte>(bytes).first(n)).ok()) << n;
+  const std::vector<Vec2> points{{0, 0}, {1, 1}, {5, 5}, {2.5, 7}, {12, 12}, {6, 3}};
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    auto damaged = bytes;
+    damaged[i] ^= std::byte{0x04};
+    ASSERT_FALSE(parse_region_layer(damaged).ok()) << i;
+    if (i < index_header_size) continue;
+    reseal(damaged);
+    const auto loaded = parse_region_layer(damaged);
+    if (loaded.ok()) (void)loaded->layer.locate(points, {.threads = 1});
+  }
+}
+
+TEST(PolygonIndexFile, LoadedPolygonIndexAnswersExactlyAsFreshAndFlippedBytesAreRefused) {
+  std::mt19937_64 rng(13);
+  for (Fill fill : {Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative}) {
+    const std::vector<Ring> rings = test::random_integer_rings(rng, 3, 12, 10);
+    const PolygonIndex fresh(rings, {.fill = fill});
+    const std::vector<MultiPolygon> region{MultiPolygon{{Polygon{rings}}}};
+    const auto bytes = format_index(fresh, fingerprint(region, fill));
+    auto loaded = parse_polygon_index(bytes);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().what();
+    EXPECT_EQ(loaded->fill(), fill);
+    EXPECT_EQ(parse_index_header(bytes)->source, fingerprint(region, fill));
+    std::vector<Vec2> points = scenes::uniform_points(Box2{{-1, -1}, {11, 11}}, 3000, 14);
+    for (int x = -1; x <= 11; ++x)  // the vertices, points on edges and on grid lines
+      for (int y = -1; y <= 11; ++y)
+        points.push_back({static_cast<double>(x), static_cast<double>(y)});
+    std::vector<Location> a(points.size()), b(points.size());
+    fresh.locate(points, a, {.threads = 1});
+    loaded->locate(points, b, {.threads = 1});
+    EXPECT_EQ(a, b);
+    for (std::size_t i = 0; i < bytes.size(); i += 23) {
+      auto damaged = bytes;
+      damaged[i] ^= std::byte{0x40};
+      ASSERT_FALSE(parse_polygon_index(damaged).ok()) << i;
+    }
+    EXPECT_FALSE(parse_region_layer(bytes).ok());  // another kind
+  }
+}
+
+TEST(RegionLayerFile, RegionWithoutAGridWhoseBoxHoldsPointsIsRefused) {
+  // One empty region: payload = fill (1 byte), region count (8), the region's fill (1), its box.
+  auto bytes = format_index(RegionLayer(std::vector<MultiPolygon>{MultiPolygon{}}), 0, {});
+  ASSERT_TRUE(parse_region_layer(bytes).ok());
+  const double box[4] = {0.0, 0.0, 1.0, 1.0};  // min.x, min.y, max.x, max.y
+  std::memcpy(bytes.data() + index_header_size + 10, box, sizeof box);
+  reseal(bytes);
+  const auto loaded = parse_region_layer(bytes);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_NE(loaded.error().message.find("without a grid"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace contain::inside

@@ -1,0 +1,109 @@
+"""Saved indexes (docs/index-files.md): MeshIndex and RegionLayer save(path) / load(path) and
+pickling answer exactly as the index that was saved; damaged, truncated, foreign and
+other-kind files raise ContainError naming the file; the command reads what Python wrote."""
+
+import pickle
+import subprocess
+
+import numpy as np
+import pytest
+
+import contain
+from meshes import cube
+
+
+def torus_mesh():
+    """A closed torus (exact regime) with points exactly on its vertices below."""
+    rings, sides = 40, 16
+    u = np.repeat(np.arange(rings) * 2 * np.pi / rings, sides)
+    v = np.tile(np.arange(sides) * 2 * np.pi / sides, rings)
+    vertices = np.stack([(1 + 0.4 * np.cos(v)) * np.cos(u), (1 + 0.4 * np.cos(v)) * np.sin(u),
+                         0.4 * np.sin(v)], axis=1)
+    faces = []
+    for i in range(rings):
+        for j in range(sides):
+            a, b = i * sides + j, ((i + 1) % rings) * sides + j
+            c, d = ((i + 1) % rings) * sides + (j + 1) % sides, i * sides + (j + 1) % sides
+            faces += [[a, b, c], [a, c, d]]
+    return contain.Mesh(vertices, np.array(faces))
+
+
+def probes(vertices, count=5000):
+    rng = np.random.default_rng(5)
+    lo, hi = vertices.min(axis=0) - 0.2, vertices.max(axis=0) + 0.2
+    return np.concatenate([rng.uniform(lo, hi, size=(count, vertices.shape[1])), vertices])
+
+
+@pytest.mark.parametrize("make", [cube, torus_mesh])
+def test_saved_loaded_and_pickled_mesh_indexes_answer_exactly_as_fresh(tmp_path, make):
+    mesh = make()
+    fresh = contain.MeshIndex(mesh)
+    path = tmp_path / "mesh.cidx"
+    fresh.save(path)
+    points = probes(mesh.vertices)
+    expected = fresh.locate(points)
+    assert (expected == 0).sum() >= len(mesh.vertices)  # the vertices are on the boundary
+    for loaded in (contain.MeshIndex.load(path), contain.MeshIndex.load(str(path)),
+                   pickle.loads(pickle.dumps(fresh))):
+        assert np.array_equal(loaded.locate(points), expected)
+        assert loaded.regime == fresh.regime
+        assert loaded.stats == fresh.stats
+
+
+def test_open_mesh_index_keeps_its_winding_number_regime_and_accuracy(tmp_path):
+    mesh = cube()
+    open_mesh = contain.Mesh(mesh.vertices, mesh.faces[:-1])
+    fresh = contain.MeshIndex(open_mesh, winding_accuracy=2.0)
+    fresh.save(tmp_path / "open.cidx")
+    loaded = contain.MeshIndex.load(tmp_path / "open.cidx")
+    assert loaded.regime == "winding_number"
+    points = probes(open_mesh.vertices, 2000)
+    assert np.array_equal(loaded.locate(points), fresh.locate(points))
+
+
+def test_saved_and_pickled_layers_answer_with_their_ids_and_fill(tmp_path):
+    regions = ["POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0), (0.5 0.5, 1.5 0.5, 1.5 1.5, 0.5 1.5, 0.5 0.5))",
+               "POLYGON ((2 0, 3 0, 3 1, 2 1, 2 0))", "POLYGON ((1 1, 4 1, 4 4, 1 4, 1 1))"]
+    fresh = contain.RegionLayer(regions, ids=["a", "b", "c"], fill="nonzero")
+    fresh.save(tmp_path / "layer.cidx")
+    rng = np.random.default_rng(6)
+    points = np.concatenate([rng.uniform(-1, 5, size=(5000, 2)),
+                             np.array([[x, y] for x in range(-1, 6) for y in range(-1, 6)], float)])
+    pairs, where = fresh.holders(points)
+    for loaded in (contain.RegionLayer.load(tmp_path / "layer.cidx"),
+                   pickle.loads(pickle.dumps(fresh))):
+        assert loaded.ids == ["a", "b", "c"]
+        assert loaded.fill == fresh.fill
+        again, again_where = loaded.holders(points)
+        assert np.array_equal(again, pairs) and np.array_equal(again_where, where)
+
+
+def test_damaged_truncated_foreign_and_other_kind_files_raise_naming_the_file(tmp_path):
+    good = tmp_path / "good.cidx"
+    contain.MeshIndex(cube()).save(good)
+    data = good.read_bytes()
+    cases = {"truncated.cidx": data[: len(data) // 2],
+             "flipped.cidx": data[:-3] + bytes([data[-3] ^ 1]) + data[-2:],
+             "foreign.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}
+    for name, content in cases.items():
+        (tmp_path / name).write_bytes(content)
+        with pytest.raises(contain.ContainError, match=name):
+            contain.MeshIndex.load(tmp_path / name)
+    with pytest.raises(contain.ContainError, match="good.cidx.*mesh_index"):
+        contain.RegionLayer.load(good)
+    with pytest.raises(contain.ContainIOError):
+        contain.MeshIndex.load(tmp_path / "missing.cidx")
+    with pytest.raises(contain.ContainError):
+        pickle.loads(pickle.dumps(contain.MeshIndex(cube())).replace(b"contain\x1a", b"contain\x00"))
+
+
+def test_the_command_answers_from_an_index_python_saved(tmp_path, cli):
+    mesh = torus_mesh()
+    index = contain.MeshIndex(mesh)
+    index.save(tmp_path / "torus.cidx")
+    points = probes(mesh.vertices, 300)
+    text = "\n".join(f"{x!r} {y!r} {z!r}" for x, y, z in points) + "\n"
+    run = subprocess.run([cli, "inside", "--index", str(tmp_path / "torus.cidx")], input=text,
+                         capture_output=True, text=True, check=True)
+    words = {"in": 1, "on": 0, "out": -1}
+    assert np.array_equal([words[w] for w in run.stdout.split()], index.locate(points))
