@@ -91,7 +91,10 @@ struct MeshIndexOptions {
 ///
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
 /// in an empty cell, else O(triangles met along the run of surface cells); a point on the surface
-/// O(triangles in the rows of cells from it along +x); winding regime about O(log n). Thread
+/// O(triangles in the rows of cells from it along +x) when two samples beside one face through it
+/// prove it `boundary` (the usual case), else the sampling of the k planes through it, which
+/// grows faster than k^3: a vertex of degree 64 that is buried in another part or lies on an
+/// inverted shell takes seconds (a known gap); winding regime about O(log n). Thread
 /// safety: const queries may run concurrently; answers do not depend on the thread count.
 /// Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray crossings), Edelsbrunner and Muecke
 /// 1990 (SoS).
