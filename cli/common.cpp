@@ -49,16 +49,6 @@ void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
   if (!line.empty()) warn(line);
 }
 
-std::future<std::string> start_self_crossing_check(std::string name, const Mesh& mesh,
-                                                   int threads) {
-  // Started before the index says whether the mesh is closed: an open mesh (answered by the
-  // winding number, where overlaps count) is not searched, so its run does not wait for it.
-  auto check = [name = std::move(name), &mesh] {
-    return validate_mesh(mesh).closed() ? self_crossing_line(name, mesh) : std::string();
-  };
-  return std::async(threads == 1 ? std::launch::deferred : std::launch::async, std::move(check));
-}
-
 Result<MultiPolygon> read_region_warned(const std::string& path) {
   auto read = io::read_region_with_notes(path);
   if (!read) return read.error();

@@ -5,7 +5,6 @@
 
 #include <fstream>
 #include <functional>
-#include <future>
 #include <memory>
 #include <span>
 #include <string>
@@ -43,13 +42,6 @@ void warn(std::string_view message);
 /// (`collide::self_intersections`, limit 1): about 2.4 times the cost of building the mesh's
 /// index on a clean 100k-triangle mesh, which has to be searched whole.
 void warn_if_self_crossing(std::string_view name, const Mesh& mesh);
-
-/// The same check started beside the caller's own work (reading points, building the index,
-/// answering) when `threads` allows more than one thread, so that its cost overlaps theirs;
-/// with one thread it runs when asked. `get()` gives the warning's line, empty when the mesh is
-/// open (not searched) or does not cross itself. `mesh` must outlive the result.
-[[nodiscard]] std::future<std::string> start_self_crossing_check(std::string name, const Mesh& mesh,
-                                                                 int threads);
 
 /// The numbers of a list-valued option ("1,0,0,2.5" or "1 0 0 2.5"), all finite; `option` names
 /// the option in the error.

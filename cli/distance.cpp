@@ -77,10 +77,10 @@ int run_mesh_points(const DistanceOptions& o) {
   enter_phase(Phase::prepare);
   const bool signs = o.signed_distance;
   const distance::MeshDistance prepared(file->mesh, {.signs = signs});
+  // The signs are inside's answers: for a closed mesh the solid of its winding number, crossing
+  // itself or not.
   if (signs && prepared.regime() != inside::MeshRegime::closed_exact) {
     warn_open_mesh(o.mesh, file->mesh);
-  } else if (signs) {
-    warn_if_self_crossing(o.mesh, file->mesh);  // the signs are inside's answers
   }
   enter_phase(Phase::query);
   const std::vector<Vec3>& p = points->points;

@@ -1,5 +1,7 @@
 // contain inside: one line per point, "in", "on" or "out".
 
+#include <filesystem>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -29,6 +31,16 @@ struct InsideOptions : PointQuery {
   std::string csg;
   std::string index;  // --index FILE: a saved index (contain index build)
 };
+
+// At most how many points the file holds, without reading it (the points stream, but the mesh's
+// index is built before them): a point's line takes at least 6 bytes ("0 0 0\n"). Standard input
+// or an unreadable size: as many as can be, so the full index is built, as before.
+std::size_t most_points(const std::string& path) {
+  std::error_code error;
+  const auto size = path == "-" ? 0 : std::filesystem::file_size(path, error);
+  if (path == "-" || error) return std::numeric_limits<std::size_t>::max();
+  return static_cast<std::size_t>(size / 6 + 1);
+}
 
 // Reads the points a block at a time and answers each piece as it comes, keeping only the
 // answers (a byte a point): 10^8 points cost their answers and a block of text, not 2.4 GB of
@@ -86,24 +98,21 @@ int run_csg(const InsideOptions& o) {
   return answer(locate_streamed<Vec3>(*solid, o, io::read_points3_chunked), o);
 }
 
-// A closed mesh gets exact ray parity; any other mesh the generalized winding number, with a
-// warning naming the regime and why (the contract: never `out` everywhere in silence), printed
-// once the points have been read (a bad point file gives its error alone, as before).
+// A closed mesh is the solid of its winding number, exactly (a self-intersecting one too: no
+// self-crossing check is needed); any other mesh the generalized winding number, with a warning
+// naming the regime and why (the contract: never `out` everywhere in silence), printed once the
+// points have been read (a bad point file gives its error alone, as before).
 int run_mesh(const InsideOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
   enter_phase(Phase::prepare);
-  // The self-crossing check (closed meshes only) runs beside building the index, reading the
-  // points and answering, to hide its cost.
-  std::future<std::string> crossing = start_self_crossing_check(o.mesh, file->mesh, o.threads);
-  const inside::MeshIndex index(file->mesh);
+  // Few points: no grid (the index's cost model; the answers are the same).
+  const inside::MeshIndex index(file->mesh, {.queries = most_points(o.points)});
   enter_phase(Phase::read);
   auto locations = locate_streamed<Vec3>(index, o, io::read_points3_chunked);
   if (!locations) return report(locations.error());
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
-  enter_phase(Phase::prepare);
-  if (const std::string line = crossing.get(); !line.empty()) warn(line);
   return answer(locations, o);
 }
 
@@ -125,8 +134,10 @@ Verb add_inside(CLI::App& app) {
                   ->option_text("FILE");
   auto* mesh = cmd->add_option("--mesh", o->mesh,
                                "3D solid bounded by a triangle mesh (.obj .off .stl .ply); exact "
-                               "for a closed mesh, generalized winding number (with a warning) "
-                               "otherwise")
+                               "for a closed mesh: 'in' where its winding number is positive "
+                               "(overlapping parts count once, an inside-out shell subtracts), "
+                               "'on' on the solid's boundary; generalized winding number (with a "
+                               "warning) otherwise")
                    ->option_text("FILE");
   auto many = std::make_shared<ManyOptions>();
   auto* layer = cmd->add_option("--layer", many->layer,

@@ -166,10 +166,9 @@ int run_scene_inside(const ManyOptions& o) {
     const std::string name = scene->mesh_files[m] + " (object " + scene->ids[k] + ")";
     const std::string warning =
         io::mesh_warning(index.object(k).regime(), index.object(k).report());
+    // A closed mesh is its solid (winding number positive), crossing itself or not: nothing
+    // more to warn of.
     if (!warning.empty()) warn(name + ": " + warning);
-    if (index.object(k).regime() == inside::MeshRegime::closed_exact) {
-      warn_if_self_crossing(name, scene->meshes[m]);
-    }
   }
   enter_phase(Phase::read);
   auto text = locate_lines<Vec3>(index, scene->ids, o, io::read_points3_chunked);

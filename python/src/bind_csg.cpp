@@ -174,8 +174,8 @@ Example:
           "mesh",
           [](const MeshLike& mesh) { return Csg::leaf(CsgMesh(*to_mesh(mesh.object, "mesh"))); },
           "mesh"_a,
-          "The solid bounded by a closed triangle mesh (anything mesh-like), located exactly by\n"
-          "ray parity; CsgSolid refuses an open mesh.")
+          "The solid bounded by a closed triangle mesh (anything mesh-like): where its winding\n"
+          "number is positive, located exactly; CsgSolid refuses an open mesh.")
       .def_static(
           "implicit",
           [](const py::object& function) {

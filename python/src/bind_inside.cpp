@@ -128,11 +128,14 @@ void bind_inside(py::module_& m) {
   py::class_<inside::MeshIndex>(m, "MeshIndex", R"doc(
 A triangle mesh prepared for exact point location, built once, queried in batches on every core.
 
-For a closed mesh (every edge shared by two triangles) every answer is exact: 'boundary' when
-the point lies on a triangle, else the parity of the crossings of a symbolically perturbed +x
-ray (docs/robustness.md). A mesh with border or non-manifold edges is answered by the
-generalized winding number (inside where >= 0.5; floating point), still with exact 'boundary';
-`regime` and `warning` say which applies and why.
+For a closed mesh (every directed edge matched by its reverse) every answer is exact and is
+the solid's, as mesh_boolean reads it: inside where the winding number is positive (the signed
+crossings of a symbolically perturbed +x ray, docs/robustness.md), so overlapping parts count
+once and a shell turned inside out subtracts (alone it holds no point); 'boundary' on the
+solid's boundary only (a face buried in another part is 'inside'). A closed mesh whose
+orientation is inconsistent has no winding number: crossing parity, 'boundary' on every
+triangle. Any other mesh is answered by the generalized winding number (inside where >= 0.5;
+floating point), still with exact 'boundary'; `regime` and `warning` say which applies and why.
 
 Build: MeshIndex(mesh) for anything mesh-like (a Mesh, a path, a trimesh or Open3D mesh,
 (vertices, faces)), MeshIndex(vertices, faces), or MeshIndex.from_file(path); about
@@ -207,8 +210,8 @@ Example:
           "point"_a, "Deprecated: locate(point), which takes one point too (a DeprecationWarning).")
       .def_property_readonly(
           "regime", [](const inside::MeshIndex& index) { return to_string(index.regime()); },
-          "'closed_exact' (ray parity, every answer exact) or 'winding_number' (open or\n"
-          "non-manifold mesh: generalized winding number, boundary still exact).")
+          "'closed_exact' (the solid of the winding number, every answer exact) or\n"
+          "'winding_number' (open mesh: generalized winding number, boundary still exact).")
       .def_property_readonly(
           "report", [](const inside::MeshIndex& index) { return index.report(); },
           "The contain.MeshReport of the mesh (what validate_mesh gives), which chose the regime.")

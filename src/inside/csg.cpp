@@ -15,6 +15,7 @@
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/side_of_plane.h"
 #include "inside/csg_local.h"
+#include "inside/mesh_ray.h"
 
 namespace contain::inside {
 namespace {
@@ -93,77 +94,24 @@ Location locate_leaf(const CsgLeaf& leaf, const MeshIndex* mesh_index, Vec3 p) {
                     leaf);
 }
 
-// The planes of the non-degenerate triangles that contain p (exact point in
-// triangle): near p they carry the whole surface, so every open cell of their
-// arrangement is in or out.
+// The planes of the non-degenerate triangles that contain p: near p they carry the whole
+// surface, so every open cell of their arrangement is in or out.
 void mesh_constraints(const Mesh& mesh, Vec3 p, std::vector<LocalConstraint>& out) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle3 tri = mesh.triangle(t);
-    if (!bounding_box(tri).contains(p) || point_in_triangle(tri, p) == Location::outside) continue;
-    const BigVec3 a = to_big(tri.a);
-    BigVec3 normal = cross(to_big(tri.b) - a, to_big(tri.c) - a);
-    if (!is_zero(normal)) out.push_back({std::move(normal), false, false});
+    detail::add_plane_through(tri.a, tri.b, tri.c, p, out);
   }
 }
 
-// The sample's offset from p, as predicates/perturbed_ray.h asks of a symbolic
-// origin: the sign of g . (q - p) for the sample q, read term by term
-// (detail::sign_at).
-struct SampleOffset {
-  static constexpr bool symbolic = true;
-  const detail::SymbolicOffset* at;
-  [[nodiscard]] Sign along(const BigVec3& g) const { return detail::sign_at(BigFloat(), g, *at); }
-};
-
-// MeshIndex's perturbed +x ray parity (predicates/perturbed_ray.h) from a
-// symbolic sample q near p, q's offset from p ordered before the ray's own
-// perturbation (0, e, e²). The crossings that are decided at p itself (every
-// test non-zero there) are the same for every sample: counted once here; the
-// few triangles with a test that vanishes at p are kept and tested per sample.
-class MeshRay {
- public:
-  MeshRay() = default;
-  MeshRay(const Mesh& mesh, Vec3 p) : p_(p) {
-    for (const TriangleIndices& t : mesh.triangles) {
-      const Vec3 a = mesh.vertex(t[0]), b = mesh.vertex(t[1]), c = mesh.vertex(t[2]);
-      // Triangles that the ray from a point near p cannot reach (exact
-      // comparisons of inputs).
-      if (std::max({a.x, b.x, c.x}) < p.x || std::min({a.y, b.y, c.y}) > p.y ||
-          std::max({a.y, b.y, c.y}) < p.y || std::min({a.z, b.z, c.z}) > p.z ||
-          std::max({a.z, b.z, c.z}) < p.z) {
-        continue;
-      }
-      const Sign s = predicates::projected_sign(a, b, c);
-      if (s == Sign::zero) continue;  // never crossed by an x ray
-      // The rule's four tests at p, each of which must equal s for a crossing:
-      // the three edges of the (y, z) projection, and the plane met ahead
-      // (-orient3d, see hit_side).
-      const Vec2 pa{a.y, a.z}, pb{b.y, b.z}, pc{c.y, c.z}, pp{p.y, p.z};
-      const Sign at_p[4] = {predicates::orient2d(pa, pb, pp), predicates::orient2d(pb, pc, pp),
-                            predicates::orient2d(pc, pa, pp), -predicates::orient3d(a, b, c, p)};
-      if (std::any_of(at_p, at_p + 4, [&](Sign e) { return e != Sign::zero && e != s; })) continue;
-      if (std::none_of(at_p, at_p + 4, [](Sign e) { return e == Sign::zero; })) {
-        parity_ = !parity_;
-      } else {
-        open_.push_back(Triangle3{a, b, c});
-      }
-    }
+// The mesh's signed crossings from the samples near p (inside/mesh_ray.h).
+detail::MeshRay mesh_ray(const Mesh& mesh, Vec3 p) {
+  detail::MeshRay ray(p);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle3 tri = mesh.triangle(t);
+    ray.add(tri.a, tri.b, tri.c);
   }
-
-  // Whether the sample is inside the mesh (odd number of crossings).
-  [[nodiscard]] bool inside(const detail::SymbolicOffset& at) const {
-    bool odd = parity_;
-    const SampleOffset offset{&at};
-    for (const Triangle3& t : open_)
-      odd = odd != predicates::perturbed_ray_crosses(t.a, t.b, t.c, p_, offset);
-    return odd;
-  }
-
- private:
-  Vec3 p_;
-  bool parity_ = false;          // crossings decided at p itself
-  std::vector<Triangle3> open_;  // triangles with a test that vanishes at p
-};
+  return ray;
+}
 
 BigVec3 axis(int k, double s) {
   return to_big(Vec3{k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0});
@@ -350,14 +298,14 @@ Location CsgSolid::locate(Vec3 p) const {
   // p is on the boundary of leaves that matter: analyse its neighbourhood.
   std::vector<LocalConstraint> constraints;
   std::vector<std::int32_t> first(leaves_.size() + 1, 0);
-  std::vector<MeshRay> rays;  // per leaf, for meshes on whose surface p lies
+  std::vector<detail::MeshRay> rays;  // per leaf, for meshes on whose surface p lies
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
     first[i] = static_cast<std::int32_t>(constraints.size());
     if (at[i] == Location::boundary) {
       local_constraints(leaves_[i], p, constraints);
       if (const auto* m = std::get_if<CsgMesh>(&leaves_[i])) {
         rays.resize(leaves_.size());
-        rays[i] = MeshRay(m->mesh(), p);
+        rays[i] = mesh_ray(m->mesh(), p);
       }
     }
     first[i + 1] = static_cast<std::int32_t>(constraints.size());
@@ -368,7 +316,7 @@ Location CsgSolid::locate(Vec3 p) const {
              const auto i = static_cast<std::size_t>(leaf);
              if (at[i] != Location::boundary) return static_cast<int>(at[i]);
              if (std::holds_alternative<CsgMesh>(leaves_[i])) {
-               return rays[i].inside(sample) ? 1 : -1;
+               return mesh_indexes_[i]->inside_by_count(rays[i].winding(sample)) ? 1 : -1;
              }
              for (std::int32_t k = first[i]; k < first[i + 1]; ++k) {
                if (positive[static_cast<std::size_t>(k)] == 0) return -1;

@@ -9,7 +9,9 @@
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
+#include "contain/shapes/mesh_closure.h"
 #include "contain/values/triangle.h"
+#include "inside/mesh_ray.h"
 
 // Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  validate_mesh             the report, which picks the regime (not closed: winding number);
@@ -19,10 +21,10 @@
 //  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
 //                            comparisons; big triangles tested against each cell's box along
 //                            their normal) -> surface cells and their triangle lists;
-//  settle_empty_cells        row by row from +x to -x, the answer at one point of each empty
-//                            cell, by the same run along the row that queries use (it stops at
-//                            the next empty cell to the right, whose answer is already known,
-//                            or at the end of the grid: outside).
+//  settle_empty_cells        row by row from +x to -x, the winding number at one point of each
+//                            empty cell, by the same run along the row that queries use (it
+//                            stops at the next empty cell to the right, whose count is already
+//                            known, or at the end of the grid: zero beyond).
 
 namespace contain::inside {
 
@@ -45,32 +47,47 @@ float float_above(double v) {
   return f;
 }
 
-// True only if the closed box and the triangle are certainly disjoint: their projections on the
+// True only if a closed box and the triangle are certainly disjoint: their projections on the
 // triangle's (floating-point) normal n, computed in floating point, are apart by more than a
 // bound on the rounding errors of both. Any fixed n separates exactly when the exact
-// projections are apart, so the answer needs no exact n. Overflow or NaN: never separated.
-template <class Tri>
-bool separated_by_plane(const Tri& t, const Box3& box) {
-  const Vec3 n = cross(t.b - t.a, t.c - t.a);
-  const double ta = dot(n, t.a), tb = dot(n, t.b), tc = dot(n, t.c);
-  const double tmin = std::min({ta, tb, tc}), tmax = std::max({ta, tb, tc});
-  double bmin = 0.0, bmax = 0.0, scale = 0.0;
-  const double nv[3] = {n.x, n.y, n.z};
-  const double lo[3] = {box.min.x, box.min.y, box.min.z}, hi[3] = {box.max.x, box.max.y, box.max.z};
-  const double tv[3][3] = {{t.a.x, t.b.x, t.c.x}, {t.a.y, t.b.y, t.c.y}, {t.a.z, t.b.z, t.c.z}};
-  for (int d = 0; d < 3; ++d) {
-    const double p = nv[d] * lo[d], q = nv[d] * hi[d];
-    bmin += std::min(p, q);
-    bmax += std::max(p, q);
-    const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), std::abs(tv[d][0]),
-                               std::abs(tv[d][1]), std::abs(tv[d][2])});
-    scale += std::abs(nv[d]) * m;
+// projections are apart, so the answer needs no exact n. Overflow or NaN: never separated. The
+// triangle's part is computed once (a big triangle is tested against many cells).
+class PlaneSeparation {
+ public:
+  PlaneSeparation() = default;
+  template <class Tri>
+  explicit PlaneSeparation(const Tri& t) : n_(cross(t.b - t.a, t.c - t.a)) {
+    const double ta = dot(n_, t.a), tb = dot(n_, t.b), tc = dot(n_, t.c);
+    tmin_ = std::min({ta, tb, tc});
+    tmax_ = std::max({ta, tb, tc});
+    const double tv[3][3] = {{t.a.x, t.b.x, t.c.x}, {t.a.y, t.b.y, t.c.y}, {t.a.z, t.b.z, t.c.z}};
+    for (int d = 0; d < 3; ++d)
+      tabs_[d] = std::max({std::abs(tv[d][0]), std::abs(tv[d][1]), std::abs(tv[d][2])});
   }
-  // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
-  // a generous multiple of u = 2^-53.
-  const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
-  return bmin > tmax + margin || bmax < tmin - margin;
-}
+
+  [[nodiscard]] bool separates(const Box3& box) const {
+    double bmin = 0.0, bmax = 0.0, scale = 0.0;
+    const double nv[3] = {n_.x, n_.y, n_.z};
+    const double lo[3] = {box.min.x, box.min.y, box.min.z};
+    const double hi[3] = {box.max.x, box.max.y, box.max.z};
+    for (int d = 0; d < 3; ++d) {
+      const double p = nv[d] * lo[d], q = nv[d] * hi[d];
+      bmin += std::min(p, q);
+      bmax += std::max(p, q);
+      const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), tabs_[d]});
+      scale += std::abs(nv[d]) * m;
+    }
+    // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
+    // a generous multiple of u = 2^-53.
+    const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
+    return bmin > tmax_ + margin || bmax < tmin_ - margin;
+  }
+
+ private:
+  Vec3 n_;
+  double tmin_ = 0.0, tmax_ = 0.0;
+  double tabs_[3] = {0.0, 0.0, 0.0};
+};
 
 // Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
 // max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
@@ -118,6 +135,17 @@ std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
   return n;
 }
 
+// The cost model: building the grid takes about kGridCost a triangle, a query without it about
+// kDirectCost a triangle (one pass over all of them); with the grid a query costs next to
+// nothing. So the grid pays from about kGridCost / kDirectCost queries on, whatever the size.
+// Measured on a 100k-triangle torus and on armadillo, one thread (bench/results/debian12-2core/
+// point_in_mesh.txt): about 1.3 us a triangle to build, 4-6 ns a triangle a direct query.
+constexpr double kGridCost = 1300.0, kDirectCost = 5.0;
+
+bool few_queries(std::size_t queries) {
+  return queries > 0 && static_cast<double>(queries) * kDirectCost < kGridCost;
+}
+
 }  // namespace
 
 const char* to_string(MeshRegime regime) {
@@ -127,13 +155,19 @@ const char* to_string(MeshRegime regime) {
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
   read_triangles(mesh);
-  if (!report_.closed()) {
+  // The solid's closedness (every directed edge matched, by position) gives a winding number;
+  // by index, closed and consistently oriented implies it, and the search is needed only when
+  // the report cannot tell.
+  const bool matched = (report_.closed() && report_.consistently_oriented()) ||
+                       (!tris_.empty() && !unmatched_edge(mesh).has_value());
+  if (!matched && !report_.closed()) {
     regime_ = MeshRegime::winding_number;
     winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
     return;
   }
   regime_ = MeshRegime::closed_exact;
-  if (tris_.empty()) return;
+  by_parity_ = !matched;
+  if (tris_.empty() || few_queries(options.queries)) return;  // no grid: locate_direct
   const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
@@ -192,33 +226,38 @@ std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& box
   return sorted_boxes;
 }
 
-// Triangle boxes -> closed cells (two passes: count, then fill).
+// Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
+// counting sort by cell keeps that order within each cell.
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
-  std::vector<std::uint32_t> count(cell_count + 1, 0);
-  auto for_cells = [&](std::size_t t, auto&& f) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
+  pairs.reserve(4 * boxes.size());
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
     const Box3& b = boxes[t];
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
     const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
     const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
     // A triangle whose box spans several cells is tested against each cell's box along its
-    // normal, conservatively (separated_by_plane): fewer surface cells under big triangles.
+    // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
+    const PlaneSeparation plane = big ? PlaneSeparation(tris_[t]) : PlaneSeparation();
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
-          const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j),
-                     ku = static_cast<std::size_t>(k);
-          if (big &&
-              separated_by_plane(tris_[t], {{x_.line(i), y_.line(j), z_.line(k)},
-                                            {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
+          if (big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
+                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
             continue;
           }
-          f((ku * static_cast<std::size_t>(ny_) + ju) * static_cast<std::size_t>(nx_) + iu);
+          const std::size_t c = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                                 static_cast<std::size_t>(j)) *
+                                    static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(i);
+          pairs.emplace_back(c, static_cast<std::uint32_t>(t));
         }
-  };
-  for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(t, [&](std::size_t c) { ++count[c]; });
+  }
+  std::vector<std::uint32_t> count(cell_count, 0);
+  for (const auto& [c, t] : pairs)
+    ++count[c];
   state_.assign(cell_count, 0);
   surface_.assign(cell_count, 0);
   cell_start_.clear();
@@ -232,13 +271,10 @@ void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
     cell_start_.push_back(cell_start_.back() + count[c]);
   }
   refs_.resize(cell_start_.back());
-  for (std::size_t t = 0; t < boxes.size(); ++t)
-    for_cells(t, [&](std::size_t c) {
-      const Tri& tri = tris_[t];
-      refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]},
-                          {tri.hi[0], tri.hi[1], tri.hi[2]},
-                          static_cast<std::uint32_t>(t)};
-    });
+  for (const auto& [c, t] : pairs) {
+    const Tri& tri = tris_[t];
+    refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
+  }
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();
 }
@@ -255,8 +291,9 @@ void MeshIndex::settle_empty_cells() {
       for (int i = nx_ - 1; i >= 0; --i) {
         if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
         const Vec3 m{x_.line(i), y, z};
-        const bool odd = i + 1 < nx_ && odd_run(m, row, i + 1, false);
-        state_[row + static_cast<std::size_t>(i)] = odd ? 1 : 0;
+        const int count = i + 1 < nx_ ? count_run(m, row, i + 1, false) : 0;
+        state_[row + static_cast<std::size_t>(i)] = inside_by_count(count) ? 1 : 0;
+        surface_[row + static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(count);
       }
     }
   }
@@ -272,14 +309,17 @@ bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
   return point_in_triangle(Triangle3{t.a, t.b, t.c}, p) != Location::outside;
 }
 
-// Parity of the perturbed hits of the +x ray from q through the cells first, first + 1, ... of
-// the row until an empty cell (its answer is added) or the end of the grid (outside beyond).
-// q lies in cell `first` when q_in_first, else at or left of its lower plane in an empty cell.
-bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
-  bool odd = false;
+// Signed count of the perturbed hits of the +x ray from q through the cells first, first + 1,
+// ... of the row until an empty cell (its count is added) or the end of the grid (nothing
+// beyond). q lies in cell `first` when q_in_first, else at or left of its lower plane in an
+// empty cell.
+int MeshIndex::count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
+  int count = 0;
   for (int i = first; i < nx_; ++i) {
     const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
-    if (state < 2) return odd != (state == 1);
+    if (state < 2) {
+      return count + static_cast<std::int32_t>(surface_[row + static_cast<std::size_t>(i)]);
+    }
     const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
     // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
@@ -300,10 +340,10 @@ bool MeshIndex::odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) con
         continue;
       }
       if (test_upper && predicates::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
-      odd = !odd;
+      count += to_int(t.s);
     }
   }
-  return odd;
+  return count;
 }
 
 Location MeshIndex::locate(Vec3 p) const {
@@ -312,7 +352,8 @@ Location MeshIndex::locate(Vec3 p) const {
 }
 
 Location MeshIndex::locate_exact(Vec3 p) const {
-  if (state_.empty() || !bounds_.contains(p)) return Location::outside;
+  if (!bounds_.contains(p)) return Location::outside;
+  if (state_.empty()) return locate_direct(p);
   const int i = x_.cell_of(p.x);
   const int j = y_.cell_of(p.y);
   const int k = z_.cell_of(p.z);
@@ -324,13 +365,91 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
     if (!outside_box(refs_[r], p) && on_triangle(tris_[refs_[r].tri], p)) {
-      return Location::boundary;
+      return by_parity_ ? Location::boundary : locate_on_surface(p);
     }
   }
   // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
   // a point there that is not on the surface is outside (the solid's interior is open).
   if (p.y == bounds_.max.y || p.z == bounds_.max.z) return Location::outside;
-  return odd_run(p, row, i, true) ? Location::inside : Location::outside;
+  return inside_by_count(count_run(p, row, i, true)) ? Location::inside : Location::outside;
+}
+
+// Without a grid (few queries): every triangle, the same tests. A triangle whose box misses the
+// closed ray from p neither holds p nor is crossed.
+Location MeshIndex::locate_direct(Vec3 p) const {
+  int count = 0;
+  for (const Tri& t : tris_) {
+    if ((p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) | (p.z > t.hi[2])) {
+      continue;
+    }
+    if (on_triangle(t, p)) {
+      if (by_parity_) return Location::boundary;
+      std::vector<std::uint32_t> near;
+      for (std::uint32_t u = 0; u < tris_.size(); ++u) {
+        const Tri& v = tris_[u];
+        if (!((p.x > v.hi[0]) | (p.y < v.lo[1]) | (p.y > v.hi[1]) | (p.z < v.lo[2]) |
+              (p.z > v.hi[2]))) {
+          near.push_back(u);
+        }
+      }
+      return classify_on_surface(p, near);
+    }
+    if (t.s != Sign::zero && predicates::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, p) &&
+        predicates::hit_side(t.a, t.b, t.c, t.s, p) > 0) {
+      count += to_int(t.s);
+    }
+  }
+  return inside_by_count(count) ? Location::inside : Location::outside;
+}
+
+// A point on some triangle: the solid near it (inside/mesh_ray.h). Every triangle that the ray
+// from a sample near p may meet meets the closed segment from p along +x to the grid's end, so
+// it is listed in a closed cell of the rows whose closed (y, z) span holds p, from p's column on.
+Location MeshIndex::locate_on_surface(Vec3 p) const {
+  const auto [i0, i1] = x_.cells_meeting(p.x, p.x);
+  const auto [j0, j1] = y_.cells_meeting(p.y, p.y);
+  const auto [k0, k1] = z_.cells_meeting(p.z, p.z);
+  (void)i1;
+  std::vector<std::uint32_t> near;
+  for (int k = k0; k <= k1; ++k) {
+    for (int j = j0; j <= j1; ++j) {
+      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                               static_cast<std::size_t>(j)) *
+                              static_cast<std::size_t>(nx_);
+      for (int i = i0; i < nx_; ++i) {
+        const std::size_t c = row + static_cast<std::size_t>(i);
+        if (state_[c] != 2) continue;
+        const std::uint32_t cell = surface_[c];
+        for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
+          const CellRef& ref = refs_[r];
+          if ((p.x > ref.hi[0]) | (p.y < ref.lo[1]) | (p.y > ref.hi[1]) | (p.z < ref.lo[2]) |
+              (p.z > ref.hi[2])) {
+            continue;
+          }
+          near.push_back(ref.tri);
+        }
+      }
+    }
+  }
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  return classify_on_surface(p, near);
+}
+
+// p on the surface, `near` every triangle that the ray from a sample near p may meet.
+Location MeshIndex::classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const {
+  detail::MeshRay ray(p);
+  std::vector<detail::LocalConstraint> planes;
+  Triangle3 face;  // the first triangle through p with a plane
+  for (const std::uint32_t t : near) {
+    const Tri& tri = tris_[t];
+    ray.add(tri.a, tri.b, tri.c);
+    const std::size_t before = planes.size();
+    detail::add_plane_through(tri.a, tri.b, tri.c, p, planes);
+    if (before == 0 && planes.size() == 1) face = {tri.a, tri.b, tri.c};
+  }
+  return detail::classify_surface_point(planes, face, p, ray,
+                                        [&](int count) { return inside_by_count(count); });
 }
 
 Location MeshIndex::locate_winding(Vec3 p) const {

@@ -70,6 +70,7 @@ MeshReport read_report(index_bytes::Reader& r) {
 
 void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   w.put<std::uint8_t>(static_cast<std::uint8_t>(index.regime_));
+  w.put<std::uint8_t>(index.by_parity_ ? 1 : 0);
   write_report(index.report_, w);
   // The records are copied whole: a change of Tri's layout must change index_format_version.
   static_assert(sizeof(MeshIndex::Tri) == 104 && offsetof(MeshIndex::Tri, lo) == 72 &&
@@ -93,11 +94,8 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   w.put(index.y_);
   w.put(index.z_);
   w.put_array<std::uint8_t>(index.state_);
-  std::vector<std::uint32_t> surface;  // the numbers of the surface cells, in cell order
-  surface.reserve(index.cell_start_.empty() ? 0 : index.cell_start_.size() - 1);
-  for (std::size_t c = 0; c < index.state_.size(); ++c)
-    if (index.state_[c] == 2) surface.push_back(index.surface_[c]);
-  w.put_array<std::uint32_t>(surface);
+  // Every cell's word: a surface cell's number, an empty cell's winding number.
+  w.put_array<std::uint32_t>(index.surface_);
   w.put_array<std::uint32_t>(index.cell_start_);
   std::vector<std::uint32_t> refs(index.refs_.size());
   std::transform(index.refs_.begin(), index.refs_.end(), refs.begin(),
@@ -111,6 +109,7 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
 Result<MeshIndex> MeshIndexFile::read(index_bytes::Reader& r) {
   MeshIndex index;
   const auto regime = r.get<std::uint8_t>();
+  const auto by_parity = r.get<std::uint8_t>();
   index.report_ = read_report(r);
   index.tris_ = r.get_array<MeshIndex::Tri>();
   const double accuracy = r.get_double();
@@ -126,7 +125,9 @@ Result<MeshIndex> MeshIndexFile::read(index_bytes::Reader& r) {
     *v = static_cast<std::size_t>(r.get<std::uint64_t>());
   if (Status done = r.finish(); !done) return done.error();
   if (regime > 1) return bad("unknown mesh regime");
+  if (by_parity > 1) return bad("the parity flag is not 0 or 1");
   index.regime_ = static_cast<MeshRegime>(regime);
+  index.by_parity_ = by_parity == 1;
   if (Status t = check_triangles(index); !t) return t.error();
   if (index.regime_ == MeshRegime::winding_number) {
     if (!(accuracy > 0.0) || !std::isfinite(accuracy)) return bad("winding accuracy");
@@ -152,9 +153,12 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
   const std::size_t cells = static_cast<std::size_t>(index.nx_) *
                             static_cast<std::size_t>(index.ny_) *
                             static_cast<std::size_t>(index.nz_);
-  if (triangles == 0) {
-    if (cells != 0 || !index.state_.empty() || !index.cell_start_.empty() || !refs.empty())
-      return bad("an empty mesh's index holds a grid");
+  if (triangles == 0 || index.state_.empty()) {
+    // An empty mesh, or an index built for few queries (MeshIndexOptions::queries): no grid.
+    if (cells != 0 || !index.state_.empty() || !index.cell_start_.empty() || !refs.empty() ||
+        !surface.empty()) {
+      return bad("an index without a grid holds part of one");
+    }
     return index;
   }
   const Box3& b = index.bounds_;
@@ -166,7 +170,7 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
   }
   const std::vector<std::uint32_t>& start = index.cell_start_;
   if (start.empty() || start.front() != 0 || start.back() != refs.size() ||
-      !std::is_sorted(start.begin(), start.end()) || surface.size() != start.size() - 1) {
+      !std::is_sorted(start.begin(), start.end()) || surface.size() != cells) {
     return bad("the surface cells' lists are malformed");
   }
   index.surface_.assign(cells, 0);
@@ -174,11 +178,16 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
   for (std::size_t c = 0; c < cells; ++c) {
     const std::uint8_t state = index.state_[c];
     if (state > 2) return bad("a cell's state is not 0, 1 or 2");
-    if (state < 2) continue;
-    if (k == surface.size() || surface[k] >= surface.size()) return bad("a surface cell number");
-    index.surface_[c] = surface[k++];
+    index.surface_[c] = surface[c];
+    if (state < 2) {
+      // An empty cell's state is its winding number's answer.
+      if (index.inside_by_count(static_cast<std::int32_t>(surface[c])) != (state == 1))
+        return bad("an empty cell's state and winding number disagree");
+      continue;
+    }
+    if (surface[c] != k++) return bad("a surface cell number");
   }
-  if (k != surface.size()) return bad("the surface cells' count");
+  if (k != start.size() - 1) return bad("the surface cells' count");
   index.refs_.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     if (refs[i] >= triangles) return bad("a cell lists a triangle that does not exist");

@@ -57,10 +57,22 @@ std::string mesh_warning(inside::MeshRegime regime, const MeshReport& report) {
     if (report.duplicated_triangles > 0) {
       notes.push_back(plural(report.duplicated_triangles, "duplicated triangle"));
     }
-    if (notes.empty()) return "";
-    return "mesh has " + joined(notes) +
-           "; every edge has exactly two triangles, so the answers (closed-exact ray parity) are "
-           "still exact";
+    // A whole mesh turned inside out is an empty solid: every point is 'out', which a user who
+    // meant the solid it wraps must hear of.
+    const bool inverted = report.inconsistent_edges == 0 && report.signed_volume < 0.0;
+    if (notes.empty() && !inverted) return "";
+    const std::string inside_out =
+        "mesh is turned inside out (negative volume): as a solid (where its winding number is "
+        "positive) a shell turned inside out subtracts and alone holds no point, so the points it "
+        "wraps are 'out'; reverse its triangles for the solid it bounds";
+    if (notes.empty()) return inside_out;
+    // Without a consistent orientation there is no winding number: the answers are ray parity.
+    const std::string exact = report.inconsistent_edges > 0
+                                  ? "; every edge has exactly two triangles, so the answers "
+                                    "(closed-exact ray parity) are still exact"
+                                  : "; the mesh is closed, so the answers (the solid of its "
+                                    "winding number) are still exact";
+    return "mesh has " + joined(notes) + exact + (inverted ? "; " + inside_out : "");
   }
   std::vector<std::string> why;
   if (report.triangles == 0) why.push_back("no triangles");

@@ -13,10 +13,11 @@
 #include "contain/predicates/orient2d.h"
 #include "contain/values/box.h"
 
-// Outline: one record per (edge, triangle) sorted by edge gives border, non-manifold and
-// inconsistent edges; the same groups join triangle corners at both end vertices (a vertex whose
-// corners fall into several groups is a pinch vertex); vertices joined by edges give the
-// components; sorted vertex triples give duplicates; exact orientations give degenerate faces.
+// Outline: one record per (edge, triangle) sorted by edge (counting sorts) gives border,
+// non-manifold and inconsistent edges; the same groups join triangle corners at both end vertices
+// (a vertex whose corners fall into several groups is a pinch vertex); vertices joined by edges
+// give the components; sorted vertex triples give duplicates; exact orientations give degenerate
+// faces.
 
 namespace contain::shapes {
 
@@ -37,6 +38,86 @@ bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
 
 std::size_t corner_of(const TriangleIndices& t, std::int32_t v) {
   return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+}
+
+// The positions 0 .. n - 1 ordered by key(i) in [0, keys), equal keys in their given order: a
+// counting sort, O(n + keys), where a comparison sort of the hundreds of thousands of records
+// of a large mesh took most of the validation's time.
+template <class Key>
+std::vector<std::uint32_t> counting_order(std::size_t n, std::size_t keys, const Key& key,
+                                          const std::vector<std::uint32_t>* within = nullptr) {
+  std::vector<std::uint32_t> start(keys + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    ++start[key(i) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t at = within ? (*within)[i] : i;
+    order[start[key(at)]++] = static_cast<std::uint32_t>(at);
+  }
+  return order;
+}
+
+// The edge uses in the order of (lo, hi, triangle): two stable counting sorts (by hi, then by
+// lo) of uses made in triangle order.
+std::vector<EdgeUse> sorted_by_edge(const std::vector<EdgeUse>& uses, std::size_t vertices) {
+  const auto by_hi = counting_order(
+      uses.size(), vertices, [&](std::size_t i) { return static_cast<std::size_t>(uses[i].hi); });
+  const auto by_lo = counting_order(
+      uses.size(), vertices, [&](std::size_t i) { return static_cast<std::size_t>(uses[i].lo); },
+      &by_hi);
+  std::vector<EdgeUse> out(uses.size());
+  for (std::size_t i = 0; i < uses.size(); ++i)
+    out[i] = uses[by_lo[i]];
+  return out;
+}
+
+// Vertices (ascending) whose triangle corners fall into more than one group: pinch vertices.
+std::vector<std::int32_t> pinch_vertices(const Mesh& mesh, UnionFind<std::size_t>& corners) {
+  const std::size_t nc = 3 * mesh.triangles.size();
+  const auto vertex_of = [&](std::size_t c) {
+    return static_cast<std::size_t>(mesh.triangles[c / 3][c % 3]);
+  };
+  const auto order = counting_order(nc, mesh.vertices.size(), vertex_of);
+  std::vector<std::int32_t> out;
+  for (std::size_t g = 0; g < nc;) {
+    const std::size_t v = vertex_of(order[g]);
+    const std::size_t root = corners.find(order[g]);
+    bool pinch = false;
+    std::size_t h = g + 1;
+    for (; h < nc && vertex_of(order[h]) == v; ++h)
+      pinch = pinch || corners.find(order[h]) != root;
+    if (pinch) out.push_back(static_cast<std::int32_t>(v));
+    g = h;
+  }
+  return out;
+}
+
+// Triangles with the same three vertices as another (any order), counted past the first.
+std::size_t duplicated_triangles(const Mesh& mesh) {
+  const std::size_t nt = mesh.triangles.size();
+  std::vector<std::array<std::int32_t, 3>> sorted(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    sorted[t] = mesh.triangles[t];
+    std::sort(sorted[t].begin(), sorted[t].end());
+  }
+  // Grouped by the smallest vertex, then each (small) group sorted.
+  const auto order = counting_order(nt, mesh.vertices.size(), [&](std::size_t t) {
+    return static_cast<std::size_t>(sorted[t][0]);
+  });
+  std::size_t count = 0;
+  std::vector<std::array<std::int32_t, 3>> group;
+  for (std::size_t g = 0; g < nt;) {
+    group.clear();
+    std::size_t h = g;
+    for (; h < nt && sorted[order[h]][0] == sorted[order[g]][0]; ++h)
+      group.push_back(sorted[order[h]]);
+    std::sort(group.begin(), group.end());
+    for (std::size_t i = 1; i < group.size(); ++i)
+      count += group[i] == group[i - 1] ? 1 : 0;
+    g = h;
+  }
+  return count;
 }
 
 }  // namespace
@@ -69,9 +150,7 @@ MeshReport validate_mesh(const Mesh& mesh) {
     }
   }
   r.referenced_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
-  });
+  uses = sorted_by_edge(uses, mesh.vertices.size());
 
   // Corners: 3 t + k. A triangle with a repeated index joins its own corners at that vertex.
   UnionFind<std::size_t> corners(3 * nt);
@@ -106,35 +185,13 @@ MeshReport validate_mesh(const Mesh& mesh) {
     g = h;
   }
 
-  // Fans per vertex: distinct corner groups.
-  std::vector<std::pair<std::int32_t, std::size_t>> fans;
-  fans.reserve(3 * nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    for (std::size_t k = 0; k < 3; ++k)
-      fans.emplace_back(mesh.triangles[t][k], corners.find(3 * t + k));
-  }
-  std::sort(fans.begin(), fans.end());
-  fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
-  for (std::size_t i = 1; i < fans.size(); ++i) {
-    if (fans[i].first == fans[i - 1].first &&
-        (r.pinch_vertices.empty() || r.pinch_vertices.back() != fans[i].first)) {
-      r.pinch_vertices.push_back(fans[i].first);
-    }
-  }
+  r.pinch_vertices = pinch_vertices(mesh, corners);
 
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     if (used[v] && vertices.find(v) == v) ++r.components;
   }
 
-  std::vector<std::array<std::int32_t, 3>> sorted(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    sorted[t] = mesh.triangles[t];
-    std::sort(sorted[t].begin(), sorted[t].end());
-  }
-  std::sort(sorted.begin(), sorted.end());
-  for (std::size_t t = 1; t < nt; ++t) {
-    if (sorted[t] == sorted[t - 1]) ++r.duplicated_triangles;
-  }
+  r.duplicated_triangles = duplicated_triangles(mesh);
 
   r.euler_characteristic = static_cast<std::int64_t>(r.referenced_vertices) -
                            static_cast<std::int64_t>(r.edges) + static_cast<std::int64_t>(nt);

@@ -82,6 +82,34 @@ TEST(MeshIndexFile, LoadedClosedMeshesAnswerExactlyAsFresh) {
   }
 }
 
+TEST(MeshIndexFile, LoadedSolidsKeepTheirWindingNumbersParityAndGridlessIndexes) {
+  // Overlapping cubes (winding number 2 in the overlap, kept in the empty cells), the same with
+  // an inverted third cube, a cube with one triangle flipped (ray parity), and an index built
+  // for few queries (no grid).
+  Mesh overlap = test::grid_cube(0, 2, 1);
+  Mesh other = test::grid_cube(1, 3, 1);
+  const auto shift = static_cast<std::int32_t>(overlap.vertices.size());
+  overlap.vertices.insert(overlap.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (TriangleIndices t : other.triangles)
+    overlap.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  Mesh hollow = overlap;
+  Mesh inner = test::grid_cube(0.5, 1.5, 1);
+  const auto at = static_cast<std::int32_t>(hollow.vertices.size());
+  hollow.vertices.insert(hollow.vertices.end(), inner.vertices.begin(), inner.vertices.end());
+  for (TriangleIndices t : inner.triangles)
+    hollow.triangles.push_back({t[0] + at, t[2] + at, t[1] + at});
+  Mesh flipped = test::grid_cube(0, 2, 2);
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+  for (const Mesh& mesh : {overlap, hollow, flipped}) {
+    for (const std::size_t queries : {std::size_t{0}, std::size_t{1}}) {
+      const MeshIndex fresh(mesh, {.queries = queries});
+      ASSERT_EQ(fresh.regime(), MeshRegime::closed_exact);
+      expect_same_answers(fresh, round_trip(fresh), probes(mesh, 1500, 9));
+    }
+  }
+  EXPECT_EQ(round_trip(MeshIndex(overlap)).locate({1.5, 1.5, 1.5}), Location::inside);
+}
+
 TEST(MeshIndexFile, LoadedOpenMeshAnswersExactlyAsFreshWithItsWindingAccuracy) {
   Mesh open = test::grid_cube(0, 1, 2);
   open.triangles.pop_back();  // a hole: the winding number regime

@@ -44,7 +44,7 @@ TEST(MeshWarning, PinchVerticesArePluralNotVertexs) {
   MeshReport r = closed_report();
   r.pinch_vertices = {3, 8};
   EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r).substr(0, 74),
-            "mesh has 2 pinch vertices (not 2-manifold there; first: 4, 1-based); every");
+            "mesh has 2 pinch vertices (not 2-manifold there; first: 4, 1-based); the m");
 }
 
 TEST(MeshWarning, MeshWithoutTrianglesSaysSo) {
@@ -56,14 +56,31 @@ TEST(MeshWarning, ClosedMeshWithPinchOrDuplicatesSaysTheAnswersStayExact) {
   MeshReport r = closed_report();
   r.pinch_vertices = {253};
   EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r),
-            "mesh has 1 pinch vertex (not 2-manifold there; first: 254, 1-based); every edge has "
-            "exactly two triangles, so the answers (closed-exact ray parity) are still exact");
+            "mesh has 1 pinch vertex (not 2-manifold there; first: 254, 1-based); the mesh is "
+            "closed, so the answers (the solid of its winding number) are still exact");
   r.pinch_vertices.clear();
   r.duplicated_triangles = 1;
   r.degenerate_triangles = 2;
   EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r),
-            "mesh has 2 degenerate triangles, 1 duplicated triangle; every edge has exactly two "
-            "triangles, so the answers (closed-exact ray parity) are still exact");
+            "mesh has 2 degenerate triangles, 1 duplicated triangle; the mesh is closed, so the "
+            "answers (the solid of its winding number) are still exact");
+  r.duplicated_triangles = 0;
+  r.degenerate_triangles = 0;
+  r.inconsistent_edges = 2;
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r),
+            "mesh has inconsistent orientation (2 edges used in the same direction); every edge "
+            "has exactly two triangles, so the answers (closed-exact ray parity) are still exact");
+}
+
+TEST(MeshWarning, AMeshTurnedInsideOutSaysItsPointsAreOut) {
+  MeshReport r = closed_report();
+  r.signed_volume = -1.0;
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r).substr(0, 62),
+            "mesh is turned inside out (negative volume): as a solid (where");
+  EXPECT_NE(mesh_warning(MeshRegime::closed_exact, r).find("the points it wraps are 'out'"),
+            std::string::npos);
+  r.signed_volume = 1.0;
+  EXPECT_EQ(mesh_warning(MeshRegime::closed_exact, r), "");
 }
 
 TEST(MeshWarning, WordsTheReportOfARealOpenMesh) {

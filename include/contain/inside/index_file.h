@@ -51,7 +51,7 @@ enum class IndexKind : std::uint32_t {
 [[nodiscard]] const char* to_string(IndexKind kind);
 
 /// The format version this build writes and reads; a file of another version is refused.
-inline constexpr std::uint32_t index_format_version = 1;
+inline constexpr std::uint32_t index_format_version = 2;
 
 /// Bytes before the payload.
 inline constexpr std::size_t index_header_size = 64;

@@ -23,10 +23,12 @@ namespace contain::inside {
 
 /// How a `MeshIndex` answers, chosen from the mesh's `MeshReport`.
 enum class MeshRegime : std::uint8_t {
-  /// Every edge has exactly two triangles: exact ray parity; every answer is exact.
+  /// A closed mesh: every directed edge (by its corners' positions) occurs as often as its
+  /// reverse, or every edge has exactly two triangles. Exact: the solid of the mesh (winding
+  /// number positive), or ray parity where only the second holds (inconsistent orientation).
   closed_exact,
-  /// Border or non-manifold edges: inside where the generalized winding number is >= 0.5
-  /// (approximate near the surface); `boundary` is still exact.
+  /// Any other mesh (border edges, unmatched non-manifold edges): inside where the generalized
+  /// winding number is >= 0.5 (approximate near the surface); `boundary` is still exact.
   winding_number,
 };
 
@@ -43,38 +45,59 @@ struct MeshIndexOptions {
   std::size_t max_cells = std::size_t{1} << 24;
   /// Accuracy of the winding number regime (see `FastWindingNumberOptions`).
   double winding_accuracy = 3.0;
+  /// How many points the caller means to locate (0: not known, many). Building the grid costs
+  /// about as much as 260 queries without it (a measured cost model, mesh_index.cpp, whatever
+  /// the mesh's size); for fewer queries the exact regime builds no grid and each query tests
+  /// every triangle, with the same answers.
+  std::size_t queries = 0;
 };
 
 /// A triangle mesh prepared for exact point location.
 ///
-/// Regime `closed_exact` (every edge shared by exactly two triangles: a closed surface; its
-/// orientation does not matter). Answer: `boundary` if p lies on a triangle (orient3d == 0 and
-/// the exact point in triangle), else the parity of the crossings of the **perturbed +x ray
-/// rule** (docs/robustness.md; include/contain/predicates/perturbed_ray.h): the ray from p along
-/// +x, its origin moved symbolically by (0, e, e^2), so that it never meets an edge or a vertex;
-/// odd is `inside`. Exact on the given doubles for every point (checked against a GMP oracle),
-/// deterministic.
+/// Regime `closed_exact`, the **solid's rule** (the rule of `clip::mesh_boolean` and of
+/// ../shared/spec/cli.md, "Solids"), for a mesh whose directed edges all match (each occurs as
+/// often as its reverse, by position; non-manifold edges allowed): the solid is where the winding
+/// number is positive. Overlapping parts of a self-intersecting mesh count once; a shell turned
+/// inside out subtracts (alone it is empty: a whole mesh turned inside out holds no point). The
+/// winding number of a point off the surface is the signed count of the crossings of the
+/// **perturbed +x ray rule** (docs/robustness.md; include/contain/predicates/perturbed_ray.h):
+/// the ray from p along +x, its origin moved symbolically by (0, e, e^2), so that it never meets
+/// an edge or a vertex; a crossing counts +1 where the triangle's normal points along +x, -1
+/// where against. A point on a triangle (orient3d == 0 and the exact point in triangle) is
+/// `boundary` only where it lies on the solid's boundary: the open cells around it, cut by the
+/// planes of the triangles through it, are sampled symbolically (inside/csg_local.h) and it is
+/// `inside` if every one is inside (a face buried in another part, the shared face of two
+/// touching shells), `outside` if none is (a face of an inverted shell alone), else `boundary`.
+/// A mesh whose every edge has exactly two triangles but whose orientation is inconsistent has
+/// no winding number: there the answer is the crossing parity (odd is `inside`) and every
+/// surface point is `boundary`. Exact on the given doubles for every point (checked against a
+/// GMP oracle), deterministic.
 ///
 /// Structure: a uniform grid over the bounding box; a point is assigned its cell by exact
 /// comparisons with the grid lines (half-open cells, the last closed). Cells that no triangle's
-/// closed box meets (an exact, conservative test) hold no surface, so one answer holds in the
-/// whole closed cell: it is computed once at build time, row by row from +x to -x. A cell the
+/// closed box meets (an exact, conservative test) hold no surface, so one winding number holds in
+/// the whole closed cell: it is computed once at build time, row by row from +x to -x. A cell the
 /// surface may touch keeps its triangles; a query there follows its own ray along the row of
-/// cells until the first empty cell, whose answer it inherits, counting the perturbed hits
+/// cells until the first empty cell, whose winding number it adds, counting the perturbed hits
 /// inside each cell's half-open slab [X_i, X_i+1) of x (a hit exactly on a grid plane is decided
 /// by the same perturbation), so each hit is counted once.
 ///
-/// Regime `winding_number` (border or non-manifold edges): `boundary` exactly as above, else
-/// `inside` where the generalized winding number is >= 0.5 (FastWindingNumber; floating point).
-/// `regime()` and `report()` say which regime applies and why, as data (the command and the
-/// Python module word them with `io::mesh_warning`); pinch vertices, inconsistent orientation
-/// and degenerate or duplicated triangles of a closed mesh keep the exact regime.
+/// Regime `winding_number` (any other mesh: border edges, unmatched edges): `boundary` exactly as
+/// a point on a triangle, else `inside` where the generalized winding number is >= 0.5
+/// (FastWindingNumber; floating point). `regime()` and `report()` say which regime applies and
+/// why, as data (the command and the Python module word them with `io::mesh_warning`); pinch
+/// vertices, inconsistent orientation and degenerate or duplicated triangles of a closed mesh
+/// keep the exact regime.
 ///
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
-/// in an empty cell, else O(triangles met along the run of surface cells); winding regime about
-/// O(log n). Thread safety: const queries may run concurrently; answers do not depend on the
-/// thread count. Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray parity), Edelsbrunner
-/// and Muecke 1990 (SoS).
+/// in an empty cell, else O(triangles met along the run of surface cells); a point on the surface
+/// O(triangles in the rows of cells from it along +x) when two samples beside one face through it
+/// prove it `boundary` (the usual case), else the sampling of the k planes through it, which
+/// grows faster than k^3: a vertex of degree 64 that is buried in another part or lies on an
+/// inverted shell takes seconds (a known gap); winding regime about O(log n). Thread
+/// safety: const queries may run concurrently; answers do not depend on the thread count.
+/// Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray crossings), Edelsbrunner and Muecke
+/// 1990 (SoS).
 class MeshIndex {
  public:
   /// An empty index: every point is `outside`.
@@ -92,6 +115,12 @@ class MeshIndex {
 
   /// The regime in use.
   [[nodiscard]] MeshRegime regime() const { return regime_; }
+  /// Regime `closed_exact` only: whether a point whose signed crossing count (as the class
+  /// comment counts it) is `count` is inside: `count > 0` (the solid's rule), or `count` odd for
+  /// a mesh without a winding number (every edge of two triangles, inconsistent orientation).
+  [[nodiscard]] bool inside_by_count(int count) const {
+    return by_parity_ ? (count & 1) != 0 : count > 0;
+  }
   /// The validation of the mesh.
   [[nodiscard]] const MeshReport& report() const { return report_; }
   /// The bounding box of the triangles.
@@ -100,7 +129,7 @@ class MeshIndex {
   /// Sizes of the structure, for benchmarks and tuning.
   struct Stats {
     std::size_t triangles = 0;
-    std::size_t cells = 0;          ///< grid cells (exact regime)
+    std::size_t cells = 0;          ///< grid cells (exact regime; 0 without a grid: few queries)
     std::size_t surface_cells = 0;  ///< cells some triangle's box meets
     std::size_t cell_refs = 0;      ///< triangle-cell pairs
     int nx = 0, ny = 0, nz = 0;
@@ -135,11 +164,15 @@ class MeshIndex {
            (p.z > r.hi[2]);
   }
   [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
-  [[nodiscard]] bool odd_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
+  [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
+  [[nodiscard]] Location locate_direct(Vec3 p) const;
+  [[nodiscard]] Location locate_on_surface(Vec3 p) const;
+  [[nodiscard]] Location classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const;
   [[nodiscard]] Location locate_winding(Vec3 p) const;
 
   MeshRegime regime_ = MeshRegime::closed_exact;
+  bool by_parity_ = false;  // closed_exact without a winding number: inside where the count is odd
   MeshReport report_;
   Box3 bounds_;
   std::vector<Tri> tris_;
@@ -149,7 +182,9 @@ class MeshIndex {
   // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
   // most queries read stays small in cache).
   std::vector<std::uint8_t> state_;
-  std::vector<std::uint32_t> surface_;  // per cell: its surface cell number k, where state 2
+  // Per cell: where state 2, its surface cell number k; in an empty cell, its signed crossing
+  // count (the winding number), as the two's complement bits of an int32.
+  std::vector<std::uint32_t> surface_;
 
   std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
   std::vector<CellRef> refs_;

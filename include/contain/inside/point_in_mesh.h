@@ -11,9 +11,10 @@
 namespace contain::inside {
 
 /// Where `p` lies relative to the solid bounded by `mesh`: exactly `MeshIndex(mesh).locate(p)`
-/// (exact ray parity for a closed mesh, the generalized winding number otherwise; `boundary`
-/// exactly on the surface). Builds the index each call: O(n log n) for n triangles; use
-/// `MeshIndex` for more than one point.
+/// (for a closed mesh the solid of its winding number, the generalized winding number otherwise;
+/// `boundary` exactly on the solid's boundary). Validates the mesh and tests every triangle,
+/// building no grid (`MeshIndexOptions::queries` = 1): O(n log n) for n triangles; use
+/// `MeshIndex` for many points.
 [[nodiscard]] Location point_in_mesh(const Mesh& mesh, Vec3 p,
                                      const MeshIndexOptions& options = {});
 
