@@ -357,7 +357,8 @@ TEST(MeshBoolean, ATorusWithItselfTurnedAQuarterEndsValidOrWithTheDegenerateErro
   const mpq_class torus = exact_volume(a);
   const std::vector<Mesh> in = {a, turned};
   int valid = 0;
-  for (const Op op : all_ops) {
+  // Not the xor: like the difference it ends in the error, at the same cost.
+  for (const Op op : {Op::union_, Op::intersection, Op::difference}) {
     const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in, {.op = op});
     if (!r) {
       EXPECT_EQ(r.error().kind, ErrorKind::degenerate) << r.error().message;
