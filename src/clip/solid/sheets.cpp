@@ -87,6 +87,50 @@ struct Fan {
   std::size_t shift = 0;
 };
 
+// The face each q -> p face of the fan is joined with. Sorted by angle, the faces of an exact
+// result alternate in direction, and each q -> p face is paired with the face 1 + 2 shift places
+// after it. Rounding can break the alternation: points merged into one vertex can bring two
+// faces of opposite directions into one half-plane (a fold of zero width, sorted either way) or
+// fold a face past another. There each q -> p face is paired with a p -> q face as brackets are
+// (q -> p opens, p -> q closes, from the place where the open count is lowest), which pairs a
+// fold's two faces when they sort in the alternating order and still when they do not: every
+// directed edge is then matched once, and the check of the written mesh finds the fold's
+// crossing as a pair to repair (a local snap round), not as an unmatched edge (a whole one).
+std::vector<std::size_t> partners(const Fan& fan) {
+  const std::size_t n = fan.sorted.size();
+  std::vector<std::size_t> partner(n, 0);
+  bool alternating = true;
+  for (std::size_t i = 0; i < n; ++i)
+    alternating = alternating && fan.sorted[i].forward != fan.sorted[(i + 1) % n].forward;
+  if (alternating) {
+    for (std::size_t i = 0; i < n; ++i)
+      partner[i] = (i + 1 + 2 * fan.shift) % n;
+    return partner;
+  }
+  // The faces of an edge are balanced (as many q -> p as p -> q: merging points and cancelling
+  // faces keeps that), so after the lowest open count every bracket closes.
+  std::ptrdiff_t open = 0, lowest = 0;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    open += fan.sorted[i].forward ? -1 : 1;
+    if (open < lowest) {
+      lowest = open;
+      start = i + 1;
+    }
+  }
+  std::vector<std::size_t> pending;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (start + k) % n;
+    if (!fan.sorted[i].forward) {
+      pending.push_back(i);
+    } else if (!pending.empty()) {
+      partner[pending.back()] = i;
+      pending.pop_back();
+    }
+  }
+  return partner;
+}
+
 struct Grouping {
   std::vector<std::pair<Use, Use>> manifold;  // the two faces of an edge held by two
   std::vector<Fan> fans;
@@ -102,9 +146,9 @@ struct Grouping {
     for (const auto& [a, b] : manifold)
       join(a, b);
     for (const Fan& fan : fans) {
-      const std::size_t n = fan.sorted.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!fan.sorted[i].forward) join(fan.sorted[i], fan.sorted[(i + 1 + 2 * fan.shift) % n]);
+      const std::vector<std::size_t> partner = partners(fan);
+      for (std::size_t i = 0; i < fan.sorted.size(); ++i) {
+        if (!fan.sorted[i].forward) join(fan.sorted[i], fan.sorted[partner[i]]);
       }
     }
     return sets;

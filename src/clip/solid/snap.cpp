@@ -172,6 +172,23 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
   return out;
 }
 
+// A snap round that grows the work instead of mending (rule solid-output): the faces of nearly
+// coincident surfaces (a torus minus itself turned a quarter) folded by rounding and merging
+// cross by the thousand, and refining such a round (hundreds of crossings in one triangle) or
+// the next ones runs for minutes. The bounds, with F the first written mesh's triangles: a
+// round writes at most 2 F + 64 triangles, and its pair stage (before refining) finds at most
+// 8 (2 F + 64) new crossings in all and at most 128 in one triangle.
+constexpr std::size_t max_crossings_in_one = 128;
+
+Error not_converging(std::size_t found, const char* what, std::size_t bound) {
+  return Error{.kind = ErrorKind::degenerate,
+               .message =
+                   "the result rounded to doubles is not valid, and snap rounding does "
+                   "not converge: a round " +
+                   std::string(what) + " " + std::to_string(found) + " (more than " +
+                   std::to_string(bound) + ")"};
+}
+
 // The written mesh's own arrangement, exactly, kept as a union (the solid where its winding
 // number is positive) and written at merge `level`. Only the pairs of triangles of `crossing`
 // (those of the pairs the check found meeting wrongly; every triangle after an edge failure)
@@ -182,7 +199,7 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
 // on zero-area triangles: the round then drops them, they bound nothing). The labels still cast
 // their rays through the whole mesh.
 Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
-                         double scale) {
+                         double scale, std::size_t limit) {
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
@@ -191,6 +208,16 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);
+  std::size_t constraints = 0, most = 0;
+  for (const TriangleWork& w : work) {
+    constraints += w.constraints.size();
+    most = std::max(most, w.constraints.size());
+  }
+  if (most > max_crossings_in_one) {
+    return not_converging(most, "found new crossings in one triangle:", max_crossings_in_one);
+  }
+  if (constraints > 8 * limit)
+    return not_converging(constraints, "found new crossings:", 8 * limit);
   const Refinement refinement = refine(*soup, work, store);
   const std::vector<FaceLabel> labels = label_faces(*soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(*soup, refinement, work, labels, store, Op::union_);
@@ -204,10 +231,14 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
   std::vector<std::int32_t> crossing;
   Status valid = check_written(written.mesh, written.kept, &crossing);
+  const std::size_t limit = 2 * written.mesh.triangles.size() + 64;
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
-    Result<Written> next = resolved(written.mesh, crossing, round_levels[round], scale);
+    Result<Written> next = resolved(written.mesh, crossing, round_levels[round], scale, limit);
     if (!next) return next.error();
     written = std::move(*next);
+    if (written.mesh.triangles.size() > limit) {
+      return not_converging(written.mesh.triangles.size(), "wrote triangles:", limit);
+    }
     crossing.clear();
     valid = check_written(written.mesh, written.kept, &crossing);
   }
