@@ -255,10 +255,7 @@ std::uint64_t coordinate_bits(double x) {
 class PositionTable {
  public:
   explicit PositionTable(std::size_t n) {
-    std::size_t size = 16;
-    while (size < 2 * n)
-      size *= 2;
-    slots_.assign(size, -1);
+    slots_.assign(std::bit_ceil(std::max<std::size_t>(16, 2 * n)), -1);
   }
   // The number of the first vertex at p (in `kept`), or -1 after reserving a slot for `fresh`.
   std::int32_t find_or_add(Vec3 p, const std::vector<Vec3>& kept, std::int32_t fresh) {

@@ -6,6 +6,7 @@
 // (planes in sorted order, the active triangles, one section each), shadow.cpp.
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -63,9 +64,7 @@ template <class V>
 class KeyTable {
  public:
   void reset(std::size_t entries) {
-    std::size_t size = 16;
-    while (size < 2 * entries)
-      size *= 2;
+    const std::size_t size = std::bit_ceil(std::max<std::size_t>(16, 2 * entries));
     if (size > slots_.size() || stamp_ == std::numeric_limits<std::uint32_t>::max()) {
       slots_.assign(std::max(size, slots_.size()), Slot{});
       stamp_ = 0;

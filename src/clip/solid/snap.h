@@ -38,9 +38,9 @@ struct BoundaryFaces {
 /// The faces written as doubles and checked exactly (check_written with the vertices written
 /// exactly marked kept); where the check fails, iterated snap rounding: the written mesh's own
 /// arrangement computed exactly again (its crossings and overlaps resolved as a union, only the
-/// pairs of the triangles the check named intersected) and rounded, then with points merged on coarser grids, for a
-/// bounded number of rounds. `scale` is the largest input coordinate's magnitude. Errors:
-/// `ErrorKind::degenerate` when no round passes.
+/// pairs of the triangles the check named intersected) and rounded, then with points merged on
+/// coarser grids, for a bounded number of rounds. `scale` is the largest input coordinate's
+/// magnitude. Errors: `ErrorKind::degenerate` when no round passes.
 [[nodiscard]] Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale);
 
 }  // namespace contain::clip::solid
