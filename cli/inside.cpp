@@ -36,10 +36,11 @@ struct InsideOptions : PointQuery {
 // index is built before them): a point's line takes at least 6 bytes ("0 0 0\n"). Standard input
 // or an unreadable size: as many as can be, so the full index is built, as before.
 std::size_t most_points(const std::string& path) {
+  constexpr std::size_t unknown = std::numeric_limits<std::size_t>::max();
+  if (path == "-") return unknown;
   std::error_code error;
-  const auto size = path == "-" ? 0 : std::filesystem::file_size(path, error);
-  if (path == "-" || error) return std::numeric_limits<std::size_t>::max();
-  return static_cast<std::size_t>(size / 6 + 1);
+  const auto size = std::filesystem::file_size(path, error);
+  return error ? unknown : static_cast<std::size_t>(size / 6 + 1);
 }
 
 // Reads the points a block at a time and answers each piece as it comes, keeping only the

@@ -88,11 +88,14 @@ inline bool certify_nearest(LD x, LD bound, double& out) {
   return true;
 }
 
+// Both values and their bounds finite: the long double stages decide nothing otherwise.
+inline bool all_finite(const ErrLD& n, const ErrLD& d) {
+  return std::isfinite(n.value) && std::isfinite(n.error) && std::isfinite(d.value) &&
+         std::isfinite(d.error);
+}
+
 inline bool quotient_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
-  if (!std::isfinite(n.value) || !std::isfinite(n.error) || !std::isfinite(d.value) ||
-      !std::isfinite(d.error)) {
-    return false;
-  }
+  if (!all_finite(n, d)) return false;
   if (n.value == 0 && n.error == 0) {
     out = 0.0;
     return true;

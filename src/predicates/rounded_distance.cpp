@@ -41,10 +41,7 @@ using detail::upper_mid_big;
 // Stage A: N, D with running error bounds in long double. Returns false when the bounds do not
 // settle both rounding boundaries of the candidate.
 bool sqrt_stage_a(const ErrLD& n, const ErrLD& d, double& out) {
-  if (!std::isfinite(n.value) || !std::isfinite(n.error) || !std::isfinite(d.value) ||
-      !std::isfinite(d.error)) {
-    return false;
-  }
+  if (!detail::all_finite(n, d)) return false;
   if (n.value == 0 && n.error == 0) {
     out = 0.0;
     return true;
