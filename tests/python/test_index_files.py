@@ -51,6 +51,21 @@ def test_saved_loaded_and_pickled_mesh_indexes_answer_exactly_as_fresh(tmp_path,
         assert loaded.stats == fresh.stats
 
 
+@pytest.mark.parametrize("make", [cube, torus_mesh])
+def test_a_few_point_index_without_a_grid_answers_saves_and_pickles_as_the_full_one(tmp_path, make):
+    mesh = make()
+    full = contain.MeshIndex(mesh)
+    few = contain.MeshIndex(mesh, queries=10)
+    assert few.stats["cells"] == 0 and full.stats["cells"] > 0
+    points = probes(mesh.vertices, 500)
+    expected = full.locate(points)
+    few.save(tmp_path / "few.cidx")
+    for index in (few, contain.MeshIndex.load(tmp_path / "few.cidx"), pickle.loads(pickle.dumps(few))):
+        assert np.array_equal(index.locate(points), expected)
+    assert all(contain.point_in_mesh(mesh, p) == contain.Location(int(e))
+               for p, e in zip(points[::25], expected[::25]))
+
+
 def test_open_mesh_index_keeps_its_winding_number_regime_and_accuracy(tmp_path):
     mesh = cube()
     open_mesh = contain.Mesh(mesh.vertices, mesh.faces[:-1])
