@@ -222,6 +222,93 @@ TEST(Bvh, EmptyHierarchyVisitsNothingAndEmptyBoxesNeverOverlap) {
   EXPECT_EQ(bvh.items().size(), boxes.size());
 }
 
+// The linear (Morton) build: the same contract as the SAH's (every item once, boxes enclose,
+// queries exact), a deterministic tree, a bounded depth on coincident or extreme centroids.
+constexpr BuildOptions morton{.method = BuildMethod::morton};
+
+std::vector<int> leaf_counts(const Bvh& bvh, const std::vector<Box3>& boxes) {
+  std::vector<int> seen(boxes.size(), 0);
+  const auto nodes = bvh.nodes();
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (!nodes[n].is_leaf()) {
+      const Box3& l = nodes[n + 1].box;
+      const Box3& r = nodes[static_cast<std::size_t>(nodes[n].first)].box;
+      EXPECT_TRUE(l.empty() || (nodes[n].box.contains(l.min) && nodes[n].box.contains(l.max)));
+      EXPECT_TRUE(r.empty() || (nodes[n].box.contains(r.min) && nodes[n].box.contains(r.max)));
+      continue;
+    }
+    EXPECT_LE(nodes[n].count, 4);
+    for (std::int32_t k = nodes[n].first; k < nodes[n].first + nodes[n].count; ++k) {
+      const std::int32_t item = bvh.items()[static_cast<std::size_t>(k)];
+      ++seen[static_cast<std::size_t>(item)];
+      const Box3& b = boxes[static_cast<std::size_t>(item)];
+      EXPECT_TRUE(b.empty() || (nodes[n].box.contains(b.min) && nodes[n].box.contains(b.max)));
+    }
+  }
+  return seen;
+}
+
+TEST(MortonBvh, EveryItemIsInExactlyOneLeafAndEveryNodeBoxContainsItsItems) {
+  std::vector<Box3> boxes = random_boxes(5000, 21);
+  boxes.push_back(Box3{});  // empty: in a leaf, overlapping nothing
+  const Bvh bvh(boxes, morton);
+  const std::vector<int> seen = leaf_counts(bvh, boxes);
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
+  EXPECT_LE(bvh.nodes().size(), 2 * boxes.size() - 1);
+}
+
+TEST(MortonBvh, SelfTraversalFindsEachOverlappingPairOnceAndTheTreeIsDeterministic) {
+  const std::vector<Box3> boxes = random_boxes(900, 22);
+  const Bvh tree(boxes, morton);
+  std::set<std::pair<std::int32_t, std::int32_t>> found;
+  (void)traverse_self(
+      tree, [](const Node& x, const Node& y) { return x.box.overlaps(y.box); },
+      [&](std::int32_t i, std::int32_t j) {
+        if (boxes[static_cast<std::size_t>(i)].overlaps(boxes[static_cast<std::size_t>(j)])) {
+          EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "each pair once";
+        }
+        return Visit::proceed;
+      });
+  std::set<std::pair<std::int32_t, std::int32_t>> expected;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]))
+        expected.insert({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+  EXPECT_EQ(found, expected);
+  EXPECT_FALSE(expected.empty());
+  const Bvh again(boxes, morton);
+  EXPECT_TRUE(std::equal(tree.items().begin(), tree.items().end(), again.items().begin(),
+                         again.items().end()));
+  ASSERT_EQ(tree.nodes().size(), again.nodes().size());
+  for (std::size_t n = 0; n < tree.nodes().size(); ++n) {
+    EXPECT_EQ(tree.nodes()[n].first, again.nodes()[n].first);
+    EXPECT_EQ(tree.nodes()[n].count, again.nodes()[n].count);
+    EXPECT_EQ(tree.nodes()[n].box, again.nodes()[n].box);
+  }
+}
+
+TEST(MortonBvh, CoincidentOrExtremeCentroidsStillPlaceEveryItemOnceAtABoundedDepth) {
+  const std::vector<Box3> same(4096, Box3{{1, 1, 1}, {2, 2, 2}});
+  const Bvh coincident(same, morton);
+  EXPECT_LE(coincident.depth(), 14);  // equal codes split at the middle
+  const std::vector<int> seen_same = leaf_counts(coincident, same);
+  EXPECT_TRUE(std::all_of(seen_same.begin(), seen_same.end(), [](int c) { return c == 1; }));
+  const double big = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (const double scale : {big, big / 3, tiny, 1e-310}) {
+    std::vector<Box3> boxes;
+    for (int i = 0; i < 300; ++i) {
+      const double c = scale * ((i % 2) ? 1.0 : -1.0) * ((i % 7) / 6.0);
+      boxes.push_back(Box3{{c, -c, c}, {c, -c, c}});
+    }
+    const Bvh bvh(boxes, morton);
+    const std::vector<int> seen = leaf_counts(bvh, boxes);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }))
+        << "scale " << scale;
+    EXPECT_LE(bvh.depth(), 64 + 10) << "scale " << scale;
+  }
+}
+
 TEST(Bvh, SahTreeOverAMeshPrunesPointQueries) {
   const Mesh torus = scenes::torus(1.0, 0.4, 100, 40);
   const std::vector<Box3> boxes = triangle_boxes(torus);

@@ -13,6 +13,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   Result<solid::Soup> soup = solid::make_soup(inputs);
   if (!soup) return soup.error();
   solid::PointStore store;
+  store.reserve(2 * soup->vertices.size());
   for (const Vec3 v : soup->vertices)
     (void)store.add(v);
   const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);

@@ -18,6 +18,7 @@
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/exact_point.h"
@@ -62,9 +63,36 @@ struct Vec3Equal {
   }
 };
 
+/// Numbers of points of doubles by value (+0 and -0 one key): open addressing, linear probing,
+/// load at most 1/2, where a node-based map allocated per point and hashed each coordinate
+/// byte by byte (the welding and the point store's index were a tenth of a boolean's time).
+/// The table holds numbers and hash tags only (8 bytes a slot, so that it stays in cache); the
+/// points are the caller's: `keys[i]` is the point numbered i.
+class PointTable {
+ public:
+  void reserve(std::size_t points, std::span<const Vec3> keys);
+  /// The number stored under v and false; or `id`, now stored under v, and true (the caller
+  /// then makes keys[id] == v).
+  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, std::span<const Vec3> keys);
+  /// The number stored under v, or -1.
+  [[nodiscard]] std::int32_t find(Vec3 v, std::span<const Vec3> keys) const;
+
+ private:
+  struct Slot {
+    std::int32_t id = -1;
+    std::uint32_t tag = 0;
+  };
+  [[nodiscard]] static std::uint64_t hash(Vec3 v);
+  // The slot holding v, or the empty slot where it goes.
+  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const;
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
 class PointStore {
  public:
+  void reserve(std::size_t points);
   /// The point's number, new or that of an equal point already stored.
   std::int32_t add(const ExactPoint& p);
   /// The same for a point of doubles (its own nearest doubles: no rounding to compute).
@@ -82,7 +110,7 @@ class PointStore {
 
   std::vector<ExactPoint> points_;
   std::vector<Vec3> rounded_;
-  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> first_;  // by nearest doubles
+  PointTable first_;                // the first point of each nearest doubles
   std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
 };
 

@@ -13,7 +13,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 #include "clip/solid/engine.h"
@@ -107,13 +106,13 @@ int dropped_axis(const BigVec3& n) {
 Result<Soup> make_soup(std::span<const Mesh> inputs) {
   Soup soup;
   soup.inputs = inputs.size();
-  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
+  PointTable welded;
   std::size_t vertices = 0, triangles = 0;
   for (const Mesh& mesh : inputs) {
     vertices += mesh.vertices.size();
     triangles += mesh.triangles.size();
   }
-  welded.reserve(vertices);
+  welded.reserve(vertices, soup.vertices);
   soup.vertices.reserve(vertices);
   soup.triangles.reserve(triangles);
   soup.input.reserve(triangles);
@@ -130,10 +129,11 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 " is not finite"};
       }
       // + 0.0 turns -0 into +0: one key per position.
-      const auto [it, fresh] = welded.try_emplace(Vec3{v.x + 0.0, v.y + 0.0, v.z + 0.0},
-                                                  static_cast<std::int32_t>(soup.vertices.size()));
+      const auto [id, fresh] =
+          welded.try_emplace(Vec3{v.x + 0.0, v.y + 0.0, v.z + 0.0},
+                             static_cast<std::int32_t>(soup.vertices.size()), soup.vertices);
       if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
-      remap[i] = it->second;
+      remap[i] = id;
     }
     const std::size_t first = soup.triangles.size();
     for (const TriangleIndices& t : mesh.triangles) {
@@ -169,7 +169,7 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
     }
     soup.boxes.push_back(box);
   }
-  soup.tree = bvh::Bvh(soup.boxes);
+  soup.tree = bvh::Bvh(soup.boxes, {.method = bvh::BuildMethod::morton});
   return soup;
 }
 
