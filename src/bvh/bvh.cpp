@@ -178,6 +178,10 @@ struct Builder {
 
 Bvh::Bvh(std::span<const Box3> boxes, const BuildOptions& options) {
   if (boxes.empty()) return;
+  if (options.method == BuildMethod::morton) {
+    build_morton(boxes, options);
+    return;
+  }
   items_.resize(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i)
     items_[i] = static_cast<std::int32_t>(i);

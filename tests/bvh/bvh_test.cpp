@@ -31,28 +31,70 @@ Box3 translated(const Box3& b, Vec3 t) {
   return {b.min + t, b.max + t};
 }
 
-TEST(Bvh, EveryItemIsInExactlyOneLeafAndEveryNodeBoxContainsItsItems) {
-  const std::vector<Box3> boxes = random_boxes(5000, 1);
-  const Bvh bvh(boxes);
+// Every pair i < j of overlapping boxes, by brute force.
+std::set<std::pair<std::int32_t, std::int32_t>> overlapping_pairs(const std::vector<Box3>& boxes) {
+  std::set<std::pair<std::int32_t, std::int32_t>> pairs;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]))
+        pairs.insert({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+  return pairs;
+}
+
+// The self traversal's pairs of overlapping boxes (i < j), each expected once.
+TraversalStats self_pairs(const Bvh& tree, const std::vector<Box3>& boxes,
+                          std::set<std::pair<std::int32_t, std::int32_t>>& found) {
+  return traverse_self(
+      tree, [](const Node& x, const Node& y) { return x.box.overlaps(y.box); },
+      [&](std::int32_t i, std::int32_t j) {
+        EXPECT_NE(i, j);
+        if (boxes[static_cast<std::size_t>(i)].overlaps(boxes[static_cast<std::size_t>(j)])) {
+          EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "each pair once";
+        }
+        return Visit::proceed;
+      });
+}
+
+// How often each item is in a leaf (of at most 4 items), every node box checked to hold its
+// children and items.
+std::vector<int> leaf_counts(const Bvh& bvh, const std::vector<Box3>& boxes) {
   std::vector<int> seen(boxes.size(), 0);
   const auto nodes = bvh.nodes();
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     if (!nodes[n].is_leaf()) {
       const Box3& l = nodes[n + 1].box;
       const Box3& r = nodes[static_cast<std::size_t>(nodes[n].first)].box;
-      EXPECT_TRUE(nodes[n].box.contains(l.min) && nodes[n].box.contains(l.max));
-      EXPECT_TRUE(nodes[n].box.contains(r.min) && nodes[n].box.contains(r.max));
+      EXPECT_TRUE(l.empty() || (nodes[n].box.contains(l.min) && nodes[n].box.contains(l.max)));
+      EXPECT_TRUE(r.empty() || (nodes[n].box.contains(r.min) && nodes[n].box.contains(r.max)));
       continue;
     }
+    EXPECT_LE(nodes[n].count, 4);
     for (std::int32_t k = nodes[n].first; k < nodes[n].first + nodes[n].count; ++k) {
       const std::int32_t item = bvh.items()[static_cast<std::size_t>(k)];
       ++seen[static_cast<std::size_t>(item)];
       const Box3& b = boxes[static_cast<std::size_t>(item)];
-      EXPECT_TRUE(nodes[n].box.contains(b.min) && nodes[n].box.contains(b.max));
+      EXPECT_TRUE(b.empty() || (nodes[n].box.contains(b.min) && nodes[n].box.contains(b.max)));
     }
   }
+  return seen;
+}
+
+// 300 point boxes at +-scale times 0..1: centroid spans beyond DBL_MAX or subnormal.
+std::vector<Box3> extreme_boxes(double scale) {
+  std::vector<Box3> boxes;
+  for (int i = 0; i < 300; ++i) {
+    const double c = scale * ((i % 2) ? 1.0 : -1.0) * ((i % 7) / 6.0);
+    boxes.push_back(Box3{{c, -c, c}, {c, -c, c}});
+  }
+  return boxes;
+}
+
+TEST(Bvh, EveryItemIsInExactlyOneLeafAndEveryNodeBoxContainsItsItems) {
+  const std::vector<Box3> boxes = random_boxes(5000, 1);
+  const Bvh bvh(boxes);
+  const std::vector<int> seen = leaf_counts(bvh, boxes);
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
-  EXPECT_LE(nodes.size(), 2 * boxes.size() - 1);
+  EXPECT_LE(bvh.nodes().size(), 2 * boxes.size() - 1);
 }
 
 TEST(Bvh, OverlapQueryFindsExactlyTheOverlappingBoxes) {
@@ -122,20 +164,8 @@ TEST(Bvh, SelfTraversalFindsEachOverlappingPairOfDistinctItemsOnce) {
   const std::vector<Box3> boxes = random_boxes(900, 11);
   const Bvh tree(boxes);
   std::set<std::pair<std::int32_t, std::int32_t>> found;
-  const TraversalStats stats = traverse_self(
-      tree, [](const Node& x, const Node& y) { return x.box.overlaps(y.box); },
-      [&](std::int32_t i, std::int32_t j) {
-        EXPECT_NE(i, j);
-        if (boxes[static_cast<std::size_t>(i)].overlaps(boxes[static_cast<std::size_t>(j)])) {
-          EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "each pair once";
-        }
-        return Visit::proceed;
-      });
-  std::set<std::pair<std::int32_t, std::int32_t>> expected;
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-    for (std::size_t j = i + 1; j < boxes.size(); ++j)
-      if (boxes[i].overlaps(boxes[j]))
-        expected.insert({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+  const TraversalStats stats = self_pairs(tree, boxes, found);
+  const std::set<std::pair<std::int32_t, std::int32_t>> expected = overlapping_pairs(boxes);
   EXPECT_EQ(found, expected);
   EXPECT_FALSE(expected.empty());
   // About half the work of the pair traversal of the tree with itself.
@@ -192,11 +222,7 @@ TEST(Bvh, CentroidSpansBeyondDblMaxOrSubnormalStillPlaceEveryItemOnce) {
   const double big = std::numeric_limits<double>::max();
   const double tiny = std::numeric_limits<double>::denorm_min();
   for (const double scale : {big, big / 3, tiny, 1e-310}) {
-    std::vector<Box3> boxes;
-    for (int i = 0; i < 300; ++i) {
-      const double c = scale * ((i % 2) ? 1.0 : -1.0) * ((i % 7) / 6.0);
-      boxes.push_back(Box3{{c, -c, c}, {c, -c, c}});
-    }
+    const std::vector<Box3> boxes = extreme_boxes(scale);
     const Bvh bvh(boxes);
     std::vector<int> seen(boxes.size(), 0);
     (void)bvh.traverse([](const Node&, std::int32_t) { return true; },
@@ -220,6 +246,56 @@ TEST(Bvh, EmptyHierarchyVisitsNothingAndEmptyBoxesNeverOverlap) {
   boxes.push_back(Box3{});  // empty
   const Bvh bvh(boxes);
   EXPECT_EQ(bvh.items().size(), boxes.size());
+}
+
+// The linear (Morton) build: the same contract as the SAH's (every item once, boxes enclose,
+// queries exact), a deterministic tree, a bounded depth on coincident or extreme centroids.
+constexpr BuildOptions morton{.method = BuildMethod::morton};
+
+TEST(MortonBvh, EveryItemIsInExactlyOneLeafAndEveryNodeBoxContainsItsItems) {
+  std::vector<Box3> boxes = random_boxes(5000, 21);
+  boxes.push_back(Box3{});  // empty: in a leaf, overlapping nothing
+  const Bvh bvh(boxes, morton);
+  const std::vector<int> seen = leaf_counts(bvh, boxes);
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
+  EXPECT_LE(bvh.nodes().size(), 2 * boxes.size() - 1);
+}
+
+TEST(MortonBvh, SelfTraversalFindsEachOverlappingPairOnceAndTheTreeIsDeterministic) {
+  const std::vector<Box3> boxes = random_boxes(900, 22);
+  const Bvh tree(boxes, morton);
+  std::set<std::pair<std::int32_t, std::int32_t>> found;
+  (void)self_pairs(tree, boxes, found);
+  const std::set<std::pair<std::int32_t, std::int32_t>> expected = overlapping_pairs(boxes);
+  EXPECT_EQ(found, expected);
+  EXPECT_FALSE(expected.empty());
+  const Bvh again(boxes, morton);
+  EXPECT_TRUE(std::equal(tree.items().begin(), tree.items().end(), again.items().begin(),
+                         again.items().end()));
+  ASSERT_EQ(tree.nodes().size(), again.nodes().size());
+  for (std::size_t n = 0; n < tree.nodes().size(); ++n) {
+    EXPECT_EQ(tree.nodes()[n].first, again.nodes()[n].first);
+    EXPECT_EQ(tree.nodes()[n].count, again.nodes()[n].count);
+    EXPECT_EQ(tree.nodes()[n].box, again.nodes()[n].box);
+  }
+}
+
+TEST(MortonBvh, CoincidentOrExtremeCentroidsStillPlaceEveryItemOnceAtABoundedDepth) {
+  const std::vector<Box3> same(4096, Box3{{1, 1, 1}, {2, 2, 2}});
+  const Bvh coincident(same, morton);
+  EXPECT_LE(coincident.depth(), 14);  // equal codes split at the middle
+  const std::vector<int> seen_same = leaf_counts(coincident, same);
+  EXPECT_TRUE(std::all_of(seen_same.begin(), seen_same.end(), [](int c) { return c == 1; }));
+  const double big = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (const double scale : {big, big / 3, tiny, 1e-310}) {
+    const std::vector<Box3> boxes = extreme_boxes(scale);
+    const Bvh bvh(boxes, morton);
+    const std::vector<int> seen = leaf_counts(bvh, boxes);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }))
+        << "scale " << scale;
+    EXPECT_LE(bvh.depth(), 64 + 10) << "scale " << scale;
+  }
 }
 
 TEST(Bvh, SahTreeOverAMeshPrunesPointQueries) {

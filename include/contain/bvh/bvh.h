@@ -25,8 +25,23 @@ struct Node {
   [[nodiscard]] constexpr bool is_leaf() const { return count > 0; }
 };
 
-/// How a `Bvh` is built (binned SAH, Wald 2007).
+/// How a `Bvh` splits its nodes.
+enum class BuildMethod : std::uint8_t {
+  /// Binned surface area heuristic (Wald 2007): the best trees for queries, O(n log n) with a
+  /// sweep of every item per level.
+  sah,
+  /// Linear BVH (Lauterbach et al. 2009, Karras 2012): items sorted by the Morton code of their
+  /// box centroids (21 bits per axis in the centroids' bounds), each node split where the
+  /// codes' highest differing bit changes (at the middle when all are equal), leaves of at
+  /// most `max_leaf_items`. A radix sort and one pass per node boundary: several times faster
+  /// to build than `sah`, for somewhat slower queries; for hierarchies built once per query
+  /// batch of a few queries per item (the self-intersection of a large mesh).
+  morton,
+};
+
+/// How a `Bvh` is built (binned SAH, Wald 2007, unless `method` says otherwise).
 struct BuildOptions {
+  BuildMethod method = BuildMethod::sah;
   /// Bins per axis of the centroid bounds in the SAH sweep.
   int bins = 16;
   /// A node with at most this many items may become a leaf ...
@@ -84,6 +99,8 @@ class Bvh {
   TraversalStats traverse(Enter&& enter, VisitItem&& visit) const;
 
  private:
+  void build_morton(std::span<const Box3> boxes, const BuildOptions& options);
+
   std::vector<Node> nodes_;
   std::vector<std::int32_t> items_;
   int depth_ = 0;

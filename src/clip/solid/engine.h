@@ -10,6 +10,7 @@
 //                  (snap.cpp, snap.h), checked exactly (validate.cpp)
 // Private to clip.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/exact_point.h"
@@ -62,9 +64,36 @@ struct Vec3Equal {
   }
 };
 
+/// Numbers of points of doubles by value (+0 and -0 one key): open addressing, linear probing,
+/// load at most 1/2, where a node-based map allocated per point and hashed each coordinate
+/// byte by byte (the welding and the point store's index were a tenth of a boolean's time).
+/// The table holds numbers and hash tags only (8 bytes a slot, so that it stays in cache); the
+/// points are the caller's: `keys[i]` is the point numbered i.
+class PointTable {
+ public:
+  void reserve(std::size_t points, std::span<const Vec3> keys);
+  /// The number stored under v and false; or `id`, now stored under v, and true (the caller
+  /// then makes keys[id] == v).
+  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, std::span<const Vec3> keys);
+  /// The number stored under v, or -1.
+  [[nodiscard]] std::int32_t find(Vec3 v, std::span<const Vec3> keys) const;
+
+ private:
+  struct Slot {
+    std::int32_t id = -1;
+    std::uint32_t tag = 0;
+  };
+  [[nodiscard]] static std::uint64_t hash(Vec3 v);
+  // The slot holding v, or the empty slot where it goes.
+  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const;
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
 class PointStore {
  public:
+  void reserve(std::size_t points);
   /// The point's number, new or that of an equal point already stored.
   std::int32_t add(const ExactPoint& p);
   /// The same for a point of doubles (its own nearest doubles: no rounding to compute).
@@ -82,7 +111,7 @@ class PointStore {
 
   std::vector<ExactPoint> points_;
   std::vector<Vec3> rounded_;
-  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> first_;  // by nearest doubles
+  PointTable first_;                // the first point of each nearest doubles
   std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
 };
 
@@ -93,6 +122,53 @@ class PointStore {
   return (std::uint64_t{lo} << 32U) | hi;
 }
 inline constexpr std::uint64_t no_edge = ~std::uint64_t{0};
+
+/// One use of an undirected edge by a face: the edge's key, the face, and its corner k (the
+/// edge runs from corner k to corner k + 1).
+struct EdgeUse {
+  std::uint64_t key;
+  std::size_t face;
+  int k;
+  bool operator<(const EdgeUse& o) const {
+    return key != o.key ? key < o.key : (face != o.face ? face < o.face : k < o.k);
+  }
+};
+
+/// Every edge use of `faces` (indexable, each a face's three corner numbers by
+/// `corners(face) -> const std::array<std::int32_t, 3>&`), sorted by (edge, face, corner): a
+/// counting sort by the edge's lower point, then each point's few uses sorted (one sort of
+/// all uses was a third of the labels' time, and a tenth of the merging of coplanar faces).
+template <class Corners>
+[[nodiscard]] std::vector<EdgeUse> sorted_edge_uses(std::size_t faces, Corners&& corners) {
+  std::size_t points = 0;
+  for (std::size_t f = 0; f < faces; ++f) {
+    for (const std::int32_t p : corners(f))
+      points = std::max(points, static_cast<std::size_t>(p) + 1);
+  }
+  std::vector<std::size_t> start(points + 1, 0);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto& v = corners(f);
+    for (std::size_t k = 0; k < 3; ++k)
+      ++start[static_cast<std::size_t>(std::min(v[k], v[(k + 1) % 3])) + 1];
+  }
+  for (std::size_t i = 1; i < start.size(); ++i)
+    start[i] += start[i - 1];
+  std::vector<EdgeUse> uses(start.back());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto& v = corners(f);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t a = v[k], b = v[(k + 1) % 3];
+      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {edge_key(a, b), f,
+                                                                static_cast<int>(k)};
+    }
+  }
+  for (std::size_t i = 0; i + 1 < start.size(); ++i) {
+    std::sort(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
+              uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
+  }
+  return uses;
+}
 
 /// A segment (or a point, a == b) that a triangle must have as edges of its refinement.
 struct Constraint {

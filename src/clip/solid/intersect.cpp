@@ -196,35 +196,6 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
 
 }  // namespace
 
-std::int32_t PointStore::add(const ExactPoint& p) {
-  return add(p, nearest_double(p));
-}
-
-std::int32_t PointStore::add(Vec3 v) {
-  return add(exact_point(v), v);
-}
-
-std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
-  const auto id = static_cast<std::int32_t>(points_.size());
-  const auto [it, fresh] = first_.try_emplace(r, id);
-  if (!fresh) {
-    std::int32_t i = it->second;
-    for (;; i = next_[static_cast<std::size_t>(i)]) {
-      if (same_point(points_[static_cast<std::size_t>(i)], p)) return i;
-      if (next_[static_cast<std::size_t>(i)] < 0) break;
-    }
-    next_[static_cast<std::size_t>(i)] = id;
-  }
-  points_.push_back(p);
-  rounded_.push_back(r);
-  next_.push_back(-1);
-  return id;
-}
-
-std::int32_t PointStore::representative(std::int32_t i) const {
-  return first_.at(rounded(i));
-}
-
 std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());

@@ -89,47 +89,22 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
 
 // Patch of each face (a representative face number).
 std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
-  struct Use {
-    std::uint64_t key;
-    std::size_t face;
-    bool forward;  // a < b in the face's direction
-    bool operator<(const Use& o) const { return key < o.key || (key == o.key && face < o.face); }
+  const std::vector<EdgeUse> uses = sorted_edge_uses(
+      r.faces.size(),
+      [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
+  // a < b in the face's direction
+  const auto forward = [&](const EdgeUse& u) {
+    const auto& v = r.faces[u.face].v;
+    return v[static_cast<std::size_t>(u.k)] < v[static_cast<std::size_t>((u.k + 1) % 3)];
   };
-  // Sorted by (edge, face): a counting sort by the edge's lower point, then each point's few
-  // uses sorted (one sort of all uses was a third of the labels' time).
-  std::size_t points = 0;
-  for (const RefinedFace& face : r.faces) {
-    for (const std::int32_t p : face.v)
-      points = std::max(points, static_cast<std::size_t>(p) + 1);
-  }
-  std::vector<std::size_t> start(points + 1, 0);
-  for (const RefinedFace& face : r.faces) {
-    for (std::size_t k = 0; k < 3; ++k)
-      ++start[static_cast<std::size_t>(std::min(face.v[k], face.v[(k + 1) % 3])) + 1];
-  }
-  for (std::size_t i = 1; i < start.size(); ++i)
-    start[i] += start[i - 1];
-  std::vector<Use> uses(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < r.faces.size(); ++f) {
-    const auto& v = r.faces[f].v;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t a = v[k], b = v[(k + 1) % 3];
-      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {edge_key(a, b), f, a < b};
-    }
-  }
-  for (std::size_t i = 0; i + 1 < start.size(); ++i) {
-    std::sort(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
-              uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
-  }
   UnionFind<std::size_t> sets(r.faces.size());
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].key == uses[i].key)
       ++j;
-    const Use& x = uses[i];
-    const Use& y = uses[i + 1 < j ? i + 1 : i];
-    const bool pair = j - i == 2 && x.forward != y.forward &&
+    const EdgeUse& x = uses[i];
+    const EdgeUse& y = uses[i + 1 < j ? i + 1 : i];
+    const bool pair = j - i == 2 && forward(x) != forward(y) &&
                       soup.input[static_cast<std::size_t>(r.faces[x.face].triangle)] ==
                           soup.input[static_cast<std::size_t>(r.faces[y.face].triangle)] &&
                       !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), x.key);

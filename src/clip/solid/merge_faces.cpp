@@ -55,25 +55,8 @@ UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
                                const PointStore& store) {
   // Every edge use as (edge, face, corner), sorted: one flat array, not a map of vectors (one
   // allocation per edge was a tenth of the boolean).
-  struct Use {
-    std::uint64_t key;
-    std::size_t face;
-    int k;
-    bool operator<(const Use& o) const {
-      return key != o.key ? key < o.key : (face != o.face ? face < o.face : k < o.k);
-    }
-  };
-  std::vector<Use> uses;
-  uses.reserve(3 * boundary.faces.size());
-  for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
-    const Face& v = boundary.faces[f];
-    for (int k = 0; k < 3; ++k) {
-      uses.push_back(
-          {edge_key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % 3)]), f,
-           k});
-    }
-  }
-  std::sort(uses.begin(), uses.end());
+  const std::vector<EdgeUse> uses = sorted_edge_uses(
+      boundary.faces.size(), [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
   UnionFind<std::size_t> sets(boundary.faces.size());
   for (std::size_t u = 0; u < uses.size();) {
     std::size_t end = u + 1;
