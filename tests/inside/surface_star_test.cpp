@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contain/inside/csg.h"
@@ -326,8 +327,8 @@ TEST(SurfaceStar, EdgesSharedBy4To24TrianglesMatchTheOracle) {
 }
 
 // Random closed meshes of small integer cones and boxes, some inverted, some sharing an apex or
-// a vertex position with another shell, and folded rings: every vertex and edge midpoint against
-// the oracle, and against CsgSolid's plane arrangement.
+// a vertex position with another shell, and folded rings: every vertex and some edge midpoints
+// against the oracle, and against CsgSolid's plane arrangement (the mesh united with itself).
 TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
   std::mt19937_64 rng(2401);
   std::uniform_int_distribution<int> coord(-4, 4), degree(3, 7), count(1, 3);
@@ -351,7 +352,12 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
     }
     const MeshIndex index(m);
     if (index.regime() != MeshRegime::closed_exact) continue;
-    auto solid = CsgSolid::prepare(Csg::leaf(CsgMesh(m)));
+    // The mesh united with itself: two leaves on whose boundary p lies, so that CsgSolid samples
+    // the arrangement of their planes (csg_local.h) wherever p is on the surface.
+    std::vector<Csg> twice;
+    twice.push_back(Csg::leaf(CsgMesh(m)));
+    twice.push_back(Csg::leaf(CsgMesh(m)));
+    auto solid = CsgSolid::prepare(Csg::unite(std::move(twice)));
     ASSERT_TRUE(solid.ok()) << solid.error().what();
     std::vector<Vec3> probes(m.vertices.begin(), m.vertices.end());
     for (std::size_t t = 0; t < m.triangles.size(); t += 5) {
@@ -366,6 +372,29 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
     }
   }
   EXPECT_GT(checked, 150) << checked;
+}
+
+TEST(SurfaceStar, ACsgMeshLeafAtAnApexOfDegree64ReadsTheStarOfItsIndex) {
+  // The one leaf on whose boundary p lies decides the tree near p: a boundary of the leaf is one
+  // of the tree wherever the tree depends on it (alone, complemented, cut from a box), and a
+  // buried apex is inside the leaf, so the tree needs no neighbourhood analysis at all.
+  const std::vector<Vec3> r = ring(64, 300, 0);
+  Mesh alone, buried;
+  add_cone(alone, {0, 0, 20}, {0, 0, -1}, r, false);
+  buried = alone;
+  add_box(buried, {-2, -2, 18}, {2, 2, 22}, false);
+  const Box3 around{{-400, -400, -10}, {400, 400, 30}};
+  const Vec3 apex{0, 0, 20};
+  for (const Mesh* m : {&alone, &buried}) {
+    const bool on = m == &alone;
+    auto leaf = CsgSolid::prepare(Csg::leaf(CsgMesh(*m)));
+    auto outside_it = CsgSolid::prepare(Csg::complement(Csg::leaf(CsgMesh(*m))));
+    auto cut = CsgSolid::prepare(Csg::difference(Csg::leaf(around), Csg::leaf(CsgMesh(*m))));
+    ASSERT_TRUE(leaf.ok() && outside_it.ok() && cut.ok());
+    EXPECT_EQ(leaf->locate(apex), on ? Location::boundary : Location::inside);
+    EXPECT_EQ(outside_it->locate(apex), on ? Location::boundary : Location::outside);
+    EXPECT_EQ(cut->locate(apex), on ? Location::boundary : Location::outside);
+  }
 }
 
 }  // namespace
