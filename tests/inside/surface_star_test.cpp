@@ -45,12 +45,25 @@ QVec3 qscale(const mpq_class& s, const QVec3& a) {
   return {s * a.x, s * a.y, s * a.z};
 }
 
-// Does the ray from (q.x, q.y + e, q.z + e^2) along +x, e = 2^-1600, cross triangle t, and with
+// Does the ray from (q.x, q.y + e, q.z + e^2) along +x, e = 2^-400, cross triangle t, and with
 // which sign (the triangle's normal along x)? q is rational; for the test meshes (integers below
-// 2^10) and samples (offsets down to 2^-500) the concrete e decides as the symbolic rule.
+// 2^10) and samples (offsets down to 2^-270) the concrete e decides as the symbolic rule.
 int oracle_crossing(const Triangle3& t, const QVec3& q) {
+  // Speed only: q's coordinates differ from the triangle's box bounds by 0 or at least 2^-270,
+  // far more than e, so a q outside the box's (y, z) span, or beyond its x, is never crossed.
+  const auto below = [](const mpq_class& v, double u, double w, double x) {
+    return v < std::min({u, w, x});
+  };
+  const auto above = [](const mpq_class& v, double u, double w, double x) {
+    return v > std::max({u, w, x});
+  };
+  if (below(q.y, t.a.y, t.b.y, t.c.y) || above(q.y, t.a.y, t.b.y, t.c.y) ||
+      below(q.z, t.a.z, t.b.z, t.c.z) || above(q.z, t.a.z, t.b.z, t.c.z) ||
+      above(q.x, t.a.x, t.b.x, t.c.x)) {
+    return 0;
+  }
   const QVec3 a = exact(t.a), b = exact(t.b), c = exact(t.c);
-  static const mpq_class e = power_of_two(-1600);
+  static const mpq_class e = power_of_two(-400);
   const mpq_class py = q.y + e, pz = q.z + e * e;
   const auto orient = [](const QVec3& u, const QVec3& v, const mpq_class& y,
                          const mpq_class& z) -> mpq_class {
@@ -87,8 +100,10 @@ bool on_closed_triangle(const Triangle3& t, const QVec3& p) {
 // open cell of the arrangement of the planes of the triangles through p. Every such cell has on
 // its boundary a ray r = +-(n_i x n_j) (or, all planes one, is a half space); around r the planes
 // through r are lines in the plane normal to r, and the samples p + t (r + h (+-u + h (+-n))),
-// u = r x n along each line, lie in every sector beside each line. t = 2^-100 keeps the samples
-// clear of every triangle not through p, h = 2^-200 lets each term dominate the next.
+// u = r x n along each line, lie in every sector beside each line. With integer coordinates
+// below 2^10 (normals below 2^21, r below 2^43, u below 2^64), t = 2^-70 keeps the samples clear
+// of every triangle not through p (at least 2^-21 away), h = 2^-100 lets each term dominate the
+// next.
 Location oracle_solid(const Mesh& mesh, Vec3 point) {
   const QVec3 p = exact(point);
   std::vector<QVec3> normals;
@@ -119,7 +134,7 @@ Location oracle_solid(const Mesh& mesh, Vec3 point) {
       }
     }
   }
-  const mpq_class t = power_of_two(-100), h = power_of_two(-200);
+  const mpq_class t = power_of_two(-70), h = power_of_two(-100);
   bool in = false, out = false;
   for (const QVec3& ray : rays) {
     for (const QVec3& r : {ray, qscale(-1, ray)}) {
@@ -201,7 +216,9 @@ std::string where(Vec3 p) {
   return std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z);
 }
 
-TEST(SurfaceStar, ConeApexesOfDegree3To128MatchTheOracleAloneBuriedAndInverted) {
+TEST(SurfaceStar, ConeApexesOfDegree3To128AreBoundaryAloneInsideBuriedAndOutsideInverted) {
+  // Checked against the oracle up to degree 12; degrees 64 and 128 took seconds to minutes
+  // before the star (the arrangement of their planes, sampled in big numbers).
   for (const int k : {3, 4, 5, 7, 8, 12, 16, 32, 64, 128}) {
     const double radius = k < 16 ? 8 : 300;
     const std::vector<Vec3> r = ring(k, radius, 0);
@@ -216,14 +233,14 @@ TEST(SurfaceStar, ConeApexesOfDegree3To128MatchTheOracleAloneBuriedAndInverted) 
     for (const auto& [mesh, expected] : cases) {
       const Location got = locate_everywhere(*mesh, {0, 0, 20});
       EXPECT_EQ(got, expected) << "degree " << k;
-      if (k <= 16) {
+      if (k <= 12) {  // the oracle's samples grow with the square of the degree
         EXPECT_EQ(got, oracle_solid(*mesh, {0, 0, 20})) << "degree " << k;
       }
     }
   }
 }
 
-TEST(SurfaceStar, FlatFansOfDegree3To128MatchTheOracle) {
+TEST(SurfaceStar, FlatFansOfDegree3To128MatchTheOracleUpToDegree16) {
   // The base vertex: k coplanar triangles round it, on the surface of the cone, buried in a box,
   // or covered by a second, inverted cone on the same base (the two bases cancel: interior).
   for (const int k : {3, 6, 16, 64, 128}) {
@@ -337,7 +354,7 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
                 static_cast<double>(coord(rng))};
   };
   int checked = 0;
-  for (int trial = 0; trial < 12; ++trial) {
+  for (int trial = 0; trial < 8; ++trial) {
     Mesh m;
     const Vec3 shared = point();
     for (int s = count(rng); s > 0; --s) {
@@ -350,7 +367,8 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
       const Vec3 lo = point();
       add_box(m, lo, {lo.x + 2, lo.y + 2, lo.z + 2}, rng() % 3 == 0);
     }
-    const MeshIndex index(m);
+    const MeshIndex index(m), direct(m, {.queries = 1}),
+        coarse(m, {.cells_per_triangle = 0.1, .min_cells = 1, .max_cells = 8});
     if (index.regime() != MeshRegime::closed_exact) continue;
     // The mesh united with itself: two leaves on whose boundary p lies, so that CsgSolid samples
     // the arrangement of their planes (csg_local.h) wherever p is on the surface.
@@ -360,18 +378,20 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
     auto solid = CsgSolid::prepare(Csg::unite(std::move(twice)));
     ASSERT_TRUE(solid.ok()) << solid.error().what();
     std::vector<Vec3> probes(m.vertices.begin(), m.vertices.end());
-    for (std::size_t t = 0; t < m.triangles.size(); t += 5) {
+    for (std::size_t t = 0; t < m.triangles.size(); t += 7) {
       const Triangle3 tri = m.triangle(t);
       probes.push_back({(tri.a.x + tri.b.x) / 2, (tri.a.y + tri.b.y) / 2, (tri.a.z + tri.b.z) / 2});
     }
     for (const Vec3 p : probes) {
-      const Location got = locate_everywhere(m, p);
+      const Location got = index.locate(p);
+      ASSERT_EQ(direct.locate(p), got) << trial << ": " << where(p);
+      ASSERT_EQ(coarse.locate(p), got) << trial << ": " << where(p);
       ASSERT_EQ(got, oracle_solid(m, p)) << trial << ": " << where(p);
       ASSERT_EQ(got, solid->locate(p)) << trial << ": " << where(p);
       ++checked;
     }
   }
-  EXPECT_GT(checked, 150) << checked;
+  EXPECT_GT(checked, 100) << checked;
 }
 
 TEST(SurfaceStar, ACsgMeshLeafAtAnApexOfDegree64ReadsTheStarOfItsIndex) {
