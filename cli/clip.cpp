@@ -30,6 +30,7 @@
 #include "contain/io/wkt.h"
 #include "contain/shapes/convex_polyhedron.h"
 #include "contain/shapes/mesh_validation.h"
+#include "output_format.h"
 #include "progress.h"
 #include "timings.h"
 #include "verbs.h"
@@ -495,6 +496,15 @@ int run_polygon(const ClipOptions& o) {
     if (!ring) return report(ring.error());
     result = clip::clip_polygon(*region, *ring, options);
   }
+  // WKT, unless --out's extension names GeoJSON or SVG (never WKT in a file named otherwise).
+  const std::string format = region_format_named_by(o.out).value_or("wkt");
+  if (format == "svg") return emit(io::format_svg(result), o.out);
+  if (format == "geojson") {
+    return emit((result.polygons.size() == 1 ? io::format_geojson(result.polygons.front())
+                                             : io::format_geojson(result)) +
+                    "\n",
+                o.out);
+  }
   return emit(polygon_wkt(result), o.out);
 }
 
@@ -648,7 +658,8 @@ Verb add_clip(CLI::App& app) {
               if (ignored->count() > 0) {
                 return report(usage(ignored->get_name() +
                                     " applies to polygon booleans (--op) only; --tiles and "
-                                    "--polygon write WKT (--tiles: by --out's extension)"));
+                                    "--polygon write WKT, or the format --out's extension "
+                                    "names"));
               }
             }
             if (Status s = refuse_ignored(*o, segments->count() > 0, polygon->count() > 0); !s) {

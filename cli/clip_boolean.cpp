@@ -10,6 +10,7 @@
 #include "contain/io/region_io.h"
 #include "contain/io/svg.h"
 #include "contain/io/wkt.h"
+#include "output_format.h"
 #include "timings.h"
 
 namespace contain::cli {
@@ -95,6 +96,9 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
     return report({ErrorKind::usage, "clip: a polygon boolean takes one --clip region, got " +
                                          std::to_string(o.clips.size())});
   }
+  const auto chosen = region_output_format(*o.format_option, o.format, out, "clip");
+  if (!chosen) return report(chosen.error());
+  const std::string& format = *chosen;
   auto subject = read_region_warned(o.subject);
   if (!subject) return report(subject.error());
   auto clip_region = read_region_warned(o.clips[0]);
@@ -102,9 +106,6 @@ int run_clip_boolean(const ClipBooleanOptions& given, const std::string& out) {
   enter_phase(Phase::query);
   const MultiPolygon result =
       clip::polygon_boolean(*subject, *clip_region, {.op = o.op, .fill = o.fill});
-  std::string format = o.format;
-  for (char& c : format)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::string text;
   if (format == "geojson") {
     text = result.polygons.size() == 1 ? io::format_geojson(result.polygons[0])

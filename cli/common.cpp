@@ -192,8 +192,16 @@ void add_fill_option(CLI::App& app, Fill& fill) {
 }
 
 void add_threads_option(CLI::App& app, int& threads) {
+  // CLI11's NonNegativeNumber would print its range with the largest double written out.
+  const CLI::Validator count(
+      [](const std::string& text) -> std::string {
+        return !text.empty() && text.front() == '-'
+                   ? "must be 0 (every core) or a positive count, got " + text
+                   : std::string();
+      },
+      "N");
   app.add_option("--threads", threads, "worker threads for batches (default: all cores)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(count)
       ->option_text("N");
 }
 

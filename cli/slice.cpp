@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -15,6 +16,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/svg.h"
 #include "contain/io/wkt.h"
+#include "output_format.h"
 #include "slice_svg.h"
 #include "timings.h"
 #include "verbs.h"
@@ -55,7 +57,11 @@ Result<std::vector<double>> layer_values(const std::string& text) {
                  fmt::format("--layers: STEP must be positive, got {}", step)};
   }
   std::vector<double> out;
-  if (to < from) return out;
+  if (to < from) {
+    // The contract's rule gives no plane; say so rather than print nothing at all.
+    warn(fmt::format("--layers: TO {} is below FROM {}: no planes", to, from));
+    return out;
+  }
   if ((to - from) / step >= kMaxPlanes) {
     return Error{ErrorKind::invalid_value,
                  fmt::format("--layers: {},{},{} gives more than 10^7 planes", from, step, to)};
@@ -136,8 +142,6 @@ std::string format_shadow(const MultiPolygon& region, const SliceCliOptions& o) 
 }
 
 int run_slice(SliceCliOptions o) {
-  for (char& c : o.format)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const bool planes = !o.z.empty() || !o.layers.empty();
   if (o.shadow && (planes || o.json || o.threads_option->count() > 0)) {
     return report(
@@ -154,6 +158,14 @@ int run_slice(SliceCliOptions o) {
   if (o.json && o.format_option->count() > 0) {
     return report({ErrorKind::usage, "slice: --json writes its own lines; leave out --format"});
   }
+  const bool json_file = std::filesystem::path(o.out).extension() == ".json";
+  if (const auto named = region_format_named_by(o.out); o.json && named && !json_file) {
+    return report({ErrorKind::usage,
+                   "slice: --json writes JSON lines, but --out " + o.out + " names " + *named});
+  }
+  const auto format = region_output_format(*o.format_option, o.format, o.out, "slice");
+  if (!format) return report(format.error());
+  o.format = *format;
   auto values = plane_values(o);
   if (!values) return report(values.error());
   auto file = io::read_mesh(o.mesh);

@@ -8,12 +8,19 @@
 // - every result is the contract's mesh: finite vertices, indices in range, closed (each
 //   directed edge as often as its reverse), no zero-area triangle (exact orient2d on the three
 //   projections) and no two triangles meeting other than at shared corners or a shared edge
-//   (collide::self_intersections, exact).
+//   (collide::self_intersections, exact);
+// - every result is the boolean's answer: a sample point farther than 4e-9 x (the largest input
+//   coordinate) from every input's surface (exact distance test) lies in the result exactly when
+//   the operation of its places in the inputs (exact winding numbers) says so; the contract lets
+//   the written mesh stray 1e-9 x that coordinate from the exact boundary, no more.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "contain/clip/mesh_boolean.h"
 #include "contain/collide/self_intersections.h"
+#include "contain/distance/mesh_distance.h"
+#include "contain/inside/mesh_index.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/shapes/mesh_closure.h"
 #include "fuzz_support.h"
@@ -91,6 +98,70 @@ void check_result(const Mesh& m) {
   FUZZ_CHECK(collide::self_intersections(m, {.keep = 1, .limit = 1}).empty());
 }
 
+bool holds(clip::Op op, std::size_t inputs, bool a, bool b) {
+  if (inputs == 1) return a;
+  switch (op) {
+    case clip::Op::union_:
+      return a || b;
+    case clip::Op::intersection:
+      return a && b;
+    case clip::Op::difference:
+      return a && !b;
+    case clip::Op::xor_:
+      return a != b;
+  }
+  return false;
+}
+
+// A point from the input: anywhere at the input's scale, or (mostly) a mean of four input
+// vertices under positive weights (inside their tetrahedron), so that many land inside solids.
+Vec3 sample(fuzz::FuzzInput& in, const std::vector<Mesh>& inputs) {
+  const std::uint8_t how = in.byte();
+  const Mesh& m = inputs[how % inputs.size()];
+  if (how % 4 == 0 || m.vertices.empty()) return in.point3();
+  Vec3 sum{0, 0, 0};
+  double total = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 v = m.vertices[in.byte() % m.vertices.size()];
+    const double w = 1 + in.byte() % 7;
+    sum = {sum.x + w * v.x, sum.y + w * v.y, sum.z + w * v.z};
+    total += w;
+  }
+  return {sum.x / total, sum.y / total, sum.z / total};
+}
+
+// Sample points from the rest of the input: where each is clear of every input's surface, the
+// result must hold it exactly as the operation of its places in the inputs says.
+void check_answers(fuzz::FuzzInput& in, const std::vector<Mesh>& inputs, clip::Op op,
+                   const Mesh& result) {
+  double largest = 0.0;
+  for (const Mesh& m : inputs) {
+    for (const Vec3& v : m.vertices)
+      largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  }
+  const double margin = 4e-9 * largest;
+  if (!std::isfinite(margin)) return;
+  std::vector<inside::MeshIndex> places;
+  std::vector<distance::MeshDistance> surfaces;
+  for (const Mesh& m : inputs) {
+    places.emplace_back(m, inside::MeshIndexOptions{.queries = 8});
+    if (places.back().regime() != inside::MeshRegime::closed_exact) return;
+    surfaces.emplace_back(m, distance::MeshDistanceOptions{.signs = false});
+  }
+  const inside::MeshIndex answer(result, {.queries = 8});
+  for (int k = 0; k < 8 && !in.empty(); ++k) {
+    const Vec3 p = sample(in, inputs);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+    bool clear = true;
+    for (const distance::MeshDistance& s : surfaces)
+      clear = clear && !s.within(p, margin);
+    if (!clear) continue;
+    const bool a = places[0].locate(p) == Location::inside;
+    const bool b = inputs.size() > 1 && places[1].locate(p) == Location::inside;
+    FUZZ_CHECK((answer.locate(p) == Location::inside) == holds(op, inputs.size(), a, b));
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -126,5 +197,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   FUZZ_CHECK(closed && finite);
   check_result(result->mesh);
+  check_answers(in, inputs, op, result->mesh);
   return 0;
 }

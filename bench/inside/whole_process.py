@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Whole-process point queries beside the peers (issue 27), one thread, paired runs.
+"""Whole-process point queries and posed mesh pairs beside the peers (issue 27), one thread, paired runs.
 
   python3 bench/inside/whole_process.py build/bench DATA [--runs 5]
 
@@ -55,18 +55,23 @@ def main():
     peers = args.build / "bench" / "peers"
     d = args.data
     workloads = [
-        ("10^6 points, 10k-vertex star", ["--polygon", d / "star10000.wkt", "--points", d / "points2.txt"],
+        ("10^6 points, 10k-vertex star", ["inside", "--polygon", d / "star10000.wkt", "--points", d / "points2.txt"],
          [("GEOS prepared", "geos_inside", [d / "star10000.wkt", d / "points2.txt"])]),
-        ("10^6 points, 100-vertex star", ["--polygon", d / "star100.wkt", "--points", d / "points2.txt"],
+        ("10^6 points, 100-vertex star", ["inside", "--polygon", d / "star100.wkt", "--points", d / "points2.txt"],
          [("GEOS prepared", "geos_inside", [d / "star100.wkt", d / "points2.txt"])]),
-        ("10^6 points, 100k-triangle torus", ["--mesh", d / "torus.off", "--points", d / "points3.txt"],
+        ("10^6 points, 100k-triangle torus", ["inside", "--mesh", d / "torus.off", "--points", d / "points3.txt"],
          [("Embree 3", "embree_inside", [d / "torus.off", d / "points3.txt"]),
           ("CGAL 5.5", "cgal_inside", [d / "torus.off", d / "points3.txt"])]),
+        ("1000 poses, 40k x 20k triangles", ["collide", d / "pair_torus.off", d / "rocker.off", "--poses", d / "poses.txt"],
+         [("FCL OBBRSS", "fcl_collide", [d / "pair_torus.off", d / "rocker.off", d / "poses.txt"])]),
     ]
     print(f"{'workload':34} {'command':14} {'wall s':>8} {'cpu s':>8} {'peak MB':>8} "
           f"{'peer/contain':>12} {'differ':>8}")
     for name, contain_args, peer_list in workloads:
-        a = [contain, "inside", *map(str, contain_args), "--threads", "1"]
+        if not all(os.path.exists(x) for x in contain_args if isinstance(x, pathlib.Path)):
+            print(f"{name:34} data not written")
+            continue
+        a = [contain, *map(str, contain_args), "--threads", "1"]
         for peer_name, driver, peer_args in peer_list:
             b = [str(peers / driver), *map(str, peer_args)]
             if not os.path.exists(b[0]):

@@ -150,10 +150,3 @@ def test_mesh_views_are_read_only_and_share_the_mesh_storage():
         mesh.vertices[0, 0] = 5
     first = mesh.vertices
     assert np.shares_memory(first, mesh.vertices)
-
-
-def test_polygon_index_refuses_pickling_with_the_way_to_ship_it():
-    import pickle
-
-    with pytest.raises(TypeError, match="not picklable: ship the mesh or region"):
-        pickle.dumps(contain.PolygonIndex(SQUARE))

@@ -1,4 +1,5 @@
-"""Saved indexes (docs/index-files.md): MeshIndex and RegionLayer save(path) / load(path) and
+"""Saved indexes (docs/index-files.md): MeshIndex, PolygonIndex and RegionLayer save(path) /
+load(path) and
 pickling answer exactly as the index that was saved; damaged, truncated, foreign and
 other-kind files raise ContainError naming the file; the command reads what Python wrote."""
 
@@ -50,6 +51,21 @@ def test_saved_loaded_and_pickled_mesh_indexes_answer_exactly_as_fresh(tmp_path,
         assert loaded.stats == fresh.stats
 
 
+@pytest.mark.parametrize("make", [cube, torus_mesh])
+def test_a_few_point_index_without_a_grid_answers_saves_and_pickles_as_the_full_one(tmp_path, make):
+    mesh = make()
+    full = contain.MeshIndex(mesh)
+    few = contain.MeshIndex(mesh, queries=10)
+    assert few.stats["cells"] == 0 and full.stats["cells"] > 0
+    points = probes(mesh.vertices, 500)
+    expected = full.locate(points)
+    few.save(tmp_path / "few.cidx")
+    for index in (few, contain.MeshIndex.load(tmp_path / "few.cidx"), pickle.loads(pickle.dumps(few))):
+        assert np.array_equal(index.locate(points), expected)
+    assert all(contain.point_in_mesh(mesh, p) == contain.Location(int(e))
+               for p, e in zip(points[::25], expected[::25]))
+
+
 def test_open_mesh_index_keeps_its_winding_number_regime_and_accuracy(tmp_path):
     mesh = cube()
     open_mesh = contain.Mesh(mesh.vertices, mesh.faces[:-1])
@@ -76,6 +92,56 @@ def test_saved_and_pickled_layers_answer_with_their_ids_and_fill(tmp_path):
         assert loaded.fill == fresh.fill
         again, again_where = loaded.holders(points)
         assert np.array_equal(again, pairs) and np.array_equal(again_where, where)
+
+
+REGION = ("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1)),"
+          " ((2 2, 2 5, 5 5, 5 2, 2 2)))")  # the second part clockwise: every fill holds points
+
+
+@pytest.mark.parametrize("fill", ["even_odd", "nonzero", "positive", "negative"])
+def test_saved_loaded_and_pickled_polygon_indexes_answer_exactly_as_fresh(tmp_path, fill):
+    fresh = contain.PolygonIndex(REGION, fill=fill)
+    path = tmp_path / "region.cidx"
+    fresh.save(path)
+    rng = np.random.default_rng(7)
+    corners = np.array([[x, y] for x in range(-1, 7) for y in range(-1, 7)], float)
+    points = np.concatenate([rng.uniform(-1, 6, size=(5000, 2)), corners, corners + 0.5])
+    expected = fresh.locate(points)
+    assert (expected == 0).sum() > 0 and (expected == 1).sum() > 0 and (expected == -1).sum() > 0
+    for loaded in (contain.PolygonIndex.load(path), contain.PolygonIndex.load(str(path)),
+                   pickle.loads(pickle.dumps(fresh))):
+        assert np.array_equal(loaded.locate(points), expected)
+        assert loaded.fill == fresh.fill
+        assert loaded.stats == fresh.stats
+
+
+def test_polygon_index_files_pair_with_their_region_in_the_command(tmp_path, cli):
+    contain.PolygonIndex(REGION, fill="nonzero").save(tmp_path / "region.cidx")
+    (tmp_path / "region.wkt").write_text(REGION + "\n")
+    (tmp_path / "other.wkt").write_text("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\n")
+    base = [cli, "inside", "--index", str(tmp_path / "region.cidx")]
+    same = subprocess.run(base + ["--polygon", str(tmp_path / "region.wkt"), "--fill", "nonzero"],
+                          input="4.5 4.5\n0.5 0.5\n", capture_output=True, text=True)
+    assert same.returncode == 0, same.stderr
+    assert same.stdout.split() == ["in", "in"]
+    other = subprocess.run(base + ["--polygon", str(tmp_path / "other.wkt")], input="0 0\n",
+                           capture_output=True, text=True)
+    assert other.returncode == 3 and "region.cidx" in other.stderr
+
+
+def test_polygon_index_load_refuses_other_kinds_and_damage_naming_the_file(tmp_path):
+    contain.MeshIndex(cube()).save(tmp_path / "mesh.cidx")
+    with pytest.raises(contain.ContainError, match="mesh.cidx.*mesh_index"):
+        contain.PolygonIndex.load(tmp_path / "mesh.cidx")
+    contain.PolygonIndex(REGION).save(tmp_path / "region.cidx")
+    with pytest.raises(contain.ContainError, match="region.cidx.*polygon_index"):
+        contain.MeshIndex.load(tmp_path / "region.cidx")
+    data = (tmp_path / "region.cidx").read_bytes()
+    (tmp_path / "flipped.cidx").write_bytes(data[:-5] + bytes([data[-5] ^ 4]) + data[-4:])
+    with pytest.raises(contain.ContainError, match="flipped.cidx"):
+        contain.PolygonIndex.load(tmp_path / "flipped.cidx")
+    with pytest.raises(contain.ContainError):
+        pickle.loads(pickle.dumps(contain.PolygonIndex(REGION)).replace(b"contain\x1a", b"contain\x00"))
 
 
 def test_damaged_truncated_foreign_and_other_kind_files_raise_naming_the_file(tmp_path):
