@@ -294,6 +294,15 @@ Location CsgSolid::locate(Vec3 p) const {
     return static_cast<int>(at[static_cast<std::size_t>(leaf)]);  // boundary is 0: unknown
   });
   if (known != 0 || !any_boundary) return known > 0 ? Location::inside : Location::outside;
+  // One leaf on whose boundary p lies, and the tree depends on it: every leaf node appears once in
+  // the tree, so the three-valued evaluation is exact and both of its values occur near p. For a
+  // mesh of the solid's rule, `boundary` from its index already means cells of both kinds around
+  // p (inside/surface_star.h), so p is on the boundary without sampling the planes through it.
+  if (std::count(at.begin(), at.end(), Location::boundary) == 1) {
+    const auto i =
+        static_cast<std::size_t>(std::find(at.begin(), at.end(), Location::boundary) - at.begin());
+    if (mesh_indexes_[i] && mesh_indexes_[i]->inside_by_count(2)) return Location::boundary;
+  }
 
   // p is on the boundary of leaves that matter: analyse its neighbourhood.
   std::vector<LocalConstraint> constraints;

@@ -12,6 +12,7 @@
 #include "contain/shapes/mesh_closure.h"
 #include "contain/values/triangle.h"
 #include "inside/mesh_ray.h"
+#include "inside/surface_star.h"
 
 // Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  validate_mesh             the report, which picks the regime (not closed: winding number);
@@ -439,16 +440,13 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
 // p on the surface, `near` every triangle that the ray from a sample near p may meet.
 Location MeshIndex::classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const {
   detail::MeshRay ray(p);
-  std::vector<detail::LocalConstraint> planes;
-  Triangle3 face;  // the first triangle through p with a plane
+  std::vector<Triangle3> star;  // the triangles through p
   for (const std::uint32_t t : near) {
     const Tri& tri = tris_[t];
     ray.add(tri.a, tri.b, tri.c);
-    const std::size_t before = planes.size();
-    detail::add_plane_through(tri.a, tri.b, tri.c, p, planes);
-    if (before == 0 && planes.size() == 1) face = {tri.a, tri.b, tri.c};
+    if (detail::face_through(tri.a, tri.b, tri.c, p)) star.push_back({tri.a, tri.b, tri.c});
   }
-  return detail::classify_surface_point(planes, face, p, ray,
+  return detail::classify_surface_point(star, p, ray,
                                         [&](int count) { return inside_by_count(count); });
 }
 

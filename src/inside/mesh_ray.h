@@ -1,10 +1,12 @@
 #pragma once
 // Private to contain::inside: the perturbed +x ray of a mesh from symbolic samples near a point p
-// on its surface, counted with signs (the winding number), and the planes of the triangles
-// through p; the neighbourhood analysis of MeshIndex and of CsgSolid's mesh leaves at p
+// on its surface, counted with signs (the winding number), and the triangles through p; the
+// neighbourhood analysis of MeshIndex (surface_star.h) and of CsgSolid's mesh leaves at p
 // (csg_local.h samples the open cells around p).
 
-#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -14,6 +16,25 @@
 #include "inside/csg_local.h"
 
 namespace contain::inside::detail {
+
+/// One term of a sample's offset from p, in the order of csg_local.h's SymbolicOffset (each term
+/// infinitely smaller than the one before): the direction from p to an input point, a signed
+/// axis, or an exact vector. Along an input point v an affine test F that vanishes at p has the
+/// sign of F(v), a predicate on the given doubles: no exact arithmetic unless the filter fails.
+struct LocalTerm {
+  enum class Kind : std::uint8_t { point, axis, vector };
+  Kind kind = Kind::point;
+  Vec3 point;                       ///< kind point: the direction point - p
+  int axis = 0;                     ///< kind axis: sign * e_axis
+  int sign = 1;                     ///< kind axis: +1 or -1
+  const BigVec3* vector = nullptr;  ///< kind vector (not owned)
+};
+
+/// The sample p + e1 t1 + e2 t2 + e3 t3, 0 < e3 << e2 << e1 << 1, of `count` terms (none: p).
+struct LocalSample {
+  std::array<LocalTerm, 3> terms;
+  std::size_t count = 0;
+};
 
 /// The crossings of the perturbed +x ray (predicates/perturbed_ray.h) from a symbolic sample q
 /// near p, q's offset from p ordered before the ray's own perturbation (0, e, e²), each counted
@@ -32,51 +53,24 @@ class MeshRay {
 
   /// The signed count of crossings of the ray from the sample `at`.
   [[nodiscard]] int winding(const SymbolicOffset& at) const;
+  /// The same from a sample of input points and axes (surface_star.h).
+  [[nodiscard]] int winding(const LocalSample& at) const;
 
  private:
+  template <class Offset>
+  [[nodiscard]] int count_from(const Offset& offset) const;
+
   Vec3 p_;
   int decided_ = 0;                              // crossings decided at p itself, signed
   std::vector<std::pair<Triangle3, int>> open_;  // triangles with a test that vanishes at p, sign
 };
 
-/// Appends the plane of triangle (a, b, c) when the closed triangle contains p and has a
-/// non-zero area: near p such planes carry the whole surface, so every open cell of their
-/// arrangement is inside or outside.
-void add_plane_through(Vec3 a, Vec3 b, Vec3 c, Vec3 p, std::vector<LocalConstraint>& out);
+/// Whether the closed triangle (a, b, c) contains p and has a non-zero area: near p such
+/// triangles carry the whole surface.
+[[nodiscard]] bool face_through(Vec3 a, Vec3 b, Vec3 c, Vec3 p);
 
-/// Where the surface point p lies in the solid whose inside is where `inside_at(count)` holds for
-/// the signed crossing count of `ray`: `inside` if every open cell around p is inside, `outside`
-/// if none is, else `boundary`. `planes`: those of the triangles through p (add_plane_through);
-/// `face`: one of those triangles.
-///
-/// First a quick proof of the common answer: two samples just on either side of `face`, in its
-/// wedge at p (p + e d +- e^2 n + e^2 d1 x + e^2 d2 y, d from p to the face's centroid, n its
-/// normal). Where both lie off every plane through p (so off the surface) and one is inside and
-/// the other not, p is `boundary`, without the arrangement, whose sampling grows with the cube
-/// of the number of planes through p (a vertex of high degree).
-template <class InsideAt>
-[[nodiscard]] Location classify_surface_point(const std::vector<LocalConstraint>& planes,
-                                              const Triangle3& face, Vec3 p, const MeshRay& ray,
-                                              const InsideAt& inside_at) {
-  if (!planes.empty()) {
-    const BigVec3 d =
-        to_big(face.a) + to_big(face.b) + to_big(face.c) - to_big(p) - to_big(p) - to_big(p);
-    const BigVec3 n = cross(to_big(face.b) - to_big(face.a), to_big(face.c) - to_big(face.a));
-    const BigVec3 back = -n, x = to_big(Vec3{1, 0, 0}), y = to_big(Vec3{0.375, 1, 0.625});
-    const SymbolicOffset ahead{&d, &n, &x, &y}, behind{&d, &back, &x, &y};
-    const auto off_surface = [&](const SymbolicOffset& at) {
-      return std::none_of(planes.begin(), planes.end(), [&](const LocalConstraint& c) {
-        return sign_at(BigFloat(), c.normal, at) == Sign::zero;
-      });
-    };
-    if (off_surface(ahead) && off_surface(behind) &&
-        inside_at(ray.winding(ahead)) != inside_at(ray.winding(behind))) {
-      return Location::boundary;
-    }
-  }
-  return classify_neighbourhood(planes, [&](std::span<const char>, const SymbolicOffset& at) {
-    return inside_at(ray.winding(at));
-  });
-}
+/// Appends the plane of triangle (a, b, c) when face_through(a, b, c, p): every open cell of the
+/// arrangement of such planes is inside or outside.
+void add_plane_through(Vec3 a, Vec3 b, Vec3 c, Vec3 p, std::vector<LocalConstraint>& out);
 
 }  // namespace contain::inside::detail

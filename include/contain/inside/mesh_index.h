@@ -65,9 +65,10 @@ struct MeshIndexOptions {
 /// an edge or a vertex; a crossing counts +1 where the triangle's normal points along +x, -1
 /// where against. A point on a triangle (orient3d == 0 and the exact point in triangle) is
 /// `boundary` only where it lies on the solid's boundary: the open cells around it, cut by the
-/// planes of the triangles through it, are sampled symbolically (inside/csg_local.h) and it is
-/// `inside` if every one is inside (a face buried in another part, the shared face of two
-/// touching shells), `outside` if none is (a face of an inverted shell alone), else `boundary`.
+/// triangles through it, are sampled symbolically beside every arc those triangles trace on a
+/// small sphere about it (inside/surface_star.h) and it is `inside` if every one is inside (a
+/// face buried in another part, the shared face of two touching shells), `outside` if none is (a
+/// face of an inverted shell alone), else `boundary`.
 /// A mesh whose every edge has exactly two triangles but whose orientation is inconsistent has
 /// no winding number: there the answer is the crossing parity (odd is `inside`) and every
 /// surface point is `boundary`. Exact on the given doubles for every point (checked against a
@@ -91,10 +92,11 @@ struct MeshIndexOptions {
 ///
 /// Complexity: build O(n log n + C) for n triangles and C cells; a query O(1) outside the box or
 /// in an empty cell, else O(triangles met along the run of surface cells); a point on the surface
-/// O(triangles in the rows of cells from it along +x) when two samples beside one face through it
-/// prove it `boundary` (the usual case), else the sampling of the k planes through it, which
-/// grows faster than k^3: a vertex of degree 64 that is buried in another part or lies on an
-/// inverted shell takes seconds (a known gap); winding regime about O(log n). Thread
+/// O(triangles in the rows of cells from it along +x) plus O(k^2) filtered predicates for the k
+/// triangles through it when two samples beside one face prove it `boundary` (the usual case),
+/// else O(k) samples of O(k) crossing tests each (a vertex of degree 64 buried in another part:
+/// about a millisecond), plus four samples where two of those triangles cross each other at the
+/// point (a folded fan); winding regime about O(log n). Thread
 /// safety: const queries may run concurrently; answers do not depend on the thread count.
 /// Reference: "Algorithms of Informatics" vol. 2, § 22.4 (ray crossings), Edelsbrunner and Muecke
 /// 1990 (SoS).

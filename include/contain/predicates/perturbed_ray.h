@@ -23,9 +23,12 @@
 /// Origins that are themselves symbolic. Every test above is linear in the origin: its value at
 /// q + d is its value at q plus g . d, g its gradient. An origin q + d with d an infinitesimal
 /// displacement ordered before the ray's own (e) is decided by the value at q, then by the sign
-/// of g . d, then by the ray's terms. The `Offset` parameter supplies that middle step:
-/// `Offset::symbolic` is true and `offset.along(g)` returns the sign of g . d for the exact
-/// gradient g (BigFloat); NoOffset, the default, is a plain point and compiles to the tests above.
+/// of g . d, then by the ray's terms. The `Offset` parameter supplies that middle step, asked
+/// only where the test vanishes at q (so that g . d is also the test's value at q + d):
+/// `Offset::symbolic` is true, `offset.along_yz(a, b)` is the sign of g . d for the test
+/// orient2d_yz(a, b, .) and `offset.along_normal(a, b, c)` for orient3d(a, b, c, .) (gradient
+/// (b - a) x (c - a)); an offset made of input points reads these signs with the predicates
+/// themselves. NoOffset, the default, is a plain point and compiles to the tests above.
 
 #include <algorithm>
 
@@ -40,7 +43,8 @@ namespace contain::predicates {
 /// The origin is the point itself: no displacement before the ray's.
 struct NoOffset {
   static constexpr bool symbolic = false;
-  [[nodiscard]] Sign along(const BigVec3&) const { return Sign::zero; }
+  [[nodiscard]] Sign along_yz(Vec3, Vec3) const { return Sign::zero; }
+  [[nodiscard]] Sign along_normal(Vec3, Vec3, Vec3) const { return Sign::zero; }
 };
 
 /// Sign of orient2d in the (y, z) plane of (a, b, q_e), never zero for a.yz != b.yz.
@@ -49,9 +53,7 @@ template <class Offset = NoOffset>
   const Sign o = orient2d({a.y, a.z}, {b.y, b.z}, {q.y, q.z});
   if (o != Sign::zero) return o;
   if constexpr (Offset::symbolic) {
-    // Gradient of orient2d_yz(a, b, q) in q: (0, -(b.z - a.z), b.y - a.y).
-    const Sign d =
-        offset.along({BigFloat(), BigFloat(a.z) - BigFloat(b.z), BigFloat(b.y) - BigFloat(a.y)});
+    const Sign d = offset.along_yz(a, b);
     if (d != Sign::zero) return d;
   }
   if (b.z != a.z) return a.z > b.z ? Sign::positive : Sign::negative;
@@ -89,9 +91,7 @@ template <class Offset = NoOffset>
   const Sign o = orient3d(a, b, c, m);
   if (o != Sign::zero) return -to_int(o) * si;
   if constexpr (Offset::symbolic) {
-    // Gradient of orient3d(a, b, c, m) in m: the normal (b - a) x (c - a).
-    const BigVec3 ea = to_big(a);
-    const Sign d = offset.along(cross(to_big(b) - ea, to_big(c) - ea));
+    const Sign d = offset.along_normal(a, b, c);
     if (d != Sign::zero) return -to_int(d) * si;
   }
   const Sign ny = orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x});
