@@ -99,6 +99,42 @@ Status skip_extra_numbers(Lines& in, const std::string& source) {
   return Ok{};
 }
 
+// The common OFF vertex line, "x y z" and nothing else, read without building a Status a number;
+// false (in.p unchanged) for anything else, which the general reading then reports or accepts.
+bool plain_vertex_line(Lines& in, Vec3& out) {
+  const char* p = in.p;
+  double xyz[3];
+  for (double& c : xyz) {
+    skip_blanks(p, in.eol);
+    if (parse_double(p, in.eol, c) != NumberStatus::ok) return false;
+    if (p != in.eol && !is_blank(*p)) return false;
+  }
+  skip_blanks(p, in.eol);
+  if (p != in.eol) return false;
+  in.p = p;
+  out = {xyz[0], xyz[1], xyz[2]};
+  return true;
+}
+
+// The common OFF face line, "3 a b c" with indices in [0, nv) and nothing else, likewise.
+bool plain_triangle_line(Lines& in, std::int64_t nv, TriangleIndices& out) {
+  const char* p = in.p;
+  std::int64_t values[4];
+  for (std::int64_t& v : values) {
+    skip_blanks(p, in.eol);
+    if (!parse_int64(p, in.eol, v)) return false;
+    if (p != in.eol && !is_blank(*p)) return false;
+  }
+  skip_blanks(p, in.eol);
+  if (p != in.eol || values[0] != 3) return false;
+  for (int k = 1; k < 4; ++k)
+    if (values[k] < 0 || values[k] >= nv) return false;
+  in.p = p;
+  out = {static_cast<std::int32_t>(values[1]), static_cast<std::int32_t>(values[2]),
+         static_cast<std::int32_t>(values[3])};
+  return true;
+}
+
 bool keyword_is(std::string_view word, std::initializer_list<std::string_view> list) {
   return std::find(list.begin(), list.end(), word) != list.end();
 }
@@ -294,6 +330,10 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
                             std::to_string(nv) + " vertices the header announces",
                         source, in.line);
     }
+    if (Vec3 v; plain_vertex_line(in, v)) {
+      vertices.push_back(v);
+      continue;
+    }
     std::array<double, 3> xyz{};
     for (double& c : xyz) {
       if (auto s = read_number(in, c, source, "a vertex coordinate"); !s) return s.error();
@@ -309,6 +349,11 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
                         "the file ends after " + std::to_string(f) + " of the " +
                             std::to_string(nf) + " faces the header announces",
                         source, in.line);
+    }
+    if (TriangleIndices t; plain_triangle_line(in, nv, t)) {
+      triangles.push_back(t);
+      ++info.faces;
+      continue;
     }
     std::int64_t n = 0;
     if (auto s = read_integer(in, n, source, "the vertex count of a face"); !s) return s.error();
