@@ -55,13 +55,24 @@ VertexCorners corners_by_vertex(const Mesh& mesh) {
   return out;
 }
 
-// A use of the edge {v, other} by a triangle, seen from v: `local` is the corner's position in
-// v's corner list, `forward` whether the triangle runs min -> max along the edge.
-struct Link {
-  std::int32_t other;
-  std::uint32_t local;
-  bool forward;
-};
+// A use of the edge {v, other} by a triangle, seen from v, packed so that links sort as plain
+// integers by the other end: other (bits 33..63), the corner's position in v's corner list
+// (local, bits 1..32), whether the triangle runs min -> max along the edge (forward, bit 0).
+using Link = std::uint64_t;
+
+Link make_link(std::int32_t other, std::uint32_t local, bool forward) {
+  return static_cast<std::uint64_t>(other) << 33 | static_cast<std::uint64_t>(local) << 1 |
+         (forward ? 1U : 0U);
+}
+std::int32_t other_of(Link l) {
+  return static_cast<std::int32_t>(l >> 33);
+}
+std::uint32_t local_of(Link l) {
+  return static_cast<std::uint32_t>(l >> 1);
+}
+bool forward_of(Link l) {
+  return (l & 1U) != 0;
+}
 
 // Disjoint sets over one vertex's corners, reused from vertex to vertex.
 class LocalSets {
@@ -106,12 +117,10 @@ void collect_links(const Mesh& mesh, const VertexCorners& vc, std::int32_t v,
     if (i > 0 && vc.corner[first + i - 1] / 3 == c / 3) fans.unite(i - 1, i);
     const TriangleIndices& tri = mesh.triangles[c / 3];
     const std::int32_t next = tri[(c % 3 + 1) % 3], prev = tri[(c % 3 + 2) % 3];
-    if (next != v) links.push_back({next, i, v < next});  // the edge v -> next
-    if (prev != v) links.push_back({prev, i, prev < v});  // the edge prev -> v
+    if (next != v) links.push_back(make_link(next, i, v < next));  // the edge v -> next
+    if (prev != v) links.push_back(make_link(prev, i, prev < v));  // the edge prev -> v
   }
-  std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) {
-    return a.other != b.other ? a.other < b.other : a.local < b.local;
-  });
+  std::sort(links.begin(), links.end());
 }
 
 // Triangles with the same three vertices as another (any order) among those whose smallest
@@ -123,10 +132,10 @@ std::size_t duplicates_at(const Mesh& mesh, const VertexCorners& vc, std::int32_
        i < vc.start[static_cast<std::size_t>(v) + 1]; ++i) {
     const std::uint32_t c = vc.corner[i];
     std::array<std::int32_t, 3> s = mesh.triangles[c / 3];
-    std::sort(s.begin(), s.end());
     // Once per triangle: at its first corner holding its smallest vertex.
-    if (s[0] == v &&
+    if (std::min({s[0], s[1], s[2]}) == v &&
         (i == vc.start[static_cast<std::size_t>(v)] || vc.corner[i - 1] / 3 != c / 3)) {
+      std::sort(s.begin(), s.end());
       group.push_back(s);
     }
   }
@@ -151,17 +160,20 @@ void check_topology(const Mesh& mesh, MeshReport& r) {
     collect_links(mesh, vc, v, links, fans);
     for (std::size_t g = 0; g < links.size();) {
       std::size_t h = g + 1;
-      while (h < links.size() && links[h].other == links[g].other)
+      const std::int32_t other = other_of(links[g]);
+      while (h < links.size() && other_of(links[h]) == other)
         ++h;
       for (std::size_t q = g + 1; q < h; ++q)
-        fans.unite(links[g].local, links[q].local);
-      if (links[g].other > v) {  // the edge {v, other}, counted at its smaller end
+        fans.unite(local_of(links[g]), local_of(links[q]));
+      if (other > v) {  // the edge {v, other}, counted at its smaller end
         const std::size_t count = h - g;
         ++r.edges;
         if (count == 1) ++r.border_edges;
         if (count >= 3) ++r.nonmanifold_edges;
-        if (count == 2 && links[g].forward == links[g + 1].forward) ++r.inconsistent_edges;
-        vertices.unite(static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(links[g].other));
+        if (count == 2 && forward_of(links[g]) == forward_of(links[g + 1])) {
+          ++r.inconsistent_edges;
+        }
+        vertices.unite(static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(other));
       }
       g = h;
     }
