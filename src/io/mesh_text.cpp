@@ -116,19 +116,31 @@ bool plain_vertex_line(Lines& in, Vec3& out) {
   return true;
 }
 
+// Plain decimal digits (no sign, at most 9: below 2^31) at p, ending at a blank or the line
+// end; false (p unchanged) otherwise.
+bool plain_index(const char*& p, const char* eol, std::int64_t& out) {
+  const char* q = p;
+  std::int64_t v = 0;
+  while (q != eol && q - p < 10 && *q >= '0' && *q <= '9')
+    v = 10 * v + (*q++ - '0');
+  if (q == p || q - p > 9 || (q != eol && !is_blank(*q))) return false;
+  p = q;
+  out = v;
+  return true;
+}
+
 // The common OFF face line, "3 a b c" with indices in [0, nv) and nothing else, likewise.
 bool plain_triangle_line(Lines& in, std::int64_t nv, TriangleIndices& out) {
   const char* p = in.p;
   std::int64_t values[4];
   for (std::int64_t& v : values) {
     skip_blanks(p, in.eol);
-    if (!parse_int64(p, in.eol, v)) return false;
-    if (p != in.eol && !is_blank(*p)) return false;
+    if (!plain_index(p, in.eol, v)) return false;
   }
   skip_blanks(p, in.eol);
   if (p != in.eol || values[0] != 3) return false;
   for (int k = 1; k < 4; ++k)
-    if (values[k] < 0 || values[k] >= nv) return false;
+    if (values[k] >= nv) return false;
   in.p = p;
   out = {static_cast<std::int32_t>(values[1]), static_cast<std::int32_t>(values[2]),
          static_cast<std::int32_t>(values[3])};
