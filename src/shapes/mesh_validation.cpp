@@ -74,40 +74,10 @@ bool forward_of(Link l) {
   return (l & 1U) != 0;
 }
 
-// Disjoint sets over one vertex's corners, reused from vertex to vertex.
-class LocalSets {
- public:
-  void reset(std::size_t n) {
-    parent_.resize(n);
-    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
-  }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-  // More than one set among the first n.
-  bool several() {
-    for (std::uint32_t i = 1; i < parent_.size(); ++i)
-      if (find(i) != 0) return true;
-    return false;
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
-
 // The links of vertex v, sorted by the other end; corners of one triangle at v are joined (a
 // triangle with a repeated index).
 void collect_links(const Mesh& mesh, const VertexCorners& vc, std::int32_t v,
-                   std::vector<Link>& links, LocalSets& fans) {
+                   std::vector<Link>& links, UnionFind<std::uint32_t>& fans) {
   const auto first = vc.start[static_cast<std::size_t>(v)];
   const auto count = vc.start[static_cast<std::size_t>(v) + 1] - first;
   links.clear();
@@ -151,7 +121,7 @@ void check_topology(const Mesh& mesh, MeshReport& r) {
   const VertexCorners vc = corners_by_vertex(mesh);
   UnionFind<std::uint32_t> vertices(mesh.vertices.size());
   std::vector<Link> links;
-  LocalSets fans;
+  UnionFind<std::uint32_t> fans(0);  // v's corners, by their position in its list
   std::vector<std::array<std::int32_t, 3>> group;
   for (std::size_t vi = 0; vi < mesh.vertices.size(); ++vi) {
     if (vc.start[vi] == vc.start[vi + 1]) continue;
@@ -177,7 +147,13 @@ void check_topology(const Mesh& mesh, MeshReport& r) {
       }
       g = h;
     }
-    if (fans.several()) r.pinch_vertices.push_back(v);
+    const std::uint32_t corners = vc.start[vi + 1] - vc.start[vi];
+    for (std::uint32_t i = 1; i < corners; ++i) {
+      if (fans.find(i) != 0) {  // a corner outside the fan of the first
+        r.pinch_vertices.push_back(v);
+        break;
+      }
+    }
     r.duplicated_triangles += duplicates_at(mesh, vc, v, group);
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
