@@ -147,6 +147,30 @@ bool plain_triangle_line(Lines& in, std::int64_t nv, TriangleIndices& out) {
   return true;
 }
 
+// OFF's vertex section: nv lines of three coordinates (and optional colours or normals).
+Status read_off_vertices(Lines& in, std::int64_t nv, std::vector<Vec3>& vertices,
+                         const std::string& source) {
+  for (std::int64_t i = 0; i < nv; ++i) {
+    if (!in.advance_to_content()) {
+      return make_error(ErrorKind::parse,
+                        "the file ends after " + std::to_string(i) + " of the " +
+                            std::to_string(nv) + " vertices the header announces",
+                        source, in.line);
+    }
+    if (Vec3 v; plain_vertex_line(in, v)) {
+      vertices.push_back(v);
+      continue;
+    }
+    std::array<double, 3> xyz{};
+    for (double& c : xyz) {
+      if (auto s = read_number(in, c, source, "a vertex coordinate"); !s) return s;
+    }
+    if (auto s = skip_extra_numbers(in, source); !s) return s;
+    vertices.push_back({xyz[0], xyz[1], xyz[2]});
+  }
+  return Ok{};
+}
+
 bool keyword_is(std::string_view word, std::initializer_list<std::string_view> list) {
   return std::find(list.begin(), list.end(), word) != list.end();
 }
@@ -335,24 +359,7 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   std::vector<TriangleIndices> triangles;
   vertices.reserve(static_cast<std::size_t>(std::min(nv, cap)));
   triangles.reserve(static_cast<std::size_t>(std::min(nf, cap)));
-  for (std::int64_t i = 0; i < nv; ++i) {
-    if (!in.advance_to_content()) {
-      return make_error(ErrorKind::parse,
-                        "the file ends after " + std::to_string(i) + " of the " +
-                            std::to_string(nv) + " vertices the header announces",
-                        source, in.line);
-    }
-    if (Vec3 v; plain_vertex_line(in, v)) {
-      vertices.push_back(v);
-      continue;
-    }
-    std::array<double, 3> xyz{};
-    for (double& c : xyz) {
-      if (auto s = read_number(in, c, source, "a vertex coordinate"); !s) return s.error();
-    }
-    if (auto s = skip_extra_numbers(in, source); !s) return s.error();
-    vertices.push_back({xyz[0], xyz[1], xyz[2]});
-  }
+  if (auto s = read_off_vertices(in, nv, vertices, source); !s) return s.error();
   MeshInfo info{.format = MeshFormat::off};
   std::vector<std::int32_t> corners;
   for (std::int64_t f = 0; f < nf; ++f) {
