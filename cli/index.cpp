@@ -31,9 +31,11 @@ struct BuildOptions {
 int build_mesh_index(const BuildOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
+  enter_phase(Phase::prepare);
   const inside::MeshIndex index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
+  enter_phase(Phase::write);
   if (Status s = io::write_index(inside::format_index(index), o.out); !s) return report(s.error());
   return exit_ok;
 }

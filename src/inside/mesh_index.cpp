@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "contain/bvh/triangle_boxes.h"
@@ -37,14 +39,26 @@ double inner_point(double lo, double hi) {
   return (m >= lo && m < hi) ? m : lo;
 }
 
+// The float next to f (not NaN) towards -infinity or +infinity: std::nextafter without the call
+// into libm (six of these a triangle). Stepping the bits away from or towards zero moves one float
+// (infinity steps to the largest finite float); zero steps to the smallest subnormal.
+float float_step(float f, bool up) {
+  if (f == 0.0F) {
+    return up ? std::numeric_limits<float>::denorm_min()
+              : -std::numeric_limits<float>::denorm_min();
+  }
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>((f > 0.0F) == up ? bits + 1 : bits - 1);
+}
+
 float float_below(double v) {
   auto f = static_cast<float>(v);
-  if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  if (static_cast<double>(f) > v) f = float_step(f, false);
   return f;
 }
 float float_above(double v) {
   auto f = static_cast<float>(v);
-  if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (static_cast<double>(f) < v) f = float_step(f, true);
   return f;
 }
 
@@ -256,25 +270,27 @@ void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
           pairs.emplace_back(c, static_cast<std::uint32_t>(t));
         }
   }
-  std::vector<std::uint32_t> count(cell_count, 0);
-  for (const auto& [c, t] : pairs)
-    ++count[c];
+  // surface_ holds each cell's count first, then its surface cell number: no temporary array
+  // of the grid's size (1.6 M cells for 100k triangles) to zero and fault in.
   state_.assign(cell_count, 0);
   surface_.assign(cell_count, 0);
+  for (const auto& [c, t] : pairs)
+    ++surface_[c];
   cell_start_.clear();
   cell_start_.push_back(0);
-  std::vector<std::uint32_t> next(cell_count, 0);
   for (std::size_t c = 0; c < cell_count; ++c) {
-    if (count[c] == 0) continue;
+    const std::uint32_t count = surface_[c];
+    if (count == 0) continue;
     state_[c] = 2;
     surface_[c] = static_cast<std::uint32_t>(cell_start_.size() - 1);
-    next[c] = cell_start_.back();
-    cell_start_.push_back(cell_start_.back() + count[c]);
+    cell_start_.push_back(cell_start_.back() + count);
   }
+  std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
   refs_.resize(cell_start_.back());
   for (const auto& [c, t] : pairs) {
     const Tri& tri = tris_[t];
-    refs_[next[c]++] = {{tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
+    refs_[next[surface_[c]]++] = {
+        {tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
   }
   stats_.surface_cells = cell_start_.size() - 1;
   stats_.cell_refs = refs_.size();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contain/io/index_io.h"
 #include "io/mesh_formats.h"
 #include "io/text_scan.h"
 
@@ -102,6 +103,14 @@ Result<MeshFile> read_mesh(const std::filesystem::path& path, const MeshReadOpti
                               "cannot tell the mesh format from the extension '" +
                                   detail::lower_extension(path) + "': use .obj, .off, .stl or .ply",
                               detail::source_name(path));
+  }
+  // Parsed in place from a read-only map of a regular file: no copy, no zeroed buffer to fault
+  // in. Anything else (no such file, a directory, a pipe, an empty file) is read as before,
+  // which gives the same errors.
+  if (auto mapped = map_file(path.string()); mapped && !mapped->bytes().empty()) {
+    const std::span<const std::byte> bytes = mapped->bytes();
+    return parse_mesh({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, *format,
+                      detail::source_name(path), options);
   }
   auto bytes = detail::read_file(path);
   if (!bytes) return bytes.error();

@@ -99,6 +99,78 @@ Status skip_extra_numbers(Lines& in, const std::string& source) {
   return Ok{};
 }
 
+// The common OFF vertex line, "x y z" and nothing else, read without building a Status a number;
+// false (in.p unchanged) for anything else, which the general reading then reports or accepts.
+bool plain_vertex_line(Lines& in, Vec3& out) {
+  const char* p = in.p;
+  double xyz[3];
+  for (double& c : xyz) {
+    skip_blanks(p, in.eol);
+    if (parse_double(p, in.eol, c) != NumberStatus::ok) return false;
+    if (p != in.eol && !is_blank(*p)) return false;
+  }
+  skip_blanks(p, in.eol);
+  if (p != in.eol) return false;
+  in.p = p;
+  out = {xyz[0], xyz[1], xyz[2]};
+  return true;
+}
+
+// Plain decimal digits (no sign, at most 9: below 2^31) at p, ending at a blank or the line
+// end; false (p unchanged) otherwise.
+bool plain_index(const char*& p, const char* eol, std::int64_t& out) {
+  const char* q = p;
+  std::int64_t v = 0;
+  while (q != eol && q - p < 10 && *q >= '0' && *q <= '9')
+    v = 10 * v + (*q++ - '0');
+  if (q == p || q - p > 9 || (q != eol && !is_blank(*q))) return false;
+  p = q;
+  out = v;
+  return true;
+}
+
+// The common OFF face line, "3 a b c" with indices in [0, nv) and nothing else, likewise.
+bool plain_triangle_line(Lines& in, std::int64_t nv, TriangleIndices& out) {
+  const char* p = in.p;
+  std::int64_t values[4];
+  for (std::int64_t& v : values) {
+    skip_blanks(p, in.eol);
+    if (!plain_index(p, in.eol, v)) return false;
+  }
+  skip_blanks(p, in.eol);
+  if (p != in.eol || values[0] != 3) return false;
+  for (int k = 1; k < 4; ++k)
+    if (values[k] >= nv) return false;
+  in.p = p;
+  out = {static_cast<std::int32_t>(values[1]), static_cast<std::int32_t>(values[2]),
+         static_cast<std::int32_t>(values[3])};
+  return true;
+}
+
+// OFF's vertex section: nv lines of three coordinates (and optional colours or normals).
+Status read_off_vertices(Lines& in, std::int64_t nv, std::vector<Vec3>& vertices,
+                         const std::string& source) {
+  for (std::int64_t i = 0; i < nv; ++i) {
+    if (!in.advance_to_content()) {
+      return make_error(ErrorKind::parse,
+                        "the file ends after " + std::to_string(i) + " of the " +
+                            std::to_string(nv) + " vertices the header announces",
+                        source, in.line);
+    }
+    if (Vec3 v; plain_vertex_line(in, v)) {
+      vertices.push_back(v);
+      continue;
+    }
+    std::array<double, 3> xyz{};
+    for (double& c : xyz) {
+      if (auto s = read_number(in, c, source, "a vertex coordinate"); !s) return s;
+    }
+    if (auto s = skip_extra_numbers(in, source); !s) return s;
+    vertices.push_back({xyz[0], xyz[1], xyz[2]});
+  }
+  return Ok{};
+}
+
 bool keyword_is(std::string_view word, std::initializer_list<std::string_view> list) {
   return std::find(list.begin(), list.end(), word) != list.end();
 }
@@ -287,20 +359,7 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   std::vector<TriangleIndices> triangles;
   vertices.reserve(static_cast<std::size_t>(std::min(nv, cap)));
   triangles.reserve(static_cast<std::size_t>(std::min(nf, cap)));
-  for (std::int64_t i = 0; i < nv; ++i) {
-    if (!in.advance_to_content()) {
-      return make_error(ErrorKind::parse,
-                        "the file ends after " + std::to_string(i) + " of the " +
-                            std::to_string(nv) + " vertices the header announces",
-                        source, in.line);
-    }
-    std::array<double, 3> xyz{};
-    for (double& c : xyz) {
-      if (auto s = read_number(in, c, source, "a vertex coordinate"); !s) return s.error();
-    }
-    if (auto s = skip_extra_numbers(in, source); !s) return s.error();
-    vertices.push_back({xyz[0], xyz[1], xyz[2]});
-  }
+  if (auto s = read_off_vertices(in, nv, vertices, source); !s) return s.error();
   MeshInfo info{.format = MeshFormat::off};
   std::vector<std::int32_t> corners;
   for (std::int64_t f = 0; f < nf; ++f) {
@@ -309,6 +368,11 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
                         "the file ends after " + std::to_string(f) + " of the " +
                             std::to_string(nf) + " faces the header announces",
                         source, in.line);
+    }
+    if (TriangleIndices t; plain_triangle_line(in, nv, t)) {
+      triangles.push_back(t);
+      ++info.faces;
+      continue;
     }
     std::int64_t n = 0;
     if (auto s = read_integer(in, n, source, "the vertex count of a face"); !s) return s.error();

@@ -13,21 +13,17 @@
 #include "contain/predicates/orient2d.h"
 #include "contain/values/box.h"
 
-// Outline: one record per (edge, triangle) sorted by edge (counting sorts) gives border,
-// non-manifold and inconsistent edges; the same groups join triangle corners at both end vertices
-// (a vertex whose corners fall into several groups is a pinch vertex); vertices joined by edges
-// give the components; sorted vertex triples give duplicates; exact orientations give degenerate
-// faces.
+// Outline: the triangle corners grouped by vertex (one counting sort) give, at each vertex v,
+// its links: for each corner at v, the two neighbours along the triangle's edges. Links with the
+// same neighbour w are the uses of the edge {v, w}: those with w > v count each edge once
+// (border, non-manifold, inconsistent edges); all of them join v's corners into fans (a vertex
+// of several fans is a pinch vertex). The triangles whose smallest vertex is v, sorted, give
+// duplicates; vertices joined by edges give the components; exact orientations give degenerate
+// faces. Work and memory stay local to a vertex: no sort or union-find over all edges.
 
 namespace contain::shapes {
 
 namespace {
-
-struct EdgeUse {
-  std::int32_t lo, hi;  // lo < hi
-  std::int32_t triangle;
-  bool forward;  // the triangle runs lo -> hi
-};
 
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
   using predicates::orient2d;
@@ -36,88 +32,135 @@ bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
          orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
 }
 
-std::size_t corner_of(const TriangleIndices& t, std::int32_t v) {
-  return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
-}
+// Corners 3 t + k grouped by their vertex, ascending within a vertex (so the corners of one
+// triangle at one vertex are next to each other): corner[start[v] .. start[v + 1]).
+struct VertexCorners {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> corner;
+};
 
-// The positions 0 .. n - 1 ordered by key(i) in [0, keys), equal keys in their given order: a
-// counting sort, O(n + keys), where a comparison sort of the hundreds of thousands of records
-// of a large mesh took most of the validation's time.
-template <class Key>
-std::vector<std::uint32_t> counting_order(std::size_t n, std::size_t keys, const Key& key,
-                                          const std::vector<std::uint32_t>* within = nullptr) {
-  std::vector<std::uint32_t> start(keys + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    ++start[key(i) + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t at = within ? (*within)[i] : i;
-    order[start[key(at)]++] = static_cast<std::uint32_t>(at);
-  }
-  return order;
-}
-
-// The edge uses in the order of (lo, hi, triangle): two stable counting sorts (by hi, then by
-// lo) of uses made in triangle order.
-std::vector<EdgeUse> sorted_by_edge(const std::vector<EdgeUse>& uses, std::size_t vertices) {
-  const auto by_hi = counting_order(
-      uses.size(), vertices, [&](std::size_t i) { return static_cast<std::size_t>(uses[i].hi); });
-  const auto by_lo = counting_order(
-      uses.size(), vertices, [&](std::size_t i) { return static_cast<std::size_t>(uses[i].lo); },
-      &by_hi);
-  std::vector<EdgeUse> out(uses.size());
-  for (std::size_t i = 0; i < uses.size(); ++i)
-    out[i] = uses[by_lo[i]];
+VertexCorners corners_by_vertex(const Mesh& mesh) {
+  VertexCorners out;
+  out.start.assign(mesh.vertices.size() + 1, 0);
+  for (const TriangleIndices& t : mesh.triangles)
+    for (const std::int32_t v : t)
+      ++out.start[static_cast<std::size_t>(v) + 1];
+  std::partial_sum(out.start.begin(), out.start.end(), out.start.begin());
+  out.corner.resize(3 * mesh.triangles.size());
+  std::vector<std::uint32_t> next(out.start.begin(), out.start.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k)
+      out.corner[next[static_cast<std::size_t>(mesh.triangles[t][k])]++] =
+          static_cast<std::uint32_t>(3 * t + k);
   return out;
 }
 
-// Vertices (ascending) whose triangle corners fall into more than one group: pinch vertices.
-std::vector<std::int32_t> pinch_vertices(const Mesh& mesh, UnionFind<std::size_t>& corners) {
-  const std::size_t nc = 3 * mesh.triangles.size();
-  const auto vertex_of = [&](std::size_t c) {
-    return static_cast<std::size_t>(mesh.triangles[c / 3][c % 3]);
-  };
-  const auto order = counting_order(nc, mesh.vertices.size(), vertex_of);
-  std::vector<std::int32_t> out;
-  for (std::size_t g = 0; g < nc;) {
-    const std::size_t v = vertex_of(order[g]);
-    const std::size_t root = corners.find(order[g]);
-    bool pinch = false;
-    std::size_t h = g + 1;
-    for (; h < nc && vertex_of(order[h]) == v; ++h)
-      pinch = pinch || corners.find(order[h]) != root;
-    if (pinch) out.push_back(static_cast<std::int32_t>(v));
-    g = h;
-  }
-  return out;
+// A use of the edge {v, other} by a triangle, seen from v, packed so that links sort as plain
+// integers by the other end: other (bits 33..63), the corner's position in v's corner list
+// (local, bits 1..32), whether the triangle runs min -> max along the edge (forward, bit 0).
+using Link = std::uint64_t;
+
+Link make_link(std::int32_t other, std::uint32_t local, bool forward) {
+  return static_cast<std::uint64_t>(other) << 33 | static_cast<std::uint64_t>(local) << 1 |
+         (forward ? 1U : 0U);
+}
+std::int32_t other_of(Link l) {
+  return static_cast<std::int32_t>(l >> 33);
+}
+std::uint32_t local_of(Link l) {
+  return static_cast<std::uint32_t>(l >> 1);
+}
+bool forward_of(Link l) {
+  return (l & 1U) != 0;
 }
 
-// Triangles with the same three vertices as another (any order), counted past the first.
-std::size_t duplicated_triangles(const Mesh& mesh) {
-  const std::size_t nt = mesh.triangles.size();
-  std::vector<std::array<std::int32_t, 3>> sorted(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    sorted[t] = mesh.triangles[t];
-    std::sort(sorted[t].begin(), sorted[t].end());
+// The links of vertex v, sorted by the other end; corners of one triangle at v are joined (a
+// triangle with a repeated index).
+void collect_links(const Mesh& mesh, const VertexCorners& vc, std::int32_t v,
+                   std::vector<Link>& links, UnionFind<std::uint32_t>& fans) {
+  const auto first = vc.start[static_cast<std::size_t>(v)];
+  const auto count = vc.start[static_cast<std::size_t>(v) + 1] - first;
+  links.clear();
+  fans.reset(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t c = vc.corner[first + i];
+    if (i > 0 && vc.corner[first + i - 1] / 3 == c / 3) fans.unite(i - 1, i);
+    const TriangleIndices& tri = mesh.triangles[c / 3];
+    const std::int32_t next = tri[(c % 3 + 1) % 3], prev = tri[(c % 3 + 2) % 3];
+    if (next != v) links.push_back(make_link(next, i, v < next));  // the edge v -> next
+    if (prev != v) links.push_back(make_link(prev, i, prev < v));  // the edge prev -> v
   }
-  // Grouped by the smallest vertex, then each (small) group sorted.
-  const auto order = counting_order(nt, mesh.vertices.size(), [&](std::size_t t) {
-    return static_cast<std::size_t>(sorted[t][0]);
-  });
+  std::sort(links.begin(), links.end());
+}
+
+// Triangles with the same three vertices as another (any order) among those whose smallest
+// vertex is v, counted past the first.
+std::size_t duplicates_at(const Mesh& mesh, const VertexCorners& vc, std::int32_t v,
+                          std::vector<std::array<std::int32_t, 3>>& group) {
+  group.clear();
+  for (auto i = vc.start[static_cast<std::size_t>(v)];
+       i < vc.start[static_cast<std::size_t>(v) + 1]; ++i) {
+    const std::uint32_t c = vc.corner[i];
+    std::array<std::int32_t, 3> s = mesh.triangles[c / 3];
+    // Once per triangle: at its first corner holding its smallest vertex.
+    if (std::min({s[0], s[1], s[2]}) == v &&
+        (i == vc.start[static_cast<std::size_t>(v)] || vc.corner[i - 1] / 3 != c / 3)) {
+      std::sort(s.begin(), s.end());
+      group.push_back(s);
+    }
+  }
+  std::sort(group.begin(), group.end());
   std::size_t count = 0;
-  std::vector<std::array<std::int32_t, 3>> group;
-  for (std::size_t g = 0; g < nt;) {
-    group.clear();
-    std::size_t h = g;
-    for (; h < nt && sorted[order[h]][0] == sorted[order[g]][0]; ++h)
-      group.push_back(sorted[order[h]]);
-    std::sort(group.begin(), group.end());
-    for (std::size_t i = 1; i < group.size(); ++i)
-      count += group[i] == group[i - 1] ? 1 : 0;
-    g = h;
-  }
+  for (std::size_t i = 1; i < group.size(); ++i)
+    count += group[i] == group[i - 1] ? 1 : 0;
   return count;
+}
+
+// Edges, fans, components and duplicates, vertex by vertex.
+void check_topology(const Mesh& mesh, MeshReport& r) {
+  const VertexCorners vc = corners_by_vertex(mesh);
+  UnionFind<std::uint32_t> vertices(mesh.vertices.size());
+  std::vector<Link> links;
+  UnionFind<std::uint32_t> fans(0);  // v's corners, by their position in its list
+  std::vector<std::array<std::int32_t, 3>> group;
+  for (std::size_t vi = 0; vi < mesh.vertices.size(); ++vi) {
+    if (vc.start[vi] == vc.start[vi + 1]) continue;
+    ++r.referenced_vertices;
+    const auto v = static_cast<std::int32_t>(vi);
+    collect_links(mesh, vc, v, links, fans);
+    for (std::size_t g = 0; g < links.size();) {
+      std::size_t h = g + 1;
+      const std::int32_t other = other_of(links[g]);
+      while (h < links.size() && other_of(links[h]) == other)
+        ++h;
+      for (std::size_t q = g + 1; q < h; ++q)
+        fans.unite(local_of(links[g]), local_of(links[q]));
+      if (other > v) {  // the edge {v, other}, counted at its smaller end
+        const std::size_t count = h - g;
+        ++r.edges;
+        if (count == 1) ++r.border_edges;
+        if (count >= 3) ++r.nonmanifold_edges;
+        if (count == 2 && forward_of(links[g]) == forward_of(links[g + 1])) {
+          ++r.inconsistent_edges;
+        }
+        vertices.unite(static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(other));
+      }
+      g = h;
+    }
+    const std::uint32_t corners = vc.start[vi + 1] - vc.start[vi];
+    for (std::uint32_t i = 1; i < corners; ++i) {
+      if (fans.find(i) != 0) {  // a corner outside the fan of the first
+        r.pinch_vertices.push_back(v);
+        break;
+      }
+    }
+    r.duplicated_triangles += duplicates_at(mesh, vc, v, group);
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (vc.start[v] != vc.start[v + 1] && vertices.find(static_cast<std::uint32_t>(v)) == v) {
+      ++r.components;
+    }
+  }
 }
 
 }  // namespace
@@ -128,70 +171,19 @@ MeshReport validate_mesh(const Mesh& mesh) {
   r.triangles = mesh.triangles.size();
   const std::size_t nt = mesh.triangles.size();
 
-  std::vector<char> used(mesh.vertices.size(), 0);
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * nt);
   Box3 box;
-  for (std::size_t t = 0; t < nt; ++t) {
-    const TriangleIndices& tri = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = tri[static_cast<std::size_t>(k)];
-      const std::int32_t b = tri[static_cast<std::size_t>((k + 1) % 3)];
-      used[static_cast<std::size_t>(a)] = 1;
-      box.expand(mesh.vertex(a));
-      if (a == b) continue;
-      uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(t), a < b});
-    }
+  for (const TriangleIndices& tri : mesh.triangles) {
     const Vec3 a = mesh.vertex(tri[0]);
     const Vec3 b = mesh.vertex(tri[1]);
     const Vec3 c = mesh.vertex(tri[2]);
+    box.expand(a);
+    box.expand(b);
+    box.expand(c);
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] || zero_area(a, b, c)) {
       ++r.degenerate_triangles;
     }
   }
-  r.referenced_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
-  uses = sorted_by_edge(uses, mesh.vertices.size());
-
-  // Corners: 3 t + k. A triangle with a repeated index joins its own corners at that vertex.
-  UnionFind<std::size_t> corners(3 * nt);
-  UnionFind<std::size_t> vertices(mesh.vertices.size());
-  for (std::size_t t = 0; t < nt; ++t) {
-    const TriangleIndices& tri = mesh.triangles[t];
-    for (std::size_t k = 0; k < 3; ++k) {
-      for (std::size_t l = k + 1; l < 3; ++l) {
-        if (tri[k] == tri[l]) corners.unite(3 * t + k, 3 * t + l);
-      }
-    }
-  }
-  for (std::size_t g = 0; g < uses.size();) {
-    std::size_t h = g;
-    while (h < uses.size() && uses[h].lo == uses[g].lo && uses[h].hi == uses[g].hi)
-      ++h;
-    const std::size_t count = h - g;
-    ++r.edges;
-    if (count == 1) ++r.border_edges;
-    if (count >= 3) ++r.nonmanifold_edges;
-    if (count == 2 && uses[g].forward == uses[g + 1].forward) ++r.inconsistent_edges;
-    const EdgeUse& first = uses[g];
-    vertices.unite(static_cast<std::size_t>(first.lo), static_cast<std::size_t>(first.hi));
-    const auto tf = static_cast<std::size_t>(first.triangle);
-    for (std::size_t q = g + 1; q < h; ++q) {
-      const auto tq = static_cast<std::size_t>(uses[q].triangle);
-      for (std::int32_t v : {first.lo, first.hi}) {
-        corners.unite(3 * tf + corner_of(mesh.triangles[tf], v),
-                      3 * tq + corner_of(mesh.triangles[tq], v));
-      }
-    }
-    g = h;
-  }
-
-  r.pinch_vertices = pinch_vertices(mesh, corners);
-
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (used[v] && vertices.find(v) == v) ++r.components;
-  }
-
-  r.duplicated_triangles = duplicated_triangles(mesh);
+  check_topology(mesh, r);
 
   r.euler_characteristic = static_cast<std::int64_t>(r.referenced_vertices) -
                            static_cast<std::int64_t>(r.edges) + static_cast<std::int64_t>(nt);

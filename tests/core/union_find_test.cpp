@@ -43,5 +43,18 @@ TEST(UnionFind, AgreesWithALabelPropagationOracleOnRandomJoins) {
   }
 }
 
+TEST(UnionFind, ResetMakesSingletonsOfANewSize) {
+  UnionFind<std::uint32_t> sets(4);
+  sets.unite(0, 3);
+  sets.unite(1, 2);
+  sets.reset(6);
+  for (std::uint32_t i = 0; i < 6; ++i)
+    EXPECT_EQ(sets.find(i), i);
+  sets.unite(5, 4);
+  EXPECT_EQ(sets.find(5), 4u);
+  sets.reset(2);
+  EXPECT_EQ(sets.find(1), 1u);
+}
+
 }  // namespace
 }  // namespace contain

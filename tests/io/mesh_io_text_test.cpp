@@ -91,6 +91,20 @@ TEST(OffReader, ReadsCountsOnTheHeaderLineCommentsAndFaceColours) {
   EXPECT_EQ(r->info.faces, 1);
 }
 
+TEST(OffReader, PlainAndDecoratedLinesReadAlike) {
+  // Plain "x y z" and "3 a b c" lines take the quick reading; CR LF ends, tabs, signs, trailing
+  // comments and a face colour take the general one: the same mesh either way.
+  auto plain = off("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  auto decorated =
+      off("OFF\r\n4 2 0\r\n+0 0 0 # origin\r\n1\t0 -0.0\r\n1 1 +0\r\n0 1 0e0\r\n3 0 1 2 # one\r\n"
+          "3\t0 2 3 0.5 0.5 0.5\r\n");
+  ASSERT_TRUE(plain.ok()) << plain.error().what();
+  ASSERT_TRUE(decorated.ok()) << decorated.error().what();
+  EXPECT_EQ(plain->mesh, decorated->mesh);
+  EXPECT_EQ(plain->mesh.vertices, kQuad);
+  EXPECT_EQ(decorated->info.faces, 2);
+}
+
 TEST(OffReader, ReadsCoffAndNoffVertexLines) {
   auto c = off("COFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n3 0 1 2\n");
   ASSERT_TRUE(c.ok()) << c.error().what();

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -175,6 +177,112 @@ TEST(MeshValidation, WeldingKeepsFirstOccurrencesAndNeverMergesNaN) {
   ASSERT_EQ(w.mesh.vertices.size(), first.size());
   EXPECT_EQ(w.merged, soup.vertices.size() - first.size());
   EXPECT_EQ(w.remap[5000] + 1, w.remap[5001]);  // NaN equals nothing, itself included
+}
+
+// The report's topology by definition, in the plainest way: a map from each edge to its uses,
+// a search over each vertex's corners along shared edges, a set of sorted triples, a search
+// over vertices along edges.
+MeshReport brute_force_topology(const Mesh& m) {
+  MeshReport r;
+  std::map<std::pair<int, int>, std::vector<std::pair<std::size_t, bool>>> uses;
+  std::set<int> referenced;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      referenced.insert(a);
+      if (a != b) uses[{std::min(a, b), std::max(a, b)}].push_back({t, a < b});
+    }
+  }
+  r.referenced_vertices = referenced.size();
+  r.edges = uses.size();
+  for (const auto& [edge, list] : uses) {
+    r.border_edges += list.size() == 1;
+    r.nonmanifold_edges += list.size() >= 3;
+    r.inconsistent_edges += list.size() == 2 && list[0].second == list[1].second;
+  }
+  for (const int v : referenced) {
+    // Corners at v: triangles holding v; two are joined when they share an edge at v (or are
+    // the same triangle).
+    std::vector<std::size_t> tris;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+      if (std::count(m.triangles[t].begin(), m.triangles[t].end(), v) > 0) tris.push_back(t);
+    std::vector<bool> seen(tris.size(), false);
+    std::vector<std::size_t> stack{0};
+    seen[0] = true;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for (std::size_t j = 0; j < tris.size(); ++j) {
+        if (seen[j]) continue;
+        for (const auto& [edge, list] : uses) {
+          if (edge.first != v && edge.second != v) continue;
+          bool has_i = false, has_j = false;
+          for (const auto& [t, forward] : list) {
+            has_i = has_i || t == tris[i];
+            has_j = has_j || t == tris[j];
+          }
+          if (has_i && has_j) {
+            seen[j] = true;
+            stack.push_back(j);
+            break;
+          }
+        }
+      }
+    }
+    if (std::find(seen.begin(), seen.end(), false) != seen.end()) r.pinch_vertices.push_back(v);
+  }
+  std::set<std::array<std::int32_t, 3>> triples;
+  for (const TriangleIndices& t : m.triangles) {
+    std::array<std::int32_t, 3> s = t;
+    std::sort(s.begin(), s.end());
+    r.duplicated_triangles += triples.insert(s).second ? 0 : 1;
+  }
+  std::set<int> left = referenced;
+  while (!left.empty()) {
+    ++r.components;
+    std::vector<int> stack{*left.begin()};
+    left.erase(left.begin());
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (const auto& [edge, list] : uses) {
+        const int w = edge.first == v ? edge.second : edge.second == v ? edge.first : -1;
+        if (w >= 0 && left.erase(w) > 0) stack.push_back(w);
+      }
+    }
+  }
+  return r;
+}
+
+TEST(MeshValidation, TopologyMatchesABruteForceCountOnRandomMeshes) {
+  // Few vertices and many triangles: shared, non-manifold, inconsistent and border edges,
+  // repeated indices, duplicates, pinches and isolated vertices all occur.
+  std::mt19937_64 rng(27);
+  for (int round = 0; round < 400; ++round) {
+    const int nv = 3 + static_cast<int>(rng() % 10);
+    const int nt = 1 + static_cast<int>(rng() % 16);
+    Mesh m;
+    for (int i = 0; i < nv; ++i)
+      m.vertices.push_back({double(rng() % 5), double(rng() % 5), double(rng() % 5)});
+    std::uniform_int_distribution<int> vertex(0, nv - 1);
+    for (int t = 0; t < nt; ++t) {
+      const int a = vertex(rng);
+      const int b = rng() % 6 == 0 ? a : vertex(rng);
+      m.triangles.push_back({a, b, vertex(rng)});
+      if (rng() % 4 == 0) m.triangles.push_back({b, a, m.triangles.back()[2]});  // reversed
+    }
+    const MeshReport want = brute_force_topology(m);
+    const MeshReport got = validate_mesh(m);
+    SCOPED_TRACE("round " + std::to_string(round));
+    EXPECT_EQ(got.referenced_vertices, want.referenced_vertices);
+    EXPECT_EQ(got.edges, want.edges);
+    EXPECT_EQ(got.border_edges, want.border_edges);
+    EXPECT_EQ(got.nonmanifold_edges, want.nonmanifold_edges);
+    EXPECT_EQ(got.inconsistent_edges, want.inconsistent_edges);
+    EXPECT_EQ(got.pinch_vertices, want.pinch_vertices);
+    EXPECT_EQ(got.duplicated_triangles, want.duplicated_triangles);
+    EXPECT_EQ(got.components, want.components);
+  }
 }
 
 TEST(MeshValidation, TorusSceneHasGenusOne) {

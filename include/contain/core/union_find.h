@@ -22,6 +22,13 @@ class UnionFind {
     std::iota(parent_.begin(), parent_.end(), Index{0});
   }
 
+  /// n singletons again, reusing the storage (one set per vertex of a mesh, say, without an
+  /// allocation each).
+  void reset(std::size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), Index{0});
+  }
+
   /// The representative (smallest element) of x's set. Precondition: x < n.
   [[nodiscard]] Index find(Index x) {
     while (parent_[x] != x) {

@@ -66,7 +66,8 @@ struct MeshReport {
   [[nodiscard]] std::string summary() const;
 };
 
-/// Checks a mesh. Topology by sorting edges (O(n log n) for n triangles); degenerate triangles
+/// Checks a mesh. Topology vertex by vertex over the triangle corners grouped by vertex (O(n)
+/// for n triangles, plus sorting each vertex's few edges); degenerate triangles
 /// exactly with predicates::orient2d on the three coordinate projections (a triangle has zero
 /// area iff all three projected areas are zero); pinch vertices by joining, at each vertex, the
 /// triangles that share an edge there (union-find over triangle corners). Precondition: indices
