@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <tuple>
 #include <vector>
 
@@ -32,11 +33,12 @@ bool before(const EdgeUse& a, const EdgeUse& b) {
   return std::tie(a.from, a.triangle, a.corner) < std::tie(b.from, b.triangle, b.corner);
 }
 
-std::vector<EdgeUse> directed_edges(const Mesh& welded) {
+std::vector<EdgeUse> directed_edges(std::size_t vertices,
+                                    std::span<const TriangleIndices> triangles) {
   std::vector<EdgeUse> edges;
-  edges.reserve(welded.triangles.size() * 3);
-  for (std::size_t t = 0; t < welded.triangles.size(); ++t) {
-    const TriangleIndices& v = welded.triangles[t];
+  edges.reserve(triangles.size() * 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const TriangleIndices& v = triangles[t];
     for (std::int32_t k = 0; k < 3; ++k) {
       const std::int32_t from = v[static_cast<std::size_t>(k)];
       const std::int32_t to = v[static_cast<std::size_t>((k + 1) % 3)];
@@ -48,7 +50,7 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
   // A counting sort by the lower vertex (vertex numbers are dense), then each vertex's few
   // edges by `before`: the same order as sorting all by `before`, in linear time. The full sort
   // was a quarter of slicing 100 planes through a 131k-triangle sphere.
-  std::vector<std::size_t> start(welded.vertices.size() + 1, 0);
+  std::vector<std::size_t> start(vertices + 1, 0);
   for (const EdgeUse& e : edges)
     ++start[static_cast<std::size_t>(std::min(e.from, e.to)) + 1];
   for (std::size_t v = 1; v < start.size(); ++v)
@@ -65,47 +67,62 @@ std::vector<EdgeUse> directed_edges(const Mesh& welded) {
   return sorted;
 }
 
-// True when every directed edge occurs as often as its reverse: the answer for most meshes,
-// found without the records of directed_edges. Each edge is filed under its lower vertex as
-// (upper vertex, direction) in one word (a counting sort), and each vertex's few words are
-// sorted and counted. About a fifth of the cost of the full search, which then runs only for
-// open meshes, to name their first unbalanced edge.
-bool balanced(const Mesh& welded) {
-  std::vector<std::size_t> start(welded.vertices.size() + 1, 0);
+// Every directed edge filed under its lower vertex as one word, (upper vertex, direction,
+// half-edge 3t + k) from the high bits down (a counting sort), each vertex's few words sorted:
+// the uses of an edge and of its reverse are then one run, for `balanced` to count and pair.
+// About a fifth of the cost of the full search (directed_edges), which then runs only for open
+// meshes, to name their first unbalanced edge. False when the mesh is too large for the word.
+template <class Run>
+bool each_edge_run(std::span<const TriangleIndices> triangles, std::size_t vertices, Run&& run) {
+  if (3 * triangles.size() >= (std::size_t{1} << 31)) return false;
+  std::vector<std::size_t> start(vertices + 1, 0);
   const auto each_edge = [&](auto&& f) {
-    for (const TriangleIndices& v : welded.triangles) {
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const TriangleIndices& v = triangles[t];
       for (std::size_t k = 0; k < 3; ++k) {
-        const std::int32_t from = v[k];
-        const std::int32_t to = v[(k + 1) % 3];
-        if (from != to) f(from, to);
+        if (v[k] != v[(k + 1) % 3]) f(v[k], v[(k + 1) % 3], 3 * t + k);
       }
     }
   };
-  each_edge([&](std::int32_t a, std::int32_t b) {
+  each_edge([&](std::int32_t a, std::int32_t b, std::size_t) {
     ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
   });
   for (std::size_t v = 1; v < start.size(); ++v)
     start[v] += start[v - 1];
   std::vector<std::uint64_t> filed(start.back());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  each_edge([&](std::int32_t a, std::int32_t b) {
+  each_edge([&](std::int32_t a, std::int32_t b, std::size_t half) {
     const auto lo = static_cast<std::size_t>(std::min(a, b));
     const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-    filed[next[lo]++] = (hi << 1) | (a < b ? 0U : 1U);
+    filed[next[lo]++] = (hi << 32) | (a < b ? 0U : std::uint64_t{1} << 31) | half;
   });
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
     const auto first = filed.begin() + static_cast<std::ptrdiff_t>(start[v]);
     const auto last = filed.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
     std::sort(first, last);
     for (auto i = first; i != last;) {
-      const std::uint64_t upper = *i >> 1;
-      std::ptrdiff_t net = 0;
-      for (; i != last && (*i >> 1) == upper; ++i)
-        net += (*i & 1U) == 0 ? 1 : -1;
-      if (net != 0) return false;
+      const auto begin = i;
+      const std::uint64_t upper = *i >> 32;
+      for (; i != last && (*i >> 32) == upper; ++i) {
+      }
+      if (!run(std::span<const std::uint64_t>(&*begin, static_cast<std::size_t>(i - begin))))
+        return false;
     }
   }
   return true;
+}
+
+// The uses of one edge (a run of each_edge_run): as many up (lower to upper vertex, first in the
+// run) as down.
+bool balanced_run(std::span<const std::uint64_t> uses) {
+  std::ptrdiff_t net = 0;
+  for (const std::uint64_t use : uses)
+    net += (use & (std::uint64_t{1} << 31)) == 0 ? 1 : -1;
+  return net == 0;
+}
+
+bool balanced(std::span<const Vec3> vertices, std::span<const TriangleIndices> triangles) {
+  return each_edge_run(triangles, vertices.size(), balanced_run);
 }
 
 }  // namespace
@@ -115,8 +132,32 @@ std::optional<UnmatchedEdge> unmatched_edge(const Mesh& mesh) {
 }
 
 std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld) {
-  if (balanced(weld.mesh)) return std::nullopt;
-  const std::vector<EdgeUse> edges = directed_edges(weld.mesh);
+  return unmatched_edge(weld.mesh.vertices, weld.mesh.triangles);
+}
+
+std::optional<std::vector<std::int32_t>> paired_half_edges(const Mesh& welded) {
+  std::vector<std::int32_t> twin(3 * welded.triangles.size(), -1);
+  const auto pair = [&](std::span<const std::uint64_t> uses) {
+    if (!balanced_run(uses)) return false;
+    if (uses.size() == 2) {
+      constexpr std::uint64_t kHalf = (std::uint64_t{1} << 31) - 1;
+      const auto a = static_cast<std::int32_t>(uses[0] & kHalf);
+      const auto b = static_cast<std::int32_t>(uses[1] & kHalf);
+      if (a / 3 != b / 3) {
+        twin[static_cast<std::size_t>(a)] = b;
+        twin[static_cast<std::size_t>(b)] = a;
+      }
+    }
+    return true;
+  };
+  if (!each_edge_run(welded.triangles, welded.vertices.size(), pair)) return std::nullopt;
+  return twin;
+}
+
+std::optional<UnmatchedEdge> unmatched_edge(std::span<const Vec3> vertices,
+                                            std::span<const TriangleIndices> triangles) {
+  if (balanced(vertices, triangles)) return std::nullopt;
+  const std::vector<EdgeUse> edges = directed_edges(vertices.size(), triangles);
   std::optional<EdgeUse> worst;  // the unbalanced direction whose first triangle comes first
   std::int64_t worst_count = 0;
   std::int64_t worst_reverse = 0;
@@ -147,8 +188,9 @@ std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld) {
   if (!worst) {
     return std::nullopt;
   }
-  return UnmatchedEdge{weld.mesh.vertex(worst->from), weld.mesh.vertex(worst->to), worst->triangle,
-                       worst_count, worst_reverse};
+  return UnmatchedEdge{vertices[static_cast<std::size_t>(worst->from)],
+                       vertices[static_cast<std::size_t>(worst->to)], worst->triangle, worst_count,
+                       worst_reverse};
 }
 
 }  // namespace contain::shapes

@@ -450,6 +450,81 @@ TEST(SliceMesh, ChainedRingsFollowTheRuleWhateverTheOrderOfTheSegments) {
   EXPECT_GT(cases, 40);
 }
 
+TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
+  // The walk along paired half-edges gives the rings (and triangles) that chaining the
+  // crossing segments through their keys gives, on generic planes through spheres apart, a
+  // torus and overlapping spheres; it declines planes through a vertex, and stretches without a
+  // pairing (two boxes sharing an edge: four triangles on it).
+  const Mesh far =
+      joined(uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40), uv_sphere({3.1, 0.4, 0.05}, 0.9, 18, 29));
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  const Mesh overlapping =
+      joined(uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40), uv_sphere({0.7, 0.3, 0.0}, 0.8, 18, 29));
+  int walked = 0;
+  for (const Mesh* mesh : {&far, &torus, &overlapping}) {
+    const clip::slice::SweepMesh prepared =
+        clip::slice::prepare(*mesh, clip::slice::frame_of(Axis::z));
+    std::vector<std::int32_t> all(prepared.triangles.size());
+    std::iota(all.begin(), all.end(), 0);
+    std::mt19937_64 rng(7);
+    std::shuffle(all.begin(), all.end(), rng);
+    // The triangles a sweep holds at c: not flat, reaching c.
+    const auto active_at = [&](double c) {
+      std::vector<std::int32_t> active;
+      for (const std::int32_t t : all) {
+        const auto u = static_cast<std::size_t>(t);
+        if (prepared.low[u] <= c && c <= prepared.high[u] && prepared.low[u] < prepared.high[u])
+          active.push_back(t);
+      }
+      return active;
+    };
+    for (const double c : {0.1234, -0.377, 0.0123, 0.4}) {
+      const std::vector<std::int32_t> active = active_at(c);
+      clip::slice::WalkScratch scratch;
+      std::vector<clip::slice::CrossingSegment> segments;
+      std::vector<clip::slice::ChainCycle> cycles;
+      ASSERT_TRUE(clip::slice::walk_curve(prepared, active, c, scratch, segments, cycles)) << c;
+      std::vector<std::int32_t> walk(segments.size());
+      std::iota(walk.begin(), walk.end(), 0);
+      std::vector<Ring> got;
+      std::vector<std::vector<std::int32_t>> got_under, want_under;
+      std::vector<std::int32_t> rotated;
+      clip::slice::write_cycles(segments, walk, cycles, got, &got_under, rotated);
+      const std::vector<Ring> want = clip::slice::chain_rings(
+          clip::slice::crossing_segments(prepared, active, c).above, &want_under);
+      ASSERT_EQ(got, want) << c;
+      ASSERT_EQ(got_under, want_under) << c;
+      ++walked;
+    }
+    // A plane through a vertex is left to the general stages.
+    const double on = prepared.vertices[prepared.vertices.size() / 2].z;
+    clip::slice::WalkScratch scratch;
+    std::vector<clip::slice::CrossingSegment> segments;
+    std::vector<clip::slice::ChainCycle> cycles;
+    const std::vector<std::int32_t> active = active_at(on);
+    ASSERT_FALSE(active.empty());
+    EXPECT_FALSE(clip::slice::walk_curve(prepared, active, on, scratch, segments, cycles));
+  }
+  const Mesh touching = joined(scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}}),
+                               scenes::box_mesh(Box3{{1, 1, 0}, {2, 2, 1}}));
+  const clip::slice::SweepMesh prepared =
+      clip::slice::prepare(touching, clip::slice::frame_of(Axis::z));
+  std::vector<std::int32_t> all(prepared.triangles.size());
+  std::iota(all.begin(), all.end(), 0);
+  std::erase_if(all, [&](std::int32_t t) {
+    return prepared.low[static_cast<std::size_t>(t)] == prepared.high[static_cast<std::size_t>(t)];
+  });
+  clip::slice::WalkScratch scratch;
+  std::vector<clip::slice::CrossingSegment> segments;
+  std::vector<clip::slice::ChainCycle> cycles;
+  EXPECT_FALSE(clip::slice::walk_curve(prepared, all, 0.5, scratch, segments, cycles));
+  EXPECT_EQ(walked, 12);
+  // And the sections through it are the oracle's (the general stages decide them).
+  auto sections = clip::slice_mesh(touching, std::vector<double>{0.5});
+  ASSERT_TRUE(sections);
+  EXPECT_EQ((*sections)[0].region.polygons.size(), 2U);
+}
+
 TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
   // Spheres apart (disjoint boxes: claimed), overlapping (boxes meet: the engine), nested
   // (a hollow sphere's annulus: the engine), a torus (two rings, one inside: the engine), and

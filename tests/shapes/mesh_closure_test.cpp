@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <random>
 #include <utility>
+#include <vector>
 
 #include "scenes/scenes.h"
 
@@ -70,6 +72,81 @@ TEST(MeshClosure, TwoBoxesSharingAnEdgeAreClosedThoughNotManifold) {
     m.triangles.push_back(t);
   }
   EXPECT_FALSE(unmatched_edge(m).has_value());
+}
+
+TEST(MeshClosure, PairedHalfEdgesRunTheOtherWayAlongTheSameEdge) {
+  // A torus (every edge manifold), two boxes sharing an edge (four uses: no pair there), and a
+  // triangle with a repeated corner (its edge and reverse in one triangle: no pair).
+  const Mesh torus = scenes::torus(2.0, 0.5, 24, 12);
+  Mesh pair_of_boxes = unit_box();
+  const Mesh second = scenes::box_mesh(Box3{{1, 1, 0}, {2, 2, 1}});
+  const auto offset = static_cast<std::int32_t>(pair_of_boxes.vertices.size());
+  pair_of_boxes.vertices.insert(pair_of_boxes.vertices.end(), second.vertices.begin(),
+                                second.vertices.end());
+  for (TriangleIndices t : second.triangles)
+    pair_of_boxes.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  Mesh folded = unit_box();
+  folded.triangles.push_back({0, 0, 1});
+  for (const Mesh* mesh : std::initializer_list<const Mesh*>{&torus, &pair_of_boxes, &folded}) {
+    const Mesh welded = weld_vertices(*mesh).mesh;
+    const auto twin = paired_half_edges(welded);
+    ASSERT_TRUE(twin.has_value());
+    ASSERT_EQ(twin->size(), 3 * welded.triangles.size());
+    // Each undirected edge's uses, counted by brute force.
+    std::map<std::pair<std::int32_t, std::int32_t>, int> uses;
+    const auto half = [&](std::size_t h) {
+      const TriangleIndices& t = welded.triangles[h / 3];
+      return std::pair{t[h % 3], t[(h + 1) % 3]};
+    };
+    for (std::size_t h = 0; h < twin->size(); ++h) {
+      const auto [a, b] = half(h);
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+    std::size_t paired = 0;
+    for (std::size_t h = 0; h < twin->size(); ++h) {
+      const auto [a, b] = half(h);
+      const bool manifold = a != b && uses[{std::min(a, b), std::max(a, b)}] == 2 &&
+                            welded.triangles[h / 3][0] != welded.triangles[h / 3][1] &&
+                            welded.triangles[h / 3][1] != welded.triangles[h / 3][2] &&
+                            welded.triangles[h / 3][2] != welded.triangles[h / 3][0];
+      const std::int32_t g = (*twin)[h];
+      if (!manifold) {
+        EXPECT_EQ(g, -1) << "half-edge " << h;
+        continue;
+      }
+      ASSERT_GE(g, 0) << "half-edge " << h;
+      EXPECT_EQ(half(static_cast<std::size_t>(g)), std::pair(b, a));
+      EXPECT_EQ((*twin)[static_cast<std::size_t>(g)], static_cast<std::int32_t>(h));
+      ++paired;
+    }
+    EXPECT_GT(paired, 0U);
+  }
+  // Open: nothing, and unmatched_edge names the edge.
+  Mesh open = unit_box();
+  open.triangles.pop_back();
+  EXPECT_FALSE(paired_half_edges(open).has_value());
+  EXPECT_TRUE(unmatched_edge(open).has_value());
+}
+
+TEST(MeshClosure, AnswerFromWeldedArraysIsTheAnswerFromTheMesh) {
+  // The mesh booleans' soup holds several inputs' welded vertices and triangles: the span form
+  // on one input's triangles gives the edge unmatched_edge gives on that input alone.
+  Mesh box = unit_box();
+  box.triangles.erase(box.triangles.begin() + 3);
+  const WeldResult weld = weld_vertices(box);
+  std::vector<Vec3> vertices = weld.mesh.vertices;
+  vertices.push_back({5, 5, 5});  // another input's vertex, referenced by none of these
+  const auto edge = unmatched_edge(box);
+  const auto from_arrays = unmatched_edge(vertices, weld.mesh.triangles);
+  ASSERT_TRUE(edge.has_value());
+  ASSERT_TRUE(from_arrays.has_value());
+  EXPECT_TRUE(from_arrays->from == edge->from && from_arrays->to == edge->to);
+  EXPECT_EQ(from_arrays->triangle, edge->triangle);
+  EXPECT_EQ(from_arrays->count, edge->count);
+  EXPECT_EQ(from_arrays->reverse, edge->reverse);
+  EXPECT_FALSE(unmatched_edge(weld_vertices(unit_box()).mesh.vertices,
+                              weld_vertices(unit_box()).mesh.triangles)
+                   .has_value());
 }
 
 TEST(MeshClosure, UnweldedCopyIsJudgedByPosition) {

@@ -58,10 +58,12 @@ struct Section {
 /// `shapes::unmatched_edge`) is `ErrorKind::degenerate` naming the edge and its first triangle;
 /// a value that is NaN or infinite is `ErrorKind::invalid_value` naming its index.
 ///
-/// Complexity: O(n log n) to sort the triangles by their extent along the axis once, then a
-/// sweep over the planes in sorted order (each thread sweeps its own run of planes), and per
-/// plane O(k log k) for its k crossing triangles plus the 2D boolean of the curves. Answers are
-/// the same whatever `batch.threads`.
+/// Complexity: O(n log P) to file the n triangles under the first of the P planes they reach
+/// (after the weld and the closedness test, O(n) and a sort of each vertex's few edges), then a
+/// sweep over the planes in sorted order (each thread sweeps its own run of planes): per plane
+/// O(k) for its k crossing triangles when it passes through no vertex of a manifold stretch
+/// (walked along the surface), else O(k log k), plus the 2D boolean of the curves where the
+/// rings are not proven simple and apart. Answers are the same whatever `batch.threads`.
 [[nodiscard]] Result<std::vector<Section>> slice_mesh(const Mesh& mesh,
                                                       std::span<const double> values,
                                                       const SliceOptions& options = {},

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/mesh_validation.h"
@@ -34,11 +36,26 @@ struct UnmatchedEdge {
 /// The same answer from the mesh already welded (`weld_vertices(mesh)`), for callers that go on
 /// to use the welded mesh (slicing): the mesh is welded once, not once per question.
 [[nodiscard]] std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld);
+/// The same from vertices already welded by position (distinct positions, distinct numbers) and
+/// triangles on them, held in other structures (the mesh booleans' soup of several inputs);
+/// `triangle` counts from the first of `triangles`.
+[[nodiscard]] std::optional<UnmatchedEdge> unmatched_edge(
+    std::span<const Vec3> vertices, std::span<const TriangleIndices> triangles);
+
+/// For a welded mesh (`weld_vertices(mesh).mesh`): nothing when some directed edge occurs more
+/// often than its reverse (`unmatched_edge` names one), else per half-edge 3t + i (triangle t from
+/// corner i to corner i + 1) the half-edge running the other way along the same edge when these
+/// two are its only uses and lie in two triangles (a manifold edge), else -1. The pairing that
+/// walks a surface from triangle to triangle (slicing), at about the cost of the closedness test
+/// alone: O(n) plus a sort of each vertex's few edges. Also nothing for a mesh of 2^31 / 3
+/// triangles or more, closed or not.
+[[nodiscard]] std::optional<std::vector<std::int32_t>> paired_half_edges(const Mesh& welded);
 
 }  // namespace contain::shapes
 
 // Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
 namespace contain {
+using shapes::paired_half_edges;
 using shapes::unmatched_edge;
 using shapes::UnmatchedEdge;
 }  // namespace contain

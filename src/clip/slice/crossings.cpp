@@ -23,10 +23,6 @@ constexpr std::uint64_t kVertexTag = 0xFFFFFFFFULL;
 std::uint64_t vertex_key(std::int32_t v) {
   return (static_cast<std::uint64_t>(v) << 32) | kVertexTag;
 }
-std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
-}
 
 struct Crossing {
   std::uint64_t key;

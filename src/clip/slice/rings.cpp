@@ -74,16 +74,7 @@ bool chain_cycles(std::span<const CrossingSegment> segments, std::vector<Ring>& 
     }
     cycles.push_back(cycle);
   }
-  std::sort(cycles.begin(), cycles.end(),
-            [](const ChainCycle& a, const ChainCycle& b) { return a.least < b.least; });
-  std::vector<std::int32_t>& walk = scratch.rotated;
-  for (const ChainCycle& cycle : cycles) {
-    const auto begin = scratch.walk.begin() + static_cast<std::ptrdiff_t>(cycle.begin);
-    const auto first = begin + static_cast<std::ptrdiff_t>(cycle.first);
-    walk.assign(first, begin + static_cast<std::ptrdiff_t>(cycle.size));
-    walk.insert(walk.end(), begin, first);
-    add_ring(segments, walk, rings, triangles);
-  }
+  write_cycles(segments, scratch.walk, cycles, rings, triangles, scratch.rotated);
   return true;
 }
 
@@ -138,6 +129,20 @@ void chain_general(std::span<const CrossingSegment> segments, std::vector<Ring>&
 }
 
 }  // namespace
+
+void write_cycles(std::span<const CrossingSegment> segments, std::span<const std::int32_t> walk,
+                  std::vector<ChainCycle>& cycles, std::vector<Ring>& rings, Triangles* triangles,
+                  std::vector<std::int32_t>& rotated) {
+  std::sort(cycles.begin(), cycles.end(),
+            [](const ChainCycle& a, const ChainCycle& b) { return a.least < b.least; });
+  for (const ChainCycle& cycle : cycles) {
+    const auto begin = walk.begin() + static_cast<std::ptrdiff_t>(cycle.begin);
+    const auto first = begin + static_cast<std::ptrdiff_t>(cycle.first);
+    rotated.assign(first, begin + static_cast<std::ptrdiff_t>(cycle.size));
+    rotated.insert(rotated.end(), begin, first);
+    add_ring(segments, rotated, rings, triangles);
+  }
+}
 
 std::vector<Ring> chain_rings(std::span<const CrossingSegment> segments, Triangles* triangles,
                               ChainScratch& scratch) {

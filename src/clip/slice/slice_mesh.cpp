@@ -49,17 +49,27 @@ Result<std::vector<Section>> slice_mesh(const Mesh& mesh, std::span<const double
     }
   }
   WeldResult weld = weld_vertices(mesh);
-  if (Status closed = slice::require_closed(weld); !closed) return closed.error();
+  // The closedness test pairs the half-edges on the way (the walk of walk.cpp follows them);
+  // only an open mesh, or one too large to pair, runs the search that names an edge.
+  std::optional<std::vector<std::int32_t>> twin = paired_half_edges(weld.mesh);
+  if (!twin) {
+    if (Status closed = slice::require_closed(weld); !closed) return closed.error();
+    twin.emplace(3 * weld.mesh.triangles.size(), -1);
+  }
   const slice::SweepMesh prepared =
-      slice::prepare_welded(std::move(weld.mesh), slice::frame_of(options.axis));
+      slice::prepare_welded(std::move(weld.mesh), slice::frame_of(options.axis), std::move(*twin));
   std::vector<std::size_t> order(values.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  std::vector<double> sorted(values.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    sorted[i] = values[order[i]];
+  const slice::SweepStarts starts = slice::sweep_starts(prepared, sorted);
   std::vector<Section> out(values.size());
   // One plane is a whole 2D boolean: chunks of a single plane are worth a thread.
   parallel_for(values.size(), batch, std::size_t{1}, [&](std::size_t begin, std::size_t end) {
-    slice::sweep(prepared, values, order, begin, end, out);
+    slice::sweep(prepared, starts, sorted, order, begin, end, out);
   });
   return out;
 }

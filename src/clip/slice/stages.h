@@ -2,7 +2,8 @@
 // The stages of slice_mesh and shadow (include/contain/clip/slice_mesh.h), one file each:
 // prepare.cpp (weld, sort triangles along the axis), crossings.cpp (a plane's directed crossing
 // segments, for the plane just above and just below), rings.cpp (chaining them into closed
-// paths through shared keys), provenance.cpp (the triangle under each output edge), sweep.cpp
+// paths through shared keys), walk.cpp (both at once along the surface, for a plane through no
+// vertex of a manifold stretch), provenance.cpp (the triangle under each output edge), sweep.cpp
 // (planes in sorted order, the active triangles, one section each), shadow.cpp.
 
 #include <algorithm>
@@ -44,18 +45,36 @@ struct Frame {
 
 /// The mesh as the sweep reads it: vertices welded by position (closedness and chaining judge
 /// vertices by position), each as its coordinates (u, v, axis) in x, y, z, so that the sweep
-/// reads heights and section coordinates without the frame; triangles in file order, and the
-/// triangles that are not flat along the axis sorted by their lowest coordinate (then index).
+/// reads heights and section coordinates without the frame; triangles in file order, their
+/// extents along the axis, and the pairing of their half-edges (`shapes::paired_half_edges`: -1
+/// off manifold edges, everywhere when not given).
 struct SweepMesh {
   Frame frame;
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
-  std::vector<double> low, high;     // per triangle, along the axis
-  std::vector<std::int32_t> by_low;  // non-flat triangles, by low
+  std::vector<double> low, high;   // per triangle, along the axis
+  std::vector<std::int32_t> twin;  // per half-edge 3t + i
 };
-[[nodiscard]] SweepMesh prepare_welded(Mesh welded, const Frame& frame);
+[[nodiscard]] SweepMesh prepare_welded(Mesh welded, const Frame& frame,
+                                       std::vector<std::int32_t> twin);
 /// The same from a mesh not yet welded.
 [[nodiscard]] SweepMesh prepare(const Mesh& mesh, const Frame& frame);
+
+/// The triangles that cross some plane of the sweep (not flat along the axis, and a plane value
+/// in [low, high]), grouped by the first plane they reach: `triangles[start[i]]` to
+/// `triangles[start[i + 1] - 1]` for plane `sorted[i]`, in index order. Triangles between two
+/// planes never enter the sweep. `sorted`: the plane values in increasing order.
+struct SweepStarts {
+  std::vector<std::size_t> start;
+  std::vector<std::int32_t> triangles;
+};
+[[nodiscard]] SweepStarts sweep_starts(const SweepMesh& mesh, std::span<const double> sorted);
+
+/// The key of a plane's crossing on the mesh edge a-b (welded vertex numbers, either order).
+[[nodiscard]] inline std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+}
 
 /// Open addressing from 64-bit keys to values, reused from plane to plane: `reset` empties it
 /// by a new stamp (no clearing, no allocation once grown) with room for `entries` keys at most
@@ -150,6 +169,15 @@ struct ChainScratch {
   std::vector<std::size_t> cursor;
 };
 
+/// The rings of closed walks over the segments: cycle k is `walk[begin, begin + size)` (segment
+/// numbers), written from position `first`, the cycles in increasing order of `least`: how
+/// chain_rings writes the cycles of segments that leave every key once. Paths of fewer than 3
+/// points are left out; `triangles` as for chain_rings. `cycles` is sorted in place.
+void write_cycles(std::span<const CrossingSegment> segments, std::span<const std::int32_t> walk,
+                  std::vector<ChainCycle>& cycles, std::vector<Ring>& rings,
+                  std::vector<std::vector<std::int32_t>>* triangles,
+                  std::vector<std::int32_t>& rotated);
+
 /// Closed paths through the segments, joined where one's to_key is another's from_key. The
 /// segments of a closed mesh balance at every key, so every walk closes; zero-length pieces
 /// (from_key == to_key) are left out, and so are paths of fewer than 3 points. The walks are
@@ -182,6 +210,21 @@ struct ChainScratch {
 [[nodiscard]] std::vector<std::vector<std::int32_t>> edge_triangles(
     const MultiPolygon& region, std::span<const CrossingSegment> segments);
 
+/// The marks of walk_curve: triangle t is on a path of the current plane when mark[t] == stamp.
+struct WalkScratch {
+  std::vector<std::uint32_t> mark;
+  std::uint32_t stamp = 0;
+};
+
+/// The curve of the plane at c when no vertex of the active triangles lies on it and every
+/// crossing edge has a twin: its segments in `out`, path after path (the order of `active`
+/// picks where each path starts), and the paths as `cycles` over them. False when that does
+/// not hold (a vertex on the plane, a non-manifold or degenerate stretch): the caller takes the
+/// general stages. Each crossing is computed once (`predicates::rounded_axis_crossing`).
+[[nodiscard]] bool walk_curve(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
+                              WalkScratch& scratch, std::vector<CrossingSegment>& out,
+                              std::vector<ChainCycle>& cycles);
+
 /// What one thread of the sweep reuses from plane to plane.
 struct SweepScratch {
   std::vector<std::int32_t> active;
@@ -189,15 +232,17 @@ struct SweepScratch {
   PlaneCurves curves;
   std::vector<CrossingSegment> both;
   ChainScratch chain;
+  WalkScratch walk;
 };
 
 /// The section at c from the active triangles (in any order: the answer does not depend on it).
 [[nodiscard]] Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active,
                                  double c, SweepScratch& scratch);
 
-/// Sections of the planes values[order[i]] for i in [begin, end), `order` sorting the values
-/// increasingly: one sweep with an active set, each answer written to out[order[i]].
-void sweep(const SweepMesh& mesh, std::span<const double> values,
+/// Sections of the planes sorted[i] = values[order[i]] for i in [begin, end), `order` sorting
+/// the values increasingly: one sweep with an active set fed by `starts`, each answer written
+/// to out[order[i]].
+void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
            std::span<Section> out);
 

@@ -8,24 +8,45 @@
 
 namespace contain::clip::slice {
 
+namespace {
+
+// The section of a plane through no vertex, from its one curve (rule slice-two-sides: both
+// sides have it), whose positive winding numbers are the section.
+Section one_curve_section(std::vector<Ring> rings, std::vector<std::vector<std::int32_t>> under,
+                          std::span<const CrossingSegment> segments, double c) {
+  Section out;
+  out.value = c;
+  if (simple_section(rings, under, segments.size(), out)) return out;
+  out.region = polygon_boolean(rings, {}, {.op = Op::union_, .fill = Fill::positive});
+  out.triangles = edge_triangles(out.region, segments);
+  return out;
+}
+
+}  // namespace
+
 Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, double c,
                    SweepScratch& scratch) {
   PlaneCurves& curves = scratch.curves;
+  ChainScratch& chain = scratch.chain;
+  if (walk_curve(mesh, active, c, scratch.walk, curves.above, chain.cycles)) {
+    chain.walk.resize(curves.above.size());
+    for (std::size_t i = 0; i < chain.walk.size(); ++i)
+      chain.walk[i] = static_cast<std::int32_t>(i);
+    std::vector<Ring> rings;
+    std::vector<std::vector<std::int32_t>> under;
+    write_cycles(curves.above, chain.walk, chain.cycles, rings, &under, chain.rotated);
+    return one_curve_section(std::move(rings), std::move(under), curves.above, c);
+  }
   crossing_segments(mesh, active, c, scratch.memo, curves);
+  if (!curves.touches) {
+    std::vector<std::vector<std::int32_t>> under;
+    std::vector<Ring> rings = chain_rings(curves.above, &under, chain);
+    return one_curve_section(std::move(rings), std::move(under), curves.above, c);
+  }
   Section out;
   out.value = c;
-  if (!curves.touches) {
-    // No vertex on the plane: both sides have the same curve, whose positive winding numbers
-    // are the section (rule slice-two-sides).
-    std::vector<std::vector<std::int32_t>> under;
-    std::vector<Ring> above = chain_rings(curves.above, &under, scratch.chain);
-    if (simple_section(above, under, curves.above.size(), out)) return out;
-    out.region = polygon_boolean(above, {}, {.op = Op::union_, .fill = Fill::positive});
-    out.triangles = edge_triangles(out.region, curves.above);
-    return out;
-  }
-  const std::vector<Ring> above = chain_rings(curves.above, nullptr, scratch.chain);
-  const std::vector<Ring> below = chain_rings(curves.below, nullptr, scratch.chain);
+  const std::vector<Ring> above = chain_rings(curves.above, nullptr, chain);
+  const std::vector<Ring> below = chain_rings(curves.below, nullptr, chain);
   out.region = polygon_boolean(above, below, {.op = Op::intersection, .fill = Fill::positive});
   std::vector<CrossingSegment>& both = scratch.both;
   both.assign(curves.above.begin(), curves.above.end());
@@ -34,21 +55,31 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
   return out;
 }
 
-void sweep(const SweepMesh& mesh, std::span<const double> values,
+void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
            std::span<Section> out) {
   SweepScratch scratch;
   std::vector<std::int32_t>& active = scratch.active;
-  std::size_t next = 0;  // the first triangle of by_low not yet active
-  for (std::size_t i = begin; i < end; ++i) {
-    const double c = values[order[i]];
-    for (; next < mesh.by_low.size() && mesh.low[static_cast<std::size_t>(mesh.by_low[next])] <= c;
-         ++next) {
-      active.push_back(mesh.by_low[next]);
+  const auto entering = [&](std::size_t i) {
+    return std::span<const std::int32_t>(starts.triangles)
+        .subspan(starts.start[i], starts.start[i + 1] - starts.start[i]);
+  };
+  // A run of planes starting past the first takes the triangles that reached an earlier plane
+  // and still reach this one.
+  if (begin < end) {
+    for (std::size_t i = 0; i < begin; ++i) {
+      for (const std::int32_t t : entering(i)) {
+        if (mesh.high[static_cast<std::size_t>(t)] >= sorted[begin]) active.push_back(t);
+      }
     }
+  }
+  for (std::size_t i = begin; i < end; ++i) {
+    const double c = sorted[i];
+    const std::span<const std::int32_t> in = entering(i);
+    active.insert(active.end(), in.begin(), in.end());
     // The planes increase: a triangle wholly below this one stays out of every later one. The
     // order of `active` then depends on where this thread's run of planes began, but no answer
-    // depends on it (chain_rings, edge_triangles).
+    // depends on it (walk_curve, chain_rings, edge_triangles).
     std::erase_if(active,
                   [&](std::int32_t t) { return mesh.high[static_cast<std::size_t>(t)] < c; });
     out[order[i]] = section_at(mesh, active, c, scratch);

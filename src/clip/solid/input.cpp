@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -31,9 +32,12 @@ std::string coordinates(Vec3 v) {
   return out.str();
 }
 
-// The error naming input `which`'s first unbalanced directed edge, if any.
-Status check_closed(const Mesh& mesh, std::size_t which) {
-  const std::optional<UnmatchedEdge> edge = unmatched_edge(mesh);
+// The error naming input `which`'s first unbalanced directed edge, if any: triangles [first,
+// end) of the soup, whose vertices are already welded by exact position (-0 = +0), the welding
+// of `unmatched_edge`, so the answer is its answer on the input without welding it again.
+Status check_closed(const Soup& soup, std::size_t first, std::size_t which) {
+  const std::optional<UnmatchedEdge> edge = unmatched_edge(
+      soup.vertices, std::span<const TriangleIndices>(soup.triangles).subspan(first));
   if (!edge) return Ok{};
   return Error{.kind = ErrorKind::invalid_value,
                .message = "input " + std::to_string(which) + " is not closed: the directed edge " +
@@ -41,46 +45,6 @@ Status check_closed(const Mesh& mesh, std::size_t which) {
                           std::to_string(edge->triangle) + ") occurs " +
                           std::to_string(edge->count) + " time(s), its reverse " +
                           std::to_string(edge->reverse)};
-}
-
-// Triangles [first, last) of the soup (one input's) have every directed edge as often as its
-// reverse. Their corners are welded by exact position (-0 = +0), the welding of `unmatched_edge`,
-// so this is its answer (nothing unmatched) in linear time: a counting sort of the edges by
-// their lower vertex, then each vertex's few edges summed (+1 up, -1 down) per other vertex.
-bool balanced(const Soup& soup, std::size_t first, std::size_t last) {
-  std::vector<std::size_t> start(soup.vertices.size() + 1, 0);
-  const auto each_edge = [&](auto&& f) {
-    for (std::size_t t = first; t < last; ++t) {
-      const TriangleIndices& v = soup.triangles[t];
-      for (std::size_t k = 0; k < 3; ++k) {
-        if (v[k] != v[(k + 1) % 3]) f(v[k], v[(k + 1) % 3]);
-      }
-    }
-  };
-  each_edge([&](std::int32_t a, std::int32_t b) {
-    ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
-  });
-  for (std::size_t i = 1; i < start.size(); ++i)
-    start[i] += start[i - 1];
-  std::vector<std::pair<std::int32_t, int>> ends(start.back());  // (upper vertex, direction)
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  each_edge([&](std::int32_t a, std::int32_t b) {
-    ends[next[static_cast<std::size_t>(std::min(a, b))]++] = {std::max(a, b), a < b ? 1 : -1};
-  });
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto lo = ends.begin() + static_cast<std::ptrdiff_t>(start[v]);
-    const auto hi = ends.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(lo, hi);
-    for (auto it = lo; it != hi;) {
-      int sum = 0;
-      auto run = it;
-      for (; run != hi && run->first == it->first; ++run)
-        sum += run->second;
-      if (sum != 0) return false;
-      it = run;
-    }
-  }
-  return true;
 }
 
 }  // namespace
@@ -149,10 +113,7 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                 remap[static_cast<std::size_t>(t[2])]});
       soup.input.push_back(static_cast<std::int32_t>(k));
     }
-    if (!balanced(soup, first, soup.triangles.size())) {
-      const Status closed = check_closed(mesh, k);  // names the edge
-      if (!closed) return closed.error();
-    }
+    if (const Status closed = check_closed(soup, first, k); !closed) return closed.error();
   }
   for (const TriangleIndices& t : soup.triangles) {
     const Vec3 a = soup.vertices[static_cast<std::size_t>(t[0])];
