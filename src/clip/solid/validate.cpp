@@ -167,13 +167,6 @@ bool edges_matched(const Mesh& mesh) {
   return true;
 }
 
-// Zero area exactly when the three projections onto the coordinate planes have zero area.
-bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
-  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
-         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
-         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
-}
-
 // The triangles whose boxes meet the box of a triangle of `rounded` (those included): every
 // triangle that can meet one of them. A hierarchy over the rounded triangles' boxes only, one
 // query per triangle.
@@ -225,6 +218,12 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
   return soup;
 }
 }  // namespace
+
+bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+}
 
 Status check_written(const Mesh& mesh) {
   return check_written(mesh, std::vector<bool>(mesh.vertices.size(), false));
