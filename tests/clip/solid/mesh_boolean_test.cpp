@@ -412,8 +412,9 @@ TEST(MeshBoolean, ATorusWithItselfTurnedAQuarterIsValidForEveryOperation) {
 }
 
 // A sphere turned about (1, 2, 3) by 1e-15 and 1e-13 radians: vertices a few ulps to a few
-// hundred ulps apart, the surfaces crossing everywhere at tiny angles (on main, the difference
-// and xor ended in the degenerate error at 1e-15).
+// hundred ulps apart, the surfaces crossing everywhere at tiny angles (before the inputs were
+// snapped, the difference and xor at 1e-15, the union and xor at 1e-13 ended in the degenerate
+// error).
 TEST(MeshBoolean, ASphereWithASlightlyRotatedCopyIsValidForEveryOperation) {
   const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
   for (const double angle : {1e-15, 1e-13}) {
