@@ -13,6 +13,14 @@
 // grid growing from 2^2 to 2^20 ulps of the largest coordinate (hot cells: what meets one cell
 // becomes one vertex), which removes the slivers that keep folding. The number of rounds is
 // bounded, so this ends; a mesh is returned only when the exact check of its doubles passes.
+//
+// Surfaces a few ulps apart (a solid against itself turned a quarter, whose vertices differ in
+// their last bits) cross at hundreds of points whose slivers fold again at every round, however
+// the result's points are merged: the crossings are new points each time. There the inputs
+// themselves are snapped (snap_inputs): their vertices merged on growing grids, which turns
+// nearly coincident surfaces into coincident ones, and the exact boolean of the snapped inputs,
+// an exact arrangement with no such slivers, goes through the same rounds. The attempts are
+// bounded too (5 grids), so the whole ends.
 
 #include "clip/solid/snap.h"
 
