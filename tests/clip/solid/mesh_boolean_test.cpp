@@ -432,6 +432,37 @@ TEST(MeshBoolean, ASphereWithASlightlyRotatedCopyIsValidForEveryOperation) {
   }
 }
 
+// Turned by 1e-9 radians the copy's vertices are too far apart for the inputs' grids (up to
+// 2^16 ulps) and its slivers, at angles of 1e-9, still fold at every round: the xor ends in the
+// degenerate error (known, not mended: docs/solids.md), within its bounded rounds; whatever
+// ends, no invalid mesh is returned.
+TEST(MeshBoolean, ASphereAgainstACopyTurned1em9EndsValidOrInTheDegenerateError) {
+  const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
+  Mesh turned = a;
+  const double n = std::sqrt(14.0), c = std::cos(1e-9), s = std::sin(1e-9);
+  const Vec3 k{1 / n, 2 / n, 3 / n};
+  for (Vec3& v : turned.vertices) {
+    const double d = k.x * v.x + k.y * v.y + k.z * v.z;
+    const Vec3 kv{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z, k.x * v.y - k.y * v.x};
+    v = {v.x * c + kv.x * s + k.x * d * (1 - c), v.y * c + kv.y * s + k.y * d * (1 - c),
+         v.z * c + kv.z * s + k.z * d * (1 - c)};
+  }
+  const std::vector<Mesh> in = {a, turned};
+  int valid = 0;
+  for (const Op op : all_ops) {
+    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in, {.op = op});
+    if (!r) {
+      EXPECT_EQ(r.error().kind, ErrorKind::degenerate) << r.error().message;
+      EXPECT_NE(r.error().message.find("also with the inputs' vertices merged"), std::string::npos);
+      continue;
+    }
+    ++valid;
+    EXPECT_EQ(invalid_reason(r->mesh), "") << static_cast<int>(op);
+    EXPECT_TRUE(clip::solid::check_written(r->mesh).ok()) << static_cast<int>(op);
+  }
+  EXPECT_GE(valid, 3);  // the union, intersection and difference
+}
+
 // Boxes whose faces are one ulp apart: overlapping by an ulp, a gap of an ulp, and shifted by
 // an ulp along a shared face. Every corner of every result is a double, so the written results
 // are the exact ones: their exact volumes are the boxes' exact volumes combined.
