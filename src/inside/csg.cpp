@@ -89,7 +89,10 @@ Location locate_leaf(const CsgLeaf& leaf, const MeshIndex* mesh_index, Vec3 p) {
                         [&](const Plane& h) { return point_in_halfspace(h, p); },
                         [&](const ConvexPolyhedron& c) { return point_in_convex(c, p); },
                         [&](const ImplicitFunction& f) { return point_in_implicit(f, p); },
-                        [&](const CsgMesh&) { return mesh_index->locate(p); },
+                        [&](const CsgMesh&) {
+                          // No index: a mesh without triangles, the empty solid.
+                          return mesh_index != nullptr ? mesh_index->locate(p) : Location::outside;
+                        },
                     },
                     leaf);
 }
@@ -204,7 +207,8 @@ Result<CsgSolid> CsgSolid::prepare(const Csg& tree, const MeshIndexOptions& mesh
       const std::string problem = check_leaf(t.solid(), kind);
       if (!problem.empty()) return Error{kind, (path.empty() ? "" : path + ": ") + problem};
       std::shared_ptr<const MeshIndex> index;
-      if (const auto* m = std::get_if<CsgMesh>(&t.solid())) {
+      const auto* m = std::get_if<CsgMesh>(&t.solid());
+      if (m != nullptr && !m->mesh().triangles.empty()) {  // none: the empty solid, no index
         std::shared_ptr<const MeshIndex>& shared = indexes[&m->mesh()];
         if (!shared) shared = std::make_shared<const MeshIndex>(m->mesh(), mesh_options);
         if (shared->regime() != MeshRegime::closed_exact) {

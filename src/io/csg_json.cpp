@@ -18,8 +18,10 @@ namespace {
 
 // Why a mesh read for a leaf cannot be one (empty if it can). The reader has checked its numbers
 // and indices; a leaf must be closed, as inside::CsgSolid::prepare requires, and the words are
-// those of the warning for the regime such a mesh would get.
+// those of the warning for the regime such a mesh would get. A file without faces is the empty
+// solid, as for `contain clip`.
 std::string mesh_leaf_problem(const Mesh& mesh) {
+  if (mesh.triangles.empty()) return "";  // the empty solid: a valid operand
   const MeshReport report = validate_mesh(mesh);
   if (report.closed()) return "";
   return "mesh is not closed, a closed mesh is required (" +
@@ -228,7 +230,7 @@ class Reader {
   Result<Csg> mesh(const json& j, const std::string& path) {
     if (!j.is_string()) return fail(path, "expected a file name, got " + describe(j));
     const std::filesystem::path file = options_.base_dir / j.get<std::string>();
-    Result<MeshFile> read = read_mesh(file);
+    Result<MeshFile> read = read_mesh(file, {.allow_empty = true});  // no faces: the empty solid
     // The mesh reader's error names the mesh file (and its line); the path names the leaf.
     if (!read) return fail(path, read.error().what(), read.error().kind);
     if (const std::string problem = mesh_leaf_problem(read->mesh); !problem.empty()) {

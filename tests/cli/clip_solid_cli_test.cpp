@@ -298,6 +298,18 @@ TEST(ClipSolidCli, CsgBoxCutByAHalfSpaceMinusAMeshIsOneValidMesh) {
   expect_solid(out, mpq_class(3, 4) - mpq_class(1, 64));
 }
 
+// A mesh file without faces in a CSG tree is the empty solid: the union with it is the box.
+TEST(ClipSolidCli, CsgLeafWithoutFacesIsTheEmptySolid) {
+  TempDir dir;
+  static_cast<void>(dir.write("empty.off", "OFF\n0 0 0\n"));
+  const std::string tree = dir.write(
+      "t.json", R"({"union": [{"box": {"min": [0,0,0], "max": [2,2,2]}}, {"mesh": "empty.off"}]})");
+  const std::string out = (dir.path() / "t.off").string();
+  const CliRun run = run_contain({"clip", "--csg", tree, "--out", out});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  expect_solid(out, 8);
+}
+
 TEST(ClipSolidCli, PositionalShapesWorkForMeshesToo) {
   TempDir dir;
   const std::string a = dir.write("a.off", box_off(0, 2));

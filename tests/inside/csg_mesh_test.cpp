@@ -271,6 +271,25 @@ TEST(CsgMesh, MeshLeafAloneAgreesWithMeshIndex) {
     EXPECT_EQ(solid.locate(p), index.locate(p));
 }
 
+// A mesh without triangles is the empty solid (issue 25: an empty mesh is the empty solid), a
+// valid operand: a union with it is its other operand, an intersection with it is empty, a
+// difference by it is the first operand, and alone it holds no point.
+TEST(CsgMesh, MeshWithoutTrianglesIsTheEmptySolid) {
+  const Csg box = Csg::leaf(Box3{{0, 0, 0}, {1, 1, 1}});
+  const Csg empty = mesh_leaf(Mesh{});
+  const CsgSolid both = prepared(Csg::unite({box, empty}));
+  const CsgSolid common = prepared(Csg::intersection({box, empty}));
+  const CsgSolid minus = prepared(Csg::difference(box, empty));
+  const CsgSolid alone = prepared(empty);
+  const CsgSolid just_box = prepared(box);
+  for (const Vec3 p : grid()) {
+    EXPECT_EQ(both.locate(p), just_box.locate(p));
+    EXPECT_EQ(minus.locate(p), just_box.locate(p));
+    EXPECT_EQ(common.locate(p), Location::outside);
+    EXPECT_EQ(alone.locate(p), Location::outside);
+  }
+}
+
 TEST(CsgMesh, OpenMeshIsADegenerateLeafNamedByItsPosition) {
   Mesh open = cube_mesh({0, 0, 0}, {1, 1, 1});
   open.triangles.pop_back();

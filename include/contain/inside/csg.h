@@ -48,7 +48,8 @@
 /// test is linear in the ray origin, so its sign is the first non-zero one of its value at p and
 /// its products with v, w, u1, u2, e_y, e_z, all exact. Exact, like MeshIndex on closed meshes.
 /// An open mesh (border or non-manifold edges, where MeshIndex falls back on the approximate
-/// winding number) is refused by CsgSolid::prepare.
+/// winding number) is refused by CsgSolid::prepare; a mesh without triangles is the empty solid
+/// (every point outside: a union with it is its other operands).
 ///
 /// Extending: a new kind of leaf adds an alternative to CsgLeaf, its exact locate, its local
 /// constraints at a boundary point, and either the rule that it fills exactly the cells on the

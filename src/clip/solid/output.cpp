@@ -122,6 +122,9 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
   scale = std::max(scale, std::numeric_limits<double>::min());
   const Faces faces = merge_coplanar(soup, boundary, store);
   Result<Mesh> mesh = snap_round(faces, store, scale);
+  if (!mesh && mesh.error().kind == ErrorKind::degenerate) {
+    mesh = snap_inputs(soup, op, scale, mesh.error());
+  }
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result.
   std::unordered_set<Vec3, Vec3Hash, Vec3Equal> nearest, other;

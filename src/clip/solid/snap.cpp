@@ -13,6 +13,14 @@
 // grid growing from 2^2 to 2^20 ulps of the largest coordinate (hot cells: what meets one cell
 // becomes one vertex), which removes the slivers that keep folding. The number of rounds is
 // bounded, so this ends; a mesh is returned only when the exact check of its doubles passes.
+//
+// Surfaces a few ulps apart (a solid against itself turned a quarter, whose vertices differ in
+// their last bits) cross at hundreds of points whose slivers fold again at every round, however
+// the result's points are merged: the crossings are new points each time. There the inputs
+// themselves are snapped (snap_inputs): their vertices merged on growing grids, which turns
+// nearly coincident surfaces into coincident ones, and the exact boolean of the snapped inputs,
+// an exact arrangement with no such slivers, goes through the same rounds. The attempts are
+// bounded too (5 grids), so the whole ends.
 
 #include "clip/solid/snap.h"
 
@@ -23,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -73,10 +82,52 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
   return out;
 }
 
+// The side of a hot cell at merge level `level`: ulp(scale) 2^level.
+double cell_side(int level, double scale) {
+  return std::ldexp(std::nextafter(scale, std::numeric_limits<double>::infinity()) - scale, level);
+}
+
+}  // namespace
+
+std::optional<std::vector<std::size_t>> cluster_points(std::span<const Vec3> points, double h) {
+  std::vector<std::size_t> by_x(points.size());
+  for (std::size_t k = 0; k < by_x.size(); ++k)
+    by_x[k] = k;
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::size_t a, std::size_t b) { return points[a].x < points[b].x; });
+  UnionFind<std::size_t> near(points.size());  // the smallest index leads
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Vec3 p = points[by_x[k]];
+    for (std::size_t m = k + 1; m < by_x.size(); ++m) {
+      const Vec3 q = points[by_x[m]];
+      if (q.x - p.x > h) break;
+      if (std::fabs(q.y - p.y) <= h && std::fabs(q.z - p.z) <= h) near.unite(by_x[k], by_x[m]);
+    }
+  }
+  // A chain of close points can join a wide cluster: a grid whose clusters move a point by more
+  // than 2h in a coordinate is not used, so that a merge moves a point by at most 2h in each
+  // coordinate.
+  std::vector<std::size_t> leader(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    leader[k] = near.find(k);
+    const Vec3 a = points[k], b = points[leader[k]];
+    if (std::fabs(a.x - b.x) > 2 * h || std::fabs(a.y - b.y) > 2 * h ||
+        std::fabs(a.z - b.z) > 2 * h) {
+      return std::nullopt;
+    }
+  }
+  return leader;
+}
+
+namespace {
+
 // The written point of each point of `faces`: at level < 0, the first point with the same
 // nearest doubles (the written mesh could not tell them apart); at level >= 0, the first point
 // (by number) of its cluster: points whose nearest doubles are within ulp(scale) 2^level of each
 // other in every coordinate are joined, transitively (the hot cells of a snap-rounding round).
+// A level whose clusters are too wide (cluster_points) is not used: the rounds together then
+// move a vertex by less than sqrt(3) (2^3 + 2^6 + ... + 2^21) ulps of the largest coordinate
+// (< 9.3e-10 of it, within the spec's 1e-9; the half-ulp roundings add a negligible 5 ulps).
 Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
                                const PointStore& store, int level, double scale) {
   std::vector<std::int32_t> ids;
@@ -85,40 +136,21 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   Representative rep;
-  if (level < 0) {
+  if (level >= 0) {
+    std::vector<Vec3> points;
+    points.reserve(ids.size());
     for (const std::int32_t i : ids)
-      rep[i] = store.representative(i);
-    return rep;
-  }
-  const double h =
-      std::ldexp(std::nextafter(scale, std::numeric_limits<double>::infinity()) - scale, level);
-  std::vector<std::size_t> by_x(ids.size());
-  for (std::size_t k = 0; k < by_x.size(); ++k)
-    by_x[k] = k;
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
-    return store.rounded(ids[a]).x < store.rounded(ids[b]).x;
-  });
-  UnionFind<std::size_t> near(ids.size());  // the smallest index (so the smallest id) leads
-  for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const Vec3 p = store.rounded(ids[by_x[k]]);
-    for (std::size_t m = k + 1; m < by_x.size(); ++m) {
-      const Vec3 q = store.rounded(ids[by_x[m]]);
-      if (q.x - p.x > h) break;
-      if (std::fabs(q.y - p.y) <= h && std::fabs(q.z - p.z) <= h) near.unite(by_x[k], by_x[m]);
+      points.push_back(store.rounded(i));
+    const std::optional<std::vector<std::size_t>> leader =
+        cluster_points(points, cell_side(level, scale));
+    if (leader) {
+      for (std::size_t k = 0; k < ids.size(); ++k)
+        rep[ids[k]] = ids[(*leader)[k]];
+      return rep;
     }
   }
-  // A chain of close points can join a wide cluster: a level whose clusters move a point by
-  // more than 2h in a coordinate is not used, so that the rounds together move a vertex by
-  // less than sqrt(3) (2^3 + 2^6 + ... + 2^21) ulps of the largest coordinate (< 9.3e-10 of it,
-  // within the spec's 1e-9; the half-ulp roundings add a negligible 5 ulps).
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    rep[ids[k]] = ids[near.find(k)];
-    const Vec3 a = store.rounded(ids[k]), b = store.rounded(rep[ids[k]]);
-    if (std::fabs(a.x - b.x) > 2 * h || std::fabs(a.y - b.y) > 2 * h ||
-        std::fabs(a.z - b.z) > 2 * h) {
-      return representatives(faces, store, -1, scale);
-    }
-  }
+  for (const std::int32_t i : ids)
+    rep[i] = store.representative(i);
   return rep;
 }
 
@@ -172,13 +204,23 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
   return out;
 }
 
+// The faces of `op` on the soup's arrangement, given its pair stage's work: the refined faces on
+// the boundary, merged where coplanar.
+Faces arranged_faces(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store,
+                     Op op) {
+  const Refinement refinement = refine(soup, work, store);
+  const std::vector<FaceLabel> labels = label_faces(soup, refinement, store);
+  const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
+  return merge_coplanar(soup, boundary, store);
+}
+
 // A snap round that grows the work instead of mending (rule solid-output): the faces of nearly
 // coincident surfaces (a torus minus itself turned a quarter) folded by rounding and merging
 // cross by the thousand, and refining such a round (hundreds of crossings in one triangle) or
 // the next ones runs for minutes. The bounds, with F the first written mesh's triangles: a
 // round writes at most 2 F + 64 triangles, and its pair stage (before refining) finds at most
 // 8 (2 F + 64) new crossings in all and at most 128 in one triangle.
-constexpr std::size_t max_crossings_in_one = 128;
+constexpr std::size_t max_crossings_in_one = 64;
 
 Error not_converging(std::size_t found, const char* what, std::size_t bound) {
   return Error{.kind = ErrorKind::degenerate,
@@ -218,10 +260,7 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   }
   if (constraints > 8 * limit)
     return not_converging(constraints, "found new crossings:", 8 * limit);
-  const Refinement refinement = refine(*soup, work, store);
-  const std::vector<FaceLabel> labels = label_faces(*soup, refinement, store);
-  const BoundaryFaces boundary = boundary_faces(*soup, refinement, work, labels, store, Op::union_);
-  const Faces faces = merge_coplanar(*soup, boundary, store);
+  const Faces faces = arranged_faces(*soup, work, store, Op::union_);
   return written_mesh(faces, representatives(faces, store, level, scale), store);
 }
 
@@ -249,6 +288,71 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
                             "largest coordinate) did not mend it"};
   }
   return std::move(written.mesh);
+}
+
+namespace {
+
+// The merge levels of the inputs' vertices when snap rounding of the result does not converge.
+// A vertex moves by at most 2^(level + 1) ulps of the largest coordinate per coordinate; with the
+// result's own rounds after it (< 9.3e-10 of the largest coordinate), 2^16 keeps every written
+// vertex within 1e-9 of it.
+constexpr std::array<int, 5> input_levels = {2, 6, 10, 14, 16};
+
+}  // namespace
+
+std::optional<Soup> snapped_soup(const Soup& soup, int level, double scale) {
+  const std::optional<std::vector<std::size_t>> leader =
+      cluster_points(soup.vertices, cell_side(level, scale));
+  if (!leader) return std::nullopt;
+  Soup out;
+  out.inputs = soup.inputs;
+  out.input = soup.input;
+  std::vector<std::int32_t> number(soup.vertices.size(), -1);
+  for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
+    const std::size_t lead = (*leader)[v];
+    if (number[lead] < 0) {
+      number[lead] = static_cast<std::int32_t>(out.vertices.size());
+      out.vertices.push_back(soup.vertices[lead]);
+    }
+    number[v] = number[lead];
+  }
+  if (out.vertices.size() == soup.vertices.size()) return std::nullopt;  // nothing merged
+  out.triangles.reserve(soup.triangles.size());
+  for (const TriangleIndices& t : soup.triangles) {
+    const TriangleIndices m = {number[static_cast<std::size_t>(t[0])],
+                               number[static_cast<std::size_t>(t[1])],
+                               number[static_cast<std::size_t>(t[2])]};
+    const Vec3 a = out.vertices[static_cast<std::size_t>(m[0])];
+    const Vec3 b = out.vertices[static_cast<std::size_t>(m[1])];
+    const Vec3 c = out.vertices[static_cast<std::size_t>(m[2])];
+    out.triangles.push_back(m);
+    out.degenerate.push_back(zero_area(a, b, c));
+    Box3 box;  // empty for a degenerate triangle: it meets nothing
+    if (!out.degenerate.back()) {
+      box.expand(a);
+      box.expand(b);
+      box.expand(c);
+    }
+    out.boxes.push_back(box);
+  }
+  out.tree = bvh::Bvh(out.boxes);
+  return out;
+}
+
+Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, Error failure) {
+  for (const int level : input_levels) {
+    const std::optional<Soup> snapped = snapped_soup(soup, level, scale);
+    if (!snapped) continue;
+    PointStore store;
+    for (const Vec3 v : snapped->vertices)
+      (void)store.add(v);
+    const std::vector<TriangleWork> work = intersect_pairs(*snapped, store);
+    Result<Mesh> mesh = snap_round(arranged_faces(*snapped, work, store, op), store, scale);
+    if (mesh || mesh.error().kind != ErrorKind::degenerate) return mesh;
+    failure = mesh.error();
+  }
+  failure.message += ", also with the inputs' vertices merged on grids up to 2^16 ulps";
+  return failure;
 }
 
 }  // namespace contain::clip::solid

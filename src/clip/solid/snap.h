@@ -4,7 +4,10 @@
 // check passes (snap.cpp; rule solid-output in docs/robustness.md). Private to clip.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -42,5 +45,24 @@ struct BoundaryFaces {
 /// coarser grids, for a bounded number of rounds. `scale` is the largest input coordinate's
 /// magnitude. Errors: `ErrorKind::degenerate` when no round passes.
 [[nodiscard]] Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale);
+
+/// The leader (smallest index) of each point's cluster: points within `h` of each other in every
+/// coordinate joined transitively (the hot cells of a snap round). nullopt when a cluster would
+/// move a point by more than 2h in a coordinate (a chain of close points: that grid is not used).
+[[nodiscard]] std::optional<std::vector<std::size_t>> cluster_points(std::span<const Vec3> points,
+                                                                     double h);
+
+/// The soup with its vertices merged by cluster_points on the grid of side ulp(scale) 2^level
+/// (each leader keeps its position): every input moved by at most 2^(level + 1) ulps of scale in
+/// each coordinate, and still closed (merging corners keeps each directed edge as often as its
+/// reverse); triangles that lose their area are degenerate. nullopt when the grid is not used
+/// or merges nothing.
+[[nodiscard]] std::optional<Soup> snapped_soup(const Soup& soup, int level, double scale);
+
+/// The result of `op` on the inputs snapped on growing grids (snapped_soup, levels 2 to 16),
+/// each arranged exactly and written by snap_round, the first that passes: what the engine does
+/// when snap rounding of the exact result ended in `failure` (surfaces ulps apart, whose
+/// crossings fold again at every rounding). `failure`, completed, when none passes.
+[[nodiscard]] Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, Error failure);
 
 }  // namespace contain::clip::solid

@@ -27,8 +27,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -36,7 +39,12 @@
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "clip/solid/exact_point.h"
 #include "contain/bvh/bvh.h"
+#include "contain/core/location.h"
+#include "contain/core/union_find.h"
+#include "contain/inside/point_in_mesh.h"
+#include "contain/predicates/big_float.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/values/box.h"
 
@@ -167,13 +175,6 @@ bool edges_matched(const Mesh& mesh) {
   return true;
 }
 
-// Zero area exactly when the three projections onto the coordinate planes have zero area.
-bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
-  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
-         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
-         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
-}
-
 // The triangles whose boxes meet the box of a triangle of `rounded` (those included): every
 // triangle that can meet one of them. A hierarchy over the rounded triangles' boxes only, one
 // query per triangle.
@@ -224,6 +225,134 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
   soup.tree = bvh::Bvh(soup.boxes);
   return soup;
 }
+
+// The sign of a shell's volume, exactly: 6 V = sum of a . (b - a) x (c - a) over its triangles,
+// first in doubles with a bound on their error (each term within 8 ulps of the sum of the
+// magnitudes of its products, the sum within F ulps more), then as exact numbers.
+Sign volume_sign(const Mesh& mesh, const std::vector<std::size_t>& triangles) {
+  double sum = 0.0, magnitude = 0.0;
+  for (const std::size_t t : triangles) {
+    const TriangleIndices& v = mesh.triangles[t];
+    const Vec3 a = mesh.vertex(v[0]), u = mesh.vertex(v[1]) - a, w = mesh.vertex(v[2]) - a;
+    const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
+    const Vec3 m{std::fabs(u.y * w.z) + std::fabs(u.z * w.y),
+                 std::fabs(u.z * w.x) + std::fabs(u.x * w.z),
+                 std::fabs(u.x * w.y) + std::fabs(u.y * w.x)};
+    sum += a.x * n.x + a.y * n.y + a.z * n.z;
+    magnitude += std::fabs(a.x) * m.x + std::fabs(a.y) * m.y + std::fabs(a.z) * m.z;
+  }
+  const double bound = static_cast<double>(triangles.size() + 16) * 0x1p-50 * magnitude;
+  if (std::isfinite(bound) && bound >= std::numeric_limits<double>::min() &&
+      std::fabs(sum) > bound) {
+    return sum > 0 ? Sign::positive : Sign::negative;
+  }
+  predicates::BigFloat six;
+  for (const std::size_t t : triangles) {
+    const TriangleIndices& v = mesh.triangles[t];
+    const Vec3 a = mesh.vertex(v[0]);
+    six = six + predicates::dot(predicates::to_big(a),
+                                exact_normal(a, mesh.vertex(v[1]), mesh.vertex(v[2])));
+  }
+  return six.sign();
+}
+
+// The written mesh's shells (its triangles connected through shared vertex numbers: sheets kept
+// apart are apart), with their boxes.
+struct Shells {
+  std::vector<std::vector<std::size_t>> triangles;
+  std::vector<Box3> boxes;
+  std::vector<std::size_t> of_vertex;  // the shell of each vertex used
+};
+
+Shells shells_of(const Mesh& mesh) {
+  UnionFind<std::size_t> sets(mesh.vertices.size());
+  for (const TriangleIndices& t : mesh.triangles) {
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]));
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
+  }
+  Shells out;
+  std::unordered_map<std::size_t, std::size_t> number;
+  out.of_vertex.assign(mesh.vertices.size(), ~std::size_t{0});
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [it, fresh] = number.try_emplace(
+        sets.find(static_cast<std::size_t>(mesh.triangles[t][0])), out.triangles.size());
+    if (fresh) {
+      out.triangles.emplace_back();
+      out.boxes.emplace_back();
+    }
+    out.triangles[it->second].push_back(t);
+    for (const std::int32_t v : mesh.triangles[t]) {
+      out.boxes[it->second].expand(mesh.vertex(v));
+      out.of_vertex[static_cast<std::size_t>(v)] = it->second;
+    }
+  }
+  return out;
+}
+
+// Shells that do not cross nor touch other than at shared positions bound nested regions; the
+// winding number is 1 inside the result and 0 outside exactly when every shell s is outward
+// (positive volume) with the other shells' solid outside it, or inward with the other shells'
+// solid around it (by induction on the depth of nesting: the shells around a shell at even depth
+// sum to 0, at odd depth to 1). The other shells' side is asked at a vertex of s whose position
+// no other shell uses: such a vertex is on no other shell (its triangles would meet that shell
+// beyond shared corners), and only shells whose boxes hold it can hold it.
+bool oriented(const Mesh& mesh) {
+  const Shells shells = shells_of(mesh);
+  std::unordered_map<Vec3, std::size_t, Vec3Hash, Vec3Equal> users;  // shells at each position
+  std::unordered_map<Vec3, std::size_t, Vec3Hash, Vec3Equal> first;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (shells.of_vertex[v] == ~std::size_t{0}) continue;
+    const Vec3 p = mesh.vertices[v] + Vec3{0, 0, 0};
+    const auto [it, fresh] = first.try_emplace(p, shells.of_vertex[v]);
+    if (fresh || it->second != shells.of_vertex[v]) ++users[p];
+  }
+  for (std::size_t s = 0; s < shells.triangles.size(); ++s) {
+    const Sign volume = volume_sign(mesh, shells.triangles[s]);
+    if (volume == Sign::zero) return false;
+    std::optional<Vec3> free;
+    for (const std::size_t t : shells.triangles[s]) {
+      for (const std::int32_t v : mesh.triangles[t]) {
+        const Vec3 p = mesh.vertex(v) + Vec3{0, 0, 0};
+        if (!free && users[p] == 1) free = p;
+      }
+    }
+    if (!free) continue;  // every corner shared with another shell: not decided here
+    Mesh around;
+    for (std::size_t o = 0; o < shells.triangles.size(); ++o) {
+      if (o == s || !shells.boxes[o].contains(*free)) continue;
+      for (const std::size_t t : shells.triangles[o]) {
+        const TriangleIndices& v = mesh.triangles[t];
+        const auto base = static_cast<std::int32_t>(around.vertices.size());
+        for (const std::int32_t i : v)
+          around.vertices.push_back(mesh.vertex(i));
+        around.triangles.push_back({base, base + 1, base + 2});
+      }
+    }
+    const bool inside =
+        !around.triangles.empty() && inside::point_in_mesh(around, *free) == Location::inside;
+    if (inside != (volume == Sign::negative)) return false;
+  }
+  return true;
+}
+}  // namespace
+
+bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+}
+
+namespace {
+
+// The failure of a mesh whose shells do not bound a solid of winding numbers 0 and 1 (a shell
+// turned inside out, shells nested in the same direction); every triangle is the region.
+Status orientation(const Mesh& mesh, std::vector<std::int32_t>* crossing) {
+  if (oriented(mesh)) return Ok{};
+  for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
+    crossing->push_back(static_cast<std::int32_t>(t));
+  return failure("a shell is inside out, or nested in a shell of its own direction");
+}
+
 }  // namespace
 
 Status check_written(const Mesh& mesh) {
@@ -257,7 +386,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
       rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
-  if (rounded.empty()) return status;
+  if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
   PointStore store;
@@ -286,7 +415,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
   for (std::size_t t = 0; t < bad.size(); ++t) {
     if (bad[t]) crossing->push_back(chosen[t]);
   }
-  return status;
+  return status ? orientation(mesh, crossing) : status;
 }
 
 }  // namespace contain::clip::solid

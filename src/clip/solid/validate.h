@@ -29,4 +29,7 @@ namespace contain::clip::solid {
 [[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
                                    std::vector<std::int32_t>* crossing = nullptr);
 
+/// Zero area, exactly: the three projections onto the coordinate planes have zero area.
+[[nodiscard]] bool zero_area(Vec3 a, Vec3 b, Vec3 c);
+
 }  // namespace contain::clip::solid

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "clip/solid/solid_oracle.h"
+#include "clip/solid/validate.h"
 #include "contain/distance/point_primitive.h"
 #include "scenes/scenes.h"
 #include "support/case_budget.h"
@@ -343,38 +344,159 @@ TEST(MeshBoolean, ASphereWithItselfAndItselfTurnedAQuarter) {
   }
 }
 
+// The area of a mesh's surface (doubles: it only sizes the volume slack below).
+double area(const Mesh& m) {
+  double sum = 0.0;
+  for (const TriangleIndices& t : m.triangles) {
+    const Vec3 u = m.vertex(t[1]) - m.vertex(t[0]), w = m.vertex(t[2]) - m.vertex(t[0]);
+    sum += 0.5 * std::sqrt(std::pow(u.y * w.z - u.z * w.y, 2) + std::pow(u.z * w.x - u.x * w.z, 2) +
+                           std::pow(u.x * w.y - u.y * w.x, 2));
+  }
+  return sum;
+}
+
+// Every operation on a and b written valid (the engine's own exact check of the written doubles,
+// and the oracle's: collide::self_intersections and the winding numbers at sample points), and
+// the exact volumes of the four written results against the exact identities of the exact
+// booleans, |A u B| + |A n B| = |A| + |B|, |A - B| = |A u B| - |B|, |A xor B| = |A u B| - |A n B|:
+// each written result is within 1e-9 of the largest coordinate of the exact boundary (or of the
+// boolean of inputs moved by less than that), so its volume is within that times the inputs'
+// area of the exact one.
+std::array<clip::MeshBooleanResult, 4> expect_valid_with_exact_volume_identities(const Mesh& a,
+                                                                                 const Mesh& b,
+                                                                                 int samples) {
+  const std::vector<Mesh> in = {a, b};
+  std::array<clip::MeshBooleanResult, 4> r;
+  std::array<mpq_class, 4> v;
+  for (std::size_t k = 0; k < all_ops.size(); ++k) {
+    r[k] = checked(in, all_ops[k], samples);
+    EXPECT_TRUE(clip::solid::check_written(r[k].mesh).ok()) << static_cast<int>(all_ops[k]);
+    EXPECT_LE(farthest_vertex(in, r[k].mesh), 1e-9) << static_cast<int>(all_ops[k]);
+    v[k] = exact_volume(r[k].mesh);
+  }
+  double scale = 0.0;
+  for (const Mesh* m : {&a, &b}) {
+    for (const Vec3 p : m->vertices)
+      scale = std::max({scale, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  }
+  const double slack = 2e-9 * scale * (area(a) + area(b));
+  const mpq_class va = exact_volume(a), vb = exact_volume(b);
+  EXPECT_LE(std::fabs(mpq_class(v[0] + v[1] - va - vb).get_d()), 2 * slack);
+  EXPECT_LE(std::fabs(mpq_class(v[2] - (v[0] - vb)).get_d()), 2 * slack);
+  EXPECT_LE(std::fabs(mpq_class(v[3] - (v[0] - v[1])).get_d()), 3 * slack);
+  return r;
+}
+
 // A torus turned a quarter about z has nearly its own vertices (a few ulps apart): the two
-// surfaces cross at thousands of points, and the difference is slivers thinner than an ulp. Its
-// first written mesh held an edge twice each way (merged points put two opposite faces in one
-// half-plane; the sheets now pair such a fan as brackets), and the snap rounds then grew the
-// mesh for minutes. Every operation now ends: with a valid mesh (the union is the torus up to
-// those slivers), or, where the rounds grow without mending, with the degenerate error.
-TEST(MeshBoolean, ATorusWithItselfTurnedAQuarterEndsValidOrWithTheDegenerateError) {
+// surfaces cross at hundreds of points, and the difference is slivers thinner than an ulp, whose
+// rounded corners fold at every round of snap rounding (the rounds grew the mesh until a bound
+// ended the difference and the xor in the degenerate error). The engine then snaps the inputs'
+// vertices on growing grids and takes the exact boolean of those: the tori become one, and
+// every operation ends valid, the union and intersection the torus up to slivers, the difference
+// and xor (nearly) empty.
+TEST(MeshBoolean, ATorusWithItselfTurnedAQuarterIsValidForEveryOperation) {
   const Mesh a = scenes::torus(1.0, 0.4, 12, 6);
   Mesh turned = a;
   for (Vec3& v : turned.vertices)
     v = {-v.y, v.x, v.z};
+  const std::array<clip::MeshBooleanResult, 4> r =
+      expect_valid_with_exact_volume_identities(a, turned, case_budget(40, 8));
   const mpq_class torus = exact_volume(a);
+  for (std::size_t k = 0; k < all_ops.size(); ++k) {
+    if (all_ops[k] == Op::union_ || all_ops[k] == Op::intersection) {
+      EXPECT_LT(std::fabs(mpq_class(exact_volume(r[k].mesh) - torus).get_d()), 1e-12);
+    } else {
+      EXPECT_LT(exact_volume(r[k].mesh).get_d(), 1e-12);
+    }
+  }
+}
+
+// A sphere turned about (1, 2, 3) by 1e-15 and 1e-13 radians: vertices a few ulps to a few
+// hundred ulps apart, the surfaces crossing everywhere at tiny angles (before the inputs were
+// snapped, the difference and xor at 1e-15, the union and xor at 1e-13 ended in the degenerate
+// error).
+TEST(MeshBoolean, ASphereWithASlightlyRotatedCopyIsValidForEveryOperation) {
+  const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
+  for (const double angle : {1e-15, 1e-13}) {
+    const double n = std::sqrt(14.0), c = std::cos(angle), s = std::sin(angle);
+    const Vec3 k{1 / n, 2 / n, 3 / n};
+    Mesh turned = a;
+    for (Vec3& v : turned.vertices) {  // Rodrigues' rotation
+      const double d = k.x * v.x + k.y * v.y + k.z * v.z;
+      const Vec3 kv{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z, k.x * v.y - k.y * v.x};
+      v = {v.x * c + kv.x * s + k.x * d * (1 - c), v.y * c + kv.y * s + k.y * d * (1 - c),
+           v.z * c + kv.z * s + k.z * d * (1 - c)};
+    }
+    SCOPED_TRACE(angle);
+    (void)expect_valid_with_exact_volume_identities(a, turned, case_budget(40, 8));
+  }
+}
+
+// Turned by 1e-9 radians the copy's vertices are too far apart for the inputs' grids (up to
+// 2^16 ulps) and its slivers, at angles of 1e-9, still fold at every round: the xor ends in the
+// degenerate error (known, not mended: docs/solids.md), within its bounded rounds; whatever
+// ends, no invalid mesh is returned.
+TEST(MeshBoolean, ASphereAgainstACopyTurned1em9EndsValidOrInTheDegenerateError) {
+  const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
+  Mesh turned = a;
+  const double n = std::sqrt(14.0), c = std::cos(1e-9), s = std::sin(1e-9);
+  const Vec3 k{1 / n, 2 / n, 3 / n};
+  for (Vec3& v : turned.vertices) {
+    const double d = k.x * v.x + k.y * v.y + k.z * v.z;
+    const Vec3 kv{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z, k.x * v.y - k.y * v.x};
+    v = {v.x * c + kv.x * s + k.x * d * (1 - c), v.y * c + kv.y * s + k.y * d * (1 - c),
+         v.z * c + kv.z * s + k.z * d * (1 - c)};
+  }
   const std::vector<Mesh> in = {a, turned};
   int valid = 0;
-  // Not the xor: like the difference it ends in the error, at the same cost.
-  for (const Op op : {Op::union_, Op::intersection, Op::difference}) {
+  for (const Op op : all_ops) {
     const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(in, {.op = op});
     if (!r) {
       EXPECT_EQ(r.error().kind, ErrorKind::degenerate) << r.error().message;
-      EXPECT_NE(r.error().message.find("snap rounding"), std::string::npos);
+      EXPECT_NE(r.error().message.find("also with the inputs' vertices merged"), std::string::npos);
       continue;
     }
     ++valid;
     EXPECT_EQ(invalid_reason(r->mesh), "") << static_cast<int>(op);
-    const double slivers = std::fabs(mpq_class(exact_volume(r->mesh) - torus).get_d());
-    if (op == Op::union_ || op == Op::intersection) {
-      EXPECT_LT(slivers, 1e-12);
-    } else {
-      EXPECT_LT(exact_volume(r->mesh).get_d(), 1e-12);
+    EXPECT_TRUE(clip::solid::check_written(r->mesh).ok()) << static_cast<int>(op);
+  }
+  EXPECT_GE(valid, 3);  // the union, intersection and difference
+}
+
+// Boxes whose faces are one ulp apart: overlapping by an ulp, a gap of an ulp, and shifted by
+// an ulp along a shared face. Every corner of every result is a double, so the written results
+// are the exact ones: their exact volumes are the boxes' exact volumes combined.
+TEST(MeshBoolean, BoxesWithFacesOneUlpApartGiveTheExactVolumes) {
+  const double below = std::nextafter(1.0, 0.0), above = std::nextafter(1.0, 2.0);
+  const Mesh a = box_mesh({0, 0, 0}, {1, 1, 1});
+  const auto box_volume = [](Vec3 lo, Vec3 hi) -> mpq_class {
+    return (mpq_class(hi.x) - lo.x) * (mpq_class(hi.y) - lo.y) * (mpq_class(hi.z) - lo.z);
+  };
+  struct Case {
+    Vec3 lo, hi, common_lo, common_hi;  // B and A n B (common_lo == common_hi: empty)
+  };
+  const std::vector<Case> cases = {
+      {{below, 0, 0}, {2, 1, 1}, {below, 0, 0}, {1, 1, 1}},    // overlap of an ulp
+      {{above, 0, 0}, {2, 1, 1}, {0, 0, 0}, {0, 0, 0}},        // gap of an ulp
+      {{1, 0, 0}, {2, 1, 1}, {0, 0, 0}, {0, 0, 0}},            // sharing a face
+      {{1, 0x1p-52, 0}, {2, above, 1}, {0, 0, 0}, {0, 0, 0}},  // sharing it, shifted an ulp
+      {{0x1p-52, 0x1p-52, 0x1p-52},
+       {above, above, above},  // the same box shifted
+       {0x1p-52, 0x1p-52, 0x1p-52},
+       {1, 1, 1}}};
+  for (const Case& c : cases) {
+    const Mesh b = box_mesh(c.lo, c.hi);
+    const mpq_class va = 1, vb = box_volume(c.lo, c.hi);
+    const mpq_class common = box_volume(c.common_lo, c.common_hi);
+    const std::array<mpq_class, 4> expected = {va + vb - common, common, va - common,
+                                               va + vb - 2 * common};
+    for (std::size_t k = 0; k < all_ops.size(); ++k) {
+      const clip::MeshBooleanResult r = checked({a, b}, all_ops[k], 60);
+      EXPECT_TRUE(clip::solid::check_written(r.mesh).ok());
+      EXPECT_EQ(exact_volume(r.mesh), expected[k]) << static_cast<int>(all_ops[k]) << " " << c.lo.x;
+      EXPECT_EQ(r.moved, 0U);
     }
   }
-  EXPECT_GE(valid, 1);  // the union, at least
 }
 
 TEST(MeshBoolean, GridOfUnitCubesUnitesToOneBox) {

@@ -20,7 +20,9 @@ namespace contain::test {
 
 /// Why `mesh` is not a valid written solid ("" when it is): every directed edge matched by
 /// exactly one opposite, no zero-area triangle (exact), no two triangles meeting other than at
-/// shared corners (collide::self_intersections).
+/// shared corners (collide::self_intersections), and its winding number 0 or 1: each shell
+/// outward with the others' winding number 0 around it, or inward with 1 (exact volumes and
+/// winding numbers at the shells' vertices).
 [[nodiscard]] std::string invalid_reason(const Mesh& mesh);
 
 /// Whether a point with these winding numbers of the inputs is in the result of `op`.

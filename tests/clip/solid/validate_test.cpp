@@ -101,9 +101,9 @@ TEST(CheckWritten, RestrictedAndFullChecksAgreeWithTheOracleOnMovedVertices) {
 // its triangles through the lower ones; one moved onto the line of two others makes a
 // zero-area triangle; the untouched vertices are kept. The restricted check catches both, as
 // the full one. (Pushed straight down through the bottom vertex to (0, 0, -2) instead, the
-// mesh turns inside out without any two triangles meeting: no pair test sees that, full or
-// restricted, and the oracle calls it valid too.) Edges not matched exactly once are found
-// whatever is kept.
+// mesh turns inside out without any two triangles meeting: no pair test sees that, the
+// orientation test of the shells does: InsideOutShells below.) Edges not matched exactly once
+// are found whatever is kept.
 TEST(CheckWritten, AFoldedAndAZeroAreaTriangleAreFoundFromTheirMovedCornerAndBadEdgesAlways) {
   const Mesh octahedron{
       {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
@@ -140,6 +140,43 @@ TEST(CheckWritten, AFoldedAndAZeroAreaTriangleAreFoundFromTheirMovedCornerAndBad
     EXPECT_FALSE(check_written(*m).ok());
     EXPECT_NE(invalid_reason(*m), "");
   }
+}
+
+// Shells whose triangles meet no other triangle can still be inside out: a box reversed, alone
+// or beside another box, an octahedron whose top vertex is pushed through its bottom one, two
+// boxes nested in one direction (winding number 2 inside both). The check proves orientation
+// (exact volume of each shell, and the other shells' side at one of its vertices) whatever is
+// kept, as the oracle does; a hollow box (an outward shell around an inward one), three nested
+// shells alternating, boxes touching at a corner and a tiny box far from the origin (its volume
+// decided with exact numbers: the doubles' sum is all rounding) pass.
+TEST(CheckWritten, InsideOutShells) {
+  const Mesh unit = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh big = box_mesh({-2, -2, -2}, {3, 3, 3});
+  const Mesh huge = box_mesh({-4, -4, -4}, {5, 5, 5});
+  const double tiny = std::ldexp(1.0, -30);
+  const Mesh far = box_mesh({1e6, 1e6, 1e6}, {1e6 + tiny, 1e6 + tiny, 1e6 + tiny});
+  Mesh pushed{
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -2}, {0, 0, -1}},
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+  const std::vector<std::pair<Mesh, std::string>> bad = {
+      {reversed(unit), "a reversed box"},
+      {joined(box_mesh({5, 0.5, 0.5}, {6, 2, 2}), reversed(unit)), "beside a reversed box"},
+      {pushed, "octahedron pushed through"},
+      {joined(big, unit), "nested in one direction"},
+      {joined(reversed(big), reversed(unit)), "nested, both reversed"},
+      {reversed(far), "a tiny reversed box far away"}};
+  for (const auto& [mesh, what] : bad) {
+    EXPECT_FALSE(agree(mesh, std::vector<bool>(mesh.vertices.size(), true), what)) << what;
+    EXPECT_NE(check_written(mesh).error().message.find("inside out"), std::string::npos) << what;
+  }
+  const std::vector<std::pair<Mesh, std::string>> good = {
+      {unit, "a box"},
+      {joined(big, reversed(unit)), "hollow"},
+      {joined(joined(huge, reversed(big)), unit), "three nested"},
+      {joined(unit, box_mesh({1, 1, 1}, {2, 2, 2})), "touching at a corner"},
+      {far, "a tiny box far away"}};
+  for (const auto& [mesh, what] : good)
+    EXPECT_TRUE(agree(mesh, std::vector<bool>(mesh.vertices.size(), true), what)) << what;
 }
 
 }  // namespace
