@@ -63,5 +63,10 @@ function(contain_test name)
   target_precompile_headers(${target} PRIVATE
     <gtest/gtest.h> <gmpxx.h> <algorithm> <array> <cmath> <cstdint> <filesystem> <fstream> <functional>
     <limits> <map> <optional> <random> <span> <sstream> <string> <vector>)
+  # Built as unity files of a few sources each: a test file's own code is small beside the
+  # headers of GoogleTest and the library it includes, parsed once a batch instead of once a file.
+  # File-local names must differ between the sources of one test binary (or the source is
+  # listed with SKIP_UNITY_BUILD_INCLUSION).
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
 endfunction()

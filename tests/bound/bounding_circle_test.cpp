@@ -18,22 +18,22 @@ namespace {
 using test::count_outside;
 using test::relative_excess;
 
-constexpr double kTight = 1e-12;
+constexpr double kCircleTight = 1e-12;
 
-// Both methods: every point inside exactly; the exact radius within kTight of the minimum (the
-// brute-force minimum, or `known_radius` for large cospherical sets, where the brute force over
-// the farthest points would not see the support); Ritter never below the minimum.
+// Both methods: every point inside exactly; the exact radius within kCircleTight of the minimum
+// (the brute-force minimum, or `known_radius` for large cospherical sets, where the brute force
+// over the farthest points would not see the support); Ritter never below the minimum.
 void check_both(const std::vector<Vec2>& points, const std::string& what,
                 std::optional<double> known_radius = std::nullopt) {
   auto exact = bounding_circle(points);
   ASSERT_TRUE(exact.ok()) << what;
   EXPECT_EQ(count_outside(*exact, points), 0u) << what;
   if (known_radius) {
-    EXPECT_NEAR(exact->radius, *known_radius, kTight * *known_radius) << what;
+    EXPECT_NEAR(exact->radius, *known_radius, kCircleTight * *known_radius) << what;
   } else {
     const double excess = relative_excess(*exact, points);
     EXPECT_GE(excess, 0.0) << what;
-    EXPECT_LE(excess, kTight) << what;
+    EXPECT_LE(excess, kCircleTight) << what;
   }
   auto ritter = bounding_circle(points, {.method = SphereMethod::ritter});
   ASSERT_TRUE(ritter.ok()) << what;
@@ -41,7 +41,7 @@ void check_both(const std::vector<Vec2>& points, const std::string& what,
   if (!known_radius) {
     EXPECT_GE(relative_excess(*ritter, points), 0.0) << what;
   }
-  EXPECT_GE(ritter->radius, exact->radius * (1.0 - kTight)) << what;
+  EXPECT_GE(ritter->radius, exact->radius * (1.0 - kCircleTight)) << what;
 }
 
 std::vector<Vec2> random_points(std::size_t n, std::mt19937_64& rng) {
@@ -99,7 +99,7 @@ TEST(BoundingCircle, CocircularIntegerPointsGiveExactlyTheirCircle) {
     ASSERT_TRUE(c.ok());
     EXPECT_EQ(count_outside(*c, points), 0u);
     const double r = std::sqrt(double(r2));
-    EXPECT_NEAR(c->radius, r, kTight * r);
+    EXPECT_NEAR(c->radius, r, kCircleTight * r);
     check_both(points, "integer circle " + std::to_string(r2), r);
   }
 }
@@ -136,13 +136,13 @@ TEST(BoundingCircle, PolygonEnclosesEveryRingPoint) {
   ASSERT_TRUE(polygon.ok());
   auto c = bounding_circle(*polygon);
   ASSERT_TRUE(c.ok());
-  EXPECT_NEAR(c->radius, std::sqrt(50.0), kTight);
+  EXPECT_NEAR(c->radius, std::sqrt(50.0), kCircleTight);
   EXPECT_EQ(c->center, (Vec2{5, 5}));
   auto far = Polygon::from_rings({{{30, 0}, {31, 0}, {30, 1}}});
   ASSERT_TRUE(far.ok());
   auto both = bounding_circle(MultiPolygon{{*polygon, *far}});
   ASSERT_TRUE(both.ok());
-  EXPECT_NEAR(both->radius, 0.5 * std::hypot(31.0, 10.0), kTight);
+  EXPECT_NEAR(both->radius, 0.5 * std::hypot(31.0, 10.0), kCircleTight);
   EXPECT_EQ(bounding_circle(MultiPolygon{}).error().kind, ErrorKind::degenerate);
 }
 

@@ -14,10 +14,6 @@
 namespace contain::test {
 namespace {
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // Bytes of a binary STL: an 80-byte header, the triangle count it claims, then `records` records
 // of 50 bytes (all zero: degenerate triangles at the origin).
 std::string binary_stl(std::uint32_t claimed, std::size_t records) {

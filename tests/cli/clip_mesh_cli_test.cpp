@@ -10,14 +10,14 @@
 namespace contain::test {
 namespace {
 
-const char* const cube_off =
+const char* const kClipCubeOff =
     "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
     "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n"
     "3 3 0 4\n3 3 4 7\n";
 
 TEST(ClipMeshCli, CappedCutIsAClosedSolidOnStdoutAsOff) {
   TempDir dir;
-  const std::string mesh = dir.write("cube.off", cube_off);
+  const std::string mesh = dir.write("cube.off", kClipCubeOff);
   const CliRun run = run_contain({"clip", "--mesh", mesh, "--halfspace=0,0,1,-0.5", "--cap"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.out.rfind("OFF\n", 0), 0u) << run.out;
@@ -32,7 +32,7 @@ TEST(ClipMeshCli, CappedCutIsAClosedSolidOnStdoutAsOff) {
 
 TEST(ClipMeshCli, BoxWithOutFileInTheFormatOfItsExtension) {
   TempDir dir;
-  const std::string mesh = dir.write("cube.off", cube_off);
+  const std::string mesh = dir.write("cube.off", kClipCubeOff);
   const std::string out = (dir.path() / "small.obj").string();
   const CliRun run =
       run_contain({"clip", "--mesh", mesh, "--box", "0.5,0.5,0.5,2,2,2", "--cap", "--out", out});

@@ -38,10 +38,6 @@ std::string open_box_off() {
   return text;
 }
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // --- bad input and usage: refused before any boolean runs ---------------------------------------
 
 TEST(ClipSolidCli, OpenMeshIsExit3NamingTheFileTheEdgeAndItsTriangle) {

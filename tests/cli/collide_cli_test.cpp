@@ -9,14 +9,14 @@
 namespace contain::test {
 namespace {
 
-const char* kCube =
+const char* kCollideCube =
     "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
     "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n"
     "3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n";
 
 TEST(CollideCli, TouchingCubesIntersectAndSeparatedOnesAreDisjoint) {
   const TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kCollideCube);
   auto r = run_contain({"collide", cube, cube, "--transform-b", "1,0,0,1,0,1,0,0,0,0,1,0"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, "intersect\n");
@@ -26,7 +26,7 @@ TEST(CollideCli, TouchingCubesIntersectAndSeparatedOnesAreDisjoint) {
 
 TEST(CollideCli, PosesGiveOneLinePerPoseAndJsonHasAWitness) {
   const TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kCollideCube);
   const std::string poses = dir.write("poses.txt",
                                       "# shift along x\n"
                                       "1,0,0,0.5,0,1,0,0,0,0,1,0\n"
@@ -47,7 +47,7 @@ TEST(CollideCli, PosesGiveOneLinePerPoseAndJsonHasAWitness) {
 TEST(CollideCli, OpenMeshIsASurfaceWithAWarning) {
   const TempDir dir;
   const std::string tri = dir.write("tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kCollideCube);
   auto r = run_contain({"collide", tri, tri, "--transform-b", "1,0,0,0,0,1,0,0,0,0,1,1e-300"});
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out, "disjoint\n");
@@ -76,7 +76,7 @@ TEST(CollideCli, RegionsCollideAsClosedSets) {
 
 TEST(CollideCli, BadInputAndUsageErrorsFollowTheContract) {
   const TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kCollideCube);
   const std::string region = dir.write("r.wkt", "POLYGON((0 0, 1 0, 0 1, 0 0))");
   EXPECT_EQ(run_contain({"collide", cube, cube, "--transform-b", "1,0,0"}).exit_code, 2);
   // NaN in a transform is a bad number: exit 3, as NaN coordinates (issue 24).

@@ -11,19 +11,15 @@
 namespace contain::test {
 namespace {
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // A unit cube, outward, as OFF.
-const char* kCube =
+const char* kDistanceCube =
     "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
     "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 2 3 7\n3 2 7 6\n"
     "3 1 2 6\n3 1 6 5\n3 0 4 7\n3 0 7 3\n";
 
 TEST(DistanceCli, PointsAgainstAMeshSignedWithClosestPointAndTriangle) {
   TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   const CliRun run = run_contain({"distance", "--mesh", cube, "--signed", "--closest"},
                                  "# comment\n0.5 0.5 0.25\n3 0.5 0.5\n\n1 1 1\n0.5,0.5,2\n");
   EXPECT_EQ(run.exit_code, 0) << run.err;
@@ -37,7 +33,7 @@ TEST(DistanceCli, PointsAgainstAMeshSignedWithClosestPointAndTriangle) {
 
 TEST(DistanceCli, UnsignedDistanceIsTheDoubleNearestToTheExactValue) {
   TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   // sqrt(3) from (2, 2, 2) to the corner (1, 1, 1): 1.7320508075688772 is the nearest double.
   const CliRun run = run_contain({"distance", "--mesh", cube}, "2 2 2\n0.5 0.5 0.5\n");
   EXPECT_EQ(run.exit_code, 0);
@@ -46,7 +42,7 @@ TEST(DistanceCli, UnsignedDistanceIsTheDoubleNearestToTheExactValue) {
 
 TEST(DistanceCli, WithinIsExactAtTheDistanceItself) {
   TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   // distance 0.1 from (1.1, 0.5, 0.5): the double 0.1 is above the exact 1.1 - 1 (the double
   // 1.1 is 1.100000000000000088817841970012523..., so the gap is 0.100000000000000088...), and
   // the double 0.1 = 0.1000000000000000055511151231257827: below it, so "no".
@@ -74,7 +70,7 @@ TEST(DistanceCli, PointsAgainstARegionWithRingAndEdge) {
 
 TEST(DistanceCli, TwoMeshesSeparatedTouchingAndNestedWithPosesAndJson) {
   TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   const std::string poses = dir.write("poses.txt",
                                       "1 0 0 3 0 1 0 0 0 0 1 0\n"  // 2 apart along x
                                       "1 0 0 1 0 1 0 0 0 0 1 0\n"  // touching faces
@@ -97,7 +93,7 @@ TEST(DistanceCli, TwoRegionsAndMixedKindsAreRefused) {
   const CliRun run = run_contain({"distance", a, b});
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.out, "2 4 0 6 0\n");
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   EXPECT_EQ(run_contain({"distance", a, cube}).exit_code, 3);
   EXPECT_EQ(run_contain({"distance", a, b, "--transform-b", "1,0,0,0,0,1,0,0,0,0,1,0"}).exit_code,
             2);
@@ -116,7 +112,7 @@ TEST(DistanceCli, OpenMeshSignsWarnAsInsideDoes) {
 
 TEST(DistanceCli, UsageErrorsAreExitTwoAndBadNumbersExitThree) {
   TempDir dir;
-  const std::string cube = dir.write("cube.off", kCube);
+  const std::string cube = dir.write("cube.off", kDistanceCube);
   EXPECT_EQ(run_contain({"distance"}).exit_code, 2);
   // A D that is a number but not a distance is bad input (issue 24: the contract's exit 3).
   EXPECT_EQ(run_contain({"distance", "--mesh", cube, "--within", "-1"}, "0 0 0\n").exit_code, 3);

@@ -23,6 +23,11 @@ struct CliRun {
 [[nodiscard]] CliRun run_program(const std::string& program, const std::vector<std::string>& args,
                                  const std::string& input = "", int as_uid = -1, int as_gid = -1);
 
+/// Whether `text` (what a run printed) holds `part`.
+[[nodiscard]] inline bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
 /// A fresh directory for one test's files, removed with the object.
 class TempDir {
  public:

@@ -14,10 +14,6 @@
 namespace contain::test {
 namespace {
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // Cubes [0,2]^3 and [1,3]^3 as one closed OFF mesh (the second's triangles from 12 on).
 std::string overlapping_cubes_off() {
   const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},

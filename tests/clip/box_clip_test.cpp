@@ -18,7 +18,7 @@
 namespace contain::test {
 namespace {
 
-MultiPolygon of(Polygon p) {
+MultiPolygon as_multi(Polygon p) {
   return MultiPolygon{{std::move(p)}};
 }
 
@@ -50,7 +50,7 @@ TEST(BoxClip, RandomStarsByRandomBoxesAreValidWithTheEnginesArea) {
   for (int t = 0; t < 600; ++t) {
     const Ring star = scenes::star_ring(5 + t % 120, {0, 0}, 0.2, 1.0, static_cast<unsigned>(t));
     const double x = u(rng), y = u(rng), w = s(rng), h = s(rng);
-    ASSERT_TRUE(same_region(of(Polygon{{star}}), Box2{{x, y}, {x + w, y + h}}, false)) << t;
+    ASSERT_TRUE(same_region(as_multi(Polygon{{star}}), Box2{{x, y}, {x + w, y + h}}, false)) << t;
   }
 }
 
@@ -60,7 +60,7 @@ TEST(BoxClip, PolygonWithHolesByRandomBoxes) {
   std::uniform_real_distribution<double> u(-3, 3), s(0.02, 3);
   for (int t = 0; t < 600; ++t) {
     const double x = u(rng), y = u(rng), w = s(rng), h = s(rng);
-    ASSERT_TRUE(same_region(of(demo), Box2{{x, y}, {x + w, y + h}}, false)) << t;
+    ASSERT_TRUE(same_region(as_multi(demo), Box2{{x, y}, {x + w, y + h}}, false)) << t;
   }
 }
 
@@ -73,21 +73,21 @@ TEST(BoxClip, HoleEdgeOnEveryBoxSideBecomesANotchOfTheShell) {
                                {{-1, 3}, {11, 11}},   // bottom on its bottom edge
                                {{-1, -1}, {11, 6}}};  // top on its top edge
   for (const Box2& box : inside_boxes) {
-    const MultiPolygon r = clip::clip_polygon(of(frame), box);
+    const MultiPolygon r = clip::clip_polygon(as_multi(frame), box);
     ASSERT_TRUE(is_valid_ogc(r)) << box.min.x << " " << box.min.y;
     ASSERT_EQ(r.polygons.size(), 1u);
     EXPECT_EQ(r.polygons[0].rings.size(), 1u) << "the hole is a notch, not a hole";
-    EXPECT_TRUE(same_region(of(frame), box, true));
+    EXPECT_TRUE(same_region(as_multi(frame), box, true));
   }
   const Box2 outside_boxes[] = {{{4, 0}, {10, 10}}, {{0, 0}, {2, 10}}, {{0, 6}, {10, 10}},
                                 {{0, 0}, {10, 3}},  {{4, 3}, {8, 6}},  {{2, 6}, {4, 8}}};
   for (const Box2& box : outside_boxes) {
-    const MultiPolygon r = clip::clip_polygon(of(frame), box);
+    const MultiPolygon r = clip::clip_polygon(as_multi(frame), box);
     ASSERT_TRUE(is_valid_ogc(r)) << box.min.x << " " << box.min.y;
-    EXPECT_TRUE(same_region(of(frame), box, true));
+    EXPECT_TRUE(same_region(as_multi(frame), box, true));
   }
   // The hole's box itself: nothing is left.
-  EXPECT_TRUE(clip::clip_polygon(of(frame), Box2{{2, 3}, {4, 6}}).polygons.empty());
+  EXPECT_TRUE(clip::clip_polygon(as_multi(frame), Box2{{2, 3}, {4, 6}}).polygons.empty());
 }
 
 // Every box on a lattice against polygons whose vertices lie on it: vertices on the sides, edges
@@ -101,7 +101,7 @@ TEST(BoxClip, LatticeBoxesAgainstLatticePolygonsWithHoles) {
       for (int w = 1; w <= 11 - x0; w += 2) {
         for (int h = 1; h <= 11 - y0; h += 3) {
           const Box2 box{{double(x0), double(y0)}, {double(x0 + w), double(y0 + h)}};
-          ASSERT_TRUE(same_region(of(frame), box, false))
+          ASSERT_TRUE(same_region(as_multi(frame), box, false))
               << x0 << " " << y0 << " " << w << " " << h;
         }
       }
@@ -140,39 +140,40 @@ TEST(BoxClip, HolesTouchingTheirShellAtAVertexOrInsideAnEdge) {
     for (int y0 = -1; y0 <= 10; ++y0) {
       for (int w = 1; w <= 6; ++w) {
         const Box2 on{{double(x0), double(y0)}, {double(x0 + w), double(y0 + 2)}};
-        ASSERT_TRUE(same_region(of(touch), on, false)) << x0 << " " << y0 << " " << w;
+        ASSERT_TRUE(same_region(as_multi(touch), on, false)) << x0 << " " << y0 << " " << w;
         const Box2 off{{x0 + 0.5, y0 + 0.25}, {x0 + w + 0.5, y0 + 3.25}};
-        ASSERT_TRUE(same_region(of(touch), off, false)) << x0 << " " << y0 << " " << w;
+        ASSERT_TRUE(same_region(as_multi(touch), off, false)) << x0 << " " << y0 << " " << w;
       }
     }
   }
   // The instance: the box cuts the hole below y = 1 and the shell's bottom edge runs through
   // the box, so the hole's tip at (5, 0) splits the part into two polygons touching there.
-  const MultiPolygon r = clip::clip_polygon(of(touch), Box2{{3, -1}, {7, 1}});
+  const MultiPolygon r = clip::clip_polygon(as_multi(touch), Box2{{3, -1}, {7, 1}});
   ASSERT_TRUE(is_valid_ogc(r));
   EXPECT_EQ(r.polygons.size(), 2u);
 }
 
 TEST(BoxClip, BoxesThatChangeNothingOrLeaveNothing) {
   const Polygon demo = scenes::demo_polygon();
-  const MultiPolygon all = clip::clip_polygon(of(demo), Box2{{-100, -100}, {100, 100}});
+  const MultiPolygon all = clip::clip_polygon(as_multi(demo), Box2{{-100, -100}, {100, 100}});
   ASSERT_TRUE(is_valid_ogc(all));
   EXPECT_EQ(exact_signed_area(all),
-            exact_signed_area(by_engine(of(demo), {{-100, -100}, {100, 100}})));
+            exact_signed_area(by_engine(as_multi(demo), {{-100, -100}, {100, 100}})));
   const double inf = std::numeric_limits<double>::infinity();
-  const MultiPolygon unbounded = clip::clip_polygon(of(demo), Box2{{-inf, -inf}, {inf, inf}});
+  const MultiPolygon unbounded = clip::clip_polygon(as_multi(demo), Box2{{-inf, -inf}, {inf, inf}});
   EXPECT_EQ(exact_signed_area(unbounded), exact_signed_area(all));
-  const MultiPolygon half = clip::clip_polygon(of(demo), Box2{{0, -inf}, {inf, inf}});
+  const MultiPolygon half = clip::clip_polygon(as_multi(demo), Box2{{0, -inf}, {inf, inf}});
   ASSERT_TRUE(is_valid_ogc(half));
   EXPECT_GT(exact_signed_area(half), 0);
-  EXPECT_TRUE(clip::clip_polygon(of(demo), Box2{{50, 50}, {60, 60}}).polygons.empty());
-  EXPECT_TRUE(clip::clip_polygon(of(demo), Box2{{0, 0}, {0, 1}}).polygons.empty());  // no area
-  EXPECT_TRUE(clip::clip_polygon(of(demo), Box2{}).polygons.empty());
+  EXPECT_TRUE(clip::clip_polygon(as_multi(demo), Box2{{50, 50}, {60, 60}}).polygons.empty());
+  EXPECT_TRUE(
+      clip::clip_polygon(as_multi(demo), Box2{{0, 0}, {0, 1}}).polygons.empty());  // no area
+  EXPECT_TRUE(clip::clip_polygon(as_multi(demo), Box2{}).polygons.empty());
 }
 
 TEST(BoxClip, ClockwiseShellsAndCounterClockwiseHolesAreReadAsOgc) {
   Polygon p{{{{0, 0}, {0, 4}, {4, 4}, {4, 0}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}}};
-  const MultiPolygon r = clip::clip_polygon(of(p), Box2{{2, -1}, {5, 5}});
+  const MultiPolygon r = clip::clip_polygon(as_multi(p), Box2{{2, -1}, {5, 5}});
   ASSERT_TRUE(is_valid_ogc(r));
   EXPECT_EQ(exact_signed_area(r), 8 - 2);
 }

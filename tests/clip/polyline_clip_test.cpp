@@ -11,7 +11,7 @@
 namespace contain::clip {
 namespace {
 
-Ring box(double x0, double y0, double x1, double y1) {
+Ring box_ring(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
@@ -25,7 +25,7 @@ double length(const std::vector<Polyline>& paths) {
 }
 
 TEST(PolylineClip, LineThroughASquareSplitsIntoInsideAndOutsideParts) {
-  const std::vector<Ring> square{box(0, 0, 2, 2)};
+  const std::vector<Ring> square{box_ring(0, 0, 2, 2)};
   const std::vector<Polyline> line{{{-1, 1}, {3, 1}}};
   const auto in = clip_polylines(line, square, {.keep = PolylinePart::inside});
   ASSERT_EQ(in.size(), 1u);
@@ -37,14 +37,14 @@ TEST(PolylineClip, LineThroughASquareSplitsIntoInsideAndOutsideParts) {
 }
 
 TEST(PolylineClip, PathWhollyInsideIsReturnedBitForBit) {
-  const std::vector<Ring> square{box(0, 0, 1, 1)};
+  const std::vector<Ring> square{box_ring(0, 0, 1, 1)};
   const std::vector<Polyline> path{{{0.1, 0.1}, {0.3, 0.7}, {0.9, 0.2}, {0.15, 0.95}}};
   EXPECT_EQ(clip_polylines(path, square), path);
   EXPECT_TRUE(clip_polylines(path, square, {.keep = PolylinePart::outside}).empty());
 }
 
 TEST(PolylineClip, PieceAlongTheBoundaryBelongsToTheInsidePart) {
-  const std::vector<Ring> square{box(0, 0, 2, 2)};
+  const std::vector<Ring> square{box_ring(0, 0, 2, 2)};
   const std::vector<Polyline> path{{{-1, 0}, {3, 0}}};
   const auto in = clip_polylines(path, square);
   ASSERT_EQ(in.size(), 1u);
@@ -53,8 +53,8 @@ TEST(PolylineClip, PieceAlongTheBoundaryBelongsToTheInsidePart) {
 }
 
 TEST(PolylineClip, HolesAndFillRulesDecideTheInside) {
-  Ring hole = box(1, 1, 2, 2);
-  const std::vector<Ring> region{box(0, 0, 3, 3), hole};
+  Ring hole = box_ring(1, 1, 2, 2);
+  const std::vector<Ring> region{box_ring(0, 0, 3, 3), hole};
   const std::vector<Polyline> path{{{-1, 1.5}, {4, 1.5}}};
   // Even-odd: the hole is outside; nonzero with both counter-clockwise: it is filled.
   EXPECT_EQ(clip_polylines(path, region, {.fill = Fill::even_odd}).size(), 2u);

@@ -51,7 +51,7 @@ mpq_class flat_pair_distance(const predicates::FlatPair3& x) {
   return s * s / test::qdot(m, m);
 }
 
-Vec3 lattice(std::mt19937_64& rng, int n) {
+Vec3 lattice_point(std::mt19937_64& rng, int n) {
   std::uniform_int_distribution<int> d(-n, n);
   return {0.5 * d(rng), 0.5 * d(rng), 0.5 * d(rng)};
 }
@@ -62,7 +62,7 @@ TEST(ClosestFlats, TrianglePairsMatchTheExactOracleIncludingCrossingsAndTouching
   int failures = 0;
   for (int i = 0; i < test::case_budget(3000, 5) && failures < 10; ++i) {
     const bool lat = i % 2 == 0;
-    auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
+    auto pick = [&] { return lat ? lattice_point(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Triangle3 s{pick(), pick(), pick()}, t{pick(), pick(), pick()};
     if (i % 7 == 0) t.a = s.b;                // shared vertex
     if (i % 11 == 0) t = {s.b, s.a, pick()};  // shared edge
@@ -88,7 +88,7 @@ TEST(ClosestFlats, SegmentPairsMatchTheExactOracleIn3DAnd2D) {
   std::uniform_real_distribution<double> u(-1, 1);
   for (int i = 0; i < test::case_budget(5000, 5); ++i) {
     const bool lat = i % 2 == 0;
-    auto pick = [&] { return lat ? lattice(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
+    auto pick = [&] { return lat ? lattice_point(rng, 3) : Vec3{u(rng), u(rng), u(rng)}; };
     Segment3 s{pick(), pick()}, t{pick(), pick()};
     if (i % 9 == 0) t.b = t.a;
     if (i % 13 == 0) t = {s.a + (s.b - s.a), s.a};

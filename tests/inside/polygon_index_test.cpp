@@ -14,7 +14,8 @@
 namespace contain::inside {
 namespace {
 
-constexpr std::array<Fill, 4> kFills{Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative};
+constexpr std::array<Fill, 4> kIndexFills{Fill::even_odd, Fill::nonzero, Fill::positive,
+                                          Fill::negative};
 
 // Points that stress the grid: its lines, its corners, cell centres, and the box's sides.
 std::vector<Vec2> points_on_grid(std::mt19937_64& rng, const PolygonIndex& index, int count) {
@@ -72,7 +73,7 @@ TEST(PolygonIndex, AnswersLikeTheOneShotTestOnHandCases) {
       for (double y = -9; y <= 11; y += 0.25)
         points.push_back({x, y});
     }
-    for (Fill fill : kFills) {
+    for (Fill fill : kIndexFills) {
       for (std::size_t cells : {1u, 16u, 4096u}) {
         expect_index_matches_one_shot(rings, points,
                                       {.fill = fill, .min_cells = cells, .max_cells = cells});
@@ -85,7 +86,7 @@ TEST(PolygonIndex, MatchesExactOracleOnRandomIntegerRings) {
   std::mt19937_64 rng(99);
   for (int round = 0; round < 60; ++round) {
     const std::vector<Ring> rings = test::random_integer_rings(rng, 3, 7, 4);
-    for (Fill fill : kFills) {
+    for (Fill fill : kIndexFills) {
       // A grid whose lines fall on and between the integer coordinates.
       const std::size_t cells = round % 3 == 0 ? 16 : (round % 3 == 1 ? 64 : 7);
       const PolygonIndex index(std::span<const Ring>(rings),
@@ -106,7 +107,7 @@ TEST(PolygonIndex, MatchesOneShotOnRandomPointsSnappedToEdgesVerticesAndGridLine
     std::vector<Ring> rings{test::random_star(rng, 40 + 10 * round, 0.1, 0.2, 1.0),
                             test::random_star(rng, 25, 0.4, 0.3, 0.5)};
     if (round % 2 == 1) std::reverse(rings[1].begin(), rings[1].end());
-    for (Fill fill : kFills) {
+    for (Fill fill : kIndexFills) {
       for (std::size_t cells : {64u, 4096u, 65536u}) {
         const PolygonIndexOptions options{.fill = fill, .min_cells = cells, .max_cells = cells};
         const PolygonIndex index(std::span<const Ring>(rings), options);
@@ -138,7 +139,7 @@ TEST(PolygonIndex, LongEdgesAcrossManyCellsAreExact) {
   const std::vector<Ring> rings{{{0, 0}, {1000, 1}, {1000, 1.0000001}, {3, 997}, {0, 1000}},
                                 {{1, 1}, {999, 998}, {999, 999}}};
   std::mt19937_64 rng(8);
-  for (Fill fill : kFills) {
+  for (Fill fill : kIndexFills) {
     const PolygonIndexOptions options{.fill = fill, .min_cells = 40000};
     const PolygonIndex index(std::span<const Ring>(rings), options);
     std::vector<Vec2> points = test::points_near_rings(rng, rings, 200);

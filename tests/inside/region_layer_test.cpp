@@ -14,7 +14,8 @@
 namespace contain::inside {
 namespace {
 
-constexpr std::array<Fill, 4> kFills{Fill::even_odd, Fill::nonzero, Fill::positive, Fill::negative};
+constexpr std::array<Fill, 4> kLayerFills{Fill::even_odd, Fill::nonzero, Fill::positive,
+                                          Fill::negative};
 
 MultiPolygon square(double x0, double y0, double x1, double y1) {
   return MultiPolygon{{Polygon{{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}}}};
@@ -101,7 +102,7 @@ TEST(RegionLayer, LakeHoleIsHeldByTheIslandInItOnly) {
   EXPECT_EQ(layer.locate(Vec2{2, 5}), (std::vector<Holder>{on(0), on(2)}));  // shore
   EXPECT_EQ(layer.locate(Vec2{4, 5}), (std::vector<Holder>{on(1), in(2)}));  // island shore
   // Under every fill rule the same answers as each region alone.
-  for (const Fill fill : kFills) {
+  for (const Fill fill : kLayerFills) {
     const RegionLayer filled(regions, {.fill = fill});
     for (const Vec2 p : {Vec2{1, 1}, Vec2{3, 3}, Vec2{5, 5}, Vec2{2, 5}, Vec2{4, 5}}) {
       EXPECT_EQ(filled.locate(p), brute_force(regions, p, fill));
@@ -128,7 +129,7 @@ TEST(RegionLayer, MatchesEachRegionAloneOnRandomDegenerateLayers) {
     std::uniform_int_distribution<int> c(-1, 13);
     for (int k = 0; k < 200; ++k)
       points.push_back({c(rng) * 0.5, c(rng) * 0.5});
-    const Fill fill = kFills[static_cast<std::size_t>(round) % kFills.size()];
+    const Fill fill = kLayerFills[static_cast<std::size_t>(round) % kLayerFills.size()];
     const RegionLayer layer(regions, {.fill = fill});
     for (const Vec2& p : points) {
       ASSERT_EQ(layer.locate(p), brute_force(regions, p, fill))

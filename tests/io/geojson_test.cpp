@@ -9,8 +9,8 @@
 namespace contain::io {
 namespace {
 
-const Ring kSquare{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-const Ring kHole{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+const Ring kJsonSquare{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+const Ring kJsonHole{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
 const char* kSquareJson = "[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,2],[2,1],[1,1]]]";
 
 TEST(GeoJson, ReadsAPolygonWithAHole) {
@@ -18,7 +18,7 @@ TEST(GeoJson, ReadsAPolygonWithAHole) {
       parse_geojson(std::string(R"({"type":"Polygon","coordinates":)") + kSquareJson + "}", "a");
   ASSERT_TRUE(r.ok()) << r.error().what();
   ASSERT_EQ(r->polygons.size(), 1u);
-  EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kSquare, kHole}));
+  EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kJsonSquare, kJsonHole}));
 }
 
 TEST(GeoJson, GathersThePolygonsOfEveryFeatureAndCollection) {

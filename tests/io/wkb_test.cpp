@@ -14,8 +14,8 @@
 namespace contain::io {
 namespace {
 
-const Ring kSquare{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-const Ring kHole{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+const Ring kWkbSquare{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+const Ring kWkbHole{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
 
 // WKB written by hand in either byte order, independent of the writer under test.
 class Bytes {
@@ -61,27 +61,27 @@ class Bytes {
 TEST(Wkb, ReadsAPolygonWithAHoleInBothByteOrders) {
   for (const bool big : {false, true}) {
     Bytes b(big);
-    b.order().u32(3).u32(2).ring(kSquare).ring(kHole);
+    b.order().u32(3).u32(2).ring(kWkbSquare).ring(kWkbHole);
     auto r = parse_wkb(b.str(), "a.wkb");
     ASSERT_TRUE(r.ok()) << r.error().what();
     ASSERT_EQ(r->polygons.size(), 1u);
-    EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kSquare, kHole})) << big;
+    EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kWkbSquare, kWkbHole})) << big;
   }
 }
 
 TEST(Wkb, ReadsMultiPolygonsAndCollectionsOfThemInOrder) {
   Bytes b(false);
-  b.order().u32(7).u32(2);                // collection of 2
-  b.order().u32(6).u32(2);                //   multipolygon of 2
-  b.order().u32(3).u32(1).ring(kSquare);  //     square
-  b.order().u32(3).u32(0);                //     empty polygon
-  Bytes big(true);                        //   a member in big endian
-  big.order().u32(3).u32(1).ring(kHole);
+  b.order().u32(7).u32(2);                   // collection of 2
+  b.order().u32(6).u32(2);                   //   multipolygon of 2
+  b.order().u32(3).u32(1).ring(kWkbSquare);  //     square
+  b.order().u32(3).u32(0);                   //     empty polygon
+  Bytes big(true);                           //   a member in big endian
+  big.order().u32(3).u32(1).ring(kWkbHole);
   auto r = parse_wkb(b.str() + big.str(), "a.wkb");
   ASSERT_TRUE(r.ok()) << r.error().what();
   ASSERT_EQ(r->polygons.size(), 2u);
-  EXPECT_EQ(r->polygons[0].rings[0], kSquare);
-  EXPECT_EQ(r->polygons[1].rings[0], kHole);
+  EXPECT_EQ(r->polygons[0].rings[0], kWkbSquare);
+  EXPECT_EQ(r->polygons[1].rings[0], kWkbHole);
 }
 
 TEST(Wkb, DropsZAndMOrdinatesOfIsoAndEwkbCodesAndSkipsTheSrid) {
@@ -96,15 +96,15 @@ TEST(Wkb, DropsZAndMOrdinatesOfIsoAndEwkbCodesAndSkipsTheSrid) {
     Bytes b(false);
     b.order().u32(c.code);
     if (c.srid) b.u32(4326);
-    b.u32(1).ring(kSquare, c.extra);
+    b.u32(1).ring(kWkbSquare, c.extra);
     auto r = parse_wkb(b.str(), "a.wkb");
     ASSERT_TRUE(r.ok()) << c.code << ": " << r.error().what();
-    EXPECT_EQ(r->polygons[0].rings[0], kSquare) << c.code;
+    EXPECT_EQ(r->polygons[0].rings[0], kWkbSquare) << c.code;
   }
 }
 
 TEST(Wkb, ReadsTheHexFormOfPostgisInEitherCase) {
-  const std::string binary = format_wkb(MultiPolygon{{Polygon{{kSquare, kHole}}}});
+  const std::string binary = format_wkb(MultiPolygon{{Polygon{{kWkbSquare, kWkbHole}}}});
   std::string upper, lower;
   for (unsigned char c : binary) {
     constexpr char digits[] = "0123456789ABCDEF";
@@ -116,7 +116,7 @@ TEST(Wkb, ReadsTheHexFormOfPostgisInEitherCase) {
   for (const std::string& text : {upper, lower}) {
     auto r = parse_wkb(text, "hex");
     ASSERT_TRUE(r.ok()) << r.error().what();
-    EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kSquare, kHole}));
+    EXPECT_EQ(r->polygons[0].rings, (std::vector<Ring>{kWkbSquare, kWkbHole}));
   }
   EXPECT_EQ(parse_wkb(upper.substr(1), "hex").error().kind, ErrorKind::parse);
   EXPECT_EQ(parse_wkb(upper.substr(0, 10) + "zz", "hex").error().kind, ErrorKind::parse);
@@ -144,9 +144,9 @@ TEST(Wkb, WriterRoundTripsEveryDoubleBitForBitAndMatchesTheWktReading) {
     EXPECT_EQ(*back, *via_wkt);
   }
   EXPECT_EQ(format_wkb(MultiPolygon{}).size(), 9u);  // MULTIPOLYGON EMPTY
-  auto one = parse_wkb(format_wkb(Polygon{{kSquare}}), "p");
+  auto one = parse_wkb(format_wkb(Polygon{{kWkbSquare}}), "p");
   ASSERT_TRUE(one.ok());
-  EXPECT_EQ(one->polygons[0].rings[0], kSquare);
+  EXPECT_EQ(one->polygons[0].rings[0], kWkbSquare);
 }
 
 // fuzz_wkb: a ring given with its closing point twice is stored ending on its first point; the
@@ -178,7 +178,7 @@ TEST(Wkb, NamesOtherGeometryTypesAsUnsupported) {
 
 TEST(Wkb, RejectsTruncatedLyingAndTrailingBytesWithTheOffset) {
   Bytes b(false);
-  b.order().u32(3).u32(1).ring(kSquare);
+  b.order().u32(3).u32(1).ring(kWkbSquare);
   const std::string good = b.str();
   for (std::size_t cut = 0; cut < good.size(); ++cut) {
     auto r = parse_wkb(good.substr(0, cut), "t");
