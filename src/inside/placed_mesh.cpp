@@ -23,6 +23,15 @@ void prepare(PlacedMesh& side, const bvh::BuildOptions& options) {
 
 }  // namespace
 
+Mesh placed_solid(const Mesh& mesh, const Transform& transform) {
+  Mesh out = placed(mesh, transform);
+  if (transform_orientation(transform) == Sign::negative) {
+    for (TriangleIndices& t : out.triangles)
+      std::swap(t[1], t[2]);
+  }
+  return out;
+}
+
 PlacedMesh::PlacedMesh(Mesh m, const bvh::BuildOptions& options) : mesh(std::move(m)) {
   prepare(*this, options);
   rule = solid_rule(mesh, validate_mesh(mesh));
@@ -36,17 +45,12 @@ PlacedMeshPair::PlacedMeshPair(const Mesh& mesh_a, const Mesh& mesh_b,
   a.mesh = placed(mesh_a, options.transform_a);
   prepare(a, options.bvh);
   if (a.mesh.triangles.empty()) return;
-  if (transform_orientation(options.transform_a) != Sign::negative) {
-    index_a = MeshIndex(a.mesh, options.index);
-  } else {
-    // A reflection turns the placed triangles inside out: the placed solid, the image of A's, is
-    // the solid of the placed mesh with its triangles reversed (as locate_by_ray negates B's
-    // counts under a reflecting pose).
-    Mesh reversed = a.mesh;
-    for (TriangleIndices& t : reversed.triangles)
-      std::swap(t[1], t[2]);
-    index_a = MeshIndex(reversed, options.index);
-  }
+  // A reflection turns the placed triangles inside out: the placed solid, the image of A's, is
+  // the solid of the placed mesh with its triangles reversed (as locate_by_ray negates B's counts
+  // under a reflecting pose). A's triangles themselves keep their corners (witnesses, features).
+  index_a = transform_orientation(options.transform_a) == Sign::negative
+                ? MeshIndex(placed_solid(mesh_a, options.transform_a), options.index)
+                : MeshIndex(a.mesh, options.index);
   a.rule = index_a.rule();
 }
 

@@ -5,7 +5,7 @@
 // cube placed in a cell of a random self-overlapping mesh of boxes (no surface near it) meets the
 // mesh exactly where the GMP oracle's winding number says the cell is in the solid, whichever
 // side of the pair holds the mesh (A's index or B's ray), for MeshPair, MeshPairDistance and
-// MeshScene.
+// MeshScene; and inside::SolidScene (`inside --scene`) holds the cube's corner exactly then.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include <array>
 #include <map>
 #include <random>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "contain/collide/mesh_scene.h"
 #include "contain/distance/mesh_pair_distance.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/inside/solid_scene.h"
 #include "contain/values/box.h"
 #include "support/perturbed_ray_oracle.h"
 
@@ -142,6 +144,12 @@ TEST(SolidNesting, ACubeInACellMeetsASelfOverlappingMeshWhereTheOracleWindingNum
       const std::vector<Mesh> meshes{mesh, cube};
       const std::vector<inside::SceneObject> objects{{0, place}, {1, pose}};
       EXPECT_EQ(MeshScene(meshes, objects).pairs().size(), expected ? 1u : 0u) << at;
+      // `inside --scene` holds the cube's corner in the mesh's object exactly then.
+      const std::vector<inside::Holder> holders =
+          inside::SolidScene(std::span<const Mesh>(meshes).first(1),
+                             std::span<const inside::SceneObject>(objects).first(1))
+              .locate(corner);
+      EXPECT_EQ(holders.size(), expected ? 1u : 0u) << at;
     }
   }
   EXPECT_GT(inside_seen, 50);  // both answers were exercised

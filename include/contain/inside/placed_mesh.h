@@ -15,6 +15,11 @@
 
 namespace contain::inside {
 
+/// `mesh` placed by `transform` as a solid's boundary: the vertices transform.apply(v), and each
+/// triangle's corners reversed where the transform reflects (transform_orientation negative), so
+/// that the placed mesh's solid (MeshIndex) is the image of the mesh's solid. O(n).
+[[nodiscard]] Mesh placed_solid(const Mesh& mesh, const Transform& transform);
+
 /// A mesh prepared for pair queries, in the frame of its vertices.
 struct PlacedMesh {
   Mesh mesh;                             ///< the triangles, in this side's frame
