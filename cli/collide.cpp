@@ -108,7 +108,7 @@ int run_meshes(const CollideOptions& o) {
   for (const auto& [solid, name, mesh] : {std::tuple{pair.a_is_solid(), o.a, &a->mesh},
                                           std::tuple{pair.b_is_solid(), o.b, &b->mesh}}) {
     if (solid) {
-      warn_if_self_crossing(name, *mesh);  // one solid inside the other is found by ray parity
+      warn_of_solid(name, *mesh);
       continue;
     }
     warn(io::open_mesh_warning(name, validate_mesh(*mesh), io::OpenMeshReading::surface_contact));

@@ -14,7 +14,6 @@
 #include <map>
 #include <string>
 
-#include "contain/collide/self_intersections.h"
 #include "contain/core/parallel.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
@@ -33,20 +32,9 @@ void warn(std::string_view message) {
   std::cerr << "contain: warning: " << message << '\n';
 }
 
-namespace {
-
-// The warning's line for a mesh that crosses itself, empty when it does not.
-std::string self_crossing_line(std::string_view name, const Mesh& mesh) {
-  const std::string words =
-      io::mesh_warning(collide::self_intersections(mesh, {.keep = 1, .limit = 1}));
-  return words.empty() ? words : std::string(name) + ": " + words;
-}
-
-}  // namespace
-
-void warn_if_self_crossing(std::string_view name, const Mesh& mesh) {
-  const std::string line = self_crossing_line(name, mesh);
-  if (!line.empty()) warn(line);
+void warn_of_solid(std::string_view name, const Mesh& mesh) {
+  const std::string words = io::mesh_warning(inside::MeshRegime::closed_exact, validate_mesh(mesh));
+  if (!words.empty()) warn(std::string(name) + ": " + words);
 }
 
 Result<MultiPolygon> read_region_warned(const std::string& path) {

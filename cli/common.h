@@ -36,12 +36,11 @@ int report(const Error& error);
 /// Prints a warning on stderr (never on stdout, which holds only results).
 void warn(std::string_view message);
 
-/// Warns "NAME: mesh crosses itself (triangles I and J meet ...)" (io::mesh_warning's words) when
-/// the closed mesh read from `name` crosses itself: ray parity then reads a point inside two
-/// overlapping parts as outside (issue 24). The answers do not change. Stops at the first pair
-/// (`collide::self_intersections`, limit 1): about 2.4 times the cost of building the mesh's
-/// index on a clean 100k-triangle mesh, which has to be searched whole.
-void warn_if_self_crossing(std::string_view name, const Mesh& mesh);
+/// Warns "NAME: mesh ..." with `contain inside`'s words (io::mesh_warning) for a closed mesh read
+/// as a solid by a pair or scene query (the same solid as `inside`: the winding number, ray
+/// parity for inconsistent orientation), when there is something to say (a mesh turned inside
+/// out, inconsistent orientation, pinch vertices, degenerate or duplicated triangles).
+void warn_of_solid(std::string_view name, const Mesh& mesh);
 
 /// The numbers of a list-valued option ("1,0,0,2.5" or "1 0 0 2.5"), all finite; `option` names
 /// the option in the error.

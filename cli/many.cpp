@@ -188,8 +188,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
     if (warned[m]) continue;
     warned[m] = 1;
     if (prepared.is_solid(k)) {
-      warn_if_self_crossing(scene->mesh_files[m] + " (object " + scene->ids[k] + ")",
-                            scene->meshes[m]);
+      warn_of_solid(scene->mesh_files[m] + " (object " + scene->ids[k] + ")", scene->meshes[m]);
       continue;
     }
     warn(io::open_mesh_warning(scene->mesh_files[m] + " (object " + scene->ids[k] + ")",

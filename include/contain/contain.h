@@ -58,6 +58,7 @@
 #include "contain/inside/point_in_polygon_angle_sum.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/inside/polygon_index.h"
+#include "contain/inside/solid_rule.h"
 #include "contain/inside/winding_number.h"
 #include "contain/inside/winding_number_3d.h"
 #include "contain/predicates/bounded.h"

@@ -101,10 +101,10 @@ at limit: stopped). bool(result): the mesh crosses (or folds onto) itself.
         return collide::self_intersections(*ref, options);
       },
       "mesh"_a, py::kw_only(), "keep"_a = 8, "limit"_a = 0, R"doc(
-The pairs of triangles of a mesh (anything mesh-like) that meet where they are not joined: the
-check behind the command's warning that a closed mesh overlaps itself where a solid's inside
-is read by ray parity (collide, mesh-pair distance: a point inside both overlapping parts is
-'out' there; inside() and MeshIndex read the winding number and need no such check).
+The pairs of triangles of a mesh (anything mesh-like) that meet where they are not joined:
+whether a closed mesh overlaps itself. No query needs it to be right: inside(), MeshIndex,
+collide, MeshPair and MeshPairDistance all read a closed mesh as the solid of its winding
+number, where overlapping parts count once (repair_solid writes that solid without overlaps).
 
 Triangles that share a corner (a vertex at the same coordinates: an unwelded mesh is judged as
 its welded twin) count only when they meet beyond the corners they share (a triangle crossing

@@ -57,7 +57,7 @@ MeshScene::MeshScene(std::span<const Mesh> meshes, std::span<const inside::Scene
 bool MeshScene::is_solid(std::size_t k) const {
   const std::int32_t m = objects_[k].mesh;
   return m >= 0 && static_cast<std::size_t>(m) < models_.size() &&
-         models_[static_cast<std::size_t>(m)].solid;
+         models_[static_cast<std::size_t>(m)].solid();
 }
 
 std::vector<std::pair<std::int32_t, std::int32_t>> MeshScene::candidates() const {

@@ -32,11 +32,11 @@ struct Placed {
 };
 
 // Is the world point q strictly inside the solid s placed by `place`? The one nesting test of
-// the pair queries (inside::locate_by_ray: exact perturbed ray parity, a point on the surface
-// is not inside).
-template <class Place>
-bool strictly_inside(const inside::PlacedMesh& s, const Place& place, Vec3 q) {
-  return inside::locate_by_ray(s.bvh, q, place, [&](std::int32_t t) {
+// the pair queries (inside::locate_by_ray: the exact signed crossings read by s's solid rule,
+// as inside::MeshIndex reads them; a point on the surface is not inside).
+inline bool strictly_inside(const inside::PlacedMesh& s, const Placed& place, Vec3 q) {
+  const Sign orientation = inside::transform_orientation(place.boxes.transform());
+  return inside::locate_by_ray(s.bvh, q, s.rule, orientation, place, [&](std::int32_t t) {
            const TriangleIndices& tri = s.mesh.triangles[static_cast<std::size_t>(t)];
            return Triangle3{place.apply(s.mesh.vertex(tri[0])), place.apply(s.mesh.vertex(tri[1])),
                             place.apply(s.mesh.vertex(tri[2]))};
@@ -47,6 +47,11 @@ bool strictly_inside(const inside::PlacedMesh& s, const Place& place, Vec3 q) {
 // MeshPair). `nodes_may_meet(box_a, box_b)` is false only when the placed images of two local
 // node boxes are apart (conservative). `b_vertex_in_a(p)` decides whether the world point p, on
 // no triangle of A, lies in the solid A (MeshPair asks A's MeshIndex; a scene casts the ray).
+// Either way the solid of a closed mesh is inside::MeshIndex's (solid_rule.h): where the winding
+// number is positive (overlapping parts count once, a shell turned inside out is a cavity), ray
+// parity for inconsistent orientation. Surfaces that do not meet keep every component of one
+// wholly inside or outside the other solid (the winding number is constant on a connected set
+// off the surface), so one vertex a component decides.
 template <class PlaceA, class PlaceB, class NodesMayMeet, class InA>
 Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const inside::PlacedMesh& b,
                       const PlaceB& pb, NodesMayMeet&& nodes_may_meet, InA&& b_vertex_in_a) {
@@ -82,7 +87,7 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
 
   // 2. Nesting: the surfaces are disjoint, so each component of one surface lies wholly inside
   // or wholly outside the other solid, and one vertex of it decides.
-  if (b.solid) {
+  if (b.solid()) {
     const Box3 b_world = pb(b.bvh.bounds());
     for (const std::int32_t v : a.components) {
       const Vec3 q = pa.apply(va[static_cast<std::size_t>(v)]);
@@ -96,7 +101,7 @@ Contact collide_sides(const inside::PlacedMesh& a, const PlaceA& pa, const insid
       }
     }
   }
-  if (a.solid) {
+  if (a.solid()) {
     const Box3 a_world = pa(a.bvh.bounds());
     for (const std::int32_t v : b.components) {
       const Vec3 p = pb.apply(vb[static_cast<std::size_t>(v)]);

@@ -358,20 +358,24 @@ MeshPairDistance::Placed& MeshPairDistance::place(const Transform& tb) const {
 
 // Stage 1, overlap first: a vertex of one strictly inside the other solid makes the distance 0
 // whatever the surfaces do (and settles nested solids, whose surfaces may be far apart, at
-// once). A vertex on the other's surface is a touching pair, which the descent finds.
+// once). A vertex on the other's surface is a touching pair, which the descent finds. Both
+// solids are inside::MeshIndex's (the winding number positive, or ray parity for inconsistent
+// orientation: solid_rule.h), A's by its index, B's by the signed ray as placed.
 MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
-  if (pair_.a.solid) {
+  if (pair_.a.solid()) {
     for (const std::int32_t v : pair_.b.components) {
       if (pair_.index_a.locate(placed.vertices[v]) == Location::inside)
         return {inside::PairWitness::vertex_of_b_in_a, v, placed.vertices[v]};
     }
   }
-  if (pair_.b.solid) {
+  if (pair_.b.solid()) {
     const Mesh& b = pair_.b.mesh;
+    const Sign orientation = inside::transform_orientation(placed.tb);
     for (const std::int32_t v : pair_.a.components) {
       const Vec3 q = pair_.a.mesh.vertex(v);
       const Location location = inside::locate_by_ray(
-          pair_.b.bvh, q, [&](const Box3& local) { return bvh::placed_box(local, placed.tb); },
+          pair_.b.bvh, q, pair_.b.rule, orientation,
+          [&](const Box3& local) { return bvh::placed_box(local, placed.tb); },
           [&](std::int32_t t) {
             return placed.vertices.triangle(b.triangles[static_cast<std::size_t>(t)]);
           });

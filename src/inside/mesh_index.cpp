@@ -11,7 +11,6 @@
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
-#include "contain/shapes/mesh_closure.h"
 #include "contain/values/triangle.h"
 #include "inside/mesh_ray.h"
 #include "inside/surface_star.h"
@@ -171,17 +170,15 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
   read_triangles(mesh);
   // The solid's closedness (every directed edge matched, by position) gives a winding number;
-  // by index, closed and consistently oriented implies it, and the search is needed only when
-  // the report cannot tell.
-  const bool matched = (report_.closed() && report_.consistently_oriented()) ||
-                       (!tris_.empty() && !unmatched_edge(mesh).has_value());
-  if (!matched && !report_.closed()) {
+  // two triangles on every edge without it, ray parity (solid_rule.h).
+  const SolidRule rule = solid_rule(mesh, report_);
+  if (rule == SolidRule::none) {
     regime_ = MeshRegime::winding_number;
     winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
     return;
   }
   regime_ = MeshRegime::closed_exact;
-  by_parity_ = !matched;
+  by_parity_ = rule == SolidRule::parity;
   if (tris_.empty() || few_queries(options.queries)) return;  // no grid: locate_direct
   const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);

@@ -15,9 +15,9 @@ SolidScene::SolidScene(std::span<const Mesh> meshes, std::span<const SceneObject
       boxes.emplace_back();
       continue;
     }
-    Mesh world = meshes[static_cast<std::size_t>(object.mesh)];
-    for (Vec3& v : world.vertices)
-      v = object.transform.apply(v);
+    // A reflecting transform places the image of the solid, as collide::MeshScene reads it.
+    const Mesh world =
+        placed_solid(meshes[static_cast<std::size_t>(object.mesh)], object.transform);
     const MeshIndex& index = world.triangles.empty() ? indexes_.emplace_back()
                                                      : indexes_.emplace_back(world, options.index);
     boxes.push_back(world.triangles.empty() ? Box3{} : index.bounds());

@@ -90,20 +90,6 @@ std::string mesh_warning(inside::MeshRegime regime, const MeshReport& report) {
          "still 'on'";
 }
 
-std::string mesh_warning(const collide::SelfIntersections& found) {
-  if (found.empty() || found.pairs.empty()) return "";
-  const collide::TrianglePair& first = found.pairs.front();
-  std::string more;
-  if (found.count > 1) {
-    more = std::string(found.stopped ? " and at least " : " and ") +
-           plural(found.count - 1, "more pair");
-  }
-  return "mesh crosses itself (triangles " + std::to_string(first.first) + " and " +
-         std::to_string(first.second) + " meet away from the corners they share" + more +
-         ", counted from 0 in file order): answers come from closed-exact ray parity, "
-         "which reads a point inside two overlapping parts as outside";
-}
-
 std::string open_mesh_warning(std::string_view name, const MeshReport& report,
                               OpenMeshReading reading) {
   return std::string(name) + ": not closed (" + std::to_string(report.border_edges) +

@@ -35,21 +35,6 @@ void add_box(Mesh& m, std::array<int, 3> lo, std::array<int, 3> hi, bool inverte
   }
 }
 
-// The winding number at q off the surface, exactly: the concrete perturbed ray of the oracle
-// (support/perturbed_ray_oracle.h), each crossing signed by the exact sign of the triangle's
-// normal along x.
-int oracle_winding(const Mesh& mesh, Vec3 q) {
-  int w = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle3 tri = mesh.triangle(t);
-    if (!test::oracle_ray_crosses(tri, q)) continue;
-    const mpq_class nx = (mpq_class(tri.b.y) - tri.a.y) * (mpq_class(tri.c.z) - tri.a.z) -
-                         (mpq_class(tri.b.z) - tri.a.z) * (mpq_class(tri.c.y) - tri.a.y);
-    w += sgn(nx);
-  }
-  return w;
-}
-
 // The solid's answer at a point of the half-integer grid, for meshes of boxes with integer
 // corners: off the surface, the sign of the winding number; on it, the eight points a quarter
 // away in every octant (every open cell around q of the axis planes through it holds one, and
@@ -58,12 +43,12 @@ Location oracle_solid(const Mesh& mesh, Vec3 q) {
   bool on = false;
   for (std::size_t t = 0; t < mesh.triangles.size() && !on; ++t)
     on = test::oracle_on_triangle(mesh.triangle(t), q);
-  if (!on) return oracle_winding(mesh, q) > 0 ? Location::inside : Location::outside;
+  if (!on) return test::oracle_winding(mesh, q) > 0 ? Location::inside : Location::outside;
   int in = 0;
   for (int s = 0; s < 8; ++s) {
     const Vec3 sample{q.x + (s & 1 ? 0.25 : -0.25), q.y + (s & 2 ? 0.25 : -0.25),
                       q.z + (s & 4 ? 0.25 : -0.25)};
-    in += oracle_winding(mesh, sample) > 0 ? 1 : 0;
+    in += test::oracle_winding(mesh, sample) > 0 ? 1 : 0;
   }
   return in == 8 ? Location::inside : in == 0 ? Location::outside : Location::boundary;
 }

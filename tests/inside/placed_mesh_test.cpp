@@ -19,15 +19,15 @@ TEST(PlacedMesh, HoldsTheHierarchyOneVertexPerComponentSolidityAndLargestCoordin
   }
   const PlacedMesh side(two);
   EXPECT_EQ(side.components, (std::vector<std::int32_t>{0, base}));
-  EXPECT_TRUE(side.solid);
+  EXPECT_TRUE(side.solid());
   EXPECT_EQ(side.max_abs, 5.0);
   EXPECT_EQ(side.bvh.items().size(), two.triangles.size());
 
   Mesh open = scenes::box_mesh({{0, 0, 0}, {1, 1, 1}});
   open.triangles.pop_back();
-  EXPECT_FALSE(PlacedMesh(open).solid);
+  EXPECT_FALSE(PlacedMesh(open).solid());
   const PlacedMesh empty(Mesh{});
-  EXPECT_FALSE(empty.solid);
+  EXPECT_FALSE(empty.solid());
   EXPECT_TRUE(empty.bvh.empty());
   EXPECT_TRUE(empty.components.empty());
 }
@@ -42,16 +42,16 @@ TEST(PlacedMeshPair, PlacesAOnceWithItsIndexAndKeepsBInItsOwnFrame) {
     EXPECT_EQ(pair.a.mesh.vertices[v], ta.apply(cube.vertices[v]));
     EXPECT_EQ(pair.b.mesh.vertices[v], cube.vertices[v]);
   }
-  EXPECT_TRUE(pair.a.solid);
-  EXPECT_TRUE(pair.b.solid);
+  EXPECT_TRUE(pair.a.solid());
+  EXPECT_TRUE(pair.b.solid());
   EXPECT_EQ(pair.a.max_abs, 11.0);
   EXPECT_EQ(pair.b.max_abs, 1.0);
   EXPECT_EQ(pair.index_a.locate({10.5, 0.5, 0.5}), Location::inside);
   EXPECT_EQ(pair.index_a.locate({0.5, 0.5, 0.5}), Location::outside);
   const PlacedMeshPair empty_a(Mesh{}, cube);
-  EXPECT_FALSE(empty_a.a.solid);
+  EXPECT_FALSE(empty_a.a.solid());
   EXPECT_TRUE(empty_a.a.bvh.empty());
-  EXPECT_TRUE(empty_a.b.solid);
+  EXPECT_TRUE(empty_a.b.solid());
 }
 
 }  // namespace

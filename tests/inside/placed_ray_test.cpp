@@ -18,7 +18,8 @@ namespace {
 // locate_by_ray against `side` placed by `tf`, the way the pair queries call it.
 Location locate_placed(const PlacedMesh& side, const Transform& tf, Vec3 q) {
   return locate_by_ray(
-      side.bvh, q, [&](const Box3& local) { return bvh::placed_box(local, tf); },
+      side.bvh, q, side.rule, transform_orientation(tf),
+      [&](const Box3& local) { return bvh::placed_box(local, tf); },
       [&](std::int32_t t) {
         const TriangleIndices& tri = side.mesh.triangles[static_cast<std::size_t>(t)];
         return Triangle3{tf.apply(side.mesh.vertices[static_cast<std::size_t>(tri[0])]),

@@ -92,23 +92,6 @@ TEST(MeshWarning, WordsTheReportOfARealOpenMesh) {
             std::string::npos);
 }
 
-TEST(MeshWarning, SelfCrossingNamesTheFirstPairAndTheParityRule) {
-  EXPECT_EQ(mesh_warning(collide::SelfIntersections{}), "");
-  collide::SelfIntersections one{.pairs = {{2, 20}}, .count = 1};
-  EXPECT_EQ(mesh_warning(one),
-            "mesh crosses itself (triangles 2 and 20 meet away from the corners they share, "
-            "counted from 0 in file order): answers come from closed-exact ray parity, which "
-            "reads a point inside two overlapping parts as outside");
-  collide::SelfIntersections many{.pairs = {{2, 20}}, .count = 3};
-  EXPECT_NE(mesh_warning(many).find("triangles 2 and 20 meet away from the corners they share "
-                                    "and 2 more pairs,"),
-            std::string::npos)
-      << mesh_warning(many);
-  collide::SelfIntersections stopped{.pairs = {{0, 5}}, .count = 2, .stopped = true};
-  EXPECT_NE(mesh_warning(stopped).find("and at least 1 more pair,"), std::string::npos)
-      << mesh_warning(stopped);
-}
-
 TEST(OpenMeshWarning, NamesTheMeshItsCountsAndHowEachQueryReadsIt) {
   MeshReport r = closed_report();
   r.border_edges = 4;

@@ -81,4 +81,16 @@ Location oracle_locate(const Mesh& mesh, Vec3 q) {
   return odd ? Location::inside : Location::outside;
 }
 
+int oracle_winding(const Mesh& mesh, Vec3 q) {
+  int w = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle3 tri = mesh.triangle(t);
+    if (!oracle_ray_crosses(tri, q)) continue;
+    const mpq_class nx = (mpq_class(tri.b.y) - tri.a.y) * (mpq_class(tri.c.z) - tri.a.z) -
+                         (mpq_class(tri.b.z) - tri.a.z) * (mpq_class(tri.c.y) - tri.a.y);
+    w += sgn(nx);
+  }
+  return w;
+}
+
 }  // namespace contain::test

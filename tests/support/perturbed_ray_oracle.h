@@ -22,4 +22,9 @@ namespace contain::test {
 /// boundary if q is on a triangle, else the parity of oracle_ray_crosses (closed meshes).
 [[nodiscard]] Location oracle_locate(const Mesh& mesh, Vec3 q);
 
+/// The winding number at q off the surface, exactly: the crossings of oracle_ray_crosses, each
+/// signed by the exact sign of the triangle's normal along x (for a closed mesh of inconsistent
+/// orientation, its parity is still the crossing parity).
+[[nodiscard]] int oracle_winding(const Mesh& mesh, Vec3 q);
+
 }  // namespace contain::test

@@ -25,10 +25,16 @@ using MeshPairOptions = inside::MeshPairOptions;
 
 /// Two meshes prepared for many collision queries, B placed by a transform per query.
 ///
-/// Semantics (the CLI contract): a closed mesh (every edge of exactly two triangles) bounds a
-/// solid, a closed set: touching counts, and one inside the other counts. A mesh that is not
-/// closed is a surface: it meets the other shape where the surfaces share a point, or where it
-/// lies inside the other if that one is a solid. Coordinates are the doubles
+/// Semantics (the CLI contract): a closed mesh bounds a solid, a closed set: touching counts, and
+/// one inside the other counts. The solid is `inside::MeshIndex`'s (`contain inside`'s; rule in
+/// inside/solid_rule.h): for a mesh whose directed edges all match, where its winding number is
+/// positive (the parts of a self-intersecting mesh or of nested shells count once, a shell turned
+/// inside out is a cavity); for a mesh of two triangles on every edge but inconsistent
+/// orientation, ray parity. A pose that reflects a mesh places the image of its solid. Touching
+/// is decided on the triangles: a triangle that bounds no part of the solid (a shell turned inside
+/// out standing alone, whose points `inside` calls `out`) still counts where it touches. A mesh
+/// that is not closed is a surface: it meets the other shape where the surfaces share a point,
+/// or where it lies inside the other if that one is a solid. Coordinates are the doubles
 /// `transform.apply(v)` (the contract's evaluation order), and every answer is exact on them.
 ///
 /// Algorithm per query: a simultaneous descent of both hierarchies (A's built in world
@@ -37,8 +43,10 @@ using MeshPairOptions = inside::MeshPairOptions;
 /// triangle is transformed, its box compared exactly and `tri_tri` decides. If no
 /// surfaces meet, solids can still be nested: the boundary of A ∩ B then consists of whole
 /// connected components of the two surfaces, so one vertex per component of A is located in B
-/// (exact perturbed +x ray parity against B's transformed triangles, docs/robustness.md) and
-/// one vertex per component of B in A (A's `inside::MeshIndex`).
+/// (the exact signed crossings of the perturbed +x ray against B's transformed triangles, read
+/// by B's solid rule: `inside::locate_by_ray`, docs/robustness.md) and one vertex per component
+/// of B in A (A's `inside::MeshIndex`); the winding number is constant on a connected set off
+/// the surface, so one vertex decides for its component.
 ///
 /// Complexity: build O(n log n); a query O(node pairs entered + leaf pairs) plus a ray per
 /// component reaching the containment check. Thread safety: const; queries may run
@@ -59,8 +67,8 @@ class MeshPair {
                const BatchOptions& options = {}) const;
 
   /// True when A (resp. B) is closed, so a solid; false: a surface.
-  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid; }
-  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid; }
+  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid(); }
+  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid(); }
   /// A's vertices in world coordinates (transform_a applied).
   [[nodiscard]] std::span<const Vec3> a_vertices() const { return pair_.a.mesh.vertices; }
   /// The prepared pair: A in world coordinates with its index, B in its own frame, each with

@@ -48,7 +48,8 @@ struct MeshSceneOptions {
 /// exactly: both hierarchies under their transforms, node pairs culled by the separating axis
 /// test of the two placed boxes (15 axes, Gottschalk et al. 1996; widened by a rounding bound,
 /// so no pair is missed), exact triangle tests at the leaves, then one vertex per component
-/// located in the other solid by exact perturbed ray parity.
+/// located in the other solid by the exact signed crossings of the perturbed ray (the solid of
+/// `inside::MeshIndex`: winding number positive, parity for inconsistent orientation).
 ///
 /// Complexity: build O(n log n) for n distinct triangles plus O(1) per object for its box;
 /// `pairs` O(m log m + candidates x pair test). Thread safety: const; `pairs` runs candidates

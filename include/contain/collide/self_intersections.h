@@ -1,8 +1,7 @@
 #pragma once
 /// \file
-/// Does a mesh cross itself? Pairs of its triangles that meet where they are not joined: the
-/// check behind the command's warning that a closed mesh overlaps itself (ray parity then calls
-/// a point inside both overlapping parts `out`).
+/// Does a mesh cross itself? Pairs of its triangles that meet where they are not joined (a
+/// closed mesh that overlaps itself is still one solid for every query: its winding number).
 
 #include <cstddef>
 #include <cstdint>

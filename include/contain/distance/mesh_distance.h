@@ -58,7 +58,8 @@ struct MeshDistanceStats {
 /// to the lowest index (**distance-tie rule**, docs/robustness.md).
 ///
 /// Sign (`PointQuery::signed_distance`): the exact location of the point from
-/// `inside::MeshIndex` (closed mesh: exact ray parity; open mesh: the generalized winding number,
+/// `inside::MeshIndex` (closed mesh: the exact solid of its winding number, ray parity where the
+/// orientation is inconsistent; open mesh: the generalized winding number,
 /// `regime()` says which, with the same warning as `contain inside`): negative inside, exactly 0 on
 /// the surface, positive outside. On the surface the unsigned distance is exactly 0 too.
 ///

@@ -67,8 +67,12 @@ using MeshPairDistanceOptions = inside::MeshPairOptions;
 /// the closest points per coordinate.
 ///
 /// Algorithm per query: first one vertex per component of B is located in A (exact,
-/// inside::MeshIndex) and one vertex per component of A in B as placed (exact perturbed +x ray
-/// parity): a vertex strictly inside makes the distance 0 (overlapping or nested solids). Then a
+/// inside::MeshIndex) and one vertex per component of A in B as placed (the exact signed
+/// crossings of the perturbed +x ray, read by B's inside::SolidRule): a vertex strictly inside
+/// makes the distance 0 (overlapping or nested solids). A closed mesh's solid is `contain
+/// inside`'s: where its winding number is positive (overlapping parts of a self-intersecting mesh
+/// count once, a shell turned inside out is a cavity), ray parity for inconsistent orientation;
+/// a pose that reflects a mesh places the image of its solid. Then a
 /// simultaneous descent of both hierarchies (A's built in world coordinates; B's in its own
 /// frame), nearer pairs first, pruned against the best upper bound so far by a lower bound
 /// between the nodes' oriented boxes (principal axes of the node's vertices, proven to hold
@@ -106,8 +110,8 @@ class MeshPairDistance {
   void within(std::span<const Transform> poses, double d, std::span<std::uint8_t> out,
               const BatchOptions& options = {}) const;
 
-  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid; }
-  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid; }
+  [[nodiscard]] bool a_is_solid() const { return pair_.a.solid(); }
+  [[nodiscard]] bool b_is_solid() const { return pair_.b.solid(); }
 
  private:
   // The stages of a query (src/distance/mesh_pair_distance.cpp): B placed by the pose, a vertex

@@ -13,6 +13,7 @@
 #include "contain/core/parallel.h"
 #include "contain/inside/fast_winding_number.h"
 #include "contain/inside/grid_axis.h"
+#include "contain/inside/solid_rule.h"
 #include "contain/predicates/sign.h"
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/mesh_validation.h"
@@ -117,11 +118,17 @@ class MeshIndex {
 
   /// The regime in use.
   [[nodiscard]] MeshRegime regime() const { return regime_; }
+  /// How a signed crossing count reads (solid_rule.h): `winding` or `parity` in regime
+  /// `closed_exact`, `none` in regime `winding_number`.
+  [[nodiscard]] SolidRule rule() const {
+    if (regime_ == MeshRegime::winding_number) return SolidRule::none;
+    return by_parity_ ? SolidRule::parity : SolidRule::winding;
+  }
   /// Regime `closed_exact` only: whether a point whose signed crossing count (as the class
   /// comment counts it) is `count` is inside: `count > 0` (the solid's rule), or `count` odd for
   /// a mesh without a winding number (every edge of two triangles, inconsistent orientation).
   [[nodiscard]] bool inside_by_count(int count) const {
-    return by_parity_ ? (count & 1) != 0 : count > 0;
+    return inside::inside_by_count(by_parity_ ? SolidRule::parity : SolidRule::winding, count);
   }
   /// The validation of the mesh.
   [[nodiscard]] const MeshReport& report() const { return report_; }

@@ -9,25 +9,36 @@
 
 #include "contain/bvh/bvh.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/inside/solid_rule.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/transform.h"
 
 namespace contain::inside {
+
+/// `mesh` placed by `transform` as a solid's boundary: the vertices transform.apply(v), and each
+/// triangle's corners reversed where the transform reflects (transform_orientation negative), so
+/// that the placed mesh's solid (MeshIndex) is the image of the mesh's solid. O(n).
+[[nodiscard]] Mesh placed_solid(const Mesh& mesh, const Transform& transform);
 
 /// A mesh prepared for pair queries, in the frame of its vertices.
 struct PlacedMesh {
   Mesh mesh;                             ///< the triangles, in this side's frame
   bvh::Bvh bvh;                          ///< over the triangles' boxes, in the same frame
   std::vector<std::int32_t> components;  ///< one vertex of each connected component
-  bool solid = false;                    ///< closed (every edge of two triangles): a solid
+  /// How its crossing counts read (solid_rule.h): the solid of its winding number, ray parity
+  /// for a closed mesh of inconsistent orientation, or `none`: not closed, a surface.
+  SolidRule rule = SolidRule::none;
   double max_abs = 0.0;  ///< the largest |coordinate|: the scale of placement bounds
 
   /// An empty side: it meets nothing.
   PlacedMesh() = default;
-  /// Prepares a validated `mesh`: its hierarchy, one vertex per connected component, whether it
-  /// is closed (validate_mesh), its largest coordinate. An empty mesh gets no hierarchy and is
-  /// no solid. O(n log n).
+  /// Prepares a validated `mesh`: its hierarchy, one vertex per connected component, its solid
+  /// rule (`solid_rule`, as `MeshIndex` chooses its regime), its largest coordinate. An empty mesh
+  /// gets no hierarchy and is no solid. O(n log n).
   explicit PlacedMesh(Mesh mesh, const bvh::BuildOptions& options = {});
+
+  /// Closed: a solid (`MeshIndex` regime `closed_exact`), not a surface.
+  [[nodiscard]] bool solid() const { return rule != SolidRule::none; }
 };
 
 /// How a `PlacedMeshPair` is prepared (collide::MeshPairOptions and
@@ -45,7 +56,7 @@ struct MeshPairOptions {
 /// coordinates (the doubles `transform_a.apply(v)`) with its exact point-location index, B in its
 /// own frame. The prepared pair of `collide::MeshPair` and `distance::MeshPairDistance`.
 struct PlacedMeshPair {
-  PlacedMesh a;       ///< A in world coordinates; solid where its index is `closed_exact`
+  PlacedMesh a;       ///< A in world coordinates; its rule its index's (`MeshIndex::rule`)
   PlacedMesh b;       ///< B in its own frame
   MeshIndex index_a;  ///< A's point location (not built for an empty A)
 

@@ -1,17 +1,20 @@
 #pragma once
 /// \file
 /// The nesting test of pair queries: where a world point lies against a mesh placed by a
-/// transform, by exact perturbed +x ray parity over the mesh's own hierarchy.
+/// transform, by the exact signed crossings of the perturbed +x ray over the mesh's own
+/// hierarchy, read by the mesh's `SolidRule` as `MeshIndex` reads them.
 
 #include <cstdint>
 
 #include "contain/bvh/bvh.h"
 #include "contain/core/location.h"
+#include "contain/inside/solid_rule.h"
 #include "contain/predicates/closest_feature.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/predicates/squared_distance.h"
 #include "contain/values/box.h"
+#include "contain/values/transform.h"
 #include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
@@ -34,18 +37,34 @@ namespace contain::inside {
       predicates::FlatPair3{predicates::point_flat(q), predicates::feature_flat(t, f)});
 }
 
+/// The sign of the determinant of `transform`'s linear part, exactly: negative where placing a
+/// mesh by it reverses its triangles' orientation (a reflection), so that the placed mesh's
+/// winding number at transform(p) is minus the mesh's at p; zero where it flattens the mesh.
+[[nodiscard]] inline Sign transform_orientation(const Transform& transform) {
+  const auto row = [&](std::size_t i) {
+    return Vec3{transform.r[i][0], transform.r[i][1], transform.r[i][2]};
+  };
+  return predicates::orient3d(Vec3{}, row(0), row(1), row(2));
+}
+
 /// Where the world point `q` lies against a mesh placed into world coordinates: `boundary` when
-/// q lies on one of its placed triangles, else `inside` when the perturbed +x ray from q
-/// (docs/robustness.md, perturbed ray rule) crosses them an odd number of times, else `outside`.
-/// The inside/outside answer is the solid's for a closed mesh. `bvh` is the mesh's hierarchy in
-/// its own frame; `world_box(const Box3& local) -> Box3` holds every placed point of a local
-/// box; `world_triangle(std::int32_t t) -> Triangle3` gives triangle t as placed (the doubles
-/// every answer is exact on). Boxes that the ray cannot meet cull the hierarchy. O(nodes the ray
-/// meets + their triangles).
+/// q lies on one of its placed triangles, else `inside` when the signed count of the crossings of
+/// the perturbed +x ray from q (docs/robustness.md, perturbed ray rule: +1 where the triangle's
+/// normal points along +x, -1 where against), times `orientation` (the placement's
+/// `transform_orientation`: a reflection turns the mesh inside out, and the placed solid is the
+/// image of the mesh's), is inside by `rule` (the mesh's `solid_rule`: the winding number
+/// positive, or the count odd for a closed mesh of inconsistent orientation; the answer
+/// `MeshIndex` gives for the mesh at the preimage of q), else `outside`. A point on the
+/// surface is `boundary` whether or not it lies on the solid's boundary (a face buried in another
+/// part): the pair queries ask of points off the other surface, or count touching anyway. `bvh`
+/// is the mesh's hierarchy in its own frame; `world_box(const Box3& local) -> Box3` holds every
+/// placed point of a local box; `world_triangle(std::int32_t t) -> Triangle3` gives triangle t as
+/// placed (the doubles every answer is exact on). Boxes that the ray cannot meet cull the
+/// hierarchy. O(nodes the ray meets + their triangles).
 template <class WorldBox, class WorldTriangle>
-[[nodiscard]] Location locate_by_ray(const bvh::Bvh& bvh, Vec3 q, WorldBox&& world_box,
-                                     WorldTriangle&& world_triangle) {
-  bool odd = false;
+[[nodiscard]] Location locate_by_ray(const bvh::Bvh& bvh, Vec3 q, SolidRule rule, Sign orientation,
+                                     WorldBox&& world_box, WorldTriangle&& world_triangle) {
+  int count = 0;
   bool on_surface = false;
   (void)bvh.traverse(
       [&](const bvh::Node& node, std::int32_t) {
@@ -59,11 +78,11 @@ template <class WorldBox, class WorldTriangle>
           on_surface = true;
           return bvh::Visit::stop;
         }
-        if (predicates::perturbed_ray_crosses(tri.a, tri.b, tri.c, q)) odd = !odd;
+        count += predicates::perturbed_ray_crossing(tri.a, tri.b, tri.c, q);
         return bvh::Visit::proceed;
       });
   if (on_surface) return Location::boundary;
-  return odd ? Location::inside : Location::outside;
+  return inside_by_count(rule, to_int(orientation) * count) ? Location::inside : Location::outside;
 }
 
 }  // namespace contain::inside

@@ -11,6 +11,7 @@
 #include "contain/core/parallel.h"
 #include "contain/inside/holders.h"
 #include "contain/inside/mesh_index.h"
+#include "contain/inside/placed_mesh.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 #include "contain/values/transform.h"
@@ -37,7 +38,9 @@ struct SolidSceneOptions {
 ///
 /// Object k holds p with `MeshIndex(placed mesh).locate(p)`: its mesh's vertices placed by its
 /// transform (the doubles `Transform::apply` gives, as `contain inside --mesh` of that placed
-/// mesh), exact for closed meshes (**perturbed +x ray rule**), the generalized winding number
+/// mesh; `placed_solid`: a reflecting transform also reverses the triangles, so the object is the
+/// image of the mesh's solid, as collide::MeshScene reads it), exact for closed meshes
+/// (**perturbed +x ray rule**, the solid of the winding number), the generalized winding number
 /// for a mesh that is not closed (`object(k).regime()` says so). A point on the surface of a
 /// solid is `boundary` for it; nested solids both hold a point inside the inner one.
 ///

@@ -7,7 +7,6 @@
 #include <string>
 #include <string_view>
 
-#include "contain/collide/self_intersections.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/shapes/mesh_closure.h"
 #include "contain/shapes/mesh_validation.h"
@@ -28,14 +27,6 @@ namespace contain::io {
 ///
 /// Counts are written "1 border edge", "2 border edges". O(1).
 [[nodiscard]] std::string mesh_warning(inside::MeshRegime regime, const MeshReport& report);
-
-/// One line for a user about a closed mesh that crosses itself (`collide::self_intersections`),
-/// empty when it does not: "mesh crosses itself (triangles 3 and 17 meet away from the corners
-/// they share, counted from 0 in file order): answers come from closed-exact ray parity, which
-/// reads a point inside two overlapping parts as outside". Names the first pair found and
-/// the count when more than one was counted ("... and 5 more pairs"; "at least" when the search
-/// stopped at its limit). O(1).
-[[nodiscard]] std::string mesh_warning(const collide::SelfIntersections& found);
 
 /// How a pair or scene query reads a mesh that is not closed: the second half of its warning.
 enum class OpenMeshReading {

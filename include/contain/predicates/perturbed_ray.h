@@ -100,11 +100,18 @@ template <class Offset = NoOffset>
   return -to_int(nz) * si;
 }
 
+/// The whole test for q not on the triangle, signed: +1 where the perturbed ray from q crosses
+/// it along its normal (s > 0), -1 where against, 0 where it does not cross it. The sum over a
+/// mesh whose directed edges all match is q's winding number.
+[[nodiscard]] inline int perturbed_ray_crossing(Vec3 a, Vec3 b, Vec3 c, Vec3 q) {
+  const Sign s = projected_sign(a, b, c);
+  if (s == Sign::zero) return 0;
+  return perturbed_line_hits(a, b, c, s, q) && hit_side(a, b, c, s, q) > 0 ? to_int(s) : 0;
+}
+
 /// The whole test for q not on the triangle: the perturbed ray from q crosses it.
 [[nodiscard]] inline bool perturbed_ray_crosses(Vec3 a, Vec3 b, Vec3 c, Vec3 q) {
-  const Sign s = projected_sign(a, b, c);
-  if (s == Sign::zero) return false;
-  return perturbed_line_hits(a, b, c, s, q) && hit_side(a, b, c, s, q) > 0;
+  return perturbed_ray_crossing(a, b, c, q) != 0;
 }
 
 /// The whole test for the symbolic origin q + d (see the file's comment): the perturbed ray from
