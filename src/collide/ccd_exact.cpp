@@ -23,32 +23,21 @@ using predicates::RealRoot;
 // keeps its value with the two remaining coordinates. Same signs, same roots, lower degrees.
 class ExactQuery {
  public:
-  ExactQuery(const CcdQuery& q, PrimitivePair pair, int axis) : query_(q), pair_(pair) {
-    const std::span<const PolySpec> specs = pair == PrimitivePair::vertex_face
-                                                ? std::span<const PolySpec>(kVertexFacePolys)
-                                                : std::span<const PolySpec>(kEdgeEdgePolys);
-    for (const PolySpec& spec : specs) {
-      Factored f;
-      if (axis < 0) {
-        f.factors.push_back(add(predicates::exact_polynomial(q, spec)));
-      } else if (spec.kind == MotionKind::cross_dot) {
-        for (const int last : {spec.k, spec.l}) {
-          const auto [index, flip] = orientation(axis, spec.i, spec.j, last);
-          f.factors.push_back(index);
-          f.flip = f.flip != flip;
-        }
-      } else {
-        f.factors.push_back(add(planar_dot(axis, spec)));
-      }
-      rule_.push_back(std::move(f));
-    }
-  }
+  ExactQuery(const CcdQuery& q, PrimitivePair pair, int axis)
+      : query_(q),
+        pair_(pair),
+        axis_(axis),
+        specs_(pair == PrimitivePair::vertex_face ? std::span<const PolySpec>(kVertexFacePolys)
+                                                  : std::span<const PolySpec>(kEdgeEdgePolys)),
+        rule_(specs_.size()) {}
 
-  // The rule at a time given as a root (or a double).
+  // The rule at a time given as a root (or a double). A polynomial is built when the rule first
+  // asks for its sign (the rule's shortcuts leave most unasked, and each costs products of big
+  // numbers of thousands of bits on inputs of mixed magnitudes).
   template <class Time>
-  [[nodiscard]] bool contact(const Time& t) const {
+  [[nodiscard]] bool contact(const Time& t) {
     return contact_rule(pair_, [&](int k) {
-             const Factored& f = rule_[static_cast<std::size_t>(k)];
+             const Factored& f = factored(k);
              int sign = f.flip ? -1 : 1;
              for (const int index : f.factors)
                sign *= to_int(sign_of(pool_[static_cast<std::size_t>(index)], t));
@@ -57,14 +46,38 @@ class ExactQuery {
            }) == Tri::yes;
   }
 
-  // Every polynomial whose roots can start a contact interval.
-  [[nodiscard]] const std::vector<Polynomial>& pool() const { return pool_; }
+  // Every polynomial whose roots can start a contact interval (all of the rule's, built).
+  [[nodiscard]] const std::vector<Polynomial>& pool() {
+    for (std::size_t k = 0; k < specs_.size(); ++k)
+      factored(static_cast<int>(k));
+    return pool_;
+  }
 
  private:
   struct Factored {
     std::vector<int> factors;
     bool flip = false;
+    bool built = false;
   };
+
+  const Factored& factored(int k) {
+    Factored& f = rule_[static_cast<std::size_t>(k)];
+    if (f.built) return f;
+    const PolySpec& spec = specs_[static_cast<std::size_t>(k)];
+    if (axis_ < 0) {
+      f.factors.push_back(add(predicates::exact_polynomial(query_, spec)));
+    } else if (spec.kind == MotionKind::cross_dot) {
+      for (const int last : {spec.k, spec.l}) {
+        const auto [index, flip] = orientation(axis_, spec.i, spec.j, last);
+        f.factors.push_back(index);
+        f.flip = f.flip != flip;
+      }
+    } else {
+      f.factors.push_back(add(planar_dot(axis_, spec)));
+    }
+    f.built = true;
+    return f;
+  }
 
   int add(Polynomial p) {
     pool_.push_back(std::move(p));
@@ -121,6 +134,8 @@ class ExactQuery {
 
   const CcdQuery& query_;
   PrimitivePair pair_;
+  int axis_;
+  std::span<const PolySpec> specs_;
   std::vector<Polynomial> pool_;
   std::vector<Factored> rule_;
   std::vector<std::pair<int, int>> orientations_;  // sorted triple key, pool index
@@ -139,7 +154,7 @@ Impact exact_ccd(const CcdQuery& q, PrimitivePair pair) {
       axis >= 0 ? Polynomial()
                 : predicates::exact_polynomial(
                       q, pair == PrimitivePair::vertex_face ? kVertexFaceCubic : kEdgeEdgeCubic);
-  const ExactQuery query(q, pair, f.is_zero() ? axis : -1);
+  ExactQuery query(q, pair, f.is_zero() ? axis : -1);
   if (!f.is_zero()) {
     // Contact needs coplanarity: the contact times are roots of the cubic.
     for (const RealRoot& root : predicates::real_roots(f, 0.0, 1.0)) {
