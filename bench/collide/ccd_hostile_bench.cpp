@@ -86,16 +86,17 @@ class Hostile {
   // A vertex over the plane z = 0 of a triangle whose corner c tilts (c_z = h t): with the
   // vertex at (x, y0 + dy t, z0 + dz t), f(t) = z0 + (dz - h y0) t - h dy t^2 for the triangle
   // (0,0,0), (1,0,0), (0,1,h t); choosing the integers for a zero discriminant gives a double
-  // root (the vertex grazes the moving plane), for z0 = 0 a root at 0. Then a random edge of it
-  // for edge-edge (the same points), axes scaled by powers of two, and nudges of ~1e-300.
+  // root (the vertex grazes the moving plane), for z0 = 0 a root at 0, for f(1) = 0 one at 1. Then
+  // a random edge of it for edge-edge (the same points), axes scaled by powers of two, and nudges
+  // of ~1e-300.
   CcdQuery tangent() {
     const int kind = integer(0, 2);
     double h = integer(1, 4), y0 = integer(-3, 3), dy = integer(-3, 3), z0 = 0, dz = integer(-4, 4);
     if (kind == 0) {
-      // (dz - h y0)^2 = -4 z0 h dy: take dy = -1, z0 = (dz - h y0)^2 / (4 h) when integral.
+      // h (t - 1/2)^2: dy = -1, dz = h (y0 - 1), z0 = h / 4 (a double root at t = 1/2).
       dy = -1;
-      dz = h * y0 + 2 * h * integer(-2, 2);
-      z0 = (dz - h * y0) * (dz - h * y0) / (4 * h);
+      dz = h * (y0 - 1);
+      z0 = h / 4;
     } else if (kind == 1) {
       z0 = 0;  // a root at t = 0
     } else {

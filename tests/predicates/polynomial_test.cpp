@@ -2,7 +2,7 @@
 // at doubles, root isolation, signs of other polynomials at roots (Tarski queries against the
 // oracle's refinement) and rounding of roots to doubles, on random polynomials, planted roots
 // (doubles, multiple roots, roots one ulp apart, roots closer than a double apart, roots at the
-// interval's ends) and mixed magnitudes.
+// interval's ends), quadratics with nearly double roots and mixed magnitudes.
 
 #include "contain/predicates/polynomial.h"
 
@@ -238,6 +238,38 @@ TEST(Polynomial, RootsHuggingAnEndFarBelowADoubleApartAgreeWithTheOracle) {
     if (rnd.integer(0, 2) == 0) p = p * constant(std::ldexp(1.0, rnd.integer(-900, 900)));
     const Both nearly_a = a + constant(std::ldexp(1.0, -std::min(1074, k + 40)));
     check(p, 0.0, 1.0, {a, b, c, a * c, nearly_a, near_end(high, k + 1, m), constant(-1)});
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, QuadraticsWithNearlyDoubleRootsAgreeWithTheOracle) {
+  // Roots d and d + 2^-k: the exact stage splits a pair of roots nearer each other than 2^-64
+  // relative (a discriminant 2^-128 below c1^2 or less) between them by long division and signs
+  // at them in closed form, others through the filter: k around that bound (d + 2^-k has a
+  // discriminant of exponent -2k + 1 next to c1 = -(2d + 2^-k), exponent 1 for d >= 0.5) and far
+  // beyond it; the same pairs a third of a ulp apart (roots that are no doubles), a complex pair
+  // 2^-k off the axis and a double root.
+  Random rnd(7);
+  for (int i = 0; i < test::case_budget(160, 10); ++i) {
+    const int k = i % 4 == 0 ? rnd.integer(200, 1000) : rnd.integer(58, 70);
+    const double d = rnd.uniform(0.5, 0.9);
+    const Both delta = constant(std::ldexp(1.0, -k));
+    const Both a = factor(d), b = factor(d) - delta;
+    const Both thirds = (constant(3) * variable() - constant(3) * constant(d)) *
+                        (constant(3) * variable() - constant(3) * constant(d) - delta);
+    const Both scale = constant(std::ldexp(rnd.uniform(0.5, 1), rnd.integer(-900, 900)));
+    const std::vector<Both> others{a,
+                                   b,
+                                   factor(d) - constant(std::ldexp(1.0, -k - 1)),
+                                   factor(d) - constant(std::ldexp(1.0, -k - 2)),
+                                   a * factor(0.7),
+                                   constant(3) * variable() - constant(3) * constant(d) - delta,
+                                   constant(-2)};
+    check(scale * a * b, 0.0, 1.0, others);
+    check(a * b, d, 1.0, others);
+    check(thirds, 0.0, 1.0, others);
+    check(scale * (a * a + delta * delta), 0.0, 1.0, others);
+    check(a * a * scale, 0.0, 1.0, others);
     if (HasFailure()) return;
   }
 }
