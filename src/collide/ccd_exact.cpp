@@ -1,11 +1,14 @@
 #include "collide/ccd_exact.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "contain/predicates/big_float.h"
 #include "contain/predicates/moving_points.h"
 #include "contain/predicates/polynomial.h"
 
@@ -145,6 +148,41 @@ Impact hit(double t) {
   return {true, t, CcdStage::exact};
 }
 
+// The root as the root of a coordinate difference x_j(t) - x_i(t) of two points, when it is one:
+// where coordinates repeat exactly (a vertex passing through a corner, an end through an end),
+// the contact time is such a rational and the rule's polynomials often vanish there, which at an
+// algebraic root takes an exact zero test on numbers of tens of thousands of bits (milliseconds
+// for 1e300 next to 1e-300), at a rational one evaluation. A double estimate of each difference's
+// root outside the root's bracket rejects it before anything exact.
+RealRoot as_rational(const CcdQuery& q, const RealRoot& root) {
+  if (root.is_double()) return root;
+  const double width = root.upper() - root.lower();
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      for (int c = 0; c < 3; ++c) {
+        const auto at = [&](int k) {
+          const Vec3& v = q[static_cast<std::size_t>(k)];
+          return c == 0 ? v.x : (c == 1 ? v.y : v.z);
+        };
+        const predicates::BigFloat d0 = predicates::BigFloat(at(j)) - predicates::BigFloat(at(i));
+        const predicates::BigFloat d1 =
+            predicates::BigFloat(at(j + 4)) - predicates::BigFloat(at(i + 4));
+        std::int64_t e0 = 0, e = 0;
+        const double m0 = d0.frexp(e0), m = (d1 - d0).frexp(e);
+        if (m == 0.0 || m0 == 0.0) continue;  // constant, or its root is 0 (a double)
+        const double estimate =
+            -std::ldexp(m0 / m, static_cast<int>(std::clamp<std::int64_t>(e0 - e, -2000, 2000)));
+        const double slack = width + 0x1p-40 * std::fabs(estimate) + 0x1p-1000;
+        if (!(estimate >= root.lower() - slack && estimate <= root.upper() + slack)) continue;
+        const Polynomial line =
+            Polynomial::linear(at(j), at(j + 4)) - Polynomial::linear(at(i), at(i + 4));
+        if (std::optional<RealRoot> r = predicates::as_root_of_linear(root, line)) return *r;
+      }
+    }
+  }
+  return root;
+}
+
 }  // namespace
 
 Impact exact_ccd(const CcdQuery& q, PrimitivePair pair) {
@@ -157,7 +195,8 @@ Impact exact_ccd(const CcdQuery& q, PrimitivePair pair) {
   ExactQuery query(q, pair, f.is_zero() ? axis : -1);
   if (!f.is_zero()) {
     // Contact needs coplanarity: the contact times are roots of the cubic.
-    for (const RealRoot& root : predicates::real_roots(f, 0.0, 1.0)) {
+    for (const RealRoot& found : predicates::real_roots(f, 0.0, 1.0)) {
+      const RealRoot root = as_rational(q, found);
       if (query.contact(root)) return hit(predicates::floor_to_double(root));
     }
     return {false, Impact{}.time, CcdStage::exact};

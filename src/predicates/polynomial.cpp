@@ -505,9 +505,32 @@ Sign quadratic_sign_at(const detail::Coeffs& q, const RealRoot::State& s) {
 
 }  // namespace
 
+std::optional<RealRoot> as_root_of_linear(const RealRoot& root, const Polynomial& linear) {
+  const RealRoot::State& s = root.state();
+  const detail::Coeffs& l = PolynomialAccess::coefficients(linear);
+  if (s.exact || detail::degree_of(l) != 1) return std::nullopt;
+  // The line's root x lies in (lo, hi) where l changes sign there (lo and hi are not its root:
+  // l has one), and it is this root when p(x) = 0 (p has no other root in (lo, hi)).
+  const Sign at_lo = detail::sign_at(l, s.lo);
+  if (at_lo == Sign::zero || detail::sign_at(l, s.hi) != -at_lo) return std::nullopt;
+  if (!detail::positive_pseudo_remainder(s.p, l).empty()) return std::nullopt;
+  auto state = std::make_shared<RealRoot::State>();
+  state->p = l;
+  state->lo = s.lo;
+  state->hi = s.hi;
+  state->sign_lo = at_lo;
+  return RealRoot(std::move(state), root.lower(), root.upper(), false);
+}
+
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
+  // A root of a line: q's value there is a positive multiple of q mod p, a constant.
+  if (detail::degree_of(s.p) == 1) {
+    const detail::Coeffs r =
+        detail::positive_pseudo_remainder(PolynomialAccess::coefficients(q), s.p);
+    return r.empty() ? Sign::zero : r[0].sign();
+  }
   if (detail::degree_of(s.p) == 2) {
     // The closed form costs products of big numbers: the filter on doubles first.
     const detail::Coeffs& c = PolynomialAccess::coefficients(q);

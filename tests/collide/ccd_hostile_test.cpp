@@ -56,6 +56,30 @@ class Hostile {
     return q;
   }
 
+  // Every coordinate one of 1e300, 3e300, 1e-300, 2e-300, 0, +-1, and points 0 and 1 on the
+  // same path in two coordinates: they meet where their third coordinates cross, at a rational
+  // time that no double is (the vertex through a corner, an end through an end), where the rule's
+  // polynomials vanish: the exact stage decides there through the line of that coordinate
+  // difference (`as_root_of_linear`); the other coordinates' differences, whose double estimates
+  // may fall in the root's bracket too, must be rejected exactly.
+  CcdQuery meeting() {
+    static constexpr double kValues[] = {1e300,  -1e300, 3e300, 1e-300, -1e-300,
+                                         2e-300, 0.0,    1.0,   -1.0};
+    CcdQuery q;
+    for (Vec3& p : q)
+      p = {kValues[integer(0, 8)], kValues[integer(0, 8)], kValues[integer(0, 8)]};
+    const int apart = integer(0, 2);
+    for (int c = 0; c < 3; ++c) {
+      if (c == apart) continue;
+      axis_of(q[1], c) = axis_of(q[0], c);
+      axis_of(q[5], c) = axis_of(q[4], c);
+    }
+    // Crossing in (0, 1): the signs of the difference at 0 and 1 opposite.
+    axis_of(q[1], apart) = axis_of(q[0], apart) + (integer(0, 1) == 0 ? 3e300 : 1.0);
+    axis_of(q[5], apart) = axis_of(q[4], apart) - (integer(0, 1) == 0 ? 1e300 : 1e-300);
+    return q;
+  }
+
  private:
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
   double uniform(double lo, double hi) {
@@ -101,6 +125,11 @@ int expect_oracle(int count, Make&& make) {
 TEST(CcdHostile, CoplanarMixedMagnitudesEqualTheOracle) {
   Hostile g(2401);
   EXPECT_GT(expect_oracle(test::case_budget(8, 4) + 2, [&] { return g.coplanar(); }), 0);
+}
+
+TEST(CcdHostile, PointsMeetingAtARationalTimeEqualTheOracle) {
+  Hostile g(2403);
+  EXPECT_GT(expect_oracle(test::case_budget(4, 2) + 2, [&] { return g.meeting(); }), 0);
 }
 
 TEST(CcdHostile, GrazingScaledToExtremeMagnitudesEqualsTheOracle) {
