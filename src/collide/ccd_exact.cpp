@@ -148,13 +148,34 @@ Impact hit(double t) {
   return {true, t, CcdStage::exact};
 }
 
+// The root of (b0 - a0) + t ((b1 - a1) - (b0 - a0)) within 2^-42 relative (2^-1074 absolute
+// where it underflows), or nothing when it is no line or its root is 0. In doubles where the
+// rounded slope is certainly within 2^-44 of the slope (each difference of two doubles rounds
+// once: 2^-53 of |d0| + |d1| + |slope|, at most 2^8 |slope|), else from the exact differences
+// (BigFloat::frexp, 2^-52 each).
+std::optional<double> root_estimate(double a0, double a1, double b0, double b1) {
+  const double d0 = b0 - a0, d1 = b1 - a1, slope = d1 - d0;
+  if (d0 == 0.0) return std::nullopt;  // exact: a difference of doubles is 0 only if they are equal
+  if (std::isfinite(slope) &&
+      std::fabs(slope) > 0x1p-8 * (std::fabs(d0) + std::fabs(d1) + std::fabs(slope))) {
+    return -d0 / slope;
+  }
+  const predicates::BigFloat e0 = predicates::BigFloat(b0) - predicates::BigFloat(a0);
+  const predicates::BigFloat e1 = predicates::BigFloat(b1) - predicates::BigFloat(a1);
+  std::int64_t x0 = 0, x = 0;
+  const double m0 = e0.frexp(x0), m = (e1 - e0).frexp(x);
+  if (m == 0.0) return std::nullopt;
+  return -std::ldexp(m0 / m, static_cast<int>(std::clamp<std::int64_t>(x0 - x, -2000, 2000)));
+}
+
 // The root as the root of a coordinate difference x_j(t) - x_i(t) of two points, when it is one:
 // where coordinates repeat exactly (a vertex passing through a corner, an end through an end),
 // the contact time is such a rational and the rule's polynomials often vanish there, which at an
 // algebraic root takes an exact zero test on numbers of tens of thousands of bits (milliseconds
 // for 1e300 next to 1e-300), at a rational one evaluation. A double estimate of each difference's
-// root outside the root's bracket rejects it before anything exact.
-RealRoot as_rational(const CcdQuery& q, const RealRoot& root) {
+// root outside the root's bracket, or f of one sign on both sides of it, rejects it before the
+// exact test (f's roots here are of the cubic f, not identically zero).
+RealRoot as_rational(const CcdQuery& q, const Polynomial& f, const RealRoot& root) {
   if (root.is_double()) return root;
   const double width = root.upper() - root.lower();
   for (int i = 0; i < 4; ++i) {
@@ -164,16 +185,17 @@ RealRoot as_rational(const CcdQuery& q, const RealRoot& root) {
           const Vec3& v = q[static_cast<std::size_t>(k)];
           return c == 0 ? v.x : (c == 1 ? v.y : v.z);
         };
-        const predicates::BigFloat d0 = predicates::BigFloat(at(j)) - predicates::BigFloat(at(i));
-        const predicates::BigFloat d1 =
-            predicates::BigFloat(at(j + 4)) - predicates::BigFloat(at(i + 4));
-        std::int64_t e0 = 0, e = 0;
-        const double m0 = d0.frexp(e0), m = (d1 - d0).frexp(e);
-        if (m == 0.0 || m0 == 0.0) continue;  // constant, or its root is 0 (a double)
-        const double estimate =
-            -std::ldexp(m0 / m, static_cast<int>(std::clamp<std::int64_t>(e0 - e, -2000, 2000)));
-        const double slack = width + 0x1p-40 * std::fabs(estimate) + 0x1p-1000;
-        if (!(estimate >= root.lower() - slack && estimate <= root.upper() + slack)) continue;
+        const std::optional<double> estimate = root_estimate(at(i), at(i + 4), at(j), at(j + 4));
+        if (!estimate) continue;  // constant, or its root is 0 (a double)
+        const double error = 0x1p-40 * std::fabs(*estimate) + 0x1p-1000;
+        if (!(*estimate >= root.lower() - width - error &&
+              *estimate <= root.upper() + width + error)) {
+          continue;
+        }
+        // A line whose root is a simple root of f: f changes sign around the estimate (else the
+        // candidate is skipped, which is always safe: the root keeps its own polynomial).
+        const Sign below = f.sign_at(*estimate - error), above = f.sign_at(*estimate + error);
+        if (below != Sign::zero && below == above) continue;
         const Polynomial line =
             Polynomial::linear(at(j), at(j + 4)) - Polynomial::linear(at(i), at(i + 4));
         if (std::optional<RealRoot> r = predicates::as_root_of_linear(root, line)) return *r;
@@ -196,7 +218,7 @@ Impact exact_ccd(const CcdQuery& q, PrimitivePair pair) {
   if (!f.is_zero()) {
     // Contact needs coplanarity: the contact times are roots of the cubic.
     for (const RealRoot& found : predicates::real_roots(f, 0.0, 1.0)) {
-      const RealRoot root = as_rational(q, found);
+      const RealRoot root = as_rational(q, f, found);
       if (query.contact(root)) return hit(predicates::floor_to_double(root));
     }
     return {false, Impact{}.time, CcdStage::exact};

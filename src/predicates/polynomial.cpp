@@ -270,7 +270,7 @@ Sign Polynomial::coefficient_sign(int k) const {
 }
 
 Sign Polynomial::sign_at(double t) const {
-  return detail::sign_at(c_, BigFloat(t));
+  return detail::sign_at_double(c_, t);  // the long double filter, then Horner in big numbers
 }
 
 Polynomial Polynomial::derivative() const {
@@ -525,17 +525,14 @@ std::optional<RealRoot> as_root_of_linear(const RealRoot& root, const Polynomial
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
-  // A root of a line: q's value there is a positive multiple of q mod p, a constant.
-  if (detail::degree_of(s.p) == 1) {
-    const detail::Coeffs r =
-        detail::positive_pseudo_remainder(PolynomialAccess::coefficients(q), s.p);
-    return r.empty() ? Sign::zero : r[0].sign();
-  }
-  if (detail::degree_of(s.p) == 2) {
-    // The closed form costs products of big numbers: the filter on doubles first.
+  if (detail::degree_of(s.p) <= 2) {
+    // Closed forms, which cost products of big numbers: the filter on doubles first. At the
+    // root of a line, q's value is a positive multiple of q mod p, a constant.
     const detail::Coeffs& c = PolynomialAccess::coefficients(q);
     if (const std::optional<Sign> fast = detail::filtered_sign_at(c, root, false)) return *fast;
-    return quadratic_sign_at(c, s);
+    if (detail::degree_of(s.p) == 2) return quadratic_sign_at(c, s);
+    const detail::Coeffs r = detail::positive_pseudo_remainder(c, s.p);
+    return r.empty() ? Sign::zero : r[0].sign();
   }
   if (const std::optional<Sign> fast =
           detail::filtered_sign_at(PolynomialAccess::coefficients(q), root)) {
