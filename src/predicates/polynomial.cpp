@@ -270,7 +270,7 @@ Sign Polynomial::coefficient_sign(int k) const {
 }
 
 Sign Polynomial::sign_at(double t) const {
-  return detail::sign_at(c_, BigFloat(t));
+  return detail::sign_at_double(c_, t);  // the long double filter, then Horner in big numbers
 }
 
 Polynomial Polynomial::derivative() const {
@@ -338,6 +338,38 @@ End middle(const End& a, const End& b) {
   return {(a.x + b.x) * BigFloat(0.5), a.below, b.above};
 }
 
+// The discriminant c1^2 - 4 c0 c2 of a quadratic.
+BigFloat discriminant(const detail::Coeffs& c) {
+  return c[1] * c[1] - (c[0] * c[2]).scaled(2);
+}
+
+// Steps of the division below, each ~50 bits (10,000 bits: roots of quadratics with coefficients
+// of a few thousand bits are at least ~2^-(their length) apart, relative).
+constexpr int kQuotientSteps = 200;
+
+// A dyadic number strictly between the two real roots of the squarefree quadratic c (positive
+// discriminant): -c1 / (2 c2), the roots' midpoint, to ~50 more bits a step (long division by
+// the rounded divisor, the remainder kept exact) until c's sign there is -sign(c2), which proves
+// it between the roots. Roots this close (a vertex grazing a face: a near-double root) would take
+// one Sturm bisection step per bit of their distance. Nothing when the steps run out.
+std::optional<BigFloat> between_quadratic_roots(const detail::Coeffs& c) {
+  const BigFloat num = BigFloat() - c[1], den = c[2].scaled(1);
+  std::int64_t den_exp = 0;
+  const double den_m = den.frexp(den_exp);
+  BigFloat q;
+  for (int step = 0; step < kQuotientSteps; ++step) {
+    const BigFloat rest = num - den * q;
+    if (!rest.is_zero()) {
+      std::int64_t e = 0;
+      const double m = rest.frexp(e);
+      q = q + BigFloat(m / den_m).scaled(e - den_exp);
+    }
+    if (detail::sign_at(c, q) == -c[2].sign()) return q;
+    if (rest.is_zero()) return std::nullopt;  // unreachable for a positive discriminant
+  }
+  return std::nullopt;
+}
+
 class Isolator {
  public:
   Isolator(detail::Coeffs p, std::vector<RealRoot>& out)
@@ -354,8 +386,14 @@ class Isolator {
       return;
     }
     // A split point that is not a root: the middle, or, while that is a root, points halfway
-    // towards a (p has finitely many roots, so this ends).
+    // towards a (p has finitely many roots, so this ends); for the two roots of a quadratic, a
+    // point between them.
     End m = middle(a, b);
+    if (detail::degree_of(p_) == 2) {
+      if (const std::optional<BigFloat> x = between_quadratic_roots(p_)) {
+        if (a.x < *x && *x < b.x) m = {*x, a.below, b.above};
+      }
+    }
     while (detail::sign_at(p_, m.x) == Sign::zero)
       m = middle(a, m);
     const int vm = variations(m.x);
@@ -392,9 +430,22 @@ RealRoot exact_root(const detail::Coeffs& p, double x) {
 
 std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
   assert(!p.is_zero() && lo <= hi);
-  if (std::optional<std::vector<RealRoot>> fast =
-          detail::filtered_real_roots(PolynomialAccess::coefficients(p), lo, hi)) {
-    return std::move(*fast);
+  const detail::Coeffs& c = PolynomialAccess::coefficients(p);
+  // A quadratic: no real root for a negative discriminant; roots nearer each other than 2^-64
+  // relative (a small discriminant next to c1^2) go to the exact isolation, whose split between
+  // them takes a few steps, while the filter would descend frame after frame to its cap.
+  bool close_pair = false;
+  if (detail::degree_of(c) == 2) {
+    const BigFloat d = discriminant(c);
+    if (d.sign() == Sign::negative) return {};
+    std::int64_t ed = 0, e1 = 0;
+    const bool tiny = d.frexp(ed) != 0.0 && c[1].frexp(e1) != 0.0 && ed < 2 * e1 - 128;
+    close_pair = tiny;
+  }
+  if (!close_pair) {
+    if (std::optional<std::vector<RealRoot>> fast = detail::filtered_real_roots(c, lo, hi)) {
+      return std::move(*fast);
+    }
   }
   std::vector<RealRoot> out;
   detail::Coeffs sq = detail::squarefree(PolynomialAccess::coefficients(p));
@@ -425,9 +476,64 @@ RealRoot root_between(const Polynomial& p, double lo, double hi) {
   return RealRoot(std::move(s), lo, hi, false);
 }
 
+namespace {
+
+// The sign of q at the root in (lo, hi) of the squarefree quadratic p = c + b t + a t^2, in
+// closed form: the root is x = (-b + s sqrt(D)) / (2a) with s = sign p'(x) (p rises through it
+// where p(lo) < 0) and D = b^2 - 4ac > 0; with r = r0 + r1 t a positive multiple of q mod p,
+// 2a r(x) = U + W sqrt(D), U = 2a r0 - b r1, W = s r1, whose sign is that of U and W where they
+// agree, else sign(U) sign(U^2 - W^2 D). A few products, where refining the root costs a frame
+// per 53 bits of it (two roots of a grazing contact can be 2^-1000 apart).
+Sign quadratic_sign_at(const detail::Coeffs& q, const RealRoot::State& s) {
+  const detail::Coeffs& p = s.p;
+  const detail::Coeffs r = detail::positive_pseudo_remainder(q, p);
+  if (r.size() <= 1) return r.empty() ? Sign::zero : r[0].sign();
+  const BigFloat two_a = p[2].scaled(1);
+  const BigFloat u = two_a * r[0] - p[1] * r[1];
+  const BigFloat w = s.sign_lo == Sign::negative ? r[1] : BigFloat() - r[1];
+  Sign sum;
+  if (u.sign() == Sign::zero || u.sign() == w.sign()) {
+    sum = w.sign();
+  } else if (w.sign() == Sign::zero) {
+    sum = u.sign();
+  } else {
+    const Sign diff = (u * u - w * w * discriminant(p)).sign();
+    sum = u.sign() == Sign::positive ? diff : -diff;
+  }
+  return p[2].sign() == Sign::positive ? sum : -sum;
+}
+
+}  // namespace
+
+std::optional<RealRoot> as_root_of_linear(const RealRoot& root, const Polynomial& linear) {
+  const RealRoot::State& s = root.state();
+  const detail::Coeffs& l = PolynomialAccess::coefficients(linear);
+  if (s.exact || detail::degree_of(l) != 1) return std::nullopt;
+  // The line's root x lies in (lo, hi) where l changes sign there (lo and hi are not its root:
+  // l has one), and it is this root when p(x) = 0 (p has no other root in (lo, hi)).
+  const Sign at_lo = detail::sign_at(l, s.lo);
+  if (at_lo == Sign::zero || detail::sign_at(l, s.hi) != -at_lo) return std::nullopt;
+  if (!detail::positive_pseudo_remainder(s.p, l).empty()) return std::nullopt;
+  auto state = std::make_shared<RealRoot::State>();
+  state->p = l;
+  state->lo = s.lo;
+  state->hi = s.hi;
+  state->sign_lo = at_lo;
+  return RealRoot(std::move(state), root.lower(), root.upper(), false);
+}
+
 Sign sign_at(const Polynomial& q, const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return detail::sign_at(PolynomialAccess::coefficients(q), s.lo);
+  if (detail::degree_of(s.p) <= 2) {
+    // Closed forms, which cost products of big numbers: the filter on doubles first. At the
+    // root of a line, q's value is a positive multiple of q mod p, a constant.
+    const detail::Coeffs& c = PolynomialAccess::coefficients(q);
+    if (const std::optional<Sign> fast = detail::filtered_sign_at(c, root, false)) return *fast;
+    if (detail::degree_of(s.p) == 2) return quadratic_sign_at(c, s);
+    const detail::Coeffs r = detail::positive_pseudo_remainder(c, s.p);
+    return r.empty() ? Sign::zero : r[0].sign();
+  }
   if (const std::optional<Sign> fast =
           detail::filtered_sign_at(PolynomialAccess::coefficients(q), root)) {
     return *fast;

@@ -397,7 +397,7 @@ std::optional<std::vector<RealRoot>> filtered_real_roots(const Coeffs& p, double
   return out;
 }
 
-std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root) {
+std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root, bool refine) {
   const RealRoot::State& s = root.state();
   if (q.empty()) return Sign::zero;
   const std::optional<WideCoeffs> qw = to_wide(q), pw = to_wide(s.p);
@@ -421,6 +421,7 @@ std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root) {
     }
     (below ? a : b) = mk;
   }
+  if (!refine) return std::nullopt;
   const BigFloat lo = std::max(s.lo, BigFloat(from_key(a))),
                  hi = std::min(s.hi, BigFloat(from_key(b)));
   if (gcd_degree_bound(q, s.p) > 0 && vanishes_at_root(q, s, lo, hi)) return Sign::zero;

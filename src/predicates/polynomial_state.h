@@ -50,8 +50,11 @@ void trim(Coeffs& c);
 /// Bernstein coefficients isolates them all (simple roots, none at lo, hi or a subdivision point).
 [[nodiscard]] std::optional<std::vector<RealRoot>> filtered_real_roots(const Coeffs& p, double lo,
                                                                        double hi);
-/// The sign of q at the root, certified over a bracket of doubles narrowed around it.
-[[nodiscard]] std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root);
+/// The sign of q at the root, certified over a bracket of doubles narrowed around it; with
+/// `refine` false, nothing once the bracket is two adjacent doubles (no exact zero test, no
+/// refinement below double spacing).
+[[nodiscard]] std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root,
+                                                   bool refine = true);
 /// The exact sign of p at the double t: the filter first, then Horner in big numbers.
 [[nodiscard]] Sign sign_at_double(const Coeffs& p, double t);
 

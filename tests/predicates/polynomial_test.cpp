@@ -2,7 +2,7 @@
 // at doubles, root isolation, signs of other polynomials at roots (Tarski queries against the
 // oracle's refinement) and rounding of roots to doubles, on random polynomials, planted roots
 // (doubles, multiple roots, roots one ulp apart, roots closer than a double apart, roots at the
-// interval's ends) and mixed magnitudes.
+// interval's ends), quadratics with nearly double roots and mixed magnitudes.
 
 #include "contain/predicates/polynomial.h"
 
@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -238,6 +239,76 @@ TEST(Polynomial, RootsHuggingAnEndFarBelowADoubleApartAgreeWithTheOracle) {
     if (rnd.integer(0, 2) == 0) p = p * constant(std::ldexp(1.0, rnd.integer(-900, 900)));
     const Both nearly_a = a + constant(std::ldexp(1.0, -std::min(1074, k + 40)));
     check(p, 0.0, 1.0, {a, b, c, a * c, nearly_a, near_end(high, k + 1, m), constant(-1)});
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, QuadraticsWithNearlyDoubleRootsAgreeWithTheOracle) {
+  // Roots d and d + 2^-k: the exact stage splits a pair of roots nearer each other than 2^-64
+  // relative (a discriminant 2^-128 below c1^2 or less) between them by long division and signs
+  // at them in closed form, others through the filter: k around that bound (d + 2^-k has a
+  // discriminant of exponent -2k + 1 next to c1 = -(2d + 2^-k), exponent 1 for d >= 0.5) and far
+  // beyond it; the same pairs a third of a ulp apart (roots that are no doubles), a complex pair
+  // 2^-k off the axis and a double root.
+  Random rnd(7);
+  for (int i = 0; i < test::case_budget(160, 10); ++i) {
+    const int k = i % 4 == 0 ? rnd.integer(200, 1000) : rnd.integer(58, 70);
+    const double d = rnd.uniform(0.5, 0.9);
+    const Both delta = constant(std::ldexp(1.0, -k));
+    const Both a = factor(d), b = factor(d) - delta;
+    const Both thirds = (constant(3) * variable() - constant(3) * constant(d)) *
+                        (constant(3) * variable() - constant(3) * constant(d) - delta);
+    const Both scale = constant(std::ldexp(rnd.uniform(0.5, 1), rnd.integer(-900, 900)));
+    const std::vector<Both> others{a,
+                                   b,
+                                   factor(d) - constant(std::ldexp(1.0, -k - 1)),
+                                   factor(d) - constant(std::ldexp(1.0, -k - 2)),
+                                   a * factor(0.7),
+                                   constant(3) * variable() - constant(3) * constant(d) - delta,
+                                   constant(-2)};
+    check(scale * a * b, 0.0, 1.0, others);
+    check(a * b, d, 1.0, others);
+    check(thirds, 0.0, 1.0, others);
+    check(scale * (a * a + delta * delta), 0.0, 1.0, others);
+    check(a * a * scale, 0.0, 1.0, others);
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, RootsThatAreRootsOfALineGiveTheOraclesSignsAndRounding) {
+  // p = (3 t - 1)(t - a)(t - b) scaled by mixed magnitudes: its root 1/3 (no double) is the root
+  // of 3 t - 1 and of 3s t - s for any scale s, not of 3 t - 1 - 2^-k (inside the root's bracket
+  // for k > 54: there only the exact remainder tells), of t - a (another root of p) or of a line
+  // whose root is outside the bracket. Signs at the root through the line, and its rounding,
+  // against the oracle.
+  Random rnd(8);
+  for (int i = 0; i < test::case_budget(200, 10); ++i) {
+    const double a = rnd.uniform(0.4, 1.0), b = rnd.uniform(-1.0, 1.0);
+    const Both third = constant(3) * variable() - constant(1);
+    const Both scale = constant(std::ldexp(rnd.uniform(0.5, 1), rnd.integer(-1000, 1000)));
+    const Both p = scale * third * factor(a) * factor(b);
+    const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+    const std::vector<test::QRoot> expected = test::isolate_roots(p.q, 0.0, 1.0);
+    ASSERT_EQ(roots.size(), expected.size());
+    std::size_t k = 0;
+    while (k < expected.size() && test::compare(mpq_class(1, 3), expected[k]) != 0)
+      ++k;
+    ASSERT_LT(k, roots.size());
+    const int bits = rnd.integer(20, 1000);
+    EXPECT_FALSE(as_root_of_linear(roots[k], third.p - constant(std::ldexp(1.0, -bits)).p));
+    EXPECT_FALSE(as_root_of_linear(roots[k], factor(a).p));
+    EXPECT_FALSE(as_root_of_linear(roots[k], factor(0.9).p));
+    EXPECT_FALSE(as_root_of_linear(roots[k], constant(2).p));
+    const Both line = scale * third;
+    const std::optional<RealRoot> on_line = as_root_of_linear(roots[k], line.p);
+    ASSERT_TRUE(on_line);
+    EXPECT_EQ(on_line->lower(), roots[k].lower());
+    EXPECT_EQ(floor_to_double(*on_line), test::floor_to_double(expected[k]));
+    EXPECT_EQ(ceil_to_double(*on_line), ceil_to_double(roots[k]));
+    for (const Both& o : {third, third * third, factor(a), factor(1.0 / 3.0), p, constant(-1),
+                          third * factor(b) + constant(std::ldexp(1.0, -bits))}) {
+      EXPECT_EQ(sign_at(o.p, *on_line), test::sign_at(o.q, expected[k]));
+    }
     if (HasFailure()) return;
   }
 }

@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -105,6 +106,12 @@ class RealRoot {
 /// can then decide signs at it without isolating p's other roots. Precondition (checked in debug
 /// builds): lo < hi finite, p(lo) p(hi) < 0.
 [[nodiscard]] RealRoot root_between(const Polynomial& p, double lo, double hi);
+
+/// The same root described by the linear polynomial `linear` (degree 1), when it is that
+/// polynomial's root (a rational): signs at it are then single evaluations, where the root's own
+/// polynomial may need an exact zero test. Nothing when it is not (or `linear` is no line).
+[[nodiscard]] std::optional<RealRoot> as_root_of_linear(const RealRoot& root,
+                                                        const Polynomial& linear);
 
 /// The exact sign of q at the root: q's value there is an algebraic number, decided by a Tarski
 /// query (Sylvester's theorem: sign variations of the signed remainder sequence of the root's
