@@ -10,14 +10,10 @@
 #include <sstream>
 
 namespace contain::test {
-namespace {
-
-std::string slurp(const std::filesystem::path& path) {
+std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
-
-}  // namespace
 
 TempDir::TempDir() {
   static std::atomic<int> counter{0};
@@ -66,8 +62,8 @@ CliRun run_program(const std::string& program, const std::vector<std::string>& a
   waitpid(pid, &status, 0);
   CliRun run;
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  run.out = slurp(out_path);
-  run.err = slurp(err_path);
+  run.out = read_text(out_path);
+  run.err = read_text(err_path);
   return run;
 }
 

@@ -23,6 +23,9 @@ struct CliRun {
 [[nodiscard]] CliRun run_program(const std::string& program, const std::vector<std::string>& args,
                                  const std::string& input = "", int as_uid = -1, int as_gid = -1);
 
+/// The whole content of the file at `path` (empty when it cannot be read).
+[[nodiscard]] std::string read_text(const std::filesystem::path& path);
+
 /// Whether `text` (what a run printed) holds `part`.
 [[nodiscard]] inline bool has(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
