@@ -24,11 +24,12 @@
 
 namespace contain::shapes {
 
-/// A closed triangle mesh as a CSG leaf: the solid it bounds under the ray parity rule of
-/// inside::MeshIndex (its orientation does not matter). Holds the mesh, shared by copies.
+/// A closed triangle mesh as a CSG leaf: the solid inside::MeshIndex reads in it (winding number
+/// positive, so a shell turned inside out subtracts; crossing parity only for a closed mesh
+/// whose orientation is inconsistent: inside::solid_rule). Holds the mesh, shared by copies.
 /// inside::CsgSolid::prepare refuses a mesh with a NaN/Inf coordinate or an index out of range
-/// (invalid_value) and a mesh that is not closed (degenerate: border or non-manifold edges make
-/// the parity rule meaningless).
+/// (invalid_value) and a mesh that is not closed (degenerate: border edges leave the winding
+/// number undefined).
 class CsgMesh {
  public:
   /// Any contents; problems are reported by inside::CsgSolid::prepare.
