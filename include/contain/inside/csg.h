@@ -47,12 +47,13 @@
 /// by the same perturbed +x ray count as MeshIndex, with q's symbolic offset from p ordered before
 /// the ray's own perturbation (0, e, e²): every test is linear in the ray origin, so its sign is
 /// the first non-zero one of its value at p and its products with v, w, u1, u2, e_y, e_z, all
-/// exact. Exact, like MeshIndex on closed meshes. A point on the boundary of one leaf only, a mesh,
-/// is answered by that mesh's index (the star of its triangles through p) without sampling: each
-/// leaf occurs once in the tree, so the other leaves' definite answers and that leaf's `boundary`
-/// decide the tree exactly. An open mesh (border or non-manifold edges, where MeshIndex falls back
-/// on the approximate winding number) is refused by CsgSolid::prepare; a mesh without triangles is
-/// the empty solid (every point outside: a union with it is its other operands).
+/// exact. Exact, like MeshIndex on closed meshes. A point on the boundary of one leaf only, a mesh
+/// read by winding number, is answered by that mesh's index (the star of its triangles through p)
+/// without sampling: each leaf occurs once in the tree, so the other leaves' definite answers and
+/// that leaf's `boundary` decide the tree exactly. An open mesh (border or non-manifold edges,
+/// where MeshIndex falls back on the approximate winding number) is refused by CsgSolid::prepare; a
+/// mesh without triangles is the empty solid (every point outside: a union with it is its other
+/// operands).
 ///
 /// Extending: a new kind of leaf adds an alternative to CsgLeaf, its exact locate, its local
 /// constraints at a boundary point, and either the rule that it fills exactly the cells on the
