@@ -165,7 +165,11 @@ std::optional<double> root_estimate(double a0, double a1, double b0, double b1) 
   std::int64_t x0 = 0, x = 0;
   const double m0 = e0.frexp(x0), m = (e1 - e0).frexp(x);
   if (m == 0.0) return std::nullopt;
-  return -std::ldexp(m0 / m, static_cast<int>(std::clamp<std::int64_t>(x0 - x, -2000, 2000)));
+  const double estimate =
+      -std::ldexp(m0 / m, static_cast<int>(std::clamp<std::int64_t>(x0 - x, -2000, 2000)));
+  // A root beyond the doubles is far outside [0, 1]: no candidate (and no infinite time to test).
+  if (!std::isfinite(estimate)) return std::nullopt;
+  return estimate;
 }
 
 // The root as the root of a coordinate difference x_j(t) - x_i(t) of two points, when it is one:
