@@ -1,5 +1,6 @@
 #include "clip/solid/solid_oracle.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -29,6 +30,15 @@ std::optional<int> exact_winding(const Mesh& mesh, Vec3 point) {
   int w = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle3 tri = mesh.triangle(t);
+    // Speed only (comparisons of doubles, exact): a triangle wholly behind the ray's start or
+    // whose (y, z) box misses the ray's line neither holds p nor meets the ray.
+    if (point.x > std::max({tri.a.x, tri.b.x, tri.c.x}) ||
+        point.y < std::min({tri.a.y, tri.b.y, tri.c.y}) ||
+        point.y > std::max({tri.a.y, tri.b.y, tri.c.y}) ||
+        point.z < std::min({tri.a.z, tri.b.z, tri.c.z}) ||
+        point.z > std::max({tri.a.z, tri.b.z, tri.c.z})) {
+      continue;
+    }
     const QVec3 a = exact(tri.a), b = exact(tri.b), c = exact(tri.c);
     const QVec3 n = qcross(qsub(b, a), qsub(c, a));
     const Sign s = sign_of(qdot(n, qsub(p, a)));
