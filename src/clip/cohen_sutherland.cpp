@@ -37,7 +37,7 @@ std::uint8_t code_of(const detail::BoxLine<V>& line, const detail::BoxParam& p, 
 
 // The section's loop: trivial accept, trivial reject, else clip at the first differing bit.
 template <class V, class Box>
-typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const Box& box) {
+typename detail::SegmentOf<V>::Clipped clip_to_box(const V& a, const V& b, const Box& box) {
   if (box.empty()) return detail::nothing<V>();
   const detail::BoxLine<V> line(a, b);
   detail::BoxParam p0 = detail::start_param, p1 = detail::end_param;
@@ -71,10 +71,10 @@ std::uint8_t outcode(Vec3 p, const Box3& box) {
 }
 
 ClippedSegment2 cohen_sutherland(const Segment2& segment, const Box2& box) {
-  return clip(segment.a, segment.b, box);
+  return clip_to_box(segment.a, segment.b, box);
 }
 ClippedSegment3 cohen_sutherland(const Segment3& segment, const Box3& box) {
-  return clip(segment.a, segment.b, box);
+  return clip_to_box(segment.a, segment.b, box);
 }
 
 }  // namespace contain::clip

@@ -23,7 +23,7 @@ double parameter(const V& a, const V& b, const F& f) {
 }
 
 template <class V, class F>
-typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const F& f) {
+typename detail::SegmentOf<V>::Clipped clip_by_function(const V& a, const V& b, const F& f) {
   const Sign sa = f.side(a), sb = f.side(b);
   const bool in_a = sa != Sign::negative, in_b = sb != Sign::negative;
   if (in_a && in_b) return detail::kept(a, b, 0.0, 1.0);
@@ -58,10 +58,10 @@ double crossing_parameter(const Segment2& s, const HalfPlane& h) {
   return parameter(s.a, s.b, predicates::LineFunction{h});
 }
 ClippedSegment3 clip_segment(const Segment3& s, const Plane& h) {
-  return clip(s.a, s.b, predicates::PlaneFunction{h});
+  return clip_by_function(s.a, s.b, predicates::PlaneFunction{h});
 }
 ClippedSegment2 clip_segment(const Segment2& s, const HalfPlane& h) {
-  return clip(s.a, s.b, predicates::LineFunction{h});
+  return clip_by_function(s.a, s.b, predicates::LineFunction{h});
 }
 
 }  // namespace contain::clip

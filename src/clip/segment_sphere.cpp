@@ -40,7 +40,7 @@ Tangency tangency(const V& a, const V& b, const V& c, double radius) {
 }
 
 template <class V, class Ball>
-typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const Ball& ball) {
+typename detail::SegmentOf<V>::Clipped clip_to_ball(const V& a, const V& b, const Ball& ball) {
   const bool in_a = side(ball, a) != Sign::negative, in_b = side(ball, b) != Sign::negative;
   if (in_a && in_b) return detail::kept(a, b, 0.0, 1.0);
   const V d = b - a, w = ball.center - a;
@@ -86,10 +86,10 @@ typename detail::SegmentOf<V>::Clipped clip(const V& a, const V& b, const Ball& 
 }  // namespace
 
 ClippedSegment3 clip_segment(const Segment3& segment, const Sphere& ball) {
-  return clip(segment.a, segment.b, ball);
+  return clip_to_ball(segment.a, segment.b, ball);
 }
 ClippedSegment2 clip_segment(const Segment2& segment, const Circle& disc) {
-  return clip(segment.a, segment.b, disc);
+  return clip_to_ball(segment.a, segment.b, disc);
 }
 
 }  // namespace contain::clip

@@ -10,6 +10,7 @@
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 #include "distance/flat_answer.h"
 #include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
@@ -18,8 +19,6 @@
 namespace contain::distance {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The pair query in stages, each a function below; convex_convex and convex_convex_within
 // compose them and differ only at stage 4 (within may stop at a pair proven close enough) and

@@ -39,7 +39,7 @@ std::vector<Triangle3> triangles_of(const Mesh& mesh) {
   return out;
 }
 
-struct Winner {
+struct PointWinner {
   std::int32_t triangle = -1;
   predicates::TriangleFeature feature{};
   FlatPair3 pair{};
@@ -85,12 +85,12 @@ bool no_nearer(Vec3 p, const Triangle3& t, const Triangle3& won, predicates::Tri
 // The exact stage: among the contenders, the triangle of least exact distance, ties to the
 // lowest index (distance-tie rule). Each contender's closest feature is decided exactly; equal
 // features need no comparison.
-Winner resolve(Vec3 p, const detail::TriangleSearch& search,
-               std::vector<detail::Contender>& contenders, MeshDistanceStats& work) {
+PointWinner resolve_point(Vec3 p, const detail::TriangleSearch& search,
+                          std::vector<detail::Contender>& contenders, MeshDistanceStats& work) {
   // Lowest index first, so that a tie keeps the first one met.
   std::sort(contenders.begin(), contenders.end(),
             [](const detail::Contender& a, const detail::Contender& b) { return a.item < b.item; });
-  Winner best;
+  PointWinner best;
   for (const detail::Contender& c : contenders) {
     const Triangle3& t = search.triangle(c.item);
     if (best.triangle >= 0 && no_nearer(p, t, search.triangle(best.triangle), best.feature)) {
@@ -156,7 +156,7 @@ Closest3 MeshDistance::query_with_hint(Vec3 p, const PointQuery& query, std::int
   work.triangles += stats.items;
   work.cheap += stats.cheap;
   work.contenders += contenders.size();
-  const Winner w = resolve(p, *search_, contenders, work);
+  const PointWinner w = resolve_point(p, *search_, contenders, work);
   out = detail::answer(w.pair, query.closest_point);
   out.feature = w.triangle;
   if (query.signed_distance) {

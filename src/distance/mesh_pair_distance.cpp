@@ -11,6 +11,7 @@
 #include "contain/predicates/rounded_distance.h"
 #include "contain/predicates/squared_distance.h"
 #include "contain/predicates/unit_roundoff.h"
+#include "distance/bound_constants.h"
 #include "distance/flat_answer.h"
 #include "distance/least_contender.h"
 #include "distance/oriented_box.h"
@@ -30,9 +31,6 @@
 namespace contain::distance {
 
 namespace {
-
-constexpr double kEps = predicates::unit_roundoff<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The gap of two intervals along one axis (0 when they overlap); plain comparisons, so that the
 // whole bound inlines into the descent's inner loop.

@@ -6,13 +6,13 @@
 
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 #include "distance/triangle_pair_bounds.h"
 
 namespace contain::distance::detail {
 
 namespace {
 
-constexpr double kEps = predicates::unit_roundoff<double>;
 // The frame's orthonormality: |e_i . e_j - delta_ij| <= phi, checked at build.
 constexpr double kPhi = 0x1p-40;
 
@@ -151,7 +151,6 @@ OrientedBox box_of(std::span<const Vec3> points, const Vec3 e[3], Vec3 c0) {
     box.e[k] = e[k];
   box.c = c0;
   if (points.empty()) return box;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
   for (const Vec3& p : points) {
     double coef[3], err[3];

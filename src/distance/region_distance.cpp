@@ -16,18 +16,18 @@ namespace {
 using predicates::Flat2;
 using predicates::FlatPair2;
 
-struct Winner {
+struct PlanarWinner {
   std::int32_t edge = -1;
   FlatPair2 pair{};
 };
 
 // The exact stage, as for meshes: each contender's closest feature exactly, equal features
 // without arithmetic, distinct ones compared exactly; ties keep the lowest edge.
-Winner resolve(Vec2 p, const detail::SegmentSearch& search,
-               std::vector<detail::Contender>& contenders) {
+PlanarWinner resolve_planar(Vec2 p, const detail::SegmentSearch& search,
+                            std::vector<detail::Contender>& contenders) {
   std::sort(contenders.begin(), contenders.end(),
             [](const detail::Contender& a, const detail::Contender& b) { return a.item < b.item; });
-  Winner best;
+  PlanarWinner best;
   for (const detail::Contender& c : contenders) {
     const Segment2& s = search.segment(c.item);
     const FlatPair2 pair{predicates::point_flat(p),
@@ -93,7 +93,7 @@ Closest2 RegionDistance::query_with_hint(Vec2 p, const PointQuery& query, std::i
   }
   thread_local std::vector<detail::Contender> contenders;
   search_->contenders(p, contenders, nullptr, hint);
-  const Winner w = resolve(p, *search_, contenders);
+  const PlanarWinner w = resolve_planar(p, *search_, contenders);
   out = detail::answer(w.pair, query.closest_point);
   const std::int32_t ring = ring_of_[static_cast<std::size_t>(w.edge)];
   out.ring = ring;

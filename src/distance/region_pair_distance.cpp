@@ -13,6 +13,7 @@
 #include "contain/predicates/squared_distance.h"
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 #include "distance/least_contender.h"
 #include "distance/triangle_pair_bounds.h"
 #include "distance/triangle_search.h"
@@ -20,9 +21,6 @@
 namespace contain::distance {
 
 namespace {
-
-constexpr double kEps = predicates::unit_roundoff<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Edges {
   std::vector<Segment2> segments;

@@ -5,6 +5,7 @@
 
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 #include "distance/oriented_box.h"
 
 namespace contain::distance::detail {
@@ -21,7 +22,6 @@ float round_up(double x) {
   if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
   return f;
 }
-constexpr double kEps = predicates::unit_roundoff<double>;
 
 // The oriented box of one lane around the corners `points`: the principal axes rounded to
 // floats (the coordinate axes where they fail or `principal` is false), and along each axis u the

@@ -6,13 +6,11 @@
 
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 
 namespace contain::distance::detail {
 
 namespace {
-
-constexpr double kEps = predicates::unit_roundoff<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // (p - v) . w minus a bound on its rounding error (one difference, one product, one sum: 3 eps
 // of the permanent; 8 eps with room for the bound's own rounding).

@@ -6,14 +6,12 @@
 #include <limits>
 
 #include "contain/predicates/unit_roundoff.h"
+#include "distance/bound_constants.h"
 #include "distance/triangle_search.h"
 
 namespace contain::distance::detail {
 
 namespace {
-
-constexpr double kEps = predicates::unit_roundoff<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double clamp01(double x) {
   return x > 0 ? (x < 1 ? x : 1.0) : 0.0;  // NaN -> 0

@@ -6,13 +6,11 @@
 
 #include "contain/predicates/unit_roundoff.h"
 #include "contain/values/max_abs.h"
+#include "distance/bound_constants.h"
 
 namespace contain::distance::detail {
 
 namespace {
-
-constexpr double kEps = predicates::unit_roundoff<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Ericson's closest point on a triangle (Real-Time Collision Detection, 5.1.5), in doubles: only
 // a guess, bounded afterwards. Its parameters along the edges lie in [0, 1] as computed (each is
@@ -64,7 +62,7 @@ inline double separation_lower(Vec3 p, Vec3 v, Vec3 w) {
 
 // The lower bound of the squared distance from p to t given by the separation along w (any
 // direction; `ww` is dot(w, w) as rounded): 0 where it proves nothing.
-double separation_bound(Vec3 p, const Triangle3& t, Vec3 w, double ww) {
+double point_triangle_separation(Vec3 p, const Triangle3& t, Vec3 w, double ww) {
   const double smin = std::min(
       {separation_lower(p, t.a, w), separation_lower(p, t.b, w), separation_lower(p, t.c, w)});
   if (smin > 0 && ww >= 0x1p-900 && std::isfinite(ww)) {
@@ -105,7 +103,7 @@ Vec3 triangle_bounds(Vec3 p, const Triangle3& t, double slack, double& lo, doubl
   // Squares that underflow lose up to 2^-1075 each: 8 subnormal units cover them.
   hi = ww * (1 + 0x1p-19) + slack + 8 * std::numeric_limits<double>::denorm_min();
   if (!std::isfinite(hi)) hi = kInf;
-  lo = separation_bound(p, t, w, ww);
+  lo = point_triangle_separation(p, t, w, ww);
   return w;
 }
 

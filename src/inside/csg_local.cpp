@@ -39,9 +39,9 @@ struct Line {
   BigFloat b;
 };
 
-class Sampler {
+class CsgSampler {
  public:
-  Sampler(std::span<const LocalConstraint> constraints, const SolidContains& solid_contains)
+  CsgSampler(std::span<const LocalConstraint> constraints, const SolidContains& solid_contains)
       : constraints_(constraints),
         solid_contains_(solid_contains),
         positive_(constraints.size(), 0) {
@@ -233,7 +233,7 @@ Sign sign_at(const BigFloat& c, const BigVec3& g, const SymbolicOffset& at) {
 
 Location classify_neighbourhood(std::span<const LocalConstraint> constraints,
                                 const SolidContains& solid_contains) {
-  return Sampler(constraints, solid_contains).run();
+  return CsgSampler(constraints, solid_contains).run();
 }
 
 }  // namespace contain::inside::detail

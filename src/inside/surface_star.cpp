@@ -113,10 +113,10 @@ bool arc_crosses_plane(const Face& f, const Face& g) {
          side(f, g.t.c) != Sign::zero;
 }
 
-class Sampler {
+class StarSampler {
  public:
-  Sampler(std::span<const Triangle3> star, Vec3 p, const MeshRay& ray,
-          const std::function<bool(int)>& inside_at)
+  StarSampler(std::span<const Triangle3> star, Vec3 p, const MeshRay& ray,
+              const std::function<bool(int)>& inside_at)
       : p_(p), ray_(ray), inside_at_(inside_at) {
     faces_.reserve(star.size());
     for (const Triangle3& t : star)
@@ -212,7 +212,7 @@ class Sampler {
 
 Location classify_surface_point(std::span<const Triangle3> star, Vec3 p, const MeshRay& ray,
                                 const std::function<bool(int)>& inside_at) {
-  return Sampler(star, p, ray, inside_at).run();
+  return StarSampler(star, p, ray, inside_at).run();
 }
 
 }  // namespace contain::inside::detail

@@ -143,7 +143,7 @@ class GeoJsonReader {
   Status last_ = Ok{};
 };
 
-void append_ring(std::string& out, const Ring& ring) {
+void append_json_ring(std::string& out, const Ring& ring) {
   out += '[';
   for (std::size_t i = 0; i <= ring.size(); ++i) {
     const Vec2& q = ring[i % ring.size()];
@@ -157,14 +157,14 @@ void append_ring(std::string& out, const Ring& ring) {
   out += ']';
 }
 
-void append_polygon(std::string& out, const Polygon& polygon) {
+void append_json_polygon(std::string& out, const Polygon& polygon) {
   out += '[';
   bool first = true;
   for (const Ring& ring : polygon.rings) {
     if (ring.empty()) continue;
     if (!first) out += ',';
     first = false;
-    append_ring(out, ring);
+    append_json_ring(out, ring);
   }
   out += ']';
 }
@@ -318,7 +318,7 @@ std::string format_geojson(const MultiPolygon& region) {
     if (polygon.rings.empty()) continue;
     if (!first) out += ',';
     first = false;
-    append_polygon(out, polygon);
+    append_json_polygon(out, polygon);
   }
   out += "]}";
   return out;
@@ -326,7 +326,7 @@ std::string format_geojson(const MultiPolygon& region) {
 
 std::string format_geojson(const Polygon& polygon) {
   std::string out = R"({"type":"Polygon","coordinates":)";
-  append_polygon(out, polygon);
+  append_json_polygon(out, polygon);
   out += '}';
   return out;
 }

@@ -16,10 +16,6 @@ namespace {
 using detail::from_key;
 using detail::order_key;
 
-double coord(const Vec3& v, int c) {
-  return c == 0 ? v.x : (c == 1 ? v.y : v.z);
-}
-
 // ---- double-double with running error bounds ------------------------------------------------
 //
 // A value hi + lo (exact sum of two doubles) and a bound err >= |exact - (hi + lo)|. Each
@@ -150,8 +146,8 @@ CoplanarityCubic::CoplanarityCubic(const MovingPoints& points, MotionPolynomial 
     : points_(points), p_(p) {
   // U = P_j - P_i, V = P_k - P_i, W = P_l - P_i at t = 0 and t = 1 (rounded differences).
   const auto diff = [&](int to, int time, int c) {
-    return coord(points[static_cast<std::size_t>(to + 4 * time)], c) -
-           coord(points[static_cast<std::size_t>(p.i + 4 * time)], c);
+    return component(points[static_cast<std::size_t>(to + 4 * time)], c) -
+           component(points[static_cast<std::size_t>(p.i + 4 * time)], c);
   };
   double u[2][3], v[2][3], w[2][3];
   for (int time = 0; time < 2; ++time) {
@@ -320,8 +316,8 @@ double CoplanarityCubic::floor(RootBracket r) const {
   Dd u0[3], du[3], v0[3], dv[3], w0[3], dw[3];
   for (int c = 0; c < 3; ++c) {
     const auto diff = [&](int to, int time) {
-      return exact_difference(coord(points_[static_cast<std::size_t>(to + 4 * time)], c),
-                              coord(points_[static_cast<std::size_t>(p.i + 4 * time)], c));
+      return exact_difference(component(points_[static_cast<std::size_t>(to + 4 * time)], c),
+                              component(points_[static_cast<std::size_t>(p.i + 4 * time)], c));
     };
     u0[c] = diff(p.j, 0);
     du[c] = sub(diff(p.j, 1), u0[c]);

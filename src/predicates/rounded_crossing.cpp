@@ -164,44 +164,39 @@ double rounded_crossing_exact(double p, double q, double pk, double qk, double c
 
 namespace {
 
-double coord(Vec3 p, int k) {
-  return k == 0 ? p.x : (k == 1 ? p.y : p.z);
-}
-void set_coord(Vec3& p, int k, double x) {
-  (k == 0 ? p.x : (k == 1 ? p.y : p.z)) = x;
-}
-
 // The base p is the endpoint nearer to the plane, so the offset, and its rounding error, is
 // the smaller part.
 double crossing_coordinate(Vec3 p, Vec3 q, int k, int j, double c, detail::CrossingRatio& rho) {
   double out = 0.0;
-  if (detail::rounded_offset_quick(coord(p, j), coord(q, j), rho, out)) return out;
+  if (detail::rounded_offset_quick(component(p, j), component(q, j), rho, out)) return out;
   detail::refine_ratio(rho);
-  if (detail::rounded_offset(coord(p, j), coord(q, j), rho, out)) return out;
-  return detail::rounded_crossing_exact(coord(p, j), coord(q, j), coord(p, k), coord(q, k), c);
+  if (detail::rounded_offset(component(p, j), component(q, j), rho, out)) return out;
+  return detail::rounded_crossing_exact(component(p, j), component(q, j), component(p, k),
+                                        component(q, k), c);
 }
 
 }  // namespace
 
 Vec3 rounded_axis_crossing(Vec3 a, Vec3 b, int axis, double c) {
-  if (coord(a, axis) == c) return a;
-  if (coord(b, axis) == c) return b;
-  if (coord(a, axis) > coord(b, axis)) std::swap(a, b);
+  if (component(a, axis) == c) return a;
+  if (component(b, axis) == c) return b;
+  if (component(a, axis) > component(b, axis)) std::swap(a, b);
   // The nearer endpoint as base; which one does not change the exactly rounded answer.
-  const bool from_b = coord(b, axis) - c < c - coord(a, axis);
+  const bool from_b = component(b, axis) - c < c - component(a, axis);
   const Vec3 base = from_b ? b : a;
   const Vec3 other = from_b ? a : b;
   // The ratio (c - base) / (other - base) in double-double, shared by both coordinates.
-  detail::CrossingRatio rho = detail::crossing_ratio(coord(base, axis), coord(other, axis), c);
+  detail::CrossingRatio rho =
+      detail::crossing_ratio(component(base, axis), component(other, axis), c);
   Vec3 out = a;
-  set_coord(out, axis, c);
+  component_ref(out, axis) = c;
   for (int j = 0; j < 3; ++j) {
     if (j == axis) continue;
-    if (coord(a, j) == coord(b, j)) {
-      set_coord(out, j, coord(a, j));
+    if (component(a, j) == component(b, j)) {
+      component_ref(out, j) = component(a, j);
       continue;
     }
-    set_coord(out, j, crossing_coordinate(base, other, axis, j, c, rho));
+    component_ref(out, j) = crossing_coordinate(base, other, axis, j, c, rho);
   }
   return out;
 }
@@ -227,7 +222,7 @@ double exact_plane_crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c, int j) {
   const BigVec3 ba = to_big(a);
   const BigVec3 n = cross(to_big(b) - ba, to_big(c) - ba);
   const BigFloat dp = predicates::dot(n, to_big(p) - ba), dq = predicates::dot(n, to_big(q) - ba);
-  BigFloat num = BigFloat(coord(p, j)) * dq - BigFloat(coord(q, j)) * dp;
+  BigFloat num = BigFloat(component(p, j)) * dq - BigFloat(component(q, j)) * dp;
   BigFloat den = dq - dp;
   if (den.sign() == Sign::negative) {
     num = -num;
@@ -256,13 +251,13 @@ Vec3 rounded_plane_crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   d.value = std::fabs(d.value);
   Vec3 out = p;
   for (int j = 0; j < 3; ++j) {
-    if (coord(p, j) == coord(q, j)) continue;  // the exact coordinate is p_j
-    const Mag off = (Mag(coord(q, j)) - Mag(coord(p, j))) * dp;
+    if (component(p, j) == component(q, j)) continue;  // the exact coordinate is p_j
+    const Mag off = (Mag(component(q, j)) - Mag(component(p, j))) * dp;
     double x = 0.0;
-    if (!detail::offset_stage_a(coord(p, j), sign, detail::bounded(off), d, x)) {
+    if (!detail::offset_stage_a(component(p, j), sign, detail::bounded(off), d, x)) {
       x = exact_plane_crossing(p, q, a, b, c, j);
     }
-    set_coord(out, j, x);
+    component_ref(out, j) = x;
   }
   return out;
 }

@@ -66,6 +66,14 @@ struct Vec3 {
 [[nodiscard]] constexpr Vec3 operator*(Vec3 a, double s) {
   return {s * a.x, s * a.y, s * a.z};
 }
+/// The coordinate of v along axis 0 (x), 1 (y) or 2 (z).
+[[nodiscard]] constexpr double component(Vec3 v, int axis) {
+  return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+/// The coordinate of v along axis 0 (x), 1 (y) or 2 (z), to assign.
+[[nodiscard]] constexpr double& component_ref(Vec3& v, int axis) {
+  return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
 [[nodiscard]] constexpr double dot(Vec3 a, Vec3 b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
