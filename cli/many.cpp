@@ -84,28 +84,42 @@ Result<std::string> locate_lines(const Locator& locator, const std::vector<std::
   return text;
 }
 
-// An output line is ids separated by spaces, `ID:on` for a boundary, `-` for none: an id that
-// reads as one of those marks ("-", "a:on", "") cannot be told apart and is refused (exit 3);
-// white space in an id and an id given twice are warned about.
-Status check_ids(const std::vector<std::string>& ids, const std::string& what,
+// Which ids an output can tell apart, and what the user can do about one it cannot.
+struct IdCheck {
+  std::string_view what;
+  bool marks;  // `-` and `ID:on` are marks in the output
+  std::string_view remedy;
+};
+constexpr IdCheck kLayerIds{"the layer's", true, "choose another --id attribute, or rename it"};
+constexpr IdCheck kSceneIdsInside{"the scene's", true, "rename it in the scene file"};
+constexpr IdCheck kSceneIdsCollide{"the scene's", false, "rename it in the scene file"};
+
+// An output line is ids separated by spaces and, for `inside`, `ID:on` for a boundary and `-` for
+// none: an id that reads as one of those marks ("-", "a:on", "") cannot be told apart and is
+// refused (exit 3); white space in an id and an id given twice are warned about. `remedy` says
+// what the user can do about an id (another --id attribute, or renaming it in the file).
+Status check_ids(const std::vector<std::string>& ids, const IdCheck& check,
                  const std::string& source) {
   for (std::size_t k = 0; k < ids.size(); ++k) {
     const std::string& id = ids[k];
-    const bool marked = id.size() >= 3 && id.compare(id.size() - 3, 3, ":on") == 0;
-    if (id.empty() || id == "-" || marked) {
-      return Error{ErrorKind::invalid_value,
-                   fmt::format("{} id {} of shape {} cannot be told apart in the output, where "
-                               "'-' means no shape and 'ID:on' a boundary: choose another --id "
-                               "attribute, or rename it",
-                               what, id.empty() ? "''" : "'" + id + "'", k),
-                   source};
+    const bool marked =
+        check.marks && ((id.size() >= 3 && id.compare(id.size() - 3, 3, ":on") == 0) || id == "-");
+    if (id.empty() || marked) {
+      return Error{
+          ErrorKind::invalid_value,
+          fmt::format("{} id {} of shape {} cannot be told apart in the output{}: {}", check.what,
+                      id.empty() ? "''" : "'" + id + "'", k,
+                      check.marks ? ", where '-' means no shape and 'ID:on' a boundary" : "",
+                      check.remedy),
+          source};
     }
   }
   for (const std::string& id : ids) {
     if (id.find_first_of(" \t\n\r") == std::string::npos) continue;
-    warn(what + " ids hold white space (e.g. '" + id +
-         "'), so an output line does not tell where one ends: choose an --id attribute without "
-         "spaces");
+    warn(
+        fmt::format("{} ids hold white space (e.g. '{}'), so an output line does not tell where "
+                    "one ends: {}",
+                    check.what, id, check.remedy));
     break;
   }
   std::unordered_map<std::string_view, std::size_t> seen;
@@ -114,8 +128,9 @@ Status check_ids(const std::vector<std::string>& ids, const std::string& what,
     if (fresh) continue;
     warn(
         fmt::format("{} id '{}' is given to shapes {} and {} (and maybe more): an output line "
-                    "does not tell which holds the point",
-                    what, ids[k], at->second, k));
+                    "does not tell {}",
+                    check.what, ids[k], at->second, k,
+                    check.marks ? "which holds the point" : "which of them meets another"));
     break;
   }
   return Ok{};
@@ -128,7 +143,7 @@ int run_layer(const ManyOptions& o) {
   if (!layer) return report(layer.error());
   for (const std::string& warning : layer->warnings)
     warn(warning);
-  if (Status s = check_ids(layer->ids, "the layer's", io::layer_source_name(o.layer)); !s)
+  if (Status s = check_ids(layer->ids, kLayerIds, io::layer_source_name(o.layer)); !s)
     return report(s.error());
   enter_phase(Phase::prepare);
   const inside::RegionLayer index(layer->regions, {.fill = o.fill});
@@ -154,7 +169,7 @@ std::vector<inside::SceneObject> scene_objects(const io::Scene& scene) {
 int run_scene_inside(const ManyOptions& o) {
   auto scene = io::read_scene_json(o.scene);
   if (!scene) return report(scene.error());
-  if (Status s = check_ids(scene->ids, "the scene's", o.scene); !s) return report(s.error());
+  if (Status s = check_ids(scene->ids, kSceneIdsInside, o.scene); !s) return report(s.error());
   enter_phase(Phase::prepare);
   const inside::SolidScene index(scene->meshes, scene_objects(*scene));
   // An object whose mesh is not closed is answered by the winding number: say so, once a mesh.
@@ -180,6 +195,7 @@ int run_collide_scene(const std::string& file, bool json, int threads, bool quie
                       const std::string& out) {
   auto scene = io::read_scene_json(file);
   if (!scene) return report(scene.error());
+  if (Status s = check_ids(scene->ids, kSceneIdsCollide, file); !s) return report(s.error());
   enter_phase(Phase::prepare);
   const collide::MeshScene prepared(scene->meshes, scene_objects(*scene));
   std::vector<char> warned(scene->meshes.size(), 0);

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -252,6 +254,10 @@ std::string without_id(std::string message) {
   return message;
 }
 
+struct RepeatedName {
+  std::string name;
+};
+
 std::int64_t line_of(std::string_view text, std::size_t byte) {
   const std::size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
   return 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n');
@@ -261,8 +267,23 @@ std::int64_t line_of(std::string_view text, std::size_t byte) {
 
 Result<Csg> parse_csg_json(std::string_view text, const CsgJsonOptions& options) {
   json document;
+  // JSON leaves it to the reader which of two equal names counts (nlohmann keeps the last): a
+  // second "op" or "children" would silently win, so a name given twice is an error.
+  std::vector<std::set<std::string>> names;
+  const auto no_repeated_names = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) names.emplace_back();
+    if (event == json::parse_event_t::object_end) names.pop_back();
+    if (event == json::parse_event_t::key &&
+        !names.back().insert(parsed.get<std::string>()).second) {
+      throw RepeatedName{parsed.get<std::string>()};
+    }
+    return true;
+  };
   try {
-    document = json::parse(text.begin(), text.end());
+    document = json::parse(text.begin(), text.end(), no_repeated_names);
+  } catch (const RepeatedName& e) {
+    return Error{ErrorKind::parse, "the member \"" + e.name + "\" is given twice in one object",
+                 options.source, 0};
   } catch (const json::parse_error& e) {
     return Error{ErrorKind::parse, without_id(e.what()), options.source, line_of(text, e.byte)};
   } catch (const json::out_of_range& e) {  // a number beyond the double range

@@ -4,6 +4,8 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+#include <unordered_set>
 #include <utility>
 
 #include "io/text_scan.h"
@@ -91,7 +93,23 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     return true;
   }
   bool key(string_t& k) override {
-    stack_.back().key = std::move(k);
+    // JSON leaves it to the reader which of two equal names counts: a misspelt copy or a second
+    // "coordinates" would silently win or lose, so a name given twice is an error.
+    Open& open = stack_.back();
+    if (open.value.members.size() >= kIndexedMembers && open.keys.empty()) {
+      for (const JsonMember& m : open.value.members)
+        open.keys.insert(m.key);
+    }
+    const bool repeated = open.keys.empty()
+                              ? std::any_of(open.value.members.begin(), open.value.members.end(),
+                                            [&](const JsonMember& m) { return m.key == k; })
+                              : !open.keys.insert(k).second;
+    if (repeated) {
+      error_offset_ = offset() == 0 ? 0 : offset() - 1;
+      error_ = "the member \"" + k + "\" is given twice in one object";
+      return false;
+    }
+    open.key = std::move(k);
     return true;
   }
   bool end_object() override { return close(); }
@@ -129,7 +147,9 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
   struct Open {
     JsonValue value;
     std::string key;
+    std::unordered_set<std::string> keys;  // the names so far, once an object has many
   };
+  static constexpr std::size_t kIndexedMembers = 32;
 
   // The tree is freed recursively: bound its depth (GeoJSON needs 4 levels and a few wrappers).
   bool can_open() {

@@ -167,6 +167,43 @@ TEST(HostileCli, SceneMembersThatAreNotKnownAreBadInputNamingKeyAndObject) {
   EXPECT_TRUE(has(top.err, "\"units\"")) << top.err;
 }
 
+// collide --scene writes `ID1 ID2` a pair: an empty id cannot be told apart (exit 3), ids given
+// twice or holding white space are warned about (as `inside --scene` does), and a member given
+// twice in the scene file is bad input (JSON leaves it open which one counts).
+TEST(HostileCli, SceneIdsThePairLinesCannotTellApartAreRefusedOrWarned) {
+  TempDir dir;
+  (void)dir.write("cube.off", cube_off(1));
+  const std::string twice = dir.write("twice.json", R"({"objects": [{"id": "a", "mesh": "cube.off"},
+      {"id": "a", "mesh": "cube.off", "transform": [1,0,0,0.5, 0,1,0,0, 0,0,1,0]}]})");
+  const CliRun repeated = run_contain({"collide", "--scene", twice});
+  EXPECT_EQ(repeated.exit_code, 0) << repeated.err;
+  EXPECT_EQ(repeated.out, "a a\n");
+  EXPECT_TRUE(has(repeated.err, "id 'a' is given to shapes 0 and 1")) << repeated.err;
+  const std::string spaced =
+      dir.write("spaced.json", R"({"objects": [{"id": "x", "mesh": "cube.off"},
+      {"id": "a b", "mesh": "cube.off", "transform": [1,0,0,0.5, 0,1,0,0, 0,0,1,0]}]})");
+  const CliRun space = run_contain({"collide", "--scene", spaced});
+  EXPECT_EQ(space.exit_code, 0) << space.err;
+  EXPECT_TRUE(has(space.err, "white space (e.g. 'a b')")) << space.err;
+  const std::string empty =
+      dir.write("empty.json", R"({"objects": [{"id": "", "mesh": "cube.off"}]})");
+  const CliRun blank = run_contain({"collide", "--scene", empty});
+  EXPECT_EQ(blank.exit_code, 3);
+  EXPECT_TRUE(blank.out.empty()) << blank.out;
+  EXPECT_TRUE(has(blank.err, "id '' of shape 0 cannot be told apart")) << blank.err;
+  // '-' is no mark in pair lines: accepted there, refused by inside --scene.
+  const std::string dash =
+      dir.write("dash.json", R"({"objects": [{"id": "-", "mesh": "cube.off"}]})");
+  EXPECT_EQ(run_contain({"collide", "--scene", dash}).exit_code, 0);
+  EXPECT_EQ(run_contain({"inside", "--scene", dash}, "0.5 0.5 0.5\n").exit_code, 3);
+  const std::string member =
+      dir.write("member.json", R"({"objects": [{"id": "a", "mesh": "cube.off",
+      "mesh": "other.off"}]})");
+  const CliRun doubled = run_contain({"collide", "--scene", member});
+  EXPECT_EQ(doubled.exit_code, 3);
+  EXPECT_TRUE(has(doubled.err, "member.json:2: the member \"mesh\" is given twice")) << doubled.err;
+}
+
 TEST(HostileCli, LayerIdsThatReadAsOutputMarksAreRefusedAndDuplicatesWarned) {
   TempDir dir;
   const std::string points = dir.write("p.txt", "0.5 0.5\n5 5\n");

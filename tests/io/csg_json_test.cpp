@@ -241,5 +241,19 @@ TEST(CsgJson, TreesUpToTheDepthLimitAreRead) {
   EXPECT_EQ(at(text, {0, 0, 0}), Location::inside);  // an even number of complements
 }
 
+// nlohmann-json keeps the last of two equal names: a second "op"-like member would silently
+// change the tree, so a name given twice is bad input naming it.
+TEST(CsgJson, AMemberGivenTwiceIsBadInputNamingIt) {
+  const std::string message =
+      error_of(R"({"sphere": {"center": [0, 0, 0], "radius": 5, "radius": 50}})");
+  EXPECT_NE(message.find("\"radius\" is given twice"), std::string::npos) << message;
+  EXPECT_NE(message.find("scene.json"), std::string::npos) << message;
+  // The same name in two objects is no repeat.
+  EXPECT_EQ(at(R"({"union": [{"sphere": {"center": [0, 0, 0], "radius": 1}},
+                             {"sphere": {"center": [5, 0, 0], "radius": 1}}]})",
+               {5, 0, 0}),
+            Location::inside);
+}
+
 }  // namespace
 }  // namespace contain::io

@@ -65,6 +65,9 @@ TEST(GeoJson, RejectsMalformedInputNamingTheKindAndLine) {
       {"{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[1,0],[0,0]]]}", ErrorKind::degenerate, 1},
       {"{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[1,0],[0,1]]]} {}", ErrorKind::parse, 1},
       {std::string(10000, '['), ErrorKind::parse, 1},
+      // A name given twice: which one counts is left open by JSON.
+      {"{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[1,0],[0,1]]],\n\"coordinates\":[]}",
+       ErrorKind::parse, 2},
   };
   for (const BadJson& c : cases) {
     auto r = parse_geojson(c.text, "bad.geojson");
