@@ -1,5 +1,6 @@
 #include "support/exact_polynomial.h"
 
+#include <algorithm>
 #include <bit>
 #include <cassert>
 #include <cmath>
@@ -310,23 +311,23 @@ Sign sign_at(const QPoly& q, QRoot root) {
   make_primitive(zq);
   const ZPoly g = zgcd(root.p, zq);
   if (zdegree(g) >= 1 && zsign(g, root.lo) * zsign(g, root.hi) < 0) return Sign::zero;
-  // q has no root at the root: bisect until q has none in the interval either.
+  // q has no root at the root: bisect until q has none in the interval either. The check (a
+  // Sturm count at both ends) costs several evaluations, a bisection step one: check after 1,
+  // 2, 4, ... 64 steps, not after each.
   const std::vector<ZPoly> s = sturm(zsquarefree(zq));
   const int s_lo = zsign(root.p, root.lo);
-  int q_lo = zsign(zq, root.lo), q_hi = zsign(zq, root.hi);
-  int v_lo = variations(s, root.lo), v_hi = variations(s, root.hi);
-  while (q_lo == 0 || q_hi == 0 || v_lo != v_hi) {
-    const mpq_class m = (root.lo + root.hi) / 2;
-    const int sm = zsign(root.p, m);
-    const int qm = zsign(zq, m);
-    if (sm == 0) return to_sign(qm);
-    const int vm = variations(s, m);
-    const bool left = sm == s_lo;  // the root is above m
-    (left ? root.lo : root.hi) = m;
-    (left ? q_lo : q_hi) = qm;
-    (left ? v_lo : v_hi) = vm;
+  for (int steps = 1;; steps = std::min(2 * steps, 64)) {
+    const int q_lo = zsign(zq, root.lo);
+    if (q_lo != 0 && zsign(zq, root.hi) != 0 && variations(s, root.lo) == variations(s, root.hi)) {
+      return to_sign(q_lo);
+    }
+    for (int i = 0; i < steps; ++i) {
+      const mpq_class m = (root.lo + root.hi) / 2;
+      const int sm = zsign(root.p, m);
+      if (sm == 0) return to_sign(zsign(zq, m));
+      (sm == s_lo ? root.lo : root.hi) = m;
+    }
   }
-  return to_sign(q_lo);
 }
 
 int compare(const mpq_class& x, const QRoot& root) {
