@@ -8,10 +8,29 @@
 #include <limits>
 
 namespace contain::test {
+namespace {
 
-void trim(QPoly& p) {
+// For both kinds of coefficients (rationals to build, integers to decide).
+template <class Poly>
+void trim_zeros(Poly& p) {
   while (!p.empty() && sgn(p.back()) == 0)
     p.pop_back();
+}
+
+template <class Poly>
+Poly derivative_of(const Poly& p) {
+  if (p.size() <= 1) return {};
+  Poly r(p.size() - 1);
+  for (std::size_t k = 1; k < p.size(); ++k)
+    r[k - 1] = p[k] * static_cast<unsigned long>(k);
+  trim_zeros(r);
+  return r;
+}
+
+}  // namespace
+
+void trim(QPoly& p) {
+  trim_zeros(p);
 }
 
 int degree(const QPoly& p) {
@@ -63,23 +82,13 @@ mpq_class evaluate(const QPoly& p, const mpq_class& x) {
 }
 
 QPoly derivative(const QPoly& p) {
-  if (p.size() <= 1) return {};
-  QPoly r(p.size() - 1);
-  for (std::size_t k = 1; k < p.size(); ++k)
-    r[k - 1] = p[k] * static_cast<long>(k);
-  trim(r);
-  return r;
+  return derivative_of(p);
 }
 
 namespace {
 
 int zdegree(const ZPoly& p) {
   return static_cast<int>(p.size()) - 1;
-}
-
-void ztrim(ZPoly& p) {
-  while (!p.empty() && sgn(p.back()) == 0)
-    p.pop_back();
 }
 
 // p times the lcm of its denominators.
@@ -144,7 +153,7 @@ int pseudo_divide(ZPoly a, const ZPoly& b, ZPoly* quotient, ZPoly& remainder) {
     for (std::size_t j = 0; j < b.size(); ++j)
       a[j + shift] -= lead * b[j];
     a.pop_back();
-    ztrim(a);
+    trim_zeros(a);
     if (quotient) {
       for (mpz_class& c : *quotient)
         c *= b.back();
@@ -154,15 +163,6 @@ int pseudo_divide(ZPoly a, const ZPoly& b, ZPoly* quotient, ZPoly& remainder) {
   }
   remainder = std::move(a);
   return steps;
-}
-
-ZPoly zderivative(const ZPoly& p) {
-  if (p.size() <= 1) return {};
-  ZPoly r(p.size() - 1);
-  for (std::size_t k = 1; k < p.size(); ++k)
-    r[k - 1] = p[k] * static_cast<unsigned long>(k);
-  ztrim(r);
-  return r;
 }
 
 // The gcd up to a nonzero factor: a primitive remainder sequence.
@@ -188,7 +188,7 @@ ZPoly exact_quotient(const ZPoly& a, const ZPoly& b) {
 
 ZPoly zsquarefree(const ZPoly& p) {
   if (zdegree(p) < 2) return p;
-  const ZPoly g = zgcd(p, zderivative(p));
+  const ZPoly g = zgcd(p, derivative_of(p));
   return zdegree(g) < 1 ? p : exact_quotient(p, g);
 }
 
@@ -200,7 +200,7 @@ ZPoly without_root(const ZPoly& p, const mpq_class& x) {
 // The Sturm sequence up to positive factors: rem(a, b) is the pseudo-remainder over
 // lc(b)^steps, so its negation is the pseudo-remainder times -sign(lc(b))^steps.
 std::vector<ZPoly> sturm(const ZPoly& p) {
-  std::vector<ZPoly> s{p, zderivative(p)};
+  std::vector<ZPoly> s{p, derivative_of(p)};
   while (!s.back().empty()) {
     ZPoly r;
     const int steps = pseudo_divide(s[s.size() - 2], s.back(), nullptr, r);
