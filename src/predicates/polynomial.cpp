@@ -199,7 +199,11 @@ Coeffs gcd(Coeffs a, Coeffs b) {
 // The squarefree part a / gcd(a, a') up to a constant factor: the same distinct roots, all simple.
 Coeffs squarefree(const Coeffs& a) {
   if (degree_of(a) < 2) return a;
-  const Coeffs g = gcd(a, derivative(a));
+  const Coeffs da = derivative(a);
+  // No common root modulo two primes proves a squarefree (gcd_degree_bound): that spares the
+  // exact gcd, a remainder sequence on numbers of thousands of bits for hostile CCD queries.
+  if (gcd_degree_bound(a, da) == 0) return a;
+  const Coeffs g = gcd(a, da);
   if (degree_of(g) < 1) return a;
   return pseudo_quotient(a, g);
 }

@@ -4,8 +4,8 @@
 // inclusion polynomials are quadratics in the plane, with near-double roots where a vertex grazes
 // an edge) and a vertex grazing a tilting triangle, each axis scaled by its own power of two
 // (exact: the answer is unchanged) and some coordinates moved by ~1e-300. The GMP oracle
-// (ccd_oracle.h) decides each query, the time compared bit for bit; it takes about a second on
-// a coplanar one (numbers of thousands of bits): few of those.
+// (ccd_oracle.h) decides each query, the time compared bit for bit; a coplanar one (numbers of
+// thousands of bits) costs it tens of milliseconds: few of those.
 
 #include <gtest/gtest.h>
 

@@ -157,14 +157,12 @@ std::optional<double> earliest(const Query& query) {
   const Time zero{{}, 0, 0, true};
   if (query.contact(zero)) return 0.0;
   std::optional<double> best;
-  std::vector<QPoly> seen;  // monic, so that polynomials equal up to a factor are done once
+  std::vector<ZPoly> seen;  // primitive, so that polynomials equal up to a factor are done once
   for (const QPoly& p : query.decision_polys()) {
     if (degree(p) < 1) continue;
-    QPoly monic = p;
-    for (mpq_class& c : monic)
-      c /= p.back();
-    if (std::find(seen.begin(), seen.end(), monic) != seen.end()) continue;
-    seen.push_back(monic);
+    ZPoly primitive = primitive_part(p);
+    if (std::find(seen.begin(), seen.end(), primitive) != seen.end()) continue;
+    seen.push_back(std::move(primitive));
     for (const QRoot& root : isolate_roots(p, 0, 1)) {
       if (!query.contact(root)) continue;
       const double t = floor_to_double(root);

@@ -6,7 +6,7 @@
 // point-on-segment tests on the components; signs at roots by refinement and gcds
 // (tests/support/exact_polynomial.h). Where the four points stay coplanar, every root in [0, 1]
 // of every polynomial of the decision, and 0, is a candidate. The earliest contact is rounded
-// down to a double by bisection in rationals.
+// down to a double by binary search over the doubles, each compared with the root exactly.
 
 #include <array>
 #include <optional>

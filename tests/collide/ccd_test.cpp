@@ -415,7 +415,7 @@ TEST(CcdOracle, HugeAndTinyCoordinatesEqualTheOracle) {
   run(test::case_budget(40, 10) + 4, [&](bool) { return g.extremes(); });
 }
 
-// The GMP oracle takes about a second a query on these (numbers of thousands of bits): few.
+// The GMP oracle takes tens of milliseconds a query on these (numbers of thousands of bits): few.
 TEST(CcdOracle, HostileMixedMagnitudesEqualTheOracle) {
   Generator g(24);
   run(test::case_budget(16, 4) + 4, [&](bool) { return g.mixed_magnitudes(); });

@@ -1,9 +1,14 @@
 #pragma once
 /// \file
-/// Polynomials over GMP rationals for the oracles of the tests: exact division, Sturm counts,
-/// root isolation by bisection on rationals, and the sign of another polynomial at a root by
-/// refinement (gcd for a common root, else bisect until the other polynomial has no root left
-/// in the interval). A different route from the library's Tarski queries on dyadic big numbers.
+/// Polynomials over GMP rationals for the oracles of the tests: Sturm counts, root isolation
+/// by bisection, and the sign of another polynomial at a root by refinement (gcd for a common
+/// root, else bisect until the other polynomial has no root left in the interval). A different
+/// route from the library's Tarski queries on dyadic big numbers.
+///
+/// Built in rationals, decided in integers: a polynomial is scaled by the lcm of its
+/// denominators (a positive factor: same roots, same signs) and its sign at x = n/d is the sign
+/// of the homogeneous d^deg p(n/d), so no evaluation canonicalises a rational with a gcd; gcds,
+/// squarefree parts and Sturm sequences are primitive pseudo-remainder sequences (signs kept).
 
 #include <gmpxx.h>
 
@@ -15,6 +20,8 @@ namespace contain::test {
 
 /// Lowest degree first, no zero leading coefficient (zero: empty).
 using QPoly = std::vector<mpq_class>;
+/// Integer coefficients, lowest degree first, no zero leading coefficient.
+using ZPoly = std::vector<mpz_class>;
 
 void trim(QPoly& p);
 [[nodiscard]] int degree(const QPoly& p);
@@ -26,15 +33,13 @@ void trim(QPoly& p);
 [[nodiscard]] mpq_class evaluate(const QPoly& p, const mpq_class& x);
 [[nodiscard]] Sign sign_at(const QPoly& p, const mpq_class& x);
 [[nodiscard]] QPoly derivative(const QPoly& p);
-/// The remainder of a divided by b (b not zero).
-[[nodiscard]] QPoly remainder(const QPoly& a, const QPoly& b);
-[[nodiscard]] QPoly quotient(const QPoly& a, const QPoly& b);
-[[nodiscard]] QPoly gcd(QPoly a, QPoly b);
-[[nodiscard]] QPoly squarefree(const QPoly& p);
+/// p times the positive number that makes its coefficients coprime integers, the leading one
+/// positive: two polynomials are equal up to a nonzero factor when these are equal.
+[[nodiscard]] ZPoly primitive_part(const QPoly& p);
 
 /// A root: the rational `lo` when `exact`, else the one root of the squarefree `p` in (lo, hi).
 struct QRoot {
-  QPoly p;
+  ZPoly p;
   mpq_class lo, hi;
   bool exact = false;
 };
