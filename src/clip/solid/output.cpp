@@ -13,9 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -82,6 +80,39 @@ std::size_t count_shells(const Mesh& mesh) {
   return shells;
 }
 
+bool before(Vec3 a, Vec3 b) {
+  return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+}
+
+bool same(Vec3 a, Vec3 b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+void sort_unique(std::vector<Vec3>& points) {
+  std::sort(points.begin(), points.end(), before);
+  points.erase(std::unique(points.begin(), points.end(), same), points.end());
+}
+
+// The written positions that are not the nearest doubles of an exact point of the result,
+// counted once each: sorted arrays, not hash sets of nodes.
+std::size_t moved_count(const Faces& faces, const PointStore& store,
+                        const std::vector<Vec3>& written) {
+  std::vector<Vec3> nearest;
+  nearest.reserve(3 * faces.size());
+  for (const auto& f : faces) {
+    for (const std::int32_t i : f)
+      nearest.push_back(store.rounded(i));
+  }
+  sort_unique(nearest);
+  std::vector<Vec3> other;
+  for (const Vec3 v : written) {
+    const auto it = std::lower_bound(nearest.begin(), nearest.end(), v, before);
+    if (it == nearest.end() || !same(*it, v)) other.push_back(v);
+  }
+  sort_unique(other);
+  return other.size();
+}
+
 double signed_volume(const Mesh& mesh) {
   double six = 0.0;
   for (const TriangleIndices& t : mesh.triangles) {
@@ -127,17 +158,9 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
   }
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result.
-  std::unordered_set<Vec3, Vec3Hash, Vec3Equal> nearest, other;
-  for (const auto& f : faces) {
-    for (const std::int32_t i : f)
-      nearest.insert(store.rounded(i));
-  }
-  for (const Vec3 v : mesh->vertices) {
-    if (!nearest.contains(v)) other.insert(v);
-  }
   MeshBooleanResult result;
+  result.moved = moved_count(faces, store, mesh->vertices);
   result.mesh = std::move(*mesh);
-  result.moved = other.size();
   result.shells = count_shells(result.mesh);
   result.volume = signed_volume(result.mesh);
   return result;
