@@ -105,6 +105,8 @@ class PointStore {
   [[nodiscard]] std::size_t size() const { return points_.size(); }
   /// The first stored point with the same nearest doubles as point i (i itself when none).
   [[nodiscard]] std::int32_t representative(std::int32_t i) const;
+  /// The first stored point whose nearest doubles are r, or -1.
+  [[nodiscard]] std::int32_t first_rounded_to(Vec3 r) const { return first_.find(r, rounded_); }
 
  private:
   std::int32_t add(const ExactPoint& p, Vec3 r);

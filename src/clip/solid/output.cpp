@@ -80,37 +80,30 @@ std::size_t count_shells(const Mesh& mesh) {
   return shells;
 }
 
-bool before(Vec3 a, Vec3 b) {
-  return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-}
-
-bool same(Vec3 a, Vec3 b) {
-  return a.x == b.x && a.y == b.y && a.z == b.z;
-}
-
-void sort_unique(std::vector<Vec3>& points) {
-  std::sort(points.begin(), points.end(), before);
-  points.erase(std::unique(points.begin(), points.end(), same), points.end());
-}
-
 // The written positions that are not the nearest doubles of an exact point of the result,
-// counted once each: sorted arrays, not hash sets of nodes.
+// counted once each: the faces' points marked by the first point of their doubles in the store
+// (flat arrays and the store's own table, not hash sets of nodes).
 std::size_t moved_count(const Faces& faces, const PointStore& store,
                         const std::vector<Vec3>& written) {
-  std::vector<Vec3> nearest;
-  nearest.reserve(3 * faces.size());
+  std::vector<char> used(store.size(), 0), nearest(store.size(), 0);
   for (const auto& f : faces) {
     for (const std::int32_t i : f)
-      nearest.push_back(store.rounded(i));
+      used[static_cast<std::size_t>(i)] = 1;
   }
-  sort_unique(nearest);
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i] != 0)
+      nearest[static_cast<std::size_t>(store.representative(static_cast<std::int32_t>(i)))] = 1;
+  }
   std::vector<Vec3> other;
   for (const Vec3 v : written) {
-    const auto it = std::lower_bound(nearest.begin(), nearest.end(), v, before);
-    if (it == nearest.end() || !same(*it, v)) other.push_back(v);
+    const std::int32_t first = store.first_rounded_to(v);
+    if (first < 0 || nearest[static_cast<std::size_t>(first)] == 0) other.push_back(v);
   }
-  sort_unique(other);
-  return other.size();
+  std::sort(other.begin(), other.end(), [](Vec3 a, Vec3 b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  });
+  const auto same = [](Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  return static_cast<std::size_t>(std::unique(other.begin(), other.end(), same) - other.begin());
 }
 
 double signed_volume(const Mesh& mesh) {
