@@ -280,8 +280,7 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
-  for (const Vec3 v : soup->vertices)
-    (void)store.add(v);
+  store.add_vertices(*soup);
   const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);
