@@ -16,8 +16,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   // The input vertices and room for the crossings (a few per hundred vertices on smooth
   // inputs; more grow the store): an index of 8 bytes a slot that stays in cache.
   store.reserve(soup->vertices.size() + soup->vertices.size() / 4);
-  for (const Vec3 v : soup->vertices)
-    (void)store.add(v);
+  store.add_vertices(*soup);
   const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
   const solid::Refinement refinement = solid::refine(*soup, work, store);
   const std::vector<solid::FaceLabel> labels = solid::label_faces(*soup, refinement, store);

@@ -31,6 +31,33 @@
 
 namespace contain::clip::solid {
 
+/// Numbers of points of doubles by value (+0 and -0 one key): open addressing, linear probing,
+/// load at most 1/2, where a node-based map allocated per point and hashed each coordinate
+/// byte by byte (the welding and the point store's index were a tenth of a boolean's time).
+/// The table holds numbers and hash tags only (8 bytes a slot, so that it stays in cache); the
+/// points are the caller's: `keys[i]` is the point numbered i.
+class PointTable {
+ public:
+  void reserve(std::size_t points, std::span<const Vec3> keys);
+  /// The number stored under v and false; or `id`, now stored under v, and true (the caller
+  /// then makes keys[id] == v).
+  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, std::span<const Vec3> keys);
+  /// The number stored under v, or -1.
+  [[nodiscard]] std::int32_t find(Vec3 v, std::span<const Vec3> keys) const;
+  [[nodiscard]] std::size_t size() const { return used_; }
+
+ private:
+  struct Slot {
+    std::int32_t id = -1;
+    std::uint32_t tag = 0;
+  };
+  [[nodiscard]] static std::uint64_t hash(Vec3 v);
+  // The slot holding v, or the empty slot where it goes.
+  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const;
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
+};
+
 /// Every input's triangles in one soup, vertices welded by exact position across inputs.
 class Soup {
  public:
@@ -44,6 +71,8 @@ class Soup {
   std::vector<Box3> boxes;       ///< of each triangle (empty for a degenerate one)
   bvh::Bvh tree;                 ///< over `boxes`: the pairs and the rays of the labels
   std::size_t inputs = 0;
+  /// `vertices` numbered by value, as welded (empty for soups not made by make_soup).
+  PointTable index;
 
  private:
   // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
@@ -64,32 +93,6 @@ struct Vec3Equal {
   }
 };
 
-/// Numbers of points of doubles by value (+0 and -0 one key): open addressing, linear probing,
-/// load at most 1/2, where a node-based map allocated per point and hashed each coordinate
-/// byte by byte (the welding and the point store's index were a tenth of a boolean's time).
-/// The table holds numbers and hash tags only (8 bytes a slot, so that it stays in cache); the
-/// points are the caller's: `keys[i]` is the point numbered i.
-class PointTable {
- public:
-  void reserve(std::size_t points, std::span<const Vec3> keys);
-  /// The number stored under v and false; or `id`, now stored under v, and true (the caller
-  /// then makes keys[id] == v).
-  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, std::span<const Vec3> keys);
-  /// The number stored under v, or -1.
-  [[nodiscard]] std::int32_t find(Vec3 v, std::span<const Vec3> keys) const;
-
- private:
-  struct Slot {
-    std::int32_t id = -1;
-    std::uint32_t tag = 0;
-  };
-  [[nodiscard]] static std::uint64_t hash(Vec3 v);
-  // The slot holding v, or the empty slot where it goes.
-  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const;
-  std::vector<Slot> slots_;
-  std::size_t used_ = 0;
-};
-
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
 class PointStore {
  public:
@@ -98,6 +101,10 @@ class PointStore {
   std::int32_t add(const ExactPoint& p);
   /// The same for a point of doubles (its own nearest doubles: no rounding to compute).
   std::int32_t add(Vec3 v);
+  /// A soup's vertices as points 0 ... n - 1, in an empty store: as `add` of each, but a soup
+  /// made by make_soup brings its index of them (distinct by welding), copied whole instead of
+  /// rebuilt by one scattered insert per vertex (a tenth of a large boolean).
+  void add_vertices(const Soup& soup);
   [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
     return points_[static_cast<std::size_t>(i)];
   }
@@ -105,6 +112,8 @@ class PointStore {
   [[nodiscard]] std::size_t size() const { return points_.size(); }
   /// The first stored point with the same nearest doubles as point i (i itself when none).
   [[nodiscard]] std::int32_t representative(std::int32_t i) const;
+  /// The first stored point whose nearest doubles are r, or -1.
+  [[nodiscard]] std::int32_t first_rounded_to(Vec3 r) const { return first_.find(r, rounded_); }
 
  private:
   std::int32_t add(const ExactPoint& p, Vec3 r);

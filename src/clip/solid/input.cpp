@@ -70,7 +70,7 @@ int dropped_axis(const BigVec3& n) {
 Result<Soup> make_soup(std::span<const Mesh> inputs) {
   Soup soup;
   soup.inputs = inputs.size();
-  PointTable welded;
+  PointTable& welded = soup.index;
   std::size_t vertices = 0, triangles = 0;
   for (const Mesh& mesh : inputs) {
     vertices += mesh.vertices.size();

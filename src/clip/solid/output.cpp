@@ -13,9 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -82,6 +80,32 @@ std::size_t count_shells(const Mesh& mesh) {
   return shells;
 }
 
+// The written positions that are not the nearest doubles of an exact point of the result,
+// counted once each: the faces' points marked by the first point of their doubles in the store
+// (flat arrays and the store's own table, not hash sets of nodes).
+std::size_t moved_count(const Faces& faces, const PointStore& store,
+                        const std::vector<Vec3>& written) {
+  std::vector<char> used(store.size(), 0), nearest(store.size(), 0);
+  for (const auto& f : faces) {
+    for (const std::int32_t i : f)
+      used[static_cast<std::size_t>(i)] = 1;
+  }
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i] != 0)
+      nearest[static_cast<std::size_t>(store.representative(static_cast<std::int32_t>(i)))] = 1;
+  }
+  std::vector<Vec3> other;
+  for (const Vec3 v : written) {
+    const std::int32_t first = store.first_rounded_to(v);
+    if (first < 0 || nearest[static_cast<std::size_t>(first)] == 0) other.push_back(v);
+  }
+  std::sort(other.begin(), other.end(), [](Vec3 a, Vec3 b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  });
+  const auto same = [](Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  return static_cast<std::size_t>(std::unique(other.begin(), other.end(), same) - other.begin());
+}
+
 double signed_volume(const Mesh& mesh) {
   double six = 0.0;
   for (const TriangleIndices& t : mesh.triangles) {
@@ -127,17 +151,9 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
   }
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result.
-  std::unordered_set<Vec3, Vec3Hash, Vec3Equal> nearest, other;
-  for (const auto& f : faces) {
-    for (const std::int32_t i : f)
-      nearest.insert(store.rounded(i));
-  }
-  for (const Vec3 v : mesh->vertices) {
-    if (!nearest.contains(v)) other.insert(v);
-  }
   MeshBooleanResult result;
+  result.moved = moved_count(faces, store, mesh->vertices);
   result.mesh = std::move(*mesh);
-  result.moved = other.size();
   result.shells = count_shells(result.mesh);
   result.volume = signed_volume(result.mesh);
   return result;

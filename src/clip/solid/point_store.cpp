@@ -1,6 +1,7 @@
 // The point store of the mesh boolean: every exact point of the arrangement once, found by its
 // nearest doubles (PointTable) and then exact equality among the few points sharing them.
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -84,6 +85,23 @@ std::int32_t PointStore::add(const ExactPoint& p) {
 
 std::int32_t PointStore::add(Vec3 v) {
   return add(exact_point(v), v);
+}
+
+void PointStore::add_vertices(const Soup& soup) {
+  if (!points_.empty() || soup.index.size() != soup.vertices.size()) {
+    for (const Vec3 v : soup.vertices)
+      (void)add(v);
+    return;
+  }
+  // The room reserved before for the crossings stays (a larger table is rebuilt once).
+  const std::size_t room = std::max(points_.capacity(), soup.vertices.size());
+  first_ = soup.index;
+  first_.reserve(room, soup.vertices);
+  points_.reserve(room);
+  for (const Vec3 v : soup.vertices)
+    points_.push_back(exact_point(v));
+  rounded_.assign(soup.vertices.begin(), soup.vertices.end());
+  next_.assign(soup.vertices.size(), -1);
 }
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {

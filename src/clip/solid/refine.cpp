@@ -15,7 +15,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -23,7 +24,25 @@
 namespace contain::clip::solid {
 namespace {
 
-using EdgePoints = std::unordered_map<std::uint64_t, std::vector<std::int32_t>>;
+// The points found on each input edge, as flat sorted arrays (not a map of vectors: a node and
+// a vector per edge): `keys` every edge some triangle with constraints has as a segment (even
+// when no point was found on it, so that its triangles are not taken as plain), `points` the
+// (edge, point) pairs, sorted and unique.
+struct EdgePoints {
+  std::vector<std::uint64_t> keys;
+  std::vector<std::pair<std::uint64_t, std::int32_t>> points;
+
+  [[nodiscard]] bool contains(std::uint64_t key) const {
+    return std::binary_search(keys.begin(), keys.end(), key);
+  }
+  // The points on edge `key`, ascending.
+  void append(std::uint64_t key, std::vector<std::int32_t>& out) const {
+    auto it = std::lower_bound(points.begin(), points.end(),
+                               std::pair{key, std::numeric_limits<std::int32_t>::min()});
+    for (; it != points.end() && it->first == key; ++it)
+      out.push_back(it->second);
+  }
+};
 
 struct Local {
   std::array<std::int32_t, 3> corners{};
@@ -100,8 +119,7 @@ Arranged arrange(const Local& l, const TriangleWork& work, const EdgePoints& giv
   }
   for (const Segment& s : segments) {
     if (s.edge == no_edge) continue;
-    const auto it = given.find(s.edge);
-    if (it != given.end()) points.insert(points.end(), it->second.begin(), it->second.end());
+    given.append(s.edge, points);
   }
   for (std::size_t i = 0; i < segments.size(); ++i) {
     for (std::size_t j = i + 1; j < segments.size(); ++j) {
@@ -163,15 +181,15 @@ EdgePoints gather_edge_points(const Soup& soup, const std::vector<TriangleWork>&
     for (const std::uint64_t key : keys) {
       const auto a = static_cast<std::int32_t>(key >> 32U);
       const auto b = static_cast<std::int32_t>(key & 0xffffffffU);
-      const std::vector<std::int32_t> run = on_segment(l, a, b, arranged.points);
-      std::vector<std::int32_t>& list = found[key];
-      list.insert(list.end(), run.begin(), run.end());
+      found.keys.push_back(key);
+      for (const std::int32_t p : on_segment(l, a, b, arranged.points))
+        found.points.emplace_back(key, p);
     }
   }
-  for (auto& [key, list] : found) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
+  std::sort(found.keys.begin(), found.keys.end());
+  found.keys.erase(std::unique(found.keys.begin(), found.keys.end()), found.keys.end());
+  std::sort(found.points.begin(), found.points.end());
+  found.points.erase(std::unique(found.points.begin(), found.points.end()), found.points.end());
   return found;
 }
 

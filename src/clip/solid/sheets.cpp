@@ -15,7 +15,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -219,14 +218,17 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     corners = grouping.corners(faces.size());
   }
   Sheets out;
-  std::unordered_map<std::size_t, std::int32_t> vertex;
+  std::vector<std::int32_t> vertex(3 * faces.size(), -1);  // of each corner set's root
+  out.faces.reserve(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<std::int32_t, 3> t{};
     for (std::size_t k = 0; k < 3; ++k) {
-      const auto [it, fresh] =
-          vertex.try_emplace(corners.find(3 * f + k), static_cast<std::int32_t>(out.points.size()));
-      if (fresh) out.points.push_back(faces[f][k]);
-      t[k] = it->second;
+      std::int32_t& v = vertex[corners.find(3 * f + k)];
+      if (v < 0) {
+        v = static_cast<std::int32_t>(out.points.size());
+        out.points.push_back(faces[f][k]);
+      }
+      t[k] = v;
     }
     out.faces.push_back(t);
   }

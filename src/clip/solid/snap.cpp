@@ -30,11 +30,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <optional>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -49,33 +47,64 @@ namespace {
 // Points merged into one vertex (rule solid-output): faces that lose a corner so are dropped,
 // and two faces that become the same triangle in opposite directions cancel. What this leaves
 // is checked.
-using Representative = std::unordered_map<std::int32_t, std::int32_t>;
+// Flat arrays indexed by point number, not a hash map: the written mesh of a large result has
+// hundreds of thousands of points, and a node per point was a tenth of the whole boolean.
+struct Representative {
+  std::vector<std::int32_t> ids;  // the faces' points, ascending
+  std::vector<std::int32_t> of;   // the written point of each of them (-1 for other points)
+  [[nodiscard]] std::int32_t at(std::int32_t i) const { return of[static_cast<std::size_t>(i)]; }
+};
+
+// Faces that are the same triangle in opposite directions, grouped by their corners without a
+// tree of keys: (a, min(b, c), max(b, c)) with a the smallest corner, then by face number.
+struct CornerKey {
+  std::array<std::int32_t, 3> key;
+  std::uint32_t face;
+  bool reversed;  // b > c in (a, b, c)
+};
 
 std::vector<std::array<std::int32_t, 3>> merge_coincident(
     const std::vector<std::array<std::int32_t, 3>>& faces, const Representative& rep) {
-  std::map<std::array<std::int32_t, 3>, std::vector<std::size_t>> by_corners;
   std::vector<std::array<std::int32_t, 3>> merged;
+  merged.reserve(faces.size());
   for (const auto& f : faces) {
     std::array<std::int32_t, 3> t = {rep.at(f[0]), rep.at(f[1]), rep.at(f[2])};
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     merged.push_back(t);
   }
-  // Cancel opposite pairs: key (a, b, c) with a smallest; its reverse is (a, c, b).
-  std::vector<bool> gone(merged.size(), false);
+  std::vector<CornerKey> keys(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
     const auto& t = merged[i];
-    const std::array<std::int32_t, 3> reverse = {t[0], t[2], t[1]};
-    auto it = by_corners.find(reverse);
-    if (it != by_corners.end() && !it->second.empty()) {
-      gone[it->second.back()] = true;
-      gone[i] = true;
-      it->second.pop_back();
-    } else {
-      by_corners[t].push_back(i);
+    keys[i] = {{t[0], std::min(t[1], t[2]), std::max(t[1], t[2])},
+               static_cast<std::uint32_t>(i),
+               t[1] > t[2]};
+  }
+  std::sort(keys.begin(), keys.end(), [](const CornerKey& x, const CornerKey& y) {
+    return x.key != y.key ? x.key < y.key : x.face < y.face;
+  });
+  // Cancel opposite pairs in face order: a face cancels the latest still open face of the
+  // other direction among the earlier ones (as a stack of each direction per key).
+  std::vector<bool> gone(merged.size(), false);
+  std::array<std::vector<std::uint32_t>, 2> open;
+  for (std::size_t i = 0, j = 0; i < keys.size(); i = j) {
+    while (j < keys.size() && keys[j].key == keys[i].key)
+      ++j;
+    open[0].clear();
+    open[1].clear();
+    for (std::size_t k = i; k < j; ++k) {
+      std::vector<std::uint32_t>& other = open[keys[k].reversed ? 0 : 1];
+      if (!other.empty()) {
+        gone[other.back()] = true;
+        gone[keys[k].face] = true;
+        other.pop_back();
+      } else {
+        open[keys[k].reversed ? 1 : 0].push_back(keys[k].face);
+      }
     }
   }
   std::vector<std::array<std::int32_t, 3>> out;
+  out.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
     if (!gone[i]) out.push_back(merged[i]);
   }
@@ -136,6 +165,7 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   Representative rep;
+  rep.of.assign(store.size(), -1);
   if (level >= 0) {
     std::vector<Vec3> points;
     points.reserve(ids.size());
@@ -145,12 +175,14 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
         cluster_points(points, cell_side(level, scale));
     if (leader) {
       for (std::size_t k = 0; k < ids.size(); ++k)
-        rep[ids[k]] = ids[(*leader)[k]];
+        rep.of[static_cast<std::size_t>(ids[k])] = ids[(*leader)[k]];
+      rep.ids = std::move(ids);
       return rep;
     }
   }
   for (const std::int32_t i : ids)
-    rep[i] = store.representative(i);
+    rep.of[static_cast<std::size_t>(i)] = store.representative(i);
+  rep.ids = std::move(ids);
   return rep;
 }
 
@@ -172,14 +204,17 @@ struct Written {
 Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
                      const Representative& rep, const PointStore& store) {
   const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
-  std::unordered_map<std::int32_t, int> merged;  // points merged into each representative
-  for (const auto& [point, into] : rep)
-    merged[into] += written_exactly(store.point(point)) ? 1 : 2;
+  std::vector<int> merged(store.size(), 0);  // points merged into each representative
+  for (const std::int32_t point : rep.ids)
+    merged[static_cast<std::size_t>(rep.at(point))] += written_exactly(store.point(point)) ? 1 : 2;
   Written out;
+  out.mesh.vertices.reserve(sheets.points.size());
+  out.kept.reserve(sheets.points.size());
   for (const std::int32_t p : sheets.points) {
     out.mesh.vertices.push_back(store.rounded(p));
-    out.kept.push_back(merged[p] == 1);
+    out.kept.push_back(merged[static_cast<std::size_t>(p)] == 1);
   }
+  out.mesh.triangles.reserve(sheets.faces.size());
   for (const auto& t : sheets.faces)
     out.mesh.triangles.push_back({t[0], t[1], t[2]});
   return out;
@@ -245,8 +280,7 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
-  for (const Vec3 v : soup->vertices)
-    (void)store.add(v);
+  store.add_vertices(*soup);
   const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);

@@ -271,19 +271,20 @@ Shells shells_of(const Mesh& mesh) {
     sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
   }
   Shells out;
-  std::unordered_map<std::size_t, std::size_t> number;
-  out.of_vertex.assign(mesh.vertices.size(), ~std::size_t{0});
+  constexpr std::size_t none = ~std::size_t{0};
+  std::vector<std::size_t> number(mesh.vertices.size(), none);  // of each set's root
+  out.of_vertex.assign(mesh.vertices.size(), none);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [it, fresh] = number.try_emplace(
-        sets.find(static_cast<std::size_t>(mesh.triangles[t][0])), out.triangles.size());
-    if (fresh) {
+    std::size_t& shell = number[sets.find(static_cast<std::size_t>(mesh.triangles[t][0]))];
+    if (shell == none) {
+      shell = out.triangles.size();
       out.triangles.emplace_back();
       out.boxes.emplace_back();
     }
-    out.triangles[it->second].push_back(t);
+    out.triangles[shell].push_back(t);
     for (const std::int32_t v : mesh.triangles[t]) {
-      out.boxes[it->second].expand(mesh.vertex(v));
-      out.of_vertex[static_cast<std::size_t>(v)] = it->second;
+      out.boxes[shell].expand(mesh.vertex(v));
+      out.of_vertex[static_cast<std::size_t>(v)] = shell;
     }
   }
   return out;
@@ -298,13 +299,26 @@ Shells shells_of(const Mesh& mesh) {
 // beyond shared corners), and only shells whose boxes hold it can hold it.
 bool oriented(const Mesh& mesh) {
   const Shells shells = shells_of(mesh);
-  std::unordered_map<Vec3, std::size_t, Vec3Hash, Vec3Equal> users;  // shells at each position
-  std::unordered_map<Vec3, std::size_t, Vec3Hash, Vec3Equal> first;
+  // Each used vertex's position numbered by value (PointTable), and per position the first
+  // shell met there and how many shell changes were seen at it (1: only one shell uses it).
+  PointTable table;
+  std::vector<Vec3> positions;
+  std::vector<std::int32_t> position(mesh.vertices.size(), -1);
+  std::vector<std::size_t> first, users;
+  table.reserve(mesh.vertices.size(), positions);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     if (shells.of_vertex[v] == ~std::size_t{0}) continue;
     const Vec3 p = mesh.vertices[v] + Vec3{0, 0, 0};
-    const auto [it, fresh] = first.try_emplace(p, shells.of_vertex[v]);
-    if (fresh || it->second != shells.of_vertex[v]) ++users[p];
+    const auto [id, fresh] =
+        table.try_emplace(p, static_cast<std::int32_t>(positions.size()), positions);
+    if (fresh) {
+      positions.push_back(p);
+      first.push_back(shells.of_vertex[v]);
+      users.push_back(0);
+    }
+    position[v] = id;
+    const auto i = static_cast<std::size_t>(id);
+    if (fresh || first[i] != shells.of_vertex[v]) ++users[i];
   }
   for (std::size_t s = 0; s < shells.triangles.size(); ++s) {
     const Sign volume = volume_sign(mesh, shells.triangles[s]);
@@ -312,8 +326,8 @@ bool oriented(const Mesh& mesh) {
     std::optional<Vec3> free;
     for (const std::size_t t : shells.triangles[s]) {
       for (const std::int32_t v : mesh.triangles[t]) {
-        const Vec3 p = mesh.vertex(v) + Vec3{0, 0, 0};
-        if (!free && users[p] == 1) free = p;
+        const auto i = static_cast<std::size_t>(position[static_cast<std::size_t>(v)]);
+        if (!free && users[i] == 1) free = positions[i];
       }
     }
     if (!free) continue;  // every corner shared with another shell: not decided here
