@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <sstream>
 #include <tuple>
 
@@ -250,7 +251,7 @@ class PositionTable {
     slots_.assign(std::bit_ceil(std::max<std::size_t>(16, 2 * n)), -1);
   }
   // The number of the first vertex at p (in `kept`), or -1 after reserving a slot for `fresh`.
-  std::int32_t find_or_add(Vec3 p, const std::vector<Vec3>& kept, std::int32_t fresh) {
+  std::int32_t find_or_add(Vec3 p, std::span<const Vec3> kept, std::int32_t fresh) {
     const std::size_t mask = slots_.size() - 1;
     std::uint64_t h = coordinate_bits(p.x) * 0x9E3779B97F4A7C15ULL ^
                       coordinate_bits(p.y) * 0xC2B2AE3D27D4EB4FULL ^
@@ -299,6 +300,16 @@ WeldResult weld_vertices(const Mesh& mesh) {
   }
   w.merged = n - w.mesh.vertices.size();
   return w;
+}
+
+// The first pass of weld_vertices without its copies: callers whose input is already welded
+// (an OFF or OBJ file indexes its vertices) skip the copy of the mesh.
+bool vertices_distinct(std::span<const Vec3> vertices) {
+  PositionTable table(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (table.find_or_add(vertices[i], vertices, static_cast<std::int32_t>(i)) >= 0) return false;
+  }
+  return true;
 }
 
 }  // namespace contain::shapes

@@ -473,7 +473,7 @@ TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
       std::vector<std::int32_t> active;
       for (const std::int32_t t : all) {
         const auto u = static_cast<std::size_t>(t);
-        if (prepared.low[u] <= c && c <= prepared.high[u] && prepared.low[u] < prepared.high[u])
+        if (prepared.low(u) <= c && c <= prepared.high(u) && prepared.low(u) < prepared.high(u))
           active.push_back(t);
       }
       return active;
@@ -512,7 +512,7 @@ TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
   std::vector<std::int32_t> all(prepared.triangles.size());
   std::iota(all.begin(), all.end(), 0);
   std::erase_if(all, [&](std::int32_t t) {
-    return prepared.low[static_cast<std::size_t>(t)] == prepared.high[static_cast<std::size_t>(t)];
+    return prepared.low(static_cast<std::size_t>(t)) == prepared.high(static_cast<std::size_t>(t));
   });
   clip::slice::WalkScratch scratch;
   std::vector<clip::slice::CrossingSegment> segments;
