@@ -245,10 +245,12 @@ std::uint64_t coordinate_bits(double x) {
 
 // Open addressing from positions to new vertex numbers, in a power-of-two table at most half
 // full: equal positions meet in one slot; a NaN coordinate equals nothing, so it is never welded.
+// A slot holds the number and the high half of the position's hash, so that a probe past another
+// position rarely reads that vertex (a cache miss in a large mesh).
 class PositionTable {
  public:
   explicit PositionTable(std::size_t n) {
-    slots_.assign(std::bit_ceil(std::max<std::size_t>(16, 2 * n)), -1);
+    slots_.assign(std::bit_ceil(std::max<std::size_t>(16, 2 * n)), kEmpty);
   }
   // The number of the first vertex at p (in `kept`), or -1 after reserving a slot for `fresh`.
   std::int32_t find_or_add(Vec3 p, std::span<const Vec3> kept, std::int32_t fresh) {
@@ -261,19 +263,24 @@ class PositionTable {
     h ^= h >> 33;
     h *= 0xFF51AFD7ED558CCDULL;
     h ^= h >> 33;
+    const std::uint64_t tag = h & 0xFFFFFFFF00000000ULL;
     for (std::size_t i = h & mask;; i = (i + 1) & mask) {
-      const std::int32_t v = slots_[i];
-      if (v < 0) {
-        slots_[i] = fresh;
+      const std::uint64_t slot = slots_[i];
+      if (slot == kEmpty) {
+        slots_[i] = tag | static_cast<std::uint32_t>(fresh);
         return -1;
       }
+      if ((slot & 0xFFFFFFFF00000000ULL) != tag) continue;
+      const auto v = static_cast<std::int32_t>(slot & 0xFFFFFFFFU);
       const Vec3 q = kept[static_cast<std::size_t>(v)];
       if (q.x == p.x && q.y == p.y && q.z == p.z) return v;
     }
   }
 
  private:
-  std::vector<std::int32_t> slots_;
+  // No slot of a vertex number (below 2^31) is all ones.
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::uint64_t> slots_;
 };
 
 }  // namespace
