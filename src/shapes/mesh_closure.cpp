@@ -67,43 +67,53 @@ std::vector<EdgeUse> directed_edges(std::size_t vertices,
   return sorted;
 }
 
-// Every directed edge filed under its lower vertex as one word, (upper vertex, direction,
-// half-edge 3t + k) from the high bits down (a counting sort), each vertex's few words sorted:
-// the uses of an edge and of its reverse are then one run, for `balanced` to count and pair.
-// About a fifth of the cost of the full search (directed_edges), which then runs only for open
-// meshes, to name their first unbalanced edge. False when the mesh is too large for the word.
+// Every directed edge filed under its lower vertex by its number 3t + k (a counting sort, in
+// 32-bit words: the table and the fill cursor are one array), then each vertex's few edges as
+// words (upper vertex, direction, half-edge) from the high bits down, sorted: the uses of an edge
+// and of its reverse are then one run, for `balanced` to count and pair. About a fifth of the
+// cost of the full search (directed_edges), which then runs only for open meshes, to name their
+// first unbalanced edge. False when the mesh is too large for the word.
 template <class Run>
 bool each_edge_run(std::span<const TriangleIndices> triangles, std::size_t vertices, Run&& run) {
   if (3 * triangles.size() >= (std::size_t{1} << 31)) return false;
-  std::vector<std::size_t> start(vertices + 1, 0);
-  const auto each_edge = [&](auto&& f) {
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      const TriangleIndices& v = triangles[t];
-      for (std::size_t k = 0; k < 3; ++k) {
-        if (v[k] != v[(k + 1) % 3]) f(v[k], v[(k + 1) % 3], 3 * t + k);
-      }
-    }
+  const auto lower = [&](std::size_t half) {
+    const TriangleIndices& v = triangles[half / 3];
+    const std::size_t k = half % 3;
+    return static_cast<std::size_t>(std::min(v[k], v[k == 2 ? 0 : k + 1]));
   };
-  each_edge([&](std::int32_t a, std::int32_t b, std::size_t) {
-    ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
-  });
-  for (std::size_t v = 1; v < start.size(); ++v)
-    start[v] += start[v - 1];
-  std::vector<std::uint64_t> filed(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  each_edge([&](std::int32_t a, std::int32_t b, std::size_t half) {
-    const auto lo = static_cast<std::size_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-    filed[next[lo]++] = (hi << 32) | (a < b ? 0U : std::uint64_t{1} << 31) | half;
-  });
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto first = filed.begin() + static_cast<std::ptrdiff_t>(start[v]);
-    const auto last = filed.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last);
-    for (auto i = first; i != last;) {
+  // end[v]: one past the last slot of vertex v's edges, counted down to its first slot while
+  // filing; end[vertices] is the total.
+  std::vector<std::uint32_t> end(vertices + 1, 0);
+  for (const TriangleIndices& v : triangles) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (v[k] != v[k == 2 ? 0 : k + 1])
+        ++end[static_cast<std::size_t>(std::min(v[k], v[k == 2 ? 0 : k + 1]))];
+    }
+  }
+  for (std::size_t v = 1; v <= vertices; ++v)
+    end[v] += end[v - 1];
+  std::vector<std::uint32_t> filed(end[vertices]);
+  for (std::size_t half = 3 * triangles.size(); half-- > 0;) {
+    const TriangleIndices& v = triangles[half / 3];
+    const std::size_t k = half % 3;
+    if (v[k] != v[k == 2 ? 0 : k + 1]) filed[--end[lower(half)]] = static_cast<std::uint32_t>(half);
+  }
+  std::vector<std::uint64_t> words;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    words.clear();
+    for (std::uint32_t i = end[v]; i < end[v + 1]; ++i) {
+      const std::size_t half = filed[i];
+      const TriangleIndices& t = triangles[half / 3];
+      const std::int32_t a = t[half % 3];
+      const std::int32_t b = t[half % 3 == 2 ? 0 : half % 3 + 1];
+      const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+      words.push_back((hi << 32) | (a < b ? 0U : std::uint64_t{1} << 31) | half);
+    }
+    std::sort(words.begin(), words.end());
+    for (auto i = words.begin(); i != words.end();) {
       const auto begin = i;
       const std::uint64_t upper = *i >> 32;
-      for (; i != last && (*i >> 32) == upper; ++i) {
+      for (; i != words.end() && (*i >> 32) == upper; ++i) {
       }
       if (!run(std::span<const std::uint64_t>(&*begin, static_cast<std::size_t>(i - begin))))
         return false;
@@ -136,7 +146,12 @@ std::optional<UnmatchedEdge> unmatched_edge(const WeldResult& weld) {
 }
 
 std::optional<std::vector<std::int32_t>> paired_half_edges(const Mesh& welded) {
-  std::vector<std::int32_t> twin(3 * welded.triangles.size(), -1);
+  return paired_half_edges(welded.triangles, welded.vertices.size());
+}
+
+std::optional<std::vector<std::int32_t>> paired_half_edges(
+    std::span<const TriangleIndices> triangles, std::size_t vertices) {
+  std::vector<std::int32_t> twin(3 * triangles.size(), -1);
   const auto pair = [&](std::span<const std::uint64_t> uses) {
     if (!balanced_run(uses)) return false;
     if (uses.size() == 2) {
@@ -150,7 +165,7 @@ std::optional<std::vector<std::int32_t>> paired_half_edges(const Mesh& welded) {
     }
     return true;
   };
-  if (!each_edge_run(welded.triangles, welded.vertices.size(), pair)) return std::nullopt;
+  if (!each_edge_run(triangles, vertices, pair)) return std::nullopt;
   return twin;
 }
 

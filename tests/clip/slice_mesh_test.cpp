@@ -473,7 +473,7 @@ TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
       std::vector<std::int32_t> active;
       for (const std::int32_t t : all) {
         const auto u = static_cast<std::size_t>(t);
-        if (prepared.low[u] <= c && c <= prepared.high[u] && prepared.low[u] < prepared.high[u])
+        if (prepared.low(u) <= c && c <= prepared.high(u) && prepared.low(u) < prepared.high(u))
           active.push_back(t);
       }
       return active;
@@ -512,7 +512,7 @@ TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
   std::vector<std::int32_t> all(prepared.triangles.size());
   std::iota(all.begin(), all.end(), 0);
   std::erase_if(all, [&](std::int32_t t) {
-    return prepared.low[static_cast<std::size_t>(t)] == prepared.high[static_cast<std::size_t>(t)];
+    return prepared.low(static_cast<std::size_t>(t)) == prepared.high(static_cast<std::size_t>(t));
   });
   clip::slice::WalkScratch scratch;
   std::vector<clip::slice::CrossingSegment> segments;
@@ -635,6 +635,37 @@ TEST(SliceMesh, AnswersAreTheSameWhateverTheThreadCountAndValueOrder) {
     EXPECT_EQ(one[i].triangles, two[i].triangles) << i;
     const Section alone = slice_one(torus, values[i], Axis::x);
     EXPECT_EQ(alone.region, one[i].region) << i;
+  }
+}
+
+// A mesh with repeated positions (a triangle soup: each triangle its own corners) is welded
+// before the sweep; one with distinct vertices is read in place. Both paths give the same answer,
+// bit for bit, when the second is handed the weld's own mesh (same vertex numbers), along each
+// axis (x and y convert the vertices to the frame, z does not).
+TEST(SliceMesh, ATriangleSoupIsSlicedAsItsWeldedMesh) {
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  Mesh soup;
+  for (const TriangleIndices& t : torus.triangles) {
+    const auto base = static_cast<std::int32_t>(soup.vertices.size());
+    for (const std::int32_t v : t)
+      soup.vertices.push_back(torus.vertices[static_cast<std::size_t>(v)]);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  ASSERT_FALSE(vertices_distinct(soup.vertices));
+  const Mesh welded = weld_vertices(soup).mesh;
+  ASSERT_TRUE(vertices_distinct(welded.vertices));
+  std::vector<double> values;
+  for (int i = 0; i < 30; ++i)
+    values.push_back(-2.5 + 0.17 * i);
+  for (const Axis axis : {Axis::x, Axis::y, Axis::z}) {
+    const std::vector<Section> from_soup = slice(soup, values, axis, 1);
+    const std::vector<Section> from_welded = slice(welded, values, axis, 1);
+    ASSERT_EQ(from_soup.size(), values.size());
+    ASSERT_EQ(from_welded.size(), values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      EXPECT_EQ(from_soup[i].region, from_welded[i].region) << i;
+      EXPECT_EQ(from_soup[i].triangles, from_welded[i].triangles) << i;
+    }
   }
 }
 

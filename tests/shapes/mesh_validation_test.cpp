@@ -292,5 +292,50 @@ TEST(MeshValidation, TorusSceneHasGenusOne) {
   EXPECT_TRUE(r.outward());
 }
 
+// vertices_distinct is the weld's question without the weld: it must agree with weld_vertices
+// (merged == 0) on every vertex list, with duplicates at any distance apart, +0 against -0, NaN
+// (equal to nothing) and many positions sharing coordinates.
+TEST(VerticesDistinct, AgreesWithTheWeldOnRandomListsWithAndWithoutDuplicates) {
+  std::mt19937_64 rng(2611);
+  std::uniform_int_distribution<int> small(-3, 3);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  int with = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Mesh m;
+    const int n = 1 + static_cast<int>(rng() % 3000);
+    // Coarse coordinates: at this count some lists repeat a position, some do not.
+    const double scale = trial % 2 == 0 ? 1.0 : 1e-3;
+    for (int i = 0; i < n; ++i) {
+      m.vertices.push_back(
+          {scale * small(rng) + (trial % 4 == 1 ? i : 0), scale * small(rng), scale * small(rng)});
+    }
+    if (trial % 5 == 0) m.vertices.push_back({nan, 0, 0});
+    if (trial % 7 == 0) m.vertices.push_back({nan, 0, 0});
+    if (trial % 3 == 0) m.vertices.push_back({-0.0, 0.0, -0.0});
+    if (trial % 6 == 0) m.vertices.push_back({0.0, -0.0, 0.0});
+    const bool distinct = weld_vertices(m).merged == 0;
+    with += distinct ? 0 : 1;
+    EXPECT_EQ(vertices_distinct(m.vertices), distinct) << "trial " << trial;
+  }
+  EXPECT_GT(with, 0);
+  EXPECT_LT(with, 400);
+}
+
+TEST(VerticesDistinct, SmallListsAndSignedZeros) {
+  EXPECT_TRUE(vertices_distinct({}));
+  EXPECT_TRUE(vertices_distinct(std::vector<Vec3>{{1, 2, 3}}));
+  EXPECT_TRUE(vertices_distinct(std::vector<Vec3>{{1, 2, 3}, {1, 2, 4}}));
+  EXPECT_FALSE(vertices_distinct(std::vector<Vec3>{{0.0, 1, 2}, {-0.0, 1, 2}}));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(vertices_distinct(std::vector<Vec3>{{nan, 1, 2}, {nan, 1, 2}}));
+  // The last vertex repeats the first, far apart in the list.
+  std::vector<Vec3> far;
+  for (int i = 0; i < 100000; ++i)
+    far.push_back({static_cast<double>(i), 0.5 * i, -0.25 * i});
+  EXPECT_TRUE(vertices_distinct(far));
+  far.push_back(far.front());
+  EXPECT_FALSE(vertices_distinct(far));
+}
+
 }  // namespace
 }  // namespace contain

@@ -50,6 +50,10 @@ struct UnmatchedEdge {
 /// alone: O(n) plus a sort of each vertex's few edges. Also nothing for a mesh of 2^31 / 3
 /// triangles or more, closed or not.
 [[nodiscard]] std::optional<std::vector<std::int32_t>> paired_half_edges(const Mesh& welded);
+/// The same for triangles on `vertices` welded vertices (numbers below it), held elsewhere (a
+/// mesh whose vertices `vertices_distinct` found welded already, not copied).
+[[nodiscard]] std::optional<std::vector<std::int32_t>> paired_half_edges(
+    std::span<const TriangleIndices> triangles, std::size_t vertices);
 
 }  // namespace contain::shapes
 

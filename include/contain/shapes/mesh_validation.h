@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -86,12 +87,17 @@ struct WeldResult {
 /// vertices are kept (welded like the others). O(n log n).
 [[nodiscard]] WeldResult weld_vertices(const Mesh& mesh);
 
+/// True when no two vertices have equal coordinates (as `weld_vertices` compares them), that is
+/// when `weld_vertices` would merge none and return the mesh unchanged. O(n).
+[[nodiscard]] bool vertices_distinct(std::span<const Vec3> vertices);
+
 }  // namespace contain::shapes
 
 // Users and every layer above spell these names contain::X (docs/architecture.md, "Namespaces").
 namespace contain {
 using shapes::MeshReport;
 using shapes::validate_mesh;
+using shapes::vertices_distinct;
 using shapes::weld_vertices;
 using shapes::WeldResult;
 }  // namespace contain

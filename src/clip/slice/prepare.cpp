@@ -2,6 +2,8 @@
 // the pairing of their half-edges, and the triangles each plane of the sweep brings in.
 
 #include <algorithm>
+#include <optional>
+#include <span>
 #include <utility>
 
 #include "clip/slice/stages.h"
@@ -15,33 +17,57 @@ Frame frame_of(Axis axis) {
   return {k, (k + 1) % 3, (k + 2) % 3};
 }
 
-SweepMesh prepare(const Mesh& mesh, const Frame& frame) {
-  Mesh welded = weld_vertices(mesh).mesh;
-  std::optional<std::vector<std::int32_t>> twin = paired_half_edges(welded);
-  if (!twin) twin.emplace(3 * welded.triangles.size(), -1);
-  return prepare_welded(std::move(welded), frame, std::move(*twin));
-}
+namespace {
 
-SweepMesh prepare_welded(Mesh welded, const Frame& frame, std::vector<std::int32_t> twin) {
+// The mesh welded and in the frame, its half-edges not paired yet. The weld, and the copies it
+// makes, are skipped when the vertices are distinct already (an OFF or OBJ file indexes its
+// vertices): at 524k triangles the copies and their page faults cost as much as the sweep.
+SweepMesh framed(const Mesh& mesh, const Frame& frame) {
   SweepMesh out;
   out.frame = frame;
-  out.vertices.reserve(welded.vertices.size());
-  for (const Vec3& p : welded.vertices)
-    out.vertices.push_back({coord(p, frame.u), coord(p, frame.v), coord(p, frame.k)});
-  out.triangles = std::move(welded.triangles);
-  out.twin = std::move(twin);
-  const std::size_t n = out.triangles.size();
-  out.low.resize(n);
-  out.high.resize(n);
-  for (std::size_t t = 0; t < n; ++t) {
-    const TriangleIndices& tri = out.triangles[t];
-    const double a = out.vertices[static_cast<std::size_t>(tri[0])].z;
-    const double b = out.vertices[static_cast<std::size_t>(tri[1])].z;
-    const double c = out.vertices[static_cast<std::size_t>(tri[2])].z;
-    out.low[t] = std::min({a, b, c});
-    out.high[t] = std::max({a, b, c});
+  std::span<const Vec3> vertices = mesh.vertices;
+  out.triangles = mesh.triangles;
+  if (!vertices_distinct(mesh.vertices)) {
+    WeldResult weld = weld_vertices(mesh);
+    out.own_vertices = std::move(weld.mesh.vertices);
+    out.own_triangles = std::move(weld.mesh.triangles);
+    vertices = out.own_vertices;
+    out.triangles = out.own_triangles;
   }
+  if (frame.k != 2) {  // (u, v, k) = (x, y, z) for the axis z: no copy then
+    std::vector<Vec3> moved;
+    moved.reserve(vertices.size());
+    for (const Vec3& p : vertices)
+      moved.push_back({coord(p, frame.u), coord(p, frame.v), coord(p, frame.k)});
+    out.own_vertices = std::move(moved);
+    vertices = out.own_vertices;
+  }
+  out.vertices = vertices;
   return out;
+}
+
+}  // namespace
+
+SweepMesh prepare(const Mesh& mesh, const Frame& frame) {
+  SweepMesh out = framed(mesh, frame);
+  std::optional<std::vector<std::int32_t>> twin =
+      paired_half_edges(out.triangles, out.vertices.size());
+  out.twin = twin ? std::move(*twin) : std::vector<std::int32_t>(3 * out.triangles.size(), -1);
+  return out;
+}
+
+// The closedness test pairs the half-edges on the way (the walk of walk.cpp follows them); only
+// an open mesh, or one too large to pair, runs the search that names an edge.
+Status prepare_closed(const Mesh& mesh, const Frame& frame, SweepMesh& out) {
+  out = framed(mesh, frame);
+  std::optional<std::vector<std::int32_t>> twin =
+      paired_half_edges(out.triangles, out.vertices.size());
+  if (!twin) {
+    if (Status closed = require_closed(weld_vertices(mesh)); !closed) return closed;
+    twin.emplace(3 * out.triangles.size(), -1);
+  }
+  out.twin = std::move(*twin);
+  return Ok{};
 }
 
 namespace {
@@ -72,9 +98,11 @@ SweepStarts sweep_starts(const SweepMesh& mesh, std::span<const double> sorted) 
   out.start.assign(sorted.size() + 2, 0);
   for (std::size_t t = 0; t < n; ++t) {
     std::size_t i = sorted.size();
-    if (mesh.low[t] < mesh.high[t]) {
-      i = first_at_or_above(sorted, mesh.low[t]);
-      if (i < sorted.size() && sorted[i] > mesh.high[t]) i = sorted.size();
+    const double low = mesh.low(t);
+    const double high = mesh.high(t);
+    if (low < high) {
+      i = first_at_or_above(sorted, low);
+      if (i < sorted.size() && sorted[i] > high) i = sorted.size();
     }
     first[t] = i;
     ++out.start[i + 1];

@@ -48,16 +48,9 @@ Result<std::vector<Section>> slice_mesh(const Mesh& mesh, std::span<const double
                    "plane value " + std::to_string(i) + " is not a finite number"};
     }
   }
-  WeldResult weld = weld_vertices(mesh);
-  // The closedness test pairs the half-edges on the way (the walk of walk.cpp follows them);
-  // only an open mesh, or one too large to pair, runs the search that names an edge.
-  std::optional<std::vector<std::int32_t>> twin = paired_half_edges(weld.mesh);
-  if (!twin) {
-    if (Status closed = slice::require_closed(weld); !closed) return closed.error();
-    twin.emplace(3 * weld.mesh.triangles.size(), -1);
-  }
-  const slice::SweepMesh prepared =
-      slice::prepare_welded(std::move(weld.mesh), slice::frame_of(options.axis), std::move(*twin));
+  slice::SweepMesh prepared;
+  if (Status closed = slice::prepare_closed(mesh, slice::frame_of(options.axis), prepared); !closed)
+    return closed.error();
   std::vector<std::size_t> order(values.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),

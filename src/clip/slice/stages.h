@@ -40,25 +40,53 @@ struct Frame {
 
 /// Ok, or `ErrorKind::degenerate` naming one directed edge (by position) that occurs more often
 /// than its reverse: an open mesh has no winding number off its surface. `weld` is
-/// `weld_vertices(mesh)`, which the sweep goes on to use (the mesh is welded once).
+/// `weld_vertices(mesh)`.
 [[nodiscard]] Status require_closed(const WeldResult& weld);
 
 /// The mesh as the sweep reads it: vertices welded by position (closedness and chaining judge
 /// vertices by position), each as its coordinates (u, v, axis) in x, y, z, so that the sweep
-/// reads heights and section coordinates without the frame; triangles in file order, their
-/// extents along the axis, and the pairing of their half-edges (`shapes::paired_half_edges`: -1
-/// off manifold edges, everywhere when not given).
+/// reads heights and section coordinates without the frame; triangles in file order, and the
+/// pairing of their half-edges (`shapes::paired_half_edges`: -1 off manifold edges, everywhere
+/// when not given). `vertices` and `triangles` are the input mesh's own when it needs no weld
+/// (distinct vertices; and for the axis z, where the frame is the identity, no copy of the
+/// vertices either), else they view `own_vertices` and `own_triangles`: the prepared mesh refers
+/// to the input, which must outlive it, and is moved, never copied (a copy would view the
+/// original's vectors).
 struct SweepMesh {
   Frame frame;
-  std::vector<Vec3> vertices;
-  std::vector<TriangleIndices> triangles;
-  std::vector<double> low, high;   // per triangle, along the axis
+  std::span<const Vec3> vertices;
+  std::span<const TriangleIndices> triangles;
   std::vector<std::int32_t> twin;  // per half-edge 3t + i
+  std::vector<Vec3> own_vertices;
+  std::vector<TriangleIndices> own_triangles;
+
+  SweepMesh() = default;
+  SweepMesh(SweepMesh&&) = default;
+  SweepMesh& operator=(SweepMesh&&) = default;
+  SweepMesh(const SweepMesh&) = delete;
+  SweepMesh& operator=(const SweepMesh&) = delete;
+  ~SweepMesh() = default;
+
+  /// Triangle t's extent along the axis (computed, not stored: the sweep asks for few).
+  [[nodiscard]] double low(std::size_t t) const {
+    const TriangleIndices& v = triangles[t];
+    return std::min({height(v[0]), height(v[1]), height(v[2])});
+  }
+  [[nodiscard]] double high(std::size_t t) const {
+    const TriangleIndices& v = triangles[t];
+    return std::max({height(v[0]), height(v[1]), height(v[2])});
+  }
+
+ private:
+  [[nodiscard]] double height(std::int32_t v) const {
+    return vertices[static_cast<std::size_t>(v)].z;
+  }
 };
-[[nodiscard]] SweepMesh prepare_welded(Mesh welded, const Frame& frame,
-                                       std::vector<std::int32_t> twin);
-/// The same from a mesh not yet welded.
+/// The mesh welded and in the frame, its half-edges paired, whether or not it is closed (-1
+/// everywhere when it is not).
 [[nodiscard]] SweepMesh prepare(const Mesh& mesh, const Frame& frame);
+/// The same for a closed mesh, in `out`; else `require_closed`'s error.
+[[nodiscard]] Status prepare_closed(const Mesh& mesh, const Frame& frame, SweepMesh& out);
 
 /// The triangles that cross some plane of the sweep (not flat along the axis, and a plane value
 /// in [low, high]), grouped by the first plane they reach: `triangles[start[i]]` to

@@ -69,7 +69,7 @@ void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const dou
   if (begin < end) {
     for (std::size_t i = 0; i < begin; ++i) {
       for (const std::int32_t t : entering(i)) {
-        if (mesh.high[static_cast<std::size_t>(t)] >= sorted[begin]) active.push_back(t);
+        if (mesh.high(static_cast<std::size_t>(t)) >= sorted[begin]) active.push_back(t);
       }
     }
   }
@@ -81,7 +81,7 @@ void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const dou
     // order of `active` then depends on where this thread's run of planes began, but no answer
     // depends on it (walk_curve, chain_rings, edge_triangles).
     std::erase_if(active,
-                  [&](std::int32_t t) { return mesh.high[static_cast<std::size_t>(t)] < c; });
+                  [&](std::int32_t t) { return mesh.high(static_cast<std::size_t>(t)) < c; });
     out[order[i]] = section_at(mesh, active, c, scratch);
   }
 }
