@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contain/bvh/triangle_boxes.h"
+#include "contain/core/radix_sort.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
@@ -20,9 +21,11 @@
 
 // Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  validate_mesh             the report, which picks the regime (not closed: winding number);
-//  read_triangles            vertices, ray-crossing signs and float boxes of the triangles;
+//  read_triangles            winding regime: vertices, ray-crossing signs and float boxes of
+//                            the triangles;
 //  grid_size                 exact regime: cells from the triangle count and the box's shape;
-//  sort_triangles_by_cell    triangles in the order of their boxes' low cells (memory locality);
+//  read_triangles_by_cell    the same records, in the order of their boxes' low cells (memory
+//                            locality; a stable radix sort);
 //  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
 //                            comparisons; big triangles tested against each cell's box along
 //                            their normal) -> surface cells and their triangle lists;
@@ -199,8 +202,12 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
     stats_.triangles = mesh.triangles.size();
     return true;
   }
-  read_triangles(mesh);
-  const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
+  // The triangles' boxes give the bounds and the grid, then the records in cell order, made
+  // once in that order (no second array of them to permute).
+  const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
+  for (const Box3& b : boxes)
+    bounds_.expand(b);
+  const std::array<int, 3> n = grid_size(bounds_, boxes.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
   z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
@@ -212,7 +219,7 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   stats_.nx = nx_;
   stats_.ny = ny_;
   stats_.nz = nz_;
-  list_triangles_by_cell(sort_triangles_by_cell(bvh::triangle_boxes(mesh)));
+  list_triangles_by_cell(read_triangles_by_cell(mesh, boxes));
   settle_empty_cells();
   return false;
 }
@@ -240,26 +247,31 @@ void MeshIndex::read_triangles(const Mesh& mesh) {
   stats_.triangles = tris_.size();
 }
 
-// Triangles in the order of the cell of their box's low corner (rows along x are contiguous): a
-// query's run along a row then reads triangles that lie close together in memory.
-std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& boxes) {
-  std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
-  for (std::size_t t = 0; t < tris_.size(); ++t) {
+// Triangles in the order of the cell of their box's low corner (rows along x are contiguous), in
+// mesh order within a cell: a query's run along a row then reads triangles that lie close
+// together in memory. Returns their boxes in that order.
+std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
+                                                    const std::vector<Box3>& boxes) {
+  const std::size_t n = boxes.size();
+  std::vector<std::uint64_t> cells(n);
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t t = 0; t < n; ++t) {
     const Vec3 lo = boxes[t].min;
     const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
     const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
     const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
-    order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
-                static_cast<std::uint32_t>(t)};
+    cells[t] = (k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i;
+    order[t] = static_cast<std::uint32_t>(t);
   }
-  std::sort(order.begin(), order.end());
-  std::vector<Tri> sorted_tris(tris_.size());
-  std::vector<Box3> sorted_boxes(tris_.size());
-  for (std::size_t t = 0; t < order.size(); ++t) {
-    sorted_tris[t] = tris_[order[t].second];
-    sorted_boxes[t] = boxes[order[t].second];
+  stable_radix_sort(cells, order, static_cast<unsigned>(std::bit_width(stats_.cells)));
+  tris_.reserve(n);
+  std::vector<Box3> sorted_boxes(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    const TriangleIndices& t = mesh.triangles[order[s]];
+    tris_.push_back(make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2])));
+    sorted_boxes[s] = boxes[order[s]];
   }
-  tris_ = std::move(sorted_tris);
+  stats_.triangles = n;
   return sorted_boxes;
 }
 
@@ -268,7 +280,9 @@ std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& box
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
   std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
-  pairs.reserve(4 * boxes.size());
+  // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
+  // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
+  pairs.reserve(8 * boxes.size());
   for (std::size_t t = 0; t < boxes.size(); ++t) {
     const Box3& b = boxes[t];
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
@@ -418,9 +432,10 @@ namespace {
 // Whether the closed box of triangle (a, b, c) meets the closed ray from p along +x: a triangle
 // it misses neither holds p nor is crossed by the perturbed ray (exact comparisons).
 bool box_meets_ray(Vec3 a, Vec3 b, Vec3 c, Vec3 p) {
-  return !((p.x > std::max({a.x, b.x, c.x})) | (p.y < std::min({a.y, b.y, c.y})) |
-           (p.y > std::max({a.y, b.y, c.y})) | (p.z < std::min({a.z, b.z, c.z})) |
-           (p.z > std::max({a.z, b.z, c.z})));
+  const double x_hi = std::max({a.x, b.x, c.x});
+  const double y_lo = std::min({a.y, b.y, c.y}), y_hi = std::max({a.y, b.y, c.y});
+  const double z_lo = std::min({a.z, b.z, c.z}), z_hi = std::max({a.z, b.z, c.z});
+  return !((p.x > x_hi) | (p.y < y_lo) | (p.y > y_hi) | (p.z < z_lo) | (p.z > z_hi));
 }
 
 }  // namespace

@@ -170,7 +170,8 @@ class MeshIndex {
   // Construction, stage by stage (mesh_index.cpp).
   [[nodiscard]] bool prepare(const Mesh& mesh, const MeshIndexOptions& options);
   void read_triangles(const Mesh& mesh);
-  [[nodiscard]] std::vector<Box3> sort_triangles_by_cell(const std::vector<Box3>& boxes);
+  [[nodiscard]] std::vector<Box3> read_triangles_by_cell(const Mesh& mesh,
+                                                         const std::vector<Box3>& boxes);
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
   void settle_empty_cells();
 
