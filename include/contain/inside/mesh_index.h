@@ -108,7 +108,8 @@ class MeshIndex {
   MeshIndex() = default;
   /// Prepares `mesh` (validated: finite coordinates, indices in range; any topology).
   explicit MeshIndex(const Mesh& mesh, const MeshIndexOptions& options = {});
-  /// The same, taking `mesh` over where the index keeps the mesh itself (few queries: no copy).
+  /// The same; where the index keeps the mesh itself (the exact regime for few queries) it takes
+  /// `mesh` over instead of copying it, else `mesh` is left as it was.
   explicit MeshIndex(Mesh&& mesh, const MeshIndexOptions& options = {});
 
   /// Where `point` lies.
