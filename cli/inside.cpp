@@ -108,7 +108,7 @@ int run_mesh(const InsideOptions& o) {
   if (!file) return report(file.error());
   enter_phase(Phase::prepare);
   // Few points: no grid (the index's cost model; the answers are the same).
-  const inside::MeshIndex index(file->mesh, {.queries = most_points(o.points)});
+  const inside::MeshIndex index(std::move(file->mesh), {.queries = most_points(o.points)});
   enter_phase(Phase::read);
   auto locations = locate_streamed<Vec3>(index, o, io::read_points3_chunked);
   if (!locations) return report(locations.error());

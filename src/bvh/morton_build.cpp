@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
+#include "contain/core/radix_sort.h"
 
 namespace contain::bvh {
 namespace {
@@ -47,32 +48,6 @@ struct Grid {
     return f >= 0.0 ? static_cast<std::uint64_t>(std::min(f, last)) : 0;  // NaN -> 0
   }
 };
-
-// Stable LSD radix sort of (key, item) by key, 11 bits a pass; a pass whose digit is the same
-// for every key is skipped.
-void sort_by_code(std::vector<std::uint64_t>& keys, std::vector<std::int32_t>& items) {
-  constexpr unsigned digit_bits = 11;
-  constexpr std::size_t buckets = std::size_t{1} << digit_bits;
-  const std::size_t n = keys.size();
-  std::vector<std::uint64_t> keys_out(n);
-  std::vector<std::int32_t> items_out(n);
-  std::vector<std::size_t> start(buckets + 1);
-  for (unsigned shift = 0; shift < 3 * kBitsPerAxis; shift += digit_bits) {
-    std::fill(start.begin(), start.end(), 0);
-    for (const std::uint64_t k : keys)
-      ++start[((k >> shift) & (buckets - 1)) + 1];
-    if (std::find(start.begin(), start.end(), n) != start.end()) continue;
-    for (std::size_t b = 1; b <= buckets; ++b)
-      start[b] += start[b - 1];
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t at = start[(keys[i] >> shift) & (buckets - 1)]++;
-      keys_out[at] = keys[i];
-      items_out[at] = items[i];
-    }
-    keys.swap(keys_out);
-    items.swap(items_out);
-  }
-}
 
 struct MortonBuilder {
   std::span<const Box3> boxes;
@@ -138,7 +113,7 @@ void Bvh::build_morton(std::span<const Box3> boxes, const BuildOptions& options)
     codes[i] = spread(gx.cell(c.x)) << 2U | spread(gy.cell(c.y)) << 1U | spread(gz.cell(c.z));
     items_[i] = static_cast<std::int32_t>(i);
   }
-  sort_by_code(codes, items_);
+  stable_radix_sort(codes, items_, 3 * kBitsPerAxis);
   nodes_.reserve(2 * n);
   nodes_.emplace_back();
   MortonBuilder builder{boxes, codes, items_, nodes_,

@@ -6,8 +6,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include "contain/bvh/triangle_boxes.h"
+#include "contain/core/radix_sort.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
@@ -17,9 +21,11 @@
 
 // Construction, stage by stage (derivation in mesh_index.h and predicates/perturbed_ray.h):
 //  validate_mesh             the report, which picks the regime (not closed: winding number);
-//  read_triangles            vertices, ray-crossing signs and float boxes of the triangles;
+//  read_triangles            winding regime: vertices, ray-crossing signs and float boxes of
+//                            the triangles;
 //  grid_size                 exact regime: cells from the triangle count and the box's shape;
-//  sort_triangles_by_cell    triangles in the order of their boxes' low cells (memory locality);
+//  read_triangles_by_cell    the same records, in the order of their boxes' low cells (memory
+//                            locality; a stable radix sort);
 //  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
 //                            comparisons; big triangles tested against each cell's box along
 //                            their normal) -> surface cells and their triangle lists;
@@ -168,19 +174,40 @@ const char* to_string(MeshRegime regime) {
 
 MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
     : report_(validate_mesh(mesh)) {
-  read_triangles(mesh);
+  if (prepare(mesh, options)) mesh_ = mesh;
+}
+
+MeshIndex::MeshIndex(Mesh&& mesh, const MeshIndexOptions& options) : report_(validate_mesh(mesh)) {
+  if (prepare(mesh, options)) mesh_ = std::move(mesh);
+}
+
+// Everything but keeping the mesh, which the caller does (copied or moved) where this returns
+// true: the exact regime without a grid.
+bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   // The solid's closedness (every directed edge matched, by position) gives a winding number;
   // two triangles on every edge without it, ray parity (solid_rule.h).
   const SolidRule rule = solid_rule(mesh, report_);
   if (rule == SolidRule::none) {
+    read_triangles(mesh);
     regime_ = MeshRegime::winding_number;
     winding_ = FastWindingNumber(mesh, {.accuracy = options.winding_accuracy});
-    return;
+    return false;
   }
   regime_ = MeshRegime::closed_exact;
   by_parity_ = rule == SolidRule::parity;
-  if (tris_.empty() || few_queries(options.queries)) return;  // no grid: locate_direct
-  const std::array<int, 3> n = grid_size(bounds_, tris_.size(), options);
+  if (few_queries(options.queries)) {  // no grid, no records: locate_direct reads the mesh
+    for (const TriangleIndices& t : mesh.triangles)
+      for (const std::int32_t v : t)
+        bounds_.expand(mesh.vertex(v));
+    stats_.triangles = mesh.triangles.size();
+    return true;
+  }
+  // The triangles' boxes give the bounds and the grid, then the records in cell order, made
+  // once in that order (no second array of them to permute).
+  const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
+  for (const Box3& b : boxes)
+    bounds_.expand(b);
+  const std::array<int, 3> n = grid_size(bounds_, boxes.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
   z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
@@ -192,21 +219,26 @@ MeshIndex::MeshIndex(const Mesh& mesh, const MeshIndexOptions& options)
   stats_.nx = nx_;
   stats_.ny = ny_;
   stats_.nz = nz_;
-  list_triangles_by_cell(sort_triangles_by_cell(bvh::triangle_boxes(mesh)));
+  list_triangles_by_cell(read_triangles_by_cell(mesh, boxes));
   settle_empty_cells();
+  return false;
+}
+
+MeshIndex::Tri MeshIndex::make_tri(Vec3 a, Vec3 b, Vec3 c) {
+  Tri tri{a, b, c, {}, {}, predicates::projected_sign(a, b, c)};
+  tri.lo[0] = float_below(std::min({a.x, b.x, c.x}));
+  tri.lo[1] = float_below(std::min({a.y, b.y, c.y}));
+  tri.lo[2] = float_below(std::min({a.z, b.z, c.z}));
+  tri.hi[0] = float_above(std::max({a.x, b.x, c.x}));
+  tri.hi[1] = float_above(std::max({a.y, b.y, c.y}));
+  tri.hi[2] = float_above(std::max({a.z, b.z, c.z}));
+  return tri;
 }
 
 void MeshIndex::read_triangles(const Mesh& mesh) {
   tris_.reserve(mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles) {
-    Tri tri{mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2]), {}, {}, Sign::zero};
-    tri.s = predicates::projected_sign(tri.a, tri.b, tri.c);
-    tri.lo[0] = float_below(std::min({tri.a.x, tri.b.x, tri.c.x}));
-    tri.lo[1] = float_below(std::min({tri.a.y, tri.b.y, tri.c.y}));
-    tri.lo[2] = float_below(std::min({tri.a.z, tri.b.z, tri.c.z}));
-    tri.hi[0] = float_above(std::max({tri.a.x, tri.b.x, tri.c.x}));
-    tri.hi[1] = float_above(std::max({tri.a.y, tri.b.y, tri.c.y}));
-    tri.hi[2] = float_above(std::max({tri.a.z, tri.b.z, tri.c.z}));
+    const Tri tri = make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2]));
     bounds_.expand(tri.a);
     bounds_.expand(tri.b);
     bounds_.expand(tri.c);
@@ -215,26 +247,31 @@ void MeshIndex::read_triangles(const Mesh& mesh) {
   stats_.triangles = tris_.size();
 }
 
-// Triangles in the order of the cell of their box's low corner (rows along x are contiguous): a
-// query's run along a row then reads triangles that lie close together in memory.
-std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& boxes) {
-  std::vector<std::pair<std::size_t, std::uint32_t>> order(tris_.size());
-  for (std::size_t t = 0; t < tris_.size(); ++t) {
+// Triangles in the order of the cell of their box's low corner (rows along x are contiguous), in
+// mesh order within a cell: a query's run along a row then reads triangles that lie close
+// together in memory. Returns their boxes in that order.
+std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
+                                                    const std::vector<Box3>& boxes) {
+  const std::size_t n = boxes.size();
+  std::vector<std::uint64_t> cells(n);
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t t = 0; t < n; ++t) {
     const Vec3 lo = boxes[t].min;
     const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
     const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
     const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
-    order[t] = {(k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i,
-                static_cast<std::uint32_t>(t)};
+    cells[t] = (k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i;
+    order[t] = static_cast<std::uint32_t>(t);
   }
-  std::sort(order.begin(), order.end());
-  std::vector<Tri> sorted_tris(tris_.size());
-  std::vector<Box3> sorted_boxes(tris_.size());
-  for (std::size_t t = 0; t < order.size(); ++t) {
-    sorted_tris[t] = tris_[order[t].second];
-    sorted_boxes[t] = boxes[order[t].second];
+  stable_radix_sort(cells, order, static_cast<unsigned>(std::bit_width(stats_.cells)));
+  tris_.reserve(n);
+  std::vector<Box3> sorted_boxes(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    const TriangleIndices& t = mesh.triangles[order[s]];
+    tris_.push_back(make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2])));
+    sorted_boxes[s] = boxes[order[s]];
   }
-  tris_ = std::move(sorted_tris);
+  stats_.triangles = n;
   return sorted_boxes;
 }
 
@@ -243,7 +280,9 @@ std::vector<Box3> MeshIndex::sort_triangles_by_cell(const std::vector<Box3>& box
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
   std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
-  pairs.reserve(4 * boxes.size());
+  // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
+  // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
+  pairs.reserve(8 * boxes.size());
   for (std::size_t t = 0; t < boxes.size(); ++t) {
     const Box3& b = boxes[t];
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
@@ -367,7 +406,7 @@ Location MeshIndex::locate(Vec3 p) const {
 
 Location MeshIndex::locate_exact(Vec3 p) const {
   if (!bounds_.contains(p)) return Location::outside;
-  if (state_.empty()) return locate_direct(p);
+  if (state_.empty()) return locate_direct(p);  // few queries: no grid
   const int i = x_.cell_of(p.x);
   const int j = y_.cell_of(p.y);
   const int k = z_.cell_of(p.z);
@@ -388,32 +427,46 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   return inside_by_count(count_run(p, row, i, true)) ? Location::inside : Location::outside;
 }
 
-// Without a grid (few queries): every triangle, the same tests. A triangle whose box misses the
-// closed ray from p neither holds p nor is crossed.
+namespace {
+
+// Whether the closed box of triangle (a, b, c) meets the closed ray from p along +x: a triangle
+// it misses neither holds p nor is crossed by the perturbed ray (exact comparisons).
+bool box_meets_ray(Vec3 a, Vec3 b, Vec3 c, Vec3 p) {
+  const double x_hi = std::max({a.x, b.x, c.x});
+  const double y_lo = std::min({a.y, b.y, c.y}), y_hi = std::max({a.y, b.y, c.y});
+  const double z_lo = std::min({a.z, b.z, c.z}), z_hi = std::max({a.z, b.z, c.z});
+  return !((p.x > x_hi) | (p.y < y_lo) | (p.y > y_hi) | (p.z < z_lo) | (p.z > z_hi));
+}
+
+}  // namespace
+
+// Without a grid (few queries): every triangle of the mesh, the tests of the grid's queries.
 Location MeshIndex::locate_direct(Vec3 p) const {
   int count = 0;
-  for (const Tri& t : tris_) {
-    if ((p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) | (p.z > t.hi[2])) {
-      continue;
+  for (const TriangleIndices& t : mesh_.triangles) {
+    const Vec3 a = mesh_.vertex(t[0]), b = mesh_.vertex(t[1]), c = mesh_.vertex(t[2]);
+    if (!box_meets_ray(a, b, c, p)) continue;
+    if (predicates::orient3d(a, b, c, p) == Sign::zero &&
+        point_in_triangle(Triangle3{a, b, c}, p) != Location::outside) {
+      return by_parity_ ? Location::boundary : locate_direct_on_surface(p);
     }
-    if (on_triangle(t, p)) {
-      if (by_parity_) return Location::boundary;
-      std::vector<std::uint32_t> near;
-      for (std::uint32_t u = 0; u < tris_.size(); ++u) {
-        const Tri& v = tris_[u];
-        if (!((p.x > v.hi[0]) | (p.y < v.lo[1]) | (p.y > v.hi[1]) | (p.z < v.lo[2]) |
-              (p.z > v.hi[2]))) {
-          near.push_back(u);
-        }
-      }
-      return classify_on_surface(p, near);
-    }
-    if (t.s != Sign::zero && predicates::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, p) &&
-        predicates::hit_side(t.a, t.b, t.c, t.s, p) > 0) {
-      count += to_int(t.s);
+    const Sign s = predicates::projected_sign(a, b, c);
+    if (s != Sign::zero && predicates::perturbed_line_hits_unboxed(a, b, c, s, p) &&
+        predicates::hit_side(a, b, c, s, p) > 0) {
+      count += to_int(s);
     }
   }
   return inside_by_count(count) ? Location::inside : Location::outside;
+}
+
+// p on the surface, without a grid: every triangle whose box meets the closed ray from p.
+Location MeshIndex::locate_direct_on_surface(Vec3 p) const {
+  std::vector<Triangle3> near;
+  for (const TriangleIndices& t : mesh_.triangles) {
+    const Vec3 a = mesh_.vertex(t[0]), b = mesh_.vertex(t[1]), c = mesh_.vertex(t[2]);
+    if (box_meets_ray(a, b, c, p)) near.push_back({a, b, c});
+  }
+  return classify_near(p, near);
 }
 
 // A point on some triangle: the solid near it (inside/mesh_ray.h). Every triangle that the ray
@@ -452,12 +505,19 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
 
 // p on the surface, `near` every triangle that the ray from a sample near p may meet.
 Location MeshIndex::classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const {
+  std::vector<Triangle3> corners;
+  corners.reserve(near.size());
+  for (const std::uint32_t t : near)
+    corners.push_back({tris_[t].a, tris_[t].b, tris_[t].c});
+  return classify_near(p, corners);
+}
+
+Location MeshIndex::classify_near(Vec3 p, std::span<const Triangle3> near) const {
   detail::MeshRay ray(p);
   std::vector<Triangle3> star;  // the triangles through p
-  for (const std::uint32_t t : near) {
-    const Tri& tri = tris_[t];
-    ray.add(tri.a, tri.b, tri.c);
-    if (detail::face_through(tri.a, tri.b, tri.c, p)) star.push_back({tri.a, tri.b, tri.c});
+  for (const Triangle3& t : near) {
+    ray.add(t.a, t.b, t.c);
+    if (detail::face_through(t.a, t.b, t.c, p)) star.push_back(t);
   }
   return detail::classify_surface_point(star, p, ray,
                                         [&](int count) { return inside_by_count(count); });

@@ -26,6 +26,7 @@ struct MeshIndexFile {
   static Result<MeshIndex> read(index_bytes::Reader& r);
   static Status check_triangles(MeshIndex& index);
   static Mesh soup(const MeshIndex& index);
+  static std::vector<MeshIndex::Tri> direct_records(const MeshIndex& index);
   static Result<MeshIndex> read_grid(MeshIndex index, index_bytes::View<std::uint32_t> surface,
                                      index_bytes::View<std::uint32_t> refs);
   static std::uint64_t fingerprint(const MeshIndex& index);
@@ -76,10 +77,13 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   static_assert(sizeof(MeshIndex::Tri) == 104 && offsetof(MeshIndex::Tri, lo) == 72 &&
                     offsetof(MeshIndex::Tri, s) == 96,
                 "MeshIndex::Tri changed: update mesh_index_file.cpp and index_format_version");
-  // Member by member into zeroed records: the file never holds the padding's stale bytes.
-  std::vector<MeshIndex::Tri> tris(index.tris_.size());
+  // Member by member into zeroed records: the file never holds the padding's stale bytes. An
+  // index for few queries keeps the mesh instead: its records are made for the file.
+  const std::vector<MeshIndex::Tri> direct = direct_records(index);
+  const std::vector<MeshIndex::Tri>& source = index.mesh_.triangles.empty() ? index.tris_ : direct;
+  std::vector<MeshIndex::Tri> tris(source.size());
   for (std::size_t t = 0; t < tris.size(); ++t) {
-    const MeshIndex::Tri& from = index.tris_[t];
+    const MeshIndex::Tri& from = source[t];
     MeshIndex::Tri& to = tris[t];
     to.a = from.a;
     to.b = from.b;
@@ -159,6 +163,9 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
         !surface.empty()) {
       return bad("an index without a grid holds part of one");
     }
+    // Without a grid the index reads a mesh (locate_direct): the triangles', three corners each.
+    index.mesh_ = soup(index);
+    index.tris_.clear();
     return index;
   }
   const Box3& b = index.bounds_;
@@ -233,11 +240,26 @@ Mesh MeshIndexFile::soup(const MeshIndex& index) {
   return mesh;
 }
 
+// The records of an index for few queries, which keeps the mesh instead (none otherwise).
+std::vector<MeshIndex::Tri> MeshIndexFile::direct_records(const MeshIndex& index) {
+  std::vector<MeshIndex::Tri> tris;
+  tris.reserve(index.mesh_.triangles.size());
+  for (const TriangleIndices& t : index.mesh_.triangles) {
+    tris.push_back(MeshIndex::make_tri(index.mesh_.vertex(t[0]), index.mesh_.vertex(t[1]),
+                                       index.mesh_.vertex(t[2])));
+  }
+  return tris;
+}
+
 std::uint64_t MeshIndexFile::fingerprint(const MeshIndex& index) {
   std::uint64_t sum = 0;
   for (const MeshIndex::Tri& t : index.tris_)
     sum += index_bytes::hash_triangle(t.a, t.b, t.c);
-  return index_bytes::finish_fingerprint(sum, index.tris_.size());
+  for (const TriangleIndices& t : index.mesh_.triangles) {
+    sum += index_bytes::hash_triangle(index.mesh_.vertex(t[0]), index.mesh_.vertex(t[1]),
+                                      index.mesh_.vertex(t[2]));
+  }
+  return index_bytes::finish_fingerprint(sum, index.tris_.size() + index.mesh_.triangles.size());
 }
 
 std::uint64_t fingerprint(const MeshIndex& index) {

@@ -81,6 +81,42 @@ TEST(GridAxis, CellOfMatchesAScanOfTheLinesWhateverTheGuess) {
   }
 }
 
+// The oracle of cells_meeting: scans for the first cell whose upper line is >= lo and the last
+// whose lower line is <= hi, clamped into the grid.
+std::pair<int, int> scanned_meeting(const GridAxis& axis, double lo, double hi) {
+  const auto lines = axis.lines();
+  int first = axis.cells() - 1, last = 0;
+  for (int i = axis.cells() - 1; i >= 0; --i)
+    if (lines[static_cast<std::size_t>(i) + 1] >= lo) first = i;
+  for (int i = 0; i < axis.cells(); ++i)
+    if (lines[static_cast<std::size_t>(i)] <= hi) last = i;
+  return {first, last};
+}
+
+TEST(GridAxis, CellsMeetingMatchesAScanOfTheLinesOnAndBesideEveryLine) {
+  // The guessed cells are taken only where exact comparisons prove them: values on the lines,
+  // one ulp beside them, beyond the ends, and grids with repeated lines (empty cells).
+  for (const auto& [lo, hi, n] :
+       std::vector<std::tuple<double, double, int>>{{0.0, 1.0, 13},
+                                                    {-3.0, 5.0, 8},
+                                                    {-1e300, 1e300, 50},
+                                                    {1e-310, 3e-310, 9},
+                                                    {1.0, std::nextafter(1.0, 2.0), 8}}) {
+    const GridAxis axis(lo, hi, n);
+    std::vector<double> values{lo - 1.0, hi + 1.0, -INFINITY, INFINITY};
+    for (double line : axis.lines()) {
+      values.push_back(line);
+      values.push_back(std::nextafter(line, -INFINITY));
+      values.push_back(std::nextafter(line, INFINITY));
+      values.push_back(0.5 * line + 0.5 * hi);
+    }
+    for (double a : values) {
+      const std::pair<int, int> want = scanned_meeting(axis, a, a);
+      ASSERT_EQ(axis.cells_meeting(a, a), want) << a << " in [" << lo << ", " << hi << "]";
+    }
+  }
+}
+
 TEST(GridAxis, GuessIsClampedAndMostlyRight) {
   const GridAxis axis(-2.0, 2.0, 40);
   EXPECT_EQ(axis.guess(-5.0), 0);

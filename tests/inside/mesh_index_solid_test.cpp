@@ -146,6 +146,65 @@ TEST(MeshIndexSolid, CsgMeshLeavesReadTheSameSolid) {
   EXPECT_EQ(solid->locate({1, 1.5, 1.5}), Location::inside);
 }
 
+// Degenerate parts that keep every directed edge matched: a zero-area triangle along an edge of
+// the first box with its reverse, and a face of it repeated twice more, once reversed.
+Mesh with_degenerate_parts(Mesh m) {
+  const auto mid = static_cast<std::int32_t>(m.vertices.size());
+  m.vertices.push_back(0.5 * m.vertices[0] + 0.5 * m.vertices[2]);  // on the edge 0-2
+  m.triangles.push_back({0, 2, mid});
+  m.triangles.push_back({0, mid, 2});
+  const TriangleIndices face = m.triangles[0];
+  m.triangles.push_back(face);
+  m.triangles.push_back({face[0], face[2], face[1]});
+  return m;
+}
+
+TEST(MeshIndexSolid, WithoutAGridTheIndexAnswersAsWithOneOnDegenerateAndInvertedMeshes) {
+  // The few-query index (the mesh kept, each triangle tested) against the grid's and the
+  // oracle's answers on the half-integer grid: on faces, edges, vertices, the zero-area
+  // triangle and the repeated face; the index taking the mesh over (moved) answers alike.
+  std::mt19937_64 rng(77);
+  for (int trial = 0; trial < 10; ++trial) {
+    const Mesh mesh = with_degenerate_parts(random_boxes(rng));
+    const MeshIndex grid(mesh);
+    const MeshIndex direct(mesh, {.queries = 1});
+    const MeshIndex moved(Mesh(mesh), {.queries = 1});
+    ASSERT_EQ(direct.regime(), MeshRegime::closed_exact);
+    ASSERT_EQ(direct.stats().cells, 0u);
+    ASSERT_EQ(direct.stats().triangles, mesh.triangles.size());
+    ASSERT_GT(direct.report().degenerate_triangles, 0u);
+    ASSERT_GT(direct.report().duplicated_triangles, 0u);
+    ASSERT_TRUE(direct.bounds() == grid.bounds());
+    std::vector<Vec3> points = probes(rng, 150, 30);
+    points.insert(points.end(), mesh.vertices.begin(), mesh.vertices.end());
+    for (const Vec3 q : points) {
+      const Location want = oracle_solid(mesh, q);
+      ASSERT_EQ(grid.locate(q), want) << trial << ": " << q.x << " " << q.y << " " << q.z;
+      ASSERT_EQ(direct.locate(q), want) << trial << ": " << q.x << " " << q.y << " " << q.z;
+      ASSERT_EQ(moved.locate(q), want) << trial << ": " << q.x << " " << q.y << " " << q.z;
+    }
+  }
+}
+
+TEST(MeshIndexSolid, WithoutAGridAClosedMeshWithInconsistentOrientationKeepsRayParity) {
+  Mesh mesh;
+  add_box(mesh, {0, 0, 0}, {2, 2, 2}, false);
+  std::swap(mesh.triangles[0][1], mesh.triangles[0][2]);
+  std::swap(mesh.triangles[1][1], mesh.triangles[1][2]);
+  const MeshIndex grid(mesh);
+  const MeshIndex direct(mesh, {.queries = 1});
+  ASSERT_EQ(direct.rule(), SolidRule::parity);
+  for (int x = -1; x <= 5; ++x)
+    for (int y = -1; y <= 5; ++y)
+      for (int z = -1; z <= 5; ++z) {
+        const Vec3 q{0.5 * x, 0.5 * y, 0.5 * z};
+        ASSERT_EQ(direct.locate(q), grid.locate(q)) << q.x << " " << q.y << " " << q.z;
+      }
+  EXPECT_EQ(direct.locate({1, 1, 1}), Location::inside);
+  EXPECT_EQ(direct.locate({1, 1, 0}), Location::boundary);
+  EXPECT_EQ(direct.locate({1, 1, 3}), Location::outside);
+}
+
 TEST(MeshIndexSolid, AClosedMeshWithInconsistentOrientationKeepsRayParity) {
   // One box's face pair flipped: every edge still has two triangles, but no winding number.
   Mesh mesh;

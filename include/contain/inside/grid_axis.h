@@ -64,15 +64,29 @@ class GridAxis {
   /// (exact comparisons), clamped into [0, n - 1]: an interval beyond an end gives that end's
   /// cell. Precondition: at least one cell.
   [[nodiscard]] std::pair<int, int> cells_meeting(double lo, double hi) const {
-    // first: the first cell whose upper line is >= lo; last: the last cell whose lower line <= hi.
-    const auto first =
-        std::lower_bound(lines_.begin() + 1, lines_.end(), lo) - (lines_.begin() + 1);
-    const auto last = (std::upper_bound(lines_.begin(), lines_.end() - 1, hi) - lines_.begin()) - 1;
-    return {static_cast<int>(std::min<std::ptrdiff_t>(first, cells_ - 1)),
-            static_cast<int>(std::max<std::ptrdiff_t>(last, 0))};
+    return {first_meeting(lo), last_meeting(hi)};
   }
 
  private:
+  // The first cell whose upper line is >= lo (clamped): the guess where exact comparisons with
+  // its two lines prove it (almost always), else a binary search.
+  [[nodiscard]] int first_meeting(double lo) const {
+    const int g = guess(lo);
+    const auto i = static_cast<std::size_t>(g);
+    if (lines_[i + 1] >= lo && (g == 0 || lines_[i] < lo)) return g;
+    const auto first =
+        std::lower_bound(lines_.begin() + 1, lines_.end(), lo) - (lines_.begin() + 1);
+    return static_cast<int>(std::min<std::ptrdiff_t>(first, cells_ - 1));
+  }
+  // The last cell whose lower line is <= hi (clamped), the same way.
+  [[nodiscard]] int last_meeting(double hi) const {
+    const int g = guess(hi);
+    const auto i = static_cast<std::size_t>(g);
+    if (lines_[i] <= hi && (g + 1 == cells_ || lines_[i + 1] > hi)) return g;
+    const auto last = (std::upper_bound(lines_.begin(), lines_.end() - 1, hi) - lines_.begin()) - 1;
+    return static_cast<int>(std::max<std::ptrdiff_t>(last, 0));
+  }
+
   std::vector<double> lines_;
   double origin_ = 0.0;  // L_0
   double scale_ = 0.0;   // cells per half unit, for the guess (0 for a zero or infinite extent)

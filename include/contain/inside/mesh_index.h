@@ -18,6 +18,7 @@
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/mesh_validation.h"
 #include "contain/values/box.h"
+#include "contain/values/triangle.h"
 #include "contain/values/vec.h"
 
 namespace contain::inside {
@@ -107,6 +108,9 @@ class MeshIndex {
   MeshIndex() = default;
   /// Prepares `mesh` (validated: finite coordinates, indices in range; any topology).
   explicit MeshIndex(const Mesh& mesh, const MeshIndexOptions& options = {});
+  /// The same; where the index keeps the mesh itself (the exact regime for few queries) it takes
+  /// `mesh` over instead of copying it, else `mesh` is left as it was.
+  explicit MeshIndex(Mesh&& mesh, const MeshIndexOptions& options = {});
 
   /// Where `point` lies.
   [[nodiscard]] Location locate(Vec3 point) const;
@@ -162,9 +166,13 @@ class MeshIndex {
     std::uint32_t tri;   // into tris_
   };
 
+  [[nodiscard]] static Tri make_tri(Vec3 a, Vec3 b, Vec3 c);
+
   // Construction, stage by stage (mesh_index.cpp).
+  [[nodiscard]] bool prepare(const Mesh& mesh, const MeshIndexOptions& options);
   void read_triangles(const Mesh& mesh);
-  [[nodiscard]] std::vector<Box3> sort_triangles_by_cell(const std::vector<Box3>& boxes);
+  [[nodiscard]] std::vector<Box3> read_triangles_by_cell(const Mesh& mesh,
+                                                         const std::vector<Box3>& boxes);
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
   void settle_empty_cells();
 
@@ -176,8 +184,10 @@ class MeshIndex {
   [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
   [[nodiscard]] Location locate_direct(Vec3 p) const;
+  [[nodiscard]] Location locate_direct_on_surface(Vec3 p) const;
   [[nodiscard]] Location locate_on_surface(Vec3 p) const;
   [[nodiscard]] Location classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const;
+  [[nodiscard]] Location classify_near(Vec3 p, std::span<const Triangle3> near) const;
   [[nodiscard]] Location locate_winding(Vec3 p) const;
 
   MeshRegime regime_ = MeshRegime::closed_exact;
@@ -185,6 +195,9 @@ class MeshIndex {
   MeshReport report_;
   Box3 bounds_;
   std::vector<Tri> tris_;
+  // Exact regime for few queries (no grid): the mesh itself, tris_ left empty (its records would
+  // be four times the mesh's bytes, written for one pass over them).
+  Mesh mesh_;
   // Grid (exact regime).
   GridAxis x_, y_, z_;
   int nx_ = 0, ny_ = 0, nz_ = 0;  // their cell counts
