@@ -13,9 +13,12 @@
 //               2^+-1000 (exact, the answer unchanged) and some coordinates moved by about
 //               1e-300 (roots hugging each other or the ends of [0, 1]).
 // Printed per set: the thread CPU time per query (the least of REPEAT runs of it; mean, median,
-// 99th percentile, worst) and the SHOW slowest queries (time, kind, the 24 numbers).
+// 99th percentile, worst) and the SHOW slowest queries (time, kind, the 24 numbers, their index).
 //
-// Usage: ccd_hostile_bench [QUERIES [SET|all [SHOW [REPEAT]]]]   (default 300, all, 1, 1)
+// Usage: ccd_hostile_bench [QUERIES [SET|all [SHOW [REPEAT [INDEX]]]]]   (default 300, all, 1, 1)
+//   INDEX: only query INDEX of each set (both kinds), REPEAT times: one query under perf.
+//   ccd_hostile_bench answers [QUERIES]: every answer (set, index, kind, hit, time in hex), one a
+//   line, to diff the exact stage's answers before and after a change.
 
 #include <time.h>
 
@@ -118,17 +121,19 @@ class Hostile {
   Set set_;
 };
 
-void run(const char* name, Set set, int count, std::size_t show, int repeat) {
+void run(const char* name, Set set, int count, std::size_t show, int repeat, int index) {
   Hostile gen(set);
   struct Timed {
     double ms;
     bool vertex_face;
     CcdQuery query;
+    int index;
   };
   std::vector<Timed> timed;
   int hits = 0;
   for (int i = 0; i < count; ++i) {
     const CcdQuery q = gen.next();
+    if (index >= 0 && i != index) continue;
     for (const bool vf : {true, false}) {
       // The least of `repeat` runs: the query's own cost, without the interference of a
       // loaded machine (cache misses and migrations count in thread CPU time).
@@ -140,10 +145,11 @@ void run(const char* name, Set set, int count, std::size_t show, int repeat) {
         const double t = cpu_ms() - t0;
         best = k == 0 ? t : std::min(best, t);
       }
-      timed.push_back({best, vf, q});
+      timed.push_back({best, vf, q, i});
       hits += r.hit ? 1 : 0;
     }
   }
+  if (timed.empty()) return;
   std::sort(timed.begin(), timed.end(), [](const Timed& a, const Timed& b) { return a.ms < b.ms; });
   double sum = 0.0;
   for (const Timed& t : timed)
@@ -156,17 +162,26 @@ void run(const char* name, Set set, int count, std::size_t show, int repeat) {
     std::printf("  %.3f ms %s:", timed[k].ms, timed[k].vertex_face ? "vf" : "ee");
     for (const Vec3& p : timed[k].query)
       std::printf(" %.17g %.17g %.17g", p.x, p.y, p.z);
-    std::printf("\n");
+    std::printf(" (index %d)\n", timed[k].index);
+  }
+}
+
+// Every answer of a set, one a line, for diffs.
+void answers(const char* name, Set set, int count) {
+  Hostile gen(set);
+  for (int i = 0; i < count; ++i) {
+    const CcdQuery q = gen.next();
+    for (const bool vf : {true, false}) {
+      const contain::collide::Impact r =
+          vf ? contain::collide::vertex_face_ccd(q) : contain::collide::edge_edge_ccd(q);
+      std::printf("%s %d %s %d %a\n", name, i, vf ? "vf" : "ee", r.hit ? 1 : 0, r.time);
+    }
   }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int count = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
-  const char* only = argc > 2 && std::strcmp(argv[2], "all") != 0 ? argv[2] : nullptr;
-  const std::size_t show = argc > 3 ? static_cast<std::size_t>(std::max(1, std::atoi(argv[3]))) : 1;
-  const int repeat = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
   const struct {
     const char* name;
     Set set;
@@ -174,8 +189,21 @@ int main(int argc, char** argv) {
               {"mixed", Set::mixed},
               {"coplanar", Set::coplanar},
               {"tangent", Set::tangent}};
+  if (argc > 1 && std::strcmp(argv[1], "answers") == 0) {
+    const int count = argc > 2 ? std::max(1, std::atoi(argv[2])) : 300;
+    for (const auto& s : sets)
+      answers(s.name, s.set, count);
+    return 0;
+  }
+  const int count = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
+  const char* only = argc > 2 && std::strcmp(argv[2], "all") != 0 ? argv[2] : nullptr;
+  const std::size_t show = argc > 3 ? static_cast<std::size_t>(std::max(1, std::atoi(argv[3]))) : 1;
+  const int repeat = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
+  const int index = argc > 5 ? std::atoi(argv[5]) : -1;
   for (const auto& s : sets) {
-    if (only == nullptr || std::strcmp(only, s.name) == 0) run(s.name, s.set, count, show, repeat);
+    if (only == nullptr || std::strcmp(only, s.name) == 0) {
+      run(s.name, s.set, count, show, repeat, index);
+    }
   }
   return 0;
 }
