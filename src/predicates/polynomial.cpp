@@ -564,8 +564,10 @@ namespace {
 std::pair<double, double> bracket_by_doubles(const RealRoot& root) {
   const RealRoot::State& s = root.state();
   if (s.exact) return {root.lower(), root.lower()};
-  std::int64_t a = order_key(root.lower());
-  std::int64_t b = order_key(root.upper());
+  // From the narrowest double bracket that sign queries at the root learnt, if any.
+  const std::optional<detail::LearntBracket> learnt = s.learnt_bracket();
+  std::int64_t a = learnt ? learnt->below : order_key(root.lower());
+  std::int64_t b = learnt ? learnt->above : order_key(root.upper());
   while (key_distance(a, b) >= 2) {
     const std::int64_t mk = middle_key(a, b);
     const double m = from_key(mk);

@@ -30,6 +30,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -334,6 +336,30 @@ bool vanishes_at_root(const Coeffs& q, const RealRoot::State& s, const BigFloat&
   return degree_of(g) >= 1 && sign_at(g, lo) != sign_at(g, hi);
 }
 
+// Records a narrower double bracket of the root (keys a < b of doubles strictly around it).
+void learn_doubles(const RealRoot::State& s, std::int64_t a, std::int64_t b) {
+  const std::lock_guard<std::mutex> lock(s.mutex);
+  if (!s.learnt) {
+    s.learnt = LearntBracket{a, b, nullptr};
+  } else if (key_distance(a, b) < key_distance(s.learnt->below, s.learnt->above)) {
+    s.learnt->below = a;
+    s.learnt->above = b;
+  }
+}
+
+// Records a refined frame when it resolves the root more finely than the one kept.
+void learn_frame(const RealRoot::State& s, const LearntBracket::Frame& f) {
+  const std::lock_guard<std::mutex> lock(s.mutex);
+  if (!s.learnt) return;  // the double bracket is always learnt first
+  const LearntBracket::Frame* kept = s.learnt->frame.get();
+  if (kept != nullptr && (kept->level > f.level ||
+                          (kept->level == f.level && key_distance(kept->u_below, kept->u_above) <=
+                                                         key_distance(f.u_below, f.u_above)))) {
+    return;
+  }
+  s.learnt->frame = std::make_shared<const LearntBracket::Frame>(f);
+}
+
 // The sign of q at the root in (lo, hi) (exact ends, p of sign sign_lo at lo, of the opposite
 // sign at hi, one simple root between), the root closer to a double spacing than the filter
 // over t resolved. p and q are moved to u in [0, 1] (t = lo + (hi - lo) u), exactly, so that
@@ -342,17 +368,35 @@ bool vanishes_at_root(const Coeffs& q, const RealRoot::State& s, const BigFloat&
 // than at 0; then the filter over t's doubles runs on u's. Each level moves them again onto the
 // bracket of u left, once the bisection reaches two adjacent doubles or p's sign there is a close
 // call past the first steps (read from its upper end when that is u = 1, where u's doubles are
-// coarse). Nothing when the levels run out: the caller's Tarski query answers.
+// coarse). A query starts from the deepest frame an earlier query at the root learnt (q moved
+// onto it in one Taylor shift), and leaves its own deepest frame for the next. Nothing when the
+// levels run out: the caller's Tarski query answers.
 std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, const BigFloat& lo,
                                     const BigFloat& hi) {
-  Coeffs p = moved(s.p, lo, hi - lo), qu = moved(q, lo, hi - lo);
-  Sign s0 = s.sign_lo;  // p's sign at u = 0
-  for (int level = 0; level < kLevels; ++level) {
-    const std::optional<WideCoeffs> pw = to_wide(p), qw = to_wide(qu);
+  std::shared_ptr<const LearntBracket::Frame> start;
+  if (const std::optional<LearntBracket> learnt = s.learnt_bracket()) start = learnt->frame;
+  LearntBracket::Frame f;
+  if (start) {
+    f = *start;
+  } else {
+    f.p = moved(s.p, lo, hi - lo);
+    f.origin = lo;
+    f.width = hi - lo;
+    f.sign_at_0 = s.sign_lo;
+    f.u_below = order_key(0.0);
+    f.u_above = order_key(1.0);
+  }
+  Coeffs qu = moved(q, f.origin, f.width);
+  for (int level = f.level; level < kLevels; ++level) {
+    const std::optional<WideCoeffs> pw = to_wide(f.p), qw = to_wide(qu);
     if (!pw || !qw) return std::nullopt;
-    std::int64_t a = order_key(0.0), b = order_key(1.0);
+    std::int64_t& a = f.u_below;
+    std::int64_t& b = f.u_above;
     for (int step = 0;; ++step) {
-      if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) return *v;
+      if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) {
+        learn_frame(s, f);
+        return *v;
+      }
       if (key_distance(a, b) < 2) break;
       const std::int64_t mk = middle_key(a, b);
       const double m = from_key(mk);
@@ -360,18 +404,24 @@ std::optional<Sign> sign_on_refined(const Coeffs& q, const RealRoot::State& s, c
       // signs (the first steps take them, so that every level narrows the bracket).
       std::optional<Sign> sm = certified(over(*pw, m, m));
       if (!sm && step >= kExactSteps) break;
-      if (!sm) sm = sign_at(p, BigFloat(m));
+      if (!sm) sm = sign_at(f.p, BigFloat(m));
       if (*sm == Sign::zero) return sign_at_double(qu, *qw, m);  // the root is at u = m
-      (*sm == s0 ? a : b) = mk;
+      (*sm == f.sign_at_0 ? a : b) = mk;
     }
     const double ua = from_key(a), ub = from_key(b);
     const bool flip = ub == 1.0;
     const BigFloat origin(flip ? ub : ua);
     const BigFloat width = flip ? BigFloat(ua) - BigFloat(ub) : BigFloat(ub) - BigFloat(ua);
-    p = moved(std::move(p), origin, width);
+    f.p = moved(std::move(f.p), origin, width);
     qu = moved(std::move(qu), origin, width);
-    if (flip) s0 = -s0;
+    f.origin = f.origin + f.width * origin;  // t = origin + width u, u = origin' + width' u'
+    f.width = f.width * width;
+    if (flip) f.sign_at_0 = -f.sign_at_0;
+    f.u_below = order_key(0.0);
+    f.u_above = order_key(1.0);
+    f.level = level + 1;
   }
+  learn_frame(s, f);
   return std::nullopt;
 }
 
@@ -405,9 +455,15 @@ std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root, bool
   if (q.empty()) return Sign::zero;
   const std::optional<WideCoeffs> qw = to_wide(q), pw = to_wide(s.p);
   if (!qw || !pw) return std::nullopt;
-  std::int64_t a = order_key(root.lower()), b = order_key(root.upper());
+  // From the narrowest double bracket an earlier query at this root left, if any.
+  const std::optional<LearntBracket> learnt = s.learnt_bracket();
+  std::int64_t a = learnt ? learnt->below : order_key(root.lower());
+  std::int64_t b = learnt ? learnt->above : order_key(root.upper());
   for (;;) {
-    if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) return *v;
+    if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) {
+      learn_doubles(s, a, b);
+      return *v;
+    }
     if (key_distance(a, b) < 2) break;
     const std::int64_t mk = middle_key(a, b);
     const double m = from_key(mk);
@@ -424,6 +480,7 @@ std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root, bool
     }
     (below ? a : b) = mk;
   }
+  learn_doubles(s, a, b);
   if (!refine) return std::nullopt;
   const BigFloat lo = std::max(s.lo, BigFloat(from_key(a))),
                  hi = std::min(s.hi, BigFloat(from_key(b)));

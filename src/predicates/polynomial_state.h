@@ -3,6 +3,9 @@
 // the operations on them (pseudo-remainders, Sturm sequences, squarefree parts), for the other
 // exact stages of this layer (the motion predicates' fallbacks).
 
+#include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -60,13 +63,50 @@ void trim(Coeffs& c);
 
 }  // namespace detail
 
+namespace detail {
+
+/// What sign queries at a root learnt about it (polynomial_filter.cpp), so that the next query
+/// at the same root starts where the last one stopped instead of narrowing its bracket anew:
+/// continuous collision asks the signs of several inclusion polynomials at each root, and on
+/// hostile inputs each narrowing costs tens of frames of big-number Taylor shifts.
+struct LearntBracket {
+  /// The order keys of two doubles strictly around the root (the root's own double bracket
+  /// narrowed by bisection), within [lower(), upper()].
+  std::int64_t below = 0, above = 0;
+  /// The deepest refined frame, if any: t = origin + width u maps u in [0, 1] onto an interval
+  /// holding the root (and no other root of p); `p` is p(origin + width u) times a positive
+  /// power of two (exact), of sign `sign_at_0` at u = 0; the root lies strictly between the
+  /// doubles of u with keys `u_below` and `u_above`.
+  struct Frame {
+    Coeffs p;
+    BigFloat origin, width;
+    Sign sign_at_0 = Sign::zero;
+    std::int64_t u_below = 0, u_above = 0;
+    int level = 0;  // frames moved from t: deeper frames resolve the root more finely
+  };
+  std::shared_ptr<const Frame> frame;
+};
+
+}  // namespace detail
+
 /// The root's squarefree polynomial p and an interval (lo, hi) holding exactly one root of it,
-/// lo and hi not roots (sign_lo = sign of p(lo)); or, `exact`, the root lo == hi itself.
+/// lo and hi not roots (sign_lo = sign of p(lo)); or, `exact`, the root lo == hi itself. The
+/// learnt bracket is a cache (the same root whatever it holds), written by const sign queries
+/// that may run concurrently: read and written under the mutex only.
 struct RealRoot::State {
   detail::Coeffs p;
   BigFloat lo, hi;
   Sign sign_lo = Sign::zero;
   bool exact = false;
+
+  mutable std::mutex mutex;
+  mutable std::optional<detail::LearntBracket> learnt;
+
+  /// A copy of what was learnt (nothing at first).
+  [[nodiscard]] std::optional<detail::LearntBracket> learnt_bracket() const {
+    const std::lock_guard<std::mutex> lock(mutex);
+    return learnt;
+  }
 };
 
 /// Read access to a polynomial's exact coefficients.

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "contain/predicates/big_float.h"
@@ -309,6 +310,66 @@ TEST(Polynomial, RootsThatAreRootsOfALineGiveTheOraclesSignsAndRounding) {
                           third * factor(b) + constant(std::ldexp(1.0, -bits))}) {
       EXPECT_EQ(sign_at(o.p, *on_line), test::sign_at(o.q, expected[k]));
     }
+    if (HasFailure()) return;
+  }
+}
+
+TEST(Polynomial, SignsAtARootThatLearntItsBracketAgreeWithTheOracle) {
+  // Sign queries at a root leave what they learnt (a narrower bracket of doubles, the deepest
+  // frame refined) for the next query at the same root. Roots 2^-k apart (k up to 1000), signs
+  // asked of lines whose roots lie 2^-j from the root (deep refinements) and of shallow ones, in
+  // one order, then in the reverse order (every query starting from what the others learnt), on
+  // a copy of the root (which shares it), then from several threads at once on fresh roots: the
+  // signs and the rounding are the oracle's whatever was learnt before.
+  Random rnd(9);
+  for (int i = 0; i < test::case_budget(40, 5); ++i) {
+    const double m = rnd.integer(3, 9);
+    const int k = rnd.integer(60, 1000);
+    const Both a = constant(m) * variable() - constant(1.0);  // the root 1 / m
+    const Both b = a + constant(std::ldexp(rnd.integer(0, 1) == 0 ? 1.0 : -1.0, -k));
+    const Both p = a * b * factor(rnd.uniform(0.0, 1.0));
+    std::vector<Both> others{a, b, constant(-2.0), b * factor(0.25)};
+    for (int j = 0; j < 6; ++j) {
+      const int bits = rnd.integer(1, std::min(1070, k + 60));
+      others.push_back(a + constant(std::ldexp(rnd.uniform(-1.0, 1.0), -bits)));
+    }
+    const std::vector<test::QRoot> expected = test::isolate_roots(p.q, 0.0, 1.0);
+    std::vector<std::vector<Sign>> truth(expected.size());
+    for (std::size_t r = 0; r < expected.size(); ++r) {
+      for (const Both& o : others)
+        truth[r].push_back(test::sign_at(o.q, expected[r]));
+    }
+    const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
+    ASSERT_EQ(roots.size(), expected.size());
+    for (std::size_t r = 0; r < roots.size(); ++r) {
+      for (std::size_t j = 0; j < others.size(); ++j)
+        EXPECT_EQ(sign_at(others[j].p, roots[r]), truth[r][j]) << "forward, query " << j;
+      for (std::size_t j = others.size(); j-- > 0;)
+        EXPECT_EQ(sign_at(others[j].p, roots[r]), truth[r][j]) << "backward, query " << j;
+      const RealRoot copy = roots[r];
+      EXPECT_EQ(floor_to_double(copy), test::floor_to_double(expected[r]));
+      for (std::size_t j = 0; j < others.size(); ++j)
+        EXPECT_EQ(sign_at(others[j].p, copy), truth[r][j]) << "copy, query " << j;
+    }
+    // Fresh roots, each queried by three threads in rotated orders (the cache is shared).
+    const std::vector<RealRoot> fresh = real_roots(p.p, 0.0, 1.0);
+    std::vector<std::vector<std::vector<Sign>>> got(3);
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < 3; ++t) {
+      threads.emplace_back([&, t] {
+        got[t].assign(fresh.size(), std::vector<Sign>(others.size(), Sign::zero));
+        for (std::size_t r = 0; r < fresh.size(); ++r) {
+          for (std::size_t n = 0; n < others.size(); ++n) {
+            const std::size_t j = (n + 3 * t) % others.size();
+            got[t][r][j] = sign_at(others[j].p, fresh[r]);
+          }
+        }
+      });
+    }
+    for (std::thread& t : threads)
+      t.join();
+    for (std::size_t t = 0; t < 3; ++t)
+      EXPECT_EQ(got[t], truth) << "thread " << t;
     if (HasFailure()) return;
   }
 }
