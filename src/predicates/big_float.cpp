@@ -168,10 +168,33 @@ void add_into(Limbs& r, const Limbs& p, std::size_t offset) {
   }
 }
 
+// a * b for b of at most two limbs (a double's mantissa, a bisection point, a Taylor shift's
+// origin): one pass of 32 x 64-bit products, one allocation, where the general product splits
+// both into runs and widens them to 64-bit limbs first.
+Limbs multiply_by_short(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  const std::uint64_t w = b.size() == 1 ? b[0] : (static_cast<std::uint64_t>(b[1]) << 32) | b[0];
+  Limbs out(a.size() + 2, 0);
+  Wide128 carry = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Wide128 t = static_cast<Wide128>(a[i]) * w + carry;
+    out[i] = static_cast<std::uint32_t>(t);
+    carry = t >> 32;
+  }
+  out[a.size()] = static_cast<std::uint32_t>(carry);
+  out[a.size() + 1] = static_cast<std::uint32_t>(carry >> 32);
+  return out;
+}
+
+// Below this many limbs in both factors, splitting into runs gains nothing.
+constexpr std::size_t kRunLimbs = 8;
+
 // The product of two magnitudes, run by run: numbers built from doubles of mixed magnitudes
 // (1e300 + 1e-300 spans 2000 bits, two of them nonzero limbs) are mostly zero limbs, which a
 // dense product would multiply all the same.
 Limbs multiply_magnitudes(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  if (a.size() < b.size()) std::swap(a, b);
+  if (b.size() <= 2) return multiply_by_short(a, b);
+  if (a.size() < kRunLimbs) return multiply_schoolbook(a, b);
   const std::vector<Run> ra = runs_of(a), rb = runs_of(b);
   if (ra.size() == 1 && rb.size() == 1 && ra[0].offset == 0 && rb[0].offset == 0 &&
       ra[0].limbs.size() == a.size() && rb[0].limbs.size() == b.size()) {
@@ -232,10 +255,14 @@ void BigFloat::normalize() {
 BigFloat operator+(const BigFloat& a, const BigFloat& b) {
   if (a.limbs_.empty()) return b;
   if (b.limbs_.empty()) return a;
-  // Align both magnitudes on the smaller exponent; shifting left is exact.
+  // Align both magnitudes on the smaller exponent; shifting left is exact. The operand of that
+  // exponent is used as it is (no copy).
   const std::int64_t e = std::min(a.exponent_, b.exponent_);
-  const Limbs ma = shifted_left(a.limbs_, a.exponent_ - e);
-  const Limbs mb = shifted_left(b.limbs_, b.exponent_ - e);
+  Limbs shifted;
+  if (a.exponent_ != e) shifted = shifted_left(a.limbs_, a.exponent_ - e);
+  if (b.exponent_ != e) shifted = shifted_left(b.limbs_, b.exponent_ - e);
+  const Limbs& ma = a.exponent_ != e ? shifted : a.limbs_;
+  const Limbs& mb = b.exponent_ != e ? shifted : b.limbs_;
   BigFloat r;
   r.exponent_ = e;
   if (a.negative_ == b.negative_) {

@@ -82,6 +82,48 @@ TEST(BigFloat, ProductsOfLongNumbersAreExact) {
   }
 }
 
+// Products by short factors (one or two limbs: a double, a bisection point, the origin of a
+// Taylor shift) take a one-pass product, and products of short numbers skip the split into runs:
+// both against the general product (a factor made long by a far-away term t, so that
+// a s + a t - a (s + t) = 0 exercises both paths) and against GMP, with all-ones limbs for the
+// longest carries.
+TEST(BigFloat, ProductsByShortFactorsEqualTheGeneralProduct) {
+  std::mt19937_64 rng(18);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-800, 1000), near(-40, 40), terms(1, 40);
+  std::uniform_int_distribution<int> tiny(-1070, -900), pick(0, 3);
+  const auto any_mantissa = [&] {
+    const double m = pick(rng) == 0 ? 0x1.fffffffffffffp-1 : mantissa(rng);
+    return pick(rng) == 0 ? -m : m;
+  };
+  for (int i = 0; i < 2000; ++i) {
+    BigFloat a, s;
+    mpq_class qa, qs;
+    const int ea = exponent(rng);
+    for (int k = terms(rng); k > 0; --k) {
+      // Terms 53 bits apart at times: runs of all-ones limbs.
+      const double d = std::ldexp(any_mantissa(), pick(rng) == 0 ? ea - 53 * k : exponent(rng));
+      a = a + BigFloat(d);
+      qa += q(d);
+    }
+    // s: one double (one or two limbs), or up to four within a few limbs of each other.
+    const int es = exponent(rng) - 80;  // es + near stays below 1024
+    for (int k = pick(rng) + 1; k > 0; --k) {
+      const double d = std::ldexp(any_mantissa(), es + near(rng));
+      s = s + BigFloat(d);
+      qs += q(d);
+    }
+    const double t = std::ldexp(any_mantissa(), tiny(rng));
+    const BigFloat long_factor = s + BigFloat(t);
+    ASSERT_EQ((a * s + a * BigFloat(t) - a * long_factor).sign(), Sign::zero) << "case " << i;
+    ASSERT_EQ((s * a + BigFloat(t) * a - long_factor * a).sign(), Sign::zero) << "case " << i;
+    ASSERT_EQ((a * s - a * long_factor).sign(), sign_of(-qa * q(t))) << "case " << i;
+    ASSERT_EQ((s * s * a - s * (s * a)).sign(), Sign::zero) << "case " << i;
+    const double c = std::ldexp(mantissa(rng), exponent(rng));
+    ASSERT_EQ((a * s - BigFloat(c)).sign(), sign_of(qa * qs - q(c))) << "case " << i;
+  }
+}
+
 TEST(BigFloat, ComparisonIsExactWhereDoublesWouldRound) {
   const BigFloat one(1.0), tiny(DBL_TRUE_MIN), huge(1e308);
   EXPECT_LT(one, one + tiny);  // 1 + 2^-1074 rounds to 1 in double
