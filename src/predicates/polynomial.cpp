@@ -482,6 +482,25 @@ RealRoot root_between(const Polynomial& p, double lo, double hi) {
 
 namespace {
 
+// The sign of u^2 - w^2 d (u, w nonzero, d > 0) from the rounded values (BigFloat::frexp, each
+// within 2^-52 relative: the ratio u^2 / (w^2 d) within 2^-48 of its rounding) when the ratio is
+// not within 2^-40 of 1: the products of numbers of thousands of bits that the closed form would
+// take (hostile coplanar CCD queries ask tens of them) are then spared. Nothing otherwise.
+std::optional<Sign> square_minus_product_sign(const BigFloat& u, const BigFloat& w,
+                                              const BigFloat& d) {
+  std::int64_t eu = 0, ew = 0, ed = 0;
+  const long double mu = u.frexp(eu), mw = w.frexp(ew), md = d.frexp(ed);
+  if (mu == 0 || mw == 0 || md <= 0) return std::nullopt;
+  // u^2 / (w^2 d) = (mu^2 / (mw^2 md)) 2^e, the mantissa ratio in (1/4, 8).
+  const std::int64_t e = 2 * eu - 2 * ew - ed;
+  if (e >= 4) return Sign::positive;
+  if (e <= -4) return Sign::negative;
+  const long double ratio = std::ldexp(mu * mu / (mw * mw * md), static_cast<int>(e));
+  if (ratio > 1 + 0x1p-40L) return Sign::positive;
+  if (ratio < 1 - 0x1p-40L) return Sign::negative;
+  return std::nullopt;
+}
+
 // The sign of q at the root in (lo, hi) of the squarefree quadratic p = c + b t + a t^2, in
 // closed form: the root is x = (-b + s sqrt(D)) / (2a) with s = sign p'(x) (p rises through it
 // where p(lo) < 0) and D = b^2 - 4ac > 0; with r = r0 + r1 t a positive multiple of q mod p,
@@ -501,7 +520,9 @@ Sign quadratic_sign_at(const detail::Coeffs& q, const RealRoot::State& s) {
   } else if (w.sign() == Sign::zero) {
     sum = u.sign();
   } else {
-    const Sign diff = (u * u - w * w * discriminant(p)).sign();
+    const BigFloat d = discriminant(p);
+    const std::optional<Sign> rounded = square_minus_product_sign(u, w, d);
+    const Sign diff = rounded ? *rounded : (u * u - w * w * d).sign();
     sum = u.sign() == Sign::positive ? diff : -diff;
   }
   return p[2].sign() == Sign::positive ? sum : -sum;
