@@ -368,12 +368,19 @@ double newton_estimate(const WideCoeffs& pw, double ua, double ub, Sign s0) {
 // around Newton's estimate where p's certified signs at their ends prove the root between them:
 // what some fifty bisection steps of a level find, in a few evaluations. The bracket is kept
 // when no width certifies (the estimate off, or the root too close to a double for the filter).
-void newton_narrow(const WideCoeffs& pw, std::int64_t& a, std::int64_t& b, Sign s0) {
+// With `isolating` (lo, hi), p's other roots may lie in (a, b) outside (lo, hi): a new bracket
+// must then lie within [lo, hi] as well.
+void newton_narrow(const WideCoeffs& pw, std::int64_t& a, std::int64_t& b, Sign s0,
+                   const RealRoot::State* isolating = nullptr) {
   if (key_distance(a, b) < 64) return;
   const std::int64_t x = order_key(newton_estimate(pw, from_key(a), from_key(b), s0));
   for (std::int64_t w = 4; w <= (std::int64_t{1} << 24); w *= 16) {
     const std::int64_t lo = x - w, hi = x + w;
     if (lo <= a || hi >= b) return;
+    if (isolating != nullptr &&
+        (BigFloat(from_key(lo)) < isolating->lo || isolating->hi < BigFloat(from_key(hi)))) {
+      return;
+    }
     const std::optional<Sign> at_lo = certified(over(pw, from_key(lo), from_key(lo)));
     const std::optional<Sign> at_hi = certified(over(pw, from_key(hi), from_key(hi)));
     if (at_lo == s0 && at_hi == -s0) {
@@ -516,6 +523,8 @@ std::optional<Sign> filtered_sign_at(const Coeffs& q, const RealRoot& root, bool
   const std::optional<LearntBracket> learnt = s.learnt_bracket();
   std::int64_t a = learnt ? learnt->below : order_key(root.lower());
   std::int64_t b = learnt ? learnt->above : order_key(root.upper());
+  // Newton's jump first (p's sign at any double of [s.lo, s.hi] below the root is sign_lo).
+  newton_narrow(*pw, a, b, s.sign_lo, &s);
   for (;;) {
     if (const std::optional<Sign> v = certified(over(*qw, from_key(a), from_key(b)))) {
       learn_doubles(s, a, b);
