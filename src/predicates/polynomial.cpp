@@ -444,7 +444,7 @@ std::vector<RealRoot> real_roots(const Polynomial& p, double lo, double hi) {
     if (d.sign() == Sign::negative) return {};
     std::int64_t ed = 0, e1 = 0;
     const bool tiny = d.frexp(ed) != 0.0 && c[1].frexp(e1) != 0.0 && ed < 2 * e1 - 128;
-    close_pair = tiny;
+    close_pair = tiny || d.is_zero();  // a double root: the filter cannot separate it
   }
   if (!close_pair) {
     if (std::optional<std::vector<RealRoot>> fast = detail::filtered_real_roots(c, lo, hi)) {
