@@ -37,7 +37,8 @@ void trim(Coeffs& c);
 /// a / (t - x) for a root x.
 [[nodiscard]] Coeffs deflate(const Coeffs& a, const BigFloat& x);
 /// a, b, then minus the remainders, each a positive multiple of the signed remainder sequence's
-/// element (subresultant PRS with exact divisions), up to the last non-zero one. deg a >= deg b.
+/// element (subresultant PRS with exact divisions), up to the last non-zero one; a constant last
+/// element is given as +-1 (its sign: all that sign variations and gcds need). deg a >= deg b.
 [[nodiscard]] std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b);
 /// P, P', then minus the remainders (positively scaled), up to the last non-zero one.
 [[nodiscard]] std::vector<Coeffs> sturm_sequence(const Coeffs& p);
