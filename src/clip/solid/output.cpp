@@ -147,7 +147,7 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
   const Faces faces = merge_coplanar(soup, boundary, store);
   Result<Mesh> mesh = snap_round(faces, store, scale);
   if (!mesh && mesh.error().kind == ErrorKind::degenerate) {
-    mesh = snap_inputs(soup, op, scale, mesh.error());
+    mesh = snap_inputs(soup, op, scale, faces, store, mesh.error());
   }
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result.

@@ -19,8 +19,11 @@
 // the result's points are merged: the crossings are new points each time. There the inputs
 // themselves are snapped (snap_inputs): their vertices merged on growing grids, which turns
 // nearly coincident surfaces into coincident ones, and the exact boolean of the snapped inputs,
-// an exact arrangement with no such slivers, goes through the same rounds. The attempts are
-// bounded too (5 grids), so the whole ends.
+// an exact arrangement with no such slivers, goes through the same rounds. Surfaces turned
+// by ~1e-9 (vertices millions of ulps apart) need grids of up to 2^28 ulps, which can move a
+// vertex far beyond the promised 1e-9: those are used only when stable, and their results only
+// when every written vertex is proven near the exact result's boundary (result_boundary.h). The
+// attempts are bounded too (11 grids), so the whole ends.
 
 #include "clip/solid/snap.h"
 
@@ -36,6 +39,7 @@
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "clip/solid/result_boundary.h"
 #include "clip/solid/validate.h"
 #include "contain/bvh/bvh.h"
 #include "contain/core/union_find.h"
@@ -329,8 +333,17 @@ namespace {
 // The merge levels of the inputs' vertices when snap rounding of the result does not converge.
 // A vertex moves by at most 2^(level + 1) ulps of the largest coordinate per coordinate; with the
 // result's own rounds after it (< 9.3e-10 of the largest coordinate), 2^16 keeps every written
-// vertex within 1e-9 of it.
-constexpr std::array<int, 5> input_levels = {2, 6, 10, 14, 16};
+// vertex within 1e-9 of it. The coarser grids (up to 2^28 ulps: a vertex moves by up to 2^29
+// ulps, < 1.2e-7 of the largest coordinate) join surfaces turned or shifted by up to ~1e-8 (a
+// sphere against a copy turned by 1e-9 radians, whose crossings at angles of 1e-9 fold at every
+// round); they have no such bound, so a grid there is used only when it is stable and its
+// result only when proven near the exact one (result_boundary.h).
+constexpr std::array<int, 11> input_levels = {2, 6, 10, 14, 16, 18, 20, 22, 24, 26, 28};
+constexpr int finest_unproven_level = 16;
+
+// The bound on the distance from each written vertex to the exact result's boundary, relative
+// to the largest coordinate: the spec's 1e-9, less a margin.
+constexpr double proven_distance = 0.999e-9;
 
 }  // namespace
 
@@ -338,6 +351,14 @@ std::optional<Soup> snapped_soup(const Soup& soup, int level, double scale) {
   const std::optional<std::vector<std::size_t>> leader =
       cluster_points(soup.vertices, cell_side(level, scale));
   if (!leader) return std::nullopt;
+  if (level > finest_unproven_level) {
+    // Stable: the clusters are those of a grid 8 times coarser, so no cluster is split where
+    // its points happen to straddle a side (the twin vertices of two nearly equal surfaces
+    // joined, not some of them), and far vertices stay apart by more than 8 sides.
+    const std::optional<std::vector<std::size_t>> coarse =
+        cluster_points(soup.vertices, cell_side(level + 3, scale));
+    if (!coarse || *coarse != *leader) return std::nullopt;
+  }
   Soup out;
   out.inputs = soup.inputs;
   out.input = soup.input;
@@ -373,7 +394,8 @@ std::optional<Soup> snapped_soup(const Soup& soup, int level, double scale) {
   return out;
 }
 
-Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, Error failure) {
+Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, const Faces& exact_faces,
+                         const PointStore& exact_store, Error failure) {
   for (const int level : input_levels) {
     const std::optional<Soup> snapped = snapped_soup(soup, level, scale);
     if (!snapped) continue;
@@ -382,10 +404,17 @@ Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, Error failure) {
       (void)store.add(v);
     const std::vector<TriangleWork> work = intersect_pairs(*snapped, store);
     Result<Mesh> mesh = snap_round(arranged_faces(*snapped, work, store, op), store, scale);
+    if (mesh && level > finest_unproven_level &&
+        !within_boundary(*mesh, exact_faces, exact_store, proven_distance * scale, scale)) {
+      mesh = Error{.kind = ErrorKind::degenerate,
+                   .message = "the result of the inputs merged on a grid of 2^" +
+                              std::to_string(level) +
+                              " ulps is not proven within 1e-9 of the exact result"};
+    }
     if (mesh || mesh.error().kind != ErrorKind::degenerate) return mesh;
     failure = mesh.error();
   }
-  failure.message += ", also with the inputs' vertices merged on grids up to 2^16 ulps";
+  failure.message += ", also with the inputs' vertices merged on grids up to 2^28 ulps";
   return failure;
 }
 

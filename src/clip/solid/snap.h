@@ -56,13 +56,19 @@ struct BoundaryFaces {
 /// (each leader keeps its position): every input moved by at most 2^(level + 1) ulps of scale in
 /// each coordinate, and still closed (merging corners keeps each directed edge as often as its
 /// reverse); triangles that lose their area are degenerate. nullopt when the grid is not used
-/// or merges nothing.
+/// (above level 16 also when it is not stable: its clusters differ from those of level + 3) or
+/// merges nothing.
 [[nodiscard]] std::optional<Soup> snapped_soup(const Soup& soup, int level, double scale);
 
-/// The result of `op` on the inputs snapped on growing grids (snapped_soup, levels 2 to 16),
+/// The result of `op` on the inputs snapped on growing grids (snapped_soup, levels 2 to 28),
 /// each arranged exactly and written by snap_round, the first that passes: what the engine does
 /// when snap rounding of the exact result ended in `failure` (surfaces ulps apart, whose
-/// crossings fold again at every rounding). `failure`, completed, when none passes.
-[[nodiscard]] Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, Error failure);
+/// crossings fold again at every rounding). Grids above 2^16 ulps are used only when stable (the
+/// clusters of a grid 8 times coarser are the same) and their results only when every vertex is
+/// proven within 0.999e-9 scale of `exact_faces`, the exact result's boundary (points of
+/// `exact_store`). `failure`, completed, when none passes.
+[[nodiscard]] Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale,
+                                       const Faces& exact_faces, const PointStore& exact_store,
+                                       Error failure);
 
 }  // namespace contain::clip::solid
