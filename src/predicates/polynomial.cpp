@@ -95,14 +95,15 @@ Coeffs pseudo_remainder(const Coeffs& a, const Coeffs& b) {
   const BigFloat lc = b.back();
   Coeffs r = a;
   for (int k = m; k >= n; --k) {
-    const BigFloat rk = r[static_cast<std::size_t>(k)];
+    // Coefficient k becomes lc rk - rk lc = 0: dropped without its two products.
+    const BigFloat rk = std::move(r.back());
+    r.pop_back();
     for (BigFloat& x : r)
       x = lc * x;
-    for (int j = 0; j <= n; ++j) {
+    for (int j = 0; j < n; ++j) {
       const auto i = static_cast<std::size_t>(j + k - n);
       r[i] = r[i] - rk * b[static_cast<std::size_t>(j)];
     }
-    r.pop_back();  // coefficient k is now exactly zero
   }
   trim(r);
   return r;
@@ -188,13 +189,13 @@ Coeffs pseudo_quotient(const Coeffs& a, const Coeffs& g) {
     for (BigFloat& x : q)
       x = lc * x;
     q[static_cast<std::size_t>(k - n)] = q[static_cast<std::size_t>(k - n)] + rk;
+    r.pop_back();  // coefficient k becomes lc rk - rk lc = 0
     for (BigFloat& x : r)
       x = lc * x;
-    for (int j = 0; j <= n; ++j) {
+    for (int j = 0; j < n; ++j) {
       const auto i = static_cast<std::size_t>(j + k - n);
       r[i] = r[i] - rk * g[static_cast<std::size_t>(j)];
     }
-    r.pop_back();
   }
   trim(q);
   return q;
