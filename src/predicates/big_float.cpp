@@ -188,6 +188,29 @@ Limbs multiply_by_short(std::span<const std::uint32_t> a, std::span<const std::u
 // Below this many limbs in both factors, splitting into runs gains nothing.
 constexpr std::size_t kRunLimbs = 8;
 
+// r += x * y * B^(offsets), in place, for a run of at most two limbs in x or y (r long enough):
+// the pairs of short runs that sparse magnitudes (sums of far-apart doubles) multiply by the
+// dozen, without a product allocated for each.
+void add_product_into(Limbs& r, const Run& x, const Run& y) {
+  const Run& longer = x.limbs.size() >= y.limbs.size() ? x : y;
+  const Run& shorter = x.limbs.size() >= y.limbs.size() ? y : x;
+  const std::span<const std::uint32_t> s = shorter.limbs;
+  const std::uint64_t w = s.size() == 1 ? s[0] : (static_cast<std::uint64_t>(s[1]) << 32) | s[0];
+  const std::size_t base = x.offset + y.offset;
+  Wide128 carry = 0;
+  std::size_t i = 0;
+  for (; i < longer.limbs.size(); ++i) {
+    const Wide128 t = static_cast<Wide128>(longer.limbs[i]) * w + r[base + i] + carry;
+    r[base + i] = static_cast<std::uint32_t>(t);
+    carry = t >> 32;
+  }
+  for (std::size_t k = base + i; carry != 0; ++k) {
+    const Wide128 t = static_cast<Wide128>(r[k]) + carry;
+    r[k] = static_cast<std::uint32_t>(t);
+    carry = t >> 32;
+  }
+}
+
 // The product of two magnitudes, run by run: numbers built from doubles of mixed magnitudes
 // (1e300 + 1e-300 spans 2000 bits, two of them nonzero limbs) are mostly zero limbs, which a
 // dense product would multiply all the same.
@@ -202,8 +225,13 @@ Limbs multiply_magnitudes(std::span<const std::uint32_t> a, std::span<const std:
   }
   Limbs r(a.size() + b.size() + 1, 0);
   for (const Run& x : ra) {
-    for (const Run& y : rb)
-      add_into(r, multiply_limbs(x.limbs, y.limbs), x.offset + y.offset);
+    for (const Run& y : rb) {
+      if (x.limbs.size() <= 2 || y.limbs.size() <= 2) {
+        add_product_into(r, x, y);
+      } else {
+        add_into(r, multiply_limbs(x.limbs, y.limbs), x.offset + y.offset);
+      }
+    }
   }
   return r;
 }

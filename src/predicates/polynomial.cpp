@@ -3,6 +3,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <utility>
 
@@ -95,14 +97,15 @@ Coeffs pseudo_remainder(const Coeffs& a, const Coeffs& b) {
   const BigFloat lc = b.back();
   Coeffs r = a;
   for (int k = m; k >= n; --k) {
-    const BigFloat rk = r[static_cast<std::size_t>(k)];
+    // Coefficient k becomes lc rk - rk lc = 0: dropped without its two products.
+    const BigFloat rk = std::move(r.back());
+    r.pop_back();
     for (BigFloat& x : r)
       x = lc * x;
-    for (int j = 0; j <= n; ++j) {
+    for (int j = 0; j < n; ++j) {
       const auto i = static_cast<std::size_t>(j + k - n);
       r[i] = r[i] - rk * b[static_cast<std::size_t>(j)];
     }
-    r.pop_back();  // coefficient k is now exactly zero
   }
   trim(r);
   return r;
@@ -188,13 +191,13 @@ Coeffs pseudo_quotient(const Coeffs& a, const Coeffs& g) {
     for (BigFloat& x : q)
       x = lc * x;
     q[static_cast<std::size_t>(k - n)] = q[static_cast<std::size_t>(k - n)] + rk;
+    r.pop_back();  // coefficient k becomes lc rk - rk lc = 0
     for (BigFloat& x : r)
       x = lc * x;
-    for (int j = 0; j <= n; ++j) {
+    for (int j = 0; j < n; ++j) {
       const auto i = static_cast<std::size_t>(j + k - n);
       r[i] = r[i] - rk * g[static_cast<std::size_t>(j)];
     }
-    r.pop_back();
   }
   trim(q);
   return q;
@@ -492,6 +495,19 @@ RealRoot root_between(const Polynomial& p, double lo, double hi) {
 
 namespace {
 
+// The discriminant of the root's quadratic, computed once per root (the closed form below may
+// run for each of the rule's polynomials at it); the cache is shared by the root's copies.
+std::shared_ptr<const BigFloat> discriminant_of(const RealRoot::State& s) {
+  {
+    const std::lock_guard<std::mutex> lock(s.mutex);
+    if (s.discriminant) return s.discriminant;
+  }
+  auto d = std::make_shared<const BigFloat>(discriminant(s.p));
+  const std::lock_guard<std::mutex> lock(s.mutex);
+  if (!s.discriminant) s.discriminant = std::move(d);
+  return s.discriminant;
+}
+
 // The sign of u^2 - w^2 d (u, w nonzero, d > 0) from the rounded values (BigFloat::frexp, each
 // within 2^-52 relative: the ratio u^2 / (w^2 d) within 2^-48 of its rounding) when the ratio is
 // not within 2^-40 of 1: the products of numbers of thousands of bits that the closed form would
@@ -530,7 +546,8 @@ Sign quadratic_sign_at(const detail::Coeffs& q, const RealRoot::State& s) {
   } else if (w.sign() == Sign::zero) {
     sum = u.sign();
   } else {
-    const BigFloat d = discriminant(p);
+    const std::shared_ptr<const BigFloat> kept = discriminant_of(s);
+    const BigFloat& d = *kept;
     const std::optional<Sign> rounded = square_minus_product_sign(u, w, d);
     const Sign diff = rounded ? *rounded : (u * u - w * w * d).sign();
     sum = u.sign() == Sign::positive ? diff : -diff;

@@ -102,6 +102,8 @@ struct RealRoot::State {
 
   mutable std::mutex mutex;
   mutable std::optional<detail::LearntBracket> learnt;
+  /// p's discriminant once a closed form at the root (degree 2) needed it.
+  mutable std::shared_ptr<const BigFloat> discriminant;
 
   /// A copy of what was learnt (nothing at first).
   [[nodiscard]] std::optional<detail::LearntBracket> learnt_bracket() const {
