@@ -448,6 +448,34 @@ TEST(MeshBoolean, ASphereAgainstACopyTurned1em9IsValidForEveryOperation) {
   (void)expect_valid_with_exact_volume_identities(a, turned_about_123(a, 1e-9), case_budget(40, 8));
 }
 
+// The families around it: copies turned by 1e-10 to 1e-8 radians and shifted by 1e-10 to 1e-9
+// (vertices 2^19 to 2^26 ulps apart), each valid for every operation, near the exact result.
+// The reduced builds run one of each (the cheapest first), the optimised ones all.
+TEST(MeshBoolean, ASphereAgainstCopiesTurnedBy1em10To1em8IsValidForEveryOperation) {
+  const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
+  const std::array<double, 6> angles = {5e-9, 1e-8, 5e-10, 2e-9, 2e-10, 1e-10};
+  const int count = case_budget(static_cast<int>(angles.size()), 6);
+  for (int i = 0; i < count; ++i) {
+    SCOPED_TRACE(angles[static_cast<std::size_t>(i)]);
+    (void)expect_valid_with_exact_volume_identities(
+        a, turned_about_123(a, angles[static_cast<std::size_t>(i)]), case_budget(40, 8));
+  }
+}
+
+TEST(MeshBoolean, ASphereAgainstCopiesShiftedBy1em10To1em9IsValidForEveryOperation) {
+  const Mesh a = scenes::uv_sphere({0, 0, 0}, 1.0, 6, 8);
+  const std::array<double, 4> shifts = {2e-10, 1e-9, 5e-10, 1e-10};
+  const int count = case_budget(static_cast<int>(shifts.size()), 4);
+  for (int i = 0; i < count; ++i) {
+    const double d = shifts[static_cast<std::size_t>(i)];
+    Mesh shifted = a;
+    for (Vec3& v : shifted.vertices)
+      v = {v.x + d, v.y + 2 * d, v.z - d};
+    SCOPED_TRACE(d);
+    (void)expect_valid_with_exact_volume_identities(a, shifted, case_budget(40, 8));
+  }
+}
+
 // Boxes whose faces are one ulp apart: overlapping by an ulp, a gap of an ulp, and shifted by
 // an ulp along a shared face. Every corner of every result is a double, so the written results
 // are the exact ones: their exact volumes are the boxes' exact volumes combined.
