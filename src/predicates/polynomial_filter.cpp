@@ -358,9 +358,10 @@ double newton_estimate(const WideCoeffs& pw, double ua, double ub, Sign s0) {
       hi = std::min(hi, kx);
     }
     const long double next = d != 0 ? x - v / d : x;
-    const double rounded = static_cast<double>(next);
     if (next == x) break;
-    x = rounded > from_key(lo) && rounded < from_key(hi) ? next : from_key(middle_key(lo, hi));
+    // Compared in long double (a step far outside the doubles' range must not be narrowed).
+    const bool inside = next > from_key(lo) && next < from_key(hi);
+    x = inside ? next : from_key(middle_key(lo, hi));
   }
   return static_cast<double>(x);
 }
