@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <span>
@@ -97,18 +100,21 @@ Result<std::vector<double>> plane_values(const SliceCliOptions& o) {
   return out;
 }
 
-// The triangles of each ring as JSON arrays.
-std::string triangles_json(const clip::Section& s) {
-  std::string out = "[";
+// The triangles of each ring as JSON arrays, appended to `out`.
+void append_triangles_json(const clip::Section& s, std::string& out) {
+  out += '[';
   for (std::size_t r = 0; r < s.triangles.size(); ++r) {
     out += r ? ",[" : "[";
     for (std::size_t k = 0; k < s.triangles[r].size(); ++k) {
       if (k > 0) out += ',';
-      out += std::to_string(s.triangles[r][k]);
+      std::array<char, 16> digits{};
+      out.append(
+          digits.data(),
+          std::to_chars(digits.data(), digits.data() + digits.size(), s.triangles[r][k]).ptr);
     }
-    out += "]";
+    out += ']';
   }
-  return out + "]";
+  out += ']';
 }
 
 // The text of sections in WKT lines, GeoJSON features or --json lines; `first` is the index of
@@ -116,23 +122,31 @@ std::string triangles_json(const clip::Section& s) {
 std::string format_sections(std::span<const clip::Section> sections, std::size_t first,
                             const SliceCliOptions& o) {
   std::string text;
+  const auto out = std::back_inserter(text);
   if (o.json) {
     for (const clip::Section& s : sections) {
-      text += fmt::format("{{\"value\":{},\"wkt\":\"{}\",\"triangles\":{}}}\n", s.value,
-                          io::format_wkt(s.region), triangles_json(s));
+      fmt::format_to(out, "{{\"value\":{},\"wkt\":\"", s.value);
+      io::format_wkt(s.region, text);
+      text += "\",\"triangles\":";
+      append_triangles_json(s, text);
+      text += "}\n";
     }
     return text;
   }
   if (o.format == "geojson") {
     for (std::size_t i = 0; i < sections.size(); ++i) {
-      text += fmt::format(
-          "{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":{}}}",
-          first + i ? "," : "", sections[i].value, io::format_geojson(sections[i].region));
+      fmt::format_to(out, "{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":",
+                     first + i ? "," : "", sections[i].value);
+      io::format_geojson(sections[i].region, text);
+      text += '}';
     }
     return text;
   }
-  for (const clip::Section& s : sections)
-    text += fmt::format("{}\t{}\n", s.value, io::format_wkt(s.region));
+  for (const clip::Section& s : sections) {
+    fmt::format_to(out, "{}\t", s.value);
+    io::format_wkt(s.region, text);
+    text += '\n';
+  }
   return text;
 }
 
