@@ -2,6 +2,7 @@
 
 #include "io/ring_text.h"
 
+#include <array>
 #include <charconv>
 #include <cstddef>
 
@@ -20,13 +21,13 @@ char* write_number(char* at, double value) {
 
 void append_ring_text(std::string& out, const Ring& ring, RingSyntax syntax) {
   const bool wkt = syntax == RingSyntax::wkt;
-  const std::size_t old = out.size();
-  // Per point two numbers and at most 5 characters around them; the brackets of the ring.
-  out.resize(old + (ring.size() + 1) * (2 * kMaxNumber + 5) + 2);
-  char* at = out.data() + old;
-  *at++ = wkt ? '(' : '[';
+  out += wkt ? '(' : '[';
+  // A point at a time into a buffer on the stack, appended once: no character appends, and no
+  // room reserved (and zeroed) in `out` for the longest numbers.
+  std::array<char, 2 * kMaxNumber + 8> point{};
   for (std::size_t i = 0; !ring.empty() && i <= ring.size(); ++i) {
     const Vec2& q = ring[i == ring.size() ? 0 : i];
+    char* at = point.data();
     if (wkt) {
       if (i > 0) {
         *at++ = ',';
@@ -43,9 +44,9 @@ void append_ring_text(std::string& out, const Ring& ring, RingSyntax syntax) {
       at = write_number(at, q.y);
       *at++ = ']';
     }
+    out.append(point.data(), at);
   }
-  *at++ = wkt ? ')' : ']';
-  out.resize(static_cast<std::size_t>(at - out.data()));
+  out += wkt ? ')' : ']';
 }
 
 }  // namespace contain::io::detail
