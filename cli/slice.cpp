@@ -2,21 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "common.h"
+#include "contain/clip/mesh_slicer.h"
 #include "contain/clip/slice_mesh.h"
 #include "contain/io/geojson.h"
 #include "contain/io/mesh_io.h"
 #include "contain/io/svg.h"
 #include "contain/io/wkt.h"
 #include "output_format.h"
+#include "progress.h"
 #include "slice_svg.h"
 #include "timings.h"
 #include "verbs.h"
@@ -36,6 +43,7 @@ struct SliceCliOptions {
   bool json = false;
   bool shadow = false;
   int threads = 0;
+  bool quiet = false;
   std::string out;
   CLI::Option* format_option = nullptr;
   CLI::Option* threads_option = nullptr;
@@ -92,45 +100,113 @@ Result<std::vector<double>> plane_values(const SliceCliOptions& o) {
   return out;
 }
 
-// The triangles of each ring as JSON arrays.
-std::string triangles_json(const clip::Section& s) {
-  std::string out = "[";
+// The triangles of each ring as JSON arrays, appended to `out`.
+void append_triangles_json(const clip::Section& s, std::string& out) {
+  out += '[';
   for (std::size_t r = 0; r < s.triangles.size(); ++r) {
     out += r ? ",[" : "[";
     for (std::size_t k = 0; k < s.triangles[r].size(); ++k) {
       if (k > 0) out += ',';
-      out += std::to_string(s.triangles[r][k]);
+      std::array<char, 16> digits{};
+      out.append(
+          digits.data(),
+          std::to_chars(digits.data(), digits.data() + digits.size(), s.triangles[r][k]).ptr);
     }
-    out += "]";
+    out += ']';
   }
-  return out + "]";
+  out += ']';
 }
 
-std::string format_sections(const std::vector<clip::Section>& sections, const SliceCliOptions& o) {
+// The number of points of a block of sections, to size the next block.
+std::size_t point_count(std::span<const clip::Section> sections) {
+  std::size_t points = 0;
+  for (const clip::Section& s : sections) {
+    for (const auto& edges : s.triangles)
+      points += edges.size();
+  }
+  return points;
+}
+
+// The text of sections in WKT lines, GeoJSON features or --json lines; `first` is the index of
+// sections[0] among all (a GeoJSON feature after the first begins with a comma).
+std::string format_sections(std::span<const clip::Section> sections, std::size_t first,
+                            const SliceCliOptions& o) {
   std::string text;
+  // About 40 characters a point: the text grows without copying itself over and over.
+  text.reserve(40 * point_count(sections) + 96 * sections.size());
+  const auto out = std::back_inserter(text);
   if (o.json) {
     for (const clip::Section& s : sections) {
-      text += fmt::format("{{\"value\":{},\"wkt\":\"{}\",\"triangles\":{}}}\n", s.value,
-                          io::format_wkt(s.region), triangles_json(s));
+      fmt::format_to(out, "{{\"value\":{},\"wkt\":\"", s.value);
+      io::format_wkt(s.region, text);
+      text += "\",\"triangles\":";
+      append_triangles_json(s, text);
+      text += "}\n";
     }
     return text;
   }
   if (o.format == "geojson") {
-    text = "{\"type\":\"FeatureCollection\",\"features\":[";
     for (std::size_t i = 0; i < sections.size(); ++i) {
-      text +=
-          fmt::format("{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":{}}}",
-                      i ? "," : "", sections[i].value, io::format_geojson(sections[i].region));
+      fmt::format_to(out, "{}{{\"type\":\"Feature\",\"properties\":{{\"value\":{}}},\"geometry\":",
+                     first + i ? "," : "", sections[i].value);
+      io::format_geojson(sections[i].region, text);
+      text += '}';
     }
-    return text + "]}\n";
+    return text;
   }
-  if (o.format == "svg") {
-    return sections_svg(sections, 0.0,
-                        fmt::format("contain slice {}: {} sections", o.mesh, sections.size()));
+  for (const clip::Section& s : sections) {
+    fmt::format_to(out, "{}\t", s.value);
+    io::format_wkt(s.region, text);
+    text += '\n';
   }
-  for (const clip::Section& s : sections)
-    text += fmt::format("{}\t{}\n", s.value, io::format_wkt(s.region));
   return text;
+}
+
+// WKT, GeoJSON and --json text in blocks of planes: each block sliced and then formatted on
+// every core, written in order and dropped, so that memory holds one block of sections and its
+// text (about 2^19 points), not the whole stack. The first block is small (a quick first line
+// and a first measure of the points per plane); the next ones aim at kBlockPoints points.
+int stream_sections(const clip::MeshSlicer& slicer, const SliceCliOptions& o) {
+  constexpr std::size_t kFirstBlock = 64;
+  constexpr std::size_t kBlockPoints = std::size_t{1} << 19;
+  constexpr std::size_t kMaxBlock = 4096;
+  auto output = Output::open(o.out);
+  if (!output) return report(output.error());
+  const bool geojson = !o.json && o.format == "geojson";
+  if (geojson) {
+    if (Status w = output->write("{\"type\":\"FeatureCollection\",\"features\":["); !w)
+      return report(w.error());
+  }
+  const BatchOptions batch{.threads = o.threads};
+  Progress progress("planes", slicer.size(), !o.quiet && stderr_is_terminal());
+  std::vector<std::string> parts;
+  std::size_t block = kFirstBlock;
+  for (std::size_t begin = 0; begin < slicer.size();) {
+    const std::size_t end = std::min(slicer.size(), begin + block);
+    const std::vector<clip::Section> sections = slicer.slice(begin, end, batch);
+    const auto count = static_cast<std::size_t>(thread_count(batch, sections.size(), 1));
+    const std::size_t step = (sections.size() + count - 1) / count;
+    parts.assign(count, std::string{});
+    parallel_for(count, batch, 1, [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = from; k < to; ++k) {
+        const std::size_t at = std::min(sections.size(), k * step);
+        const std::size_t size = std::min(step, sections.size() - at);
+        parts[k] = format_sections(std::span(sections).subspan(at, size), begin + at, o);
+      }
+    });
+    for (const std::string& part : parts) {
+      if (Status w = output->write(part); !w) return report(w.error());
+    }
+    const std::size_t per_plane = std::max<std::size_t>(1, point_count(sections) / sections.size());
+    block = std::clamp<std::size_t>(kBlockPoints / per_plane, 1, kMaxBlock);
+    begin = end;
+    progress.update(end);
+  }
+  if (geojson) {
+    if (Status w = output->write("]}\n"); !w) return report(w.error());
+  }
+  const Status closed = output->close();
+  return closed ? exit_ok : report(closed.error());
 }
 
 std::string format_shadow(const MultiPolygon& region, const SliceCliOptions& o) {
@@ -180,9 +256,15 @@ int run_slice(SliceCliOptions o) {
     if (!region) return named(region.error());
     return emit(format_shadow(*region, o), o.out);
   }
-  auto sections = clip::slice_mesh(file->mesh, *values, {.axis = o.axis}, {.threads = o.threads});
-  if (!sections) return named(sections.error());
-  return emit(format_sections(*sections, o), o.out);
+  auto slicer = clip::MeshSlicer::make(file->mesh, *values, {.axis = o.axis});
+  if (!slicer) return named(slicer.error());
+  if (o.format != "svg" || o.json) return stream_sections(*slicer, o);
+  // The SVG draws the whole stack at once (its frame holds every section).
+  const std::vector<clip::Section> sections =
+      slicer->slice(0, slicer->size(), {.threads = o.threads});
+  return emit(sections_svg(sections, 0.0,
+                           fmt::format("contain slice {}: {} sections", o.mesh, sections.size())),
+              o.out);
 }
 
 }  // namespace
@@ -224,6 +306,7 @@ Verb add_slice(CLI::App& app) {
                 "projected triangles, an open mesh's too) instead of sections");
   add_threads_option(*cmd, o->threads);
   o->threads_option = cmd->get_option("--threads");
+  add_quiet_option(*cmd, o->quiet);
   cmd->add_option("--out", o->out, "write to FILE instead of stdout")->option_text("FILE");
   cmd->footer(
       "Examples:\n"

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/json_tree.h"
+#include "io/ring_text.h"
 #include "io/text_scan.h"
 
 namespace contain::io {
@@ -144,17 +145,7 @@ class GeoJsonReader {
 };
 
 void append_json_ring(std::string& out, const Ring& ring) {
-  out += '[';
-  for (std::size_t i = 0; i <= ring.size(); ++i) {
-    const Vec2& q = ring[i % ring.size()];
-    if (i > 0) out += ',';
-    out += '[';
-    detail::append_double(out, q.x);
-    out += ',';
-    detail::append_double(out, q.y);
-    out += ']';
-  }
-  out += ']';
+  detail::append_ring_text(out, ring, detail::RingSyntax::geojson);
 }
 
 void append_json_polygon(std::string& out, const Polygon& polygon) {
@@ -312,7 +303,13 @@ Result<MultiPolygon> read_geojson(const std::filesystem::path& path) {
 }
 
 std::string format_geojson(const MultiPolygon& region) {
-  std::string out = R"({"type":"MultiPolygon","coordinates":[)";
+  std::string out;
+  format_geojson(region, out);
+  return out;
+}
+
+void format_geojson(const MultiPolygon& region, std::string& out) {
+  out += R"({"type":"MultiPolygon","coordinates":[)";
   bool first = true;
   for (const Polygon& polygon : region.polygons) {
     if (polygon.rings.empty()) continue;
@@ -321,7 +318,6 @@ std::string format_geojson(const MultiPolygon& region) {
     append_json_polygon(out, polygon);
   }
   out += "]}";
-  return out;
 }
 
 std::string format_geojson(const Polygon& polygon) {

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/ring_text.h"
 #include "io/text_scan.h"
 
 namespace contain::io {
@@ -275,15 +276,7 @@ class WktReader {
 };
 
 void append_ring(std::string& out, const Ring& ring) {
-  out += '(';
-  for (std::size_t i = 0; i <= ring.size(); ++i) {
-    const Vec2& q = ring[i % ring.size()];
-    if (i > 0) out += ", ";
-    detail::append_double(out, q.x);
-    out += ' ';
-    detail::append_double(out, q.y);
-  }
-  out += ')';
+  detail::append_ring_text(out, ring, detail::RingSyntax::wkt);
 }
 
 void append_polygon(std::string& out, const Polygon& polygon) {
@@ -326,7 +319,13 @@ Result<MultiPolygon> read_wkt(const std::filesystem::path& path) {
 }
 
 std::string format_wkt(const MultiPolygon& region) {
-  std::string out = "MULTIPOLYGON ";
+  std::string out;
+  format_wkt(region, out);
+  return out;
+}
+
+void format_wkt(const MultiPolygon& region, std::string& out) {
+  out += "MULTIPOLYGON ";
   bool first = true;
   for (const Polygon& polygon : region.polygons) {
     if (!has_points(polygon)) continue;
@@ -335,7 +334,6 @@ std::string format_wkt(const MultiPolygon& region) {
     append_polygon(out, polygon);
   }
   out += first ? "EMPTY" : ")";
-  return out;
 }
 
 std::string format_wkt(const Polygon& polygon) {

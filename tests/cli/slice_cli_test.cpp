@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "cli/cube_off.h"
 #include "cli/run.h"
@@ -147,6 +148,42 @@ TEST(SliceCli, ThreadCountsGiveTheSameBytes) {
       {"slice", "--mesh", mesh, "--layers", "-0.5,0.125,2.5", "--json", "--threads", "2"});
   EXPECT_EQ(one.exit_code, 0) << one.err;
   EXPECT_EQ(one.out, two.out);
+}
+
+// 5,001 planes are written in several blocks (64 planes first, then sized by their points):
+// every line is the one the plane gives alone, in order, and GeoJSON's features are joined by
+// single commas across blocks. --quiet is accepted (no progress off a terminal anyway).
+TEST(SliceCli, ManyPlanesStreamedInBlocksAreThePlanesOneByOne) {
+  TempDir dir;
+  const std::string mesh = dir.write("stacked.off", stacked_cubes_off());
+  const CliRun run = run_contain(
+      {"slice", "--mesh", mesh, "--layers", "-0.25,0.0005,2.25", "--threads", "2", "--quiet"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+  std::size_t lines = 0;
+  for (const char c : run.out)
+    lines += c == '\n' ? 1 : 0;
+  EXPECT_EQ(lines, 5001U);
+  // Lines from the first block, the second and the last, each the line of its value alone.
+  std::vector<std::string> lines_of_run;
+  for (std::size_t at = 0; at < run.out.size();) {
+    const std::size_t end = run.out.find('\n', at);
+    lines_of_run.push_back(run.out.substr(at, end + 1 - at));
+    at = end + 1;
+  }
+  for (const std::size_t k : {std::size_t{0}, std::size_t{63}, std::size_t{64}, std::size_t{2500},
+                              std::size_t{3001}, std::size_t{5000}}) {
+    ASSERT_LT(k, lines_of_run.size());
+    const std::string value = lines_of_run[k].substr(0, lines_of_run[k].find('\t'));
+    const CliRun alone = run_contain({"slice", "--mesh", mesh, "--z", value});
+    EXPECT_EQ(alone.out, lines_of_run[k]) << k;
+  }
+  const CliRun g = run_contain(
+      {"slice", "--mesh", mesh, "--layers", "-0.25,0.0005,2.25", "--format", "geojson"});
+  EXPECT_EQ(g.exit_code, 0) << g.err;
+  EXPECT_EQ(g.out.find(",,"), std::string::npos);
+  EXPECT_EQ(g.out.find("[,"), std::string::npos);
+  EXPECT_EQ(g.out.substr(g.out.size() - 3), "]}\n");
 }
 
 TEST(SliceCli, AnOpenMeshIsBadInputForSectionsNamingTheFileAndTheEdgeButCastsAShadow) {

@@ -36,6 +36,9 @@ namespace contain::io {
 /// for counter-clockwise shells; the writer does not reorder). One line, no newline at the end.
 [[nodiscard]] std::string format_geojson(const MultiPolygon& region);
 
+/// `format_geojson(region)` appended to `out` (no temporary string: writers of many regions).
+void format_geojson(const MultiPolygon& region, std::string& out);
+
 /// `{"type":"Polygon","coordinates":[...]}`, as above.
 [[nodiscard]] std::string format_geojson(const Polygon& polygon);
 

@@ -62,6 +62,9 @@ struct WktRegion {
 /// are left out. One line, no newline at the end.
 [[nodiscard]] std::string format_wkt(const MultiPolygon& region);
 
+/// `format_wkt(region)` appended to `out` (no temporary string: writers of many regions).
+void format_wkt(const MultiPolygon& region, std::string& out);
+
 /// `POLYGON ((x y, ...), ...)`, or `POLYGON EMPTY` for a polygon without rings (as above).
 [[nodiscard]] std::string format_wkt(const Polygon& polygon);
 

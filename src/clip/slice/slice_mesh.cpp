@@ -2,15 +2,12 @@
 
 #include "contain/clip/slice_mesh.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <optional>
 #include <string>
-#include <utility>
 
 #include "clip/slice/stages.h"
+#include "contain/clip/mesh_slicer.h"
 #include "contain/shapes/mesh_closure.h"
 
 namespace contain::clip {
@@ -42,29 +39,9 @@ Status require_closed(const WeldResult& weld) {
 
 Result<std::vector<Section>> slice_mesh(const Mesh& mesh, std::span<const double> values,
                                         const SliceOptions& options, const BatchOptions& batch) {
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!std::isfinite(values[i])) {
-      return Error{ErrorKind::invalid_value,
-                   "plane value " + std::to_string(i) + " is not a finite number"};
-    }
-  }
-  slice::SweepMesh prepared;
-  if (Status closed = slice::prepare_closed(mesh, slice::frame_of(options.axis), prepared); !closed)
-    return closed.error();
-  std::vector<std::size_t> order(values.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
-  std::vector<double> sorted(values.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    sorted[i] = values[order[i]];
-  const slice::SweepStarts starts = slice::sweep_starts(prepared, sorted);
-  std::vector<Section> out(values.size());
-  // One plane is a whole 2D boolean: chunks of a single plane are worth a thread.
-  parallel_for(values.size(), batch, std::size_t{1}, [&](std::size_t begin, std::size_t end) {
-    slice::sweep(prepared, starts, sorted, order, begin, end, out);
-  });
-  return out;
+  auto slicer = MeshSlicer::make(mesh, values, options);
+  if (!slicer) return slicer.error();
+  return slicer->slice(0, values.size(), batch);
 }
 
 }  // namespace contain::clip

@@ -269,9 +269,10 @@ struct SweepScratch {
 
 /// Sections of the planes sorted[i] = values[order[i]] for i in [begin, end), `order` sorting
 /// the values increasingly: one sweep with an active set fed by `starts`, each answer written
-/// to out[order[i]].
+/// to out[order[i] - first] when order[i] is in [first, first + out.size()); the other planes
+/// of the run only move the active set along (a block of unsorted values).
 void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
-           std::span<Section> out);
+           std::size_t first, std::span<Section> out);
 
 }  // namespace contain::clip::slice

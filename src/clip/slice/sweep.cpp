@@ -57,7 +57,7 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
 
 void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
-           std::span<Section> out) {
+           std::size_t first, std::span<Section> out) {
   SweepScratch scratch;
   std::vector<std::int32_t>& active = scratch.active;
   const auto entering = [&](std::size_t i) {
@@ -82,7 +82,8 @@ void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const dou
     // depends on it (walk_curve, chain_rings, edge_triangles).
     std::erase_if(active,
                   [&](std::int32_t t) { return mesh.high(static_cast<std::size_t>(t)) < c; });
-    out[order[i]] = section_at(mesh, active, c, scratch);
+    if (order[i] < first || order[i] - first >= out.size()) continue;
+    out[order[i] - first] = section_at(mesh, active, c, scratch);
   }
 }
 

@@ -1,0 +1,96 @@
+// MeshSlicer: a solid prepared once and sliced in blocks gives slice_mesh's sections bit for bit.
+
+#include "contain/clip/mesh_slicer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "contain/clip/slice_mesh.h"
+#include "scenes/scenes.h"
+
+namespace contain::test {
+namespace {
+
+// The sections of values[begin, end) in blocks of `block`, one after another.
+std::vector<clip::Section> sliced_in_blocks(const clip::MeshSlicer& slicer, std::size_t block,
+                                            int threads) {
+  std::vector<clip::Section> out;
+  for (std::size_t begin = 0; begin < slicer.size(); begin += block) {
+    std::vector<clip::Section> part = slicer.slice(begin, begin + block, {.threads = threads});
+    for (clip::Section& s : part)
+      out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void expect_same_sections(const std::vector<clip::Section>& a,
+                          const std::vector<clip::Section>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].value, b[i].value) << i;
+    EXPECT_EQ(a[i].region, b[i].region) << i;
+    EXPECT_EQ(a[i].triangles, b[i].triangles) << i;
+  }
+}
+
+TEST(MeshSlicer, BlocksOfIncreasingPlanesAreSliceMeshsSectionsBitForBit) {
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  std::vector<double> values;
+  for (int i = 0; i <= 60; ++i)
+    values.push_back(-0.7 + 0.025 * i);
+  for (const clip::Axis axis : {clip::Axis::x, clip::Axis::z}) {
+    const auto whole = clip::slice_mesh(torus, values, {.axis = axis}, {.threads = 1});
+    ASSERT_TRUE(whole.ok());
+    const auto slicer = clip::MeshSlicer::make(torus, values, {.axis = axis});
+    ASSERT_TRUE(slicer.ok());
+    for (const std::size_t block : {std::size_t{1}, std::size_t{7}, std::size_t{64}}) {
+      for (const int threads : {1, 2})
+        expect_same_sections(sliced_in_blocks(*slicer, block, threads), *whole);
+    }
+  }
+}
+
+TEST(MeshSlicer, BlocksOfUnsortedAndRepeatedPlanesAreSliceMeshsSections) {
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  std::vector<double> values;
+  for (int i = 0; i < 40; ++i)
+    values.push_back(-0.7 + 0.035 * ((i * 17) % 40));
+  values.push_back(values[3]);
+  const auto whole = clip::slice_mesh(torus, values, {.axis = clip::Axis::y}, {.threads = 1});
+  ASSERT_TRUE(whole.ok());
+  const auto slicer = clip::MeshSlicer::make(torus, values, {.axis = clip::Axis::y});
+  ASSERT_TRUE(slicer.ok());
+  for (const std::size_t block : {std::size_t{1}, std::size_t{5}, std::size_t{100}})
+    expect_same_sections(sliced_in_blocks(*slicer, block, 2), *whole);
+}
+
+TEST(MeshSlicer, EmptyBlocksAndRangesPastTheEndAreClamped) {
+  const Mesh box = scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}});
+  const std::vector<double> values{0.25, 0.5};
+  const auto slicer = clip::MeshSlicer::make(box, values);
+  ASSERT_TRUE(slicer.ok());
+  EXPECT_EQ(slicer->size(), 2U);
+  EXPECT_TRUE(slicer->slice(1, 1).empty());
+  EXPECT_TRUE(slicer->slice(5, 9).empty());
+  const std::vector<clip::Section> tail = slicer->slice(1, 10);
+  ASSERT_EQ(tail.size(), 1U);
+  EXPECT_EQ(tail[0].value, 0.5);
+}
+
+TEST(MeshSlicer, AnOpenMeshOrAValueNotFiniteIsRefused) {
+  Mesh open = scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}});
+  open.triangles.pop_back();
+  const std::vector<double> values{0.5};
+  const auto refused = clip::MeshSlicer::make(open, values);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().kind, ErrorKind::degenerate);
+  const std::vector<double> bad{std::nan("")};
+  const auto nan = clip::MeshSlicer::make(scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}}), bad);
+  ASSERT_FALSE(nan.ok());
+  EXPECT_EQ(nan.error().kind, ErrorKind::invalid_value);
+}
+
+}  // namespace
+}  // namespace contain::test
