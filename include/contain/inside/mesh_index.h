@@ -184,7 +184,8 @@ class MeshIndex {
   [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
   [[nodiscard]] Location locate_direct(Vec3 p) const;
-  [[nodiscard]] Location locate_direct_on_surface(Vec3 p) const;
+  [[nodiscard]] Location locate_direct_on_surface(Vec3 p,
+                                                  const std::vector<std::uint8_t>& sides) const;
   [[nodiscard]] Location locate_on_surface(Vec3 p) const;
   [[nodiscard]] Location classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const;
   [[nodiscard]] Location classify_near(Vec3 p, std::span<const Triangle3> near) const;
