@@ -283,8 +283,19 @@ std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
 // Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
 // counting sort by cell keeps that order within each cell.
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
+  // Cell numbers in 32 bits where the grid allows (any grid of the default options): pairs of
+  // 8 bytes, not 16, half the memory to fault in and to read twice.
+  if (stats_.cells <= std::numeric_limits<std::uint32_t>::max()) {
+    list_triangles_by_cell_as<std::uint32_t>(boxes);
+  } else {
+    list_triangles_by_cell_as<std::size_t>(boxes);
+  }
+}
+
+template <class Cell>
+void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
-  std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
+  std::vector<std::pair<Cell, std::uint32_t>> pairs;  // (cell, triangle)
   // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
   // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
   pairs.reserve(8 * boxes.size());
@@ -308,7 +319,7 @@ void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
                                  static_cast<std::size_t>(j)) *
                                     static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i);
-          pairs.emplace_back(c, static_cast<std::uint32_t>(t));
+          pairs.emplace_back(static_cast<Cell>(c), static_cast<std::uint32_t>(t));
         }
   }
   // surface_ holds each cell's count first, then its surface cell number: no temporary array

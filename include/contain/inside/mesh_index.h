@@ -174,6 +174,8 @@ class MeshIndex {
   [[nodiscard]] std::vector<Box3> read_triangles_by_cell(const Mesh& mesh,
                                                          const std::vector<Box3>& boxes);
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
+  template <class Cell>
+  void list_triangles_by_cell_as(const std::vector<Box3>& boxes);
   void settle_empty_cells();
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
