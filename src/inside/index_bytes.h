@@ -41,6 +41,18 @@ class Writer {
     const auto* p = reinterpret_cast<const std::byte*>(values.data());
     bytes_.insert(bytes_.end(), p, p + values.size_bytes());
   }
+  // The count, then room for n zeroed elements, to be filled in place (no copy of the array
+  // made first): their first byte.
+  template <class T>
+  std::byte* put_array_in_place(std::size_t n) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    put<std::uint64_t>(n);
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + n * sizeof(T));  // zeroed: padding bytes never stale
+    return bytes_.data() + at;
+  }
+  // Room for `more` bytes past the current end: no reallocation (and copy) while they come.
+  void reserve(std::size_t more) { bytes_.reserve(bytes_.size() + more); }
   void put(Vec2 v) {
     put(v.x);
     put(v.y);

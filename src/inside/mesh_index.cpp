@@ -196,9 +196,14 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   regime_ = MeshRegime::closed_exact;
   by_parity_ = rule == SolidRule::parity;
   if (few_queries(options.queries)) {  // no grid, no records: locate_direct reads the mesh
-    for (const TriangleIndices& t : mesh.triangles)
-      for (const std::int32_t v : t)
-        bounds_.expand(mesh.vertex(v));
+    if (report_.referenced_vertices == mesh.vertices.size()) {  // the same box, read in order
+      for (const Vec3& v : mesh.vertices)
+        bounds_.expand(v);
+    } else {
+      for (const TriangleIndices& t : mesh.triangles)
+        for (const std::int32_t v : t)
+          bounds_.expand(mesh.vertex(v));
+    }
     stats_.triangles = mesh.triangles.size();
     return true;
   }
@@ -278,8 +283,19 @@ std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
 // Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
 // counting sort by cell keeps that order within each cell.
 void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
+  // Cell numbers in 32 bits where the grid allows (any grid of the default options): pairs of
+  // 8 bytes, not 16, half the memory to fault in and to read twice.
+  if (stats_.cells <= std::numeric_limits<std::uint32_t>::max()) {
+    list_triangles_by_cell_as<std::uint32_t>(boxes);
+  } else {
+    list_triangles_by_cell_as<std::size_t>(boxes);
+  }
+}
+
+template <class Cell>
+void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
   const std::size_t cell_count = stats_.cells;
-  std::vector<std::pair<std::size_t, std::uint32_t>> pairs;  // (cell, triangle)
+  std::vector<std::pair<Cell, std::uint32_t>> pairs;  // (cell, triangle)
   // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
   // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
   pairs.reserve(8 * boxes.size());
@@ -303,7 +319,7 @@ void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
                                  static_cast<std::size_t>(j)) *
                                     static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i);
-          pairs.emplace_back(c, static_cast<std::uint32_t>(t));
+          pairs.emplace_back(static_cast<Cell>(c), static_cast<std::uint32_t>(t));
         }
   }
   // surface_ holds each cell's count first, then its surface cell number: no temporary array
@@ -429,26 +445,43 @@ Location MeshIndex::locate_exact(Vec3 p) const {
 
 namespace {
 
-// Whether the closed box of triangle (a, b, c) meets the closed ray from p along +x: a triangle
-// it misses neither holds p nor is crossed by the perturbed ray (exact comparisons).
-bool box_meets_ray(Vec3 a, Vec3 b, Vec3 c, Vec3 p) {
-  const double x_hi = std::max({a.x, b.x, c.x});
-  const double y_lo = std::min({a.y, b.y, c.y}), y_hi = std::max({a.y, b.y, c.y});
-  const double z_lo = std::min({a.z, b.z, c.z}), z_hi = std::max({a.z, b.z, c.z});
-  return !((p.x > x_hi) | (p.y < y_lo) | (p.y > y_hi) | (p.z < z_lo) | (p.z > z_hi));
+// Where a vertex lies against the closed ray from p along +x, a bit for each side of it the
+// vertex is strictly beyond: left of p, below or above it in y, in z. The closed box of a
+// triangle misses the ray iff its three corners share a bit (exact comparisons): such a triangle
+// neither holds p nor is crossed by the perturbed ray.
+std::uint8_t side_of_ray(Vec3 v, Vec3 p) {
+  return static_cast<std::uint8_t>(
+      static_cast<unsigned>(v.x < p.x) | static_cast<unsigned>(v.y < p.y) << 1U |
+      static_cast<unsigned>(v.y > p.y) << 2U | static_cast<unsigned>(v.z < p.z) << 3U |
+      static_cast<unsigned>(v.z > p.z) << 4U);
+}
+
+// The sides of every vertex: a byte each, read in order; the triangles then test their boxes
+// against the ray with three bytes, not nine coordinates scattered over the vertex array.
+std::vector<std::uint8_t> sides_of_ray(std::span<const Vec3> vertices, Vec3 p) {
+  std::vector<std::uint8_t> sides(vertices.size());
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    sides[v] = side_of_ray(vertices[v], p);
+  return sides;
+}
+
+bool box_meets_ray(const std::vector<std::uint8_t>& sides, const TriangleIndices& t) {
+  return (sides[static_cast<std::size_t>(t[0])] & sides[static_cast<std::size_t>(t[1])] &
+          sides[static_cast<std::size_t>(t[2])]) == 0;
 }
 
 }  // namespace
 
 // Without a grid (few queries): every triangle of the mesh, the tests of the grid's queries.
 Location MeshIndex::locate_direct(Vec3 p) const {
+  const std::vector<std::uint8_t> sides = sides_of_ray(mesh_.vertices, p);
   int count = 0;
   for (const TriangleIndices& t : mesh_.triangles) {
+    if (!box_meets_ray(sides, t)) continue;
     const Vec3 a = mesh_.vertex(t[0]), b = mesh_.vertex(t[1]), c = mesh_.vertex(t[2]);
-    if (!box_meets_ray(a, b, c, p)) continue;
     if (predicates::orient3d(a, b, c, p) == Sign::zero &&
         point_in_triangle(Triangle3{a, b, c}, p) != Location::outside) {
-      return by_parity_ ? Location::boundary : locate_direct_on_surface(p);
+      return by_parity_ ? Location::boundary : locate_direct_on_surface(p, sides);
     }
     const Sign s = predicates::projected_sign(a, b, c);
     if (s != Sign::zero && predicates::perturbed_line_hits_unboxed(a, b, c, s, p) &&
@@ -460,11 +493,11 @@ Location MeshIndex::locate_direct(Vec3 p) const {
 }
 
 // p on the surface, without a grid: every triangle whose box meets the closed ray from p.
-Location MeshIndex::locate_direct_on_surface(Vec3 p) const {
+Location MeshIndex::locate_direct_on_surface(Vec3 p, const std::vector<std::uint8_t>& sides) const {
   std::vector<Triangle3> near;
   for (const TriangleIndices& t : mesh_.triangles) {
-    const Vec3 a = mesh_.vertex(t[0]), b = mesh_.vertex(t[1]), c = mesh_.vertex(t[2]);
-    if (box_meets_ray(a, b, c, p)) near.push_back({a, b, c});
+    if (box_meets_ray(sides, t))
+      near.push_back({mesh_.vertex(t[0]), mesh_.vertex(t[1]), mesh_.vertex(t[2])});
   }
   return classify_near(p, near);
 }

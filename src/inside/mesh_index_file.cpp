@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <iterator>
 #include <utility>
 
@@ -77,22 +78,23 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   static_assert(sizeof(MeshIndex::Tri) == 104 && offsetof(MeshIndex::Tri, lo) == 72 &&
                     offsetof(MeshIndex::Tri, s) == 96,
                 "MeshIndex::Tri changed: update mesh_index_file.cpp and index_format_version");
-  // Member by member into zeroed records: the file never holds the padding's stale bytes. An
-  // index for few queries keeps the mesh instead: its records are made for the file.
+  // Member by member into zeroed records, in the file's bytes: the file never holds the
+  // padding's stale bytes. An index for few queries keeps the mesh instead: its records are made
+  // for the file.
   const std::vector<MeshIndex::Tri> direct = direct_records(index);
   const std::vector<MeshIndex::Tri>& source = index.mesh_.triangles.empty() ? index.tris_ : direct;
-  std::vector<MeshIndex::Tri> tris(source.size());
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const MeshIndex::Tri& from = source[t];
-    MeshIndex::Tri& to = tris[t];
-    to.a = from.a;
-    to.b = from.b;
-    to.c = from.c;
-    std::copy(std::begin(from.lo), std::end(from.lo), std::begin(to.lo));
-    std::copy(std::begin(from.hi), std::end(from.hi), std::begin(to.hi));
-    to.s = from.s;
+  w.reserve(sizeof(MeshIndex::Tri) * source.size() + index.state_.size() +
+            4 * (index.surface_.size() + index.cell_start_.size() + index.refs_.size()) + 256);
+  std::byte* to = w.put_array_in_place<MeshIndex::Tri>(source.size());
+  for (const MeshIndex::Tri& from : source) {
+    std::memcpy(to + offsetof(MeshIndex::Tri, a), &from.a, sizeof from.a);
+    std::memcpy(to + offsetof(MeshIndex::Tri, b), &from.b, sizeof from.b);
+    std::memcpy(to + offsetof(MeshIndex::Tri, c), &from.c, sizeof from.c);
+    std::memcpy(to + offsetof(MeshIndex::Tri, lo), from.lo, sizeof from.lo);
+    std::memcpy(to + offsetof(MeshIndex::Tri, hi), from.hi, sizeof from.hi);
+    std::memcpy(to + offsetof(MeshIndex::Tri, s), &from.s, sizeof from.s);
+    to += sizeof(MeshIndex::Tri);
   }
-  w.put_array<MeshIndex::Tri>(tris);
   w.put(index.winding_.accuracy());
   w.put(index.x_);
   w.put(index.y_);
@@ -101,10 +103,11 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   // Every cell's word: a surface cell's number, an empty cell's winding number.
   w.put_array<std::uint32_t>(index.surface_);
   w.put_array<std::uint32_t>(index.cell_start_);
-  std::vector<std::uint32_t> refs(index.refs_.size());
-  std::transform(index.refs_.begin(), index.refs_.end(), refs.begin(),
-                 [](const MeshIndex::CellRef& ref) { return ref.tri; });
-  w.put_array<std::uint32_t>(refs);
+  std::byte* ref_to = w.put_array_in_place<std::uint32_t>(index.refs_.size());
+  for (const MeshIndex::CellRef& ref : index.refs_) {
+    std::memcpy(ref_to, &ref.tri, sizeof ref.tri);
+    ref_to += sizeof ref.tri;
+  }
   const MeshIndex::Stats& s = index.stats_;
   for (std::size_t v : {s.triangles, s.cells, s.surface_cells, s.cell_refs})
     w.put<std::uint64_t>(v);

@@ -26,11 +26,19 @@ namespace contain::shapes {
 
 namespace {
 
+// Zero area iff all three projected areas are zero. The projection along the largest component
+// of the (rounded) normal goes first: for a triangle of some area it is the one whose filtered
+// orient2d answers at once, whatever the triangle's direction (vertical ones included).
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
   using predicates::orient2d;
-  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
-         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
-         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+  const auto xy = [&] { return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero; };
+  const auto yz = [&] { return orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero; };
+  const auto zx = [&] { return orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero; };
+  const Vec3 n = cross(b - a, c - a);
+  const double nx = std::abs(n.x), ny = std::abs(n.y), nz = std::abs(n.z);
+  if (nx >= ny && nx >= nz) return yz() && zx() && xy();
+  if (ny >= nz) return zx() && xy() && yz();
+  return xy() && yz() && zx();
 }
 
 // Corners 3 t + k grouped by their vertex, ascending within a vertex (so the corners of one
@@ -117,9 +125,72 @@ std::size_t duplicates_at(const Mesh& mesh, const VertexCorners& vc, std::int32_
   return count;
 }
 
+// The corner at v of triangle `c / 3`, seen from v: the vertex before it and the one after it.
+struct Around {
+  std::int32_t prev;
+  std::int32_t next;
+};
+
+// The common case, proved cheaply: at every vertex v, its corners form one cycle in which each
+// corner's next vertex is the following corner's previous one, the previous vertices all
+// distinct. Then every directed edge v -> w is used once and w -> v once (closed, consistently
+// oriented, no edge of three triangles), no vertex is a pinch (one fan), and no triangle repeats
+// another (same orientation: a directed edge twice; opposite: a corner and its successor with
+// swapped ends). Fills the topology fields as check_topology does; false, at the first sign of
+// anything else (the full analysis then counts what and how much), with `r` unchanged.
+bool check_topology_quick(const Mesh& mesh, const VertexCorners& vc, MeshReport& r) {
+  std::vector<Around> around;
+  UnionFind<std::uint32_t> vertices(mesh.vertices.size());
+  std::size_t referenced = 0, edges = 0;
+  for (std::size_t vi = 0; vi < mesh.vertices.size(); ++vi) {
+    const std::uint32_t first = vc.start[vi], count = vc.start[vi + 1] - first;
+    if (count == 0) continue;
+    ++referenced;
+    const auto v = static_cast<std::int32_t>(vi);
+    around.clear();
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::uint32_t c = vc.corner[first + i];
+      const TriangleIndices& tri = mesh.triangles[c / 3];
+      const Around a{tri[(c % 3 + 2) % 3], tri[(c % 3 + 1) % 3]};
+      if (a.prev == v || a.next == v) return false;  // a repeated index
+      around.push_back(a);
+    }
+    std::sort(around.begin(), around.end(),
+              [](const Around& a, const Around& b) { return a.prev < b.prev; });
+    for (std::uint32_t i = 1; i < count; ++i)
+      if (around[i].prev == around[i - 1].prev) return false;
+    // The walk from corner 0 to the corner whose previous vertex is this one's next: back at
+    // corner 0 first after exactly `count` steps, it has visited every corner once.
+    std::size_t at = 0;
+    for (std::uint32_t step = 1; step <= count; ++step) {
+      const std::int32_t next = around[at].next;
+      const auto found =
+          std::lower_bound(around.begin(), around.end(), next,
+                           [](const Around& a, std::int32_t value) { return a.prev < value; });
+      if (found == around.end() || found->prev != next) return false;  // a border edge
+      if (found->next == around[at].prev) return false;  // the same triangle, turned over
+      at = static_cast<std::size_t>(found - around.begin());
+      if ((at == 0) != (step == count)) return false;  // several fans, or edges of three
+    }
+    for (const Around& a : around) {
+      if (a.next > v) {  // the edge {v, next}, counted at its smaller end
+        ++edges;
+        vertices.unite(static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(a.next));
+      }
+    }
+  }
+  r.referenced_vertices = referenced;
+  r.edges = edges;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (vc.start[v] != vc.start[v + 1] && vertices.find(static_cast<std::uint32_t>(v)) == v) {
+      ++r.components;
+    }
+  }
+  return true;
+}
+
 // Edges, fans, components and duplicates, vertex by vertex.
-void check_topology(const Mesh& mesh, MeshReport& r) {
-  const VertexCorners vc = corners_by_vertex(mesh);
+void check_topology(const Mesh& mesh, const VertexCorners& vc, MeshReport& r) {
   UnionFind<std::uint32_t> vertices(mesh.vertices.size());
   std::vector<Link> links;
   UnionFind<std::uint32_t> fans(0);  // v's corners, by their position in its list
@@ -166,7 +237,9 @@ void check_topology(const Mesh& mesh, MeshReport& r) {
 
 }  // namespace
 
-MeshReport validate_mesh(const Mesh& mesh) {
+namespace {
+
+MeshReport validate(const Mesh& mesh, bool quick_first) {
   MeshReport r;
   r.vertices = mesh.vertices.size();
   r.triangles = mesh.triangles.size();
@@ -184,7 +257,10 @@ MeshReport validate_mesh(const Mesh& mesh) {
       ++r.degenerate_triangles;
     }
   }
-  check_topology(mesh, r);
+  if (const VertexCorners vc = corners_by_vertex(mesh);
+      !quick_first || !check_topology_quick(mesh, vc, r)) {
+    check_topology(mesh, vc, r);
+  }
 
   r.euler_characteristic = static_cast<std::int64_t>(r.referenced_vertices) -
                            static_cast<std::int64_t>(r.edges) + static_cast<std::int64_t>(nt);
@@ -207,6 +283,16 @@ MeshReport validate_mesh(const Mesh& mesh) {
     r.signed_volume = (sum + compensation) / 6.0;
   }
   return r;
+}
+
+}  // namespace
+
+MeshReport validate_mesh(const Mesh& mesh) {
+  return validate(mesh, true);
+}
+
+MeshReport detail::validate_mesh_in_full(const Mesh& mesh) {
+  return validate(mesh, false);
 }
 
 std::string MeshReport::summary() const {

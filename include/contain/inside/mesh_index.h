@@ -174,6 +174,8 @@ class MeshIndex {
   [[nodiscard]] std::vector<Box3> read_triangles_by_cell(const Mesh& mesh,
                                                          const std::vector<Box3>& boxes);
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
+  template <class Cell>
+  void list_triangles_by_cell_as(const std::vector<Box3>& boxes);
   void settle_empty_cells();
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
@@ -184,7 +186,8 @@ class MeshIndex {
   [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
   [[nodiscard]] Location locate_direct(Vec3 p) const;
-  [[nodiscard]] Location locate_direct_on_surface(Vec3 p) const;
+  [[nodiscard]] Location locate_direct_on_surface(Vec3 p,
+                                                  const std::vector<std::uint8_t>& sides) const;
   [[nodiscard]] Location locate_on_surface(Vec3 p) const;
   [[nodiscard]] Location classify_on_surface(Vec3 p, const std::vector<std::uint32_t>& near) const;
   [[nodiscard]] Location classify_near(Vec3 p, std::span<const Triangle3> near) const;

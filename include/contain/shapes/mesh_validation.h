@@ -75,6 +75,12 @@ struct MeshReport {
 /// in range (a `Mesh` from `Mesh::from_arrays` or a reader).
 [[nodiscard]] MeshReport validate_mesh(const Mesh& mesh);
 
+namespace detail {
+/// `validate_mesh` without its quick proof of the common case (a closed, oriented 2-manifold
+/// without duplicates): the full analysis always. The same report; for tests.
+[[nodiscard]] MeshReport validate_mesh_in_full(const Mesh& mesh);
+}  // namespace detail
+
 /// The result of `weld_vertices`.
 struct WeldResult {
   Mesh mesh;                        ///< vertices in order of first occurrence
