@@ -573,8 +573,10 @@ Verb add_clip(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "clip",
       "Clipping: segments by boxes, half-spaces, convex regions and balls; polygons and meshes by "
-      "half-spaces, boxes or convex shapes; polygons cut into tiles (--tiles); polygon booleans "
-      "(A B --op)");
+      "half-spaces, boxes or convex shapes; polygons cut into tiles (--tiles); booleans of "
+      "polygons "
+      "and of solids (A B --op, n-ary with --clip repeated, a solid repaired with --op union), CSG "
+      "trees evaluated to one mesh (--csg)");
   auto* segments = cmd->add_option("--segments", o->segments,
                                    "segments, one a line: 4 numbers (2D) or 6 (3D); '-': stdin")
                        ->option_text("FILE");
