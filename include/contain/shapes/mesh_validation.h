@@ -68,7 +68,9 @@ struct MeshReport {
 };
 
 /// Checks a mesh. Topology vertex by vertex over the triangle corners grouped by vertex (O(n)
-/// for n triangles, plus sorting each vertex's few edges); degenerate triangles
+/// for n triangles, plus sorting each vertex's few edges): first a quick proof of the common
+/// case (one walk around each vertex's fan shows a closed, oriented 2-manifold without
+/// duplicates), the full analysis below only where it fails (the same report); degenerate triangles
 /// exactly with predicates::orient2d on the three coordinate projections (a triangle has zero
 /// area iff all three projected areas are zero); pinch vertices by joining, at each vertex, the
 /// triangles that share an edge there (union-find over triangle corners). Precondition: indices
