@@ -66,6 +66,35 @@ TEST(MeshSlicer, BlocksOfUnsortedAndRepeatedPlanesAreSliceMeshsSections) {
     expect_same_sections(sliced_in_blocks(*slicer, block, 2), *whole);
 }
 
+// The slicer carries the sweep from one block to the next: blocks taken backwards, again, or
+// skipping ahead must not inherit a wrong start.
+TEST(MeshSlicer, BlocksBackwardsRepeatedOrSkippingAheadAreSliceMeshsSections) {
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  std::vector<double> values;
+  for (int i = 0; i <= 60; ++i)
+    values.push_back(-0.7 + 0.025 * i);
+  const auto whole = clip::slice_mesh(torus, values, {.axis = clip::Axis::z}, {.threads = 1});
+  ASSERT_TRUE(whole.ok());
+  const auto slicer = clip::MeshSlicer::make(torus, values, {.axis = clip::Axis::z});
+  ASSERT_TRUE(slicer.ok());
+  const auto expect_block = [&](std::size_t begin, std::size_t end, int threads) {
+    const std::vector<clip::Section> part = slicer->slice(begin, end, {.threads = threads});
+    ASSERT_EQ(part.size(), end - begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      EXPECT_EQ(part[i - begin].region, (*whole)[i].region) << i;
+      EXPECT_EQ(part[i - begin].triangles, (*whole)[i].triangles) << i;
+    }
+  };
+  for (int begin = 56; begin >= 0; begin -= 8) {  // backwards: 56, 48, ..., 0
+    const auto b = static_cast<std::size_t>(begin);
+    expect_block(b, b + 5, 2);
+  }
+  expect_block(20, 30, 1);
+  expect_block(20, 30, 2);  // the same block again
+  expect_block(45, 61, 2);  // skipping ahead
+  expect_block(0, 61, 2);
+}
+
 TEST(MeshSlicer, EmptyBlocksAndRangesPastTheEndAreClamped) {
   const Mesh box = scenes::box_mesh(Box3{{0, 0, 0}, {1, 1, 1}});
   const std::vector<double> values{0.25, 0.5};

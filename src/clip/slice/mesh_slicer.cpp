@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -18,6 +19,12 @@ struct MeshSlicer::State {
   std::vector<std::size_t> rank;   // input index -> sorted position
   std::vector<double> sorted;
   slice::SweepStarts starts;
+  // Where the last block left the sweep (`slice::carry_active`): the next block of increasing
+  // values starts there rather than rescanning every triangle entered before it. Guarded, as
+  // `slice` is const and may be called from several threads.
+  std::mutex carry_mutex;
+  std::size_t carried_at = 0;
+  std::vector<std::size_t> carried;
 };
 
 MeshSlicer::MeshSlicer(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -64,11 +71,31 @@ std::vector<Section> MeshSlicer::slice(std::size_t begin, std::size_t end,
   const auto [low, high] = std::minmax_element(s.rank.begin() + static_cast<std::ptrdiff_t>(begin),
                                                s.rank.begin() + static_cast<std::ptrdiff_t>(end));
   const std::size_t first = *low;
+  const std::size_t past = *high + 1;
+  std::vector<std::size_t> at_first;
+  {
+    const std::lock_guard<std::mutex> lock(state_->carry_mutex);
+    if (s.carried_at <= first) {
+      at_first = s.carried;
+      slice::carry_active(s.mesh, s.starts, s.sorted, s.carried_at, first, at_first);
+    } else {  // a block behind the last one: from the start
+      slice::carry_active(s.mesh, s.starts, s.sorted, 0, first, at_first);
+    }
+  }
   std::vector<Section> out(end - begin);
   // One plane is a whole 2D boolean: chunks of a single plane are worth a thread.
-  parallel_for(*high + 1 - first, batch, std::size_t{1}, [&](std::size_t from, std::size_t to) {
-    slice::sweep(s.mesh, s.starts, s.sorted, s.order, first + from, first + to, begin, out);
+  parallel_for(past - first, batch, std::size_t{1}, [&](std::size_t from, std::size_t to) {
+    std::vector<std::size_t> carried = at_first;
+    slice::carry_active(s.mesh, s.starts, s.sorted, first, first + from, carried);
+    slice::sweep(s.mesh, s.starts, s.sorted, s.order, first + from, first + to, begin, carried,
+                 out);
   });
+  {
+    const std::lock_guard<std::mutex> lock(state_->carry_mutex);
+    state_->carried = std::move(at_first);
+    slice::carry_active(s.mesh, s.starts, s.sorted, first, past, state_->carried);
+    state_->carried_at = past;
+  }
   return out;
 }
 

@@ -271,8 +271,18 @@ struct SweepScratch {
 /// the values increasingly: one sweep with an active set fed by `starts`, each answer written
 /// to out[order[i] - first] when order[i] is in [first, first + out.size()); the other planes
 /// of the run only move the active set along (a block of unsorted values).
+/// `carried`: the positions in `starts.triangles`, increasing, of the triangles entered before
+/// plane `begin` that reach sorted[begin] (`carry_active`), so that a run of planes starts
+/// where an earlier one ended instead of rescanning every triangle entered before it.
 void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
-           std::size_t first, std::span<Section> out);
+           std::size_t first, std::span<const std::size_t> carried, std::span<Section> out);
+
+/// Moves `positions` (increasing positions in `starts.triangles` holding every triangle entered
+/// before plane `from` that reaches any plane from `from` on) to plane `to` >= `from`: those
+/// entered before `to` that reach sorted[to], still increasing, so in the order a rescan of all
+/// triangles entered before `to` gives. `to` may be sorted.size(): then none is left.
+void carry_active(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
+                  std::size_t from, std::size_t to, std::vector<std::size_t>& positions);
 
 }  // namespace contain::clip::slice

@@ -55,9 +55,25 @@ Section section_at(const SweepMesh& mesh, std::span<const std::int32_t> active, 
   return out;
 }
 
+void carry_active(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
+                  std::size_t from, std::size_t to, std::vector<std::size_t>& positions) {
+  if (to >= sorted.size()) {
+    positions.clear();
+    return;
+  }
+  const double c = sorted[to];
+  const auto reaches = [&](std::size_t p) {
+    return mesh.high(static_cast<std::size_t>(starts.triangles[p])) >= c;
+  };
+  std::erase_if(positions, [&](std::size_t p) { return !reaches(p); });
+  for (std::size_t p = starts.start[from]; p < starts.start[to]; ++p) {
+    if (reaches(p)) positions.push_back(p);
+  }
+}
+
 void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const double> sorted,
            std::span<const std::size_t> order, std::size_t begin, std::size_t end,
-           std::size_t first, std::span<Section> out) {
+           std::size_t first, std::span<const std::size_t> carried, std::span<Section> out) {
   SweepScratch scratch;
   std::vector<std::int32_t>& active = scratch.active;
   const auto entering = [&](std::size_t i) {
@@ -65,14 +81,10 @@ void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const dou
         .subspan(starts.start[i], starts.start[i + 1] - starts.start[i]);
   };
   // A run of planes starting past the first takes the triangles that reached an earlier plane
-  // and still reach this one.
-  if (begin < end) {
-    for (std::size_t i = 0; i < begin; ++i) {
-      for (const std::int32_t t : entering(i)) {
-        if (mesh.high(static_cast<std::size_t>(t)) >= sorted[begin]) active.push_back(t);
-      }
-    }
-  }
+  // and still reach this one, in the order a scan of them all would give.
+  active.reserve(carried.size());
+  for (const std::size_t p : carried)
+    active.push_back(starts.triangles[p]);
   for (std::size_t i = begin; i < end; ++i) {
     const double c = sorted[i];
     const std::span<const std::int32_t> in = entering(i);
