@@ -216,11 +216,14 @@ bool parse_int64(const char*& p, const char* end, std::int64_t& out) {
   return true;
 }
 
+char* write_double(char* at, double value) {
+  // kMaxDoubleChars always hold the shortest form of a double: no error to report.
+  return std::to_chars(at, at + kMaxDoubleChars, value).ptr;
+}
+
 void append_double(std::string& out, double value) {
-  std::array<char, 32> buffer{};
-  auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  (void)ec;  // 32 characters always hold the shortest form of a double
-  out.append(buffer.data(), ptr);
+  std::array<char, kMaxDoubleChars> buffer{};
+  out.append(buffer.data(), write_double(buffer.data(), value));
 }
 
 std::string number_id(double value) {

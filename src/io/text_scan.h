@@ -4,6 +4,7 @@
 /// parsing with std::from_chars (correctly rounded, NaN/Inf rejected), shortest round-trip
 /// formatting with std::to_chars, and errors that name the source and line.
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -84,6 +85,14 @@ enum class NumberStatus : std::uint8_t {
 /// Parses an optionally signed decimal integer at `p`; false (nothing consumed) when none starts
 /// here or it does not fit in int64.
 [[nodiscard]] bool parse_int64(const char*& p, const char* end, std::int64_t& out);
+
+/// The most characters the shortest form of a double takes (sign, 17 digits, point, "e-308"),
+/// with room to spare.
+inline constexpr std::size_t kMaxDoubleChars = 32;
+
+/// Shortest decimal that reads back as exactly `value` (std::to_chars), written at `at` (room
+/// for kMaxDoubleChars): the end of what was written.
+char* write_double(char* at, double value);
 
 /// Shortest decimal that reads back as exactly `value` (std::to_chars), appended to `out`.
 void append_double(std::string& out, double value);

@@ -153,12 +153,12 @@ std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b) 
     Coeffs r = pseudo_remainder(prev, cur);
     if (r.empty()) break;
     const int lc_sign = sign_int(cur.back());
+    const int divisor_sign = sign_int(g) * (d % 2 == 1 ? sign_int(h) : 1);  // of g h^d
+    const int c_next = -((d + 1) % 2 == 0 ? 1 : lc_sign) * c_prev * divisor_sign;
     if (r.size() == 1) {
       // A constant ends the sequence, and its users (sign variations, gcds up to a constant
       // factor) need its sign only: r / (g h^d) times c_next's sign, without the division by a
       // number of thousands of bits or the step that would find the next remainder zero.
-      const int divisor_sign = sign_int(g) * (d % 2 == 1 ? sign_int(h) : 1);
-      const int c_next = -((d + 1) % 2 == 0 ? 1 : lc_sign) * c_prev * divisor_sign;
       const int last = sign_int(r[0]) * divisor_sign * c_next;
       out.push_back({BigFloat(last > 0 ? 1.0 : -1.0)});
       break;
@@ -166,7 +166,6 @@ std::vector<Coeffs> signed_remainder_sequence(const Coeffs& a, const Coeffs& b) 
     const BigFloat divisor = g * power(h, d);
     for (BigFloat& x : r)
       x = exact_quotient(x, divisor);
-    const int c_next = -((d + 1) % 2 == 0 ? 1 : lc_sign) * c_prev * sign_int(divisor);
     g = cur.back();
     h = d == 0 ? h : (d == 1 ? g : exact_quotient(power(g, d), power(h, d - 1)));
     prev = std::move(cur);

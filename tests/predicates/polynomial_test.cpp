@@ -333,12 +333,17 @@ TEST(Polynomial, SignsAtARootThatLearntItsBracketAgreeWithTheOracle) {
       const int bits = rnd.integer(1, std::min(1070, k + 60));
       others.push_back(a + constant(std::ldexp(rnd.uniform(-1.0, 1.0), -bits)));
     }
+    // The oracle's signs of the others at each exact root.
+    const auto oracle_signs = [&](const std::vector<test::QRoot>& exact) {
+      std::vector<std::vector<Sign>> signs(exact.size());
+      for (std::size_t r = 0; r < exact.size(); ++r) {
+        for (const Both& o : others)
+          signs[r].push_back(test::sign_at(o.q, exact[r]));
+      }
+      return signs;
+    };
     const std::vector<test::QRoot> expected = test::isolate_roots(p.q, 0.0, 1.0);
-    std::vector<std::vector<Sign>> truth(expected.size());
-    for (std::size_t r = 0; r < expected.size(); ++r) {
-      for (const Both& o : others)
-        truth[r].push_back(test::sign_at(o.q, expected[r]));
-    }
+    const std::vector<std::vector<Sign>> truth = oracle_signs(expected);
     const std::vector<RealRoot> roots = real_roots(p.p, 0.0, 1.0);
     ASSERT_EQ(roots.size(), expected.size());
     for (std::size_t r = 0; r < roots.size(); ++r) {
@@ -355,11 +360,7 @@ TEST(Polynomial, SignsAtARootThatLearntItsBracketAgreeWithTheOracle) {
     // keeps), each queried by three threads in rotated orders (the caches are shared).
     for (const Both& poly : {p, a * b}) {
       const std::vector<test::QRoot> exact = test::isolate_roots(poly.q, 0.0, 1.0);
-      std::vector<std::vector<Sign>> want(exact.size());
-      for (std::size_t r = 0; r < exact.size(); ++r) {
-        for (const Both& o : others)
-          want[r].push_back(test::sign_at(o.q, exact[r]));
-      }
+      const std::vector<std::vector<Sign>> want = oracle_signs(exact);
       const std::vector<RealRoot> fresh = real_roots(poly.p, 0.0, 1.0);
       ASSERT_EQ(fresh.size(), exact.size());
       std::vector<std::vector<std::vector<Sign>>> got(3);
