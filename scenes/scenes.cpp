@@ -125,6 +125,17 @@ Mesh torus(double major, double minor, int rings, int sides) {
   return mesh;
 }
 
+Mesh joined(Mesh a, const Mesh& b) {
+  const auto shift = static_cast<std::int32_t>(a.vertices.size());
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (TriangleIndices t : b.triangles) {
+    for (std::int32_t& v : t)
+      v += shift;
+    a.triangles.push_back(t);
+  }
+  return a;
+}
+
 Mesh box_mesh(const Box3& box) {
   Mesh mesh;
   for (int i = 0; i < 8; ++i) {

@@ -46,6 +46,10 @@ namespace contain::scenes {
 /// The closed, outward oriented surface of a box: 8 vertices, 12 triangles.
 [[nodiscard]] Mesh box_mesh(const Box3& box);
 
+/// Two meshes as one: b's vertices after a's, its triangles' indices shifted (several shells,
+/// or parts that share an edge or a vertex, from simple ones).
+[[nodiscard]] Mesh joined(Mesh a, const Mesh& b);
+
 /// `count` segments with both ends uniform in `box` (seeded).
 [[nodiscard]] std::vector<Segment2> uniform_segments(const Box2& box, std::size_t count,
                                                      std::uint64_t seed);

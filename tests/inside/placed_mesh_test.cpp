@@ -8,17 +8,10 @@ namespace contain::inside {
 namespace {
 
 TEST(PlacedMesh, HoldsTheHierarchyOneVertexPerComponentSolidityAndLargestCoordinate) {
-  Mesh two = scenes::box_mesh({{0, 0, 0}, {1, 1, 1}});
-  const Mesh other = scenes::box_mesh({{3, -5, 0}, {4, -4, 1}});
-  const auto base = static_cast<std::int32_t>(two.vertices.size());
-  two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
-  for (TriangleIndices t : other.triangles) {
-    for (std::int32_t& v : t)
-      v += base;
-    two.triangles.push_back(t);
-  }
+  const Mesh two = scenes::joined(scenes::box_mesh({{0, 0, 0}, {1, 1, 1}}),
+                                  scenes::box_mesh({{3, -5, 0}, {4, -4, 1}}));
   const PlacedMesh side(two);
-  EXPECT_EQ(side.components, (std::vector<std::int32_t>{0, base}));
+  EXPECT_EQ(side.components, (std::vector<std::int32_t>{0, 8}));  // the second box from vertex 8
   EXPECT_TRUE(side.solid());
   EXPECT_EQ(side.max_abs, 5.0);
   EXPECT_EQ(side.bvh.items().size(), two.triangles.size());

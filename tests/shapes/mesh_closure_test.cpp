@@ -62,15 +62,7 @@ TEST(MeshClosure, FlippedTriangleUnbalancesItsEdges) {
 }
 
 TEST(MeshClosure, TwoBoxesSharingAnEdgeAreClosedThoughNotManifold) {
-  Mesh m = unit_box();
-  const Mesh other = scenes::box_mesh(Box3{{1, 1, 0}, {2, 2, 1}});
-  const auto offset = static_cast<std::int32_t>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), other.vertices.begin(), other.vertices.end());
-  for (TriangleIndices t : other.triangles) {
-    for (std::int32_t& v : t)
-      v += offset;
-    m.triangles.push_back(t);
-  }
+  const Mesh m = scenes::joined(unit_box(), scenes::box_mesh(Box3{{1, 1, 0}, {2, 2, 1}}));
   EXPECT_FALSE(unmatched_edge(m).has_value());
 }
 

@@ -34,22 +34,12 @@ void expect_same_report(const Mesh& m, const std::string& what) {
   EXPECT_EQ(got.summary(), want.summary());
 }
 
-Mesh joined(Mesh a, const Mesh& b) {
-  const auto shift = static_cast<std::int32_t>(a.vertices.size());
-  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (TriangleIndices t : b.triangles) {
-    for (std::int32_t& v : t)
-      v += shift;
-    a.triangles.push_back(t);
-  }
-  return a;
-}
-
 TEST(MeshValidationQuick, ClosedOrientedMeshesReportAsTheFullAnalysis) {
   expect_same_report(scenes::torus(1.0, 0.4, 30, 12), "torus");
   expect_same_report(scenes::uv_sphere({0, 0, 0}, 1.0, 8, 12), "sphere, poles of valence 12");
-  expect_same_report(joined(scenes::torus(1.0, 0.4, 8, 6), scenes::uv_sphere({5, 0, 0}, 1, 4, 5)),
-                     "two components");
+  expect_same_report(
+      scenes::joined(scenes::torus(1.0, 0.4, 8, 6), scenes::uv_sphere({5, 0, 0}, 1, 4, 5)),
+      "two components");
   Mesh unused = scenes::torus(1.0, 0.4, 8, 6);
   unused.vertices.push_back({9, 9, 9});
   expect_same_report(unused, "an unreferenced vertex");
@@ -91,7 +81,7 @@ TEST(MeshValidationQuick, OpenNonManifoldAndDuplicatedMeshesReportAsTheFullAnaly
 TEST(MeshValidationQuick, PinchVerticesReportAsTheFullAnalysis) {
   // Two tori welded at one vertex: every edge matched, oriented, but that vertex has two fans.
   const Mesh a = scenes::torus(1.0, 0.4, 10, 8);
-  Mesh both = joined(a, a);
+  Mesh both = scenes::joined(a, a);
   const auto n = static_cast<std::int32_t>(a.vertices.size());
   for (TriangleIndices& t : both.triangles)
     for (std::int32_t& v : t)
