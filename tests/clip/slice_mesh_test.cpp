@@ -348,7 +348,7 @@ TEST(SliceMesh, GenericSectionAreasMatchTheExactArea) {
 }
 
 // The engine's answer for one curve (union, positive) and its provenance: what simple_section
-// must reproduce exactly when it claims a plane.
+// and nested_section must reproduce exactly when they claim a plane.
 void expect_simple_section_is_the_engines(std::span<const clip::slice::CrossingSegment> segments,
                                           int& claimed, int& declined) {
   std::vector<std::vector<std::int32_t>> under;
@@ -357,7 +357,8 @@ void expect_simple_section_is_the_engines(std::span<const clip::slice::CrossingS
       clip::polygon_boolean(rings, {}, {.op = clip::Op::union_, .fill = Fill::positive});
   const auto engine_triangles = clip::slice::edge_triangles(engine, segments);
   Section fast;
-  if (!clip::slice::simple_section(rings, under, segments.size(), fast)) {
+  if (!clip::slice::simple_section(rings, under, segments.size(), fast) &&
+      !clip::slice::nested_section(rings, under, segments.size(), fast)) {
     ++declined;
     return;
   }
@@ -526,8 +527,8 @@ TEST(SliceMesh, WalkedCurvesAreTheChainedRingsAndDeclineVerticesOnThePlane) {
 }
 
 TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
-  // Spheres apart (disjoint boxes: claimed), overlapping (boxes meet: the engine), nested
-  // (a hollow sphere's annulus: the engine), a torus (two rings, one inside: the engine), and
+  // Spheres apart (disjoint boxes: claimed), overlapping (rings that cross: the engine), nested
+  // (a hollow sphere's annulus, a torus's two rings: nested_section claims them), and
   // random convex, star-shaped and self-crossing polygons as curves, some touching, some
   // clockwise, some with a repeated point.
   const Mesh a = uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40);
@@ -582,6 +583,75 @@ TEST(SliceMesh, SimpleSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
   }
   EXPECT_GT(claimed, 0);
   EXPECT_GT(declined, 0);
+}
+
+TEST(SliceMesh, NestedSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
+  // Groups of concentric star-shaped rings, each ring either way round (shells, holes, islands in
+  // holes, rings inside out, rings inside a shell of the same orientation), their radius bands
+  // sometimes overlapping (rings that cross), sometimes touching (a shared point), rectangles
+  // with collinear points, groups sometimes overlapping: what nested_section claims is the
+  // engine's answer bit for bit, and it claims nested cases.
+  std::mt19937_64 rng(2626);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int claimed = 0, declined = 0, holes = 0;
+  for (int i = 0; i < case_budget(600, 4); ++i) {
+    std::vector<Ring> rings;
+    const int groups = 1 + static_cast<int>(unit(rng) * 3);
+    for (int g = 0; g < groups; ++g) {
+      const Vec2 center{6.0 * unit(rng), 6.0 * unit(rng)};
+      const int depth = 1 + static_cast<int>(unit(rng) * 4);
+      double inner = 0.1 + 0.2 * unit(rng);
+      for (int d = 0; d < depth; ++d) {
+        const double width = 0.1 + 0.4 * unit(rng);
+        const bool overlap = unit(rng) < 0.1;
+        Ring ring;
+        if (unit(rng) < 0.15) {  // a rectangle with collinear points on its sides
+          const double h = inner + width;
+          ring = {center + Vec2{-h, -h}, center + Vec2{0.0, -h}, center + Vec2{h, -h},
+                  center + Vec2{h, h},   center + Vec2{-h, h},   center + Vec2{-h, 0.0}};
+        } else {
+          const int n = 3 + static_cast<int>(unit(rng) * 40);
+          std::vector<double> angles(static_cast<std::size_t>(n));
+          for (double& t : angles)
+            t = 6.283185307179586 * unit(rng);
+          std::sort(angles.begin(), angles.end());
+          for (const double t : angles) {
+            const double r = (overlap ? inner - 0.2 : inner) + width * unit(rng);
+            ring.push_back(center + r * Vec2{std::cos(t), std::sin(t)});
+          }
+        }
+        if (unit(rng) < 0.4) std::reverse(ring.begin(), ring.end());
+        if (unit(rng) < 0.05 && !rings.empty()) ring[0] = rings.back()[0];  // touching
+        inner += width + 0.05;
+        rings.push_back(std::move(ring));
+      }
+    }
+    std::vector<clip::slice::CrossingSegment> segments;
+    std::uint64_t key = 0;
+    for (const Ring& ring : rings) {
+      const std::uint64_t first = key;
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const std::uint64_t to = k + 1 == ring.size() ? first : key + 1;
+        segments.push_back({key, to, ring[k], ring[(k + 1) % ring.size()],
+                            static_cast<std::int32_t>(segments.size())});
+        ++key;
+      }
+    }
+    std::shuffle(segments.begin(), segments.end(), rng);
+    const int before = claimed;
+    expect_simple_section_is_the_engines(segments, claimed, declined);
+    if (claimed > before) {
+      std::vector<std::vector<std::int32_t>> under;
+      const std::vector<Ring> chained = clip::slice::chain_rings(segments, &under);
+      const MultiPolygon engine =
+          clip::polygon_boolean(chained, {}, {.op = clip::Op::union_, .fill = Fill::positive});
+      for (const Polygon& p : engine.polygons)
+        holes += static_cast<int>(p.rings.size()) - 1;
+    }
+  }
+  EXPECT_GT(claimed, 0);
+  EXPECT_GT(declined, 0);
+  EXPECT_GT(holes, 0);
 }
 
 TEST(SliceMesh, CrossingVerticesAreTheNearestDoubles) {

@@ -2,7 +2,8 @@
 // The stages of slice_mesh and shadow (include/contain/clip/slice_mesh.h), one file each:
 // prepare.cpp (weld, sort triangles along the axis), crossings.cpp (a plane's directed crossing
 // segments, for the plane just above and just below), rings.cpp (chaining them into closed
-// paths through shared keys), walk.cpp (both at once along the surface, for a plane through no
+// paths through shared keys), simple_section.cpp and nested_section.cpp (sections that need no
+// 2D boolean), walk.cpp (both at once along the surface, for a plane through no
 // vertex of a manifold stretch), provenance.cpp (the triangle under each output edge), sweep.cpp
 // (planes in sorted order, the active triangles, one section each), shadow.cpp.
 
@@ -228,6 +229,17 @@ void write_cycles(std::span<const CrossingSegment> segments, std::span<const std
 /// first point, and each edge's provenance is its own segment. False (out untouched) when that
 /// is not proven: the caller runs the 2D engine.
 [[nodiscard]] bool simple_section(std::vector<Ring>& rings,
+                                  std::vector<std::vector<std::int32_t>>& triangles,
+                                  std::size_t segments, Section& out);
+
+/// The section of a plane through no vertex when the chained rings are simple and pairwise
+/// disjoint, nested in any way (holes, islands in holes, rings inside out): proven exactly (no two
+/// edges meet but consecutive ones of a ring at their joint: exact orient2d; nesting by exact
+/// ray parity). Then `polygon_boolean` (union, positive) would return the rings that bound the
+/// filled region as they are, shells in order, each with its holes in order, and each edge's
+/// provenance is its own segment. False (out untouched) when that is not proven, or the rings
+/// are too many or too deeply nested to be worth it: the caller runs the 2D engine.
+[[nodiscard]] bool nested_section(std::vector<Ring>& rings,
                                   std::vector<std::vector<std::int32_t>>& triangles,
                                   std::size_t segments, Section& out);
 

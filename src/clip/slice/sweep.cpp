@@ -17,6 +17,7 @@ Section one_curve_section(std::vector<Ring> rings, std::vector<std::vector<std::
   Section out;
   out.value = c;
   if (simple_section(rings, under, segments.size(), out)) return out;
+  if (nested_section(rings, under, segments.size(), out)) return out;
   out.region = polygon_boolean(rings, {}, {.op = Op::union_, .fill = Fill::positive});
   out.triangles = edge_triangles(out.region, segments);
   return out;
