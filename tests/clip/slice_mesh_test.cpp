@@ -654,6 +654,49 @@ TEST(SliceMesh, NestedSectionsThatSkipTheEngineAreTheEnginesAnswerBitForBit) {
   EXPECT_GT(holes, 0);
 }
 
+TEST(SliceMesh, SweepStartsFileEachTriangleUnderTheFirstPlaneItReaches) {
+  // The buckets of sweep_starts against a binary search over all planes: evenly spaced planes,
+  // clustered ones with repeats, planes on vertices, one plane, planes far outside the mesh and
+  // a range too wide for a double: every triangle under the first plane at or above its low,
+  // none when that plane is above its high or the triangle is flat.
+  const Mesh sphere = uv_sphere({0.0, 0.0, 0.0}, 1.0, 24, 40);
+  const clip::slice::SweepMesh mesh = clip::slice::prepare(sphere, clip::slice::frame_of(Axis::z));
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> unit(-1.2, 1.2);
+  std::vector<std::vector<double>> sets = {{0.25}, {-1e300, 0.0, 1e300}, {5.0, 6.0}};
+  for (int k = 0; k < 20; ++k) {
+    std::vector<double> planes;
+    const int n = 1 + static_cast<int>(std::abs(unit(rng)) * 80);
+    for (int i = 0; i < n; ++i) {
+      const double r = unit(rng);
+      planes.push_back(
+          k % 3 == 0   ? -1.0 + 2.0 * (i + 0.5) / n
+          : k % 3 == 1 ? std::round(r * 8) / 8
+                       : mesh.vertices[static_cast<std::size_t>(i * 7) % mesh.vertices.size()].z);
+    }
+    std::sort(planes.begin(), planes.end());
+    sets.push_back(std::move(planes));
+  }
+  for (const std::vector<double>& sorted : sets) {
+    const clip::slice::SweepStarts got = clip::slice::sweep_starts(mesh, sorted);
+    std::vector<std::vector<std::int32_t>> want(sorted.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const double low = mesh.low(t), high = mesh.high(t);
+      const auto i = static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), low) -
+                                              sorted.begin());
+      if (low < high && i < sorted.size() && sorted[i] <= high)
+        want[i].push_back(static_cast<std::int32_t>(t));
+    }
+    ASSERT_EQ(got.start.size(), sorted.size() + 1);
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      const std::vector<std::int32_t> filed(
+          got.triangles.begin() + static_cast<std::ptrdiff_t>(got.start[i]),
+          got.triangles.begin() + static_cast<std::ptrdiff_t>(got.start[i + 1]));
+      ASSERT_EQ(filed, want[i]) << "plane " << i << " of " << sorted.size();
+    }
+  }
+}
+
 TEST(SliceMesh, CrossingVerticesAreTheNearestDoubles) {
   const Mesh sphere = uv_sphere({0.3, -0.2, 0.1}, 1.7, 10, 14);
   const double c = 0.3141;

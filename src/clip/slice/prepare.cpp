@@ -2,6 +2,7 @@
 // the pairing of their half-edges, and the triangles each plane of the sweep brings in.
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <utility>
@@ -72,19 +73,55 @@ Status prepare_closed(const Mesh& mesh, const Frame& frame, SweepMesh& out) {
 
 namespace {
 
-// The first i with sorted[i] >= x (sorted.size() if none), without branches on the data: the
-// triangles' extents come in no order a branch predictor could follow.
-std::size_t first_at_or_above(std::span<const double> sorted, double x) {
-  if (sorted.empty()) return 0;
-  const double* base = sorted.data();
-  std::size_t n = sorted.size();
-  while (n > 1) {
-    const std::size_t half = n / 2;
-    base = base[half] < x ? base + half : base;
-    n -= half;
+// The first i with sorted[i] >= x (sorted.size() if none), through buckets of equal width over
+// [sorted.front(), sorted.back()]: first[b] is the first plane whose bucket is b or later. The
+// bucket of a value is monotone in the value (a rounded subtraction and product, then a clamp),
+// so the answer for x in bucket b lies in [first[b], first[b + 1]], searched without branches
+// on the data (the triangles' extents come in no order a branch predictor could follow): a few
+// steps where a binary search over all planes takes log2 of their number.
+class PlaneBuckets {
+ public:
+  explicit PlaneBuckets(std::span<const double> sorted) : sorted_(sorted) {
+    if (sorted.empty()) return;
+    const std::size_t buckets = 2 * sorted.size();
+    lo_ = sorted.front();
+    const double width = sorted.back() - lo_;
+    // A zero or overflowing extent puts every value in the first bucket (a search of all).
+    scale_ = width > 0 && std::isfinite(width) ? static_cast<double>(buckets) / width : 0.0;
+    last_ = buckets - 1;
+    first_.assign(buckets + 1, sorted.size());
+    for (std::size_t i = sorted.size(); i-- > 0;)
+      first_[bucket(sorted[i])] = i;
+    for (std::size_t b = buckets; b-- > 0;)
+      first_[b] = std::min(first_[b], first_[b + 1]);
   }
-  return static_cast<std::size_t>(base - sorted.data()) + (*base < x ? 1 : 0);
-}
+
+  [[nodiscard]] std::size_t first_at_or_above(double x) const {
+    if (sorted_.empty()) return 0;
+    const std::size_t b = bucket(x);
+    const double* base = sorted_.data() + first_[b];
+    std::size_t n = first_[b + 1] - first_[b] + 1;  // the candidates, and "past them"
+    while (n > 1) {
+      const std::size_t half = n / 2;
+      base = base[half - 1] < x ? base + half : base;
+      n -= half;
+    }
+    return static_cast<std::size_t>(base - sorted_.data());
+  }
+
+ private:
+  [[nodiscard]] std::size_t bucket(double x) const {
+    if (!(x > lo_)) return 0;
+    const double d = (x - lo_) * scale_;
+    return d < static_cast<double>(last_) ? static_cast<std::size_t>(d) : last_;
+  }
+
+  std::span<const double> sorted_;
+  double lo_ = 0.0;
+  double scale_ = 0.0;
+  std::size_t last_ = 0;
+  std::vector<std::size_t> first_;
+};
 
 }  // namespace
 
@@ -96,12 +133,12 @@ SweepStarts sweep_starts(const SweepMesh& mesh, std::span<const double> sorted) 
   std::vector<std::size_t> first(n);
   SweepStarts out;
   out.start.assign(sorted.size() + 2, 0);
+  const PlaneBuckets buckets(sorted);
   for (std::size_t t = 0; t < n; ++t) {
     std::size_t i = sorted.size();
-    const double low = mesh.low(t);
-    const double high = mesh.high(t);
+    const auto [low, high] = mesh.extent(t);
     if (low < high) {
-      i = first_at_or_above(sorted, low);
+      i = buckets.first_at_or_above(low);
       if (i < sorted.size() && sorted[i] > high) i = sorted.size();
     }
     first[t] = i;

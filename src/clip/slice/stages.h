@@ -77,6 +77,12 @@ struct SweepMesh {
     const TriangleIndices& v = triangles[t];
     return std::max({height(v[0]), height(v[1]), height(v[2])});
   }
+  /// Both, from one read of the corners.
+  [[nodiscard]] std::pair<double, double> extent(std::size_t t) const {
+    const TriangleIndices& v = triangles[t];
+    const double a = height(v[0]), b = height(v[1]), c = height(v[2]);
+    return {std::min({a, b, c}), std::max({a, b, c})};
+  }
 
  private:
   [[nodiscard]] double height(std::int32_t v) const {
