@@ -274,6 +274,7 @@ struct WalkScratch {
 /// What one thread of the sweep reuses from plane to plane.
 struct SweepScratch {
   std::vector<std::int32_t> active;
+  std::vector<double> active_high;  // per active triangle its greatest height
   KeyTable<Vec2> memo;
   PlaneCurves curves;
   std::vector<CrossingSegment> both;

@@ -83,18 +83,32 @@ void sweep(const SweepMesh& mesh, const SweepStarts& starts, std::span<const dou
   };
   // A run of planes starting past the first takes the triangles that reached an earlier plane
   // and still reach this one, in the order a scan of them all would give.
+  // Each active triangle's top beside it, read from the mesh once, when it enters.
+  std::vector<double>& high = scratch.active_high;
+  const auto enter = [&](std::int32_t t) {
+    active.push_back(t);
+    high.push_back(mesh.high(static_cast<std::size_t>(t)));
+  };
   active.reserve(carried.size());
+  high.reserve(carried.size());
   for (const std::size_t p : carried)
-    active.push_back(starts.triangles[p]);
+    enter(starts.triangles[p]);
   for (std::size_t i = begin; i < end; ++i) {
     const double c = sorted[i];
-    const std::span<const std::int32_t> in = entering(i);
-    active.insert(active.end(), in.begin(), in.end());
+    for (const std::int32_t t : entering(i))
+      enter(t);
     // The planes increase: a triangle wholly below this one stays out of every later one. The
     // order of `active` then depends on where this thread's run of planes began, but no answer
     // depends on it (walk_curve, chain_rings, edge_triangles).
-    std::erase_if(active,
-                  [&](std::int32_t t) { return mesh.high(static_cast<std::size_t>(t)) < c; });
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      if (high[k] < c) continue;
+      active[kept] = active[k];
+      high[kept] = high[k];
+      ++kept;
+    }
+    active.resize(kept);
+    high.resize(kept);
     if (order[i] < first || order[i] - first >= out.size()) continue;
     out[order[i] - first] = section_at(mesh, active, c, scratch);
   }
