@@ -65,6 +65,13 @@ bool walk_cycle(const SweepMesh& mesh, std::int32_t t0, double c, WalkScratch& s
         mesh.twin[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(up)];
     if (across < 0) return false;
     const std::int32_t next = across / 3;
+    // The next triangle's corners, pairing and mark are read right after this crossing is
+    // computed: fetched now, their cache misses (the walk jumps through large meshes) overlap
+    // with that computation.
+    const auto n = static_cast<std::size_t>(next);
+    __builtin_prefetch(&mesh.triangles[n]);
+    __builtin_prefetch(&mesh.twin[3 * n]);
+    __builtin_prefetch(&scratch.mark[n]);
     const Point to = next == t0 ? start : edge_crossing(mesh, t, up, c);
     if (from.key < cycle.least) {
       cycle.least = from.key;
