@@ -158,7 +158,7 @@ Parts manifold_parts(const manifold::MeshGL64& mesh, const std::vector<double>& 
 
 void print_part(const Scene& s, std::size_t n, const char* part, const char* who, const Spread& t,
                 std::size_t rings) {
-  std::printf("%-11s %6zu planes  %-8s %-9s cpu %8.4f s  (min %.4f, max %.4f)  rings %zu\n",
+  std::printf("%-17s %6zu planes  %-8s %-9s cpu %8.4f s  (min %.4f, max %.4f)  rings %zu\n",
               s.name.c_str(), n, part, who, t.median, t.min, t.max, rings);
 }
 
@@ -192,11 +192,11 @@ void run_parts(const Scene& s, int n, int reps) {
   print_part(s, values.size(), "prepare", "Manifold", pb, peer.rings);
   print_part(s, values.size(), "slice", "Manifold", pc, peer.rings);
   std::printf(
-      "%-11s %6zu planes  contain / Manifold (medians): prepare %.3f  slice %.3f  both %.3f\n",
+      "%-17s %6zu planes  contain / Manifold (medians): prepare %.3f  slice %.3f  both %.3f\n",
       s.name.c_str(), values.size(), p.median / pb.median, c.median / pc.median,
       (p.median + c.median) / (pb.median + pc.median));
 #else
-  std::printf("%-11s Manifold not built in (configure with CONTAIN_MANIFOLD_DIR)\n",
+  std::printf("%-17s Manifold not built in (configure with CONTAIN_MANIFOLD_DIR)\n",
               s.name.c_str());
 #endif
 }
@@ -221,7 +221,7 @@ void run_contain(const Scene& s, const std::vector<double>& values, int threads)
       area += signed_area2(r) / 2;
     exact += std::numbers::pi * (1 - section.value * section.value);
   }
-  std::printf("%-11s %6zu planes  contain %-10s cpu %7.3f s  wall %7.3f s  one ring: %zu/%zu",
+  std::printf("%-17s %6zu planes  contain %-10s cpu %7.3f s  wall %7.3f s  one ring: %zu/%zu",
               s.name.c_str(), values.size(), threads == 1 ? "1 thread" : "all cores", cpu, wall,
               single, values.size());
   if (s.sphere) std::printf("  area/exact %.6f", area / exact);
@@ -251,7 +251,7 @@ void run_cgal(const Scene& s, const std::vector<double>& values) {
   for (const auto& polylines : out)
     single += polylines.size() == 1 ? 1 : 0;
   std::printf(
-      "%-11s %6zu planes  CGAL slicer          cpu %7.3f s  wall %7.3f s  one polyline: "
+      "%-17s %6zu planes  CGAL slicer          cpu %7.3f s  wall %7.3f s  one polyline: "
       "%zu/%zu\n",
       s.name.c_str(), values.size(), cpu, wall, single, values.size());
 }
