@@ -136,8 +136,10 @@ bool box_within(const Box2& inner, const Box2& outer) {
 bool nested_section(std::vector<Ring>& rings, std::vector<std::vector<std::int32_t>>& triangles,
                     std::size_t segments, Section& out) {
   std::size_t points = 0;
-  for (const Ring& ring : rings)
+  for (const Ring& ring : rings) {
+    if (ring.size() < 3) return false;  // chained rings have 3 points or more
     points += ring.size();
+  }
   // Every segment in a ring (as for simple_section), and the rings' boxes compared pairwise.
   constexpr std::size_t kMaxRings = 2048;
   if (points != segments || rings.empty() || rings.size() > kMaxRings) return false;
