@@ -28,7 +28,7 @@ bool strictly_convex_ccw(const Ring& ring) {
   const std::size_t n = ring.size();
   int turns = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+    const Vec2 a = ring[i == 0 ? n - 1 : i - 1], b = ring[i], c = ring[i + 1 == n ? 0 : i + 1];
     if (predicates::orient2d(a, b, c) != Sign::positive) return false;
     if (!upper(a, b) && upper(b, c)) ++turns;
   }
@@ -42,23 +42,31 @@ bool strictly_convex_ccw(const Ring& ring) {
 bool star_ccw_about(const Ring& ring, Vec2 o) {
   const std::size_t n = ring.size();
   int turns = 0;
+  // The previous point's angle test carried over: each point's is computed once.
+  bool b_upper = upper(o, ring[0]);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 b = ring[i], c = ring[(i + 1) % n];
+    const Vec2 b = ring[i], c = ring[i + 1 == n ? 0 : i + 1];
     if (predicates::orient2d(o, b, c) != Sign::positive) return false;
-    if (!upper(o, b) && upper(o, c)) ++turns;
+    const bool c_upper = upper(o, c);
+    if (!b_upper && c_upper) ++turns;
+    b_upper = c_upper;
   }
   return turns == 1;
 }
 
 bool simple_ccw(const Ring& ring, Box2& box) {
+  if (ring.size() < 3) return false;  // chained rings have 3 points or more
   // Any finite point o proves it; the mean of the vertices is inside a convex-like ring. Summed
-  // as p / n, which cannot overflow (orient2d needs finite input).
-  const double n = static_cast<double>(ring.size());
+  // as p (1 / n), which cannot overflow (orient2d needs finite input), into locals (the box is
+  // written once: through the reference it was stored at every point).
+  const double inverse = 1.0 / static_cast<double>(ring.size());
   Vec2 mean{0.0, 0.0};
+  Box2 bounds = box;
   for (const Vec2 p : ring) {
-    box.expand(p);
-    mean = mean + Vec2{p.x / n, p.y / n};
+    bounds.expand(p);
+    mean = mean + Vec2{p.x * inverse, p.y * inverse};
   }
+  box = bounds;
   const bool finite = std::isfinite(mean.x) && std::isfinite(mean.y);
   return (finite && star_ccw_about(ring, mean)) || strictly_convex_ccw(ring);
 }
