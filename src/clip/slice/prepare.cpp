@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -125,34 +126,47 @@ class PlaneBuckets {
 
 }  // namespace
 
-SweepStarts sweep_starts(const SweepMesh& mesh, std::span<const double> sorted) {
+namespace {
+
+// sweep_starts with plane numbers of type Plane (32 bits whenever they fit): the triangles that
+// meet a plane, each with its first plane, listed in index order (at 100 planes a hundredth of
+// the triangles, not a number for each), then counted and placed by plane.
+template <class Plane>
+SweepStarts file_by_first_plane(const SweepMesh& mesh, std::span<const double> sorted) {
+  struct Filed {
+    std::int32_t triangle;
+    Plane plane;
+  };
   const std::size_t n = mesh.triangles.size();
-  // Per triangle its first plane, or sorted.size() when it meets none. A triangle flat along
-  // the axis never crosses a plane of the sweep: in its own plane it adds no segment to either
-  // side's curve.
-  std::vector<std::size_t> first(n);
+  std::vector<Filed> met;
   SweepStarts out;
-  out.start.assign(sorted.size() + 2, 0);
+  out.start.assign(sorted.size() + 1, 0);
   const PlaneBuckets buckets(sorted);
+  // A triangle flat along the axis never crosses a plane of the sweep: in its own plane it
+  // adds no segment to either side's curve.
   for (std::size_t t = 0; t < n; ++t) {
-    std::size_t i = sorted.size();
     const auto [low, high] = mesh.extent(t);
-    if (low < high) {
-      i = buckets.first_at_or_above(low);
-      if (i < sorted.size() && sorted[i] > high) i = sorted.size();
-    }
-    first[t] = i;
+    if (!(low < high)) continue;
+    const std::size_t i = buckets.first_at_or_above(low);
+    if (i == sorted.size() || sorted[i] > high) continue;
+    met.push_back({static_cast<std::int32_t>(t), static_cast<Plane>(i)});
     ++out.start[i + 1];
   }
   for (std::size_t i = 1; i < out.start.size(); ++i)
     out.start[i] += out.start[i - 1];
-  out.triangles.resize(out.start[sorted.size()]);
-  std::vector<std::size_t> next(out.start.begin(), out.start.end() - 2);
-  for (std::size_t t = 0; t < n; ++t) {
-    if (first[t] < sorted.size()) out.triangles[next[first[t]]++] = static_cast<std::int32_t>(t);
-  }
-  out.start.pop_back();
+  out.triangles.resize(met.size());
+  std::vector<std::size_t> next(out.start.begin(), out.start.end() - 1);
+  for (const Filed& f : met)
+    out.triangles[next[f.plane]++] = f.triangle;
   return out;
+}
+
+}  // namespace
+
+SweepStarts sweep_starts(const SweepMesh& mesh, std::span<const double> sorted) {
+  if (sorted.size() < std::numeric_limits<std::uint32_t>::max())
+    return file_by_first_plane<std::uint32_t>(mesh, sorted);
+  return file_by_first_plane<std::size_t>(mesh, sorted);
 }
 
 }  // namespace contain::clip::slice
