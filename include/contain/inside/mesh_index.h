@@ -157,6 +157,8 @@ class MeshIndex {
     Vec3 a, b, c;
     float lo[3], hi[3];  // box rounded outward to float: a quick, safe rejection test
     Sign s;              // sign of the (y, z) projection: zero if never crossed by an x ray
+    // The padding, explicit and zeroed: index files store the records as they lie in memory.
+    std::uint8_t zero[7] = {};
   };
 
   // A triangle of a surface cell, with a copy of its box so that a cell's rejection tests read one
