@@ -122,6 +122,9 @@ class PointStore {
   std::vector<Vec3> rounded_;
   PointTable first_;                // the first point of each nearest doubles
   std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
+  // The first point with the same nearest doubles as each (itself for the first): known when
+  // the point is added, where a lookup of its doubles was a probe of the table per point.
+  std::vector<std::int32_t> first_of_;
 };
 
 /// The key of the undirected input edge between welded vertices a and b.

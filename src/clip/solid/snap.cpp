@@ -163,13 +163,18 @@ namespace {
 // (< 9.3e-10 of it, within the spec's 1e-9; the half-ulp roundings add a negligible 5 ulps).
 Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
                                const PointStore& store, int level, double scale) {
-  std::vector<std::int32_t> ids;
-  for (const auto& f : faces)
-    ids.insert(ids.end(), f.begin(), f.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  // The faces' points ascending, by marks in point order (a sort of every corner was a
+  // twentieth of a large boolean).
   Representative rep;
   rep.of.assign(store.size(), -1);
+  for (const auto& f : faces) {
+    for (const std::int32_t i : f)
+      rep.of[static_cast<std::size_t>(i)] = 0;
+  }
+  std::vector<std::int32_t> ids;
+  for (std::size_t i = 0; i < rep.of.size(); ++i) {
+    if (rep.of[i] == 0) ids.push_back(static_cast<std::int32_t>(i));
+  }
   if (level >= 0) {
     std::vector<Vec3> points;
     points.reserve(ids.size());
