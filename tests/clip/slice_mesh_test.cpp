@@ -663,7 +663,8 @@ TEST(SliceMesh, SweepStartsFileEachTriangleUnderTheFirstPlaneItReaches) {
   const clip::slice::SweepMesh mesh = clip::slice::prepare(sphere, clip::slice::frame_of(Axis::z));
   std::mt19937_64 rng(26);
   std::uniform_real_distribution<double> unit(-1.2, 1.2);
-  std::vector<std::vector<double>> sets = {{0.25}, {-1e300, 0.0, 1e300}, {5.0, 6.0}};
+  std::vector<std::vector<double>> sets = {
+      {0.25}, {-1e300, 0.0, 1e300}, {-1.5e308, -0.5, 0.0, 1.5e308}, {5.0, 6.0}};
   for (int k = 0; k < 20; ++k) {
     std::vector<double> planes;
     const int n = 1 + static_cast<int>(std::abs(unit(rng)) * 80);

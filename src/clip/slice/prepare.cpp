@@ -111,7 +111,7 @@ class PlaneBuckets {
 
  private:
   [[nodiscard]] std::size_t bucket(double x) const {
-    if (!(x > lo_)) return 0;
+    if (!(x > lo_) || scale_ == 0.0) return 0;
     const double d = (x - lo_) * scale_;
     return d < static_cast<double>(last_) ? static_cast<std::size_t>(d) : last_;
   }
