@@ -178,7 +178,7 @@ class MeshIndex {
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
   template <class Cell>
   void list_triangles_by_cell_as(const std::vector<Box3>& boxes);
-  void settle_empty_cells();
+  void settle_empty_cells(const std::vector<Box3>& boxes);
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
