@@ -229,6 +229,12 @@ struct FaceLabels {
 
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
 [[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store);
+/// The same decisions (the same constraints of each triangle, the same coplanar partners) with
+/// points numbered apart from any store: the soup's vertices first, then each crossing as made,
+/// enclosed but not rounded (for the check of a written mesh and the bounds of a snap round,
+/// which ask only which pairs meet; the exact rounding of crossings of nearly parallel planes
+/// was most of a failing snap's time).
+[[nodiscard]] std::vector<TriangleWork> meeting_pairs(const Soup& soup);
 [[nodiscard]] Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work,
                                 PointStore& store);
 /// Triangles of the constrained triangulation of triangle `corners` (oriented positively in
