@@ -107,6 +107,18 @@ struct ReadPosition {
 // Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
 // `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
 // parsed again with the lines before it, for the error of one pass over the file.
+// The least bytes of a slice worth a thread of its own.
+constexpr std::size_t kSliceBytes = std::size_t{1} << 20;
+
+// The block of ChunkedReading's `block` 0 (see there): small enough for the cache when one
+// thread parses, large enough to share among threads otherwise.
+std::size_t block_bytes(const ChunkedReading& reading) {
+  if (reading.block != 0) return std::max<std::size_t>(reading.block, 64);
+  constexpr std::size_t shared = std::size_t{8} << 20;
+  const bool one_thread = thread_count({.threads = reading.threads}, shared, kSliceBytes) == 1;
+  return one_thread ? std::size_t{256} << 10 : shared;
+}
+
 template <class Point>
 Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
                    ReadPosition& at, std::uintmax_t file_size, std::vector<Slice<Point>>& slices,
@@ -114,7 +126,7 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   constexpr int kColumns = sizeof(Point) / sizeof(double);
   const BatchOptions options{.threads = reading.threads};
   const std::vector<std::size_t> starts =
-      slice_starts(text, thread_count(options, text.size(), std::size_t{1} << 20));
+      slice_starts(text, thread_count(options, text.size(), kSliceBytes));
   const std::size_t parts = starts.size() - 1;
   if (slices.size() < parts) slices.resize(parts);
   parallel_for(parts, options, 1, [&](std::size_t begin, std::size_t end) {
@@ -160,7 +172,7 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
                     const std::function<void(std::span<const Point>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
-  std::size_t block = std::max<std::size_t>(reading.block, 64);
+  std::size_t block = block_bytes(reading);
   std::unique_ptr<char[]> buffer(new char[block]);
   std::size_t held = 0;  // bytes in the buffer
   ReadPosition at;
