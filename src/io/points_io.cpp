@@ -104,9 +104,6 @@ struct ReadPosition {
   std::size_t bytes = 0;
 };
 
-// Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
-// `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
-// parsed again with the lines before it, for the error of one pass over the file.
 // The least bytes of a slice worth a thread of its own.
 constexpr std::size_t kSliceBytes = std::size_t{1} << 20;
 
@@ -119,6 +116,9 @@ std::size_t block_bytes(const ChunkedReading& reading) {
   return one_thread ? std::size_t{256} << 10 : shared;
 }
 
+// Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
+// `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
+// parsed again with the lines before it, for the error of one pass over the file.
 template <class Point>
 Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
                    ReadPosition& at, std::uintmax_t file_size, std::vector<Slice<Point>>& slices,

@@ -22,7 +22,7 @@ namespace contain::io {
 namespace {
 
 template <class Point>
-std::vector<double> flat(const std::vector<Point>& points) {
+std::vector<double> coordinates(const std::vector<Point>& points) {
   std::vector<double> out;
   for (const Point& p : points) {
     out.push_back(p.x);
@@ -32,7 +32,7 @@ std::vector<double> flat(const std::vector<Point>& points) {
   return out;
 }
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+bool same_doubles(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i])) return false;
@@ -58,7 +58,7 @@ template <class Point>
   }
   if (!scan.complete) return ::testing::AssertionSuccess();
   std::vector<std::int64_t> expected_lines = table->lines;
-  if (!same_bits(flat(points), table->values) || lines != expected_lines) {
+  if (!same_doubles(coordinates(points), table->values) || lines != expected_lines) {
     return ::testing::AssertionFailure() << "other points or lines for '" << text << "'";
   }
   const std::int64_t text_lines =

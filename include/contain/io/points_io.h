@@ -48,7 +48,8 @@ struct Points3 {
 /// block parsed on up to `threads` threads (0: every core) in slices split at line ends. The
 /// points, their order and the errors are the same whatever the threads and the block. `block`
 /// 0: 256 KB when one thread parses (a block the kernel's copy leaves in the cache for the scan:
-/// 8 MB blocks read 10^6 points 12% slower), else 8 MB shared by the threads (1 MB at least each).
+/// 8 MB blocks read 10^6 points 12-14% slower), else 8 MB shared by the threads (1 MB at least
+/// each).
 struct ChunkedReading {
   std::size_t chunk = std::size_t{1} << 20;
   int threads = 1;
