@@ -36,7 +36,7 @@ int build_mesh_index(const BuildOptions& o) {
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   enter_phase(Phase::write);
-  if (Status s = io::write_index(inside::format_index(index), o.out); !s) return report(s.error());
+  if (Status s = io::write_index(inside::index_image(index), o.out); !s) return report(s.error());
   return exit_ok;
 }
 

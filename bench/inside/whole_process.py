@@ -17,6 +17,7 @@ import os
 import pathlib
 import statistics
 import subprocess
+import tempfile
 import time
 
 
@@ -65,8 +66,12 @@ def main():
         ("1000 poses, 40k x 20k triangles", ["collide", d / "pair_torus.off", d / "rocker.off", "--poses", d / "poses.txt"],
          [("FCL OBBRSS", "fcl_collide", [d / "pair_torus.off", d / "rocker.off", d / "poses.txt"])]),
     ]
+    # Answers in a folder of this run's own: two runs side by side (helpers on one machine) must
+    # not write the same files.
+    scratch = pathlib.Path(tempfile.mkdtemp(prefix="whole_process_"))
+    out_a, out_b = str(scratch / "a.txt"), str(scratch / "b.txt")
     print(f"{'workload':34} {'command':14} {'wall s':>8} {'cpu s':>8} {'peak MB':>8} "
-          f"{'peer/contain':>12} {'differ':>8}")
+          f"{'peer/contain':>12} {'cpu ratio':>9} {'differ':>8}")
     for name, contain_args, peer_list in workloads:
         if not all(os.path.exists(x) for x in contain_args if isinstance(x, pathlib.Path)):
             print(f"{name:34} data not written")
@@ -77,17 +82,25 @@ def main():
             if not os.path.exists(b[0]):
                 print(f"{name:34} {peer_name:14} not built")
                 continue
-            run(a, "/tmp/whole_process_a.txt")
-            run(b, "/tmp/whole_process_b.txt")
+            run(a, out_a)
+            run(b, out_b)
             ra, rb = [], []
             for _ in range(args.runs):
-                ra.append(run(a, "/tmp/whole_process_a.txt"))
-                rb.append(run(b, "/tmp/whole_process_b.txt"))
+                ra.append(run(a, out_a))
+                rb.append(run(b, out_b))
             ratio = statistics.median(y[0] / x[0] for x, y in zip(ra, rb))
-            diff = differing("/tmp/whole_process_a.txt", "/tmp/whole_process_b.txt")
-            for label, rs, r, dd in (("contain", ra, "", ""), (peer_name, rb, f"{ratio:.2f}", diff)):
+            # CPU seconds: the column to read when other work shares the machine.
+            cpu_ratio = statistics.median(y[1] / max(x[1], 1e-3) for x, y in zip(ra, rb))
+            diff = differing(out_a, out_b)
+            for label, rs, r, c, dd in (("contain", ra, "", "", ""),
+                                        (peer_name, rb, f"{ratio:.2f}", f"{cpu_ratio:.2f}", diff)):
                 med = [statistics.median(x[k] for x in rs) for k in range(3)]
-                print(f"{name:34} {label:14} {med[0]:8.3f} {med[1]:8.3f} {med[2]:8.1f} {r:>12} {dd!s:>8}")
+                print(f"{name:34} {label:14} {med[0]:8.3f} {med[1]:8.3f} {med[2]:8.1f} {r:>12} {c:>9} "
+                      f"{dd!s:>8}", flush=True)
+    for path in (out_a, out_b):
+        if os.path.exists(path):
+            os.remove(path)
+    scratch.rmdir()
 
 
 if __name__ == "__main__":

@@ -259,7 +259,7 @@ Example:
       .def(
           "save",
           [](const inside::MeshIndex& index, const std::filesystem::path& path) {
-            (void)take(io::write_index(inside::format_index(index), path.string()));
+            (void)take(io::write_index(inside::index_image(index), path.string()));
           },
           "path"_a,
           "Writes the index to a file (docs/index-files.md: a versioned binary file with the\n"

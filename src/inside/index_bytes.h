@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "contain/core/result.h"
@@ -51,6 +52,15 @@ class Writer {
     bytes_.resize(at + n * sizeof(T));  // zeroed: padding bytes never stale
     return bytes_.data() + at;
   }
+  // The count, then the elements as they lie in memory, referred to and not copied (IndexImage):
+  // they must stay unchanged until the file is written. Only element types whose every byte is
+  // set (padding made explicit and zeroed): the file must not depend on uninitialized bytes.
+  template <class T>
+  void put_array_by_reference(std::span<const T> values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    put<std::uint64_t>(values.size());
+    if (!values.empty()) references_.push_back({bytes_.size(), std::as_bytes(values)});
+  }
   // Room for `more` bytes past the current end: no reallocation (and copy) while they come.
   void reserve(std::size_t more) { bytes_.reserve(bytes_.size() + more); }
   void put(Vec2 v) {
@@ -82,10 +92,39 @@ class Writer {
     bytes_.insert(bytes_.end(), p, p + s.size());
   }
 
+  // The writer's own bytes (the header's room first): the whole file where nothing was put by
+  // reference.
   [[nodiscard]] std::vector<std::byte>& bytes() { return bytes_; }
+  // Every byte of the file from `from` on (not past the first reference), piece by piece in
+  // order, to `to(std::span<const std::byte>)`.
+  template <class To>
+  void visit(std::size_t from, To to) const {
+    const std::span<const std::byte> own(bytes_);
+    for (const Reference& r : references_) {
+      if (r.at > from) to(own.subspan(from, r.at - from));
+      to(r.bytes);
+      from = r.at;
+    }
+    if (own.size() > from) to(own.subspan(from));
+  }
+  // The file as an image: its pieces view the writer's own buffer, which moves into the image
+  // (a moved vector keeps its buffer), and the arrays put by reference.
+  [[nodiscard]] IndexImage take_image() {
+    IndexImage image;
+    visit(0, [&](std::span<const std::byte> piece) { image.pieces_.push_back(piece); });
+    image.own_ = std::move(bytes_);
+    references_.clear();
+    return image;
+  }
 
  private:
+  struct Reference {
+    std::size_t at;  // where in bytes_ the referenced bytes come
+    std::span<const std::byte> bytes;
+  };
+
   std::vector<std::byte> bytes_;
+  std::vector<Reference> references_;
 };
 
 // An array left in the file's bytes (no copy): elements read one by one, any alignment.
@@ -231,6 +270,8 @@ class Reader {
 // The bytes of a whole index file: `writer`'s payload under the header of `kind` and `source`.
 [[nodiscard]] std::vector<std::byte> finish_index(Writer& writer, IndexKind kind,
                                                   std::uint64_t source);
+// The same as an image (pieces that refer to the arrays the writer was given by reference).
+[[nodiscard]] IndexImage finish_image(Writer& writer, IndexKind kind, std::uint64_t source);
 
 // The error for a sound index file of kind `found` read as one of kind `wanted`.
 [[nodiscard]] Error wrong_kind(IndexKind found, IndexKind wanted);

@@ -3,8 +3,10 @@
 
 #include "contain/inside/index_file.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
+#include <utility>
 
 #include "inside/index_bytes.h"
 
@@ -68,22 +70,78 @@ const char* to_string(IndexKind kind) {
   return "unknown";
 }
 
-std::uint64_t index_checksum(std::span<const std::byte> bytes) {
-  const std::byte* p = bytes.data();
-  const std::size_t n = bytes.size();
-  std::uint64_t v[4] = {p1 + p2, p2, 0, 0 - p1};
-  std::size_t i = 0;
-  for (; i + 32 <= n; i += 32) {
-    for (int lane = 0; lane < 4; ++lane)
-      v[lane] = mix(v[lane], load(p + i + 8 * static_cast<std::size_t>(lane)));
+namespace {
+
+// index_checksum over bytes that come in pieces (an IndexImage): the value over the pieces
+// joined. Whole 32-byte blocks go through the four lanes as they come; a block split between
+// pieces waits in `block_`.
+class Checksum {
+ public:
+  void add(std::span<const std::byte> bytes) {
+    const std::byte* p = bytes.data();
+    std::size_t n = bytes.size();
+    total_ += n;
+    if (pending_ > 0) {
+      const std::size_t take = std::min(n, sizeof block_ - pending_);
+      std::memcpy(block_ + pending_, p, take);
+      pending_ += take;
+      p += take;
+      n -= take;
+      if (pending_ < sizeof block_) return;
+      lanes(block_);
+      pending_ = 0;
+    }
+    for (; n >= sizeof block_; p += sizeof block_, n -= sizeof block_)
+      lanes(p);
+    if (n > 0) std::memcpy(block_, p, n);
+    pending_ = n;
   }
-  std::uint64_t h = std::rotl(v[0], 1) + std::rotl(v[1], 7) + std::rotl(v[2], 12) +
-                    std::rotl(v[3], 18) + static_cast<std::uint64_t>(n);
-  for (; i + 8 <= n; i += 8)
-    h = std::rotl(h ^ mix(0, load(p + i)), 27) * p1 + p3;
-  for (; i < n; ++i)
-    h = std::rotl(h ^ (static_cast<std::uint64_t>(p[i]) * p3), 11) * p1;
-  return avalanche(h);
+
+  [[nodiscard]] std::uint64_t finish() const {
+    std::uint64_t h = std::rotl(v_[0], 1) + std::rotl(v_[1], 7) + std::rotl(v_[2], 12) +
+                      std::rotl(v_[3], 18) + static_cast<std::uint64_t>(total_);
+    std::size_t i = 0;
+    for (; i + 8 <= pending_; i += 8)
+      h = std::rotl(h ^ mix(0, load(block_ + i)), 27) * p1 + p3;
+    for (; i < pending_; ++i)
+      h = std::rotl(h ^ (static_cast<std::uint64_t>(block_[i]) * p3), 11) * p1;
+    return avalanche(h);
+  }
+
+ private:
+  void lanes(const std::byte* p) {
+    for (int lane = 0; lane < 4; ++lane)
+      v_[lane] = mix(v_[lane], load(p + 8 * static_cast<std::size_t>(lane)));
+  }
+
+  std::uint64_t v_[4] = {p1 + p2, p2, 0, 0 - p1};
+  std::byte block_[32] = {};
+  std::size_t pending_ = 0;
+  std::size_t total_ = 0;
+};
+
+}  // namespace
+
+std::uint64_t index_checksum(std::span<const std::byte> bytes) {
+  Checksum sum;
+  sum.add(bytes);
+  return sum.finish();
+}
+
+std::size_t IndexImage::size() const {
+  std::size_t n = 0;
+  for (const std::span<const std::byte> piece : pieces_)
+    n += piece.size();
+  return n;
+}
+
+std::vector<std::byte> IndexImage::join() && {
+  if (pieces_.size() == 1 && pieces_.front().data() == own_.data()) return std::move(own_);
+  std::vector<std::byte> bytes;
+  bytes.reserve(size());
+  for (const std::span<const std::byte> piece : pieces_)
+    bytes.insert(bytes.end(), piece.begin(), piece.end());
+  return bytes;
 }
 
 namespace index_bytes {
@@ -102,7 +160,7 @@ std::uint64_t finish_fingerprint(std::uint64_t sum, std::size_t triangles) {
   return avalanche(mix(sum, triangles));
 }
 
-std::vector<std::byte> finish_index(Writer& writer, IndexKind kind, std::uint64_t source) {
+IndexImage finish_image(Writer& writer, IndexKind kind, std::uint64_t source) {
   std::vector<std::byte>& bytes = writer.bytes();
   std::memcpy(bytes.data(), magic, sizeof magic);
   write_at(bytes, at_version, index_format_version);
@@ -110,12 +168,21 @@ std::vector<std::byte> finish_index(Writer& writer, IndexKind kind, std::uint64_
   write_at(bytes, at_kind, static_cast<std::uint32_t>(kind));
   write_at(bytes, at_layout, layout);
   write_at(bytes, at_source, source);
-  const auto payload = std::span<const std::byte>(bytes).subspan(index_header_size);
-  write_at<std::uint64_t>(bytes, at_length, payload.size());
-  write_at(bytes, at_checksum, index_checksum(payload));
+  Checksum payload;
+  std::size_t length = 0;
+  writer.visit(index_header_size, [&](std::span<const std::byte> piece) {
+    payload.add(piece);
+    length += piece.size();
+  });
+  write_at<std::uint64_t>(bytes, at_length, length);
+  write_at(bytes, at_checksum, payload.finish());
   write_at(bytes, at_header_checksum,
            index_checksum(std::span<const std::byte>(bytes).first(at_header_checksum)));
-  return std::move(bytes);
+  return writer.take_image();
+}
+
+std::vector<std::byte> finish_index(Writer& writer, IndexKind kind, std::uint64_t source) {
+  return finish_image(writer, kind, source).join();
 }
 
 Error wrong_kind(IndexKind found, IndexKind wanted) {

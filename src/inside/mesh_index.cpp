@@ -29,10 +29,10 @@
 //  list_triangles_by_cell    each triangle's closed box marks the closed cells it meets (exact
 //                            comparisons; big triangles tested against each cell's box along
 //                            their normal) -> surface cells and their triangle lists;
-//  settle_empty_cells        row by row from +x to -x, the winding number at one point of each
-//                            empty cell, by the same run along the row that queries use (it
-//                            stops at the next empty cell to the right, whose count is already
-//                            known, or at the end of the grid: zero beyond).
+//  settle_empty_cells        the winding number of each empty cell: each triangle's hits by
+//                            the sample lines of the rows its box spans (one exact line test
+//                            a row), then row by row from +x to -x the running sum of the hits
+//                            beyond each empty cell.
 
 namespace contain::inside {
 
@@ -224,8 +224,9 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   stats_.nx = nx_;
   stats_.ny = ny_;
   stats_.nz = nz_;
-  list_triangles_by_cell(read_triangles_by_cell(mesh, boxes));
-  settle_empty_cells();
+  const std::vector<Box3> sorted_boxes = read_triangles_by_cell(mesh, boxes);
+  list_triangles_by_cell(sorted_boxes);
+  settle_empty_cells(sorted_boxes);
   return false;
 }
 
@@ -348,23 +349,90 @@ void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
   stats_.cell_refs = refs_.size();
 }
 
-// Empty cells, right to left along each row.
-void MeshIndex::settle_empty_cells() {
-  for (int k = 0; k < nz_; ++k) {
-    const double z = inner_point(z_.line(k), z_.line(k + 1));
-    for (int j = 0; j < ny_; ++j) {
-      const double y = inner_point(y_.line(j), y_.line(j + 1));
-      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
-                               static_cast<std::size_t>(j)) *
-                              static_cast<std::size_t>(nx_);
-      for (int i = nx_ - 1; i >= 0; --i) {
-        if (state_[row + static_cast<std::size_t>(i)] == 2) continue;
-        const Vec3 m{x_.line(i), y, z};
-        const int count = i + 1 < nx_ ? count_run(m, row, i + 1, false) : 0;
-        state_[row + static_cast<std::size_t>(i)] = inside_by_count(count) ? 1 : 0;
-        surface_[row + static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(count);
+// Empty cells. The winding number in an empty cell of a row is the signed count of the perturbed
+// hits of the row's sample line (the perturbed ray's line through (y, z), the inner points of the
+// row's y and z spans) beyond the cell's lower plane x = X_i. No hit lies in the closed box of an
+// empty cell (its triangle would meet the cell: listed there), so a hit of a triangle whose box
+// spans the closed cells [i0, i1] of the row counts in every empty cell left of i0 (X_i+1 < the
+// box's x, exact comparisons), in none right of i1, and in an empty cell between (a big
+// triangle's box over cells its plane misses) where hit_side says it lies beyond X_i. So one
+// pass over the triangles finds each hit once (a perturbed line test for each row its box
+// spans), as (row, column): the empty cells left of `column` count it; rows without a hit keep
+// the zeros the listing left (count 0: outside by either rule).
+void MeshIndex::settle_empty_cells(const std::vector<Box3>& boxes) {
+  std::vector<double> ys(static_cast<std::size_t>(ny_)), zs(static_cast<std::size_t>(nz_));
+  for (int j = 0; j < ny_; ++j)
+    ys[static_cast<std::size_t>(j)] = inner_point(y_.line(j), y_.line(j + 1));
+  for (int k = 0; k < nz_; ++k)
+    zs[static_cast<std::size_t>(k)] = inner_point(z_.line(k), z_.line(k + 1));
+  struct Hit {
+    std::uint32_t row;  // k * ny + j
+    int column;         // the empty cells left of it count the hit
+    int sign;
+  };
+  std::vector<Hit> hits;
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    const Tri& tri = tris_[t];
+    if (tri.s == Sign::zero) continue;
+    const Box3& b = boxes[t];
+    const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
+    const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
+    const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
+    for (int k = k0; k <= k1; ++k) {
+      const double z = zs[static_cast<std::size_t>(k)];
+      if (z < tri.lo[2] || z > tri.hi[2]) continue;
+      for (int j = j0; j <= j1; ++j) {
+        const double y = ys[static_cast<std::size_t>(j)];
+        if (y < tri.lo[1] || y > tri.hi[1]) continue;
+        const Vec3 q{x_.line(i0), y, z};
+        if (!predicates::perturbed_line_hits_unboxed(tri.a, tri.b, tri.c, tri.s, q)) continue;
+        const std::uint32_t row = static_cast<std::uint32_t>(k) * static_cast<std::uint32_t>(ny_) +
+                                  static_cast<std::uint32_t>(j);
+        const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(nx_);
+        int column = i0;
+        for (int i = i0; i <= i1; ++i) {
+          if (state_[first + static_cast<std::size_t>(i)] != 2 &&
+              predicates::hit_side(tri.a, tri.b, tri.c, tri.s, {x_.line(i), y, z}) > 0) {
+            column = i + 1;
+          }
+        }
+        hits.push_back({row, column, to_int(tri.s)});
       }
     }
+  }
+  // Row by row (a counting sort of the hits by row), right to left: the running sum of the hits
+  // right of each empty cell.
+  const std::size_t rows = static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_);
+  std::vector<std::uint32_t> start(rows + 1, 0);
+  for (const Hit& h : hits)
+    ++start[h.row + 1];
+  for (std::size_t r = 0; r < rows; ++r)
+    start[r + 1] += start[r];
+  std::vector<Hit> by_row(hits.size());
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (const Hit& h : hits)
+      by_row[next[h.row]++] = h;
+  }
+  std::vector<int> at_column(static_cast<std::size_t>(nx_) + 1, 0);
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (start[r] == start[r + 1]) continue;
+    int last = 0;
+    for (std::uint32_t h = start[r]; h < start[r + 1]; ++h) {
+      at_column[static_cast<std::size_t>(by_row[h].column)] += by_row[h].sign;
+      last = std::max(last, by_row[h].column);
+    }
+    const std::size_t first = r * static_cast<std::size_t>(nx_);
+    int count = 0;
+    for (int i = last - 1; i >= 0; --i) {
+      count += at_column[static_cast<std::size_t>(i) + 1];
+      at_column[static_cast<std::size_t>(i) + 1] = 0;
+      const std::size_t c = first + static_cast<std::size_t>(i);
+      if (state_[c] == 2) continue;
+      state_[c] = inside_by_count(count) ? 1 : 0;
+      surface_[c] = static_cast<std::uint32_t>(count);
+    }
+    at_column[0] = 0;
   }
 }
 

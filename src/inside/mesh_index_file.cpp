@@ -76,33 +76,37 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   write_report(index.report_, w);
   // The records are copied whole: a change of Tri's layout must change index_format_version.
   static_assert(sizeof(MeshIndex::Tri) == 104 && offsetof(MeshIndex::Tri, lo) == 72 &&
-                    offsetof(MeshIndex::Tri, s) == 96,
+                    offsetof(MeshIndex::Tri, s) == 96 && offsetof(MeshIndex::Tri, zero) == 97,
                 "MeshIndex::Tri changed: update mesh_index_file.cpp and index_format_version");
-  // Member by member into zeroed records, in the file's bytes: the file never holds the
-  // padding's stale bytes. An index for few queries keeps the mesh instead: its records are made
-  // for the file.
-  const std::vector<MeshIndex::Tri> direct = direct_records(index);
-  const std::vector<MeshIndex::Tri>& source = index.mesh_.triangles.empty() ? index.tris_ : direct;
-  w.reserve(sizeof(MeshIndex::Tri) * source.size() + index.state_.size() +
-            4 * (index.surface_.size() + index.cell_start_.size() + index.refs_.size()) + 256);
-  std::byte* to = w.put_array_in_place<MeshIndex::Tri>(source.size());
-  for (const MeshIndex::Tri& from : source) {
-    std::memcpy(to + offsetof(MeshIndex::Tri, a), &from.a, sizeof from.a);
-    std::memcpy(to + offsetof(MeshIndex::Tri, b), &from.b, sizeof from.b);
-    std::memcpy(to + offsetof(MeshIndex::Tri, c), &from.c, sizeof from.c);
-    std::memcpy(to + offsetof(MeshIndex::Tri, lo), from.lo, sizeof from.lo);
-    std::memcpy(to + offsetof(MeshIndex::Tri, hi), from.hi, sizeof from.hi);
-    std::memcpy(to + offsetof(MeshIndex::Tri, s), &from.s, sizeof from.s);
-    to += sizeof(MeshIndex::Tri);
+  // The records as they lie in memory (their padding is an explicit, zeroed member), by
+  // reference: no copy of 10 MB for 100k triangles. An index for few queries keeps the mesh
+  // instead: its records are made for the file, member by member into zeroed bytes.
+  const bool direct = !index.mesh_.triangles.empty();
+  w.reserve((direct ? sizeof(MeshIndex::Tri) * index.mesh_.triangles.size() : 0) +
+            4 * index.refs_.size() + 256);
+  if (direct) {
+    const std::vector<MeshIndex::Tri> records = direct_records(index);
+    std::byte* to = w.put_array_in_place<MeshIndex::Tri>(records.size());
+    for (const MeshIndex::Tri& from : records) {
+      std::memcpy(to + offsetof(MeshIndex::Tri, a), &from.a, sizeof from.a);
+      std::memcpy(to + offsetof(MeshIndex::Tri, b), &from.b, sizeof from.b);
+      std::memcpy(to + offsetof(MeshIndex::Tri, c), &from.c, sizeof from.c);
+      std::memcpy(to + offsetof(MeshIndex::Tri, lo), from.lo, sizeof from.lo);
+      std::memcpy(to + offsetof(MeshIndex::Tri, hi), from.hi, sizeof from.hi);
+      std::memcpy(to + offsetof(MeshIndex::Tri, s), &from.s, sizeof from.s);
+      to += sizeof(MeshIndex::Tri);
+    }
+  } else {
+    w.put_array_by_reference<MeshIndex::Tri>(index.tris_);
   }
   w.put(index.winding_.accuracy());
   w.put(index.x_);
   w.put(index.y_);
   w.put(index.z_);
-  w.put_array<std::uint8_t>(index.state_);
+  w.put_array_by_reference<std::uint8_t>(index.state_);
   // Every cell's word: a surface cell's number, an empty cell's winding number.
-  w.put_array<std::uint32_t>(index.surface_);
-  w.put_array<std::uint32_t>(index.cell_start_);
+  w.put_array_by_reference<std::uint32_t>(index.surface_);
+  w.put_array_by_reference<std::uint32_t>(index.cell_start_);
   std::byte* ref_to = w.put_array_in_place<std::uint32_t>(index.refs_.size());
   for (const MeshIndex::CellRef& ref : index.refs_) {
     std::memcpy(ref_to, &ref.tri, sizeof ref.tri);
@@ -215,7 +219,8 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
 // box holding the corners (any such box is a correct rejection test). Sets the bounds.
 Status MeshIndexFile::check_triangles(MeshIndex& index) {
   if (index.tris_.size() >= (std::size_t{1} << 32)) return bad("too many triangles");
-  for (const MeshIndex::Tri& t : index.tris_) {
+  for (MeshIndex::Tri& t : index.tris_) {
+    std::fill(std::begin(t.zero), std::end(t.zero), std::uint8_t{0});  // written back as read
     for (const Vec3& v : {t.a, t.b, t.c}) {
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
         return bad("a triangle corner is not finite");
@@ -269,10 +274,14 @@ std::uint64_t fingerprint(const MeshIndex& index) {
   return MeshIndexFile::fingerprint(index);
 }
 
-std::vector<std::byte> format_index(const MeshIndex& index) {
+IndexImage index_image(const MeshIndex& index) {
   index_bytes::Writer w;
   MeshIndexFile::write(index, w);
-  return index_bytes::finish_index(w, IndexKind::mesh_index, fingerprint(index));
+  return index_bytes::finish_image(w, IndexKind::mesh_index, fingerprint(index));
+}
+
+std::vector<std::byte> format_index(const MeshIndex& index) {
+  return index_image(index).join();
 }
 
 Result<MeshIndex> parse_mesh_index(const IndexHeader& checked) {

@@ -29,6 +29,19 @@ Result<T> named(Result<T> result, const std::string& path) {
   return error;
 }
 
+// The pieces one after the other (a large piece goes straight from its memory to the file).
+Status write_pieces(std::span<const std::span<const std::byte>> pieces, const std::string& path) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return io_error(path, "cannot create");
+  for (const std::span<const std::byte> piece : pieces) {
+    out.write(reinterpret_cast<const char*>(piece.data()),
+              static_cast<std::streamsize>(piece.size()));
+  }
+  out.close();
+  if (!out) return io_error(path, "cannot write");
+  return Ok{};
+}
+
 }  // namespace
 
 MappedFile::MappedFile(MappedFile&& other) noexcept
@@ -77,13 +90,12 @@ Result<MappedFile> map_file(const std::string& path) {
 }
 
 Status write_index(std::span<const std::byte> bytes, const std::string& path) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return io_error(path, "cannot create");
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) return io_error(path, "cannot write");
-  return Ok{};
+  const std::span<const std::byte> whole[] = {bytes};
+  return write_pieces(whole, path);
+}
+
+Status write_index(const inside::IndexImage& image, const std::string& path) {
+  return write_pieces(image.pieces(), path);
 }
 
 Result<IndexFile> read_index_file(const std::string& path) {

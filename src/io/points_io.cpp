@@ -5,15 +5,20 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <utility>
 
 #include "contain/core/parallel.h"
 #include "contain/io/number_table.h"
+#include "io/point_lines.h"
 #include "io/text_scan.h"
 
 namespace contain::io {
 namespace {
+
+// The lines of `text` as one pass over it counts them: a last line without its newline counts.
+std::int64_t count_lines(std::string_view text) {
+  return std::count(text.begin(), text.end(), '\n') + (text.empty() || text.back() == '\n' ? 0 : 1);
+}
 
 // The rows of a table of 2 or 3 columns as points, appended.
 template <class Point>
@@ -41,54 +46,26 @@ Result<Points> to_points(Result<NumberTable> table) {
 const NumberTableOptions kTwo{.columns = {2}};
 const NumberTableOptions kThree{.columns = {3}};
 
-// The usual piece of a point file: each of its lines `columns` numbers apart by blanks and
-// nothing else. Parses up to `chunk` such lines from `begin` straight into `points` (appended)
-// and returns where the piece ends and how many lines it has; nullopt at the first line of any
-// other kind (blank, a comment, commas, a bad number, another count), for the table parser to
-// read the whole piece with its rules and messages. The numbers are the same doubles (the same
-// parse_double). This skips the table's passes and arrays: at 10^7 points they were a third of
-// the reading.
-template <class Point>
-std::optional<std::pair<std::size_t, std::size_t>> parse_plain_piece(std::string_view all,
-                                                                     std::size_t begin,
-                                                                     std::size_t chunk,
-                                                                     std::vector<Point>& points) {
-  constexpr int kColumns = sizeof(Point) / sizeof(double);
-  const char* p = all.data() + begin;
-  const char* const end = all.data() + all.size();
-  std::size_t lines = 0;
-  while (p != end && lines < chunk) {
-    const char* eol =
-        static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-    if (eol == nullptr) eol = end;
-    double v[kColumns];
-    detail::skip_blanks(p, eol);
-    for (int k = 0; k < kColumns; ++k) {
-      if (k > 0) {
-        const char* after = p;
-        detail::skip_blanks(p, eol);
-        if (p == after) return std::nullopt;
-      }
-      if (p == eol || detail::parse_double(p, eol, v[k]) != detail::NumberStatus::ok) {
-        return std::nullopt;
-      }
-    }
-    detail::skip_blanks(p, eol);
-    if (p != eol) return std::nullopt;
-    if constexpr (kColumns == 2) {
-      points.push_back({v[0], v[1]});
-    } else {
-      points.push_back({v[0], v[1], v[2]});
-    }
-    p = eol == end ? end : eol + 1;
-    ++lines;
-  }
-  return std::pair{static_cast<std::size_t>(p - all.data()), lines};
+// A whole text of points with their lines: the scanner, and at a line it cannot take the table
+// parser over the whole text, for the error (and its line) worded as ever.
+template <class Points>
+Result<Points> scan_points(std::string_view text, const std::string& source,
+                           const NumberTableOptions& options) {
+  Points out;
+  const std::string_view lines = detail::skip_bom(text);
+  // Room for every line: counting them is a pass at memory speed, and capacity that a comment or
+  // a blank line leaves unused is never touched.
+  const auto most = static_cast<std::size_t>(count_lines(lines));
+  out.points.reserve(most);
+  out.lines.reserve(most);
+  if (detail::scan_point_lines(lines, out.points, &out.lines).complete) return out;
+  return to_points<Points>(parse_number_table(text, source, options));
 }
 
 // One slice of a block, parsed on its own thread: its points, lines and the line of its first
-// point (from 1 within the slice; 0: none), or `failed` when the table parser found an error,
-// which is then found again in file order with the lines before it known.
+// point (from 1 within the slice; 0: none), or `failed` when the scanner stopped at a line it
+// cannot take, which the table parser then reads again in file order, with the lines before it
+// known, for the error of one pass over the file.
 template <class Point>
 struct Slice {
   std::vector<Point> points;
@@ -97,33 +74,13 @@ struct Slice {
   bool failed = false;
 };
 
-// The plain form first (straight into points); any other line through the table parser with its
-// rules.
 template <class Point>
-void parse_slice(std::string_view text, const std::string& source, Slice<Point>& slice) {
-  constexpr int kColumns = sizeof(Point) / sizeof(double);
+void parse_slice(std::string_view text, Slice<Point>& slice) {
   slice.points.clear();
-  slice.failed = false;
-  if (const auto plain = parse_plain_piece(text, 0, SIZE_MAX, slice.points)) {
-    slice.lines = static_cast<std::int64_t>(plain->second);
-    slice.first_row = slice.points.empty() ? 0 : 1;
-    return;
-  }
-  slice.points.clear();
-  slice.lines =
-      std::count(text.begin(), text.end(), '\n') + (text.empty() || text.back() == '\n' ? 0 : 1);
-  // Lines numbered from 2: the table parser then skips no byte order mark (the reader skipped
-  // the file's own).
-  const std::int64_t offset = 1;
-  auto table = parse_number_table(
-      text, source,
-      {.columns = {kColumns}, .lines_before = offset, .first_row_line = 0, .first_row_columns = 0});
-  if (!table) {
-    slice.failed = true;
-    return;
-  }
-  slice.first_row = table->rows() == 0 ? 0 : table->lines.front() - offset;
-  append_rows(*table, slice.points);
+  const detail::PointLinesScan scan = detail::scan_point_lines(text, slice.points);
+  slice.failed = !scan.complete;
+  slice.lines = scan.lines;
+  slice.first_row = scan.first_row;
 }
 
 // Where the slices of `text` (whole lines) start: about equal parts, each moved to the next line.
@@ -147,6 +104,18 @@ struct ReadPosition {
   std::size_t bytes = 0;
 };
 
+// The least bytes of a slice worth a thread of its own.
+constexpr std::size_t kSliceBytes = std::size_t{1} << 20;
+
+// The block of ChunkedReading's `block` 0 (see there): small enough for the cache when one
+// thread parses, large enough to share among threads otherwise.
+std::size_t block_bytes(const ChunkedReading& reading) {
+  if (reading.block != 0) return std::max<std::size_t>(reading.block, 64);
+  constexpr std::size_t shared = std::size_t{8} << 20;
+  const bool one_thread = thread_count({.threads = reading.threads}, shared, kSliceBytes) == 1;
+  return one_thread ? std::size_t{256} << 10 : shared;
+}
+
 // Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
 // `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
 // parsed again with the lines before it, for the error of one pass over the file.
@@ -157,19 +126,20 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   constexpr int kColumns = sizeof(Point) / sizeof(double);
   const BatchOptions options{.threads = reading.threads};
   const std::vector<std::size_t> starts =
-      slice_starts(text, thread_count(options, text.size(), std::size_t{1} << 20));
+      slice_starts(text, thread_count(options, text.size(), kSliceBytes));
   const std::size_t parts = starts.size() - 1;
   if (slices.size() < parts) slices.resize(parts);
   parallel_for(parts, options, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      parse_slice(text.substr(starts[k], starts[k + 1] - starts[k]), source, slices[k]);
+      parse_slice(text.substr(starts[k], starts[k + 1] - starts[k]), slices[k]);
     }
   });
   const std::size_t chunk = std::max<std::size_t>(reading.chunk, 1);
   for (std::size_t k = 0; k < parts; ++k) {
     Slice<Point>& slice = slices[k];
     if (slice.failed) {
-      auto table = parse_number_table(text.substr(starts[k], starts[k + 1] - starts[k]), source,
+      const std::string_view lines = text.substr(starts[k], starts[k + 1] - starts[k]);
+      auto table = parse_number_table(lines, source,
                                       {.columns = {kColumns},
                                        .lines_before = at.lines,
                                        .first_row_line = at.first_row,
@@ -178,6 +148,7 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
       slice.points.clear();
       append_rows(*table, slice.points);
       slice.first_row = table->rows() == 0 ? 0 : table->lines.front() - at.lines;
+      slice.lines = count_lines(lines);
     }
     if (at.first_row == 0 && slice.first_row != 0) at.first_row = at.lines + slice.first_row;
     at.lines += slice.lines;
@@ -201,7 +172,7 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
                     const std::function<void(std::span<const Point>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
-  std::size_t block = std::max<std::size_t>(reading.block, 64);
+  std::size_t block = block_bytes(reading);
   std::unique_ptr<char[]> buffer(new char[block]);
   std::size_t held = 0;  // bytes in the buffer
   ReadPosition at;
@@ -247,16 +218,22 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
 }  // namespace
 
 Result<Points2> parse_points2(std::string_view text, const std::string& source) {
-  return to_points<Points2>(parse_number_table(text, source, kTwo));
+  return scan_points<Points2>(text, source, kTwo);
 }
 Result<Points3> parse_points3(std::string_view text, const std::string& source) {
-  return to_points<Points3>(parse_number_table(text, source, kThree));
+  return scan_points<Points3>(text, source, kThree);
 }
 Result<Points2> read_points2(const std::filesystem::path& path) {
-  return to_points<Points2>(read_number_table(path, kTwo));
+  if (path == "-") return read_points2(std::cin, "<stdin>");
+  auto text = detail::read_file(path);
+  if (!text) return text.error();
+  return parse_points2(*text, detail::source_name(path));
 }
 Result<Points3> read_points3(const std::filesystem::path& path) {
-  return to_points<Points3>(read_number_table(path, kThree));
+  if (path == "-") return read_points3(std::cin, "<stdin>");
+  auto text = detail::read_file(path);
+  if (!text) return text.error();
+  return parse_points3(*text, detail::source_name(path));
 }
 Status read_points2_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                             const std::function<void(std::span<const Vec2>, double)>& consume) {
@@ -267,10 +244,14 @@ Status read_points3_chunked(const std::filesystem::path& path, const ChunkedRead
   return read_chunked<Vec3>(path, reading, consume);
 }
 Result<Points2> read_points2(std::istream& in, const std::string& source) {
-  return to_points<Points2>(read_number_table(in, source, kTwo));
+  auto text = detail::read_stream(in, source);
+  if (!text) return text.error();
+  return parse_points2(*text, source);
 }
 Result<Points3> read_points3(std::istream& in, const std::string& source) {
-  return to_points<Points3>(read_number_table(in, source, kThree));
+  auto text = detail::read_stream(in, source);
+  if (!text) return text.error();
+  return parse_points3(*text, source);
 }
 
 }  // namespace contain::io

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/shortest_double.h"
+
 namespace contain::io::detail {
 
 std::string source_name(const std::filesystem::path& path) {
@@ -217,8 +219,8 @@ bool parse_int64(const char*& p, const char* end, std::int64_t& out) {
 }
 
 char* write_double(char* at, double value) {
-  // kMaxDoubleChars always hold the shortest form of a double: no error to report.
-  return std::to_chars(at, at + kMaxDoubleChars, value).ptr;
+  // std::to_chars' bytes, several times faster (issue 26: half the time of slicing to WKT).
+  return write_shortest_double(at, value);
 }
 
 void append_double(std::string& out, double value) {

@@ -111,6 +111,43 @@ TEST(InsidePolygonCli, NaNCoordinateIsBadInput) {
   EXPECT_NE(run.err.find("<stdin>:1"), std::string::npos) << run.err;
 }
 
+// The forms a point file may take (CR LF, comments after the numbers, blank lines, commas, no
+// final newline) give the answers of the plain file, from a file or from standard input, on 1 and
+// 2 threads; a bad line late in the file is exit 3 naming its line, with no answer printed.
+TEST(InsidePolygonCli, EveryPointFileFormGivesThePlainFilesAnswersAndBadLinesTheirLine) {
+  TempDir dir;
+  const std::string region = dir.write("r.wkt", square_with_hole);
+  std::string plain;
+  std::string dressed = "# x y\r\n";
+  for (int i = 0; i < 300; ++i) {
+    const std::string x = std::to_string(i % 9 * 0.5), y = std::to_string(i % 7 * 0.75);
+    plain += x + " " + y + "\n";
+    dressed += i % 5 == 0 ? "\r\n  \t\n" : "";
+    dressed += i % 3 == 0 ? x + " , " + y + " # p\r\n" : "\t" + x + "\t" + y + "\r\n";
+  }
+  dressed.resize(dressed.size() - 2);  // no final line end
+  const CliRun expected =
+      run_contain({"inside", "--polygon", region, "--points", dir.write("plain.txt", plain)});
+  ASSERT_EQ(expected.exit_code, 0) << expected.err;
+  const std::string file = dir.write("dressed.txt", dressed);
+  for (const char* threads : {"1", "2"}) {
+    const CliRun run =
+        run_contain({"inside", "--polygon", region, "--points", file, "--threads", threads});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, expected.out) << threads;
+    const CliRun piped = run_contain(
+        {"inside", "--polygon", region, "--points", "-", "--threads", threads}, dressed);
+    EXPECT_EQ(piped.out, expected.out) << threads;
+  }
+  for (const char* bad : {"1 nan", "inf 1", "1 2x", "1 2,", "1e999 0"}) {
+    const CliRun run = run_contain(
+        {"inside", "--polygon", region, "--points", dir.write("bad.txt", plain + bad + "\n0 0\n")});
+    EXPECT_EQ(run.exit_code, 3) << bad;
+    EXPECT_TRUE(run.out.empty()) << bad;
+    EXPECT_NE(run.err.find("bad.txt:301"), std::string::npos) << bad << ": " << run.err;
+  }
+}
+
 TEST(InsidePolygonCli, MalformedWktIsBadInputNamingFileAndLine) {
   TempDir dir;
   const std::string region = dir.write("bad.wkt", "POLYGON ((0 0, 1 0,\n 1 x, 0 0))");

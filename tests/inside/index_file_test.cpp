@@ -207,6 +207,47 @@ TEST(MeshIndexFile, CraftedPayloadsAreRefusedOrAnswerWithoutReadingOutOfBounds) 
   EXPECT_GT(loaded_count, 0u);
 }
 
+// The image that `contain index build` writes piece by piece (some pieces the index's own
+// arrays) is the formatted file, for every kind of mesh index: grid, few queries (no grid),
+// winding number; and checksums over pieces of any split are the checksum of the whole.
+TEST(MeshIndexFile, ImagePiecesJoinedAreTheFormattedFileAndChecksumsStreamAcrossPieces) {
+  Mesh open = test::grid_cube(0, 1, 2);
+  open.triangles.pop_back();
+  const Mesh torus = scenes::torus(1.0, 0.4, 24, 12);
+  for (const MeshIndex& index :
+       {MeshIndex(torus), MeshIndex(torus, {.queries = 1}), MeshIndex(open), MeshIndex(Mesh{})}) {
+    const std::vector<std::byte> bytes = format_index(index);
+    const IndexImage image = index_image(index);
+    EXPECT_EQ(image.size(), bytes.size());
+    std::vector<std::byte> joined;
+    for (const std::span<const std::byte> piece : image.pieces())
+      joined.insert(joined.end(), piece.begin(), piece.end());
+    EXPECT_EQ(joined, bytes);
+    ASSERT_TRUE(parse_mesh_index(bytes).ok());
+  }
+  EXPECT_GT(index_image(MeshIndex(torus)).pieces().size(), 1u);  // arrays by reference
+}
+
+// The records' padding is written as zeros even where a crafted file held other bytes there:
+// a loaded index saves the bytes of the fresh one.
+TEST(MeshIndexFile, LoadedIndexSavesTheFreshBytesWhateverItsFileHeldInThePadding) {
+  const MeshIndex fresh(test::octahedron(1.0));
+  const std::vector<std::byte> bytes = format_index(fresh);
+  // The first record: after the regime, the parity flag, the report (10 counts, no pinch
+  // vertices: a count, the Euler characteristic, the genus flag and value, the volume) and the
+  // records' count; its padding 97 bytes in.
+  const std::size_t first_record = index_header_size + 2 + 10 * 8 + 8 + 8 + 1 + 8 + 8 + 8;
+  const std::size_t padding = first_record + 97;
+  ASSERT_EQ(bytes[padding], std::byte{0});
+  auto crafted = bytes;
+  for (std::size_t i = padding; i < padding + 7; ++i)
+    crafted[i] = std::byte{0xA5};
+  reseal(crafted);
+  const auto loaded = parse_mesh_index(crafted);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().what();
+  EXPECT_EQ(format_index(*loaded), bytes);
+}
+
 std::vector<MultiPolygon> random_layer(std::mt19937_64& rng, int count) {
   std::vector<MultiPolygon> regions;
   for (int r = 0; r < count; ++r) {

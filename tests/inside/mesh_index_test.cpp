@@ -88,6 +88,45 @@ TEST(MeshIndex, TorusWithIrrationalVerticesMatchesTheExactOracle) {
   expect_matches_oracle(mesh, probe_points(mesh, -2, 2, 0.25));
 }
 
+// The empty cells' winding numbers come from each triangle's hits of the rows' sample lines;
+// under big tilted triangles the grid leaves empty cells inside a triangle's box (its plane
+// misses them), where the hit's side decides. At the centre of every cell of fine grids over
+// two overlapping octahedra (winding number 2 where they overlap) and an inverted one inside
+// (subtracting), with turned copies (other slopes), the index answers as the oracle's winding
+// number.
+TEST(MeshIndex, EveryCellUnderBigTiltedTrianglesHoldsTheOraclesAnswer) {
+  Mesh shifted = test::octahedron(1.5);
+  for (Vec3& v : shifted.vertices)
+    v = v + Vec3{0.75, 0.5, 0.25};
+  Mesh inverted = test::octahedron(0.4);
+  for (auto& t : inverted.triangles)
+    std::swap(t[1], t[2]);
+  const Mesh overlap = scenes::joined(scenes::joined(test::octahedron(2), shifted), inverted);
+  Mesh turned = overlap;
+  for (Vec3& v : turned.vertices)
+    v = {0.6 * v.x - 0.8 * v.y, 0.8 * v.x + 0.6 * v.y, v.z + 0.3 * v.x};
+  for (const Mesh& mesh : {overlap, turned}) {
+    for (const double per_triangle : {100.0, 400.0}) {
+      const MeshIndex index(mesh, {.cells_per_triangle = per_triangle});
+      const MeshIndex::Stats s = index.stats();
+      ASSERT_GT(s.cells, s.surface_cells);
+      const Box3& b = index.bounds();
+      for (int k = 0; k < s.nz; ++k)
+        for (int j = 0; j < s.ny; ++j)
+          for (int i = 0; i < s.nx; ++i) {
+            const Vec3 p{b.min.x + (i + 0.5) / s.nx * (b.max.x - b.min.x),
+                         b.min.y + (j + 0.5) / s.ny * (b.max.y - b.min.y),
+                         b.min.z + (k + 0.5) / s.nz * (b.max.z - b.min.z)};
+            if (oracle_locate(mesh, p) == Location::boundary) continue;  // not a cell's answer
+            const Location solid =
+                test::oracle_winding(mesh, p) > 0 ? Location::inside : Location::outside;
+            ASSERT_EQ(index.locate(p), solid)
+                << p.x << " " << p.y << " " << p.z << " cells " << s.cells;
+          }
+    }
+  }
+}
+
 TEST(MeshIndex, AMeshTurnedInsideOutHoldsNoPointAsForTheBooleans) {
   // Winding number -1 inside: the empty solid (contain clip --op union writes no triangle).
   Mesh mesh = grid_cube(0, 4, 2);

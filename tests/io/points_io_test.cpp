@@ -274,7 +274,8 @@ TEST(PointsIo, ChunkedReadingGivesTheWholeFileReadersPointsBitForBitAndItsErrors
     EXPECT_TRUE(same_bits(*pieces, whole->points)) << describe(reading);
   }
   // An error late in the file: the same kind, message and line whatever the piece size.
-  for (const char* bad : {"1 x\n", "1 2 3\n", "1e999 2\n", "1,,2\n", "1 2,\n", "7\n"}) {
+  for (const char* bad : {"1 x\n", "1 2 3\n", "1e999 2\n", "1,,2\n", "1 2,\n", "7\n", "nan 1\n",
+                          "1 -inf\n", "1 2x\n", "1-2\n", "1 2 # c\r\n3 4 5"}) {
     const test::TempFile broken(".txt", text + bad);
     const auto expected = read_points2(broken.path());
     ASSERT_FALSE(expected.ok()) << bad;
@@ -307,6 +308,38 @@ TEST(PointsIo, ChunkedReadingGivesTheWholeFileReadersPointsBitForBitAndItsErrors
       << expected.error().message;
   for (const ChunkedReading& reading : readings()) {
     const auto got = read_in_pieces<Vec3>(wrong.path(), reading, read_points3_chunked);
+    ASSERT_FALSE(got.ok()) << describe(reading);
+    EXPECT_EQ(got.error().line, expected.error().line) << describe(reading);
+    EXPECT_EQ(got.error().message, expected.error().message) << describe(reading);
+  }
+}
+
+// Lines far longer than a block (the block grows to hold them), numbers of thousands of digits,
+// and a bad number at the end of such a line: the whole-file reader's points and error.
+TEST(PointsIo, ChunkedReadingOfLinesLongerThanABlockGivesTheWholeFileReadersPointsAndErrors) {
+  const std::string digits(3000, '3');
+  const std::string blanks(5000, ' ');
+  std::string text;
+  for (int i = 0; i < 40; ++i) {
+    text += i % 7 == 3 ? "0." + digits + blanks + "-" + digits + "e-3000\r\n"
+                       : std::to_string(i) + " 0.5\n";
+  }
+  const test::TempFile file(".txt", text + blanks + "# " + digits);  // no final newline
+  const auto whole = read_points2(file.path());
+  ASSERT_TRUE(whole.ok()) << whole.error().what();
+  EXPECT_EQ(whole->points.size(), 40u);
+  for (const ChunkedReading& reading : readings()) {
+    const auto pieces = read_in_pieces<Vec2>(file.path(), reading, read_points2_chunked);
+    ASSERT_TRUE(pieces.ok()) << describe(reading) << ": " << pieces.error().what();
+    EXPECT_TRUE(same_bits(*pieces, whole->points)) << describe(reading);
+  }
+  const test::TempFile broken(".txt", text + "1" + blanks + digits + "e9999\n2 2\n");
+  const auto expected = read_points2(broken.path());
+  ASSERT_FALSE(expected.ok());
+  EXPECT_EQ(expected.error().line, 41);
+  EXPECT_EQ(expected.error().kind, ErrorKind::invalid_value);
+  for (const ChunkedReading& reading : readings()) {
+    const auto got = read_in_pieces<Vec2>(broken.path(), reading, read_points2_chunked);
     ASSERT_FALSE(got.ok()) << describe(reading);
     EXPECT_EQ(got.error().line, expected.error().line) << describe(reading);
     EXPECT_EQ(got.error().message, expected.error().message) << describe(reading);

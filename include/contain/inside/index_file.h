@@ -83,6 +83,41 @@ struct IndexHeader {
 /// Errors (ErrorKind::parse) say which check failed; `source` is left empty for the caller.
 [[nodiscard]] Result<IndexHeader> parse_index_header(std::span<const std::byte> bytes);
 
+namespace index_bytes {
+class Writer;
+}  // namespace index_bytes
+
+/// A whole index file as pieces in order: bytes of its own (the header, the small sections,
+/// arrays stored in another form than the index keeps them) and views of the index's own arrays
+/// where the file stores them as they lie in memory, so that writing a file needs no copy of
+/// the index in one buffer (for 100k triangles 21 MB less to allocate, fill and free). Valid
+/// while the index it shows lives unchanged. Movable, not copyable.
+class IndexImage {
+ public:
+  IndexImage(IndexImage&&) noexcept = default;
+  IndexImage& operator=(IndexImage&&) noexcept = default;
+  IndexImage(const IndexImage&) = delete;
+  IndexImage& operator=(const IndexImage&) = delete;
+  ~IndexImage() = default;
+
+  /// The file's bytes, piece by piece, in order.
+  [[nodiscard]] std::span<const std::span<const std::byte>> pieces() const { return pieces_; }
+  /// The file's length.
+  [[nodiscard]] std::size_t size() const;
+  /// The pieces joined: the file's bytes.
+  [[nodiscard]] std::vector<std::byte> join() &&;
+
+ private:
+  friend class index_bytes::Writer;
+  IndexImage() = default;
+  std::vector<std::byte> own_;
+  std::vector<std::span<const std::byte>> pieces_;
+};
+
+/// The file of `index` (kind mesh_index; source: `fingerprint(index)`) as an image that refers
+/// to `index`'s arrays: the bytes of `format_index(index)`, piece by piece.
+[[nodiscard]] IndexImage index_image(const MeshIndex& index);
+
 /// The file bytes of `index` (kind mesh_index; source: `fingerprint(index)`).
 [[nodiscard]] std::vector<std::byte> format_index(const MeshIndex& index);
 /// The file bytes of `layer` (kind region_layer) built from regions of fingerprint `source`,

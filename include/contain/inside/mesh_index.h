@@ -157,6 +157,8 @@ class MeshIndex {
     Vec3 a, b, c;
     float lo[3], hi[3];  // box rounded outward to float: a quick, safe rejection test
     Sign s;              // sign of the (y, z) projection: zero if never crossed by an x ray
+    // The padding, explicit and zeroed: index files store the records as they lie in memory.
+    std::uint8_t zero[7] = {};
   };
 
   // A triangle of a surface cell, with a copy of its box so that a cell's rejection tests read one
@@ -176,7 +178,7 @@ class MeshIndex {
   void list_triangles_by_cell(const std::vector<Box3>& boxes);
   template <class Cell>
   void list_triangles_by_cell_as(const std::vector<Box3>& boxes);
-  void settle_empty_cells();
+  void settle_empty_cells(const std::vector<Box3>& boxes);
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |

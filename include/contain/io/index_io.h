@@ -37,6 +37,9 @@ class MappedFile {
 
 /// Writes `bytes` (a whole index file: `inside::format_index`) to `path`.
 [[nodiscard]] Status write_index(std::span<const std::byte> bytes, const std::string& path);
+/// Writes the file of `image` (`inside::index_image`) to `path`, piece by piece: the same bytes
+/// as its joined form, without that copy.
+[[nodiscard]] Status write_index(const inside::IndexImage& image, const std::string& path);
 
 /// The kind of the index saved in `path`, checked whole (`inside::parse_index_header`), with
 /// the file kept mapped for `read_mesh_index(file, path)`.

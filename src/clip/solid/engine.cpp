@@ -19,7 +19,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   store.add_vertices(*soup);
   const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
   const solid::Refinement refinement = solid::refine(*soup, work, store);
-  const std::vector<solid::FaceLabel> labels = solid::label_faces(*soup, refinement, store);
+  const solid::FaceLabels labels = solid::label_faces(*soup, refinement, store);
   return solid::write_result(*soup, refinement, work, labels, store, options.op);
 }
 

@@ -122,6 +122,9 @@ class PointStore {
   std::vector<Vec3> rounded_;
   PointTable first_;                // the first point of each nearest doubles
   std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
+  // The first point with the same nearest doubles as each (itself for the first): known when
+  // the point is added, where a lookup of its doubles was a probe of the table per point.
+  std::vector<std::int32_t> first_of_;
 };
 
 /// The key of the undirected input edge between welded vertices a and b.
@@ -209,12 +212,29 @@ struct FaceLabel {
   std::vector<int> front, back;
 };
 
+/// The labels of the refined faces: one per patch (faces joined across edges that cross no
+/// other surface share their labels), each face numbering its patch's (a copy per face was a
+/// tenth of the labels' time, two allocations each).
+struct FaceLabels {
+  std::vector<FaceLabel> of_patch;
+  std::vector<std::uint32_t> patch;  ///< of each face, an index into of_patch
+  [[nodiscard]] const FaceLabel& operator[](std::size_t face) const {
+    return of_patch[patch[face]];
+  }
+};
+
 /// The axis whose normal component is largest in magnitude (and non-zero): the one dropped to
 /// work in a triangle's plane.
 [[nodiscard]] int dropped_axis(const BigVec3& n);
 
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
 [[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store);
+/// The same decisions (the same constraints of each triangle, the same coplanar partners) with
+/// points numbered apart from any store: the soup's vertices first, then each crossing as made,
+/// enclosed but not rounded (for the check of a written mesh and the bounds of a snap round,
+/// which ask only which pairs meet; the exact rounding of crossings of nearly parallel planes
+/// was most of a failing snap's time).
+[[nodiscard]] std::vector<TriangleWork> meeting_pairs(const Soup& soup);
 [[nodiscard]] Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work,
                                 PointStore& store);
 /// Triangles of the constrained triangulation of triangle `corners` (oriented positively in
@@ -224,8 +244,8 @@ struct FaceLabel {
     const std::array<std::int32_t, 3>& corners, std::span<const std::int32_t> points,
     std::span<const std::array<std::int32_t, 2>> pieces, const PointStore& store, int axis,
     Sign sense);
-[[nodiscard]] std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinement,
-                                                 const PointStore& store);
+[[nodiscard]] FaceLabels label_faces(const Soup& soup, const Refinement& refinement,
+                                     const PointStore& store);
 /// Faces with their corners renumbered so that sheets meeting along an edge or at a point have
 /// their own vertices there: `points[i]` is the exact point of new vertex i.
 struct Sheets {
@@ -236,7 +256,7 @@ struct Sheets {
                                      const PointStore& store);
 [[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
                                                      const std::vector<TriangleWork>& work,
-                                                     const std::vector<FaceLabel>& labels,
-                                                     PointStore& store, Op op);
+                                                     const FaceLabels& labels, PointStore& store,
+                                                     Op op);
 
 }  // namespace contain::clip::solid

@@ -323,6 +323,87 @@ ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   return out;
 }
 
+namespace {
+
+// Intervals of long doubles (64-bit significands: crossings of nearly parallel planes, whose
+// quotient amplifies the rounding errors, stay narrow enough for the comparisons' filter), each
+// operation rounded outward by one step as `Interval`'s.
+struct Wide {
+  long double lo, hi;
+};
+
+constexpr long double wide_infinity = std::numeric_limits<long double>::infinity();
+
+// One step or more beyond each end, without a call: |x| 2^-62 is at least two steps of x (64-bit
+// significands), so x + (|x| 2^-62 + the least normal), rounded to nearest, is past x by a step
+// at least (the least normal covers x = 0 and the subnormals; a subnormal operand would make
+// every x87 operation take its slow assist).
+Wide outward(long double lo, long double hi) {
+  constexpr long double step = 0x1p-62L;
+  constexpr long double least = std::numeric_limits<long double>::min();
+  return {lo - (std::fabs(lo) * step + least), hi + (std::fabs(hi) * step + least)};
+}
+
+Wide operator+(Wide a, Wide b) {
+  return outward(a.lo + b.lo, a.hi + b.hi);
+}
+Wide operator-(Wide a, Wide b) {
+  return outward(a.lo - b.hi, a.hi - b.lo);
+}
+Wide operator*(Wide a, Wide b) {
+  const long double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  return outward(std::min(std::min(p[0], p[1]), std::min(p[2], p[3])),
+                 std::max(std::max(p[0], p[1]), std::max(p[2], p[3])));
+}
+// x / d for d not holding 0 (else the whole line).
+Wide operator/(Wide x, Wide d) {
+  if (!(d.lo > 0 || d.hi < 0)) return {-wide_infinity, wide_infinity};
+  const long double q[4] = {x.lo / d.lo, x.lo / d.hi, x.hi / d.lo, x.hi / d.hi};
+  return outward(std::min(std::min(q[0], q[1]), std::min(q[2], q[3])),
+                 std::max(std::max(q[0], q[1]), std::max(q[2], q[3])));
+}
+
+// The doubles enclosing [x.lo, x.hi], within [lo, hi] (also for NaN ends).
+void to_doubles(Wide x, double lo, double hi, double& out_lo, double& out_hi) {
+  auto l = static_cast<double>(x.lo);
+  if (static_cast<long double>(l) > x.lo) l = down(l);
+  auto h = static_cast<double>(x.hi);
+  if (static_cast<long double>(h) < x.hi) h = up(h);
+  out_lo = l >= lo ? l : lo;
+  out_hi = h <= hi ? h : hi;
+}
+
+}  // namespace
+
+ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  const auto at = [](Vec3 v) {
+    return std::array<Wide, 3>{Wide{v.x, v.x}, Wide{v.y, v.y}, Wide{v.z, v.z}};
+  };
+  const std::array<Wide, 3> ia = at(a), ib = at(b), ic = at(c), ip = at(p), iq = at(q);
+  std::array<Wide, 3> u{}, v{}, pa{}, qa{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    u[i] = ib[i] - ia[i];
+    v[i] = ic[i] - ia[i];
+    pa[i] = ip[i] - ia[i];
+    qa[i] = iq[i] - ia[i];
+  }
+  const std::array<Wide, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                 u[0] * v[1] - u[1] * v[0]};
+  const Wide dp = n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2];
+  const Wide dq = n[0] * qa[0] + n[1] * qa[1] + n[2] * qa[2];
+  const Wide t = dp / (dp - dq);
+  ExactPoint out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    // The point lies on the segment: its ends bound every coordinate.
+    const double pi = coordinate(p, static_cast<int>(i)), qi = coordinate(q, static_cast<int>(i));
+    to_doubles(ip[i] + (iq[i] - ip[i]) * t, std::min(pi, qi), std::max(pi, qi), out.lo[i],
+               out.hi[i]);
+  }
+  out.v = {out.lo[0], out.lo[1], out.lo[2]};
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  return out;
+}
+
 ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
                      const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis) {
   const std::array<BigFloat, 3> l1 = cross3(dropped(p1, axis), dropped(p2, axis));

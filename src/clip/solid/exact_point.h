@@ -60,6 +60,12 @@ struct ExactPoint {
 /// collinear; p and q lie strictly on opposite sides of the plane.
 [[nodiscard]] ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c);
 
+/// The same point for predicates only: its coordinates enclosed by interval arithmetic, `v` an
+/// approximation and not its nearest doubles (the rounding's exact stage, which crossings of
+/// nearly parallel planes take, is skipped: for the check of a written mesh, which asks only
+/// whether triangles meet). Not for the point store.
+[[nodiscard]] ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c);
+
 /// Where the lines p1 p2 and q1 q2, all four in the plane through a with normal n, cross.
 /// `axis` is dropped to project (n[axis] != 0). Precondition: the projected lines cross in one
 /// point.

@@ -64,10 +64,35 @@ bool one_side(const std::array<Sign, 3>& s, int shared) {
   return zeros <= shared && zeros < 3 && (positive == 0 || negative == 0);
 }
 
+// The points of the pair stage for the engine: every crossing rounded and stored once.
+struct StoredPoints {
+  PointStore& store;
+  std::int32_t crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+    return store.add(line_plane(p, q, a, b, c));
+  }
+  [[nodiscard]] const ExactPoint& point(std::int32_t i) const { return store.point(i); }
+};
+
+// The points of the pair stage for the check of a written mesh, which asks only whether pairs
+// meet: the soup's vertices, then each crossing as made (enclosed, not rounded, not merged with
+// an equal one: a crossing lies inside an edge of each triangle that makes it, so it is never a
+// corner of that triangle and the tests on shared corners do not change).
+struct EnclosedPoints {
+  std::vector<ExactPoint> points;
+  std::int32_t crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+    points.push_back(line_plane_enclosed(p, q, a, b, c));
+    return static_cast<std::int32_t>(points.size() - 1);
+  }
+  [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
+    return points[static_cast<std::size_t>(i)];
+  }
+};
+
 // The ends (one or two point ids) of t's part of u's plane, given t's signs against it (not all
 // zero and not all on one side).
+template <class Points>
 std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32_t u,
-                                    const std::array<Sign, 3>& s, PointStore& store) {
+                                    const std::array<Sign, 3>& s, Points& store) {
   std::vector<std::int32_t> ends;
   for (int i = 0; i < 3; ++i) {
     if (s[static_cast<std::size_t>(i)] == Sign::zero) ends.push_back(vertex_id(soup, t, i));
@@ -75,16 +100,16 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
-      ends.push_back(
-          store.add(line_plane(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
-                               corner(soup, u, 1), corner(soup, u, 2))));
+      ends.push_back(store.crossing(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
+                                    corner(soup, u, 1), corner(soup, u, 2)));
     }
   }
   return ends;
 }
 
 // The ends ordered by coordinate k (ascending); one end is used twice.
-std::array<std::int32_t, 2> ordered(const std::vector<std::int32_t>& ends, const PointStore& store,
+template <class Points>
+std::array<std::int32_t, 2> ordered(const std::vector<std::int32_t>& ends, const Points& store,
                                     int k) {
   if (ends.size() == 1) return {ends[0], ends[0]};
   if (compare_coordinate(store.point(ends[0]), store.point(ends[1]), k) == Sign::positive) {
@@ -156,7 +181,8 @@ void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u,
   }
 }
 
-void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore& store,
+template <class Points>
+void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& store,
                     std::vector<TriangleWork>& work) {
   if (soup.degenerate[static_cast<std::size_t>(t)] ||
       soup.degenerate[static_cast<std::size_t>(u)]) {
@@ -194,9 +220,8 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, PointStore
   work[static_cast<std::size_t>(u)].constraints.push_back({lo, hi});
 }
 
-}  // namespace
-
-std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
+template <class Points>
+std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store) {
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
   (void)bvh::traverse_self(
@@ -208,6 +233,21 @@ std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
         return bvh::Visit::proceed;
       });
   return work;
+}
+
+}  // namespace
+
+std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
+  StoredPoints points{store};
+  return pairs_of(soup, points);
+}
+
+std::vector<TriangleWork> meeting_pairs(const Soup& soup) {
+  EnclosedPoints points;
+  points.points.reserve(soup.vertices.size());
+  for (const Vec3 v : soup.vertices)
+    points.points.push_back(exact_point(v));
+  return pairs_of(soup, points);
 }
 
 }  // namespace contain::clip::solid

@@ -119,14 +119,18 @@ std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
 
 }  // namespace
 
-std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinement,
-                                   const PointStore& store) {
+FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
   const std::vector<std::size_t> patch = patches(soup, refinement);
-  std::vector<FaceLabel> labels(refinement.faces.size());
-  for (std::size_t f = 0; f < labels.size(); ++f) {
+  FaceLabels labels;
+  labels.patch.resize(refinement.faces.size());
+  for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch[f];
-    if (root != f) continue;
+    if (root != f) {
+      labels.patch[f] = labels.patch[root];  // the root is the patch's first face: seen before
+      continue;
+    }
+    labels.patch[f] = static_cast<std::uint32_t>(labels.of_patch.size());
     const RefinedFace& face = refinement.faces[f];
     const ExactPoint c =
         centroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2]));
@@ -137,11 +141,9 @@ std::vector<FaceLabel> label_faces(const Soup& soup, const Refinement& refinemen
                            : (n.z.sign() != Sign::zero ? n.z.sign() : n.x.sign());
     std::vector<int> plus = winding_numbers(soup, tree, c, near, 1);
     std::vector<int> minus = winding_numbers(soup, tree, c, near, -1);
-    labels[f] = first == Sign::positive ? FaceLabel{std::move(plus), std::move(minus)}
-                                        : FaceLabel{std::move(minus), std::move(plus)};
-  }
-  for (std::size_t f = 0; f < labels.size(); ++f) {
-    if (patch[f] != f) labels[f] = labels[patch[f]];
+    labels.of_patch.push_back(first == Sign::positive
+                                  ? FaceLabel{std::move(plus), std::move(minus)}
+                                  : FaceLabel{std::move(minus), std::move(plus)});
   }
   return labels;
 }

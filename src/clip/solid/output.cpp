@@ -119,8 +119,8 @@ double signed_volume(const Mesh& mesh) {
 }  // namespace
 
 BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
-                             const std::vector<TriangleWork>& work,
-                             const std::vector<FaceLabel>& labels, const PointStore& store, Op op) {
+                             const std::vector<TriangleWork>& work, const FaceLabels& labels,
+                             const PointStore& store, Op op) {
   BoundaryFaces out;
   for (std::size_t f = 0; f < refinement.faces.size(); ++f) {
     const RefinedFace& face = refinement.faces[f];
@@ -136,8 +136,7 @@ BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
 
 Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
                                        const std::vector<TriangleWork>& work,
-                                       const std::vector<FaceLabel>& labels, PointStore& store,
-                                       Op op) {
+                                       const FaceLabels& labels, PointStore& store, Op op) {
   const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
   double scale = 0.0;
   for (const Vec3 v : soup.vertices) {

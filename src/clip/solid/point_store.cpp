@@ -76,6 +76,7 @@ void PointStore::reserve(std::size_t points) {
   points_.reserve(points);
   rounded_.reserve(points);
   next_.reserve(points);
+  first_of_.reserve(points);
   first_.reserve(points, rounded_);
 }
 
@@ -102,6 +103,10 @@ void PointStore::add_vertices(const Soup& soup) {
     points_.push_back(exact_point(v));
   rounded_.assign(soup.vertices.begin(), soup.vertices.end());
   next_.assign(soup.vertices.size(), -1);
+  first_of_.reserve(room);
+  first_of_.resize(soup.vertices.size());
+  for (std::size_t i = 0; i < first_of_.size(); ++i)
+    first_of_[i] = static_cast<std::int32_t>(i);
 }
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
@@ -118,11 +123,12 @@ std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   points_.push_back(p);
   rounded_.push_back(r);
   next_.push_back(-1);
+  first_of_.push_back(first);
   return id;
 }
 
 std::int32_t PointStore::representative(std::int32_t i) const {
-  return first_.find(rounded(i), rounded_);
+  return first_of_[static_cast<std::size_t>(i)];
 }
 
 }  // namespace contain::clip::solid

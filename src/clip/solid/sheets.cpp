@@ -185,18 +185,17 @@ struct Grouping {
 Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                        const PointStore& store) {
   // Every use keyed by its edge, in face order within an edge (the order the fans start from):
-  // one sorted array rather than a list per edge.
+  // one array sorted by (edge, face, corner) by a counting sort of the edges' lower points
+  // (a stable sort of all uses by key was a tenth of the written mesh's time).
+  const std::vector<EdgeUse> sorted = sorted_edge_uses(
+      faces.size(), [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return faces[f]; });
   std::vector<std::pair<std::uint64_t, Use>> uses;
-  uses.reserve(3 * faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = faces[f][static_cast<std::size_t>(k)],
-                         b = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-      uses.emplace_back(edge_key(a, b), Use{f, a < b ? k : (k + 1) % 3, a < b});
-    }
+  uses.reserve(sorted.size());
+  for (const EdgeUse& e : sorted) {
+    const std::int32_t a = faces[e.face][static_cast<std::size_t>(e.k)],
+                       b = faces[e.face][static_cast<std::size_t>((e.k + 1) % 3)];
+    uses.emplace_back(e.key, Use{e.face, a < b ? e.k : (e.k + 1) % 3, a < b});
   }
-  std::stable_sort(uses.begin(), uses.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
   Grouping grouping;
   for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
     const std::uint64_t key = uses[i].first;

@@ -77,16 +77,32 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     merged.push_back(t);
   }
+  // Sorted by (key, face): a counting sort by the smallest corner, then each corner's few
+  // faces sorted (one sort of every face was a twentieth of a large boolean).
+  std::size_t points = 0;
+  for (const auto& t : merged)
+    points = std::max(points, static_cast<std::size_t>(t[0]) + 1);
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const auto& t : merged)
+    ++start[static_cast<std::size_t>(t[0]) + 1];
+  for (std::size_t p = 0; p < points; ++p)
+    start[p + 1] += start[p];
   std::vector<CornerKey> keys(merged.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < merged.size(); ++i) {
     const auto& t = merged[i];
-    keys[i] = {{t[0], std::min(t[1], t[2]), std::max(t[1], t[2])},
-               static_cast<std::uint32_t>(i),
-               t[1] > t[2]};
+    keys[next[static_cast<std::size_t>(t[0])]++] = {
+        {t[0], std::min(t[1], t[2]), std::max(t[1], t[2])},
+        static_cast<std::uint32_t>(i),
+        t[1] > t[2]};
   }
-  std::sort(keys.begin(), keys.end(), [](const CornerKey& x, const CornerKey& y) {
-    return x.key != y.key ? x.key < y.key : x.face < y.face;
-  });
+  for (std::size_t p = 0; p < points; ++p) {
+    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start[p]),
+              keys.begin() + static_cast<std::ptrdiff_t>(start[p + 1]),
+              [](const CornerKey& x, const CornerKey& y) {
+                return x.key != y.key ? x.key < y.key : x.face < y.face;
+              });
+  }
   // Cancel opposite pairs in face order: a face cancels the latest still open face of the
   // other direction among the earlier ones (as a stack of each direction per key).
   std::vector<bool> gone(merged.size(), false);
@@ -163,13 +179,18 @@ namespace {
 // (< 9.3e-10 of it, within the spec's 1e-9; the half-ulp roundings add a negligible 5 ulps).
 Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
                                const PointStore& store, int level, double scale) {
-  std::vector<std::int32_t> ids;
-  for (const auto& f : faces)
-    ids.insert(ids.end(), f.begin(), f.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  // The faces' points ascending, by marks in point order (a sort of every corner was a
+  // twentieth of a large boolean).
   Representative rep;
   rep.of.assign(store.size(), -1);
+  for (const auto& f : faces) {
+    for (const std::int32_t i : f)
+      rep.of[static_cast<std::size_t>(i)] = 0;
+  }
+  std::vector<std::int32_t> ids;
+  for (std::size_t i = 0; i < rep.of.size(); ++i) {
+    if (rep.of[i] == 0) ids.push_back(static_cast<std::int32_t>(i));
+  }
   if (level >= 0) {
     std::vector<Vec3> points;
     points.reserve(ids.size());
@@ -248,7 +269,7 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
 Faces arranged_faces(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store,
                      Op op) {
   const Refinement refinement = refine(soup, work, store);
-  const std::vector<FaceLabel> labels = label_faces(soup, refinement, store);
+  const FaceLabels labels = label_faces(soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
   return merge_coplanar(soup, boundary, store);
 }

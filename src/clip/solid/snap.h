@@ -29,8 +29,8 @@ struct BoundaryFaces {
 /// (output.cpp).
 [[nodiscard]] BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
                                            const std::vector<TriangleWork>& work,
-                                           const std::vector<FaceLabel>& labels,
-                                           const PointStore& store, Op op);
+                                           const FaceLabels& labels, const PointStore& store,
+                                           Op op);
 
 /// The faces with every region of adjacent faces in one plane (same orientation, joined across
 /// edges held by just those two faces) re-triangulated without the points inside it that no

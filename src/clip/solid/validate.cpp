@@ -403,10 +403,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
   if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
-  PointStore store;
-  for (const Vec3 v : soup.vertices)
-    (void)store.add(v);
-  const std::vector<TriangleWork> work = intersect_pairs(soup, store);
+  const std::vector<TriangleWork> work = meeting_pairs(soup);
   std::vector<bool> bad(work.size(), false);
   for (std::size_t t = 0; t < work.size(); ++t) {
     for (const Constraint& c : work[t].constraints) {

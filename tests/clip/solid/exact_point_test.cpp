@@ -166,6 +166,48 @@ TEST(SolidExactPoint, CrossingsRoundToTheNearestDoublesOfTheRationals) {
   }
 }
 
+// The enclosed crossing of the check (line_plane_enclosed) holds the rational point in every
+// coordinate, and its comparisons with the rounded crossing and with points of doubles are the
+// rationals' signs: on random crossings, on segments nearly parallel to the plane (turned by
+// 1e-9, where the quotient amplifies the rounding errors) and at huge and tiny scales.
+void expect_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  const std::optional<Known> x = crossing(p, q, a, b, c);
+  if (!x) return;
+  const ExactPoint e = clip::solid::line_plane_enclosed(p, q, a, b, c);
+  for (int i = 0; i < 3; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    EXPECT_LE(mpq_class(e.lo[k]), coord(x->q, i)) << i;
+    EXPECT_GE(mpq_class(e.hi[k]), coord(x->q, i)) << i;
+    EXPECT_EQ(clip::solid::compare_coordinate(e, x->point, i), Sign::zero) << i;
+    for (const Vec3 v : {p, q, a}) {
+      EXPECT_EQ(clip::solid::compare_coordinate(e, clip::solid::exact_point(v), i),
+                sign_of(coord(x->q, i) - coord(exact(v), i)))
+          << i;
+    }
+  }
+}
+
+TEST(SolidExactPoint, EnclosedCrossingsHoldTheRationalPoint) {
+  std::mt19937_64 rng(29);
+  for (int trial = 0; trial < 300; ++trial) {
+    const double s = std::ldexp(1.0, static_cast<int>(rng() % 61) - 30);
+    const auto at = [&] { return random_point(rng) * s; };
+    expect_enclosed(at(), at(), at(), at(), at());
+    // A segment nearly in the plane: its ends 1e-9 s off it, on both sides.
+    const Vec3 a = at(), b = at(), c = at();
+    const Vec3 n = cross(b - a, c - a);
+    const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (len == 0.0) continue;
+    const Vec3 off = n * (1e-9 * s / len);
+    const Vec3 m = a + (b - a) * 0.25 + (c - a) * 0.25;
+    expect_enclosed(m + off + (b - a) * 0.3, m - off - (c - a) * 0.2, a, b, c);
+  }
+  for (const double s : {1.0, 1e300, 1e-300, 0x1p-1060}) {
+    expect_enclosed({0.3 * s, -0.2 * s, -s}, {0.1 * s, 0.7 * s, 3 * s}, {0, 0, 0}, {s, 0, 0},
+                    {0, s, 0});
+  }
+}
+
 // The filter of the intersection line's direction against the exact cross product of the exact
 // normals: when it answers, its axis is the first non-zero component.
 void expect_line_axis(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u, bool decides) {

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "clip/solid/engine.h"
 #include "clip/solid/solid_oracle.h"
 #include "contain/clip/mesh_boolean.h"
 #include "support/case_budget.h"
@@ -95,6 +96,42 @@ TEST(CheckWritten, RestrictedAndFullChecksAgreeWithTheOracleOnMovedVertices) {
       invalid += moved_cases(mesh, step, trials, rng, what + " step " + std::to_string(step));
   }
   EXPECT_GT(invalid, 0);  // the large steps do break some: both answers were exercised
+}
+
+// The check's pair stage (meeting_pairs: crossings enclosed, not rounded nor stored) makes the
+// engine's decisions (intersect_pairs): the same number of constraints in every triangle, the
+// same coplanar partners, and the constraints along input edges at the same places; on spheres
+// crossing, a sphere against a copy turned by 1e-9 (crossings of nearly parallel planes) and
+// boxes sharing faces.
+TEST(CheckWritten, MeetingPairsMakeTheDecisionsOfThePairStage) {
+  const Mesh sphere = icosphere(2, 1.0, {0, 0, 0});
+  Mesh turned = sphere;
+  const double c = std::cos(1e-9), s = std::sin(1e-9);
+  for (Vec3& v : turned.vertices)
+    v = {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+  const std::vector<std::pair<std::string, std::vector<Mesh>>> cases = {
+      {"spheres", {sphere, icosphere(2, 0.8, {0.3, 0.2, 0.1})}},
+      {"turned by 1e-9", {sphere, turned}},
+      {"boxes", {box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 0, 0}, {3, 2, 2})}}};
+  for (const auto& [what, inputs] : cases) {
+    const Result<clip::solid::Soup> soup = clip::solid::make_soup(inputs);
+    ASSERT_TRUE(soup.ok()) << what;
+    clip::solid::PointStore store;
+    store.add_vertices(*soup);
+    const std::vector<clip::solid::TriangleWork> stored =
+        clip::solid::intersect_pairs(*soup, store);
+    const std::vector<clip::solid::TriangleWork> met = clip::solid::meeting_pairs(*soup);
+    ASSERT_EQ(stored.size(), met.size()) << what;
+    std::size_t constraints = 0;
+    for (std::size_t t = 0; t < met.size(); ++t) {
+      ASSERT_EQ(stored[t].constraints.size(), met[t].constraints.size()) << what << " " << t;
+      EXPECT_EQ(stored[t].coplanar, met[t].coplanar) << what << " " << t;
+      for (std::size_t i = 0; i < met[t].constraints.size(); ++i)
+        EXPECT_EQ(stored[t].constraints[i].edge, met[t].constraints[i].edge) << what;
+      constraints += met[t].constraints.size();
+    }
+    EXPECT_GT(constraints, 0U) << what;
+  }
 }
 
 // Made by hand: the top vertex of an octahedron pushed down and out past a lower face folds

@@ -1,0 +1,268 @@
+// Shortest round-trip doubles: Schubfach's digits, libstdc++'s layout (src/io/shortest_double.h).
+//
+// Schubfach (R. Giulietti, "The Schubfach way to render doubles", 2020), in outline. A positive
+// double v = c * 2^q rounds back from every real of its rounding interval [v - d-, v + d+]
+// (closed when c is even, as round-to-nearest-even reads the ends back as v). Scaled by 4 (so
+// the ends are whole: cb = 4c, cbl = cb - 2 or cb - 1 at the narrower gap below a power of two,
+// cbr = cb + 2) and by 10^-k, with k = floor(log10(width)) so that the interval holds one or
+// two multiples of 10^k and at most one of 10^(k+1):
+//   1. vb, vbl, vbr: 4 * v * 10^-k and its ends, each from a 126-bit g ~ 10^-k (the table) and
+//      rounded to odd: a rounded-to-odd value is even only when exact, so comparing it with a
+//      multiple of 4 gives the exact comparison.
+//   2. s = floor(v * 10^-k). If exactly one of the multiples of 10 around s lies in the interval,
+//      it is the only decimal of that length or shorter there: the answer (its trailing zeros
+//      dropped). Otherwise s or s + 1 is, and if both are, the closer one to v (even on a tie).
+
+#include "io/shortest_double.h"
+
+#include <bit>
+#include <cstring>
+
+#include "io/shortest_double_table.h"
+
+namespace contain::io::detail {
+namespace {
+
+__extension__ typedef unsigned __int128 UInt128;
+
+constexpr std::uint64_t kHiddenBit = std::uint64_t{1} << 52;
+
+// floor(g * cp / 2^128), its lowest bit set when the first 64 bits of its fraction are not
+// all zero (round to odd). The last 64 bits of g * cp are left out: g's excess
+// over 10^-k (under 1) times cp (under 2^61) lies in them, so an exact 4 * v * 10^-k (a tie
+// between two decimals) still gives an even result (Giulietti's rop).
+std::uint64_t round_to_odd(const Pow10Bits& g, std::uint64_t cp) {
+  const UInt128 low = static_cast<UInt128>(g.low) * cp;
+  const UInt128 middle = static_cast<UInt128>(g.high) * cp + (low >> 64);
+  const auto whole = static_cast<std::uint64_t>(middle >> 64);
+  const bool inexact = static_cast<std::uint64_t>(middle) != 0;
+  return whole | static_cast<std::uint64_t>(inexact);
+}
+
+ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
+  // A shortest decimal from the coarse step (a multiple of 10^(k+1)) has at most 16 zeros.
+  if (digits % 100000000 == 0) {
+    digits /= 100000000;
+    exponent += 8;
+  }
+  if (digits % 10000 == 0) {
+    digits /= 10000;
+    exponent += 4;
+  }
+  if (digits % 100 == 0) {
+    digits /= 100;
+    exponent += 2;
+  }
+  if (digits % 10 == 0) {
+    digits /= 10;
+    exponent += 1;
+  }
+  return {digits, exponent};
+}
+
+}  // namespace
+
+ShortestDecimal shortest_decimal(std::uint64_t c, int q) {
+  // The gap below v is half the gap above only at a power of two that is a normal double
+  // (the smallest normal has a subnormal below it at the same spacing).
+  const bool regular = c != kHiddenBit || q == -1074;
+  const std::uint64_t open = c & 1;  // odd c: the ends round to the neighbours, not to v
+  const std::uint64_t cb = c << 2;
+  const std::uint64_t cbl = regular ? cb - 2 : cb - 1;
+  const std::uint64_t cbr = cb + 2;
+  const int k = regular ? floor_log10_pow2(q) : floor_log10_three_quarters_pow2(q);
+  // 10^-k = g * 2^(floor_log2_pow10(-k) - 125); the products are taken over 2^128, so the
+  // significands are shifted by h (3 to 6: cb << h < 2^61).
+  const int h = q + floor_log2_pow10(-k) + 3;
+  const Pow10Bits& g = kPow10Table[static_cast<std::size_t>(-k - kPow10MinExponent)];
+  const std::uint64_t vb = round_to_odd(g, cb << h);
+  const std::uint64_t vbl = round_to_odd(g, cbl << h);
+  const std::uint64_t vbr = round_to_odd(g, cbr << h);
+
+  const std::uint64_t s = vb >> 2;
+  // The multiples of 10^(k+1) around v: the interval (narrower than 10^(k+1)) holds at most one.
+  const std::uint64_t sp10 = s / 10 * 10;
+  const std::uint64_t tp10 = sp10 + 10;
+  const bool sp10_in = vbl + open <= sp10 << 2;
+  const bool tp10_in = (tp10 << 2) + open <= vbr;
+  if (sp10_in != tp10_in) return without_trailing_zeros((sp10_in ? sp10 : tp10) / 10, k + 1);
+
+  // Neither: s or s + 1 (the interval is at least 10^k wide), neither a multiple of 10.
+  const std::uint64_t t = s + 1;
+  const bool s_in = vbl + open <= s << 2;
+  const bool t_in = (t << 2) + open <= vbr;
+  if (s_in != t_in) return {s_in ? s : t, k};
+  // Both: the closer to v; on a tie (vb exactly at the midpoint 4s + 2) the even one.
+  const std::uint64_t midpoint = (s << 2) + 2;
+  const bool take_s = vb < midpoint || (vb == midpoint && (s & 1) == 0);
+  return {take_s ? s : t, k};
+}
+
+namespace {
+
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+void write_pair(char* at, std::uint32_t pair) {
+  std::memcpy(at, kDigitPairs + 2 * pair, 2);
+}
+
+// Eight digits of `n` < 10^8, leading zeros included.
+void write_eight(char* at, std::uint32_t n) {
+  const std::uint32_t high = n / 10000;
+  const std::uint32_t low = n % 10000;
+  write_pair(at, high / 100);
+  write_pair(at + 2, high % 100);
+  write_pair(at + 4, low / 100);
+  write_pair(at + 6, low % 100);
+}
+
+constexpr std::uint64_t kPowersOfTen[20] = {1ULL,
+                                            10ULL,
+                                            100ULL,
+                                            1000ULL,
+                                            10000ULL,
+                                            100000ULL,
+                                            1000000ULL,
+                                            10000000ULL,
+                                            100000000ULL,
+                                            1000000000ULL,
+                                            10000000000ULL,
+                                            100000000000ULL,
+                                            1000000000000ULL,
+                                            10000000000000ULL,
+                                            100000000000000ULL,
+                                            1000000000000000ULL,
+                                            10000000000000000ULL,
+                                            100000000000000000ULL,
+                                            1000000000000000000ULL,
+                                            10000000000000000000ULL};
+
+// The number of decimal digits of n > 0.
+int decimal_length(std::uint64_t n) {
+  // bit_width * log10(2), rounded down, is the length or one less.
+  const int guess = (std::bit_width(n) * 1233) >> 12;
+  return guess + static_cast<int>(n >= kPowersOfTen[guess]);
+}
+
+// The `length` digits of n (its decimal length) ending at at + length.
+void write_digits(char* at, std::uint64_t n, int length) {
+  char* end = at + length;
+  while (n >= 100000000) {
+    end -= 8;
+    write_eight(end, static_cast<std::uint32_t>(n % 100000000));
+    n /= 100000000;
+  }
+  auto rest = static_cast<std::uint32_t>(n);
+  while (rest >= 100) {
+    end -= 2;
+    write_pair(end, rest % 100);
+    rest /= 100;
+  }
+  if (rest >= 10) {
+    write_pair(end - 2, rest);
+  } else {
+    end[-1] = static_cast<char>('0' + rest);
+  }
+}
+
+char* write_integer(char* at, std::uint64_t n) {
+  const int length = n == 0 ? 1 : decimal_length(n);
+  write_digits(at, n, length);
+  return at + length;
+}
+
+// The whole number c * 2^q (q >= -52, v >= 1 and whole) in plain digits: what printf's "%.0f"
+// writes, and so libstdc++ for the whole numbers it puts in fixed notation (below 10^23).
+char* write_whole(char* at, std::uint64_t c, int q) {
+  if (q <= 0) return write_integer(at, c >> -q);
+  const UInt128 value = static_cast<UInt128>(c) << q;
+  const auto high = static_cast<std::uint64_t>(value / kPowersOfTen[19]);
+  const auto low = static_cast<std::uint64_t>(value % kPowersOfTen[19]);
+  if (high == 0) return write_integer(at, low);
+  at = write_integer(at, high);
+  // The 19 digits of `low`, leading zeros included.
+  write_eight(at + 11, static_cast<std::uint32_t>(low % 100000000));
+  write_eight(at + 3, static_cast<std::uint32_t>(low / 100000000 % 100000000));
+  const auto top = static_cast<std::uint32_t>(low / 10000000000000000);
+  at[0] = static_cast<char>('0' + top / 100);
+  write_pair(at + 1, top % 100);
+  return at + 19;
+}
+
+char* write_exponent(char* at, int exponent) {
+  *at++ = 'e';
+  *at++ = exponent < 0 ? '-' : '+';
+  const auto magnitude = static_cast<std::uint32_t>(exponent < 0 ? -exponent : exponent);
+  if (magnitude >= 100) {
+    *at++ = static_cast<char>('0' + magnitude / 100);
+    write_pair(at, magnitude % 100);
+  } else {
+    write_pair(at, magnitude);
+  }
+  return at + 2;
+}
+
+}  // namespace
+
+char* write_shortest_double(char* at, double value) {
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  const bool negative = (bits >> 63) != 0;
+  const auto biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t fraction = bits & (kHiddenBit - 1);
+  if (negative) *at++ = '-';
+  if (biased_exponent == 0x7ff) {
+    std::memcpy(at, fraction == 0 ? "inf" : "nan", 3);
+    return at + 3;
+  }
+  if (biased_exponent == 0 && fraction == 0) {
+    *at = '0';
+    return at + 1;
+  }
+  const std::uint64_t c = biased_exponent == 0 ? fraction : fraction | kHiddenBit;
+  const int q = biased_exponent == 0 ? -1074 : biased_exponent - 1075;
+  const ShortestDecimal decimal = shortest_decimal(c, q);
+  const int length = decimal_length(decimal.digits);
+  const int exponent = decimal.exponent;
+
+  // libstdc++'s choice: fixed notation unless scientific is shorter, where scientific writes
+  // a point only after a first digit that has others behind it.
+  const int lowest_fixed = length == 1 ? -3 : -(length + 3);
+  const int highest_fixed = length == 1 ? 4 : 5;
+  if (exponent < lowest_fixed || exponent > highest_fixed) {
+    // d.ddde+XX: the digits one place right, then the first moved in front of the point.
+    write_digits(at + 1, decimal.digits, length);
+    at[0] = at[1];
+    if (length == 1) return write_exponent(at + 1, exponent);
+    at[1] = '.';
+    return write_exponent(at + length + 1, exponent + length - 1);
+  }
+  if (exponent >= 0) {
+    // Whole: the digits and zeros while that is below 2^53 (every such whole number is a
+    // double and its own shortest form), else the exact value, whose last digits may differ.
+    if (length + exponent <= 15) {
+      write_digits(at, decimal.digits, length);
+      std::memset(at + length, '0', static_cast<std::size_t>(exponent));
+      return at + length + exponent;
+    }
+    return write_whole(at, c, q);
+  }
+  const int whole_digits = length + exponent;
+  if (whole_digits <= 0) {
+    // 0.000ddd
+    at[0] = '0';
+    at[1] = '.';
+    std::memset(at + 2, '0', static_cast<std::size_t>(-whole_digits));
+    write_digits(at + 2 - whole_digits, decimal.digits, length);
+    return at + 2 - exponent;
+  }
+  // ddd.ddd: the digits one place right, then the whole part moved left over the point's place.
+  write_digits(at + 1, decimal.digits, length);
+  std::memmove(at, at + 1, static_cast<std::size_t>(whole_digits));
+  at[whole_digits] = '.';
+  return at + length + 1;
+}
+
+}  // namespace contain::io::detail

@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// The shortest decimal that reads back as a given double, written byte for byte as
+/// std::to_chars(first, last, double) writes it (the plain overload of libstdc++), several times
+/// faster. The digits come from Schubfach (R. Giulietti, "The Schubfach way to render doubles",
+/// 2020): one 126-bit power of ten per double, three products rounded to odd, and at most two
+/// candidate decimals to compare with the rounding interval. The layout is libstdc++'s:
+/// fixed notation when it is not longer than scientific, "e+XX"/"e-XX" exponents of at least
+/// two digits, whole numbers in fixed notation as their exact value (as printf's "%.0f"), "-0",
+/// "inf", "-inf", "nan", "-nan".
+
+#include <cstdint>
+
+namespace contain::io::detail {
+
+/// The shortest decimal `digits` * 10^`exponent` in the rounding interval of a positive finite
+/// double, the closest to it among those of that length (the even one on a tie): Ryu's,
+/// Dragonbox's and Schubfach's common answer. `digits` has no trailing zero.
+struct ShortestDecimal {
+  std::uint64_t digits;
+  int exponent;
+};
+
+/// The shortest decimal of the double c * 2^q, c in [1, 2^53), q in [-1074, 971] (a positive
+/// finite double's integer significand and exponent).
+[[nodiscard]] ShortestDecimal shortest_decimal(std::uint64_t c, int q);
+
+/// floor(log10(2^q)), exact for |q| <= 1100 (proven in the test over the range the writer uses).
+[[nodiscard]] constexpr int floor_log10_pow2(int q) {
+  return (q * 315653) >> 20;
+}
+
+/// floor(log10(3/4 * 2^q)), exact for q in [-1074, 971] (proven in the test).
+[[nodiscard]] constexpr int floor_log10_three_quarters_pow2(int q) {
+  return (q * 315653 - 131007) >> 20;
+}
+
+/// floor(log2(10^e)), exact for |e| <= 330 (proven in the test).
+[[nodiscard]] constexpr int floor_log2_pow10(int e) {
+  return (e * 1741647) >> 19;
+}
+
+/// Writes `value` at `at` as std::to_chars(at, at + 32, value) does (room for 32 characters
+/// needed: the longest form, "-2.2250738585072014e-308" or a 22-digit whole number, is 24);
+/// returns the end of what was written.
+char* write_shortest_double(char* at, double value);
+
+}  // namespace contain::io::detail
