@@ -363,14 +363,22 @@ Wide operator/(Wide x, Wide d) {
                  std::max(std::max(q[0], q[1]), std::max(q[2], q[3])));
 }
 
-// The doubles enclosing [x.lo, x.hi], within [lo, hi] (also for NaN ends).
+// The doubles enclosing [x.lo, x.hi], within [lo, hi] (the segment's ends; also for NaN or
+// infinite ends, and without converting a value beyond the doubles' range).
 void to_doubles(Wide x, double lo, double hi, double& out_lo, double& out_hi) {
-  auto l = static_cast<double>(x.lo);
-  if (static_cast<long double>(l) > x.lo) l = down(l);
-  auto h = static_cast<double>(x.hi);
-  if (static_cast<long double>(h) < x.hi) h = up(h);
-  out_lo = l >= lo ? l : lo;
-  out_hi = h <= hi ? h : hi;
+  const auto inside = [&](long double v) {
+    return v >= static_cast<long double>(lo) && v <= static_cast<long double>(hi);
+  };
+  out_lo = lo;
+  if (inside(x.lo)) {
+    out_lo = static_cast<double>(x.lo);
+    if (static_cast<long double>(out_lo) > x.lo) out_lo = down(out_lo);
+  }
+  out_hi = hi;
+  if (inside(x.hi)) {
+    out_hi = static_cast<double>(x.hi);
+    if (static_cast<long double>(out_hi) < x.hi) out_hi = up(out_hi);
+  }
 }
 
 }  // namespace

@@ -189,23 +189,22 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
   // (a stable sort of all uses by key was a tenth of the written mesh's time).
   const std::vector<EdgeUse> sorted = sorted_edge_uses(
       faces.size(), [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return faces[f]; });
-  std::vector<std::pair<std::uint64_t, Use>> uses;
-  uses.reserve(sorted.size());
-  for (const EdgeUse& e : sorted) {
+  // The use of each, read where needed (no second array of all uses).
+  const auto use = [&](const EdgeUse& e) {
     const std::int32_t a = faces[e.face][static_cast<std::size_t>(e.k)],
                        b = faces[e.face][static_cast<std::size_t>((e.k + 1) % 3)];
-    uses.emplace_back(e.key, Use{e.face, a < b ? e.k : (e.k + 1) % 3, a < b});
-  }
+    return Use{e.face, a < b ? e.k : (e.k + 1) % 3, a < b};
+  };
   Grouping grouping;
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-    const std::uint64_t key = uses[i].first;
-    while (j < uses.size() && uses[j].first == key)
+  for (std::size_t i = 0, j = 0; i < sorted.size(); i = j) {
+    const std::uint64_t key = sorted[i].key;
+    while (j < sorted.size() && sorted[j].key == key)
       ++j;
-    if (j - i == 2) grouping.manifold.emplace_back(uses[i].second, uses[i + 1].second);
+    if (j - i == 2) grouping.manifold.emplace_back(use(sorted[i]), use(sorted[i + 1]));
     if (j - i <= 2) continue;  // a single face is left to the check
     std::vector<Use> list;
     for (std::size_t k = i; k < j; ++k)
-      list.push_back(uses[k].second);
+      list.push_back(use(sorted[k]));
     sort_around(list, static_cast<std::int32_t>(key >> 32U),
                 static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
     grouping.fans.push_back({key, std::move(list), 0});
