@@ -100,7 +100,7 @@ class PlaneSeparation {
     // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
     // a generous multiple of u = 2^-53.
     const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
-    return bmin > tmax_ + margin || bmax < tmin_ - margin;
+    return (bmin > tmax_ + margin) | (bmax < tmin_ - margin);
   }
 
  private:
@@ -293,15 +293,25 @@ void MeshIndex::list_triangles_by_cell() {
 template <class Cell>
 void MeshIndex::list_triangles_by_cell_as() {
   const std::size_t cell_count = stats_.cells;
-  HugePageVector<std::pair<Cell, std::uint32_t>> pairs;  // (cell, triangle)
+  struct Pair {
+    Cell cell;
+    std::uint32_t triangle;
+  };
+  HugePageVector<Pair> pairs;  // trivial: resized without zeroing, every listed one written
   // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
-  // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
-  pairs.reserve(8 * tris_.size());
+  // for eight to begin with. The pairs are written without a branch on the plane test (its
+  // answer is not predictable: a mispredicted branch a cell cost more than the test), each
+  // cell's pair stored and counted only where the plane does not separate.
+  pairs.resize(8 * tris_.size());
+  std::size_t listed = 0;
   for (std::size_t t = 0; t < tris_.size(); ++t) {
     const Box3 b = bounding_box(Triangle3{tris_[t].a, tris_[t].b, tris_[t].c});
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
     const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
     const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
+    const auto span = static_cast<std::size_t>(i1 - i0 + 1) *
+                      static_cast<std::size_t>(j1 - j0 + 1) * static_cast<std::size_t>(k1 - k0 + 1);
+    if (listed + span > pairs.size()) pairs.resize(std::max(2 * pairs.size(), listed + span));
     // A triangle whose box spans several cells is tested against each cell's box along its
     // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
@@ -309,17 +319,18 @@ void MeshIndex::list_triangles_by_cell_as() {
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
-          if (big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
-                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
-            continue;
-          }
           const std::size_t c = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
                                  static_cast<std::size_t>(j)) *
                                     static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i);
-          pairs.emplace_back(static_cast<Cell>(c), static_cast<std::uint32_t>(t));
+          pairs[listed] = {static_cast<Cell>(c), static_cast<std::uint32_t>(t)};
+          const bool separated =
+              big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
+                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}});
+          listed += separated ? 0 : 1;
         }
   }
+  pairs.resize(listed);
   // surface_ holds each cell's count first, then its surface cell number: no temporary array
   // of the grid's size (1.6 M cells for 100k triangles) to zero and fault in.
   state_.assign(cell_count, 0);

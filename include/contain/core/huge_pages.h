@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -22,6 +24,10 @@ namespace contain {
 /// rounded up to whole 2 MB pages, and asks the system to back them with huge pages when first
 /// touched (a hint: where it is not granted the block is ordinary memory). Smaller blocks come
 /// from `std::allocator`. Stateless: all instances compare equal.
+///
+/// Elements made without arguments are default-initialized, not value-initialized: `resize(n)`
+/// of a vector of a trivial type leaves the new elements' values indeterminate, for a caller
+/// that writes every one of them next (a large array is not zeroed only to be overwritten).
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
@@ -53,6 +59,14 @@ struct HugePageAllocator {
       return;
     }
     std::free(p);
+  }
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   [[nodiscard]] static constexpr std::size_t max_size() noexcept {
     return (std::size_t{0} - huge_page) / sizeof(T);
