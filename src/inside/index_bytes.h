@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -160,14 +161,14 @@ class Reader {
     std::memcpy(&value, bytes_.data() + at_ - sizeof(T), sizeof(T));
     return value;
   }
-  template <class T>
-  std::vector<T> get_array() {
+  template <class T, class Allocator = std::allocator<T>>
+  std::vector<T, Allocator> get_array() {
     const auto n = get<std::uint64_t>();
     if (failed_ || n > (bytes_.size() - at_) / sizeof(T)) {
       fail("an array's length runs past the end of the file");
       return {};
     }
-    std::vector<T> values(static_cast<std::size_t>(n));
+    std::vector<T, Allocator> values(static_cast<std::size_t>(n));
     if (n > 0) std::memcpy(values.data(), bytes_.data() + at_, values.size() * sizeof(T));
     at_ += values.size() * sizeof(T);
     return values;

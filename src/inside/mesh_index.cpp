@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "contain/bvh/triangle_boxes.h"
+#include "contain/core/huge_pages.h"
 #include "contain/core/radix_sort.h"
 #include "contain/inside/point_in_triangle.h"
 #include "contain/predicates/orient3d.h"
@@ -100,7 +100,7 @@ class PlaneSeparation {
     // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
     // a generous multiple of u = 2^-53.
     const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
-    return bmin > tmax_ + margin || bmax < tmin_ - margin;
+    return (bmin > tmax_ + margin) | (bmax < tmin_ - margin);
   }
 
  private:
@@ -208,11 +208,12 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
     return true;
   }
   // The triangles' boxes give the bounds and the grid, then the records in cell order, made
-  // once in that order (no second array of them to permute).
-  const std::vector<Box3> boxes = bvh::triangle_boxes(mesh);
-  for (const Box3& b : boxes)
-    bounds_.expand(b);
-  const std::array<int, 3> n = grid_size(bounds_, boxes.size(), options);
+  // once in that order (no second array of them to permute). The boxes are not kept: each stage
+  // takes them from the corners again (bounding_box, the same doubles), which costs less than
+  // writing and reading arrays of them.
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    bounds_.expand(bounding_box(mesh.triangle(t)));
+  const std::array<int, 3> n = grid_size(bounds_, mesh.triangles.size(), options);
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, n[0]);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, n[1]);
   z_ = GridAxis(bounds_.min.z, bounds_.max.z, n[2]);
@@ -224,9 +225,9 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   stats_.nx = nx_;
   stats_.ny = ny_;
   stats_.nz = nz_;
-  const std::vector<Box3> sorted_boxes = read_triangles_by_cell(mesh, boxes);
-  list_triangles_by_cell(sorted_boxes);
-  settle_empty_cells(sorted_boxes);
+  read_triangles_by_cell(mesh);
+  list_triangles_by_cell();
+  settle_empty_cells();
   return false;
 }
 
@@ -255,14 +256,13 @@ void MeshIndex::read_triangles(const Mesh& mesh) {
 
 // Triangles in the order of the cell of their box's low corner (rows along x are contiguous), in
 // mesh order within a cell: a query's run along a row then reads triangles that lie close
-// together in memory. Returns their boxes in that order.
-std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
-                                                    const std::vector<Box3>& boxes) {
-  const std::size_t n = boxes.size();
+// together in memory.
+void MeshIndex::read_triangles_by_cell(const Mesh& mesh) {
+  const std::size_t n = mesh.triangles.size();
   std::vector<std::uint64_t> cells(n);
   std::vector<std::uint32_t> order(n);
   for (std::size_t t = 0; t < n; ++t) {
-    const Vec3 lo = boxes[t].min;
+    const Vec3 lo = bounding_box(mesh.triangle(t)).min;
     const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
     const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
     const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
@@ -271,40 +271,47 @@ std::vector<Box3> MeshIndex::read_triangles_by_cell(const Mesh& mesh,
   }
   stable_radix_sort(cells, order, static_cast<unsigned>(std::bit_width(stats_.cells)));
   tris_.reserve(n);
-  std::vector<Box3> sorted_boxes(n);
   for (std::size_t s = 0; s < n; ++s) {
     const TriangleIndices& t = mesh.triangles[order[s]];
     tris_.push_back(make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2])));
-    sorted_boxes[s] = boxes[order[s]];
   }
   stats_.triangles = n;
-  return sorted_boxes;
 }
 
 // Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
 // counting sort by cell keeps that order within each cell.
-void MeshIndex::list_triangles_by_cell(const std::vector<Box3>& boxes) {
+void MeshIndex::list_triangles_by_cell() {
   // Cell numbers in 32 bits where the grid allows (any grid of the default options): pairs of
   // 8 bytes, not 16, half the memory to fault in and to read twice.
   if (stats_.cells <= std::numeric_limits<std::uint32_t>::max()) {
-    list_triangles_by_cell_as<std::uint32_t>(boxes);
+    list_triangles_by_cell_as<std::uint32_t>();
   } else {
-    list_triangles_by_cell_as<std::size_t>(boxes);
+    list_triangles_by_cell_as<std::size_t>();
   }
 }
 
 template <class Cell>
-void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
+void MeshIndex::list_triangles_by_cell_as() {
   const std::size_t cell_count = stats_.cells;
-  std::vector<std::pair<Cell, std::uint32_t>> pairs;  // (cell, triangle)
+  struct Pair {
+    Cell cell;
+    std::uint32_t triangle;
+  };
+  HugePageVector<Pair> pairs;  // trivial: resized without zeroing, every listed one written
   // About six cells a triangle where cells are about as big as triangles (the grid's aim); room
-  // for eight: pages reserved but never written cost nothing, a reallocation copies them all.
-  pairs.reserve(8 * boxes.size());
-  for (std::size_t t = 0; t < boxes.size(); ++t) {
-    const Box3& b = boxes[t];
+  // for eight to begin with. The pairs are written without a branch on the plane test (its
+  // answer is not predictable: a mispredicted branch a cell cost more than the test), each
+  // cell's pair stored and counted only where the plane does not separate.
+  pairs.resize(8 * tris_.size());
+  std::size_t listed = 0;
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    const Box3 b = bounding_box(Triangle3{tris_[t].a, tris_[t].b, tris_[t].c});
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
     const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
     const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);
+    const auto span = static_cast<std::size_t>(i1 - i0 + 1) *
+                      static_cast<std::size_t>(j1 - j0 + 1) * static_cast<std::size_t>(k1 - k0 + 1);
+    if (listed + span > pairs.size()) pairs.resize(std::max(2 * pairs.size(), listed + span));
     // A triangle whose box spans several cells is tested against each cell's box along its
     // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
@@ -312,17 +319,18 @@ void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
-          if (big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
-                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}})) {
-            continue;
-          }
           const std::size_t c = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
                                  static_cast<std::size_t>(j)) *
                                     static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i);
-          pairs.emplace_back(static_cast<Cell>(c), static_cast<std::uint32_t>(t));
+          pairs[listed] = {static_cast<Cell>(c), static_cast<std::uint32_t>(t)};
+          const bool separated =
+              big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
+                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}});
+          listed += separated ? 0 : 1;
         }
   }
+  pairs.resize(listed);
   // surface_ holds each cell's count first, then its surface cell number: no temporary array
   // of the grid's size (1.6 M cells for 100k triangles) to zero and fault in.
   state_.assign(cell_count, 0);
@@ -359,7 +367,7 @@ void MeshIndex::list_triangles_by_cell_as(const std::vector<Box3>& boxes) {
 // pass over the triangles finds each hit once (a perturbed line test for each row its box
 // spans), as (row, column): the empty cells left of `column` count it; rows without a hit keep
 // the zeros the listing left (count 0: outside by either rule).
-void MeshIndex::settle_empty_cells(const std::vector<Box3>& boxes) {
+void MeshIndex::settle_empty_cells() {
   std::vector<double> ys(static_cast<std::size_t>(ny_)), zs(static_cast<std::size_t>(nz_));
   for (int j = 0; j < ny_; ++j)
     ys[static_cast<std::size_t>(j)] = inner_point(y_.line(j), y_.line(j + 1));
@@ -371,10 +379,9 @@ void MeshIndex::settle_empty_cells(const std::vector<Box3>& boxes) {
     int sign;
   };
   std::vector<Hit> hits;
-  for (std::size_t t = 0; t < boxes.size(); ++t) {
-    const Tri& tri = tris_[t];
+  for (const Tri& tri : tris_) {
     if (tri.s == Sign::zero) continue;
-    const Box3& b = boxes[t];
+    const Box3 b = bounding_box(Triangle3{tri.a, tri.b, tri.c});
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
     const auto [j0, j1] = y_.cells_meeting(b.min.y, b.max.y);
     const auto [k0, k1] = z_.cells_meeting(b.min.z, b.max.z);

@@ -122,12 +122,12 @@ Result<MeshIndex> MeshIndexFile::read(index_bytes::Reader& r) {
   const auto regime = r.get<std::uint8_t>();
   const auto by_parity = r.get<std::uint8_t>();
   index.report_ = read_report(r);
-  index.tris_ = r.get_array<MeshIndex::Tri>();
+  index.tris_ = r.get_array<MeshIndex::Tri, HugePageAllocator<MeshIndex::Tri>>();
   const double accuracy = r.get_double();
   index.x_ = r.get_axis();
   index.y_ = r.get_axis();
   index.z_ = r.get_axis();
-  index.state_ = r.get_array<std::uint8_t>();
+  index.state_ = r.get_array<std::uint8_t, HugePageAllocator<std::uint8_t>>();
   const auto surface = r.get_view<std::uint32_t>();
   index.cell_start_ = r.get_array<std::uint32_t>();
   const auto refs = r.get_view<std::uint32_t>();

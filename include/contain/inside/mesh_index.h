@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "contain/core/huge_pages.h"
 #include "contain/core/location.h"
 #include "contain/core/parallel.h"
 #include "contain/inside/fast_winding_number.h"
@@ -173,12 +174,11 @@ class MeshIndex {
   // Construction, stage by stage (mesh_index.cpp).
   [[nodiscard]] bool prepare(const Mesh& mesh, const MeshIndexOptions& options);
   void read_triangles(const Mesh& mesh);
-  [[nodiscard]] std::vector<Box3> read_triangles_by_cell(const Mesh& mesh,
-                                                         const std::vector<Box3>& boxes);
-  void list_triangles_by_cell(const std::vector<Box3>& boxes);
+  void read_triangles_by_cell(const Mesh& mesh);
+  void list_triangles_by_cell();
   template <class Cell>
-  void list_triangles_by_cell_as(const std::vector<Box3>& boxes);
-  void settle_empty_cells(const std::vector<Box3>& boxes);
+  void list_triangles_by_cell_as();
+  void settle_empty_cells();
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
@@ -199,7 +199,7 @@ class MeshIndex {
   bool by_parity_ = false;  // closed_exact without a winding number: inside where the count is odd
   MeshReport report_;
   Box3 bounds_;
-  std::vector<Tri> tris_;
+  HugePageVector<Tri> tris_;  // huge pages: the big arrays are built in one pass each
   // Exact regime for few queries (no grid): the mesh itself, tris_ left empty (its records would
   // be four times the mesh's bytes, written for one pass over them).
   Mesh mesh_;
@@ -208,13 +208,13 @@ class MeshIndex {
   int nx_ = 0, ny_ = 0, nz_ = 0;  // their cell counts
   // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
   // most queries read stays small in cache).
-  std::vector<std::uint8_t> state_;
+  HugePageVector<std::uint8_t> state_;
   // Per cell: where state 2, its surface cell number k; in an empty cell, its signed crossing
   // count (the winding number), as the two's complement bits of an int32.
-  std::vector<std::uint32_t> surface_;
+  HugePageVector<std::uint32_t> surface_;
 
   std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
-  std::vector<CellRef> refs_;
+  HugePageVector<CellRef> refs_;
   // Winding regime.
   FastWindingNumber winding_;
   Stats stats_;

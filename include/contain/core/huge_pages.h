@@ -1,0 +1,85 @@
+#pragma once
+/// \file
+/// Large arrays in transparent huge pages where the system grants them on request (Linux with
+/// transparent_hugepage "madvise" or "always"): a 2 MB page is one page fault where 4 kB pages
+/// are 512, and for arrays of megabytes written once (a MeshIndex's cells and triangle lists)
+/// those faults and the kernel's bookkeeping behind them are a large part of the build.
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace contain {
+
+/// An allocator that places blocks of at least `huge_page_threshold` bytes on 2 MB boundaries,
+/// rounded up to whole 2 MB pages, and asks the system to back them with huge pages when first
+/// touched (a hint: where it is not granted the block is ordinary memory). Smaller blocks come
+/// from `std::allocator`. Stateless: all instances compare equal.
+///
+/// Elements made without arguments are default-initialized, not value-initialized: `resize(n)`
+/// of a vector of a trivial type leaves the new elements' values indeterminate, for a caller
+/// that writes every one of them next (a large array is not zeroed only to be overwritten).
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+  static constexpr std::size_t huge_page = std::size_t{1} << 21;
+  /// Below this, the slack of a 2 MB rounding is not worth it.
+  static constexpr std::size_t huge_page_threshold = 2 * huge_page;
+
+  HugePageAllocator() = default;
+  template <class U>
+  explicit(false) HugePageAllocator(const HugePageAllocator<U>& /*other*/) noexcept {}
+
+  [[nodiscard]] T* allocate(std::size_t n) {
+    if (n > max_size()) throw std::bad_array_new_length();
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < huge_page_threshold || alignof(T) > huge_page) {
+      return std::allocator<T>{}.allocate(n);
+    }
+    const std::size_t rounded = (bytes + huge_page - 1) & ~(huge_page - 1);
+    void* p = std::aligned_alloc(huge_page, rounded);
+    if (p == nullptr) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    (void)::madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, std::size_t n) noexcept {
+    if (n * sizeof(T) < huge_page_threshold || alignof(T) > huge_page) {
+      std::allocator<T>{}.deallocate(p, n);
+      return;
+    }
+    std::free(p);
+  }
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  [[nodiscard]] static constexpr std::size_t max_size() noexcept {
+    return (std::size_t{0} - huge_page) / sizeof(T);
+  }
+
+  template <class U>
+  friend bool operator==(const HugePageAllocator& /*a*/, const HugePageAllocator<U>& /*b*/) {
+    return true;
+  }
+};
+
+/// A vector whose large buffers sit in huge pages (HugePageAllocator).
+template <class T>
+using HugePageVector = std::vector<T, HugePageAllocator<T>>;
+
+}  // namespace contain
