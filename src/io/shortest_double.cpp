@@ -15,6 +15,7 @@
 
 #include "io/shortest_double.h"
 
+#include <array>
 #include <bit>
 #include <cstring>
 
@@ -27,96 +28,40 @@ __extension__ typedef unsigned __int128 UInt128;
 
 constexpr std::uint64_t kHiddenBit = std::uint64_t{1} << 52;
 
-// floor(g * cp / 2^128), its lowest bit set when the first 64 bits of its fraction are not
-// all zero (round to odd). The last 64 bits of g * cp are left out: g's excess
-// over 10^-k (under 1) times cp (under 2^61) lies in them, so an exact 4 * v * 10^-k (a tie
-// between two decimals) still gives an even result (Giulietti's rop).
-std::uint64_t round_to_odd(const Pow10Bits& g, std::uint64_t cp) {
+// A 192-bit product: bits [0, 128) and [128, 192).
+struct Wide {
+  UInt128 low;
+  std::uint64_t high;
+};
+
+Wide times(const Pow10Bits& g, std::uint64_t cp) {
   const UInt128 low = static_cast<UInt128>(g.low) * cp;
-  const UInt128 middle = static_cast<UInt128>(g.high) * cp + (low >> 64);
-  const auto whole = static_cast<std::uint64_t>(middle >> 64);
-  const bool inexact = static_cast<std::uint64_t>(middle) != 0;
-  return whole | static_cast<std::uint64_t>(inexact);
+  const UInt128 middle = static_cast<UInt128>(g.high) * cp + (low >> 64);  // < 2^123
+  return {(middle << 64) | static_cast<std::uint64_t>(low),
+          static_cast<std::uint64_t>(middle >> 64)};
 }
 
-ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
-  // A shortest decimal from the coarse step (a multiple of 10^(k+1)) has at most 16 zeros.
-  if (digits % 100000000 == 0) {
-    digits /= 100000000;
-    exponent += 8;
-  }
-  if (digits % 10000 == 0) {
-    digits /= 10000;
-    exponent += 4;
-  }
-  if (digits % 100 == 0) {
-    digits /= 100;
-    exponent += 2;
-  }
-  if (digits % 10 == 0) {
-    digits /= 10;
-    exponent += 1;
-  }
-  return {digits, exponent};
+// g * 2^shift, shift in [3, 7].
+Wide shifted(const Pow10Bits& g, int shift) {
+  const UInt128 value = (static_cast<UInt128>(g.high) << 64) | g.low;
+  return {value << shift, g.high >> (64 - shift)};
 }
 
-}  // namespace
-
-ShortestDecimal shortest_decimal(std::uint64_t c, int q) {
-  // The gap below v is half the gap above only at a power of two that is a normal double
-  // (the smallest normal has a subnormal below it at the same spacing).
-  const bool regular = c != kHiddenBit || q == -1074;
-  const std::uint64_t open = c & 1;  // odd c: the ends round to the neighbours, not to v
-  const std::uint64_t cb = c << 2;
-  const std::uint64_t cbl = regular ? cb - 2 : cb - 1;
-  const std::uint64_t cbr = cb + 2;
-  const int k = regular ? floor_log10_pow2(q) : floor_log10_three_quarters_pow2(q);
-  // 10^-k = g * 2^(floor_log2_pow10(-k) - 125); the products are taken over 2^128, so the
-  // significands are shifted by h (3 to 6: cb << h < 2^61).
-  const int h = q + floor_log2_pow10(-k) + 3;
-  const Pow10Bits& g = kPow10Table[static_cast<std::size_t>(-k - kPow10MinExponent)];
-  const std::uint64_t vb = round_to_odd(g, cb << h);
-  const std::uint64_t vbl = round_to_odd(g, cbl << h);
-  const std::uint64_t vbr = round_to_odd(g, cbr << h);
-
-  const std::uint64_t s = vb >> 2;
-  // The multiples of 10^(k+1) around v: the interval (narrower than 10^(k+1)) holds at most one.
-  const std::uint64_t sp10 = s / 10 * 10;
-  const std::uint64_t tp10 = sp10 + 10;
-  const bool sp10_in = vbl + open <= sp10 << 2;
-  const bool tp10_in = (tp10 << 2) + open <= vbr;
-  if (sp10_in != tp10_in) return without_trailing_zeros((sp10_in ? sp10 : tp10) / 10, k + 1);
-
-  // Neither: s or s + 1 (the interval is at least 10^k wide), neither a multiple of 10.
-  const std::uint64_t t = s + 1;
-  const bool s_in = vbl + open <= s << 2;
-  const bool t_in = (t << 2) + open <= vbr;
-  if (s_in != t_in) return {s_in ? s : t, k};
-  // Both: the closer to v; on a tie (vb exactly at the midpoint 4s + 2) the even one.
-  const std::uint64_t midpoint = (s << 2) + 2;
-  const bool take_s = vb < midpoint || (vb == midpoint && (s & 1) == 0);
-  return {take_s ? s : t, k};
+Wide plus(const Wide& a, const Wide& b) {
+  const UInt128 low = a.low + b.low;
+  return {low, a.high + b.high + static_cast<std::uint64_t>(low < a.low)};
 }
 
-namespace {
-
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-void write_pair(char* at, std::uint32_t pair) {
-  std::memcpy(at, kDigitPairs + 2 * pair, 2);
+Wide minus(const Wide& a, const Wide& b) {
+  return {a.low - b.low, a.high - b.high - static_cast<std::uint64_t>(a.low < b.low)};
 }
 
-// Eight digits of `n` < 10^8, leading zeros included.
-void write_eight(char* at, std::uint32_t n) {
-  const std::uint32_t high = n / 10000;
-  const std::uint32_t low = n % 10000;
-  write_pair(at, high / 100);
-  write_pair(at + 2, high % 100);
-  write_pair(at + 4, low / 100);
-  write_pair(at + 6, low % 100);
+// floor(x / 2^128), its lowest bit set when bits [64, 128) of x are not all zero (round to
+// odd). Bits [0, 64) are left out: g's excess over 10^-k (under 1) times the significand
+// (under 2^61) lies in them, so an exact 4 * v * 10^-k (a tie between two decimals) still gives
+// an even result (Giulietti's rop).
+std::uint64_t round_to_odd(const Wide& x) {
+  return x.high | static_cast<std::uint64_t>(static_cast<std::uint64_t>(x.low >> 64) != 0);
 }
 
 constexpr std::uint64_t kPowersOfTen[20] = {1ULL,
@@ -147,25 +92,164 @@ int decimal_length(std::uint64_t n) {
   return guess + static_cast<int>(n >= kPowersOfTen[guess]);
 }
 
-// The `length` digits of n (its decimal length) ending at at + length.
-void write_digits(char* at, std::uint64_t n, int length) {
-  char* end = at + length;
-  while (n >= 100000000) {
-    end -= 8;
-    write_eight(end, static_cast<std::uint32_t>(n % 100000000));
-    n /= 100000000;
+ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
+  // A shortest decimal from the coarse step (a multiple of 10^(k+1)) has at most 16 zeros.
+  if (digits % 100000000 == 0) {
+    digits /= 100000000;
+    exponent += 8;
   }
-  auto rest = static_cast<std::uint32_t>(n);
-  while (rest >= 100) {
-    end -= 2;
-    write_pair(end, rest % 100);
-    rest /= 100;
+  if (digits % 10000 == 0) {
+    digits /= 10000;
+    exponent += 4;
   }
-  if (rest >= 10) {
-    write_pair(end - 2, rest);
+  if (digits % 100 == 0) {
+    digits /= 100;
+    exponent += 2;
+  }
+  if (digits % 10 == 0) {
+    digits /= 10;
+    exponent += 1;
+  }
+  return {digits, exponent, decimal_length(digits)};
+}
+
+// shortest_decimal, inlined into the writer.
+[[gnu::always_inline]] inline ShortestDecimal decimal_of(std::uint64_t c, int q) {
+  // The gap below v is half the gap above only at a power of two that is a normal double
+  // (the smallest normal has a subnormal below it at the same spacing).
+  const bool regular = c != kHiddenBit || q == -1074;
+  const std::uint64_t open = c & 1;  // odd c: the ends round to the neighbours, not to v
+  const std::uint64_t cb = c << 2;
+  const int k = regular ? floor_log10_pow2(q) : floor_log10_three_quarters_pow2(q);
+  // 10^-k = g * 2^(floor_log2_pow10(-k) - 125); the products are taken over 2^128, so the
+  // significands are shifted by h (3 to 6: cb << h < 2^61).
+  const int h = q + floor_log2_pow10(-k) + 3;
+  const Pow10Bits& g = kPow10Table[static_cast<std::size_t>(-k - kPow10MinExponent)];
+  // One product: the ends are g * cb * 2^h -+ g * 2 * 2^h (g * 2^h below a power of two).
+  const Wide middle = times(g, cb << h);
+  const Wide half_width = shifted(g, h + 1);
+  const std::uint64_t vb = round_to_odd(middle);
+  const std::uint64_t vbl = round_to_odd(minus(middle, regular ? half_width : shifted(g, h)));
+  const std::uint64_t vbr = round_to_odd(plus(middle, half_width));
+
+  const std::uint64_t s = vb >> 2;
+  // The multiples of 10^(k+1) around v: the interval (narrower than 10^(k+1)) holds at most one.
+  // If it holds one, that is the answer (coarse); else s or s + 1 (fine; the interval is at
+  // least 10^k wide, so one is in, and neither is a multiple of 10). Both answers are computed
+  // and one taken without a branch: the coarse one is the answer for about a third of all
+  // doubles, a branch that would often be mispredicted.
+  const std::uint64_t s_tenth = s / 10;
+  const bool sp10_in = vbl + open <= s_tenth * 40;
+  const bool tp10_in = (s_tenth + 1) * 40 + open <= vbr;
+  const bool coarse = sp10_in != tp10_in;
+  const std::uint64_t coarse_digits = s_tenth + static_cast<std::uint64_t>(!sp10_in);
+
+  const bool s_in = vbl + open <= s << 2;
+  const bool t_in = ((s + 1) << 2) + open <= vbr;
+  // Both in: the closer to v; on a tie (vb exactly at the midpoint 4s + 2) the even one.
+  const std::uint64_t midpoint = (s << 2) + 2;
+  const bool s_closer = (vb < midpoint) | ((vb == midpoint) & ((s & 1) == 0));
+  const bool take_s = s_in & (!t_in | s_closer);
+  const std::uint64_t fine_digits = s + static_cast<std::uint64_t>(!take_s);
+
+  const std::uint64_t digits = coarse ? coarse_digits : fine_digits;
+  const int exponent = k + static_cast<int>(coarse);
+  // Rare (a coarse answer ending in 0): drop the zeros.
+  if (coarse && coarse_digits % 10 == 0) return without_trailing_zeros(coarse_digits, k + 1);
+  // A normal double's s is in [2^52, 10 * 2^53): 16 or 17 digits, one fewer for the coarse
+  // answer (which is s / 10 or s / 10 + 1, the latter a power of ten only with a zero).
+  constexpr std::uint64_t e16 = 10000000000000000;
+  const int length = c >= kHiddenBit ? 16 + static_cast<int>(s >= e16) - static_cast<int>(coarse)
+                                     : decimal_length(digits);
+  return {digits, exponent, length};
+}
+
+}  // namespace
+
+ShortestDecimal shortest_decimal(std::uint64_t c, int q) {
+  return decimal_of(c, q);
+}
+
+namespace {
+
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+[[gnu::always_inline]] inline void write_pair(char* at, std::uint32_t pair) {
+  std::memcpy(at, kDigitPairs + 2 * pair, 2);
+}
+
+// The eight digits of `n` < 10^8 (leading zeros included) as the bytes of a little-endian
+// word, first digit lowest: two four-digit halves in 32-bit lanes, each split into pairs in
+// 16-bit lanes, each pair into digits in bytes, with multiplications by reciprocals exact for
+// those ranges (x * 10486 >> 20 is x / 100 for x < 10^4, x * 103 >> 10 is x / 10 for x < 100).
+[[gnu::always_inline]] inline std::uint64_t eight_digit_bytes(std::uint32_t n) {
+  const std::uint64_t halves = (n / 10000) | (static_cast<std::uint64_t>(n % 10000) << 32);
+  const std::uint64_t hundreds = ((halves * 10486) >> 20) & 0x0000007f0000007fULL;
+  const std::uint64_t pairs = hundreds | ((halves - hundreds * 100) << 16);
+  const std::uint64_t tens = ((pairs * 103) >> 10) & 0x000f000f000f000fULL;
+  const std::uint64_t digits = tens | ((pairs - tens * 10) << 8);
+  return digits + 0x3030303030303030ULL;
+}
+
+[[gnu::always_inline]] inline void write_eight(char* at, std::uint32_t n) {
+  if constexpr (std::endian::native == std::endian::little) {
+    const std::uint64_t bytes = eight_digit_bytes(n);
+    std::memcpy(at, &bytes, 8);
   } else {
-    end[-1] = static_cast<char>('0' + rest);
+    const std::uint32_t high = n / 10000;
+    const std::uint32_t low = n % 10000;
+    write_pair(at, high / 100);
+    write_pair(at + 2, high % 100);
+    write_pair(at + 4, low / 100);
+    write_pair(at + 6, low % 100);
   }
+}
+
+// The last `length` (1 to 8) digits of `n` < 10^length at `at`, and scratch up to at + 8.
+[[gnu::always_inline]] inline void write_up_to_eight(char* at, std::uint32_t n, int length) {
+  if constexpr (std::endian::native == std::endian::little) {
+    // The leading zeros are the low bytes: shift them out.
+    const std::uint64_t bytes = eight_digit_bytes(n) >> (8 * (8 - length));
+    std::memcpy(at, &bytes, 8);
+  } else {
+    std::array<char, 8> all{};
+    write_eight(all.data(), n);
+    std::memcpy(at, all.data() + 8 - length, static_cast<std::size_t>(length));
+  }
+}
+
+// The `length` digits of n (its decimal length, at most 20) at `at`, and scratch up to
+// at + max(length, 8).
+[[gnu::always_inline]] inline void write_digits(char* at, std::uint64_t n, int length) {
+  constexpr std::uint64_t e8 = 100000000;
+  if (length <= 8) {
+    write_up_to_eight(at, static_cast<std::uint32_t>(n), length);
+    return;
+  }
+  // The last 16 digits as two words of eight, the first (one digit for most doubles) apart.
+  const std::uint64_t head = n / (e8 * e8);
+  const std::uint64_t rest = n % (e8 * e8);
+  if (length < 16) {
+    // The head is zero: the first word has the leading digits.
+    write_up_to_eight(at, static_cast<std::uint32_t>(rest / e8), length - 8);
+    write_eight(at + length - 8, static_cast<std::uint32_t>(rest % e8));
+    return;
+  }
+  if (length <= 17) {
+    // 16 or 17 digits, about as likely as each other: the head digit (0 for 16 digits) written
+    // first and overwritten by the rest when there are 16, without a branch.
+    *at = static_cast<char>('0' + head);
+    char* rest_at = at + (length - 16);
+    write_eight(rest_at, static_cast<std::uint32_t>(rest / e8));
+    write_eight(rest_at + 8, static_cast<std::uint32_t>(rest % e8));
+    return;
+  }
+  write_up_to_eight(at, static_cast<std::uint32_t>(head), length - 16);
+  write_eight(at + length - 16, static_cast<std::uint32_t>(rest / e8));
+  write_eight(at + length - 8, static_cast<std::uint32_t>(rest % e8));
 }
 
 char* write_integer(char* at, std::uint64_t n) {
@@ -223,8 +307,8 @@ char* write_shortest_double(char* at, double value) {
   }
   const std::uint64_t c = biased_exponent == 0 ? fraction : fraction | kHiddenBit;
   const int q = biased_exponent == 0 ? -1074 : biased_exponent - 1075;
-  const ShortestDecimal decimal = shortest_decimal(c, q);
-  const int length = decimal_length(decimal.digits);
+  const ShortestDecimal decimal = decimal_of(c, q);
+  const int length = decimal.length;
   const int exponent = decimal.exponent;
 
   // libstdc++'s choice: fixed notation unless scientific is shorter, where scientific writes
@@ -244,23 +328,24 @@ char* write_shortest_double(char* at, double value) {
     // double and its own shortest form), else the exact value, whose last digits may differ.
     if (length + exponent <= 15) {
       write_digits(at, decimal.digits, length);
-      std::memset(at + length, '0', static_cast<std::size_t>(exponent));
+      std::memcpy(at + length, "00000000", 8);  // exponent <= 5 of them count
       return at + length + exponent;
     }
     return write_whole(at, c, q);
   }
   const int whole_digits = length + exponent;
   if (whole_digits <= 0) {
-    // 0.000ddd
-    at[0] = '0';
-    at[1] = '.';
-    std::memset(at + 2, '0', static_cast<std::size_t>(-whole_digits));
+    // 0.000ddd: at most 3 zeros after the point (-whole_digits), then the digits over the rest.
+    std::memcpy(at, "0.000", 5);
     write_digits(at + 2 - whole_digits, decimal.digits, length);
     return at + 2 - exponent;
   }
-  // ddd.ddd: the digits one place right, then the whole part moved left over the point's place.
-  write_digits(at + 1, decimal.digits, length);
-  std::memmove(at, at + 1, static_cast<std::size_t>(whole_digits));
+  // ddd.ddd: the fraction (at most 16 digits) moved one place right for the point. Fixed-size
+  // copies, inlined, where a copy of the exact length would call the C library.
+  write_digits(at, decimal.digits, length);
+  std::array<char, 16> fraction_digits{};
+  std::memcpy(fraction_digits.data(), at + whole_digits, 16);
+  std::memcpy(at + whole_digits + 1, fraction_digits.data(), 16);
   at[whole_digits] = '.';
   return at + length + 1;
 }

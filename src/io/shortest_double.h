@@ -15,10 +15,12 @@ namespace contain::io::detail {
 
 /// The shortest decimal `digits` * 10^`exponent` in the rounding interval of a positive finite
 /// double, the closest to it among those of that length (the even one on a tie): Ryu's,
-/// Dragonbox's and Schubfach's common answer. `digits` has no trailing zero.
+/// Dragonbox's and Schubfach's common answer. `digits` has no trailing zero; `length` is its
+/// number of decimal digits.
 struct ShortestDecimal {
   std::uint64_t digits;
   int exponent;
+  int length;
 };
 
 /// The shortest decimal of the double c * 2^q, c in [1, 2^53), q in [-1074, 971] (a positive
@@ -40,9 +42,12 @@ struct ShortestDecimal {
   return (e * 1741647) >> 19;
 }
 
-/// Writes `value` at `at` as std::to_chars(at, at + 32, value) does (room for 32 characters
-/// needed: the longest form, "-2.2250738585072014e-308" or a 22-digit whole number, is 24);
-/// returns the end of what was written.
+/// Room the writer needs at `at`: the longest form, "-2.2250738585072014e-308" or a sign and
+/// 22 whole digits, is 24 characters; the rest is scratch for fixed-size (inlined) copies.
+inline constexpr int kShortestDoubleRoom = 40;
+
+/// Writes `value` at `at` (room for kShortestDoubleRoom characters) as std::to_chars(first,
+/// last, value) does; returns the end of the text. Bytes past it up to the room may change.
 char* write_shortest_double(char* at, double value);
 
 }  // namespace contain::io::detail

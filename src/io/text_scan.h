@@ -2,7 +2,7 @@
 /// \file
 /// Private helpers shared by the readers and writers of contain::io: whole-file reading, number
 /// parsing with std::from_chars (correctly rounded, NaN/Inf rejected), shortest round-trip
-/// formatting with std::to_chars, and errors that name the source and line.
+/// formatting as std::to_chars writes it, and errors that name the source and line.
 
 #include <cstddef>
 #include <cstdint>
@@ -86,12 +86,12 @@ enum class NumberStatus : std::uint8_t {
 /// here or it does not fit in int64.
 [[nodiscard]] bool parse_int64(const char*& p, const char* end, std::int64_t& out);
 
-/// The most characters the shortest form of a double takes (sign, 17 digits, point, "e-308"),
-/// with room to spare.
-inline constexpr std::size_t kMaxDoubleChars = 32;
+/// Room for the shortest form of a double (at most 24 characters: sign, 17 digits, point,
+/// "e-308") and the scratch of its writer (io/shortest_double.h).
+inline constexpr std::size_t kMaxDoubleChars = 40;
 
-/// Shortest decimal that reads back as exactly `value` (std::to_chars), written at `at` (room
-/// for kMaxDoubleChars): the end of what was written.
+/// Shortest decimal that reads back as exactly `value`, the bytes of std::to_chars, written at
+/// `at` (room for kMaxDoubleChars): the end of what was written.
 char* write_double(char* at, double value);
 
 /// Shortest decimal that reads back as exactly `value` (std::to_chars), appended to `out`.
