@@ -132,8 +132,9 @@ std::size_t point_count(std::span<const clip::Section> sections) {
 std::string format_sections(std::span<const clip::Section> sections, std::size_t first,
                             const SliceCliOptions& o) {
   std::string text;
-  // About 40 characters a point: the text grows without copying itself over and over.
-  text.reserve(40 * point_count(sections) + 96 * sections.size());
+  // About 42 characters a point in WKT (two shortest doubles of 17-20 characters, a space and a
+  // comma): room for 48, so that the text is never copied to a larger buffer.
+  text.reserve(48 * point_count(sections) + 96 * sections.size());
   const auto out = std::back_inserter(text);
   if (o.json) {
     for (const clip::Section& s : sections) {

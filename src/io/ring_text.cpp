@@ -34,7 +34,7 @@ void append_ring_text(std::string& out, const Ring& ring, RingSyntax syntax) {
       at = write_double(at, q.y);
       *at++ = ']';
     }
-    out.append(point.data(), at);
+    out.append(point.data(), static_cast<std::size_t>(at - point.data()));
   }
   out += wkt ? ')' : ']';
 }
