@@ -131,8 +131,9 @@ bool off_scan_line_rest(const char*& p, const char* end) {
 // the end; false otherwise.
 bool off_scan_index(const char*& p, const char* end, std::int64_t& out) {
   const char* q = p;
+  const char* const limit = p + std::min<std::ptrdiff_t>(10, end - p);  // one test a digit
   std::int64_t v = 0;
-  while (q != end && q - p < 10 && *q >= '0' && *q <= '9')
+  while (q != limit && static_cast<unsigned char>(*q - '0') <= 9)
     v = 10 * v + (*q++ - '0');
   if (q == p || q - p > 9 || (q != end && !is_space(*q))) return false;
   p = q;
