@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "io/mesh_formats.h"
+#include "io/point_lines.h"
 #include "io/text_scan.h"
 
 namespace contain::io::detail {
@@ -99,67 +100,151 @@ Status skip_extra_numbers(Lines& in, const std::string& source) {
   return Ok{};
 }
 
-// The common OFF vertex line, "x y z" and nothing else, read without building a Status a number;
-// false (in.p unchanged) for anything else, which the general reading then reports or accepts.
-bool plain_vertex_line(Lines& in, Vec3& out) {
-  const char* p = in.p;
-  double xyz[3];
-  for (double& c : xyz) {
-    skip_blanks(p, in.eol);
-    if (parse_double(p, in.eol, c) != NumberStatus::ok) return false;
-    if (p != in.eol && !is_blank(*p)) return false;
+// The one-pass OFF scanners: the fast way of the vertex and face blocks, in the manner of
+// point_lines.h. They split the lines and scan the values in one walk (no line-end search before
+// each line), writing straight into the destination arrays, and take only lines the general
+// reading below accepts with the same values. At the first line they cannot take (a bad or
+// non-finite number, a comment glued to a value, a signed index, an index out of range...) they
+// stop at its start, and the general reading takes that one line, wording any error with its line.
+
+// After the values of a line: blanks, then the line end, a `#` comment or the end of the text;
+// or more finite numbers (colours, normals), which both readers skip. False: decline the line.
+bool off_scan_line_rest(const char*& p, const char* end) {
+  for (;;) {
+    const char* after = p;
+    skip_blanks(p, end);
+    if (p == end) return true;
+    if (*p == '\n') {
+      ++p;
+      return true;
+    }
+    if (*p == '#') {
+      skip_past_line(p, end);
+      return true;
+    }
+    double ignored = 0.0;
+    if (p == after || !scan_finite_number(p, end, ignored)) return false;
   }
-  skip_blanks(p, in.eol);
-  if (p != in.eol) return false;
-  in.p = p;
-  out = {xyz[0], xyz[1], xyz[2]};
-  return true;
 }
 
-// Plain decimal digits (no sign, at most 9: below 2^31) at p, ending at a blank or the line
-// end; false (p unchanged) otherwise.
-bool plain_index(const char*& p, const char* eol, std::int64_t& out) {
+// Plain decimal digits (no sign, at most 9: below 2^31) at p, followed by a blank, a newline or
+// the end; false otherwise.
+bool off_scan_index(const char*& p, const char* end, std::int64_t& out) {
   const char* q = p;
+  const char* const limit = p + std::min<std::ptrdiff_t>(10, end - p);  // one test a digit
   std::int64_t v = 0;
-  while (q != eol && q - p < 10 && *q >= '0' && *q <= '9')
+  while (q != limit && static_cast<unsigned char>(*q - '0') <= 9)
     v = 10 * v + (*q++ - '0');
-  if (q == p || q - p > 9 || (q != eol && !is_blank(*q))) return false;
+  if (q == p || q - p > 9 || (q != end && !is_space(*q))) return false;
   p = q;
   out = v;
   return true;
 }
 
-// The common OFF face line, "3 a b c" with indices in [0, nv) and nothing else, likewise.
-bool plain_triangle_line(Lines& in, std::int64_t nv, TriangleIndices& out) {
-  const char* p = in.p;
-  std::int64_t values[4];
-  for (std::int64_t& v : values) {
-    skip_blanks(p, in.eol);
-    if (!plain_index(p, in.eol, v)) return false;
+// Skips blank and comment lines from in.next; false at the end of the text. `line_start` is left
+// at the content line's start (for a decline), `p` at its first non-blank character.
+bool off_scan_to_content(Lines& in, const char*& line_start, const char*& p) {
+  p = in.next;
+  while (p != in.end) {
+    line_start = p;
+    ++in.line;
+    skip_blanks(p, in.end);
+    if (p == in.end) return false;
+    if (*p == '\n') {
+      ++p;
+      continue;
+    }
+    if (*p == '#') {
+      skip_past_line(p, in.end);
+      continue;
+    }
+    return true;
   }
-  skip_blanks(p, in.eol);
-  if (p != in.eol || values[0] != 3) return false;
-  for (int k = 1; k < 4; ++k)
-    if (values[k] >= nv) return false;
-  in.p = p;
-  out = {static_cast<std::int32_t>(values[1]), static_cast<std::int32_t>(values[2]),
-         static_cast<std::int32_t>(values[3])};
-  return true;
+  return false;
+}
+
+// Takes OFF vertex lines from in.next while it can, up to `wanted` vertices; leaves `in` before
+// the first line it did not take (or at the end of the text).
+void scan_off_vertex_lines(Lines& in, std::int64_t wanted, std::vector<Vec3>& vertices) {
+  const char* p = nullptr;
+  const char* line_start = nullptr;
+  for (std::int64_t i = 0; i < wanted; ++i) {
+    if (!off_scan_to_content(in, line_start, p)) {
+      in.next = in.end;  // only blank lines remain: the general reading reports the short file
+      return;
+    }
+    double xyz[3];
+    bool taken = scan_finite_number(p, in.end, xyz[0]);
+    for (int k = 1; taken && k < 3; ++k) {
+      const char* after = p;
+      skip_blanks(p, in.end);
+      taken = p != after && scan_finite_number(p, in.end, xyz[k]);
+    }
+    if (!taken || !off_scan_line_rest(p, in.end)) {
+      in.next = line_start;
+      in.line -= 1;  // the general reading counts this line again
+      return;
+    }
+    vertices.push_back({xyz[0], xyz[1], xyz[2]});
+    in.next = p;
+  }
+}
+
+// Takes OFF face lines ("n i0 .. in-1", n >= 3, indices in [0, nv), an optional colour) from
+// in.next while it can, up to `wanted` faces, appending their fans; leaves `in` before the first
+// line it did not take (or at the end of the text).
+void scan_off_face_lines(Lines& in, std::int64_t wanted, std::int64_t nv,
+                         std::vector<TriangleIndices>& triangles, std::int64_t& faces) {
+  const char* p = nullptr;
+  const char* line_start = nullptr;
+  for (std::int64_t f = 0; f < wanted; ++f) {
+    if (!off_scan_to_content(in, line_start, p)) {
+      in.next = in.end;
+      return;
+    }
+    const std::size_t triangles_before = triangles.size();
+    std::int64_t n = 0;
+    std::int64_t first = 0;
+    std::int64_t previous = 0;
+    bool taken = off_scan_index(p, in.end, n) && n >= 3;
+    for (std::int64_t k = 0; taken && k < n; ++k) {
+      skip_blanks(p, in.end);
+      std::int64_t index = 0;
+      taken = off_scan_index(p, in.end, index) && index < nv;
+      if (!taken) break;
+      if (k == 0) {
+        first = index;
+      } else if (k >= 2) {
+        triangles.push_back({static_cast<std::int32_t>(first), static_cast<std::int32_t>(previous),
+                             static_cast<std::int32_t>(index)});
+      }
+      previous = index;
+    }
+    if (!taken || !off_scan_line_rest(p, in.end)) {
+      triangles.resize(triangles_before);
+      in.next = line_start;
+      in.line -= 1;  // the general reading counts this line again
+      return;
+    }
+    ++faces;
+    in.next = p;
+  }
 }
 
 // OFF's vertex section: nv lines of three coordinates (and optional colours or normals).
 Status read_off_vertices(Lines& in, std::int64_t nv, std::vector<Vec3>& vertices,
                          const std::string& source) {
-  for (std::int64_t i = 0; i < nv; ++i) {
+  for (auto i = static_cast<std::int64_t>(vertices.size()); i < nv;
+       i = static_cast<std::int64_t>(vertices.size())) {
+    scan_off_vertex_lines(in, nv - i, vertices);
+    i = static_cast<std::int64_t>(vertices.size());
+    if (i == nv) break;
+    // The line the scanner declined (or the end of the file): the general reading words it.
     if (!in.advance_to_content()) {
       return make_error(ErrorKind::parse,
                         "the file ends after " + std::to_string(i) + " of the " +
                             std::to_string(nv) + " vertices the header announces",
                         source, in.line);
-    }
-    if (Vec3 v; plain_vertex_line(in, v)) {
-      vertices.push_back(v);
-      continue;
     }
     std::array<double, 3> xyz{};
     for (double& c : xyz) {
@@ -362,17 +447,16 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   if (auto s = read_off_vertices(in, nv, vertices, source); !s) return s.error();
   MeshInfo info{.format = MeshFormat::off};
   std::vector<std::int32_t> corners;
-  for (std::int64_t f = 0; f < nf; ++f) {
+  for (std::int64_t f = 0; f < nf; f = info.faces) {
+    scan_off_face_lines(in, nf - f, nv, triangles, info.faces);
+    f = info.faces;
+    if (f == nf) break;
+    // The line the scanner declined (or the end of the file): the general reading words it.
     if (!in.advance_to_content()) {
       return make_error(ErrorKind::parse,
                         "the file ends after " + std::to_string(f) + " of the " +
                             std::to_string(nf) + " faces the header announces",
                         source, in.line);
-    }
-    if (TriangleIndices t; plain_triangle_line(in, nv, t)) {
-      triangles.push_back(t);
-      ++info.faces;
-      continue;
     }
     std::int64_t n = 0;
     if (auto s = read_integer(in, n, source, "the vertex count of a face"); !s) return s.error();

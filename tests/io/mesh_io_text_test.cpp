@@ -138,6 +138,71 @@ TEST(OffReader, RejectsMalformedFilesNamingTheKindAndLine) {
                 });
 }
 
+// The vertex and face blocks are read by a one-pass scanner that hands the lines it cannot take
+// to the general reading: decorated lines, whichever of the two takes them, read as plain ones.
+TEST(OffReader, OnePassScannerAndGeneralReadingAgreeOnDecoratedLines) {
+  const char* plain = "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  auto expected = off(plain);
+  ASSERT_TRUE(expected.ok()) << expected.error().what();
+  for (const char* text : {
+           "OFF\r\n4 2 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n3 0 1 2\r\n3 0 2 3\r\n",
+           "OFF\n4 2 0\n0\t0\t0\n1 0 0\n1 1 0\n0 1 0\n3\t0 1\t2\n3 0 2 3\n",
+           "OFF\n4 2 0\n0 0 0#c\n# whole line\n1 0 0\n1 1 0 # c\n\n\n0 1 0\n3 0 1 2#x\n3 0 2 3 # y",
+           "OFF\n4 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 nan\n0 1 0 1\n3 0 1 2 0.5 0.5 0.5\n"
+           "3 0 2 3 1 1 1\n",
+           "OFF\n4 2 0\n+0 0 0\n1 +0 0\n1 1e0 .0\n-0 1 0\n3 00 01 2\n3 0 2 3",
+           "OFF 4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n\n# the end\n",
+           "OFF\n4 2 0\n0 0 0\r\n1\v0\f0 \r\n1 1 0\n0 1 0\n3 0 1 2\r\n3 0 2 3\n",
+       }) {
+    auto r = off(text);
+    ASSERT_TRUE(r.ok()) << text << "\n" << r.error().what();
+    EXPECT_EQ(r->mesh.vertices, expected->mesh.vertices) << text;
+    EXPECT_EQ(r->mesh.triangles, expected->mesh.triangles) << text;
+    EXPECT_EQ(r->info.faces, 2) << text;
+  }
+  auto quad = off("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 0.5 0.5 0.5\n");
+  ASSERT_TRUE(quad.ok()) << quad.error().what();
+  EXPECT_EQ(quad->mesh.triangles, expected->mesh.triangles);
+  EXPECT_EQ(quad->info.faces, 1);
+}
+
+// A line the scanner declines after lines it took is worded by the general reading, with its line.
+TEST(OffReader, ErrorsAfterScannedLinesKeepTheirKindAndLine) {
+  const std::string head = "OFF\n4 2 0\n0 0 0\n1 0 0\n";
+  const std::string v34 = "1 1 0\n0 1 0\n";
+  const std::string f1 = "3 0 1 2\n";
+  const std::string texts[] = {
+      head + "1 nan 0\n0 1 0\n" + f1 + "3 0 2 3\n",
+      head + "1 1e400 0\n0 1 0\n" + f1 + "3 0 2 3\n",
+      head + "1 1 0x\n0 1 0\n" + f1 + "3 0 2 3\n",
+      head + "1,1,0\n0 1 0\n" + f1 + "3 0 2 3\n",
+      head + v34 + f1 + "3 0 2 4\n",
+      head + v34 + f1 + "3 0 -2 3\n",
+      head + v34 + f1 + "3 0 2 99999999999\n",
+      head + v34 + f1 + "4 0 2 3\n",
+      head + v34 + f1 + "2 0 2\n",
+      head + v34 + f1 + "3 0 2 3 red\n",
+      head + v34 + f1 + "3 0 2 3\nfoo\n",
+      head + v34 + f1 + "\n\n",
+      "OFF\n5 2 0\n0 0 0\n1 0 0\n" + v34 + f1 + "3 0 2 3\n",
+  };
+  const BadMesh expected[] = {
+      {nullptr, ErrorKind::invalid_value, 5}, {nullptr, ErrorKind::invalid_value, 5},
+      {nullptr, ErrorKind::parse, 5},         {nullptr, ErrorKind::parse, 5},
+      {nullptr, ErrorKind::invalid_value, 8}, {nullptr, ErrorKind::invalid_value, 8},
+      {nullptr, ErrorKind::invalid_value, 8}, {nullptr, ErrorKind::parse, 8},
+      {nullptr, ErrorKind::degenerate, 8},    {nullptr, ErrorKind::parse, 8},
+      {nullptr, ErrorKind::parse, 9},         {nullptr, ErrorKind::parse, 9},
+      {nullptr, ErrorKind::parse, 8},
+  };
+  for (std::size_t i = 0; i < std::size(texts); ++i) {
+    auto r = off(texts[i]);
+    ASSERT_FALSE(r.ok()) << texts[i];
+    EXPECT_EQ(r.error().kind, expected[i].kind) << texts[i] << "\n" << r.error().what();
+    EXPECT_EQ(r.error().line, expected[i].line) << texts[i] << "\n" << r.error().what();
+  }
+}
+
 TEST(OffReader, AHugeCountInTheHeaderIsATruncationNotAnAllocation) {
   auto r = off("OFF\n2000000000 2000000000 0\n0 0 0\n");
   ASSERT_FALSE(r.ok());
