@@ -16,10 +16,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "clip/boolean/chains.h"
 #include "clip/slice/stages.h"
+#include "contain/inside/winding_number.h"
 #include "contain/predicates/orient2d.h"
 
 namespace contain::clip::slice {
@@ -110,20 +112,10 @@ int orientation(const Ring& ring) {
   return s == Sign::positive ? 1 : (s == Sign::negative ? -1 : 0);
 }
 
-// Whether p, on no edge of the ring, is inside it: the parity of the edges crossing the ray
-// from p towards +x (an edge counts when one end is above p and the other not; exact).
+// Whether p, on no edge of the ring, is inside it: the ring's exact winding number around p
+// (a simple ring winds once or not at all).
 bool inside_ring(Vec2 p, const Ring& ring) {
-  bool inside = false;
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i];
-    const Vec2 b = ring[i + 1 < n ? i + 1 : 0];
-    if ((a.y > p.y) == (b.y > p.y)) continue;
-    // p is left of the upward edge (or right of the downward one): the edge is right of p.
-    const Sign side = b.y > a.y ? predicates::orient2d(a, b, p) : predicates::orient2d(b, a, p);
-    if (side == Sign::positive) inside = !inside;
-  }
-  return inside;
+  return inside::winding_number(std::span<const Ring>(&ring, 1), p) != 0;
 }
 
 bool box_within(const Box2& inner, const Box2& outer) {
