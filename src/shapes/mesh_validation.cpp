@@ -131,6 +131,18 @@ struct Around {
   std::int32_t next;
 };
 
+// The components of the referenced vertices, once `vertices` joins the ends of every edge.
+std::size_t count_components(const Mesh& mesh, const VertexCorners& vc,
+                             UnionFind<std::uint32_t>& vertices) {
+  std::size_t components = 0;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (vc.start[v] != vc.start[v + 1] && vertices.find(static_cast<std::uint32_t>(v)) == v) {
+      ++components;
+    }
+  }
+  return components;
+}
+
 // The common case, proved cheaply: at every vertex v, its corners form one cycle in which each
 // corner's next vertex is the following corner's previous one, the previous vertices all
 // distinct. Then every directed edge v -> w is used once and w -> v once (closed, consistently
@@ -181,11 +193,7 @@ bool check_topology_quick(const Mesh& mesh, const VertexCorners& vc, MeshReport&
   }
   r.referenced_vertices = referenced;
   r.edges = edges;
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (vc.start[v] != vc.start[v + 1] && vertices.find(static_cast<std::uint32_t>(v)) == v) {
-      ++r.components;
-    }
-  }
+  r.components = count_components(mesh, vc, vertices);
   return true;
 }
 
@@ -228,11 +236,7 @@ void check_topology(const Mesh& mesh, const VertexCorners& vc, MeshReport& r) {
     }
     r.duplicated_triangles += duplicates_at(mesh, vc, v, group);
   }
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (vc.start[v] != vc.start[v + 1] && vertices.find(static_cast<std::uint32_t>(v)) == v) {
-      ++r.components;
-    }
-  }
+  r.components = count_components(mesh, vc, vertices);
 }
 
 }  // namespace
@@ -293,6 +297,11 @@ MeshReport validate_mesh(const Mesh& mesh) {
 
 MeshReport detail::validate_mesh_in_full(const Mesh& mesh) {
   return validate(mesh, false);
+}
+
+bool detail::topology_proven_quickly(const Mesh& mesh) {
+  MeshReport unused;
+  return check_topology_quick(mesh, corners_by_vertex(mesh), unused);
 }
 
 std::string MeshReport::summary() const {

@@ -81,6 +81,9 @@ namespace detail {
 /// `validate_mesh` without its quick proof of the common case (a closed, oriented 2-manifold
 /// without duplicates): the full analysis always. The same report; for tests.
 [[nodiscard]] MeshReport validate_mesh_in_full(const Mesh& mesh);
+/// Whether `validate_mesh`'s quick proof holds (a closed, oriented 2-manifold without pinches
+/// or duplicates, proven by one walk around each vertex's fan); for tests.
+[[nodiscard]] bool topology_proven_quickly(const Mesh& mesh);
 }  // namespace detail
 
 /// The result of `weld_vertices`.
