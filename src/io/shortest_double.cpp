@@ -24,6 +24,16 @@
 namespace contain::io::detail {
 namespace {
 
+// The shortest decimal `digits` * 10^`exponent` in the rounding interval of a positive finite
+// double, the closest to it among those of that length (the even one on a tie): Ryu's,
+// Dragonbox's and Schubfach's common answer. `digits` has no trailing zero; `length` is its
+// number of decimal digits.
+struct ShortestDecimal {
+  std::uint64_t digits;
+  int exponent;
+  int length;
+};
+
 __extension__ typedef unsigned __int128 UInt128;
 
 constexpr std::uint64_t kHiddenBit = std::uint64_t{1} << 52;
@@ -93,7 +103,8 @@ int decimal_length(std::uint64_t n) {
 }
 
 ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
-  // A shortest decimal from the coarse step (a multiple of 10^(k+1)) has at most 16 zeros.
+  // A shortest decimal from the coarse step (a multiple of 10^(k+1), at most 16 digits) has at
+  // most 15 trailing zeros: 8 + 4 + 2 + 1.
   if (digits % 100000000 == 0) {
     digits /= 100000000;
     exponent += 8;
@@ -113,7 +124,8 @@ ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
   return {digits, exponent, decimal_length(digits)};
 }
 
-// shortest_decimal, inlined into the writer.
+// The shortest decimal of the double c * 2^q, c in [1, 2^53), q in [-1074, 971] (a positive
+// finite double's integer significand and exponent); inlined into the writer.
 [[gnu::always_inline]] inline ShortestDecimal decimal_of(std::uint64_t c, int q) {
   // The gap below v is half the gap above only at a power of two that is a normal double
   // (the smallest normal has a subnormal below it at the same spacing).
@@ -163,14 +175,6 @@ ShortestDecimal without_trailing_zeros(std::uint64_t digits, int exponent) {
                                      : decimal_length(digits);
   return {digits, exponent, length};
 }
-
-}  // namespace
-
-ShortestDecimal shortest_decimal(std::uint64_t c, int q) {
-  return decimal_of(c, q);
-}
-
-namespace {
 
 constexpr char kDigitPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"

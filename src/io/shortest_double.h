@@ -13,20 +13,6 @@
 
 namespace contain::io::detail {
 
-/// The shortest decimal `digits` * 10^`exponent` in the rounding interval of a positive finite
-/// double, the closest to it among those of that length (the even one on a tie): Ryu's,
-/// Dragonbox's and Schubfach's common answer. `digits` has no trailing zero; `length` is its
-/// number of decimal digits.
-struct ShortestDecimal {
-  std::uint64_t digits;
-  int exponent;
-  int length;
-};
-
-/// The shortest decimal of the double c * 2^q, c in [1, 2^53), q in [-1074, 971] (a positive
-/// finite double's integer significand and exponent).
-[[nodiscard]] ShortestDecimal shortest_decimal(std::uint64_t c, int q);
-
 /// floor(log10(2^q)), exact for |q| <= 1100 (proven in the test over the range the writer uses).
 [[nodiscard]] constexpr int floor_log10_pow2(int q) {
   return (q * 315653) >> 20;

@@ -219,7 +219,6 @@ bool parse_int64(const char*& p, const char* end, std::int64_t& out) {
 }
 
 char* write_double(char* at, double value) {
-  static_assert(kMaxDoubleChars >= static_cast<std::size_t>(kShortestDoubleRoom));
   // std::to_chars' bytes, several times faster (issue 26: half the time of slicing to WKT).
   return write_shortest_double(at, value);
 }

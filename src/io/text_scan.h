@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "contain/core/result.h"
+#include "io/shortest_double.h"
 
 namespace contain::io::detail {
 
@@ -88,7 +89,7 @@ enum class NumberStatus : std::uint8_t {
 
 /// Room for the shortest form of a double (at most 24 characters: sign, 17 digits, point,
 /// "e-308") and the scratch of its writer (io/shortest_double.h).
-inline constexpr std::size_t kMaxDoubleChars = 40;
+inline constexpr auto kMaxDoubleChars = static_cast<std::size_t>(kShortestDoubleRoom);
 
 /// Shortest decimal that reads back as exactly `value`, the bytes of std::to_chars, written at
 /// `at` (room for kMaxDoubleChars): the end of what was written.

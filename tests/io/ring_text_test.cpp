@@ -15,6 +15,7 @@
 
 #include "contain/io/geojson.h"
 #include "contain/io/wkt.h"
+#include "io/ring_text.h"
 
 namespace contain::test {
 namespace {
@@ -109,6 +110,17 @@ TEST(RingText, AppendingFormsAddToTheTextAsTheReturningFormsWrite) {
   EXPECT_EQ(io::format_wkt(region),
             "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)), ((5 5, 6 5, "
             "6 6.5, 5 5)))");
+}
+
+TEST(RingText, AnEmptyRingIsAnEmptyPairOfBracketsAndARingIsClosedByItsFirstPoint) {
+  std::string text = "x";
+  io::detail::append_ring_text(text, Ring{}, io::detail::RingSyntax::wkt);
+  io::detail::append_ring_text(text, Ring{}, io::detail::RingSyntax::geojson);
+  EXPECT_EQ(text, "x()[]");
+  text.clear();
+  io::detail::append_ring_text(text, Ring{{-0.0, 1e-7}}, io::detail::RingSyntax::wkt);
+  io::detail::append_ring_text(text, Ring{{0.5, -2}, {1e21, 3}}, io::detail::RingSyntax::geojson);
+  EXPECT_EQ(text, "(-0 1e-07, -0 1e-07)[[0.5,-2],[1e+21,3],[0.5,-2]]");
 }
 
 }  // namespace

@@ -359,7 +359,7 @@ TEST(ShortestDouble, CoordinatesInTheUnitRangeAsStdToChars) {
   EXPECT_EQ(log.mismatches(), 0) << "of " << log.checked();
 }
 
-TEST(ShortestDouble, WriteDoubleAndAppendDoubleUseTheWriter) {
+TEST(ShortestDouble, WriteDoubleAndAppendDoubleGiveStdToCharsText) {
   std::array<char, io::detail::kMaxDoubleChars> buffer{};
   for (const double value : {-0.0, 0.30000000000000004, 1e15, 0x1p70, -5e-324}) {
     EXPECT_EQ(std::string(buffer.data(), io::detail::write_double(buffer.data(), value)),
