@@ -128,21 +128,13 @@ int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
   // written in order: the text never holds every answer at once.
   constexpr std::size_t kBlock = std::size_t{1} << 22;
   const BatchOptions options{.threads = threads};
-  std::vector<std::string> parts;
   for (std::size_t begin = 0; begin < locations.size(); begin += kBlock) {
     const auto block = locations.subspan(begin, std::min(kBlock, locations.size() - begin));
-    const auto count = static_cast<std::size_t>(thread_count(options, block.size(), 1 << 16));
-    const std::size_t step = (block.size() + count - 1) / count;
-    parts.resize(count);
-    parallel_for(count, options, 1, [&](std::size_t first, std::size_t last) {
-      for (std::size_t k = first; k < last; ++k) {
-        const std::size_t at = std::min(block.size(), k * step);
-        parts[k] = format_locations(block.subspan(at, std::min(step, block.size() - at)), policy);
-      }
-    });
-    for (const std::string& part : parts) {
-      if (Status written = output->write(part); !written) return report(written.error());
-    }
+    const Status written = write_in_parallel_parts(
+        *output, block.size(), options, 1 << 16, [&](std::size_t at, std::size_t size) {
+          return format_locations(block.subspan(at, size), policy);
+        });
+    if (!written) return report(written.error());
   }
   const Status closed = output->close();
   return closed ? exit_ok : report(closed.error());

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstddef>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "contain/core/location.h"
+#include "contain/core/parallel.h"
 #include "contain/core/result.h"
 #include "contain/shapes/mesh.h"
 #include "contain/shapes/polygon.h"
@@ -76,6 +79,28 @@ class Output {
   std::unique_ptr<std::ofstream> file_;  // null: stdout
   std::string path_;
 };
+
+/// Formats `count` items in parts on up to `options.threads` threads (at least `min_per_thread`
+/// items a thread) and writes the parts to `output` in order: `format(at, size)` returns the text
+/// of items [at, at + size). The parts of one call are held at once; callers bound `count`.
+template <typename Format>
+[[nodiscard]] Status write_in_parallel_parts(Output& output, std::size_t count,
+                                             const BatchOptions& options,
+                                             std::size_t min_per_thread, Format&& format) {
+  const auto threads = static_cast<std::size_t>(thread_count(options, count, min_per_thread));
+  const std::size_t step = (count + threads - 1) / threads;
+  std::vector<std::string> parts(threads);
+  parallel_for(threads, options, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const std::size_t at = std::min(count, k * step);
+      parts[k] = format(at, std::min(step, count - at));
+    }
+  });
+  for (const std::string& part : parts) {
+    if (Status written = output.write(part); !written) return written;
+  }
+  return Ok{};
+}
 
 /// Writes `text` to `path`, or to stdout when `path` is empty or "-".
 [[nodiscard]] Status write_output(std::string_view text, const std::string& path);

@@ -180,24 +180,15 @@ int stream_sections(const clip::MeshSlicer& slicer, const SliceCliOptions& o) {
   }
   const BatchOptions batch{.threads = o.threads};
   Progress progress("planes", slicer.size(), !o.quiet && stderr_is_terminal());
-  std::vector<std::string> parts;
   std::size_t block = kFirstBlock;
   for (std::size_t begin = 0; begin < slicer.size();) {
     const std::size_t end = std::min(slicer.size(), begin + block);
     const std::vector<clip::Section> sections = slicer.slice(begin, end, batch);
-    const auto count = static_cast<std::size_t>(thread_count(batch, sections.size(), 1));
-    const std::size_t step = (sections.size() + count - 1) / count;
-    parts.assign(count, std::string{});
-    parallel_for(count, batch, 1, [&](std::size_t from, std::size_t to) {
-      for (std::size_t k = from; k < to; ++k) {
-        const std::size_t at = std::min(sections.size(), k * step);
-        const std::size_t size = std::min(step, sections.size() - at);
-        parts[k] = format_sections(std::span(sections).subspan(at, size), begin + at, o);
-      }
-    });
-    for (const std::string& part : parts) {
-      if (Status w = output->write(part); !w) return report(w.error());
-    }
+    const Status written = write_in_parallel_parts(
+        *output, sections.size(), batch, 1, [&](std::size_t at, std::size_t size) {
+          return format_sections(std::span(sections).subspan(at, size), begin + at, o);
+        });
+    if (!written) return report(written.error());
     const std::size_t per_plane = std::max<std::size_t>(1, point_count(sections) / sections.size());
     block = std::clamp<std::size_t>(kBlockPoints / per_plane, 1, kMaxBlock);
     begin = end;
