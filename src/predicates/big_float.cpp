@@ -168,20 +168,34 @@ void add_into(Limbs& r, const Limbs& p, std::size_t offset) {
   }
 }
 
-// a * b for b of at most two limbs (a double's mantissa, a bisection point, a Taylor shift's
-// origin): one pass of 32 x 64-bit products, one allocation, where the general product splits
-// both into runs and widens them to 64-bit limbs first.
-Limbs multiply_by_short(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
-  const std::uint64_t w = b.size() == 1 ? b[0] : (static_cast<std::uint64_t>(b[1]) << 32) | b[0];
-  Limbs out(a.size() + 2, 0);
+// The value of a factor of at most two limbs (a double's mantissa, a bisection point, a Taylor
+// shift's origin, a short run of a sparse magnitude) as one 64-bit word.
+std::uint64_t short_word(std::span<const std::uint32_t> s) {
+  return s.size() == 1 ? s[0] : (static_cast<std::uint64_t>(s[1]) << 32) | s[0];
+}
+
+// r += a * w * B^base, in place (r long enough for the sum): one pass of 32 x 64-bit products,
+// where the general product splits both factors into runs and widens them to 64-bit limbs.
+void add_short_product_into(Limbs& r, std::span<const std::uint32_t> a, std::uint64_t w,
+                            std::size_t base) {
   Wide128 carry = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const Wide128 t = static_cast<Wide128>(a[i]) * w + carry;
-    out[i] = static_cast<std::uint32_t>(t);
+  std::size_t i = 0;
+  for (; i < a.size(); ++i) {
+    const Wide128 t = static_cast<Wide128>(a[i]) * w + r[base + i] + carry;
+    r[base + i] = static_cast<std::uint32_t>(t);
     carry = t >> 32;
   }
-  out[a.size()] = static_cast<std::uint32_t>(carry);
-  out[a.size() + 1] = static_cast<std::uint32_t>(carry >> 32);
+  for (std::size_t k = base + i; carry != 0; ++k) {
+    const Wide128 t = static_cast<Wide128>(r[k]) + carry;
+    r[k] = static_cast<std::uint32_t>(t);
+    carry = t >> 32;
+  }
+}
+
+// a * b for b of at most two limbs: one allocation and one pass.
+Limbs multiply_by_short(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) {
+  Limbs out(a.size() + 2, 0);
+  add_short_product_into(out, a, short_word(b), 0);
   return out;
 }
 
@@ -192,23 +206,9 @@ constexpr std::size_t kRunLimbs = 8;
 // the pairs of short runs that sparse magnitudes (sums of far-apart doubles) multiply by the
 // dozen, without a product allocated for each.
 void add_product_into(Limbs& r, const Run& x, const Run& y) {
-  const Run& longer = x.limbs.size() >= y.limbs.size() ? x : y;
-  const Run& shorter = x.limbs.size() >= y.limbs.size() ? y : x;
-  const std::span<const std::uint32_t> s = shorter.limbs;
-  const std::uint64_t w = s.size() == 1 ? s[0] : (static_cast<std::uint64_t>(s[1]) << 32) | s[0];
-  const std::size_t base = x.offset + y.offset;
-  Wide128 carry = 0;
-  std::size_t i = 0;
-  for (; i < longer.limbs.size(); ++i) {
-    const Wide128 t = static_cast<Wide128>(longer.limbs[i]) * w + r[base + i] + carry;
-    r[base + i] = static_cast<std::uint32_t>(t);
-    carry = t >> 32;
-  }
-  for (std::size_t k = base + i; carry != 0; ++k) {
-    const Wide128 t = static_cast<Wide128>(r[k]) + carry;
-    r[k] = static_cast<std::uint32_t>(t);
-    carry = t >> 32;
-  }
+  const bool x_longer = x.limbs.size() >= y.limbs.size();
+  add_short_product_into(r, x_longer ? x.limbs : y.limbs, short_word(x_longer ? y.limbs : x.limbs),
+                         x.offset + y.offset);
 }
 
 // The product of two magnitudes, run by run: numbers built from doubles of mixed magnitudes
