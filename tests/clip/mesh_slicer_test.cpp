@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include "contain/clip/slice_mesh.h"
@@ -93,6 +95,43 @@ TEST(MeshSlicer, BlocksBackwardsRepeatedOrSkippingAheadAreSliceMeshsSections) {
   expect_block(20, 30, 2);  // the same block again
   expect_block(45, 61, 2);  // skipping ahead
   expect_block(0, 61, 2);
+}
+
+// `slice` is const: callers on several threads share the carried sweep, each taking blocks in
+// its own order (forwards, backwards, strided), and each still gets slice_mesh's sections.
+TEST(MeshSlicer, ConcurrentCallersSharingTheCarriedSweepGetSliceMeshsSections) {
+  const Mesh torus = scenes::torus(2.0, 0.6, 24, 12);
+  std::vector<double> values;
+  for (int i = 0; i <= 80; ++i)
+    values.push_back(-0.7 + 0.0175 * i);
+  const auto whole = clip::slice_mesh(torus, values, {.axis = clip::Axis::x}, {.threads = 1});
+  ASSERT_TRUE(whole.ok());
+  const auto slicer = clip::MeshSlicer::make(torus, values, {.axis = clip::Axis::x});
+  ASSERT_TRUE(slicer.ok());
+  constexpr std::size_t kCallers = 4;
+  constexpr std::size_t kBlock = 3;
+  std::vector<std::vector<clip::Section>> got(kCallers, std::vector<clip::Section>(values.size()));
+  std::vector<std::thread> callers;
+  for (std::size_t c = 0; c < kCallers; ++c) {
+    callers.emplace_back([&, c] {
+      std::vector<std::size_t> begins;
+      for (std::size_t b = 0; b < values.size(); b += kBlock)
+        begins.push_back(b);
+      if (c % 2 == 1) std::reverse(begins.begin(), begins.end());
+      if (c == 2) std::rotate(begins.begin(), begins.begin() + begins.size() / 2, begins.end());
+      for (int round = 0; round < 3; ++round) {
+        for (const std::size_t b : begins) {
+          std::vector<clip::Section> part = slicer->slice(b, b + kBlock, {.threads = 1});
+          for (std::size_t i = 0; i < part.size(); ++i)
+            got[c][b + i] = std::move(part[i]);
+        }
+      }
+    });
+  }
+  for (std::thread& t : callers)
+    t.join();
+  for (const std::vector<clip::Section>& sections : got)
+    expect_same_sections(sections, *whole);
 }
 
 TEST(MeshSlicer, EmptyBlocksAndRangesPastTheEndAreClamped) {

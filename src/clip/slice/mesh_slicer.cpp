@@ -72,16 +72,19 @@ std::vector<Section> MeshSlicer::slice(std::size_t begin, std::size_t end,
                                                s.rank.begin() + static_cast<std::ptrdiff_t>(end));
   const std::size_t first = *low;
   const std::size_t past = *high + 1;
+  // The lock guards only the copy in and the store back: the carries themselves run outside it,
+  // so that concurrent callers wait for no one's sweep. Any stored (carried_at, carried) pair is a
+  // valid start; a block behind the stored one starts from the first plane.
+  std::size_t carried_from = 0;
   std::vector<std::size_t> at_first;
   {
     const std::lock_guard<std::mutex> lock(state_->carry_mutex);
     if (s.carried_at <= first) {
+      carried_from = s.carried_at;
       at_first = s.carried;
-      slice::carry_active(s.mesh, s.starts, s.sorted, s.carried_at, first, at_first);
-    } else {  // a block behind the last one: from the start
-      slice::carry_active(s.mesh, s.starts, s.sorted, 0, first, at_first);
     }
   }
+  slice::carry_active(s.mesh, s.starts, s.sorted, carried_from, first, at_first);
   std::vector<Section> out(end - begin);
   // One plane is a whole 2D boolean: chunks of a single plane are worth a thread.
   parallel_for(past - first, batch, std::size_t{1}, [&](std::size_t from, std::size_t to) {
@@ -90,10 +93,10 @@ std::vector<Section> MeshSlicer::slice(std::size_t begin, std::size_t end,
     slice::sweep(s.mesh, s.starts, s.sorted, s.order, first + from, first + to, begin, carried,
                  out);
   });
+  slice::carry_active(s.mesh, s.starts, s.sorted, first, past, at_first);
   {
     const std::lock_guard<std::mutex> lock(state_->carry_mutex);
     state_->carried = std::move(at_first);
-    slice::carry_active(s.mesh, s.starts, s.sorted, first, past, state_->carried);
     state_->carried_at = past;
   }
   return out;
