@@ -306,6 +306,10 @@ Shells shells_of(const Mesh& mesh) {
 // beyond shared corners), and only shells whose boxes hold it can hold it.
 bool oriented(const Mesh& mesh) {
   const Shells shells = shells_of(mesh);
+  // One shell (most results): no other shell to ask about (every position is its own, so the
+  // loop below would ask no shell at its free vertex and find it outside), so it is oriented
+  // exactly when its volume is positive; the table of positions is built only for several.
+  if (shells.triangles.size() == 1) return volume_sign(mesh, shells.triangles[0]) == Sign::positive;
   // Each used vertex's position numbered by value (PointTable), and per position the first
   // shell met there and how many shell changes were seen at it (1: only one shell uses it).
   PointTable table;
