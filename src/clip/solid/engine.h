@@ -175,9 +175,23 @@ template <class Corners>
                                                                 static_cast<int>(k)};
     }
   }
+  // Each point's uses (about six on a mesh) sorted by insertion, where std::sort's set-up per
+  // point cost more than the sorting; a point of many uses (the apex of a fan) by std::sort.
+  constexpr std::size_t few = 16;
   for (std::size_t i = 0; i + 1 < start.size(); ++i) {
-    std::sort(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
-              uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
+    const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[i]);
+    const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]);
+    if (start[i + 1] - start[i] > few) {
+      std::sort(first, last);
+      continue;
+    }
+    for (auto it = first; it != last; ++it) {
+      const EdgeUse x = *it;
+      auto hole = it;
+      for (; hole != first && x < *(hole - 1); --hole)
+        *hole = *(hole - 1);
+      *hole = x;
+    }
   }
   return uses;
 }

@@ -34,7 +34,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -185,7 +184,9 @@ std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
   own.reserve(rounded.size());
   for (const std::int32_t t : rounded)
     own.push_back(boxes[static_cast<std::size_t>(t)]);
-  const bvh::Bvh tree(own);
+  // The linear build: the check's decisions do not depend on the tree, and the SAH's sweeps
+  // were most of the hierarchy's cost here.
+  const bvh::Bvh tree(own, {.method = bvh::BuildMethod::morton});
   std::vector<std::int32_t> near;
   for (std::size_t t = 0; t < boxes.size(); ++t) {
     const Box3& box = boxes[t];
@@ -207,22 +208,28 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
                 const std::vector<Box3>& boxes) {
   Soup soup;
   soup.inputs = 1;
-  std::unordered_map<Vec3, std::int32_t, Vec3Hash, Vec3Equal> welded;
+  // Welded by the flat table of the engine's soups (PointTable: +0 and -0 one key), not a
+  // node-based map.
+  soup.index.reserve(3 * chosen.size(), soup.vertices);
+  soup.triangles.reserve(chosen.size());
+  soup.input.assign(chosen.size(), 0);
+  soup.degenerate.assign(chosen.size(), false);  // zero-area triangles are never chosen
+  soup.boxes.reserve(chosen.size());
   for (const std::int32_t t : chosen) {
     TriangleIndices local{};
     for (std::size_t k = 0; k < 3; ++k) {
       const Vec3 v = mesh.vertex(mesh.triangles[static_cast<std::size_t>(t)][k]);
-      const auto [it, fresh] =
-          welded.try_emplace(v, static_cast<std::int32_t>(soup.vertices.size()));
-      if (fresh) soup.vertices.push_back({v.x + 0.0, v.y + 0.0, v.z + 0.0});
-      local[k] = it->second;
+      const Vec3 key{v.x + 0.0, v.y + 0.0, v.z + 0.0};
+      const auto [id, fresh] = soup.index.try_emplace(
+          key, static_cast<std::int32_t>(soup.vertices.size()), soup.vertices);
+      if (fresh) soup.vertices.push_back(key);
+      local[k] = id;
     }
     soup.triangles.push_back(local);
-    soup.input.push_back(0);
-    soup.degenerate.push_back(false);  // zero-area triangles are never chosen
     soup.boxes.push_back(boxes[static_cast<std::size_t>(t)]);
   }
-  soup.tree = bvh::Bvh(soup.boxes);
+  // The pairs' decisions do not depend on the tree: the linear build, as for large soups.
+  soup.tree = bvh::Bvh(soup.boxes, {.method = bvh::BuildMethod::morton});
   return soup;
 }
 
@@ -299,6 +306,10 @@ Shells shells_of(const Mesh& mesh) {
 // beyond shared corners), and only shells whose boxes hold it can hold it.
 bool oriented(const Mesh& mesh) {
   const Shells shells = shells_of(mesh);
+  // One shell (most results): no other shell to ask about (every position is its own, so the
+  // loop below would ask no shell at its free vertex and find it outside), so it is oriented
+  // exactly when its volume is positive; the table of positions is built only for several.
+  if (shells.triangles.size() == 1) return volume_sign(mesh, shells.triangles[0]) == Sign::positive;
   // Each used vertex's position numbered by value (PointTable), and per position the first
   // shell met there and how many shell changes were seen at it (1: only one shell uses it).
   PointTable table;

@@ -185,7 +185,9 @@ TEST(CheckWritten, AFoldedAndAZeroAreaTriangleAreFoundFromTheirMovedCornerAndBad
 // (exact volume of each shell, and the other shells' side at one of its vertices) whatever is
 // kept, as the oracle does; a hollow box (an outward shell around an inward one), three nested
 // shells alternating, boxes touching at a corner and a tiny box far from the origin (its volume
-// decided with exact numbers: the doubles' sum is all rounding) pass.
+// decided with exact numbers: the doubles' sum is all rounding) pass. One shell alone is decided
+// by its volume only (no table of the other shells' positions): a reversed box, the pushed
+// octahedron and the tiny reversed box are such single shells, checked against the oracle.
 TEST(CheckWritten, InsideOutShells) {
   const Mesh unit = box_mesh({0, 0, 0}, {1, 1, 1});
   const Mesh big = box_mesh({-2, -2, -2}, {3, 3, 3});
