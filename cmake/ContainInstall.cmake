@@ -46,7 +46,7 @@ set(reversed ${contain_installed_libraries})
 list(REVERSE reversed)
 foreach(library IN LISTS reversed)
   get_target_property(type ${library} TYPE)
-  if(type STREQUAL "STATIC_LIBRARY")  # header-only layers (core) have no archive
+  if(type STREQUAL "STATIC_LIBRARY")  # an INTERFACE layer would have no archive
     string(APPEND contain_pc_libs " -l${library}")
   endif()
 endforeach()

@@ -162,6 +162,31 @@ std::array<int, 3> grid_size(const Box3& bounds, std::size_t triangles,
 // point_in_mesh.txt): about 1.3 us a triangle to build, 4-6 ns a triangle a direct query.
 constexpr double kGridCost = 1300.0, kDirectCost = 5.0;
 
+// The triangles' numbers in the order of their boxes' low cells, mesh order within a cell. The
+// arrays default-initialize (HugePageVector): every element is written before it is read, none
+// is zeroed first.
+template <class Cell>
+HugePageVector<std::uint32_t> triangles_by_low_cell(const Mesh& mesh, const GridAxis& x,
+                                                    const GridAxis& y, const GridAxis& z) {
+  const std::size_t n = mesh.triangles.size();
+  HugePageVector<Cell> cells(n);
+  HugePageVector<std::uint32_t> order(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const Vec3 lo = bounding_box(mesh.triangle(t)).min;
+    const auto i = static_cast<std::size_t>(x.cells_meeting(lo.x, lo.x).first);
+    const auto j = static_cast<std::size_t>(y.cells_meeting(lo.y, lo.y).first);
+    const auto k = static_cast<std::size_t>(z.cells_meeting(lo.z, lo.z).first);
+    cells[t] = static_cast<Cell>(
+        (k * static_cast<std::size_t>(y.cells()) + j) * static_cast<std::size_t>(x.cells()) + i);
+    order[t] = static_cast<std::uint32_t>(t);
+  }
+  stable_radix_sort(cells, order,
+                    static_cast<unsigned>(std::bit_width(static_cast<std::size_t>(x.cells()) *
+                                                         static_cast<std::size_t>(y.cells()) *
+                                                         static_cast<std::size_t>(z.cells()))));
+  return order;
+}
+
 bool few_queries(std::size_t queries) {
   return queries > 0 && static_cast<double>(queries) * kDirectCost < kGridCost;
 }
@@ -258,24 +283,18 @@ void MeshIndex::read_triangles(const Mesh& mesh) {
 // mesh order within a cell: a query's run along a row then reads triangles that lie close
 // together in memory.
 void MeshIndex::read_triangles_by_cell(const Mesh& mesh) {
-  const std::size_t n = mesh.triangles.size();
-  std::vector<std::uint64_t> cells(n);
-  std::vector<std::uint32_t> order(n);
-  for (std::size_t t = 0; t < n; ++t) {
-    const Vec3 lo = bounding_box(mesh.triangle(t)).min;
-    const auto i = static_cast<std::size_t>(x_.cells_meeting(lo.x, lo.x).first);
-    const auto j = static_cast<std::size_t>(y_.cells_meeting(lo.y, lo.y).first);
-    const auto k = static_cast<std::size_t>(z_.cells_meeting(lo.z, lo.z).first);
-    cells[t] = (k * static_cast<std::size_t>(ny_) + j) * static_cast<std::size_t>(nx_) + i;
-    order[t] = static_cast<std::uint32_t>(t);
+  // Cell numbers in 32 bits where the grid allows (as in the listing): half the keys' memory.
+  const HugePageVector<std::uint32_t> order =
+      stats_.cells <= std::numeric_limits<std::uint32_t>::max()
+          ? triangles_by_low_cell<std::uint32_t>(mesh, x_, y_, z_)
+          : triangles_by_low_cell<std::size_t>(mesh, x_, y_, z_);
+  tris_.reserve(order.size());
+  for (const std::uint32_t t : order) {
+    const TriangleIndices& corners = mesh.triangles[t];
+    tris_.push_back(
+        make_tri(mesh.vertex(corners[0]), mesh.vertex(corners[1]), mesh.vertex(corners[2])));
   }
-  stable_radix_sort(cells, order, static_cast<unsigned>(std::bit_width(stats_.cells)));
-  tris_.reserve(n);
-  for (std::size_t s = 0; s < n; ++s) {
-    const TriangleIndices& t = mesh.triangles[order[s]];
-    tris_.push_back(make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2])));
-  }
-  stats_.triangles = n;
+  stats_.triangles = order.size();
 }
 
 // Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
@@ -333,7 +352,8 @@ void MeshIndex::list_triangles_by_cell_as() {
   pairs.resize(listed);
   // surface_ holds each cell's count first, then its surface cell number: no temporary array
   // of the grid's size (1.6 M cells for 100k triangles) to zero and fault in.
-  state_.assign(cell_count, 0);
+  // state_ default-initializes: the scan below writes every cell's state.
+  state_ = HugePageVector<std::uint8_t>(cell_count);
   surface_.assign(cell_count, 0);
   for (const auto& [c, t] : pairs)
     ++surface_[c];
@@ -341,8 +361,8 @@ void MeshIndex::list_triangles_by_cell_as() {
   cell_start_.push_back(0);
   for (std::size_t c = 0; c < cell_count; ++c) {
     const std::uint32_t count = surface_[c];
+    state_[c] = count == 0 ? 0 : 2;
     if (count == 0) continue;
-    state_[c] = 2;
     surface_[c] = static_cast<std::uint32_t>(cell_start_.size() - 1);
     cell_start_.push_back(cell_start_.back() + count);
   }

@@ -6,12 +6,15 @@
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
-#include <fstream>
 #include <utility>
+#include <vector>
 
 namespace contain::io {
 
@@ -29,16 +32,47 @@ Result<T> named(Result<T> result, const std::string& path) {
   return error;
 }
 
-// The pieces one after the other (a large piece goes straight from its memory to the file).
+// The pieces one after the other, by writev from where they lie. An existing file is written
+// over in place and then cut to the new length (not truncated first): its page-cache pages are
+// reused instead of dropped and allocated again, and a file system that flushes a file rewritten
+// after truncation (ext4's auto_da_alloc) has no reason to. Either way a write that stops half
+// way leaves a file that the header's length and checksums refuse.
 Status write_pieces(std::span<const std::span<const std::byte>> pieces, const std::string& path) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return io_error(path, "cannot create");
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+  if (fd < 0) return io_error(path, "cannot create");
+  std::vector<iovec> todo;
+  todo.reserve(pieces.size());
+  off_t length = 0;
   for (const std::span<const std::byte> piece : pieces) {
-    out.write(reinterpret_cast<const char*>(piece.data()),
-              static_cast<std::streamsize>(piece.size()));
+    if (piece.empty()) continue;
+    todo.push_back({const_cast<std::byte*>(piece.data()), piece.size()});
+    length += static_cast<off_t>(piece.size());
   }
-  out.close();
-  if (!out) return io_error(path, "cannot write");
+  std::size_t next = 0;  // the first piece not yet written whole
+  while (next < todo.size()) {
+    const auto count = static_cast<int>(std::min<std::size_t>(todo.size() - next, IOV_MAX));
+    const ssize_t written = ::writev(fd, &todo[next], count);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      const Error error = io_error(path, "cannot write");
+      ::close(fd);
+      return error;
+    }
+    auto left = static_cast<std::size_t>(written);
+    while (next < todo.size() && left >= todo[next].iov_len)
+      left -= todo[next++].iov_len;
+    if (left > 0) {  // part of a piece: the rest of it next
+      todo[next].iov_base = static_cast<char*>(todo[next].iov_base) + left;
+      todo[next].iov_len -= left;
+    }
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || (S_ISREG(st.st_mode) && ::ftruncate(fd, length) != 0)) {
+    const Error error = io_error(path, "cannot write");
+    ::close(fd);
+    return error;
+  }
+  if (::close(fd) != 0) return io_error(path, "cannot write");
   return Ok{};
 }
 

@@ -41,6 +41,24 @@ TEST(IndexCli, SavedMeshIndexAnswersAsTheMeshWithOrWithoutIt) {
   EXPECT_EQ(checked.out, fresh.out);
 }
 
+// The file is written over in place and then cut to its length: what was there before, longer
+// or shorter, leaves no trace.
+TEST(IndexCli, BuildingOverAnExistingFileGivesTheSameBytesAsAFreshFile) {
+  TempDir dir;
+  const std::string mesh = dir.write("cube.off", kCubeOff);
+  const std::string fresh = (dir.path() / "fresh.cidx").string();
+  ASSERT_EQ(run_contain({"index", "build", "--mesh", mesh, "--out", fresh}).exit_code, 0);
+  const std::string expected = read_bytes(fresh);
+  ASSERT_GT(expected.size(), 64U);
+  for (const std::string& before : {std::string(3 * expected.size(), 'x'), std::string("short")}) {
+    const std::string over = (dir.path() / "over.cidx").string();
+    write_bytes(over, before);
+    const CliRun built = run_contain({"index", "build", "--mesh", mesh, "--out", over});
+    ASSERT_EQ(built.exit_code, 0) << built.err;
+    EXPECT_EQ(read_bytes(over), expected) << before.size();
+  }
+}
+
 TEST(IndexCli, IndexOfAnotherMeshIsRefusedNamingBothFiles) {
   TempDir dir;
   const std::string mesh = dir.write("cube.off", kCubeOff);

@@ -1,5 +1,7 @@
 #include "contain/core/radix_sort.h"
 
+#include "contain/core/huge_pages.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,6 +44,27 @@ TEST(StableRadixSort, KeysOfManyDigitsAndDigitsEqualForEveryKey) {
   // 63-bit keys whose low 23 bits are all zero: the passes over them are skipped.
   expect_matches_a_sort_of_pairs(63, std::uint64_t{1} << 40, 5000);
   expect_matches_a_sort_of_pairs(33, std::uint64_t{1} << 33, 5000);
+}
+
+// 32-bit keys in vectors whose allocator leaves new elements unzeroed (the scratch arrays take
+// it too), with a key_bits beyond the keys' width: the passes stop at 32 bits.
+TEST(StableRadixSort, ThirtyTwoBitKeysInDefaultInitializingVectors) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<std::uint32_t> draw(0, 5000);
+  const std::size_t n = 30000;
+  HugePageVector<std::uint32_t> keys(n), items(n);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    keys[i] = draw(rng) << 19U;  // up to bit 31
+    items[i] = static_cast<std::uint32_t>(i);
+    pairs[i] = {keys[i], items[i]};
+  }
+  std::sort(pairs.begin(), pairs.end());
+  stable_radix_sort(keys, items, 40);
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_EQ(keys[i], pairs[i].first) << i;
+    ASSERT_EQ(items[i], pairs[i].second) << i;
+  }
 }
 
 TEST(StableRadixSort, EmptyAndSingleInputs) {

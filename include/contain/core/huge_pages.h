@@ -6,19 +6,26 @@
 /// those faults and the kernel's bookkeeping behind them are a large part of the build.
 
 #include <cstddef>
-#include <cstdint>
-#include <cstdlib>
 #include <memory>
 #include <new>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace contain {
+
+namespace detail {
+
+inline constexpr std::size_t huge_page_bytes = std::size_t{1} << 21;
+
+/// A block of `bytes` (a positive multiple of `huge_page_bytes`) on a `huge_page_bytes` boundary,
+/// advised for huge pages where the system has the call (src/core/huge_pages.cpp: the platform
+/// calls stay out of the public headers). Throws std::bad_alloc when the system has no room.
+[[nodiscard]] void* allocate_huge_page_block(std::size_t bytes);
+/// Gives back a block of allocate_huge_page_block.
+void free_huge_page_block(void* block) noexcept;
+
+}  // namespace detail
 
 /// An allocator that places blocks of at least `huge_page_threshold` bytes on 2 MB boundaries,
 /// rounded up to whole 2 MB pages, and asks the system to back them with huge pages when first
@@ -31,7 +38,7 @@ namespace contain {
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
-  static constexpr std::size_t huge_page = std::size_t{1} << 21;
+  static constexpr std::size_t huge_page = detail::huge_page_bytes;
   /// Below this, the slack of a 2 MB rounding is not worth it.
   static constexpr std::size_t huge_page_threshold = 2 * huge_page;
 
@@ -46,19 +53,14 @@ struct HugePageAllocator {
       return std::allocator<T>{}.allocate(n);
     }
     const std::size_t rounded = (bytes + huge_page - 1) & ~(huge_page - 1);
-    void* p = std::aligned_alloc(huge_page, rounded);
-    if (p == nullptr) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    (void)::madvise(p, rounded, MADV_HUGEPAGE);
-#endif
-    return static_cast<T*>(p);
+    return static_cast<T*>(detail::allocate_huge_page_block(rounded));
   }
   void deallocate(T* p, std::size_t n) noexcept {
     if (n * sizeof(T) < huge_page_threshold || alignof(T) > huge_page) {
       std::allocator<T>{}.deallocate(p, n);
       return;
     }
-    std::free(p);
+    detail::free_huge_page_block(p);
   }
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {

@@ -6,26 +6,31 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace contain {
 
-/// Sorts `keys` ascending, moving `items` (the same size) along; equal keys keep their order, so
-/// the result is the order of a sort of the pairs (key, position). Only the low `key_bits` bits of
-/// the keys are read (the others must be zero). 11 bits a pass; a pass whose digit is the same for
-/// every key is skipped. O((n + 2^11) key_bits / 11).
-template <class Item>
-void stable_radix_sort(std::vector<std::uint64_t>& keys, std::vector<Item>& items,
-                       unsigned key_bits) {
+/// Sorts `keys` (unsigned integers) ascending, moving `items` (the same size) along; equal keys
+/// keep their order, so the result is the order of a sort of the pairs (key, position). Only the
+/// low `key_bits` bits of the keys are read (the others must be zero). 11 bits a pass; a pass
+/// whose digit is the same for every key is skipped. O((n + 2^11) key_bits / 11). The two
+/// scratch arrays take the vectors' allocators: one that default-initializes (HugePageAllocator)
+/// leaves them unzeroed, each element written by the pass before it is read.
+template <class Key, class KeyAllocator, class Item, class ItemAllocator>
+void stable_radix_sort(std::vector<Key, KeyAllocator>& keys,
+                       std::vector<Item, ItemAllocator>& items, unsigned key_bits) {
+  static_assert(std::is_unsigned_v<Key>, "radix keys are unsigned integers");
   constexpr unsigned digit_bits = 11;
   constexpr std::size_t buckets = std::size_t{1} << digit_bits;
   const std::size_t n = keys.size();
-  std::vector<std::uint64_t> keys_out(n);
-  std::vector<Item> items_out(n);
+  std::vector<Key, KeyAllocator> keys_out(n);
+  std::vector<Item, ItemAllocator> items_out(n);
   std::vector<std::size_t> start(buckets + 1);
-  for (unsigned shift = 0; shift < key_bits; shift += digit_bits) {
+  const unsigned bits = std::min<unsigned>(key_bits, 8 * sizeof(Key));
+  for (unsigned shift = 0; shift < bits; shift += digit_bits) {
     std::fill(start.begin(), start.end(), 0);
-    for (const std::uint64_t k : keys)
+    for (const Key k : keys)
       ++start[((k >> shift) & (buckets - 1)) + 1];
     if (std::find(start.begin(), start.end(), n) != start.end()) continue;
     for (std::size_t b = 1; b <= buckets; ++b)
