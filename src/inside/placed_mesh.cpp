@@ -41,10 +41,11 @@ PlacedMesh::PlacedMesh(Mesh m, const bvh::BuildOptions& options) : mesh(std::mov
 
 // A's index, built once where the rays have cost as much (rent or buy: the total is then at
 // most twice the better of the two choices made in hindsight). The cost model: building
-// `MeshIndex` takes about kIndexCost a triangle (mesh_index.cpp's kGridCost, 1.3 us), a step
-// of a ray through the hierarchy (a node's box or a triangle's test) about kRayStepCost,
-// measured on the 100k-triangle torus and the 10^6-triangle sphere (docs/benchmarks.md,
-// "Preparing in proportion to the work").
+// `MeshIndex` takes about kIndexCost a triangle (mesh_index.cpp's kGridCost; 0.6-1.1 us a
+// triangle measured again on the 100k-triangle torus as a whole process), a step of a ray
+// through the hierarchy (a node's box or a triangle's crossing test) about kRayStepCost, an
+// estimate: 1000 nested poses of the torus in the torus, a ray each, do not change the query
+// time measurably (docs/benchmarks.md, "Preparing in proportion to the work").
 constexpr double kIndexCost = 1300.0, kRayStepCost = 10.0;
 
 struct PlacedMeshPair::LazyIndex {
