@@ -76,7 +76,9 @@ int run_mesh_points(const DistanceOptions& o) {
   if (!points) return report(points.error());
   enter_phase(Phase::prepare);
   const bool signs = o.signed_distance;
-  const distance::MeshDistance prepared(file->mesh, {.signs = signs});
+  // Few points: the signs without the index's grid (its cost model; the same answers).
+  const distance::MeshDistance prepared(
+      file->mesh, {.index = {.queries = points->points.size()}, .signs = signs});
   // The signs are inside's answers: for a closed mesh the solid of its winding number, crossing
   // itself or not.
   if (signs && prepared.regime() != inside::MeshRegime::closed_exact) {
@@ -123,7 +125,8 @@ int run_polygon_points(const DistanceOptions& o) {
   auto points = io::read_points2(o.points);
   if (!points) return report(points.error());
   enter_phase(Phase::prepare);
-  const distance::RegionDistance prepared(*region, {.fill = o.fill, .signs = o.signed_distance});
+  const distance::RegionDistance prepared(
+      *region, {.fill = o.fill, .signs = o.signed_distance, .queries = points->points.size()});
   enter_phase(Phase::query);
   const std::vector<Vec2>& p = points->points;
   std::string text;

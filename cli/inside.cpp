@@ -33,14 +33,15 @@ struct InsideOptions : PointQuery {
 };
 
 // At most how many points the file holds, without reading it (the points stream, but the mesh's
-// index is built before them): a point's line takes at least 6 bytes ("0 0 0\n"). Standard input
-// or an unreadable size: as many as can be, so the full index is built, as before.
-std::size_t most_points(const std::string& path) {
+// index is built before them): a point's line takes at least 6 bytes ("0 0 0\n"), 4 in 2D
+// ("0 0\n"). Standard input or an unreadable size: as many as can be, so the full index is built,
+// as before.
+std::size_t most_points(const std::string& path, std::size_t shortest_line = 6) {
   constexpr std::size_t unknown = std::numeric_limits<std::size_t>::max();
   if (path == "-") return unknown;
   std::error_code error;
   const auto size = std::filesystem::file_size(path, error);
-  return error ? unknown : static_cast<std::size_t>(size / 6 + 1);
+  return error ? unknown : static_cast<std::size_t>(size / shortest_line + 1);
 }
 
 // Reads the points a block at a time and answers each piece as it comes, keeping only the
@@ -80,7 +81,8 @@ int run_polygon(const InsideOptions& o) {
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
   enter_phase(Phase::prepare);
-  const inside::PolygonIndex index(*region, {.fill = o.fill});
+  // Few points: one cell, no grid (the index's cost model; the answers are the same).
+  const inside::PolygonIndex index(*region, {.fill = o.fill, .queries = most_points(o.points, 4)});
   enter_phase(Phase::read);
   return answer(locate_streamed<Vec2>(index, o, io::read_points2_chunked), o);
 }

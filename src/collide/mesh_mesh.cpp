@@ -13,7 +13,7 @@ Contact MeshPair::collide(const Transform& tb) const {
   return detail::collide_sides(
       pair_.a, detail::InWorld{}, pair_.b, pb,
       [&](const Box3& x, const Box3& y) { return x.overlaps(pb(y)); },
-      [&](Vec3 p) { return pair_.index_a.locate(p) == Location::inside; });
+      [&](Vec3 p) { return pair_.a_holds(p); });
 }
 
 void MeshPair::collide(std::span<const Transform> poses, std::span<Contact> out,

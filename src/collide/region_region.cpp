@@ -71,7 +71,8 @@ Contact region_region(const MultiPolygon& a, const MultiPolygon& b,
   if (contact.intersect) return contact;
   // Boundaries disjoint: each ring lies wholly on one side of the other region's boundary.
   auto nested = [&](const Edges& e, const MultiPolygon& other, inside::PairWitness kind) {
-    const inside::PolygonIndex index(other, {.fill = options.fill});
+    // One point a ring: the index's cost model skips the grid for few rings.
+    const inside::PolygonIndex index(other, {.fill = options.fill, .queries = e.ring_first.size()});
     for (const std::int32_t v : e.ring_first) {
       ++contact.exact_tests;
       if (index.locate(e.segments[static_cast<std::size_t>(v)].a) != Location::outside) {

@@ -358,11 +358,12 @@ MeshPairDistance::Placed& MeshPairDistance::place(const Transform& tb) const {
 // whatever the surfaces do (and settles nested solids, whose surfaces may be far apart, at
 // once). A vertex on the other's surface is a touching pair, which the descent finds. Both
 // solids are inside::MeshIndex's (the winding number positive, or ray parity for inconsistent
-// orientation: solid_rule.h), A's by its index, B's by the signed ray as placed.
+// orientation: solid_rule.h), A's by PlacedMeshPair::a_holds (its ray, or its index once built),
+// B's by the signed ray as placed.
 MeshPairDistance::Nested MeshPairDistance::nested(Placed& placed) const {
   if (pair_.a.solid()) {
     for (const std::int32_t v : pair_.b.components) {
-      if (pair_.index_a.locate(placed.vertices[v]) == Location::inside)
+      if (pair_.a_holds(placed.vertices[v]))
         return {inside::PairWitness::vertex_of_b_in_a, v, placed.vertices[v]};
     }
   }

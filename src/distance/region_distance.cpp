@@ -60,7 +60,8 @@ RegionDistance::RegionDistance(std::span<const Ring> rings, const RegionDistance
     }
   }
   search_ = std::make_unique<detail::SegmentSearch>(edges, options.bvh);
-  if (signs_) index_ = inside::PolygonIndex(rings, {.fill = options.fill});
+  if (signs_)
+    index_ = inside::PolygonIndex(rings, {.fill = options.fill, .queries = options.queries});
 }
 
 RegionDistance::RegionDistance(const Polygon& polygon, const RegionDistanceOptions& options)

@@ -118,7 +118,9 @@ Found closest_edges(const Edges& a, const Edges& b) {
 // A vertex of each ring of `inner` inside `outer`: the first found, as a global vertex number.
 std::int32_t nested_vertex(const Edges& inner, const Edges& outer, Fill fill) {
   if (outer.rings.empty()) return -1;
-  const inside::PolygonIndex index(std::span<const Ring>(outer.rings), {.fill = fill});
+  // One point a ring: the index's cost model skips the grid for few rings.
+  const inside::PolygonIndex index(std::span<const Ring>(outer.rings),
+                                   {.fill = fill, .queries = inner.rings.size()});
   std::int32_t base = 0;
   for (const Ring& ring : inner.rings) {
     if (!ring.empty() && index.locate(ring.front()) == Location::inside) return base;

@@ -43,9 +43,10 @@ std::vector<Edge> edges_of(std::span<const Ring> rings, Box2& bounds) {
 // Long edges crossing the whole region (stars with long spikes) touch about length / cell size
 // cells each: on a grid of max_cells they made 27 million edge-cell pairs (2 GB) for a
 // 64,000-edge star (found by the memory growth test). Halves nx and ny until the estimated
-// pairs, n + sum |dx| / cell width + sum |dy| / cell height, fit kPairsPerEdge per edge.
-void coarsen_for_long_edges(std::span<const Edge> edges, double half_w, double half_h,
-                            std::size_t min_cells, double& nx, double& ny) {
+// pairs, n + sum |dx| / cell width + sum |dy| / cell height, fit kPairsPerEdge per edge; returns
+// the estimate for the grid kept.
+double coarsen_for_long_edges(std::span<const Edge> edges, double half_w, double half_h,
+                              std::size_t min_cells, double& nx, double& ny) {
   constexpr double kPairsPerEdge = 32.0;
   // Edge extents relative to the box (each at most 1: no overflow near DBL_MAX).
   double rel_x = 0.0, rel_y = 0.0;
@@ -60,11 +61,17 @@ void coarsen_for_long_edges(std::span<const Edge> edges, double half_w, double h
     nx = std::ceil(nx / 2);
     ny = std::ceil(ny / 2);
   }
+  return pairs(nx, ny);
 }
 
+struct GridSize {
+  int columns = 1, rows = 1;
+  double pairs = 0.0;  // the estimated edge-cell pairs: what building the grid costs
+};
+
 // Columns and rows: enough cells that a cell holds about one edge. Half units avoid overflow.
-std::pair<int, int> grid_size(std::span<const Edge> edges, const Box2& bounds,
-                              const PolygonIndexOptions& options) {
+GridSize grid_size(std::span<const Edge> edges, const Box2& bounds,
+                   const PolygonIndexOptions& options) {
   const double half_w = 0.5 * bounds.max.x - 0.5 * bounds.min.x;
   const double half_h = 0.5 * bounds.max.y - 0.5 * bounds.min.y;
   double length = 0.0;  // total edge length (L-infinity), half units
@@ -92,8 +99,22 @@ std::pair<int, int> grid_size(std::span<const Edge> edges, const Box2& bounds,
   } else if (half_h > 0.0) {
     ny = std::round(target);
   }
-  coarsen_for_long_edges(edges, half_w, half_h, options.min_cells, nx, ny);
-  return {static_cast<int>(nx), static_cast<int>(ny)};
+  const double pairs = coarsen_for_long_edges(edges, half_w, half_h, options.min_cells, nx, ny);
+  return {static_cast<int>(nx), static_cast<int>(ny), pairs};
+}
+
+// The cost model: building the grid takes about kGridCost an edge-cell pair (the estimate of
+// coarsen_for_long_edges: about one an edge for short edges, up to 32 for long edges crossing
+// the region), a query without it (one cell holding every edge: the crossing test over all of
+// them) about kDirectCost an edge, and a query with it next to nothing. Measured on a blob of
+// 10^6 short edges and a star of 10^6 long ones (whole processes, docs/benchmarks.md,
+// "Preparing in proportion to the work"): 40 ns a pair (the star: 100, memory bound), 7-9 ns an
+// edge a direct query. So the grid pays from about 4.4 queries times the pairs an edge on.
+constexpr double kGridCost = 40.0, kDirectCost = 9.0;
+
+bool few_queries(std::size_t queries, std::size_t edges, double pairs) {
+  return queries > 0 && static_cast<double>(queries) * kDirectCost * static_cast<double>(edges) <
+                            kGridCost * pairs;
 }
 
 // A conservative x-range of the edge within y in [y0, y1] (a sub-range of its y-extent).
@@ -222,7 +243,10 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   const std::vector<Edge> edges = edges_of(rings, bounds_);
   stats_.edges = edges.size();
   if (edges.empty()) return;
-  const auto [columns, rows] = grid_size(edges, bounds_, options);
+  // Few queries: one cell, which every edge touches (no grid lines inside it to settle).
+  GridSize size = grid_size(edges, bounds_, options);
+  if (few_queries(options.queries, edges.size(), size.pairs)) size = {};
+  const int columns = size.columns, rows = size.rows;
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, columns);
   y_ = GridAxis(bounds_.min.y, bounds_.max.y, rows);
   stats_.cells = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);

@@ -149,5 +149,34 @@ TEST(PolyhedraReference, BoundingVolumesAnswerFarApartPairs) {
   EXPECT_EQ(nested.stage, ReferenceStage::vertices);
 }
 
+// A's point location is lazy (inside::PlacedMeshPair::a_holds): rays through A's hierarchy for
+// the first poses, A's MeshIndex once they cost as much. A pair shared by thousands of poses on
+// four threads, which builds the index part way, answers every pose as a fresh pair that only
+// casts rays: nested, crossing, touching and separate poses alike.
+TEST(MeshPair, LazyIndexOfAAnswersEveryPoseAsRaysAloneOnConcurrentBatches) {
+  const Mesh a = scenes::torus(1.0, 0.4, 12, 8);
+  Mesh b = scenes::torus(1.0, 0.4, 8, 6);
+  for (Vec3& v : b.vertices)
+    v = 0.125 * v;
+  std::vector<Transform> poses = scenes::random_poses(6000, 1.5, 27);
+  for (std::size_t i = 0; i < poses.size(); i += 2)
+    poses[i].t.z = 0.0;  // half of them about the tube's core: many nested in A
+  const MeshPair shared(a, b);
+  std::vector<Contact> batch(poses.size());
+  shared.collide(poses, batch, {.threads = 4});
+  EXPECT_TRUE(shared.prepared().index_a_built());
+  int nested = 0;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const Contact fresh = MeshPair(a, b).collide(poses[i]);
+    ASSERT_EQ(batch[i].intersect, fresh.intersect) << i;
+    ASSERT_EQ(batch[i].witness, fresh.witness) << i;
+    ASSERT_EQ(batch[i].vertex, fresh.vertex) << i;
+    ASSERT_EQ(batch[i].triangle_a, fresh.triangle_a) << i;
+    ASSERT_EQ(batch[i].triangle_b, fresh.triangle_b) << i;
+    nested += fresh.witness == inside::PairWitness::vertex_of_b_in_a;
+  }
+  EXPECT_GT(nested, 100);
+}
+
 }  // namespace
 }  // namespace contain::collide

@@ -282,5 +282,31 @@ TEST(MeshPairDistance, BatchOfPosesEqualsSingleQueriesOnAnyThreadCount) {
   EXPECT_EQ(mesh_mesh(a, b, {}, poses[3]).distance, one[3].distance);
 }
 
+// A's point location is lazy (inside::PlacedMeshPair::a_holds): a pair shared by many poses on
+// four threads, which builds A's index part way, answers every pose as a fresh pair (rays only).
+TEST(MeshPairDistance, LazyIndexOfAAnswersEveryPoseAsRaysAloneOnConcurrentBatches) {
+  const Mesh a = scenes::torus(1.0, 0.4, 12, 8);
+  Mesh b = scenes::torus(1.0, 0.4, 8, 6);
+  for (Vec3& v : b.vertices)
+    v = 0.125 * v;
+  std::vector<Transform> poses = scenes::random_poses(3000, 1.5, 28);
+  for (std::size_t i = 0; i < poses.size(); i += 2)
+    poses[i].t.z = 0.0;
+  const MeshPairDistance shared(a, b);
+  std::vector<PairDistance3> batch(poses.size());
+  shared.distance(poses, batch, {.threads = 4});
+  int nested = 0;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const PairDistance3 fresh = MeshPairDistance(a, b).distance(poses[i]);
+    ASSERT_EQ(batch[i].distance, fresh.distance) << i;
+    ASSERT_EQ(batch[i].contact, fresh.contact) << i;
+    ASSERT_EQ(batch[i].triangle_a, fresh.triangle_a) << i;
+    ASSERT_EQ(batch[i].triangle_b, fresh.triangle_b) << i;
+    ASSERT_TRUE(batch[i].point_a == fresh.point_a && batch[i].point_b == fresh.point_b) << i;
+    nested += fresh.contact == inside::PairWitness::vertex_of_b_in_a;
+  }
+  EXPECT_GT(nested, 100);
+}
+
 }  // namespace
 }  // namespace contain::distance

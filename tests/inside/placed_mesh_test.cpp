@@ -39,8 +39,8 @@ TEST(PlacedMeshPair, PlacesAOnceWithItsIndexAndKeepsBInItsOwnFrame) {
   EXPECT_TRUE(pair.b.solid());
   EXPECT_EQ(pair.a.max_abs, 11.0);
   EXPECT_EQ(pair.b.max_abs, 1.0);
-  EXPECT_EQ(pair.index_a.locate({10.5, 0.5, 0.5}), Location::inside);
-  EXPECT_EQ(pair.index_a.locate({0.5, 0.5, 0.5}), Location::outside);
+  EXPECT_EQ(pair.index_a().locate({10.5, 0.5, 0.5}), Location::inside);
+  EXPECT_EQ(pair.index_a().locate({0.5, 0.5, 0.5}), Location::outside);
   const PlacedMeshPair empty_a(Mesh{}, cube);
   EXPECT_FALSE(empty_a.a.solid());
   EXPECT_TRUE(empty_a.a.bvh.empty());

@@ -45,8 +45,9 @@ using MeshPairOptions = inside::MeshPairOptions;
 /// connected components of the two surfaces, so one vertex per component of A is located in B
 /// (the exact signed crossings of the perturbed +x ray against B's transformed triangles, read
 /// by B's solid rule: `inside::locate_by_ray`, docs/robustness.md) and one vertex per component
-/// of B in A (A's `inside::MeshIndex`); the winding number is constant on a connected set off
-/// the surface, so one vertex decides for its component.
+/// of B in A (the same ray through A's hierarchy, or A's `inside::MeshIndex` once the rays have
+/// cost as much as building it: `inside::PlacedMeshPair::a_holds`); the winding number is
+/// constant on a connected set off the surface, so one vertex decides for its component.
 ///
 /// Complexity: build O(n log n); a query O(node pairs entered + leaf pairs) plus a ray per
 /// component reaching the containment check. Thread safety: const; queries may run

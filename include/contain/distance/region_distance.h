@@ -33,6 +33,9 @@ struct RegionDistanceOptions {
   bvh::BuildOptions bvh{};
   /// Build the containment index that signs the distances (false: signed queries answer NaN).
   bool signs = true;
+  /// How many signed queries the caller means to ask (0: not known, many): the containment
+  /// index's cost model (`inside::PolygonIndexOptions::queries`; the same answers).
+  std::size_t queries = 0;
 };
 
 /// A region prepared for distance queries.

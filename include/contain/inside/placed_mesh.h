@@ -5,6 +5,7 @@
 /// query; and two meshes prepared together, A placed once with its point-location index.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "contain/bvh/bvh.h"
@@ -53,16 +54,42 @@ struct MeshPairOptions {
 };
 
 /// Two meshes prepared for queries that place B by a transform each: A placed once in world
-/// coordinates (the doubles `transform_a.apply(v)`) with its exact point-location index, B in its
+/// coordinates (the doubles `transform_a.apply(v)`) with its exact point location, B in its
 /// own frame. The prepared pair of `collide::MeshPair` and `distance::MeshPairDistance`.
+///
+/// A's point location is prepared in proportion to the work: A's `MeshIndex` is not built with
+/// the pair. `a_holds` casts the perturbed ray through A's hierarchy (which the pair has anyway)
+/// until the rays have cost about as much as building the index (a measured cost model,
+/// placed_mesh.cpp: one pose of a nested pair casts a ray per component, where the index of a
+/// 100k-triangle mesh costs as much as tens of thousands of rays), then builds the index once
+/// (thread-safe) and asks it. Both are exact and give the same answers.
 struct PlacedMeshPair {
-  PlacedMesh a;       ///< A in world coordinates; its rule its index's (`MeshIndex::rule`)
-  PlacedMesh b;       ///< B in its own frame
-  MeshIndex index_a;  ///< A's point location (not built for an empty A)
+  PlacedMesh a;  ///< A in world coordinates; its rule `MeshIndex`'s for it (`solid_rule`)
+  PlacedMesh b;  ///< B in its own frame
 
   PlacedMeshPair() = default;
   /// Prepares validated meshes `a` and `b` (any topology). O(n log n).
   PlacedMeshPair(const Mesh& a, const Mesh& b, const MeshPairOptions& options = {});
+
+  /// Is the world point `q` inside A's solid: exactly `index_a().locate(q) == Location::inside`?
+  /// A must be a solid (`a.solid()`). A point off A's surface is located by the signed crossings
+  /// of the perturbed +x ray through A's hierarchy (`locate_by_ray`) until A's index is built; a
+  /// point on it (where `MeshIndex` tells a buried face from the solid's boundary) by the index.
+  /// O(nodes the ray meets + their triangles), or O(1) once the index is built. Thread safety:
+  /// const; calls may run concurrently (the index is built once, by the call that finds it due).
+  [[nodiscard]] bool a_holds(Vec3 q) const;
+
+  /// A's point-location index (`MeshIndex` of A as placed, its triangles reversed where
+  /// `transform_a` reflects, so that its solid is the image of A's), built on the first call
+  /// that needs it; empty for an empty A. Thread-safe as `a_holds`.
+  [[nodiscard]] const MeshIndex& index_a() const;
+
+  /// Whether A's index has been built (by `index_a`, or by `a_holds` once its rays cost as much).
+  [[nodiscard]] bool index_a_built() const;
+
+ private:
+  struct LazyIndex;  // placed_mesh.cpp: the index, its once_flag and the rays' cost so far
+  std::shared_ptr<LazyIndex> lazy_a_;
 };
 
 }  // namespace contain::inside
