@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "contain/inside/placed_mesh.h"
-#include "contain/inside/placed_ray.h"
 #include "scenes/scenes.h"
 
 namespace contain::inside {
@@ -74,8 +73,8 @@ TEST(PlacedMeshPairLazy, AHoldsAnswersAsTheIndexOnATorusACubeAndNestedShells) {
   const Mesh torus = scenes::torus(1.0, 0.4, 24, 12);
   const Mesh same_way =
       scenes::joined(cube, scenes::box_mesh({{0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}}));
-  const Mesh cavity =
-      scenes::joined(cube, turned_inside_out(scenes::box_mesh({{0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}})));
+  const Mesh cavity = scenes::joined(
+      cube, turned_inside_out(scenes::box_mesh({{0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}})));
   const Mesh touching = scenes::joined(cube, scenes::box_mesh({{1, 0, 0}, {2, 1, 1}}));
   Transform shift;
   shift.t = {0.5, -0.25, 2};
