@@ -104,7 +104,7 @@ bool on_closed_triangle(const Triangle3& t, const QVec3& p) {
 // below 2^10 (normals below 2^21, r below 2^43, u below 2^64), t = 2^-70 keeps the samples clear
 // of every triangle not through p (at least 2^-21 away), h = 2^-100 lets each term dominate the
 // next.
-Location oracle_solid(const Mesh& mesh, Vec3 point) {
+Location star_oracle_solid(const Mesh& mesh, Vec3 point) {
   const QVec3 p = exact(point);
   std::vector<QVec3> normals;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -191,7 +191,7 @@ std::vector<Vec3> ring(int k, double radius, double z, int turns = 1, double cx 
 }
 
 // The closed box [lo, hi] as 12 triangles (outward unless inverted).
-void add_box(Mesh& m, Vec3 lo, Vec3 hi, bool inverted) {
+void add_star_box(Mesh& m, Vec3 lo, Vec3 hi, bool inverted) {
   const auto base = static_cast<std::int32_t>(m.vertices.size());
   for (int i = 0; i < 8; ++i)
     m.vertices.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
@@ -225,7 +225,7 @@ TEST(SurfaceStar, ConeApexesOfDegree3To128AreBoundaryAloneInsideBuriedAndOutside
     Mesh alone, buried, inverted;
     add_cone(alone, {0, 0, 20}, {0, 0, -1}, r, false);
     buried = alone;
-    add_box(buried, {-2, -2, 18}, {2, 2, 22}, false);  // the apex deep in a box
+    add_star_box(buried, {-2, -2, 18}, {2, 2, 22}, false);  // the apex deep in a box
     add_cone(inverted, {0, 0, 20}, {0, 0, -1}, r, true);
     const std::array<std::pair<const Mesh*, Location>, 3> cases{{{&alone, Location::boundary},
                                                                  {&buried, Location::inside},
@@ -234,7 +234,7 @@ TEST(SurfaceStar, ConeApexesOfDegree3To128AreBoundaryAloneInsideBuriedAndOutside
       const Location got = locate_everywhere(*mesh, {0, 0, 20});
       EXPECT_EQ(got, expected) << "degree " << k;
       if (k <= 12) {  // the oracle's samples grow with the square of the degree
-        EXPECT_EQ(got, oracle_solid(*mesh, {0, 0, 20})) << "degree " << k;
+        EXPECT_EQ(got, star_oracle_solid(*mesh, {0, 0, 20})) << "degree " << k;
       }
     }
   }
@@ -248,7 +248,7 @@ TEST(SurfaceStar, FlatFansOfDegree3To128MatchTheOracleUpToDegree16) {
     Mesh alone, buried, cancelled;
     add_cone(alone, {0, 0, 20}, {0, 0, 0}, r, false);
     buried = alone;
-    add_box(buried, {-2, -2, -2}, {2, 2, 2}, false);
+    add_star_box(buried, {-2, -2, -2}, {2, 2, 2}, false);
     cancelled = alone;
     std::vector<Vec3> reversed(r.rbegin(), r.rend());
     add_cone(cancelled, {0, 0, -20}, {0, 0, 0}, reversed, false);
@@ -257,7 +257,7 @@ TEST(SurfaceStar, FlatFansOfDegree3To128MatchTheOracleUpToDegree16) {
     EXPECT_EQ(locate_everywhere(cancelled, {0, 0, 0}), Location::inside) << k;
     if (k <= 16) {
       for (const Mesh* m : {&alone, &buried, &cancelled})
-        EXPECT_EQ(locate_everywhere(*m, {0, 0, 0}), oracle_solid(*m, {0, 0, 0})) << k;
+        EXPECT_EQ(locate_everywhere(*m, {0, 0, 0}), star_oracle_solid(*m, {0, 0, 0})) << k;
     }
   }
 }
@@ -280,14 +280,14 @@ TEST(SurfaceStar, PinchedApexesOfTwoConesMatchTheOracle) {
     add_cone(meshes[3], {0, 0, 0}, {0, 0, 11}, wide, true);
     add_cone(meshes[3], {0, 0, 0}, {0, 0, 11}, wide, false);
     meshes[4] = meshes[0];
-    add_box(meshes[4], {-1, -1, -1}, {1, 1, 1}, false);
+    add_star_box(meshes[4], {-1, -1, -1}, {1, 1, 1}, false);
     const Location expected[5] = {Location::boundary, Location::boundary, Location::boundary,
                                   Location::outside, Location::inside};
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const Location got = locate_everywhere(meshes[i], {0, 0, 0});
       EXPECT_EQ(got, expected[i]) << "case " << i << " degree " << k;
       if (k <= 8) {
-        EXPECT_EQ(got, oracle_solid(meshes[i], {0, 0, 0})) << "case " << i << " " << k;
+        EXPECT_EQ(got, star_oracle_solid(meshes[i], {0, 0, 0})) << "case " << i << " " << k;
       }
     }
   }
@@ -302,12 +302,12 @@ TEST(SurfaceStar, FoldedFansWhoseLinkCrossesItselfMatchTheOracle) {
     Mesh star, shifted, deeper;
     add_cone(star, {0, 0, 10}, {0, 0, -1}, r, false);
     shifted = star;
-    add_box(shifted, {-1, -1, 9}, {1, 1, 11}, true);
+    add_star_box(shifted, {-1, -1, 9}, {1, 1, 11}, true);
     deeper = shifted;
-    add_box(deeper, {-2, -2, 8}, {2, 2, 12}, true);
+    add_star_box(deeper, {-2, -2, 8}, {2, 2, 12}, true);
     for (const Mesh* m : {&star, &shifted, &deeper}) {
       for (const Vec3 p : {Vec3{0, 0, 10}, Vec3{0, 0, -1}, r[0], r[1]})
-        EXPECT_EQ(locate_everywhere(*m, p), oracle_solid(*m, p))
+        EXPECT_EQ(locate_everywhere(*m, p), star_oracle_solid(*m, p))
             << k << "/" << turns << " " << where(p);
     }
   }
@@ -337,7 +337,7 @@ TEST(SurfaceStar, EdgesSharedBy4To24TrianglesMatchTheOracle) {
       }
       if (m.triangles.empty()) continue;
       for (const Vec3 p : {Vec3{0, 0, 2}, Vec3{0, 0, 0}, Vec3{0, 0, 4}})
-        EXPECT_EQ(locate_everywhere(m, p), oracle_solid(m, p))
+        EXPECT_EQ(locate_everywhere(m, p), star_oracle_solid(m, p))
             << k << " " << trial << " " << where(p);
     }
   }
@@ -365,7 +365,7 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
     }
     if (rng() % 2 == 0) {
       const Vec3 lo = point();
-      add_box(m, lo, {lo.x + 2, lo.y + 2, lo.z + 2}, rng() % 3 == 0);
+      add_star_box(m, lo, {lo.x + 2, lo.y + 2, lo.z + 2}, rng() % 3 == 0);
     }
     const MeshIndex index(m), direct(m, {.queries = 1}),
         coarse(m, {.cells_per_triangle = 0.1, .min_cells = 1, .max_cells = 8});
@@ -386,7 +386,7 @@ TEST(SurfaceStar, RandomDegenerateStarsMatchTheOracleAndTheCsgSampler) {
       const Location got = index.locate(p);
       ASSERT_EQ(direct.locate(p), got) << trial << ": " << where(p);
       ASSERT_EQ(coarse.locate(p), got) << trial << ": " << where(p);
-      ASSERT_EQ(got, oracle_solid(m, p)) << trial << ": " << where(p);
+      ASSERT_EQ(got, star_oracle_solid(m, p)) << trial << ": " << where(p);
       ASSERT_EQ(got, solid->locate(p)) << trial << ": " << where(p);
       ++checked;
     }
@@ -402,7 +402,7 @@ TEST(SurfaceStar, ACsgMeshLeafAtAnApexOfDegree64ReadsTheStarOfItsIndex) {
   Mesh alone, buried;
   add_cone(alone, {0, 0, 20}, {0, 0, -1}, r, false);
   buried = alone;
-  add_box(buried, {-2, -2, 18}, {2, 2, 22}, false);
+  add_star_box(buried, {-2, -2, 18}, {2, 2, 22}, false);
   const Box3 around{{-400, -400, -10}, {400, 400, 30}};
   const Vec3 apex{0, 0, 20};
   for (const Mesh* m : {&alone, &buried}) {
