@@ -136,11 +136,13 @@ class PointStore {
 inline constexpr std::uint64_t no_edge = ~std::uint64_t{0};
 
 /// One use of an undirected edge by a face: the edge's key, the face, and its corner k (the
-/// edge runs from corner k to corner k + 1).
+/// edge runs from corner k to corner k + 1). 16 bytes: faces are numbered in 32 bits as points
+/// are, and the arrays of every use (three corners of every face) are a large part of the
+/// labels', merging's and sheets' memory traffic.
 struct EdgeUse {
   std::uint64_t key;
-  std::size_t face;
-  int k;
+  std::uint32_t face;
+  std::int32_t k;
   bool operator<(const EdgeUse& o) const {
     return key != o.key ? key < o.key : (face != o.face ? face < o.face : k < o.k);
   }
@@ -171,8 +173,8 @@ template <class Corners>
     const auto& v = corners(f);
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int32_t a = v[k], b = v[(k + 1) % 3];
-      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {edge_key(a, b), f,
-                                                                static_cast<int>(k)};
+      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {
+          edge_key(a, b), static_cast<std::uint32_t>(f), static_cast<std::int32_t>(k)};
     }
   }
   // Each point's uses (about six on a mesh) sorted by insertion, where std::sort's set-up per

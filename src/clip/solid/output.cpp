@@ -144,14 +144,20 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refin
   }
   scale = std::max(scale, std::numeric_limits<double>::min());
   const Faces faces = merge_coplanar(soup, boundary, store);
-  Result<Mesh> mesh = snap_round(faces, store, scale);
+  std::size_t rounds = 0;
+  Result<Mesh> mesh = snap_round(faces, store, scale, &rounds);
+  bool inputs_snapped = false;
   if (!mesh && mesh.error().kind == ErrorKind::degenerate) {
     mesh = snap_inputs(soup, op, scale, faces, store, mesh.error());
+    inputs_snapped = true;
   }
   if (!mesh) return mesh.error();
-  // Written positions that are not the nearest doubles of an exact point of the result.
+  // Written positions that are not the nearest doubles of an exact point of the result. When the
+  // first written mesh passed (no round, inputs not snapped), each vertex is the nearest doubles
+  // of a face point's representative, the first point of the store with those doubles, which
+  // moved_count finds marked: none moved, and the lookup of every vertex is skipped.
   MeshBooleanResult result;
-  result.moved = moved_count(faces, store, mesh->vertices);
+  result.moved = rounds == 0 && !inputs_snapped ? 0 : moved_count(faces, store, mesh->vertices);
   result.mesh = std::move(*mesh);
   result.shells = count_shells(result.mesh);
   result.volume = signed_volume(result.mesh);

@@ -334,12 +334,14 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
 
 }  // namespace
 
-Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale) {
+Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale,
+                        std::size_t* rounds) {
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
   std::vector<std::int32_t> crossing;
   Status valid = check_written(written.mesh, written.kept, &crossing);
   const std::size_t limit = 2 * written.mesh.triangles.size() + 64;
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
+    if (rounds != nullptr) *rounds = round + 1;
     Result<Written> next = resolved(written.mesh, crossing, round_levels[round], scale, limit);
     if (!next) return next.error();
     written = std::move(*next);

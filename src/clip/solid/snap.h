@@ -43,8 +43,11 @@ struct BoundaryFaces {
 /// arrangement computed exactly again (its crossings and overlaps resolved as a union, only the
 /// pairs of the triangles the check named intersected) and rounded, then with points merged on
 /// coarser grids, for a bounded number of rounds. `scale` is the largest input coordinate's
-/// magnitude. Errors: `ErrorKind::degenerate` when no round passes.
-[[nodiscard]] Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale);
+/// magnitude; `rounds`, when given, receives the number of repair rounds run (0: the faces
+/// written at their nearest doubles passed). Errors: `ErrorKind::degenerate` when no round
+/// passes.
+[[nodiscard]] Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale,
+                                      std::size_t* rounds = nullptr);
 
 /// The leader (smallest index) of each point's cluster: points within `h` of each other in every
 /// coordinate joined transitively (the hot cells of a snap round). nullopt when a cluster would
