@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "contain/core/next_double.h"
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/bounded.h"
 #include "contain/predicates/unit_roundoff.h"
@@ -36,12 +37,9 @@ constexpr LD kU = unit_roundoff<LD>;
 // boundary is DBL_MAX + 2^970 (half an ulp of DBL_MAX), where IEEE 754 starts rounding to
 // infinity. Each midpoint has at most 54 significant bits, so it is exact in long double
 // (64-bit significand) and in BigFloat.
-inline double next_up(double c) {
-  return std::nextafter(c, kInf);
-}
-inline double next_down(double c) {
-  return std::nextafter(c, -kInf);
-}
+// The neighbours of a candidate, inline (contain/core/next_double.h).
+using contain::next_down;
+using contain::next_up;
 constexpr double kHalfUlpOfMax = 0x1p970;
 
 // The midpoint between c and its neighbour above (c < +inf).

@@ -6,6 +6,7 @@
 
 #include "clip/solid/exact_point.h"
 
+#include "contain/core/next_double.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/rounded_crossing.h"
 
@@ -37,10 +38,10 @@ struct Interval {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 double down(double x) {
-  return std::nextafter(x, -infinity);
+  return next_down(x);
 }
 double up(double x) {
-  return std::nextafter(x, infinity);
+  return next_up(x);
 }
 
 Interval operator-(Interval a, Interval b) {
@@ -193,9 +194,8 @@ double nearest_quotient(const BigFloat& x, const BigFloat& w) {
   std::int64_t ex = 0, ew = 0;
   const double mx = x.frexp(ex), mw = w.frexp(ew);
   double c = std::ldexp(mx / mw, static_cast<int>(ex - ew));
-  constexpr double inf = std::numeric_limits<double>::infinity();
   for (int step = 0; step < 64; ++step) {
-    const double below = std::nextafter(c, -inf), above = std::nextafter(c, inf);
+    const double below = next_down(c), above = next_up(c);
     const std::strong_ordering lo = x <=> midpoint_of(below, c) * w;
     const std::strong_ordering hi = x <=> midpoint_of(c, above) * w;
     if (lo < 0) {
