@@ -17,12 +17,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <unordered_map>
 #include <vector>
 
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
+#include "contain/core/next_double.h"
 #include "contain/core/union_find.h"
 #include "contain/values/box.h"
 
@@ -67,12 +67,9 @@ int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
 
 std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const ExactPoint& p,
                                  Vec3 near, int s) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
   // The exact point is within half an ulp of `near`: the boxes that may hold a crossing.
-  const Vec3 lo{std::nextafter(near.x, -inf), std::nextafter(near.y, -inf),
-                std::nextafter(near.z, -inf)};
-  const Vec3 hi{std::nextafter(near.x, inf), std::nextafter(near.y, inf),
-                std::nextafter(near.z, inf)};
+  const Vec3 lo{next_down(near.x), next_down(near.y), next_down(near.z)};
+  const Vec3 hi{next_up(near.x), next_up(near.y), next_up(near.z)};
   const auto reaches = [&](const Box3& b) {
     return b.max.x >= lo.x && b.min.y <= hi.y && b.max.y >= lo.y && b.min.z <= hi.z &&
            b.max.z >= lo.z;
