@@ -16,6 +16,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/shapes/mesh_closure.h"
+#include "timings.h"
 
 namespace contain::cli {
 namespace {
@@ -103,6 +104,7 @@ Result<clip::MeshBooleanResult> compute(const ClipBooleanOptions& b, const ClipS
   if (!s.csg.empty()) {
     auto tree = io::read_csg_json(s.csg);
     if (!tree) return tree.error();
+    enter_phase(Phase::query);
     auto result = clip::csg_to_mesh(*tree);
     if (!result) {
       Error e = result.error();
@@ -119,6 +121,7 @@ Result<clip::MeshBooleanResult> compute(const ClipBooleanOptions& b, const ClipS
     if (!mesh) return mesh.error();
     solids.push_back(std::move(*mesh));
   }
+  enter_phase(Phase::query);
   return solids_boolean(solids, *paths, b.op);
 }
 
@@ -143,6 +146,7 @@ bool clip_solid_requested(const ClipBooleanOptions& b, const ClipSolidOptions& s
 }
 
 int emit_mesh(const Mesh& mesh, const std::string& out) {
+  enter_phase(Phase::write);
   if (out.empty() || out == "-") return emit(io::format_mesh(mesh, io::MeshFormat::off), "");
   const Status written = io::write_mesh(mesh, out);
   if (!written) return report(written.error());
