@@ -173,3 +173,30 @@ def test_the_command_answers_from_an_index_python_saved(tmp_path, cli):
                          capture_output=True, text=True, check=True)
     words = {"in": 1, "on": 0, "out": -1}
     assert np.array_equal([words[w] for w in run.stdout.split()], index.locate(points))
+
+
+def star_wkt(spikes=1000):
+    """A star of long spikes through the centre's neighbourhood: each edge crosses many cells."""
+    angles = np.arange(2 * spikes) * np.pi / spikes
+    radii = np.where(np.arange(2 * spikes) % 2 == 0, 10.0, 0.5)
+    xy = np.stack([radii * np.cos(angles), radii * np.sin(angles)], axis=1)
+    ring = ", ".join(f"{x!r} {y!r}" for x, y in np.vstack([xy, xy[:1]]))
+    return f"POLYGON (({ring}))", xy
+
+
+@pytest.mark.parametrize("fill", ["even_odd", "positive"])
+def test_a_few_point_polygon_index_is_one_cell_and_answers_saves_and_pickles_as_the_grid(
+        tmp_path, fill):
+    wkt, corners = star_wkt()
+    grid = contain.PolygonIndex(wkt, fill=fill)
+    few = contain.PolygonIndex(wkt, fill=fill, queries=3)
+    assert few.stats["cells"] == 1 and grid.stats["cells"] > 1
+    rng = np.random.default_rng(11)
+    points = np.concatenate([rng.uniform(-11, 11, size=(3000, 2)), corners,
+                             (corners[:-1] + corners[1:]) / 2])  # vertices, edge midpoints
+    expected = grid.locate(points)
+    assert (expected == 0).sum() > 0 and (expected == 1).sum() > 0 and (expected == -1).sum() > 0
+    few.save(tmp_path / "few.cidx")
+    for index in (few, contain.PolygonIndex.load(tmp_path / "few.cidx"),
+                  pickle.loads(pickle.dumps(few))):
+        assert np.array_equal(index.locate(points), expected)
