@@ -92,20 +92,29 @@ struct Builder {
     const auto per_axis = static_cast<std::size_t>(bins);
     const std::size_t spare = 3 * per_axis;  // the second set of bins
     std::array<std::array<std::uint64_t, 4>, 3> mask{};
+    // Plain pointers and a copy of the binning: a store of a byte (item_bin) may alias
+    // anything, so members read through `this` were loaded again after each one.
+    const std::array<Binning, 3> axes = binning;
+    const std::int32_t* const order = items.data();
+    const Vec3* const centre = centroids.data();
+    const Box3* const box_of = boxes.data();
+    std::uint8_t* const bin_of_item = item_bin.data();
+    std::int32_t* const count = bin_count.data();
+    Box3* const bin_boxes = bin_box.data();
     for (std::size_t k = begin; k < end; ++k) {
-      const auto item = static_cast<std::size_t>(items[k]);
-      const Vec3 c = centroids[item];
-      const Box3& b = boxes[item];
+      const auto item = static_cast<std::size_t>(order[k]);
+      const Vec3 c = centre[item];
+      const Box3& b = box_of[item];
       const std::size_t set = (k & 1U) != 0 ? spare : 0;
       for (std::size_t axis = 0; axis < 3; ++axis) {
         if (!usable[axis]) continue;
-        const auto bin =
-            static_cast<std::size_t>(binning[axis].bin_of(axis_of(c, static_cast<int>(axis))));
-        item_bin[3 * item + axis] = static_cast<std::uint8_t>(bin);
-        mask[axis][bin >> 6U] |= std::uint64_t{1} << (bin & 63U);
-        const std::size_t slot = set + axis * per_axis + bin;
-        bin_count[slot]++;
-        bin_box[slot].expand(b);
+        const auto at =
+            static_cast<std::size_t>(axes[axis].bin_of(axis_of(c, static_cast<int>(axis))));
+        bin_of_item[3 * item + axis] = static_cast<std::uint8_t>(at);
+        mask[axis][at >> 6U] |= std::uint64_t{1} << (at & 63U);
+        const std::size_t slot = set + axis * per_axis + at;
+        count[slot]++;
+        bin_boxes[slot].expand(b);
       }
     }
     for (std::size_t axis = 0; axis < 3; ++axis) {
