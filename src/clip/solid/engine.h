@@ -270,9 +270,5 @@ struct Sheets {
 };
 [[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                                      const PointStore& store);
-[[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
-                                                     const std::vector<TriangleWork>& work,
-                                                     const FaceLabels& labels, PointStore& store,
-                                                     Op op);
 
 }  // namespace contain::clip::solid

@@ -134,10 +134,8 @@ BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
   return out;
 }
 
-Result<MeshBooleanResult> write_result(const Soup& soup, const Refinement& refinement,
-                                       const std::vector<TriangleWork>& work,
-                                       const FaceLabels& labels, PointStore& store, Op op) {
-  const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
+Result<MeshBooleanResult> write_result(const Soup& soup, const BoundaryFaces& boundary,
+                                       PointStore& store, Op op) {
   double scale = 0.0;
   for (const Vec3 v : soup.vertices) {
     scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});

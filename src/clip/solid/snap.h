@@ -32,6 +32,12 @@ struct BoundaryFaces {
                                            const FaceLabels& labels, const PointStore& store,
                                            Op op);
 
+/// The result of `op` with the faces `boundary` (boundary_faces): merged where coplanar,
+/// written, checked and repaired (output.cpp).
+[[nodiscard]] Result<MeshBooleanResult> write_result(const Soup& soup,
+                                                     const BoundaryFaces& boundary,
+                                                     PointStore& store, Op op);
+
 /// The faces with every region of adjacent faces in one plane (same orientation, joined across
 /// edges held by just those two faces) re-triangulated without the points inside it that no
 /// other face uses. Adds the corners of enclosing triangles to `store`.
