@@ -16,6 +16,7 @@
 #include "contain/io/mesh_io.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/shapes/mesh_closure.h"
+#include "process_memory.h"
 #include "timings.h"
 
 namespace contain::cli {
@@ -155,6 +156,7 @@ int emit_mesh(const Mesh& mesh, const std::string& out) {
 
 int run_clip_solid(const ClipBooleanOptions& b, const ClipSolidOptions& s, const std::string& out) {
   if (Status refused = refuse_options(b, s, out); !refused) return report(refused.error());
+  keep_freed_memory_for_reuse();  // the engine's stages drop large arrays one after another
   auto result = compute(b, s);
   if (!result) return report(result.error());
   const int written = emit_mesh(result->mesh, out);

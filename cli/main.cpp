@@ -7,13 +7,11 @@
 #include <vector>
 
 #include "common.h"
-#include "process_memory.h"
 #include "timings.h"
 #include "verbs.h"
 
 int main(int argc, char** argv) {
   using namespace contain::cli;
-  tune_process_memory();
   CLI::App app{
       "contain: exact point containment, collision detection and clipping in 2D and 3D.\n"
       "Answers are exact on the given doubles: 'on' means exactly on the boundary.",
