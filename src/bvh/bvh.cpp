@@ -149,7 +149,7 @@ struct Builder {
   // An empty bin changes neither side's box nor count, so a boundary next to it costs what the
   // boundary at the next non-empty bin costs, which a strict `<` never prefers: only the
   // boundaries between consecutive non-empty bins are costed, in ascending order, and the
-  // split is the one a sweep over every bin boundary takes (bvh_test keeps that sweep and
+  // split is the one a sweep over every bin boundary takes (sah_build_test keeps that sweep and
   // compares the trees).
   void sweep(int axis, double& best_cost, int& best_axis, int& best_split) {
     const std::vector<int>& used = filled[static_cast<std::size_t>(axis)];

@@ -40,18 +40,18 @@ Result<T> named(Result<T> result, const std::string& path) {
 Status write_pieces(std::span<const std::span<const std::byte>> pieces, const std::string& path) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
   if (fd < 0) return io_error(path, "cannot create");
-  std::vector<iovec> todo;
-  todo.reserve(pieces.size());
+  std::vector<iovec> pending;
+  pending.reserve(pieces.size());
   off_t length = 0;
   for (const std::span<const std::byte> piece : pieces) {
     if (piece.empty()) continue;
-    todo.push_back({const_cast<std::byte*>(piece.data()), piece.size()});
+    pending.push_back({const_cast<std::byte*>(piece.data()), piece.size()});
     length += static_cast<off_t>(piece.size());
   }
   std::size_t next = 0;  // the first piece not yet written whole
-  while (next < todo.size()) {
-    const auto count = static_cast<int>(std::min<std::size_t>(todo.size() - next, IOV_MAX));
-    const ssize_t written = ::writev(fd, &todo[next], count);
+  while (next < pending.size()) {
+    const auto count = static_cast<int>(std::min<std::size_t>(pending.size() - next, IOV_MAX));
+    const ssize_t written = ::writev(fd, &pending[next], count);
     if (written < 0 && errno == EINTR) continue;
     if (written <= 0) {
       const Error error = io_error(path, "cannot write");
@@ -59,11 +59,11 @@ Status write_pieces(std::span<const std::span<const std::byte>> pieces, const st
       return error;
     }
     auto left = static_cast<std::size_t>(written);
-    while (next < todo.size() && left >= todo[next].iov_len)
-      left -= todo[next++].iov_len;
+    while (next < pending.size() && left >= pending[next].iov_len)
+      left -= pending[next++].iov_len;
     if (left > 0) {  // part of a piece: the rest of it next
-      todo[next].iov_base = static_cast<char*>(todo[next].iov_base) + left;
-      todo[next].iov_len -= left;
+      pending[next].iov_base = static_cast<char*>(pending[next].iov_base) + left;
+      pending[next].iov_len -= left;
     }
   }
   struct stat st {};
