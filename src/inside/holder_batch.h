@@ -13,6 +13,7 @@
 
 #include "contain/bvh/bvh.h"
 #include "contain/core/parallel.h"
+#include "contain/core/sort_few.h"
 #include "contain/inside/holders.h"
 
 namespace contain::inside::detail {
@@ -62,25 +63,6 @@ HolderTable holder_table(std::span<const Point> points, const BatchOptions& opti
   return table;
 }
 
-// Sorts the holders appended since `first` by shape number (a traversal finds them in tree
-// order); insertion sort for the usual few.
-inline void sort_holders(std::vector<Holder>& out, std::size_t first) {
-  if (out.size() - first > 32) {
-    std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-              [](const Holder& a, const Holder& b) { return a.shape < b.shape; });
-    return;
-  }
-  for (std::size_t i = first + 1; i < out.size(); ++i) {
-    const Holder h = out[i];
-    std::size_t j = i;
-    while (j > first && out[j - 1].shape > h.shape) {
-      out[j] = out[j - 1];
-      --j;
-    }
-    out[j] = h;
-  }
-}
-
 // Appends the holders of `point` to `out`: the items of `tree` in leaves whose boxes
 // `meets(box)` accepts are asked `indexes[item].locate(point)`; shape numbers ascending.
 template <class Indexes, class Point, class Meets>
@@ -93,7 +75,9 @@ void append_holders(const bvh::Bvh& tree, const Indexes& indexes, Point point, M
                         if (where != Location::outside) out.push_back({k, where});
                         return bvh::Visit::proceed;
                       });
-  sort_holders(out, first);
+  // A traversal finds a point's holders in tree order: by shape number (usually a few).
+  sort_few(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), 32,
+           [](const Holder& a, const Holder& b) { return a.shape < b.shape; });
 }
 
 }  // namespace contain::inside::detail

@@ -8,6 +8,8 @@
 #include <tuple>
 #include <vector>
 
+#include "contain/core/sort_few.h"
+
 namespace contain::shapes {
 namespace {
 
@@ -68,24 +70,6 @@ std::vector<EdgeUse> directed_edges(std::size_t vertices,
   return sorted;
 }
 
-// A vertex's few edge words in increasing order (distinct: each holds its half-edge). An
-// insertion sort in place: std::sort's insertions into so short a range each call memmove,
-// which was a sixth of pairing the half-edges of a large mesh.
-void sort_few(std::vector<std::uint64_t>& words) {
-  constexpr std::size_t kFew = 32;
-  if (words.size() > kFew) {
-    std::sort(words.begin(), words.end());
-    return;
-  }
-  for (std::size_t i = 1; i < words.size(); ++i) {
-    const std::uint64_t w = words[i];
-    std::size_t j = i;
-    for (; j > 0 && words[j - 1] > w; --j)
-      words[j] = words[j - 1];
-    words[j] = w;
-  }
-}
-
 // Every directed edge filed under its lower vertex by its number 3t + k (a counting sort, in
 // 32-bit words: the table and the fill cursor are one array), then each vertex's few edges as
 // words (upper vertex, direction, half-edge) from the high bits down, sorted: the uses of an edge
@@ -130,7 +114,8 @@ bool each_edge_run(std::span<const TriangleIndices> triangles, std::size_t verti
       const auto hi = static_cast<std::uint64_t>(std::max(a, b));
       words.push_back((hi << 32) | (a < b ? 0U : std::uint64_t{1} << 31) | half);
     }
-    sort_few(words);
+    // A vertex's few edge words in increasing order (distinct: each holds its half-edge).
+    sort_few(words.begin(), words.end(), 32);
     for (auto i = words.begin(); i != words.end();) {
       const auto begin = i;
       const std::uint64_t upper = *i >> 32;

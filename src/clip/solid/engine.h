@@ -26,6 +26,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
+#include "contain/core/sort_few.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 
@@ -177,23 +178,10 @@ template <class Corners>
           edge_key(a, b), static_cast<std::uint32_t>(f), static_cast<std::int32_t>(k)};
     }
   }
-  // Each point's uses (about six on a mesh) sorted by insertion, where std::sort's set-up per
-  // point cost more than the sorting; a point of many uses (the apex of a fan) by std::sort.
-  constexpr std::size_t few = 16;
+  // Each point's uses (about six on a mesh; a fan's apex more).
   for (std::size_t i = 0; i + 1 < start.size(); ++i) {
-    const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[i]);
-    const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]);
-    if (start[i + 1] - start[i] > few) {
-      std::sort(first, last);
-      continue;
-    }
-    for (auto it = first; it != last; ++it) {
-      const EdgeUse x = *it;
-      auto hole = it;
-      for (; hole != first && x < *(hole - 1); --hole)
-        *hole = *(hole - 1);
-      *hole = x;
-    }
+    sort_few(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
+             uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]), 16);
   }
   return uses;
 }
