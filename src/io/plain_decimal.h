@@ -5,17 +5,18 @@
 /// 1 or more digits, at most 19 digits in all, no exponent. std::from_chars reads them a byte at
 /// a time, with a branch at each byte whose outcome (is the number over?) the processor cannot
 /// guess; here the digits are found and valued 8 bytes at a time, with no branch on the number's
-/// length, and the double is the decimal's integer m divided by 10^k, proven correctly rounded
-/// by an exact integer comparison. Anything else, or a proof that does not go through, declines
+/// length, and the double is the decimal's integer m divided by 10^k, made correctly rounded by
+/// an exact integer comparison. Anything else, or a case the proof does not cover, declines
 /// (false, nothing consumed) and the caller asks std::from_chars.
 ///
-/// The proof: m < 10^19 < 2^64 and 10^k (k <= 18) are exact, so x = double(m) / 10^k is within
-/// about an ulp of m / 10^k. With x = X 2^E (2^52 <= X < 2^53), x is m / 10^k correctly rounded
-/// when |m 2^(1-E) - 2 X 10^k| < 10^k: the decimal lies within half an ulp of x. (A tie, equality,
-/// cannot happen here: it needs 2^(1-E) to divide 10^k, so 1 - E <= k <= 18, while x < 10^7
-/// gives E <= -29.) That needs 1 <= 1 - E <= 64 for the left side to fit in 128 bits, and X not
-/// 2^52 (below a power of two the ulp halves); otherwise, or when x is not the rounding (about
-/// one number in eight with 17 digits: double(m) rounds first), it declines.
+/// The proof: for m <= 2^53, m and 10^k (k <= 18) are exact doubles and one IEEE division rounds
+/// correctly. Above, x = double(m) / 10^k rounds twice, so it is within 2 ulps of v = m / 10^k.
+/// With x = X 2^E (2^52 <= X < 2^53), the integer d = m 2^(1-E) - 2 X 10^k is 2 10^k t, t = v /
+/// 2^E - X the distance in ulps, so the correctly rounded significand is X + round(t), found by
+/// comparing d with +-10^k and +-3 10^k. A tie (t exactly half an odd integer) cannot happen: it
+/// needs 2^(1-E) to divide 10^k, so 1 - E <= k <= 18, while x < 10^7 gives E <= -29. It declines
+/// when 1 - E is outside [1, 64] (x subnormal or m 2^(1-E) past 128 bits) or the significand
+/// found leaves the binade or is its lower end 2^52 (below a power of two the ulp halves).
 
 #include <algorithm>
 #include <bit>
