@@ -363,18 +363,23 @@ void MeshIndex::list_triangles_by_cell_as() {
   // state_ default-initializes: the scan below writes every cell's state.
   state_ = HugePageVector<std::uint8_t>(cell_count);
   surface_.assign(cell_count, 0);
+  std::size_t surface_cells = 0;  // counted here: cell_start_ sized once, not grown by doubling
   for (const auto& [c, t] : pairs)
-    ++surface_[c];
-  cell_start_.clear();
-  cell_start_.push_back(0);
+    surface_cells += surface_[c]++ == 0 ? 1 : 0;
+  // cell_start_[k] is first surface cell k's list's start, the cursor of the fill below, which
+  // leaves it at the list's end (the next list's start): then the array moves one place up.
+  cell_start_.resize(surface_cells + 1);
   std::uint8_t* const state = state_.data();
   std::uint32_t* const surface = surface_.data();
+  std::uint32_t* const start = cell_start_.data();
+  std::uint32_t numbered = 0, listed_before = 0;
   auto settle_cell = [&](std::size_t c) {
     const std::uint32_t count = surface[c];
     state[c] = count == 0 ? 0 : 2;
     if (count == 0) return;
-    surface[c] = static_cast<std::uint32_t>(cell_start_.size() - 1);
-    cell_start_.push_back(cell_start_.back() + count);
+    surface[c] = numbered;
+    start[numbered++] = listed_before;
+    listed_before += count;
   };
   // Eight cells at a time where all eight are empty (most of the grid: the surface is thin), one
   // by one elsewhere.
@@ -392,31 +397,34 @@ void MeshIndex::list_triangles_by_cell_as() {
   }
   for (std::size_t c = first; c < cell_count; ++c)
     settle_cell(c);
-  std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
+  start[surface_cells] = listed_before;
   if (for_saving_) {
     // The file's lists: the triangles' numbers only (2.5 MB for 100k triangles, mostly in cache).
-    ref_tris_.resize(cell_start_.back());
+    ref_tris_.resize(listed_before);
     std::uint32_t* const to = ref_tris_.data();
     for (const auto& [c, t] : pairs)
-      to[next[surface[c]]++] = t;
+      to[start[surface[c]]++] = t;
   } else {
-    refs_.resize(cell_start_.back());
+    refs_.resize(listed_before);
     // The references land scattered over 18 MB just faulted in (not in cache): each store's line
     // is fetched a few pairs ahead (a prefetch for writing; where a cell's slot moves meanwhile
     // the prefetch is only wasted).
     constexpr std::size_t kAhead = 16;
     for (std::size_t p = 0; p < pairs.size(); ++p) {
       if (p + kAhead < pairs.size()) {
-        __builtin_prefetch(&refs_[next[surface_[pairs[p + kAhead].cell]]], 1);
+        __builtin_prefetch(&refs_[start[surface[pairs[p + kAhead].cell]]], 1);
       }
       const auto [c, t] = pairs[p];
       const Tri& tri = tris_[t];
-      refs_[next[surface_[c]]++] = {
+      refs_[start[surface[c]]++] = {
           {tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
     }
   }
-  stats_.surface_cells = cell_start_.size() - 1;
-  stats_.cell_refs = cell_start_.back();
+  // Each cursor now at its list's end, the next list's start: one place up, and 0 first.
+  std::copy_backward(start, start + surface_cells, start + surface_cells + 1);
+  start[0] = 0;
+  stats_.surface_cells = surface_cells;
+  stats_.cell_refs = listed_before;
 }
 
 // Empty cells. The winding number in an empty cell of a row is the signed count of the perturbed
