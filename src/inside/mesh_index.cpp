@@ -45,27 +45,28 @@ double inner_point(double lo, double hi) {
   return (m >= lo && m < hi) ? m : lo;
 }
 
-// The float next to f (not NaN) towards -infinity or +infinity: std::nextafter without the call
-// into libm (six of these a triangle). Stepping the bits away from or towards zero moves one float
-// (infinity steps to the largest finite float); zero steps to the smallest subnormal.
-float float_step(float f, bool up) {
-  if (f == 0.0F) {
-    return up ? std::numeric_limits<float>::denorm_min()
-              : -std::numeric_limits<float>::denorm_min();
-  }
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>((f > 0.0F) == up ? bits + 1 : bits - 1);
-}
-
+// The largest float <= v and the smallest float >= v (v finite): v rounded to nearest, then
+// where that went past v one float back, by the bits (stepping away from or towards zero moves
+// one float; infinity steps to the largest finite float; a zero steps to the smallest subnormal
+// of v's side). Selects, not branches: whether the nearest float lies above or below v is a coin
+// toss, six a triangle, and a mispredicted branch costs more than both steps.
 float float_below(double v) {
-  auto f = static_cast<float>(v);
-  if (static_cast<double>(f) > v) f = float_step(f, false);
-  return f;
+  const auto f = static_cast<float>(v);
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  const bool negative = (bits >> 31U) != 0;
+  const std::uint32_t away = negative ? bits + 1 : bits - (bits != 0 ? 1U : 0U);
+  const std::uint32_t down = (bits & 0x7FFFFFFFU) == 0 ? 0x80000001U : away;
+  const std::uint32_t past = 0U - static_cast<std::uint32_t>(static_cast<double>(f) > v);
+  return std::bit_cast<float>(bits ^ ((bits ^ down) & past));  // a mask: the compiler keeps no jump
 }
 float float_above(double v) {
-  auto f = static_cast<float>(v);
-  if (static_cast<double>(f) < v) f = float_step(f, true);
-  return f;
+  const auto f = static_cast<float>(v);
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  const bool negative = (bits >> 31U) != 0;
+  const std::uint32_t toward = negative ? bits - 1 : bits + 1;
+  const std::uint32_t up = (bits & 0x7FFFFFFFU) == 0 ? 1U : toward;
+  const std::uint32_t past = 0U - static_cast<std::uint32_t>(static_cast<double>(f) < v);
+  return std::bit_cast<float>(bits ^ ((bits ^ up) & past));
 }
 
 // True only if a closed box and the triangle are certainly disjoint: their projections on the

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -265,6 +268,67 @@ void expect_saved_as_in_memory(const Mesh& mesh, const MeshIndexOptions& options
     joined.insert(joined.end(), piece.begin(), piece.end());
   EXPECT_EQ(image.size(), joined.size());
   EXPECT_TRUE(joined == format_index(fresh)) << mesh.triangles.size() << " triangles";
+}
+
+// The records' float boxes are the tightest around their corners, bit for bit (a zero's sign
+// too): lo the largest float <= the least corner coordinate, hi the least float >= the greatest,
+// for coordinates on floats and between them, zeros of both signs, tiny and subnormal doubles and
+// doubles beyond the float range, in the grid's records and in those of an index for few queries.
+TEST(MeshIndexFile, RecordBoxesAreTheTightestFloatsAroundTheCorners) {
+  const double values[] = {0.0,     -0.0,       1e-300,      -1e-300,   1e-45,
+                           -1e-45,  0.1,        -0.1,        1.0,       -3.0,
+                           1.0 / 3, 16777217.0, -16777217.0, 1.0000001, 3.4028234663852886e38,
+                           3.5e38,  -3.5e38,    1e300,       -1e300,    0x1p-149};
+  std::mt19937_64 rng(99);
+  std::uniform_int_distribution<std::size_t> pick(0, std::size(values) - 1);
+  Mesh mesh;
+  for (int t = 0; t < 60; ++t) {
+    const auto first = static_cast<std::int32_t>(mesh.vertices.size());
+    for (int v = 0; v < 4; ++v)
+      mesh.vertices.push_back({values[pick(rng)], values[pick(rng)], values[pick(rng)]});
+    // A tetrahedron's four faces: closed whatever its corners.
+    mesh.triangles.push_back({first, first + 2, first + 1});
+    mesh.triangles.push_back({first, first + 1, first + 3});
+    mesh.triangles.push_back({first + 1, first + 2, first + 3});
+    mesh.triangles.push_back({first + 2, first, first + 3});
+  }
+  auto below = [](double v) {
+    float f = static_cast<float>(v);
+    if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+  };
+  auto above = [](double v) {
+    float f = static_cast<float>(v);
+    if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+  };
+  for (const std::size_t queries : {std::size_t{0}, std::size_t{1}}) {
+    const std::vector<std::byte> bytes = format_index(MeshIndex(mesh, {.queries = queries}));
+    // After the regime, the parity flag, the report (10 counts, the pinch vertices, the Euler
+    // characteristic, the genus flag and value, the volume): the records' count, the records.
+    std::size_t at = index_header_size + 2 + 10 * 8;
+    std::uint64_t n = 0;
+    std::memcpy(&n, bytes.data() + at, 8);
+    at += 8 + 4 * n + 8 + 1 + 8 + 8;
+    std::memcpy(&n, bytes.data() + at, 8);
+    at += 8;
+    ASSERT_EQ(n, mesh.triangles.size());
+    for (std::size_t r = 0; r < n; ++r, at += 104) {
+      double corner[9];
+      float lo[3], hi[3];
+      std::memcpy(corner, bytes.data() + at, sizeof corner);
+      std::memcpy(lo, bytes.data() + at + 72, sizeof lo);
+      std::memcpy(hi, bytes.data() + at + 84, sizeof hi);
+      for (int d = 0; d < 3; ++d) {
+        const float want_lo = below(std::min({corner[d], corner[3 + d], corner[6 + d]}));
+        const float want_hi = above(std::max({corner[d], corner[3 + d], corner[6 + d]}));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(lo[d]), std::bit_cast<std::uint32_t>(want_lo))
+            << r << " " << d << " " << corner[d] << " " << corner[3 + d] << " " << corner[6 + d];
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(hi[d]), std::bit_cast<std::uint32_t>(want_hi))
+            << r << " " << d << " " << corner[d] << " " << corner[3 + d] << " " << corner[6 + d];
+      }
+    }
+  }
 }
 
 // A torus's connectivity (closed) with its vertices moved at random: self-intersecting,
