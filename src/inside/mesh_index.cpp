@@ -298,12 +298,23 @@ void MeshIndex::read_triangles_by_cell(const Mesh& mesh) {
           ? triangles_by_low_cell<std::uint32_t>(mesh, x_, y_, z_)
           : triangles_by_low_cell<std::size_t>(mesh, x_, y_, z_);
   tris_.reserve(order.size());
-  for (const std::uint32_t t : order) {
-    const TriangleIndices& corners = mesh.triangles[t];
+  // In cell order the triangles' corners are gathered from all over the mesh: each triangle's
+  // indices are fetched 16 triangles ahead, its corners 8 ahead (prefetches: answers unchanged).
+  constexpr std::size_t kIndicesAhead = 16, kCornersAhead = 8;
+  const std::size_t n = order.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + kIndicesAhead < n) __builtin_prefetch(&mesh.triangles[order[i + kIndicesAhead]]);
+    if (i + kCornersAhead < n) {
+      const TriangleIndices& ahead = mesh.triangles[order[i + kCornersAhead]];
+      __builtin_prefetch(&mesh.vertex(ahead[0]));
+      __builtin_prefetch(&mesh.vertex(ahead[1]));
+      __builtin_prefetch(&mesh.vertex(ahead[2]));
+    }
+    const TriangleIndices& corners = mesh.triangles[order[i]];
     tris_.push_back(
         make_tri(mesh.vertex(corners[0]), mesh.vertex(corners[1]), mesh.vertex(corners[2])));
   }
-  stats_.triangles = order.size();
+  stats_.triangles = n;
 }
 
 // Triangle boxes -> closed cells: one pass lists the (cell, triangle) pairs in triangle order, a
