@@ -80,7 +80,7 @@ int fan_axis(Vec3 v, std::span<const Vec3* const> ring) {
 
 // The projection dropping `axis`, coordinates in cyclic order (so that orient2d there is the
 // sign of the normal's `axis` component).
-Vec2 dropped(Vec3 p, int axis) {
+Vec2 projection_of(Vec3 p, int axis) {
   if (axis == 0) return {p.y, p.z};
   if (axis == 1) return {p.z, p.x};
   return {p.x, p.y};
@@ -97,10 +97,10 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
     ring[i] = &soup.vertices[static_cast<std::size_t>(ids[i])];
   const Vec3 apex = soup.vertices[static_cast<std::size_t>(v)];
   const int axis = fan_axis(apex, std::span<const Vec3* const>(ring.data(), n));
-  const Vec2 o = dropped(apex, axis);
+  const Vec2 o = projection_of(apex, axis);
   std::array<Vec2, max_star> p;  // (zeroed first, 256 bytes: cheap beside the tests)
   for (std::size_t i = 0; i < n; ++i)
-    p[i] = dropped(*ring[i], axis);
+    p[i] = projection_of(*ring[i], axis);
   // 1: every sector turns the same strict way (a zero-area triangle fails here).
   const Sign turn = orient2d(o, p[0], p[1]);
   if (turn == Sign::zero) return false;

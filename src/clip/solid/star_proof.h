@@ -1,5 +1,5 @@
 #pragma once
-// Neighbour pairs of the pair stage settled per vertex (rule solid-star-proof below): most
+// Neighbour pairs of the pair stage settled per vertex instead of per pair: most
 // candidate pairs of a soup's triangles are neighbours in one mesh that share a corner or an
 // edge and meet nowhere else (1.61 M of the 1.63 M pairs of a union of two 131k-triangle
 // spheres), each of which `intersect_pair` would settle by its own tests.

@@ -129,7 +129,7 @@ Fan cone(Vec3 apex, const std::vector<Vec3>& ring) {
 }
 
 // n points on the circle of radius 1 at height z(i), the i-th at angle i * step.
-std::vector<Vec3> circle(int n, double step, const std::function<double(int)>& z) {
+std::vector<Vec3> circle_ring(int n, double step, const std::function<double(int)>& z) {
   std::vector<Vec3> ring;
   for (int i = 0; i < n; ++i) {
     ring.push_back({std::cos(i * step), std::sin(i * step), z(i)});
@@ -143,11 +143,11 @@ bool apex_proven(const Fan& fan) {
   return proven_vertices(soup)[0];
 }
 
-constexpr double turn = 2.0 * std::numbers::pi;
+constexpr double full_turn = 2.0 * std::numbers::pi;
 
 TEST(StarProof, ConvexAndConcaveConesAreProvenAndTheirPairsGiveNothing) {
   for (const int n : {3, 4, 6, 9, 16}) {
-    const std::vector<Vec3> ring = circle(n, turn / n, [](int) { return 0.0; });
+    const std::vector<Vec3> ring = circle_ring(n, full_turn / n, [](int) { return 0.0; });
     EXPECT_TRUE(apex_proven(cone({0.1, -0.2, 1.0}, ring))) << n;
     EXPECT_TRUE(apex_proven(cone({0.1, -0.2, -1.0}, ring))) << n;
     // Clockwise as given: the proof does not depend on the orientation.
@@ -159,7 +159,7 @@ TEST(StarProof, ConvexAndConcaveConesAreProvenAndTheirPairsGiveNothing) {
 }
 
 TEST(StarProof, AFlatFanIsNotProvenItsPairsAreCoplanarPartners) {
-  const Fan fan = cone({0, 0, 0}, circle(6, turn / 6, [](int) { return 0.0; }));
+  const Fan fan = cone({0, 0, 0}, circle_ring(6, full_turn / 6, [](int) { return 0.0; }));
   EXPECT_FALSE(apex_proven(fan));
   // Why the proof asks for strict turns: opposite triangles of a flat fan share only the apex,
   // yet the pair stage makes them coplanar partners.
@@ -180,7 +180,8 @@ TEST(StarProof, AFanFoldedOntoItselfIsNotProven) {
 
 TEST(StarProof, ARingWindingTwiceOrThriceIsNotProvenAndItsPairsCross) {
   for (const auto& [n, windings] : {std::pair{5, 2}, std::pair{7, 2}, std::pair{7, 3}}) {
-    const Fan fan = cone({0, 0, 1}, circle(n, windings * turn / n, [](int) { return 0.0; }));
+    const Fan fan =
+        cone({0, 0, 1}, circle_ring(n, windings * full_turn / n, [](int) { return 0.0; }));
     EXPECT_FALSE(apex_proven(fan)) << n << " " << windings;
     // Every sector turns one way and every turn of the ring too: only the winding tells.
     EXPECT_FALSE(star_settled(raw_soup(fan.vertices, fan.triangles), 0)) << n << " " << windings;
@@ -188,18 +189,18 @@ TEST(StarProof, ARingWindingTwiceOrThriceIsNotProvenAndItsPairsCross) {
 }
 
 TEST(StarProof, SaddlesAreNotProven) {
-  // A height field whose turns alternate: the strict convexity fails, so no proof (even though
-  // its pairs happen to be settled: the proof is only sufficient).
-  EXPECT_FALSE(
-      apex_proven(cone({0, 0, 0}, circle(6, turn / 6, [](int i) { return i % 2 ? 0.5 : -0.5; }))));
+  // Height fields whose turns change sign: the strict convexity fails, so no proof (whatever
+  // the pair test would say of their pairs: the proof is only sufficient).
   EXPECT_FALSE(apex_proven(
-      cone({0, 0, 0}, circle(8, turn / 8, [](int i) { return (i / 2) % 2 ? 0.5 : -0.5; }))));
-  // Seen along x (the dominant axis there).
+      cone({0, 0, 0}, circle_ring(6, full_turn / 6, [](int i) { return i % 2 ? 0.5 : -0.5; }))));
+  EXPECT_FALSE(apex_proven(cone(
+      {0, 0, 0}, circle_ring(8, full_turn / 8, [](int i) { return (i / 2) % 2 ? 0.5 : -0.5; }))));
+  // A saddle seen along x (the dominant axis there).
   EXPECT_FALSE(apex_proven(cone({0, 0, 0}, {{1, 1, 0}, {-1, 0, 1}, {1, -1, 0}, {-1, 0, -1}})));
 }
 
 TEST(StarProof, DuplicateAndZeroAreaTrianglesAreNotProven) {
-  Fan fan = cone({0, 0, 1}, circle(6, turn / 6, [](int) { return 0.0; }));
+  Fan fan = cone({0, 0, 1}, circle_ring(6, full_turn / 6, [](int) { return 0.0; }));
   ASSERT_TRUE(apex_proven(fan));
   Fan duplicated = fan;
   duplicated.triangles.push_back(duplicated.triangles[2]);
@@ -222,19 +223,20 @@ TEST(StarProof, DuplicateAndZeroAreaTrianglesAreNotProven) {
 }
 
 TEST(StarProof, OpenStarsTwoConesAtOneApexAndLargeFansAreNotProven) {
-  Fan open = cone({0, 0, 1}, circle(6, turn / 6, [](int) { return 0.0; }));
+  Fan open = cone({0, 0, 1}, circle_ring(6, full_turn / 6, [](int) { return 0.0; }));
   open.triangles.pop_back();
   EXPECT_FALSE(apex_proven(open));
   // Two cones, up and down, sharing the apex: two rings.
-  Fan both = cone({0, 0, 0}, circle(4, turn / 4, [](int) { return 1.0; }));
-  const Fan down = cone({0, 0, 0}, circle(5, turn / 5, [](int) { return -1.0; }));
+  Fan both = cone({0, 0, 0}, circle_ring(4, full_turn / 4, [](int) { return 1.0; }));
+  const Fan down = cone({0, 0, 0}, circle_ring(5, full_turn / 5, [](int) { return -1.0; }));
   for (std::size_t i = 1; i < down.vertices.size(); ++i)
     both.vertices.push_back(down.vertices[i]);
   for (const TriangleIndices& t : down.triangles)
     both.triangles.push_back({0, t[1] + 4, t[2] + 4});
   EXPECT_FALSE(apex_proven(both));
   // More triangles than a star's walk takes: left to the pair test.
-  EXPECT_FALSE(apex_proven(cone({0, 0, 1}, circle(40, turn / 40, [](int) { return 0.0; }))));
+  EXPECT_FALSE(
+      apex_proven(cone({0, 0, 1}, circle_ring(40, full_turn / 40, [](int) { return 0.0; }))));
 }
 
 // The sphere turned about its vertex 0 (a point reflection, so reversed to stay outward): the
