@@ -16,6 +16,7 @@
 #include <system_error>
 #include <vector>
 
+#include "io/plain_decimal.h"
 #include "io/text_scan.h"
 
 namespace contain::io::detail {
@@ -29,6 +30,11 @@ inline bool scan_finite_number(const char*& p, const char* end, double& out) {
   if (start != end && *start == '+') {
     ++start;
     if (start == end || !((*start >= '0' && *start <= '9') || *start == '.')) return false;
+  }
+  // Most coordinates are plain decimals, read at about 1.2 times from_chars' rate: see there.
+  if (end - start >= kPlainDecimalReach && parse_plain_decimal(start, out)) {
+    p = start;
+    return true;
   }
   const auto [ptr, ec] = std::from_chars(start, end, out, std::chars_format::general);
   if (ec == std::errc{}) {

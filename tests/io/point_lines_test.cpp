@@ -156,6 +156,23 @@ TEST(PointLines, TakesExactlyTheEdgeCasesTheTableParserTakes) {
   }
 }
 
+// The same edge cases with coordinate lines after them: numbers with 40 bytes or more behind
+// them go the plain decimals' fast way (io/plain_decimal.h), which must keep the grammar.
+TEST(PointLines, TakesExactlyTheEdgeCasesTheTableParserTakesWithLinesAfterThem) {
+  std::string lines2;
+  std::string lines3;
+  for (int k = 0; k < 4; ++k) {
+    lines2 += "-0.6918522583081116 0.29747557189896234\n";
+    lines3 += "0.11388628377887389 -0.7195816228463322 12.5\n";
+  }
+  for (const std::string& text : edge_cases()) {
+    EXPECT_TRUE(scanner_agrees<Vec2>(text + "\n" + lines2));
+    EXPECT_TRUE(scanner_agrees<Vec3>(text + "\n" + lines3));
+    EXPECT_TRUE(scanner_agrees<Vec2>(lines2 + text + "\n" + lines2));
+    EXPECT_TRUE(scanner_agrees<Vec3>(lines3 + text + "\n" + lines3));
+  }
+}
+
 // A line far longer than any block, with numbers of thousands of digits: the same doubles.
 TEST(PointLines, OverlongLinesAndNumbersOfThousandsOfDigitsReadAsTheTableParserReadsThem) {
   const std::string digits(5000, '7');

@@ -1,0 +1,259 @@
+// The parse rate of point files against its limit, one thread, on a real file of points
+// (CONTAIN_POINTS, default /tmp/data/points3.txt, three numbers a line; CONTAIN_POINTS2 for the
+// 2D file, default /tmp/data/points2.txt), held in memory once:
+//   from_chars_tokens   std::from_chars alone on the numbers, split beforehand (the limit);
+//   from_chars_walk     std::from_chars over the bytes, one blank or newline skipped between
+//                       numbers (the limit with the least possible scanning; no checks);
+//   plain_walk          the same walk through detail::parse_plain_decimal, from_chars where it
+//                       declines (the fast way of the scanner);
+//   memchr_lines        the newlines found with memchr alone (what a line split costs);
+//   scanner             detail::scan_point_lines on the whole text (the reader's hot loop);
+//   mapped              the file memory-mapped in windows (MAP_POPULATE) and scanned;
+//   read_copy           the file read with read() into a 256 KB block, nothing parsed (the copy);
+//   reader              read_points3_chunked from the file, one thread (the whole read phase).
+// Counter: bytes/s of the file's text.
+#include <benchmark/benchmark.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <span>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contain/io/points_io.h"
+#include "io/plain_decimal.h"
+#include "io/point_lines.h"
+
+namespace {
+
+std::string path_of(const char* variable, const char* fallback) {
+  const char* given = std::getenv(variable);
+  return given != nullptr ? given : fallback;
+}
+
+const std::string& points_path(int columns) {
+  static const std::string three = path_of("CONTAIN_POINTS", "/tmp/data/points3.txt");
+  static const std::string two = path_of("CONTAIN_POINTS2", "/tmp/data/points2.txt");
+  return columns == 3 ? three : two;
+}
+
+const std::string& file_text(int columns) {
+  static std::string texts[2];
+  std::string& text = texts[columns - 2];
+  if (text.empty()) {
+    std::ifstream in(points_path(columns), std::ios::binary);
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  return text;
+}
+
+// The numbers' tokens of the text: (offset, length) pairs.
+const std::vector<std::pair<std::uint32_t, std::uint32_t>>& tokens(int columns) {
+  static std::vector<std::pair<std::uint32_t, std::uint32_t>> lists[2];
+  auto& list = lists[columns - 2];
+  if (list.empty()) {
+    const std::string& text = file_text(columns);
+    std::size_t i = 0;
+    while (i < text.size()) {
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\n'))
+        ++i;
+      const std::size_t start = i;
+      while (i < text.size() && text[i] != ' ' && text[i] != '\n')
+        ++i;
+      if (i > start) list.emplace_back(start, i - start);
+    }
+  }
+  return list;
+}
+
+void set_bytes(benchmark::State& state, std::size_t bytes) {
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes));
+}
+
+void from_chars_tokens(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  const auto& list = tokens(columns);
+  std::vector<double> values(list.size());
+  for (auto _ : state) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const char* first = text.data() + list[k].first;
+      std::from_chars(first, first + list[k].second, values[k]);
+    }
+    benchmark::DoNotOptimize(values.data());
+    benchmark::ClobberMemory();
+  }
+  set_bytes(state, text.size());
+}
+
+void from_chars_walk(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  std::vector<double> values(tokens(columns).size() + 1);
+  for (auto _ : state) {
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    double* out = values.data();
+    while (p < end) {
+      p = std::from_chars(p, end, *out++).ptr + 1;
+    }
+    benchmark::DoNotOptimize(values.data());
+    benchmark::ClobberMemory();
+  }
+  set_bytes(state, text.size());
+}
+
+void plain_walk(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  std::vector<double> values(tokens(columns).size() + 1);
+  for (auto _ : state) {
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    double* out = values.data();
+    while (p < end) {
+      if (end - p < contain::io::detail::kPlainDecimalReach ||
+          !contain::io::detail::parse_plain_decimal(p, *out)) {
+        p = std::from_chars(p, end, *out).ptr;
+      }
+      ++out;
+      ++p;
+    }
+    benchmark::DoNotOptimize(values.data());
+    benchmark::ClobberMemory();
+  }
+  set_bytes(state, text.size());
+}
+
+void memchr_lines(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  for (auto _ : state) {
+    std::size_t lines = 0;
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    while (const void* newline = std::memchr(p, '\n', static_cast<std::size_t>(end - p))) {
+      p = static_cast<const char*>(newline) + 1;
+      ++lines;
+    }
+    benchmark::DoNotOptimize(lines);
+  }
+  set_bytes(state, text.size());
+}
+
+template <class Point>
+void scanner(benchmark::State& state) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  const std::string& text = file_text(kColumns);
+  std::vector<Point> points;
+  points.reserve(tokens(kColumns).size() / kColumns + 1);
+  for (auto _ : state) {
+    points.clear();
+    const auto scan = contain::io::detail::scan_point_lines(text, points);
+    benchmark::DoNotOptimize(scan);
+    benchmark::DoNotOptimize(points.data());
+  }
+  set_bytes(state, text.size());
+}
+
+// The file mapped in windows of `state.range(0)` MB (MAP_POPULATE), each window's whole lines
+// scanned (the window overlaps the next by the partial line).
+template <class Point>
+void mapped(benchmark::State& state) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  const std::size_t window = static_cast<std::size_t>(state.range(0)) << 20;
+  std::vector<Point> points;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const int fd = ::open(points_path(kColumns).c_str(), O_RDONLY);
+    struct stat info {};
+    ::fstat(fd, &info);
+    bytes = static_cast<std::size_t>(info.st_size);
+    std::size_t at = 0;
+    while (at < bytes) {
+      const std::size_t page = at & ~std::size_t{4095};
+      const std::size_t length = std::min(window, bytes - page);
+      void* map = ::mmap(nullptr, length, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd,
+                         static_cast<off_t>(page));
+      std::string_view text(static_cast<const char*>(map) + (at - page), length - (at - page));
+      if (page + length < bytes) text = text.substr(0, text.rfind('\n') + 1);
+      points.clear();
+      const auto scan = contain::io::detail::scan_point_lines(text, points);
+      benchmark::DoNotOptimize(scan);
+      at += text.size();
+      ::munmap(map, length);
+    }
+    ::close(fd);
+  }
+  set_bytes(state, bytes);
+}
+
+void read_copy(benchmark::State& state, int columns) {
+  const std::size_t block = std::size_t{256} << 10;
+  std::vector<char> buffer(block);
+  std::size_t total = 0;
+  for (auto _ : state) {
+    const int fd = ::open(points_path(columns).c_str(), O_RDONLY);
+    total = 0;
+    while (true) {
+      const ssize_t got = ::read(fd, buffer.data(), block);
+      if (got <= 0) break;
+      total += static_cast<std::size_t>(got);
+    }
+    ::close(fd);
+    benchmark::DoNotOptimize(buffer.data());
+  }
+  set_bytes(state, total);
+}
+
+template <class Point>
+void reader(benchmark::State& state) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  const std::size_t bytes = file_text(kColumns).size();
+  // The block of the reading: 0 is the reader's own choice, else the argument in KB.
+  const contain::io::ChunkedReading reading{
+      .threads = 1, .block = static_cast<std::size_t>(state.range(0)) << 10};
+  for (auto _ : state) {
+    std::size_t count = 0;
+    const auto consume = [&](std::span<const Point> points, double) { count += points.size(); };
+    contain::Status status = contain::Ok{};
+    if constexpr (kColumns == 3) {
+      status = contain::io::read_points3_chunked(points_path(3), reading, consume);
+    } else {
+      status = contain::io::read_points2_chunked(points_path(2), reading, consume);
+    }
+    if (!status) state.SkipWithError("the file does not read");
+    benchmark::DoNotOptimize(count);
+  }
+  set_bytes(state, bytes);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(from_chars_tokens, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(from_chars_walk, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plain_walk, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(memchr_lines, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(scanner, contain::Vec3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(mapped, contain::Vec3)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(8)->Arg(64);
+BENCHMARK_CAPTURE(read_copy, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(reader, contain::Vec3)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(0)
+    ->Arg(64)
+    ->Arg(128)
+    ->Arg(512)
+    ->Arg(1024);
+BENCHMARK_CAPTURE(from_chars_tokens, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(from_chars_walk, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plain_walk, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(scanner, contain::Vec2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(reader, contain::Vec2)->Unit(benchmark::kMillisecond)->Arg(0);
+
+BENCHMARK_MAIN();
