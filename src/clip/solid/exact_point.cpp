@@ -27,57 +27,21 @@ double coordinate(Vec3 v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
-// An interval of doubles [lo, hi]; every operation rounds its ends outward (one step beyond
-// the round-to-nearest result, which is within half a step of the exact end), so the result
-// encloses every value of the operation on the operands' values. Infinite or NaN ends (overflow)
-// make an interval that decides nothing (`sign_of` answers nothing).
+// An interval of doubles [lo, hi] enclosing a value; infinite ends (overflow) decide nothing.
 struct Interval {
   double lo, hi;
 };
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The filters' operations inlined by force (down, up and the operators of Interval and Wide):
-// gcc kept them as calls, which with their ends' branches were about 0.7 ms (4%) of the 2k
-// sphere union's refinement and check (same arithmetic, same answers).
+// One step beyond a round-to-nearest result, which is within half a step of the exact value.
+// Inlined by force with Wide's operations: gcc kept them as calls, which with their ends'
+// branches were about 0.7 ms (4%) of the 2k sphere union's refinement and check.
 [[gnu::always_inline]] inline double down(double x) {
   return next_down(x);
 }
 [[gnu::always_inline]] inline double up(double x) {
   return next_up(x);
-}
-
-[[gnu::always_inline]] inline Interval operator-(Interval a, Interval b) {
-  if (a.lo == a.hi && b.lo == b.hi) {
-    // Sterbenz and exact cases are common (a point of doubles minus another): still one step.
-    const double d = a.lo - b.lo;
-    return {down(d), up(d)};
-  }
-  return {down(a.lo - b.hi), up(a.hi - b.lo)};
-}
-
-[[gnu::always_inline]] inline Interval operator*(Interval a, Interval b) {
-  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  return {down(std::min(std::min(p[0], p[1]), std::min(p[2], p[3]))),
-          up(std::max(std::max(p[0], p[1]), std::max(p[2], p[3])))};
-}
-
-// The sign when every value of the interval has it; nothing otherwise.
-bool sign_of(Interval a, Sign& s) {
-  if (a.lo > 0.0 && a.lo <= a.hi) {  // false for NaN ends
-    s = Sign::positive;
-    return true;
-  }
-  if (a.hi < 0.0 && a.lo <= a.hi) {
-    s = Sign::negative;
-    return true;
-  }
-  return false;
-}
-
-Interval coordinate_interval(const ExactPoint& p, int i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {p.lo[k], p.hi[k]};
 }
 
 // An enclosure of x / w (w > 0): frexp gives each within a relative 2^-52 (+ 2^-64 from the
@@ -160,14 +124,42 @@ bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
          ((s.p == t.p && s.q == t.q) || (s.p == t.q && s.q == t.p));
 }
 
-// The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
+// The filter's orientation of a, b, c projected by dropping `axis`, or nothing. Each coordinate
+// of a point lies in [lo, lo + r] (r = hi - lo, 0 for a point of doubles), so the determinant
+// D = X1 Y2 - Y1 X2 of the differences X1 = b_u - a_u, Y2 = c_v - a_v, Y1 = b_v - a_v,
+// X2 = c_u - a_u is within |X1| R_Y2 + |Y2| R_X1 + R_X1 R_Y2 + |Y1| R_X2 + |X2| R_Y1 + R_Y1 R_X2
+// of its value at the lower ends (R: the two ends' widths summed), and that value is computed in
+// doubles within (3u + 16u^2) (|X1 Y2| + |Y1 X2|), u = 2^-53 (Shewchuk's orient2d bound). The
+// bound, itself evaluated in doubles from rounded non-negative terms (each within a few u), is
+// raised by 2^-46 relative and 2^-1019 absolute (underflow); an infinite or NaN term decides
+// nothing (every comparison with it fails). One straight evaluation: the interval operations
+// per product, each end rounded outward, cost about twice as much in the refinement.
 bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis,
                        Sign& s) {
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const Interval au = coordinate_interval(a, u), av = coordinate_interval(a, v);
-  const Interval d = (coordinate_interval(b, u) - au) * (coordinate_interval(c, v) - av) -
-                     (coordinate_interval(b, v) - av) * (coordinate_interval(c, u) - au);
-  return sign_of(d, s);
+  const auto u = static_cast<std::size_t>((axis + 1) % 3),
+             v = static_cast<std::size_t>((axis + 2) % 3);
+  const double x1 = b.lo[u] - a.lo[u], y2 = c.lo[v] - a.lo[v];
+  const double y1 = b.lo[v] - a.lo[v], x2 = c.lo[u] - a.lo[u];
+  const double rx1 = (b.hi[u] - b.lo[u]) + (a.hi[u] - a.lo[u]);
+  const double ry2 = (c.hi[v] - c.lo[v]) + (a.hi[v] - a.lo[v]);
+  const double ry1 = (b.hi[v] - b.lo[v]) + (a.hi[v] - a.lo[v]);
+  const double rx2 = (c.hi[u] - c.lo[u]) + (a.hi[u] - a.lo[u]);
+  const double left = x1 * y2, right = y1 * x2;
+  const double det = left - right;
+  const double moved = std::abs(x1) * ry2 + std::abs(y2) * rx1 + rx1 * ry2 + std::abs(y1) * rx2 +
+                       std::abs(x2) * ry1 + ry1 * rx2;
+  constexpr double rounding = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+  const double bound =
+      (rounding * (std::abs(left) + std::abs(right)) + moved) * (1.0 + 0x1p-46) + 0x1p-1019;
+  if (det > bound) {
+    s = Sign::positive;
+    return true;
+  }
+  if (det < -bound) {
+    s = Sign::negative;
+    return true;
+  }
+  return false;
 }
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.

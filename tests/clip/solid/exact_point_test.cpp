@@ -124,6 +124,46 @@ TEST(SolidExactPoint, DegenerateImplicitPointsFallBackToExactZeros) {
   }
 }
 
+// Points off the line through p and an implicit point x on it by k steps of one coordinate (k
+// from 1 to 2^20): orientations from exactly zero to far beyond the filter's bound, with the
+// line's points wide (a midpoint's enclosure is 2^-49 relative) or narrow (a crossing's).
+void expect_exact_off_line(const Known& p, const Known& x) {
+  const Known on = midpoint(p, x);
+  for (double k = 1; k <= 0x1p20; k *= 2) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 v = clip::solid::nearest_double(x.point);
+      double& c = axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+      for (double step = 0; step < k; ++step)
+        c = std::nextafter(c, INFINITY);
+      const Known off = plain(v);
+      expect_exact(p, on, off);
+      expect_exact(on, x, off);
+      expect_exact(off, on, x);
+    }
+  }
+}
+
+TEST(SolidExactPoint, OrientationsJustOffALineOfImplicitPointsMatchTheRationalsAtEveryScale) {
+  std::mt19937_64 rng(31);
+  for (const double s : {1.0, 0x1p-400, 0x1p400}) {
+    int tested = 0;
+    while (tested < 4) {
+      const auto at = [&] { return random_point(rng) * s; };
+      const Vec3 p = at(), q = at();
+      const std::optional<Known> x = crossing(p, q, at(), at(), at());
+      if (!x) continue;
+      ++tested;
+      expect_exact_off_line(plain(p), *x);
+    }
+  }
+  // Products below the doubles' range (the filter must not take an underflowed zero for a sign)
+  // and beyond it (infinite terms decide nothing).
+  for (const double s : {0x1p-1040, 0x1p700}) {
+    const Known a = plain(Vec3{0.3, -0.7, 0.2} * s), b = plain(Vec3{-0.5, 0.25, 0.9} * s);
+    expect_exact_off_line(a, midpoint(a, b));
+  }
+}
+
 // A crossing's nearest doubles (the filtered rounding, BigFloat only where it cannot certify)
 // against the rationals', and its equality with the same point made another way.
 void expect_rounded(const Known& x) {
