@@ -518,6 +518,47 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
   return (pa[0] * m[0] + pa[1] * m[1] + pa[2] * m[2]).sign();
 }
 
+// The determinant of the differences X = q - p, Y = a - p, Z = b - p at the enclosures' lower
+// ends, in doubles. Each monomial of D(x) - D(lower ends) is bounded by the same monomial of
+// P1 - P0, P1 the permanent of |M| + R (M the differences at the lower ends, R the sums of the
+// two ends' widths) and P0 that of |M|; the computed D, P1 and P0 are each within 8u of P1
+// (u = 2^-53; Shewchuk's orient3d bound is 7u + 56u^2 of P0), so |D computed - D exact| <=
+// (P1 - P0 computed) + 2^-47 P1 (64u, for these and the bound's own roundings) + 2^-1000
+// (underflow of degree-3 products). An infinite or NaN term decides nothing.
+std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q, const ExactPoint& a,
+                                      const ExactPoint& b) {
+  std::array<std::array<double, 3>, 3> m{}, r{};
+  const std::array<const ExactPoint*, 3> rows = {&q, &a, &b};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      m[i][k] = rows[i]->lo[k] - p.lo[k];
+      r[i][k] = (rows[i]->hi[k] - rows[i]->lo[k]) + (p.hi[k] - p.lo[k]);
+    }
+  }
+  const auto det = [](const std::array<std::array<double, 3>, 3>& x) {
+    return x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) -
+           x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+           x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
+  };
+  const auto permanent = [](const std::array<std::array<double, 3>, 3>& x) {
+    return x[0][0] * (x[1][1] * x[2][2] + x[1][2] * x[2][1]) +
+           x[0][1] * (x[1][0] * x[2][2] + x[1][2] * x[2][0]) +
+           x[0][2] * (x[1][0] * x[2][1] + x[1][1] * x[2][0]);
+  };
+  std::array<std::array<double, 3>, 3> low{}, high{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      low[i][k] = std::abs(m[i][k]);
+      high[i][k] = low[i][k] + r[i][k];
+    }
+  }
+  const double d = det(m), p0 = permanent(low), p1 = permanent(high);
+  const double bound = (p1 - p0) + 0x1p-47 * p1 + 0x1p-1000;
+  if (d > bound) return Sign::positive;
+  if (d < -bound) return Sign::negative;
+  return std::nullopt;
+}
+
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
   Homogeneous sp;
   const Homogeneous& fp = full(p, sp);
