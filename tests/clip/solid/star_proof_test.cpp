@@ -303,8 +303,9 @@ TEST(StarProof, RandomClosedMeshesProofsAreSound) {
     proven += check_proofs(soup, "sphere " + std::to_string(k));
     vertices += soup.vertices.size();
   }
-  // Not vacuous: the smooth spheres are proven throughout, the others in part.
-  EXPECT_GT(proven, vertices / 3);
+  // Not vacuous: the smooth spheres are proven throughout, the noisy ones in part, the snapped
+  // ones hardly (coplanar neighbours); a fifth in all even in the reduced builds' four cases.
+  EXPECT_GT(proven, vertices / 5);
   EXPECT_LT(proven, vertices);
   // A smooth icosphere: every vertex.
   const Soup smooth = soup_of({icosphere(3, 1.0, {0, 0, 0})});
