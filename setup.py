@@ -62,10 +62,11 @@ class CMakeBuild(build_ext):
         destination = pathlib.Path(self.get_ext_fullpath(ext.name))
         destination.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[-1], destination)
-        # The GDAL plugin travels beside the extension, where contain::io looks for it.
-        plugin = build_dir / "python" / "contain" / "libcontain_gdal.so"
-        if plugin.exists():
-            shutil.copyfile(plugin, destination.parent / plugin.name)
+        # The plugins (GDAL, muparser) travel beside the extension, where contain::io looks.
+        for name in ("libcontain_gdal.so", "libcontain_muparser.so"):
+            plugin = build_dir / "python" / "contain" / name
+            if plugin.exists():
+                shutil.copyfile(plugin, destination.parent / plugin.name)
 
     def configure(self, build_dir):
         build_dir.mkdir(parents=True, exist_ok=True)

@@ -32,11 +32,12 @@ int build_mesh_index(const BuildOptions& o) {
   auto file = io::read_mesh(o.mesh);
   if (!file) return report(file.error());
   enter_phase(Phase::prepare);
-  const inside::MeshIndex index(file->mesh);
+  // Built for saving only: the file's bytes from less memory than an index that answers.
+  const inside::MeshIndexToSave index(file->mesh);
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);
   enter_phase(Phase::write);
-  if (Status s = io::write_index(inside::index_image(index), o.out); !s) return report(s.error());
+  if (Status s = io::write_index(index.image(), o.out); !s) return report(s.error());
   return exit_ok;
 }
 

@@ -28,6 +28,10 @@ endif()
 if(TARGET contain_gdal)
   install(TARGETS contain_gdal LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/contain)
 endif()
+# muparser's plugin likewise (src/io/CMakeLists.txt).
+if(TARGET contain_muparser)
+  install(TARGETS contain_muparser LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/contain)
+endif()
 
 set(contain_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/contain)
 install(EXPORT containTargets NAMESPACE contain:: DESTINATION ${contain_cmake_dir})

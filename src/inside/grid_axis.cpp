@@ -20,4 +20,14 @@ GridAxis::GridAxis(double lo, double hi, int cells)
   if (!std::isfinite(scale_)) scale_ = 0.0;
 }
 
+int GridAxis::first_meeting_searched(double lo) const {
+  const auto first = std::lower_bound(lines_.begin() + 1, lines_.end(), lo) - (lines_.begin() + 1);
+  return static_cast<int>(std::min<std::ptrdiff_t>(first, cells_ - 1));
+}
+
+int GridAxis::last_meeting_searched(double hi) const {
+  const auto last = (std::upper_bound(lines_.begin(), lines_.end() - 1, hi) - lines_.begin()) - 1;
+  return static_cast<int>(std::max<std::ptrdiff_t>(last, 0));
+}
+
 }  // namespace contain::inside

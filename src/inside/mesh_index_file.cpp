@@ -31,6 +31,9 @@ struct MeshIndexFile {
   static Result<MeshIndex> read_grid(MeshIndex index, index_bytes::View<std::uint32_t> surface,
                                      index_bytes::View<std::uint32_t> refs);
   static std::uint64_t fingerprint(const MeshIndex& index);
+  static MeshIndex build_for_saving(const Mesh& mesh, const MeshIndexOptions& options) {
+    return {mesh, options, MeshIndex::ForSaving{}};
+  }
 };
 
 namespace {
@@ -83,7 +86,7 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   // instead: its records are made for the file, member by member into zeroed bytes.
   const bool direct = !index.mesh_.triangles.empty();
   w.reserve((direct ? sizeof(MeshIndex::Tri) * index.mesh_.triangles.size() : 0) +
-            4 * index.refs_.size() + 256);
+            (index.for_saving_ ? 0 : 4 * index.refs_.size()) + 256);
   if (direct) {
     const std::vector<MeshIndex::Tri> records = direct_records(index);
     std::byte* to = w.put_array_in_place<MeshIndex::Tri>(records.size());
@@ -107,10 +110,16 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   // Every cell's word: a surface cell's number, an empty cell's winding number.
   w.put_array_by_reference<std::uint32_t>(index.surface_);
   w.put_array_by_reference<std::uint32_t>(index.cell_start_);
-  std::byte* ref_to = w.put_array_in_place<std::uint32_t>(index.refs_.size());
-  for (const MeshIndex::CellRef& ref : index.refs_) {
-    std::memcpy(ref_to, &ref.tri, sizeof ref.tri);
-    ref_to += sizeof ref.tri;
+  // The lists' triangle numbers: as they lie where the index was built for saving, else taken
+  // from the references.
+  if (index.for_saving_) {
+    w.put_array_by_reference<std::uint32_t>(index.ref_tris_);
+  } else {
+    std::byte* ref_to = w.put_array_in_place<std::uint32_t>(index.refs_.size());
+    for (const MeshIndex::CellRef& ref : index.refs_) {
+      std::memcpy(ref_to, &ref.tri, sizeof ref.tri);
+      ref_to += sizeof ref.tri;
+    }
   }
   const MeshIndex::Stats& s = index.stats_;
   for (std::size_t v : {s.triangles, s.cells, s.surface_cells, s.cell_refs})
@@ -278,6 +287,13 @@ IndexImage index_image(const MeshIndex& index) {
   index_bytes::Writer w;
   MeshIndexFile::write(index, w);
   return index_bytes::finish_image(w, IndexKind::mesh_index, fingerprint(index));
+}
+
+MeshIndexToSave::MeshIndexToSave(const Mesh& mesh, const MeshIndexOptions& options)
+    : index_(MeshIndexFile::build_for_saving(mesh, options)) {}
+
+IndexImage MeshIndexToSave::image() const {
+  return index_image(index_);
 }
 
 std::vector<std::byte> format_index(const MeshIndex& index) {

@@ -1,14 +1,9 @@
 // read_gdal_layer: GDAL is loaded on first use, from the plugin libcontain_gdal.so
 // (io/gdal_plugin.h says why), so that a process reading no GIS layer never loads it.
 //
-// Where the plugin is looked for, first found wins:
-//   1. $CONTAIN_GDAL_PLUGIN, a path, when it is set (then nowhere else);
-//   2. beside the binary that holds this code (the Python extension: its package folder, where
-//      the build and pip put a copy), and in ../<libdir>/contain from it (an installed or moved
-//      bin/contain);
-//   3. the same two beside the running executable (/proc/self/exe);
-//   4. where the build tree has it, then where `cmake --install` puts it (both compiled in;
-//      neither in a build without GDAL).
+// Where the plugin is looked for: io/plugin_search.h, $CONTAIN_GDAL_PLUGIN first, last where the
+// build tree has it, then where `cmake --install` puts it (both compiled in; neither in a build
+// without GDAL).
 // A file that is not the plugin of this very version is passed over, with the reason kept for
 // the error.
 
@@ -25,11 +20,8 @@
 
 #include "contain/io/layer_io.h"
 #include "io/gdal_plugin.h"
+#include "io/plugin_search.h"
 #include "io/text_scan.h"
-
-#ifndef CONTAIN_INSTALL_LIBDIR
-#define CONTAIN_INSTALL_LIBDIR "lib"
-#endif
 
 namespace contain::io {
 namespace {
@@ -45,18 +37,6 @@ struct LoadedPlugin {
   bool built_with_gdal = false;
 };
 
-// Any object of this binary: dladdr names the file it was loaded from.
-const char binary_anchor = 0;
-
-void add_candidates_beside(const fs::path& binary, std::vector<fs::path>& out) {
-  std::error_code error;
-  const fs::path file = fs::canonical(binary, error);
-  if (error) return;
-  out.push_back(file.parent_path() / detail::gdal_plugin_file);
-  out.push_back(file.parent_path().parent_path() / CONTAIN_INSTALL_LIBDIR / "contain" /
-                detail::gdal_plugin_file);
-}
-
 // Where this build's plugin is, compiled in: none in a build without GDAL.
 std::vector<fs::path> compiled_in_paths() {
   std::vector<fs::path> out;
@@ -70,26 +50,8 @@ std::vector<fs::path> compiled_in_paths() {
 }
 
 std::vector<fs::path> candidates() {
-  if (const char* given = std::getenv("CONTAIN_GDAL_PLUGIN"); given != nullptr && *given != 0) {
-    return {fs::path(given)};
-  }
-  std::vector<fs::path> out;
-  Dl_info info{};
-  if (dladdr(&binary_anchor, &info) != 0 && info.dli_fname != nullptr && *info.dli_fname != 0) {
-    add_candidates_beside(info.dli_fname, out);
-  }
-  add_candidates_beside("/proc/self/exe", out);
-  for (fs::path& path : compiled_in_paths())
-    out.push_back(std::move(path));
-  std::vector<fs::path> unique;
-  for (fs::path& path : out) {
-    path = path.lexically_normal();
-    bool seen = false;
-    for (const fs::path& kept : unique)
-      seen = seen || kept == path;
-    if (!seen) unique.push_back(std::move(path));
-  }
-  return unique;
+  return detail::plugin_candidates("CONTAIN_GDAL_PLUGIN", detail::gdal_plugin_file,
+                                   compiled_in_paths());
 }
 
 // Opens `path` if it is this version's plugin; otherwise says why not in `problem`.

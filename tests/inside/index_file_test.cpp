@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -246,6 +249,162 @@ TEST(MeshIndexFile, LoadedIndexSavesTheFreshBytesWhateverItsFileHeldInThePadding
   const auto loaded = parse_mesh_index(crafted);
   ASSERT_TRUE(loaded.ok()) << loaded.error().what();
   EXPECT_EQ(format_index(*loaded), bytes);
+}
+
+// The file of an index built for saving only (MeshIndexToSave: the lists as triangle numbers,
+// no references with boxes) against the file of the index that answers, built from the same
+// mesh and options: byte for byte, with the same regime, report and sizes.
+void expect_saved_as_in_memory(const Mesh& mesh, const MeshIndexOptions& options = {}) {
+  const MeshIndex fresh(mesh, options);
+  const MeshIndexToSave to_save(mesh, options);
+  EXPECT_EQ(to_save.regime(), fresh.regime());
+  EXPECT_EQ(to_save.report().closed(), fresh.report().closed());
+  EXPECT_EQ(to_save.stats().cells, fresh.stats().cells);
+  EXPECT_EQ(to_save.stats().surface_cells, fresh.stats().surface_cells);
+  EXPECT_EQ(to_save.stats().cell_refs, fresh.stats().cell_refs);
+  const IndexImage image = to_save.image();
+  std::vector<std::byte> joined;
+  for (const std::span<const std::byte> piece : image.pieces())
+    joined.insert(joined.end(), piece.begin(), piece.end());
+  EXPECT_EQ(image.size(), joined.size());
+  EXPECT_TRUE(joined == format_index(fresh)) << mesh.triangles.size() << " triangles";
+}
+
+// The records' float boxes are the tightest around their corners, bit for bit (a zero's sign
+// too): lo the largest float <= the least corner coordinate, hi the least float >= the greatest,
+// for coordinates on floats and between them, zeros of both signs, tiny and subnormal doubles and
+// doubles beyond the float range, in the grid's records and in those of an index for few queries.
+TEST(MeshIndexFile, RecordBoxesAreTheTightestFloatsAroundTheCorners) {
+  const double values[] = {0.0,     -0.0,       1e-300,      -1e-300,   1e-45,
+                           -1e-45,  0.1,        -0.1,        1.0,       -3.0,
+                           1.0 / 3, 16777217.0, -16777217.0, 1.0000001, 3.4028234663852886e38,
+                           3.5e38,  -3.5e38,    1e300,       -1e300,    0x1p-149};
+  std::mt19937_64 rng(99);
+  std::uniform_int_distribution<std::size_t> pick(0, std::size(values) - 1);
+  Mesh mesh;
+  for (int t = 0; t < 60; ++t) {
+    const auto first = static_cast<std::int32_t>(mesh.vertices.size());
+    for (int v = 0; v < 4; ++v)
+      mesh.vertices.push_back({values[pick(rng)], values[pick(rng)], values[pick(rng)]});
+    // A tetrahedron's four faces: closed whatever its corners.
+    mesh.triangles.push_back({first, first + 2, first + 1});
+    mesh.triangles.push_back({first, first + 1, first + 3});
+    mesh.triangles.push_back({first + 1, first + 2, first + 3});
+    mesh.triangles.push_back({first + 2, first, first + 3});
+  }
+  auto below = [](double v) {
+    float f = static_cast<float>(v);
+    if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+  };
+  auto above = [](double v) {
+    float f = static_cast<float>(v);
+    if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+  };
+  for (const std::size_t queries : {std::size_t{0}, std::size_t{1}}) {
+    const std::vector<std::byte> bytes = format_index(MeshIndex(mesh, {.queries = queries}));
+    // After the regime, the parity flag, the report (10 counts, the pinch vertices, the Euler
+    // characteristic, the genus flag and value, the volume): the records' count, the records.
+    std::size_t at = index_header_size + 2 + 10 * 8;
+    std::uint64_t n = 0;
+    std::memcpy(&n, bytes.data() + at, 8);
+    at += 8 + 4 * n + 8 + 1 + 8 + 8;
+    std::memcpy(&n, bytes.data() + at, 8);
+    at += 8;
+    ASSERT_EQ(n, mesh.triangles.size());
+    for (std::size_t r = 0; r < n; ++r, at += 104) {
+      double corner[9];
+      float lo[3], hi[3];
+      std::memcpy(corner, bytes.data() + at, sizeof corner);
+      std::memcpy(lo, bytes.data() + at + 72, sizeof lo);
+      std::memcpy(hi, bytes.data() + at + 84, sizeof hi);
+      for (int d = 0; d < 3; ++d) {
+        const float want_lo = below(std::min({corner[d], corner[3 + d], corner[6 + d]}));
+        const float want_hi = above(std::max({corner[d], corner[3 + d], corner[6 + d]}));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(lo[d]), std::bit_cast<std::uint32_t>(want_lo))
+            << r << " " << d << " " << corner[d] << " " << corner[3 + d] << " " << corner[6 + d];
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(hi[d]), std::bit_cast<std::uint32_t>(want_hi))
+            << r << " " << d << " " << corner[d] << " " << corner[3 + d] << " " << corner[6 + d];
+      }
+    }
+  }
+}
+
+// A torus's connectivity (closed) with its vertices moved at random: self-intersecting,
+// overlapping, folded, some of it inverted.
+Mesh jittered_torus(std::mt19937_64& rng, double jitter) {
+  Mesh mesh = scenes::torus(1.0, 0.4, 20, 10);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  for (Vec3& v : mesh.vertices)
+    v = v + Vec3{u(rng), u(rng), u(rng)};
+  return mesh;
+}
+
+TEST(MeshIndexToSave, WritesTheBytesOfTheInMemoryIndexOnRandomMeshesAndGrids) {
+  std::mt19937_64 rng(4242);
+  for (int round = 0; round < 6; ++round) {
+    const Mesh mesh = jittered_torus(rng, round < 3 ? 0.02 : 0.5);
+    expect_saved_as_in_memory(mesh);
+    // Coarse grids (many triangles a cell, big triangles over many cells) and fine ones.
+    expect_saved_as_in_memory(mesh, {.cells_per_triangle = 0.5, .min_cells = 8});
+    expect_saved_as_in_memory(mesh, {.cells_per_triangle = 200.0});
+    expect_saved_as_in_memory(mesh, {.max_cells = 64});
+  }
+  // Integer corners: triangles on grid planes, shared planes, coincident vertices.
+  for (int round = 0; round < 4; ++round) {
+    Mesh mesh = scenes::torus(1.0, 0.4, 12, 6);
+    std::uniform_int_distribution<int> u(0, 4);
+    for (Vec3& v : mesh.vertices)
+      v = Vec3{double(u(rng)), double(u(rng)), double(u(rng))};
+    expect_saved_as_in_memory(mesh);
+    expect_saved_as_in_memory(mesh, {.min_cells = 27});
+  }
+  expect_saved_as_in_memory(scenes::torus(1.0, 0.4, 48, 24));
+}
+
+TEST(MeshIndexToSave, WritesTheBytesOfTheInMemoryIndexOnDegenerateMeshes) {
+  // A flat closed mesh (a square and its reverse: a grid one cell thick), a tetrahedron of
+  // coplanar corners (zero volume), a collapsed one (every corner on a line), a cube with a
+  // duplicated pair of triangles, a cube with one triangle flipped (ray parity), and overlapping
+  // cubes (winding number 2).
+  const Mesh flat{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                  {{0, 1, 2}, {0, 2, 3}, {0, 2, 1}, {0, 3, 2}}};
+  const Mesh coplanar{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}},
+                      {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}};
+  const Mesh collinear{{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}},
+                       {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}};
+  Mesh duplicated = test::grid_cube(0, 1, 2);
+  duplicated.triangles.push_back(duplicated.triangles[0]);
+  duplicated.triangles.push_back(
+      {duplicated.triangles[0][0], duplicated.triangles[0][2], duplicated.triangles[0][1]});
+  Mesh flipped = test::grid_cube(0, 2, 2);
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+  Mesh overlap = test::grid_cube(0, 2, 1);
+  const Mesh other = test::grid_cube(1, 3, 1);
+  const auto shift = static_cast<std::int32_t>(overlap.vertices.size());
+  overlap.vertices.insert(overlap.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (TriangleIndices t : other.triangles)
+    overlap.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  for (const Mesh& mesh : {flat, coplanar, collinear, duplicated, flipped, overlap,
+                           test::octahedron(1.0), test::l_prism()}) {
+    expect_saved_as_in_memory(mesh);
+    expect_saved_as_in_memory(mesh, {.min_cells = 1});
+  }
+}
+
+TEST(MeshIndexToSave, WritesTheBytesOfTheInMemoryIndexWithoutAGrid) {
+  // Empty, vertices without triangles, an open mesh (winding number), and the exact regime for
+  // few queries (the mesh kept, no grid).
+  Mesh open = test::grid_cube(0, 1, 2);
+  open.triangles.pop_back();
+  const Mesh lone_vertices{{{0, 0, 0}, {1, 2, 3}}, {}};
+  for (const Mesh& mesh : {Mesh{}, lone_vertices, open}) {
+    expect_saved_as_in_memory(mesh);
+  }
+  expect_saved_as_in_memory(open, {.winding_accuracy = 2.0});
+  expect_saved_as_in_memory(scenes::torus(1.0, 0.4, 24, 12), {.queries = 1});
+  EXPECT_EQ(MeshIndexToSave(open).regime(), MeshRegime::winding_number);
 }
 
 std::vector<MultiPolygon> random_layer(std::mt19937_64& rng, int count) {

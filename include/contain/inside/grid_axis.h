@@ -69,23 +69,23 @@ class GridAxis {
 
  private:
   // The first cell whose upper line is >= lo (clamped): the guess where exact comparisons with
-  // its two lines prove it (almost always), else a binary search.
+  // its two lines prove it (almost always), else a binary search (out of line: the common path
+  // stays small enough to inline into the build's loops over every triangle).
   [[nodiscard]] int first_meeting(double lo) const {
     const int g = guess(lo);
     const auto i = static_cast<std::size_t>(g);
     if (lines_[i + 1] >= lo && (g == 0 || lines_[i] < lo)) return g;
-    const auto first =
-        std::lower_bound(lines_.begin() + 1, lines_.end(), lo) - (lines_.begin() + 1);
-    return static_cast<int>(std::min<std::ptrdiff_t>(first, cells_ - 1));
+    return first_meeting_searched(lo);
   }
   // The last cell whose lower line is <= hi (clamped), the same way.
   [[nodiscard]] int last_meeting(double hi) const {
     const int g = guess(hi);
     const auto i = static_cast<std::size_t>(g);
     if (lines_[i] <= hi && (g + 1 == cells_ || lines_[i + 1] > hi)) return g;
-    const auto last = (std::upper_bound(lines_.begin(), lines_.end() - 1, hi) - lines_.begin()) - 1;
-    return static_cast<int>(std::max<std::ptrdiff_t>(last, 0));
+    return last_meeting_searched(hi);
   }
+  [[nodiscard]] int first_meeting_searched(double lo) const;
+  [[nodiscard]] int last_meeting_searched(double hi) const;
 
   std::vector<double> lines_;
   double origin_ = 0.0;  // L_0

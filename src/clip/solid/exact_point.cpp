@@ -27,54 +27,21 @@ double coordinate(Vec3 v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
-// An interval of doubles [lo, hi]; every operation rounds its ends outward (one step beyond
-// the round-to-nearest result, which is within half a step of the exact end), so the result
-// encloses every value of the operation on the operands' values. Infinite or NaN ends (overflow)
-// make an interval that decides nothing (`sign_of` answers nothing).
+// An interval of doubles [lo, hi] enclosing a value; infinite ends (overflow) decide nothing.
 struct Interval {
   double lo, hi;
 };
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-double down(double x) {
+// One step beyond a round-to-nearest result, which is within half a step of the exact value.
+// Inlined by force with Wide's operations: gcc kept them as calls, which with their ends'
+// branches were about 0.7 ms (4%) of the 2k sphere union's refinement and check.
+[[gnu::always_inline]] inline double down(double x) {
   return next_down(x);
 }
-double up(double x) {
+[[gnu::always_inline]] inline double up(double x) {
   return next_up(x);
-}
-
-Interval operator-(Interval a, Interval b) {
-  if (a.lo == a.hi && b.lo == b.hi) {
-    // Sterbenz and exact cases are common (a point of doubles minus another): still one step.
-    const double d = a.lo - b.lo;
-    return {down(d), up(d)};
-  }
-  return {down(a.lo - b.hi), up(a.hi - b.lo)};
-}
-
-Interval operator*(Interval a, Interval b) {
-  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  return {down(std::min(std::min(p[0], p[1]), std::min(p[2], p[3]))),
-          up(std::max(std::max(p[0], p[1]), std::max(p[2], p[3])))};
-}
-
-// The sign when every value of the interval has it; nothing otherwise.
-bool sign_of(Interval a, Sign& s) {
-  if (a.lo > 0.0 && a.lo <= a.hi) {  // false for NaN ends
-    s = Sign::positive;
-    return true;
-  }
-  if (a.hi < 0.0 && a.lo <= a.hi) {
-    s = Sign::negative;
-    return true;
-  }
-  return false;
-}
-
-Interval coordinate_interval(const ExactPoint& p, int i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {p.lo[k], p.hi[k]};
 }
 
 // An enclosure of x / w (w > 0): frexp gives each within a relative 2^-52 (+ 2^-64 from the
@@ -157,14 +124,42 @@ bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
          ((s.p == t.p && s.q == t.q) || (s.p == t.q && s.q == t.p));
 }
 
-// The filter's orientation of a, b, c projected by dropping `axis`, or nothing.
+// The filter's orientation of a, b, c projected by dropping `axis`, or nothing. Each coordinate
+// of a point lies in [lo, lo + r] (r = hi - lo, 0 for a point of doubles), so the determinant
+// D = X1 Y2 - Y1 X2 of the differences X1 = b_u - a_u, Y2 = c_v - a_v, Y1 = b_v - a_v,
+// X2 = c_u - a_u is within |X1| R_Y2 + |Y2| R_X1 + R_X1 R_Y2 + |Y1| R_X2 + |X2| R_Y1 + R_Y1 R_X2
+// of its value at the lower ends (R: the two ends' widths summed), and that value is computed in
+// doubles within (3u + 16u^2) (|X1 Y2| + |Y1 X2|), u = 2^-53 (Shewchuk's orient2d bound). The
+// bound, itself evaluated in doubles from rounded non-negative terms (each within a few u), is
+// raised by 2^-46 relative and 2^-1019 absolute (underflow); an infinite or NaN term decides
+// nothing (every comparison with it fails). One straight evaluation: the interval operations
+// per product, each end rounded outward, cost about twice as much in the refinement.
 bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis,
                        Sign& s) {
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const Interval au = coordinate_interval(a, u), av = coordinate_interval(a, v);
-  const Interval d = (coordinate_interval(b, u) - au) * (coordinate_interval(c, v) - av) -
-                     (coordinate_interval(b, v) - av) * (coordinate_interval(c, u) - au);
-  return sign_of(d, s);
+  const auto u = static_cast<std::size_t>((axis + 1) % 3),
+             v = static_cast<std::size_t>((axis + 2) % 3);
+  const double x1 = b.lo[u] - a.lo[u], y2 = c.lo[v] - a.lo[v];
+  const double y1 = b.lo[v] - a.lo[v], x2 = c.lo[u] - a.lo[u];
+  const double rx1 = (b.hi[u] - b.lo[u]) + (a.hi[u] - a.lo[u]);
+  const double ry2 = (c.hi[v] - c.lo[v]) + (a.hi[v] - a.lo[v]);
+  const double ry1 = (b.hi[v] - b.lo[v]) + (a.hi[v] - a.lo[v]);
+  const double rx2 = (c.hi[u] - c.lo[u]) + (a.hi[u] - a.lo[u]);
+  const double left = x1 * y2, right = y1 * x2;
+  const double det = left - right;
+  const double moved = std::abs(x1) * ry2 + std::abs(y2) * rx1 + rx1 * ry2 + std::abs(y1) * rx2 +
+                       std::abs(x2) * ry1 + ry1 * rx2;
+  constexpr double rounding = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+  const double bound =
+      (rounding * (std::abs(left) + std::abs(right)) + moved) * (1.0 + 0x1p-46) + 0x1p-1019;
+  if (det > bound) {
+    s = Sign::positive;
+    return true;
+  }
+  if (det < -bound) {
+    s = Sign::negative;
+    return true;
+  }
+  return false;
 }
 
 // Homogeneous 2D coordinates (u, v, w) of p with `axis` dropped.
@@ -338,19 +333,19 @@ constexpr long double wide_infinity = std::numeric_limits<long double>::infinity
 // significands), so x + (|x| 2^-62 + the least normal), rounded to nearest, is past x by a step
 // at least (the least normal covers x = 0 and the subnormals; a subnormal operand would make
 // every x87 operation take its slow assist).
-Wide outward(long double lo, long double hi) {
+[[gnu::always_inline]] inline Wide outward(long double lo, long double hi) {
   constexpr long double step = 0x1p-62L;
   constexpr long double least = std::numeric_limits<long double>::min();
   return {lo - (std::fabs(lo) * step + least), hi + (std::fabs(hi) * step + least)};
 }
 
-Wide operator+(Wide a, Wide b) {
+[[gnu::always_inline]] inline Wide operator+(Wide a, Wide b) {
   return outward(a.lo + b.lo, a.hi + b.hi);
 }
-Wide operator-(Wide a, Wide b) {
+[[gnu::always_inline]] inline Wide operator-(Wide a, Wide b) {
   return outward(a.lo - b.hi, a.hi - b.lo);
 }
-Wide operator*(Wide a, Wide b) {
+[[gnu::always_inline]] inline Wide operator*(Wide a, Wide b) {
   const long double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
   return outward(std::min(std::min(p[0], p[1]), std::min(p[2], p[3])),
                  std::max(std::max(p[0], p[1]), std::max(p[2], p[3])));
@@ -381,9 +376,9 @@ void to_doubles(Wide x, double lo, double hi, double& out_lo, double& out_hi) {
   }
 }
 
-}  // namespace
-
-ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+// line_plane_enclosed by intervals through every operation: where the segment's ends are not
+// certainly on opposite sides (the straight evaluation's t would not lie in [0, 1]).
+ExactPoint line_plane_intervals(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const auto at = [](Vec3 v) {
     return std::array<Wide, 3>{Wide{v.x, v.x}, Wide{v.y, v.y}, Wide{v.z, v.z}};
   };
@@ -406,6 +401,62 @@ ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
     const double pi = coordinate(p, static_cast<int>(i)), qi = coordinate(q, static_cast<int>(i));
     to_doubles(ip[i] + (iq[i] - ip[i]) * t, std::min(pi, qi), std::max(pi, qi), out.lo[i],
                out.hi[i]);
+  }
+  out.v = {out.lo[0], out.lo[1], out.lo[2]};
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  return out;
+}
+
+}  // namespace
+
+// The crossing in long doubles evaluated once, with an a priori bound instead of intervals:
+// products of up to four differences of doubles stay far inside the long doubles' exponent
+// range, so each computed value is within gamma_k (k roundings deep, u = 2^-64) of the exact
+// one times the same expression on absolute values: dp and dq (6 deep) within 2^-58 of their
+// magnitudes. With dp and dq on opposite sides (the precondition) t = |dp| / (|dp| + |dq|)
+// lies between the bounds below (each rounded within 5u, widened by 2^-60), and x = p + t (q -
+// p) within 4u (|p| + |q - p|) of its value at either end of t's range (widened by 2^-60). No
+// intervals: a third of the interval version's work (which kept every product's four corners).
+ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  using L = long double;
+  const auto at = [](Vec3 w) { return std::array<L, 3>{w.x, w.y, w.z}; };
+  const std::array<L, 3> la = at(a), lb = at(b), lc = at(c), lp = at(p), lq = at(q);
+  std::array<L, 3> u{}, v{}, pa{}, qa{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    u[i] = lb[i] - la[i];
+    v[i] = lc[i] - la[i];
+    pa[i] = lp[i] - la[i];
+    qa[i] = lq[i] - la[i];
+  }
+  const std::array<L, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                              u[0] * v[1] - u[1] * v[0]};
+  const auto m = [](L x, L y, L z, L w) {
+    return std::fabs(x) * std::fabs(y) + std::fabs(z) * std::fabs(w);
+  };
+  const std::array<L, 3> nm = {m(u[1], v[2], u[2], v[1]), m(u[2], v[0], u[0], v[2]),
+                               m(u[0], v[1], u[1], v[0])};
+  const L dp = n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2];
+  const L dq = n[0] * qa[0] + n[1] * qa[1] + n[2] * qa[2];
+  const L ep =
+      (nm[0] * std::fabs(pa[0]) + nm[1] * std::fabs(pa[1]) + nm[2] * std::fabs(pa[2])) * 0x1p-58L;
+  const L eq =
+      (nm[0] * std::fabs(qa[0]) + nm[1] * std::fabs(qa[1]) + nm[2] * std::fabs(qa[2])) * 0x1p-58L;
+  if ((dp > ep && dq > eq) || (dp < -ep && dq < -eq)) return line_plane_intervals(p, q, a, b, c);
+  const L sp = std::fabs(dp), sq = std::fabs(dq);
+  L t_lo = 0, t_hi = 1;
+  if (const L low = sp - ep; low > 0) t_lo = low / (sp + sq + ep + eq) * (1 - 0x1p-60L);
+  if (const L high = sp + sq - ep - eq; high > 0) {
+    t_hi = std::min<L>(1, (sp + ep) / high * (1 + 0x1p-60L));
+  }
+  ExactPoint out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const L d = lq[i] - lp[i];
+    const L slack = (std::fabs(lp[i]) + std::fabs(d)) * 0x1p-60L;
+    const L x1 = lp[i] + t_lo * d, x2 = lp[i] + t_hi * d;
+    // The point lies on the segment: its ends bound every coordinate.
+    const double pi = coordinate(p, static_cast<int>(i)), qi = coordinate(q, static_cast<int>(i));
+    to_doubles(Wide{std::min(x1, x2) - slack, std::max(x1, x2) + slack}, std::min(pi, qi),
+               std::max(pi, qi), out.lo[i], out.hi[i]);
   }
   out.v = {out.lo[0], out.lo[1], out.lo[2]};
   out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
@@ -465,6 +516,47 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
   const std::array<BigFloat, 3> m = cross3(pb, pc);
   return (pa[0] * m[0] + pa[1] * m[1] + pa[2] * m[2]).sign();
+}
+
+// The determinant of the differences X = q - p, Y = a - p, Z = b - p at the enclosures' lower
+// ends, in doubles. Each monomial of D(x) - D(lower ends) is bounded by the same monomial of
+// P1 - P0, P1 the permanent of |M| + R (M the differences at the lower ends, R the sums of the
+// two ends' widths) and P0 that of |M|; the computed D, P1 and P0 are each within 8u of P1
+// (u = 2^-53; Shewchuk's orient3d bound is 7u + 56u^2 of P0), so |D computed - D exact| <=
+// (P1 - P0 computed) + 2^-47 P1 (64u, for these and the bound's own roundings) + 2^-1000
+// (underflow of degree-3 products). An infinite or NaN term decides nothing.
+std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q, const ExactPoint& a,
+                                      const ExactPoint& b) {
+  std::array<std::array<double, 3>, 3> m{}, r{};
+  const std::array<const ExactPoint*, 3> rows = {&q, &a, &b};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      m[i][k] = rows[i]->lo[k] - p.lo[k];
+      r[i][k] = (rows[i]->hi[k] - rows[i]->lo[k]) + (p.hi[k] - p.lo[k]);
+    }
+  }
+  const auto det = [](const std::array<std::array<double, 3>, 3>& x) {
+    return x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) -
+           x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+           x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
+  };
+  const auto permanent = [](const std::array<std::array<double, 3>, 3>& x) {
+    return x[0][0] * (x[1][1] * x[2][2] + x[1][2] * x[2][1]) +
+           x[0][1] * (x[1][0] * x[2][2] + x[1][2] * x[2][0]) +
+           x[0][2] * (x[1][0] * x[2][1] + x[1][1] * x[2][0]);
+  };
+  std::array<std::array<double, 3>, 3> low{}, high{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      low[i][k] = std::abs(m[i][k]);
+      high[i][k] = low[i][k] + r[i][k];
+    }
+  }
+  const double d = det(m), p0 = permanent(low), p1 = permanent(high);
+  const double bound = (p1 - p0) + 0x1p-47 * p1 + 0x1p-1000;
+  if (d > bound) return Sign::positive;
+  if (d < -bound) return Sign::negative;
+  return std::nullopt;
 }
 
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {

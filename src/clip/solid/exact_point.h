@@ -92,6 +92,11 @@ struct ExactPoint {
 [[nodiscard]] Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c,
                                     int axis);
 
+/// Sign of det[q - p, a - p, b - p] decided by a floating-point filter on the points'
+/// enclosures, or nothing where it cannot tell (the exact predicate must).
+[[nodiscard]] std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q,
+                                                    const ExactPoint& a, const ExactPoint& b);
+
 /// Sign of n . (p - a): the side of the plane through a with normal n that p lies on.
 [[nodiscard]] Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n);
 

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -38,22 +39,48 @@ std::int32_t third(const std::vector<std::array<std::int32_t, 3>>& faces, const 
   return v[static_cast<std::size_t>(3 - u.corner - q)];
 }
 
-// Sorts the uses of edge p q by angle about q - p.
+// Sorts the uses of edge p q by angle about q - p. With A = q - p and spoke_i = A x (r_i - p)
+// (the half-plane of face i), dot(spoke_i x spoke_j, A) = |A|^2 det[A, r_i - p, r_j - p]: each
+// turn is an orientation of four exact points, decided by the filter where it can
+// (filtered_orient3d) and by the spokes' big numbers, made only then, where it cannot.
 void sort_around(std::vector<Use>& uses, std::int32_t p, std::int32_t q,
                  const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
   const ExactPoint& pp = store.point(p);
-  const BigVec3 axis = direction(pp, store.point(q));
-  std::vector<BigVec3> spoke;  // d x (r - p): the direction of each half-plane about the axis
+  const ExactPoint& pq = store.point(q);
+  std::vector<const ExactPoint*> far;
   for (const Use& u : uses)
-    spoke.push_back(predicates::cross(axis, direction(pp, store.point(third(faces, u)))));
-  const BigVec3 ref = spoke[0];
+    far.push_back(&store.point(third(faces, u)));
+  std::optional<BigVec3> axis;
+  std::vector<std::optional<BigVec3>> spoke(uses.size());
+  const auto exact_axis = [&]() -> const BigVec3& {
+    if (!axis) axis = direction(pp, pq);
+    return *axis;
+  };
+  const auto exact_spoke = [&](std::size_t i) -> const BigVec3& {
+    if (!spoke[i]) spoke[i] = predicates::cross(exact_axis(), direction(pp, *far[i]));
+    return *spoke[i];
+  };
+  const auto turn = [&](std::size_t i, std::size_t j) {
+    if (const std::optional<Sign> s = filtered_orient3d(pp, pq, *far[i], *far[j])) return *s;
+    return predicates::dot(predicates::cross(exact_spoke(i), exact_spoke(j)), exact_axis()).sign();
+  };
   std::vector<int> half(uses.size());
   for (std::size_t i = 0; i < uses.size(); ++i) {
-    const Sign s = predicates::dot(predicates::cross(ref, spoke[i]), axis).sign();
-    half[i] = s == Sign::positive ? 0
-              : s == Sign::negative
-                  ? 1
-                  : (predicates::dot(ref, spoke[i]).sign() == Sign::positive ? 0 : 1);
+    if (i == 0) {
+      // No turn from the first half-plane to itself: in the first half iff spoke_0 . spoke_0 >
+      // 0, i.e. r_0 off the line p q, i.e. some projection of p, q, r_0 not collinear.
+      bool off_line = false;
+      for (int k = 0; k < 3 && !off_line; ++k)
+        off_line = orient2d_dropped(pp, pq, *far[0], k) != Sign::zero;
+      half[0] = off_line ? 0 : 1;
+      continue;
+    }
+    const Sign s = turn(0, i);
+    half[i] =
+        s == Sign::positive ? 0
+        : s == Sign::negative
+            ? 1
+            : (predicates::dot(exact_spoke(0), exact_spoke(i)).sign() == Sign::positive ? 0 : 1);
   }
   std::vector<std::size_t> order(uses.size());
   for (std::size_t i = 0; i < order.size(); ++i)
@@ -61,7 +88,7 @@ void sort_around(std::vector<Use>& uses, std::int32_t p, std::int32_t q,
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (half[a] != half[b]) return half[a] < half[b];
     // Within a half-turn, b follows a when it lies counter-clockwise of a about the axis.
-    return predicates::dot(predicates::cross(spoke[a], spoke[b]), axis).sign() == Sign::positive;
+    return turn(a, b) == Sign::positive;
   });
   std::vector<Use> sorted;
   for (const std::size_t i : order)

@@ -124,6 +124,98 @@ TEST(SolidExactPoint, DegenerateImplicitPointsFallBackToExactZeros) {
   }
 }
 
+// Points off the line through p and an implicit point x on it by k steps of one coordinate (k
+// from 1 to 2^20): orientations from exactly zero to far beyond the filter's bound, with the
+// line's points wide (a midpoint's enclosure is 2^-49 relative) or narrow (a crossing's).
+void expect_exact_off_line(const Known& p, const Known& x) {
+  const Known on = midpoint(p, x);
+  for (double k = 1; k <= 0x1p20; k *= 2) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 v = clip::solid::nearest_double(x.point);
+      double& c = axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+      for (double step = 0; step < k; ++step)
+        c = std::nextafter(c, INFINITY);
+      const Known off = plain(v);
+      expect_exact(p, on, off);
+      expect_exact(on, x, off);
+      expect_exact(off, on, x);
+    }
+  }
+}
+
+TEST(SolidExactPoint, OrientationsJustOffALineOfImplicitPointsMatchTheRationalsAtEveryScale) {
+  std::mt19937_64 rng(31);
+  for (const double s : {1.0, 0x1p-400, 0x1p400}) {
+    int tested = 0;
+    while (tested < 4) {
+      const auto at = [&] { return random_point(rng) * s; };
+      const Vec3 p = at(), q = at();
+      const std::optional<Known> x = crossing(p, q, at(), at(), at());
+      if (!x) continue;
+      ++tested;
+      expect_exact_off_line(plain(p), *x);
+    }
+  }
+  // Products below the doubles' range (the filter must not take an underflowed zero for a sign)
+  // and beyond it (infinite terms decide nothing).
+  for (const double s : {0x1p-1040, 0x1p700}) {
+    const Known a = plain(Vec3{0.3, -0.7, 0.2} * s), b = plain(Vec3{-0.5, 0.25, 0.9} * s);
+    expect_exact_off_line(a, midpoint(a, b));
+  }
+}
+
+Sign oracle_orient3d(const Known& p, const Known& q, const Known& a, const Known& b) {
+  const QVec3 x = qsub(q.q, p.q), y = qsub(a.q, p.q), z = qsub(b.q, p.q);
+  return sign_of(qdot(x, qcross(y, z)));
+}
+
+// The filter of det[q - p, a - p, b - p] answers only with the rationals' sign.
+void expect_orient3d(const Known& p, const Known& q, const Known& a, const Known& b, bool decides) {
+  const std::optional<Sign> s = clip::solid::filtered_orient3d(p.point, q.point, a.point, b.point);
+  if (decides) {
+    EXPECT_TRUE(s.has_value());
+  }
+  if (s) {
+    EXPECT_EQ(*s, oracle_orient3d(p, q, a, b));
+  }
+}
+
+TEST(SolidExactPoint, FilteredOrient3dAnswersOnlyWithTheRationalsSign) {
+  std::mt19937_64 rng(37);
+  for (const double s : {1.0, 0x1p-400, 0x1p300}) {
+    int tested = 0;
+    while (tested < 6) {
+      const auto at = [&] { return random_point(rng) * s; };
+      const Vec3 p = at(), q = at();
+      const std::optional<Known> x = crossing(p, q, at(), at(), at());
+      if (!x) continue;
+      ++tested;
+      const Known kp = plain(p), kq = plain(q), m = midpoint(kp, *x);
+      // Random fourth points: far from the plane, the filter decides (not at 2^-400: products
+      // of three differences are below the filter's absolute 2^-1000).
+      expect_orient3d(kp, *x, plain(at()), plain(at()), s >= 1.0);
+      expect_orient3d(m, kq, *x, plain(at()), false);
+      // Coplanar exactly (x and m on the line p q) and 1 to 2^20 steps off a plane through it.
+      const Known r = plain(at());
+      expect_orient3d(kp, *x, m, r, false);
+      EXPECT_FALSE(clip::solid::filtered_orient3d(kp.point, x->point, m.point, r.point));
+      for (double k = 1; k <= 0x1p20; k *= 4) {
+        Vec3 v = clip::solid::nearest_double(midpoint(m, r).point);
+        for (double step = 0; step < k; ++step)
+          v.z = std::nextafter(v.z, INFINITY);
+        expect_orient3d(kp, *x, r, plain(v), false);
+        expect_orient3d(m, r, *x, plain(v), false);
+      }
+    }
+  }
+  // Products below and beyond the doubles' range.
+  for (const double s : {0x1p-1040, 0x1p700}) {
+    const Known a = plain(Vec3{0.3, -0.7, 0.2} * s), b = plain(Vec3{-0.5, 0.25, 0.9} * s);
+    const Known c = plain(Vec3{0.1, 0.6, -0.4} * s);
+    expect_orient3d(a, midpoint(a, b), c, plain(Vec3{0.2, 0.2, 0.2} * s), false);
+  }
+}
+
 // A crossing's nearest doubles (the filtered rounding, BigFloat only where it cannot certify)
 // against the rationals', and its equality with the same point made another way.
 void expect_rounded(const Known& x) {

@@ -1,0 +1,185 @@
+// The proofs of star_proof.h: each vertex's star gathered by a counting sort of the triangles'
+// corners, its ring walked, then the exact tests (filtered orient2d / orient3d, exact fallback).
+
+#include "clip/solid/star_proof.h"
+
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
+
+namespace contain::clip::solid {
+namespace {
+
+using predicates::orient2d;
+using predicates::orient3d;
+
+// Stars larger than this (a fan's apex) are left unproven: the ring's walk is quadratic in
+// their size, and they are few.
+constexpr std::size_t max_star = 16;
+
+std::atomic<bool> proofs_used{true};
+
+// One triangle v a b of a vertex v's star (as oriented, rotated to start at v): its edge a -> b
+// of the ring around v.
+struct LinkEdge {
+  std::int32_t a, b;
+};
+
+// The ring of v's star in order (triangle i is v w[i] w[i + 1], w[n] = w[0]) from its link
+// edges; false when they are not one closed fan of distinct ring vertices.
+bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star>& w) {
+  const std::size_t n = star.size();
+  // Follow a -> b from edge 0: the next edge is the first whose a is this one's b. One cycle
+  // through all n edges, back to edge 0 only at the end, makes the a's distinct (a second edge
+  // with the a of one on the cycle would never be found first, so never visited), and so the
+  // ring's vertices.
+  std::array<bool, max_star> seen{};
+  seen[0] = true;
+  std::size_t current = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    w[i] = star[current].a;
+    std::size_t next = n;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (star[j].a == star[current].b) {
+        next = j;
+        break;
+      }
+    }
+    if (next == n) return false;
+    if (i + 1 == n) return next == 0;
+    if (seen[next]) return false;
+    seen[next] = true;
+    current = next;
+  }
+  return false;
+}
+
+// The dominant axis of the fan's area vector (sum of (wi - v) x (w(i+1) - v)) in doubles: the
+// projection most likely to pass; any axis keeps the proof exact.
+int fan_axis(Vec3 v, std::span<const Vec3* const> ring) {
+  double nx = 0.0, ny = 0.0, nz = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec3 p = *ring[i] - v, q = *ring[(i + 1) % ring.size()] - v;
+    nx += p.y * q.z - p.z * q.y;
+    ny += p.z * q.x - p.x * q.z;
+    nz += p.x * q.y - p.y * q.x;
+  }
+  nx = std::fabs(nx);
+  ny = std::fabs(ny);
+  nz = std::fabs(nz);
+  if (nx >= ny && nx >= nz) return 0;
+  return ny >= nz ? 1 : 2;
+}
+
+// The projection dropping `axis`, coordinates in cyclic order (so that orient2d there is the
+// sign of the normal's `axis` component).
+Vec2 projection_of(Vec3 p, int axis) {
+  if (axis == 0) return {p.y, p.z};
+  if (axis == 1) return {p.z, p.x};
+  return {p.x, p.y};
+}
+
+bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star) {
+  const std::size_t n = star.size();
+  if (n < 3 || n > max_star) return false;
+  std::array<std::int32_t, max_star> ids;
+  if (!walk_ring(star, ids)) return false;
+  // The positions by pointer: an array of Vec3 would be zeroed first (member initializers).
+  std::array<const Vec3*, max_star> ring;
+  for (std::size_t i = 0; i < n; ++i)
+    ring[i] = &soup.vertices[static_cast<std::size_t>(ids[i])];
+  const Vec3 apex = soup.vertices[static_cast<std::size_t>(v)];
+  const int axis = fan_axis(apex, std::span<const Vec3* const>(ring.data(), n));
+  const Vec2 o = projection_of(apex, axis);
+  std::array<Vec2, max_star> p;  // (zeroed first, 256 bytes: cheap beside the tests)
+  for (std::size_t i = 0; i < n; ++i)
+    p[i] = projection_of(*ring[i], axis);
+  // 1: every sector turns the same strict way (a zero-area triangle fails here).
+  const Sign turn = orient2d(o, p[0], p[1]);
+  if (turn == Sign::zero) return false;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (orient2d(o, p[i], p[(i + 1) % n]) != turn) return false;
+  }
+  // 2: the sectors all below pi and turning one way, the ring winds around v as often as it
+  // crosses the ray from v along the first projected axis; a sector from wi to w(i+1) crosses it
+  // exactly when it starts below v in the second coordinate and ends level or above (turning
+  // counter-clockwise; clockwise ones cross it from above, but a closed ring crosses the line
+  // upward as often as downward): comparisons of doubles, no predicate.
+  int crossings = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    crossings += p[i].y < o.y && p[(i + 1) % n].y >= o.y ? 1 : 0;
+  }
+  if (crossings != 1) return false;
+  // 3: every turn of the ring in space the same strict way.
+  const Sign bend = orient3d(apex, *ring[0], *ring[1], *ring[2 % n]);
+  if (bend == Sign::zero) return false;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (orient3d(apex, *ring[i], *ring[(i + 1) % n], *ring[(i + 2) % n]) != bend) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool star_proofs_used() {
+  return proofs_used.load(std::memory_order_relaxed);
+}
+
+void use_star_proofs(bool used) {
+  proofs_used.store(used, std::memory_order_relaxed);
+}
+
+std::vector<bool> proven_vertices(const Soup& soup) {
+  const std::size_t vertices = soup.vertices.size();
+  // The link edges of each vertex, by a counting sort of the triangles' corners (a triangle
+  // naming a vertex twice is listed twice, and fails the turns).
+  std::vector<std::int32_t> start(vertices + 1, 0);
+  for (const TriangleIndices& t : soup.triangles) {
+    for (const std::int32_t i : t)
+      ++start[static_cast<std::size_t>(i) + 1];
+  }
+  for (std::size_t i = 1; i <= vertices; ++i)
+    start[i] += start[i - 1];
+  std::vector<LinkEdge> star(static_cast<std::size_t>(start[vertices]));
+  {
+    std::vector<std::int32_t> next(start.begin(), start.end() - 1);
+    for (const TriangleIndices& t : soup.triangles) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        star[static_cast<std::size_t>(next[static_cast<std::size_t>(t[k])]++)] = {t[(k + 1) % 3],
+                                                                                  t[(k + 2) % 3]};
+      }
+    }
+  }
+  std::vector<bool> proven(vertices, false);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const auto first = static_cast<std::size_t>(start[v]);
+    const auto count = static_cast<std::size_t>(start[v + 1]) - first;
+    proven[v] = proven_star(soup, static_cast<std::int32_t>(v),
+                            std::span<const LinkEdge>(star).subspan(first, count));
+  }
+  return proven;
+}
+
+std::vector<std::uint8_t> proven_corners(const Soup& soup) {
+  const std::vector<bool> proven = proven_vertices(soup);
+  std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    std::uint8_t bits = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (proven[static_cast<std::size_t>(soup.triangles[t][k])]) {
+        bits = static_cast<std::uint8_t>(bits | (1U << k));
+      }
+    }
+    corners[t] = bits;
+  }
+  return corners;
+}
+
+}  // namespace contain::clip::solid
