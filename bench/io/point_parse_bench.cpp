@@ -4,8 +4,6 @@
 //   from_chars_tokens   std::from_chars alone on the numbers, split beforehand (the limit);
 //   from_chars_walk     std::from_chars over the bytes, one blank or newline skipped between
 //                       numbers (the limit with the least possible scanning; no checks);
-//   plain_walk          the same walk through detail::parse_plain_decimal, from_chars where it
-//                       declines (the fast way of the scanner);
 //   memchr_lines        the newlines found with memchr alone (what a line split costs);
 //   scanner             detail::scan_point_lines on the whole text (the reader's hot loop);
 //   mapped              the file memory-mapped in windows (MAP_POPULATE) and scanned;
@@ -29,7 +27,6 @@
 #include <vector>
 
 #include "contain/io/points_io.h"
-#include "io/plain_decimal.h"
 #include "io/point_lines.h"
 
 namespace {
@@ -104,27 +101,6 @@ void from_chars_walk(benchmark::State& state, int columns) {
     double* out = values.data();
     while (p < end) {
       p = std::from_chars(p, end, *out++).ptr + 1;
-    }
-    benchmark::DoNotOptimize(values.data());
-    benchmark::ClobberMemory();
-  }
-  set_bytes(state, text.size());
-}
-
-void plain_walk(benchmark::State& state, int columns) {
-  const std::string& text = file_text(columns);
-  std::vector<double> values(tokens(columns).size() + 1);
-  for (auto _ : state) {
-    const char* p = text.data();
-    const char* const end = p + text.size();
-    double* out = values.data();
-    while (p < end) {
-      if (end - p < contain::io::detail::kPlainDecimalReach ||
-          !contain::io::detail::parse_plain_decimal(p, *out)) {
-        p = std::from_chars(p, end, *out).ptr;
-      }
-      ++out;
-      ++p;
     }
     benchmark::DoNotOptimize(values.data());
     benchmark::ClobberMemory();
@@ -238,7 +214,6 @@ void reader(benchmark::State& state) {
 
 BENCHMARK_CAPTURE(from_chars_tokens, 3d, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(from_chars_walk, 3d, 3)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(plain_walk, 3d, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(memchr_lines, 3d, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(scanner, contain::Vec3)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(mapped, contain::Vec3)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(8)->Arg(64);
@@ -252,7 +227,6 @@ BENCHMARK_TEMPLATE(reader, contain::Vec3)
     ->Arg(1024);
 BENCHMARK_CAPTURE(from_chars_tokens, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(from_chars_walk, 2d, 2)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(plain_walk, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(scanner, contain::Vec2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(reader, contain::Vec2)->Unit(benchmark::kMillisecond)->Arg(0);
 

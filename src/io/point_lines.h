@@ -16,7 +16,6 @@
 #include <system_error>
 #include <vector>
 
-#include "io/plain_decimal.h"
 #include "io/text_scan.h"
 
 namespace contain::io::detail {
@@ -39,18 +38,6 @@ inline bool scan_finite_number(const char*& p, const char* end, double& out) {
   if (ec != std::errc::result_out_of_range) return false;
   // Underflow (a subnormal or zero) or overflow: parse_double decides, as the table parser does.
   return parse_double(p, end, out) == NumberStatus::ok;
-}
-
-/// scan_finite_number for the coordinates of point files: plain decimals the fast way
-/// (io/plain_decimal.h), the rest through scan_finite_number. Its cost does not depend on the
-/// data, while from_chars' does: on coordinates in random order (query points; the issue's
-/// workloads) from_chars' guesses at each number's length fail and the fast way reads 1.15-1.2
-/// times as fast; on long numbers in a regular order (the rings of a UV sphere's vertices)
-/// from_chars guesses right and is 1.3 times as fast as the fast way. So the point files take
-/// it, and the OFF reader (vertices in a mesh's order) keeps scan_finite_number.
-inline bool scan_finite_coordinate(const char*& p, const char* end, double& out) {
-  if (end - p >= kPlainDecimalReach && parse_plain_decimal(p, out)) return true;
-  return scan_finite_number(p, end, out);
 }
 
 /// Advances `p` past the next newline (or to `end`).
@@ -93,7 +80,7 @@ PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& point
       continue;
     }
     double v[kColumns];
-    if (!scan_finite_coordinate(p, end, v[0])) return scan;
+    if (!scan_finite_number(p, end, v[0])) return scan;
     for (int k = 1; k < kColumns; ++k) {
       const char* after = p;
       skip_blanks(p, end);
@@ -103,7 +90,7 @@ PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& point
       } else if (p == after) {
         return scan;  // a character glued to the number
       }
-      if (!scan_finite_coordinate(p, end, v[k])) return scan;
+      if (!scan_finite_number(p, end, v[k])) return scan;
     }
     skip_blanks(p, end);
     if (p != end) {

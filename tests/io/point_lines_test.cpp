@@ -157,7 +157,7 @@ TEST(PointLines, TakesExactlyTheEdgeCasesTheTableParserTakes) {
 }
 
 // The same edge cases with coordinate lines after them: numbers with 40 bytes or more behind
-// them go the plain decimals' fast way (io/plain_decimal.h), which must keep the grammar.
+// them, so that each case is read where a number has a line of coordinates behind it.
 TEST(PointLines, TakesExactlyTheEdgeCasesTheTableParserTakesWithLinesAfterThem) {
   std::string lines2;
   std::string lines3;
