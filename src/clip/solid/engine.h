@@ -68,6 +68,9 @@ class Soup {
   /// The exact normal (b - a) x (c - a) of triangle t, computed on first use (most triangles
   /// never need it). Not thread-safe: the engine runs on one thread.
   [[nodiscard]] const BigVec3& normal(std::size_t t) const;
+  /// `dropped_axis` of `normal(t)` and that component's sign: by a filter in doubles, the exact
+  /// normal only where the filter cannot tell (it is made for so many triangles otherwise).
+  [[nodiscard]] Projection projection(std::size_t t) const;
   std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
   std::vector<Box3> boxes;       ///< of each triangle (empty for a degenerate one)
   bvh::Bvh tree;                 ///< over `boxes`: the pairs and the rays of the labels

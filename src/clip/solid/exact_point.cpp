@@ -287,6 +287,33 @@ std::optional<int> filtered_line_axis(const std::array<Vec3, 3>& t, const std::a
   return std::nullopt;  // all three exactly zero: parallel planes, not this function's case
 }
 
+// Each component of the normal is a difference of two products of rounded differences, 3
+// roundings deep, so (Higham 3.1, 3.3; the moderate range: no underflow or overflow) its computed
+// value n is within gamma_3 M < 4 u m of the exact one N (M the same on absolute values, m its
+// computed value, u = 2^-53); the bound taken is 2^-50 m. The largest |n_i| less its bound is
+// then at most |N_i| (up to one rounding of the subtraction), each other |n_j| plus its bound at
+// least |N_j|, and the comparison with the factor 1 + 2^-30 (its roundings cost under 2^-51)
+// proves |N_i| > (1 + 2^-31) |N_j|: far above the 2^-40 or so that `dropped_axis`'s keys
+// (exponent + significand in one double, exponents below 2^11) can merge.
+std::optional<Projection> filtered_projection(Vec3 a, Vec3 b, Vec3 c) {
+  const std::array<Vec3, 2> e = edge_vectors({a, b, c});
+  if (!moderate(e)) return std::nullopt;
+  Vec3 n, m;
+  cross_and_magnitude(e[0], e[1], n, m);
+  int best = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(coordinate(n, k)) > std::abs(coordinate(n, best))) best = k;
+  }
+  const double largest = std::abs(coordinate(n, best)) - 0x1p-50 * coordinate(m, best);
+  if (!(largest > 0.0)) return std::nullopt;
+  for (int k = 0; k < 3; ++k) {
+    if (k == best) continue;
+    const double other = std::abs(coordinate(n, k)) + 0x1p-50 * coordinate(m, k);
+    if (!(largest > other * (1.0 + 0x1p-30))) return std::nullopt;
+  }
+  return Projection{best, coordinate(n, best) > 0.0 ? Sign::positive : Sign::negative};
+}
+
 const BigFloat& component(const BigVec3& v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }

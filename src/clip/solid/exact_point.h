@@ -72,6 +72,19 @@ struct ExactPoint {
 [[nodiscard]] ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
                                    const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis);
 
+/// The plane a triangle is worked in: the axis whose normal component is largest in magnitude
+/// (dropped) and that component's sign.
+struct Projection {
+  int axis = 2;
+  Sign sense = Sign::positive;
+};
+
+/// `dropped_axis` of the exact normal (b - a) x (c - a) and that component's sign, decided by a
+/// filter in doubles where the largest component is certainly larger than the others by a
+/// relative 2^-31 (so that `dropped_axis`'s comparison by exponent and rounded significand picks
+/// it too); nothing where it cannot tell (the exact normal must).
+[[nodiscard]] std::optional<Projection> filtered_projection(Vec3 a, Vec3 b, Vec3 c);
+
 /// The first axis k in which the direction nt x nu of the line where the planes of triangles t
 /// and u meet is non-zero (nt = (t1 - t0) x (t2 - t0), nu likewise), decided by a filter in
 /// doubles; nothing where the filter cannot decide (the exact normals must).

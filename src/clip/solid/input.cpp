@@ -154,4 +154,16 @@ const BigVec3& Soup::normal(std::size_t t) const {
   return *n;
 }
 
+Projection Soup::projection(std::size_t t) const {
+  const TriangleIndices& v = triangles[t];
+  if (const std::optional<Projection> p = filtered_projection(
+          vertices[static_cast<std::size_t>(v[0])], vertices[static_cast<std::size_t>(v[1])],
+          vertices[static_cast<std::size_t>(v[2])])) {
+    return *p;
+  }
+  const BigVec3& n = normal(t);
+  const int axis = dropped_axis(n);
+  return {axis, component(n, axis).sign()};
+}
+
 }  // namespace contain::clip::solid

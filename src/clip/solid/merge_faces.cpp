@@ -74,7 +74,7 @@ UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
                        q = a[static_cast<std::size_t>((i + 1) % 3)];
     if (b[static_cast<std::size_t>(j)] != q) continue;  // same direction: not one oriented plane
     if (!same_plane(soup, boundary.triangle[f], boundary.triangle[g])) continue;
-    const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(boundary.triangle[f])));
+    const int axis = soup.projection(static_cast<std::size_t>(boundary.triangle[f])).axis;
     const std::int32_t r = a[static_cast<std::size_t>((i + 2) % 3)];
     const std::int32_t s = b[static_cast<std::size_t>((j + 2) % 3)];
     const int sr = to_int(orient2d_dropped(store.point(p), store.point(q), store.point(r), axis));
@@ -161,7 +161,7 @@ std::optional<std::vector<Face>> retriangulated(const Soup& soup, const Boundary
                                                 const std::vector<std::uint64_t>& outline,
                                                 PointStore& store) {
   const Face& first = all.faces[faces[0]];
-  const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(all.triangle[faces[0]])));
+  const int axis = soup.projection(static_cast<std::size_t>(all.triangle[faces[0]])).axis;
   const bool positive = orient2d_dropped(store.point(first[0]), store.point(first[1]),
                                          store.point(first[2]), axis) == Sign::positive;
   std::vector<std::array<std::int32_t, 2>> pieces;

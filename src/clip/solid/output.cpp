@@ -61,7 +61,7 @@ bool owned(const Soup& soup, const RefinedFace& face, const TriangleWork& work,
   if (!any_lower) return true;
   const ExactPoint c =
       centroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2]));
-  const int axis = dropped_axis(soup.normal(static_cast<std::size_t>(face.triangle)));
+  const int axis = soup.projection(static_cast<std::size_t>(face.triangle)).axis;
   for (const std::int32_t u : work.coplanar) {
     if (u < face.triangle && covered_by(soup, u, c, axis)) return false;
   }

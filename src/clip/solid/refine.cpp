@@ -47,7 +47,8 @@ struct EdgePoints {
 struct Local {
   std::array<std::int32_t, 3> corners{};
   Vec3 a{};
-  const BigVec3* normal = nullptr;
+  const Soup* soup = nullptr;  // T's exact normal made only for `line_line` (few triangles)
+  std::size_t triangle = 0;
   int axis = 2;
   Sign sense = Sign::positive;
   const PointStore* store = nullptr;
@@ -128,8 +129,9 @@ Arranged arrange(const Local& l, const TriangleWork& work, const EdgePoints& giv
       if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
       if (l.orient(s.a, s.b, t.a) * l.orient(s.a, s.b, t.b) < 0 &&
           l.orient(t.a, t.b, s.a) * l.orient(t.a, t.b, s.b) < 0) {
-        points.push_back(store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a),
-                                             store.point(t.b), l.a, *l.normal, l.axis)));
+        points.push_back(
+            store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a),
+                                store.point(t.b), l.a, l.soup->normal(l.triangle), l.axis)));
       }
     }
   }
@@ -154,9 +156,11 @@ Local local_of(const Soup& soup, std::size_t t, const PointStore& store) {
   const TriangleIndices& v = soup.triangles[t];
   l.corners = {v[0], v[1], v[2]};
   l.a = soup.vertices[static_cast<std::size_t>(v[0])];
-  l.normal = &soup.normal(t);
-  l.axis = dropped_axis(soup.normal(t));
-  l.sense = component(soup.normal(t), l.axis).sign();
+  l.soup = &soup;
+  l.triangle = t;
+  const Projection p = soup.projection(t);
+  l.axis = p.axis;
+  l.sense = p.sense;
   l.store = &store;
   return l;
 }

@@ -98,7 +98,7 @@ bool segment_meets_triangle(Vec2 a, Vec2 b, const std::array<Vec2, 3>& t) {
 
 // Coplanar triangles t, u of the soup meet beyond their shared corners.
 bool coplanar_meet(const Soup& soup, std::int32_t t, std::int32_t u) {
-  const Flat flat{dropped_axis(soup.normal(static_cast<std::size_t>(t)))};
+  const Flat flat{soup.projection(static_cast<std::size_t>(t)).axis};
   const TriangleIndices& vt = soup.triangles[static_cast<std::size_t>(t)];
   const TriangleIndices& vu = soup.triangles[static_cast<std::size_t>(u)];
   std::array<Vec2, 3> a{}, b{};

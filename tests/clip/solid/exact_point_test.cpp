@@ -339,5 +339,54 @@ TEST(SolidExactPoint, FilteredLineAxisIsTheFirstNonZeroComponentOfTheExactDirect
   }
 }
 
+// The filter of a triangle's projection against the exact normal: when it answers, its axis's
+// component is strictly the largest in magnitude (by GMP) and its sense that component's sign.
+void expect_projection(Vec3 a, Vec3 b, Vec3 c, bool decides, int& answered) {
+  const QVec3 n = qcross(qsub(exact(b), exact(a)), qsub(exact(c), exact(a)));
+  const std::optional<clip::solid::Projection> p = clip::solid::filtered_projection(a, b, c);
+  if (decides) {
+    EXPECT_TRUE(p.has_value());
+  }
+  if (!p) return;
+  ++answered;
+  const mpq_class largest = abs(coord(n, p->axis));
+  for (int k = 0; k < 3; ++k) {
+    if (k != p->axis) {
+      EXPECT_GT(largest, abs(coord(n, k))) << "axis " << p->axis << " is not the largest";
+    }
+  }
+  EXPECT_EQ(p->sense, sign_of(coord(n, p->axis)));
+}
+
+TEST(SolidExactPoint, FilteredProjectionIsTheExactNormalsLargestComponentAndItsSign) {
+  std::mt19937_64 rng(29);
+  int answered = 0;
+  for (int i = 0; i < 300; ++i)
+    expect_projection(random_point(rng), random_point(rng), random_point(rng), true, answered);
+  // Slivers: c a few ulps off the line a b, every normal component a cancellation, at scales
+  // 2^-400..2^300 (the extremes beyond the filter's range: the exact normal decides).
+  std::uniform_real_distribution<double> along(-0.5, 1.5);
+  std::uniform_int_distribution<int> steps(-4, 4);
+  for (int e = -400; e <= 300; e += 50) {
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 a = random_point(rng) * std::ldexp(1.0, e);
+      const Vec3 b = random_point(rng) * std::ldexp(1.0, e);
+      const double t = along(rng);
+      Vec3 c = a + (b - a) * t;
+      for (double* x : {&c.x, &c.y, &c.z}) {
+        for (int s = steps(rng); s != 0; s += s > 0 ? -1 : 1)
+          *x = std::nextafter(*x, s > 0 ? 1e308 : -1e308);
+      }
+      expect_projection(a, b, c, false, answered);
+    }
+  }
+  // Exact ties: planes x = y and x = z (|n_x| = |n_y|, |n_x| = |n_z|), and all three equal:
+  // the filter must leave them to the exact normal (`dropped_axis` takes the first).
+  expect_projection({0.25, 0.25, 0.5}, {1.5, 1.5, -0.75}, {0.5, 0.5, 3.0}, false, answered);
+  expect_projection({0.25, 0.5, 0.25}, {1.5, -0.75, 1.5}, {0.5, 3.0, 0.5}, false, answered);
+  expect_projection({1, 0, 0}, {0, 1, 0}, {0, 0, 1}, false, answered);
+  EXPECT_GT(answered, 300);  // the slivers are decided in part, not all handed over
+}
+
 }  // namespace
 }  // namespace contain::test
