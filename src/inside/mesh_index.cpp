@@ -135,6 +135,26 @@ template <class Pair>
     to[cursor[surface[p.cell]]++] = p.triangle;
 }
 
+// One row of the empty cells' pass, right to left from column `last`: the running sum of the
+// hits at each column (`at_column`, left zeroed) settles each empty cell's state and count. A
+// function of its own (not inlined), as the listing's passes: inline, GCC reloaded the state
+// and count arrays' pointers and the rule after every byte stored.
+[[gnu::noinline]] void settle_empty_row(int last, int* at_column, std::uint8_t* state,
+                                        std::uint32_t* counts, SolidRule rule) {
+  int count = 0;
+  for (int i = last - 1; i >= 0; --i) {
+    const auto column = static_cast<std::size_t>(i);
+    count += at_column[column + 1];
+    at_column[column + 1] = 0;
+    // Masks, not a branch on the state (surface cells among empty ones: unpredictable; GCC
+    // keeps a jump for `?:` here): a surface cell's state and number are written back as read.
+    const std::uint32_t surface = 0U - static_cast<std::uint32_t>(state[column] == 2);
+    const std::uint32_t inside = inside_by_count(rule, count) ? 1U : 0U;
+    state[column] = static_cast<std::uint8_t>((surface & 2U) | (~surface & inside));
+    counts[column] = (counts[column] & surface) | (static_cast<std::uint32_t>(count) & ~surface);
+  }
+}
+
 // Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
 // max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
 // coordinates.
@@ -538,15 +558,8 @@ void MeshIndex::settle_empty_cells() {
       last = std::max(last, by_row[h].column);
     }
     const std::size_t first = r * static_cast<std::size_t>(nx_);
-    int count = 0;
-    for (int i = last - 1; i >= 0; --i) {
-      count += at_column[static_cast<std::size_t>(i) + 1];
-      at_column[static_cast<std::size_t>(i) + 1] = 0;
-      const std::size_t c = first + static_cast<std::size_t>(i);
-      if (state_[c] == 2) continue;
-      state_[c] = inside_by_count(count) ? 1 : 0;
-      surface_[c] = static_cast<std::uint32_t>(count);
-    }
+    settle_empty_row(last, at_column.data(), state_.data() + first, surface_.data() + first,
+                     by_parity_ ? SolidRule::parity : SolidRule::winding);
     at_column[0] = 0;
   }
 }
