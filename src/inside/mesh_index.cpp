@@ -17,6 +17,7 @@
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/perturbed_ray.h"
 #include "contain/values/triangle.h"
+#include "inside/index_bytes.h"
 #include "inside/mesh_ray.h"
 #include "inside/surface_star.h"
 
@@ -110,6 +111,49 @@ class PlaneSeparation {
   double tmin_ = 0.0, tmax_ = 0.0;
   double tabs_[3] = {0.0, 0.0, 0.0};
 };
+
+// The listing's two passes over its (cell, triangle) pairs, each a function of its own (not
+// inlined): in the listing, GCC kept the count of cells in a stack slot (a store-to-load chain
+// each pair) and reloaded the loop's end from the stack after every store. `counts` is zeroed: each
+// cell's pairs are counted there; the return is the number of cells with a pair.
+template <class Pair>
+[[gnu::noinline]] std::size_t count_listed_pairs_by_cell(std::span<const Pair> pairs,
+                                                         std::uint32_t* counts) {
+  std::size_t cells = 0;
+  for (const Pair& p : pairs)
+    cells += counts[p.cell]++ == 0 ? 1 : 0;
+  return cells;
+}
+
+// Each pair's triangle to its cell's list: `surface` numbers the cells, `cursor` holds each
+// numbered cell's next slot in `to` (left at its list's end).
+template <class Pair>
+[[gnu::noinline]] void place_listed_triangles(std::span<const Pair> pairs,
+                                              const std::uint32_t* surface, std::uint32_t* cursor,
+                                              std::uint32_t* to) {
+  for (const Pair& p : pairs)
+    to[cursor[surface[p.cell]]++] = p.triangle;
+}
+
+// One row of the empty cells' pass, right to left from column `last`: the running sum of the
+// hits at each column (`at_column`, left zeroed) settles each empty cell's state and count. A
+// function of its own (not inlined), as the listing's passes: inline, GCC reloaded the state
+// and count arrays' pointers and the rule after every byte stored.
+[[gnu::noinline]] void settle_empty_row(int last, int* at_column, std::uint8_t* state,
+                                        std::uint32_t* counts, SolidRule rule) {
+  int count = 0;
+  for (int i = last - 1; i >= 0; --i) {
+    const auto column = static_cast<std::size_t>(i);
+    count += at_column[column + 1];
+    at_column[column + 1] = 0;
+    // Masks, not a branch on the state (surface cells among empty ones: unpredictable; GCC
+    // keeps a jump for `?:` here): a surface cell's state and number are written back as read.
+    const std::uint32_t surface = 0U - static_cast<std::uint32_t>(state[column] == 2);
+    const std::uint32_t inside = inside_by_count(rule, count) ? 1U : 0U;
+    state[column] = static_cast<std::uint8_t>((surface & 2U) | (~surface & inside));
+    counts[column] = (counts[column] & surface) | (static_cast<std::uint32_t>(count) & ~surface);
+  }
+}
 
 // Cells along x, y and z: about options.cells_per_triangle per triangle (within min_cells and
 // max_cells), cubes as far as the box allows. Half units keep the extents finite for any finite
@@ -280,6 +324,7 @@ void MeshIndex::read_triangles(const Mesh& mesh) {
   tris_.reserve(mesh.triangles.size());
   for (const TriangleIndices& t : mesh.triangles) {
     const Tri tri = make_tri(mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2]));
+    if (for_saving_) records_hash_sum_ += index_bytes::hash_triangle(tri.a, tri.b, tri.c);
     bounds_.expand(tri.a);
     bounds_.expand(tri.b);
     bounds_.expand(tri.c);
@@ -311,8 +356,11 @@ void MeshIndex::read_triangles_by_cell(const Mesh& mesh) {
       __builtin_prefetch(&mesh.vertex(ahead[2]));
     }
     const TriangleIndices& corners = mesh.triangles[order[i]];
-    tris_.push_back(
-        make_tri(mesh.vertex(corners[0]), mesh.vertex(corners[1]), mesh.vertex(corners[2])));
+    const Vec3 a = mesh.vertex(corners[0]), b = mesh.vertex(corners[1]),
+               c = mesh.vertex(corners[2]);
+    tris_.push_back(make_tri(a, b, c));
+    // The fingerprint's part while the corners are at hand (hash_triangle: the file's sum).
+    if (for_saving_) records_hash_sum_ += index_bytes::hash_triangle(a, b, c);
   }
   stats_.triangles = n;
 }
@@ -375,9 +423,9 @@ void MeshIndex::list_triangles_by_cell_as() {
   // state_ default-initializes: the scan below writes every cell's state.
   state_ = HugePageVector<std::uint8_t>(cell_count);
   surface_.assign(cell_count, 0);
-  std::size_t surface_cells = 0;  // counted here: cell_start_ sized once, not grown by doubling
-  for (const auto& [c, t] : pairs)
-    surface_cells += surface_[c]++ == 0 ? 1 : 0;
+  // Surface cells counted here: cell_start_ sized once, not grown by doubling.
+  const std::size_t surface_cells =
+      count_listed_pairs_by_cell(std::span<const Pair>(pairs), surface_.data());
   // cell_start_[k] is first surface cell k's list's start, the cursor of the fill below, which
   // leaves it at the list's end (the next list's start): then the array moves one place up.
   cell_start_.resize(surface_cells + 1);
@@ -413,9 +461,7 @@ void MeshIndex::list_triangles_by_cell_as() {
   if (for_saving_) {
     // The file's lists: the triangles' numbers only (2.5 MB for 100k triangles, mostly in cache).
     ref_tris_.resize(listed_before);
-    std::uint32_t* const to = ref_tris_.data();
-    for (const auto& [c, t] : pairs)
-      to[start[surface[c]]++] = t;
+    place_listed_triangles(std::span<const Pair>(pairs), surface, start, ref_tris_.data());
   } else {
     refs_.resize(listed_before);
     // The references land scattered over 18 MB just faulted in (not in cache): each store's line
@@ -512,15 +558,8 @@ void MeshIndex::settle_empty_cells() {
       last = std::max(last, by_row[h].column);
     }
     const std::size_t first = r * static_cast<std::size_t>(nx_);
-    int count = 0;
-    for (int i = last - 1; i >= 0; --i) {
-      count += at_column[static_cast<std::size_t>(i) + 1];
-      at_column[static_cast<std::size_t>(i) + 1] = 0;
-      const std::size_t c = first + static_cast<std::size_t>(i);
-      if (state_[c] == 2) continue;
-      state_[c] = inside_by_count(count) ? 1 : 0;
-      surface_[c] = static_cast<std::uint32_t>(count);
-    }
+    settle_empty_row(last, at_column.data(), state_.data() + first, surface_.data() + first,
+                     by_parity_ ? SolidRule::parity : SolidRule::winding);
     at_column[0] = 0;
   }
 }

@@ -269,9 +269,12 @@ std::vector<MeshIndex::Tri> MeshIndexFile::direct_records(const MeshIndex& index
 }
 
 std::uint64_t MeshIndexFile::fingerprint(const MeshIndex& index) {
-  std::uint64_t sum = 0;
-  for (const MeshIndex::Tri& t : index.tris_)
-    sum += index_bytes::hash_triangle(t.a, t.b, t.c);
+  // Built for saving, the records' hashes were summed as they were made.
+  std::uint64_t sum = index.for_saving_ ? index.records_hash_sum_ : 0;
+  if (!index.for_saving_) {
+    for (const MeshIndex::Tri& t : index.tris_)
+      sum += index_bytes::hash_triangle(t.a, t.b, t.c);
+  }
   for (const TriangleIndices& t : index.mesh_.triangles) {
     sum += index_bytes::hash_triangle(index.mesh_.vertex(t[0]), index.mesh_.vertex(t[1]),
                                       index.mesh_.vertex(t[2]));

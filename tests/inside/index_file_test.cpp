@@ -407,6 +407,27 @@ TEST(MeshIndexToSave, WritesTheBytesOfTheInMemoryIndexWithoutAGrid) {
   EXPECT_EQ(MeshIndexToSave(open).regime(), MeshRegime::winding_number);
 }
 
+// Built for saving, the records' hashes are summed as the records are made (in cell order, or
+// in mesh order for the winding regime): the header's fingerprint is still the mesh's.
+TEST(MeshIndexToSave, HeaderFingerprintIsTheMeshsFingerprintInEveryRegime) {
+  std::mt19937_64 rng(77);
+  Mesh open = test::grid_cube(0, 1, 2);
+  open.triangles.pop_back();
+  const Mesh torus = jittered_torus(rng, 0.3);
+  struct Case {
+    const Mesh* mesh;
+    MeshIndexOptions options;
+  };
+  for (const Case& c :
+       {Case{&torus, {}}, Case{&torus, {.cells_per_triangle = 0.5}}, Case{&torus, {.queries = 1}},
+        Case{&open, {}}, Case{&open, {.min_cells = 1}}}) {
+    const std::vector<std::byte> bytes = MeshIndexToSave(*c.mesh, c.options).image().join();
+    const auto header = parse_index_header(bytes);
+    ASSERT_TRUE(header);
+    EXPECT_EQ(header->source, fingerprint(*c.mesh));
+  }
+}
+
 std::vector<MultiPolygon> random_layer(std::mt19937_64& rng, int count) {
   std::vector<MultiPolygon> regions;
   for (int r = 0; r < count; ++r) {

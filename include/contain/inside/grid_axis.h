@@ -41,7 +41,7 @@ class GridAxis {
 
   /// A floating-point guess of the cell of `v`, clamped into [0, n - 1] (NaN gives 0); exact for
   /// almost every v, but only `cell_of` is guaranteed. Precondition: at least one cell.
-  [[nodiscard]] int guess(double v) const {
+  [[nodiscard, gnu::always_inline]] int guess(double v) const {
     const double g = (0.5 * v - 0.5 * origin_) * scale_;
     if (!(g >= 0.0)) return 0;  // also NaN
     if (g >= static_cast<double>(cells_)) return cells_ - 1;
@@ -63,7 +63,8 @@ class GridAxis {
   /// The cells [first, last] whose closed spans [L_i, L_i+1] meet the closed interval [lo, hi]
   /// (exact comparisons), clamped into [0, n - 1]: an interval beyond an end gives that end's
   /// cell. Precondition: at least one cell.
-  [[nodiscard]] std::pair<int, int> cells_meeting(double lo, double hi) const {
+  // Always inlined: the build's loops over every triangle call it (GCC kept a call in some).
+  [[nodiscard, gnu::always_inline]] std::pair<int, int> cells_meeting(double lo, double hi) const {
     return {first_meeting(lo), last_meeting(hi)};
   }
 
@@ -71,14 +72,14 @@ class GridAxis {
   // The first cell whose upper line is >= lo (clamped): the guess where exact comparisons with
   // its two lines prove it (almost always), else a binary search (out of line: the common path
   // stays small enough to inline into the build's loops over every triangle).
-  [[nodiscard]] int first_meeting(double lo) const {
+  [[nodiscard, gnu::always_inline]] int first_meeting(double lo) const {
     const int g = guess(lo);
     const auto i = static_cast<std::size_t>(g);
     if (lines_[i + 1] >= lo && (g == 0 || lines_[i] < lo)) return g;
     return first_meeting_searched(lo);
   }
   // The last cell whose lower line is <= hi (clamped), the same way.
-  [[nodiscard]] int last_meeting(double hi) const {
+  [[nodiscard, gnu::always_inline]] int last_meeting(double hi) const {
     const int g = guess(hi);
     const auto i = static_cast<std::size_t>(g);
     if (lines_[i] <= hi && (g + 1 == cells_ || lines_[i + 1] > hi)) return g;

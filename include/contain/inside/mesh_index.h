@@ -225,6 +225,9 @@ class MeshIndex {
   // reference, not 28: for 100k triangles 2.5 MB instead of 18 MB to fault in and fill).
   bool for_saving_ = false;
   HugePageVector<std::uint32_t> ref_tris_;
+  // Built for saving only: the sum of the records' triangle hashes (the file's fingerprint of the
+  // mesh, index_file.h), added as the records are made, not in a second read of their 10 MB.
+  std::uint64_t records_hash_sum_ = 0;
   // Winding regime.
   FastWindingNumber winding_;
   Stats stats_;
