@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "collide/test_meshes.h"
+#include "contain/bound/aabb.h"
 #include "contain/collide/mesh_mesh.h"
 #include "contain/collide/mesh_scene.h"
 #include "contain/distance/mesh_pair_distance.h"
@@ -114,9 +115,7 @@ TEST(SolidNesting, ACubeInACellMeetsASelfOverlappingMeshWhereTheOracleWindingNum
     const distance::MeshPairDistance mesh_first(mesh, cube, {.transform_a = place});
     const MeshPair mesh_is_a(mesh, cube, {.transform_a = place});
     // Cells of the mesh's box and of the layer around it.
-    Box3 box;
-    for (const Vec3 v : world.vertices)
-      box.expand(v);
+    const Box3 box = bound::aabb(std::span<const Vec3>(world.vertices));
     std::uniform_real_distribution<double> u(0.15, 0.85);
     std::uniform_int_distribution<int> cx(static_cast<int>(box.min.x) - 1,
                                           static_cast<int>(box.max.x)),

@@ -2,8 +2,10 @@
 // per coordinate, closest triangle with ties to the lowest index, exact sign, exact `within`.
 
 #include "contain/distance/mesh_distance.h"
+#include "contain/bound/aabb.h"
 
 #include <gtest/gtest.h>
+#include <span>
 
 #include <algorithm>
 #include <cfloat>
@@ -100,9 +102,7 @@ Mesh open_torus() {
 
 std::vector<Vec3> probe_points(const Mesh& mesh, int count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  Box3 box;
-  for (const Vec3& v : mesh.vertices)
-    box.expand(v);
+  const Box3 box = bound::aabb(std::span<const Vec3>(mesh.vertices));
   const Vec3 ext = box.max - box.min;
   std::uniform_real_distribution<double> u(-0.3, 1.3);
   std::uniform_real_distribution<double> unit(0, 1);

@@ -1,6 +1,8 @@
 #include "contain/inside/index_file.h"
+#include "contain/bound/aabb.h"
 
 #include <gtest/gtest.h>
+#include <span>
 
 #include <algorithm>
 #include <bit>
@@ -21,9 +23,7 @@ namespace {
 // Random points in a box grown by a quarter on each side, plus the degenerate ones: every
 // vertex, every edge's midpoint, the points of a coarse lattice (on grid planes and faces).
 std::vector<Vec3> probes(const Mesh& mesh, std::size_t count, std::uint64_t seed) {
-  Box3 box;
-  for (const Vec3& v : mesh.vertices)
-    box.expand(v);
+  const Box3 box = bound::aabb(std::span<const Vec3>(mesh.vertices));
   const Vec3 grow = 0.25 * (box.max - box.min);
   std::vector<Vec3> points =
       scenes::uniform_points(Box3{box.min - grow, box.max + grow}, count, seed);

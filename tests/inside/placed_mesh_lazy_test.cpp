@@ -5,12 +5,14 @@
 // along edges, nested and inverted shells, a reflecting placement), before and after the index
 // is built, and from several threads at once.
 #include <gtest/gtest.h>
+#include <span>
 
 #include <algorithm>
 #include <random>
 #include <thread>
 #include <vector>
 
+#include "contain/bound/aabb.h"
 #include "contain/inside/placed_mesh.h"
 #include "scenes/scenes.h"
 
@@ -20,9 +22,7 @@ namespace {
 // Off the surface: random points over the box and beyond, and each vertex moved along one axis
 // (its ray then runs through other vertices and along edges).
 std::vector<Vec3> points_off_and_grazing(const Mesh& mesh, std::size_t count, std::uint64_t seed) {
-  Box3 box;
-  for (const Vec3& v : mesh.vertices)
-    box.expand(v);
+  const Box3 box = bound::aabb(std::span<const Vec3>(mesh.vertices));
   std::vector<Vec3> points = scenes::uniform_points(
       {box.min - Vec3{0.5, 0.5, 0.5}, box.max + Vec3{0.5, 0.5, 0.5}}, count, seed);
   for (const Vec3& v : mesh.vertices) {
