@@ -403,24 +403,42 @@ void to_doubles(Wide x, double lo, double hi, double& out_lo, double& out_hi) {
   }
 }
 
+// The plane of a, b, c against the segment p q in one arithmetic (intervals or long doubles):
+// the edges u = b - a and v = c - a, the ends' offsets pa = p - a and qa = q - a, the normal
+// n = u x v and the ends' distances n . pa and n . qa (in units of |n|).
+template <class T>
+struct PlaneOfSegment {
+  std::array<T, 3> u, v, pa, qa, n;
+  T dp, dq;
+};
+
+template <class T>
+PlaneOfSegment<T> plane_of_segment(const std::array<T, 3>& p, const std::array<T, 3>& q,
+                                   const std::array<T, 3>& a, const std::array<T, 3>& b,
+                                   const std::array<T, 3>& c) {
+  PlaneOfSegment<T> f{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    f.u[i] = b[i] - a[i];
+    f.v[i] = c[i] - a[i];
+    f.pa[i] = p[i] - a[i];
+    f.qa[i] = q[i] - a[i];
+  }
+  f.n = {f.u[1] * f.v[2] - f.u[2] * f.v[1], f.u[2] * f.v[0] - f.u[0] * f.v[2],
+         f.u[0] * f.v[1] - f.u[1] * f.v[0]};
+  f.dp = f.n[0] * f.pa[0] + f.n[1] * f.pa[1] + f.n[2] * f.pa[2];
+  f.dq = f.n[0] * f.qa[0] + f.n[1] * f.qa[1] + f.n[2] * f.qa[2];
+  return f;
+}
+
 // line_plane_enclosed by intervals through every operation: where the segment's ends are not
 // certainly on opposite sides (the straight evaluation's t would not lie in [0, 1]).
 ExactPoint line_plane_intervals(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const auto at = [](Vec3 v) {
     return std::array<Wide, 3>{Wide{v.x, v.x}, Wide{v.y, v.y}, Wide{v.z, v.z}};
   };
-  const std::array<Wide, 3> ia = at(a), ib = at(b), ic = at(c), ip = at(p), iq = at(q);
-  std::array<Wide, 3> u{}, v{}, pa{}, qa{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    u[i] = ib[i] - ia[i];
-    v[i] = ic[i] - ia[i];
-    pa[i] = ip[i] - ia[i];
-    qa[i] = iq[i] - ia[i];
-  }
-  const std::array<Wide, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                                 u[0] * v[1] - u[1] * v[0]};
-  const Wide dp = n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2];
-  const Wide dq = n[0] * qa[0] + n[1] * qa[1] + n[2] * qa[2];
+  const std::array<Wide, 3> ip = at(p), iq = at(q);
+  const PlaneOfSegment<Wide> f = plane_of_segment(ip, iq, at(a), at(b), at(c));
+  const Wide dp = f.dp, dq = f.dq;
   const Wide t = dp / (dp - dq);
   ExactPoint out;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -447,23 +465,15 @@ ExactPoint line_plane_intervals(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
 ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   using L = long double;
   const auto at = [](Vec3 w) { return std::array<L, 3>{w.x, w.y, w.z}; };
-  const std::array<L, 3> la = at(a), lb = at(b), lc = at(c), lp = at(p), lq = at(q);
-  std::array<L, 3> u{}, v{}, pa{}, qa{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    u[i] = lb[i] - la[i];
-    v[i] = lc[i] - la[i];
-    pa[i] = lp[i] - la[i];
-    qa[i] = lq[i] - la[i];
-  }
-  const std::array<L, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                              u[0] * v[1] - u[1] * v[0]};
+  const std::array<L, 3> lp = at(p), lq = at(q);
+  const PlaneOfSegment<L> f = plane_of_segment(lp, lq, at(a), at(b), at(c));
+  const std::array<L, 3>&u = f.u, &v = f.v, &pa = f.pa, &qa = f.qa;
   const auto m = [](L x, L y, L z, L w) {
     return std::fabs(x) * std::fabs(y) + std::fabs(z) * std::fabs(w);
   };
   const std::array<L, 3> nm = {m(u[1], v[2], u[2], v[1]), m(u[2], v[0], u[0], v[2]),
                                m(u[0], v[1], u[1], v[0])};
-  const L dp = n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2];
-  const L dq = n[0] * qa[0] + n[1] * qa[1] + n[2] * qa[2];
+  const L dp = f.dp, dq = f.dq;
   const L ep =
       (nm[0] * std::fabs(pa[0]) + nm[1] * std::fabs(pa[1]) + nm[2] * std::fabs(pa[2])) * 0x1p-58L;
   const L eq =
