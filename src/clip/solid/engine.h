@@ -235,7 +235,12 @@ struct FaceLabels {
 [[nodiscard]] int dropped_axis(const BigVec3& n);
 
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
-[[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store);
+/// Whether the pair stage first proves the soup's vertices (star_proof.h) and skips the pairs
+/// that share a proven vertex, or tests every pair (the check of a written mesh; the tests that
+/// compare the two).
+enum class Neighbours : std::uint8_t { proven, tested };
+[[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
+                                                        Neighbours neighbours = Neighbours::proven);
 /// The same decisions (the same constraints of each triangle, the same coplanar partners) with
 /// points numbered apart from any store: the soup's vertices first, then each crossing as made,
 /// enclosed but not rounded (for the check of a written mesh and the bounds of a snap round,

@@ -240,15 +240,12 @@ bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corn
   return (bits & shared) != 0;
 }
 
-// Whether `pairs_of` proves the soup's vertices first (star_proof.h).
-enum class Neighbours : std::uint8_t { proven, tested };
-
 template <class Points>
 std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
-  // Pairs sharing a proven vertex are settled without their test (none when a test compares).
-  const std::vector<std::uint8_t> corners = neighbours == Neighbours::proven && star_proofs_used()
+  // Pairs sharing a proven vertex are settled without their test.
+  const std::vector<std::uint8_t> corners = neighbours == Neighbours::proven
                                                 ? proven_corners(soup)
                                                 : std::vector<std::uint8_t>(soup.triangles.size());
   (void)bvh::traverse_self(
@@ -276,9 +273,10 @@ EnclosedPoints enclosed_vertices(const Soup& soup) {
 
 }  // namespace
 
-std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store) {
+std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
+                                          Neighbours neighbours) {
   StoredPoints points{store};
-  return pairs_of(soup, points, Neighbours::proven);
+  return pairs_of(soup, points, neighbours);
 }
 
 std::vector<TriangleWork> meeting_pairs(const Soup& soup) {

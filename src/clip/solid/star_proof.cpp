@@ -4,7 +4,6 @@
 #include "clip/solid/star_proof.h"
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,8 +22,6 @@ using predicates::orient3d;
 // Stars larger than this (a fan's apex) are left unproven: the ring's walk is quadratic in
 // their size, and they are few.
 constexpr std::size_t max_star = 16;
-
-std::atomic<bool> proofs_used{true};
 
 // One triangle v a b of a vertex v's star (as oriented, rotated to start at v): its edge a -> b
 // of the ring around v.
@@ -127,14 +124,6 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
 }
 
 }  // namespace
-
-bool star_proofs_used() {
-  return proofs_used.load(std::memory_order_relaxed);
-}
-
-void use_star_proofs(bool used) {
-  proofs_used.store(used, std::memory_order_relaxed);
-}
 
 std::vector<bool> proven_vertices(const Soup& soup) {
   const std::size_t vertices = soup.vertices.size();

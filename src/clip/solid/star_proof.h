@@ -42,11 +42,6 @@ namespace contain::clip::solid {
 /// For each triangle of the soup: bit k set when its corner k is a proven vertex.
 [[nodiscard]] std::vector<std::uint8_t> proven_corners(const Soup& soup);
 
-/// Whether the pair stage skips the pairs that share a proven vertex: true, unless a test turns
-/// it off to compare the results with and without (an atomic flag of the process).
-[[nodiscard]] bool star_proofs_used();
-void use_star_proofs(bool used);
-
 /// Whether `intersect_pair` would give triangles t and u (t < u) a constraint or a coplanar
 /// partner, or make a crossing point on the way (for the tests; defined in intersect.cpp).
 [[nodiscard]] bool pair_gives_work(const Soup& soup, std::int32_t t, std::int32_t u);
