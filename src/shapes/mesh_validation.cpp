@@ -12,6 +12,7 @@
 
 #include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/rounded_volume.h"
 #include "contain/values/box.h"
 
 // Outline: the triangle corners grouped by vertex (one counting sort) give, at each vertex v,
@@ -272,20 +273,8 @@ MeshReport validate(const Mesh& mesh, bool quick_first) {
     r.genus = (2 * static_cast<std::int64_t>(r.components) - r.euler_characteristic) / 2;
   }
 
-  // Signed volume: sum of a . (b x c) / 6, relative to the box centre, Neumaier summation.
-  if (!box.empty()) {
-    const Vec3 o = 0.5 * box.min + 0.5 * box.max;
-    double sum = 0.0, compensation = 0.0;
-    for (const TriangleIndices& tri : mesh.triangles) {
-      const Vec3 a = mesh.vertex(tri[0]) - o, b = mesh.vertex(tri[1]) - o,
-                 c = mesh.vertex(tri[2]) - o;
-      const double term = dot(a, cross(b, c));
-      const double s = sum + term;
-      compensation += std::abs(sum) >= std::abs(term) ? (sum - s) + term : (term - s) + sum;
-      sum = s;
-    }
-    r.signed_volume = (sum + compensation) / 6.0;
-  }
+  // Exact in sign (and correctly rounded): `outward` is decided on it.
+  r.signed_volume = predicates::rounded_signed_volume(mesh.vertices, mesh.triangles);
   return r;
 }
 

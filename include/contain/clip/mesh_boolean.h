@@ -28,7 +28,7 @@ struct MeshBooleanResult {
   /// An empty result is a mesh with no triangles.
   Mesh mesh;
   std::size_t shells = 0;  ///< connected sheets of `mesh` (by shared vertex indices)
-  double volume = 0.0;     ///< volume of the written mesh (sum of signed tetrahedra)
+  double volume = 0.0;     ///< volume of the written mesh, the double nearest to the exact one
   /// Written positions that are not the nearest doubles of an exact point of the result (made
   /// by the snap-rounding repair), 0 when every vertex is the double nearest to its exact point.
   std::size_t moved = 0;

@@ -40,9 +40,9 @@ struct MeshReport {
   /// Total genus (sum over components) for a closed, 2-manifold, consistently oriented mesh:
   /// (2 components - euler_characteristic) / 2; nothing otherwise.
   std::optional<std::int64_t> genus;
-  /// Signed volume (divergence theorem, compensated sum, coordinates relative to the bounding
-  /// box centre): positive when the triangles face outward. Meaningful for a closed, consistently
-  /// oriented mesh.
+  /// Signed volume (divergence theorem: (1/6) sum of a . (b x c) over the triangles), the double
+  /// nearest to the exact value, so its sign is exact: positive when the triangles face outward.
+  /// Meaningful for a closed, consistently oriented mesh (then independent of the origin).
   double signed_volume = 0.0;
 
   /// Every edge shared by exactly two triangles.

@@ -20,6 +20,7 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/snap.h"
 #include "contain/core/union_find.h"
+#include "contain/predicates/rounded_volume.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -106,16 +107,6 @@ std::size_t moved_count(const Faces& faces, const PointStore& store,
   return static_cast<std::size_t>(std::unique(other.begin(), other.end(), same) - other.begin());
 }
 
-double signed_volume(const Mesh& mesh) {
-  double six = 0.0;
-  for (const TriangleIndices& t : mesh.triangles) {
-    const Vec3 a = mesh.vertex(t[0]), b = mesh.vertex(t[1]), c = mesh.vertex(t[2]);
-    six += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
-           a.z * (b.x * c.y - b.y * c.x);
-  }
-  return six / 6.0;
-}
-
 }  // namespace
 
 BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
@@ -158,7 +149,7 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const BoundaryFaces& bo
   result.moved = rounds == 0 && !inputs_snapped ? 0 : moved_count(faces, store, mesh->vertices);
   result.mesh = std::move(*mesh);
   result.shells = count_shells(result.mesh);
-  result.volume = signed_volume(result.mesh);
+  result.volume = predicates::rounded_signed_volume(result.mesh.vertices, result.mesh.triangles);
   return result;
 }
 
