@@ -405,6 +405,17 @@ bool oriented(const Mesh& mesh) {
 }
 }  // namespace
 
+bool written_pair_meets(const Triangle3& a, const Triangle3& b) {
+  const std::array<Vec3, 3> t = {a.a, a.b, a.c}, u = {b.a, b.b, b.c};
+  std::array<int, 3> u_in_t = {-1, -1, -1};
+  for (std::size_t m = 0; m < 3; ++m) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (u[m] == t[k]) u_in_t[m] = static_cast<int>(k);
+    }
+  }
+  return meet_beyond_shared(t, u, u_in_t);
+}
+
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
   return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
          orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
