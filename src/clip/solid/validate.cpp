@@ -76,17 +76,18 @@ int largest_axis(const std::array<Vec3, 3>& t) {
 // shared ends: U' lies in the closed outer half-plane touching the line only there.
 bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::array<Vec2, 3>& b,
                          const std::array<int, 3>& b_in_a) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
+  unsigned shared = 0;  // a's corners that b shares, as bits
+  for (const int k : b_in_a) {
+    if (k >= 0) shared |= 1U << static_cast<unsigned>(k);
+  }
+  for (unsigned i = 0; i < 3; ++i) {
+    const unsigned j = (i + 1) % 3;
+    // A shared corner off the edge (a's third corner) is inside: no orient2d asked then.
+    if ((shared & ~((1U << i) | (1U << j))) != 0) continue;
     bool outside = true;
     for (std::size_t m = 0; m < 3 && outside; ++m) {
-      if (b_in_a[m] == i || b_in_a[m] == j) continue;  // a shared end of the edge: on the line
-      if (b_in_a[m] >= 0) {
-        outside = false;  // the third corner of a, shared: inside
-        break;
-      }
-      const Sign side =
-          orient2d(a[static_cast<std::size_t>(i)], a[static_cast<std::size_t>(j)], b[m]);
+      if (b_in_a[m] >= 0) continue;  // a shared end of the edge: on the line
+      const Sign side = orient2d(a[i], a[j], b[m]);
       outside = side != Sign::zero && side != turn;
     }
     if (outside) return true;
