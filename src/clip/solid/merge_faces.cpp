@@ -17,8 +17,7 @@
 #include <limits>
 #include <optional>
 #include <span>
-#include <unordered_map>
-#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -118,20 +117,33 @@ Face enclosing(const std::vector<std::int32_t>& ids, PointStore& store, int axis
 std::optional<std::vector<Face>> inside(const std::vector<Face>& tris,
                                         const std::vector<std::uint64_t>& outline, bool positive,
                                         const Face& corners) {
-  std::unordered_map<std::uint64_t, std::size_t> by_edge;
+  // Sorted arrays, not hash tables: a region has a few dozen edges, and the tables' nodes were
+  // most of the merging's time. Each directed edge of a triangulation is in one triangle.
+  std::vector<std::pair<std::uint64_t, std::size_t>> by_edge;
+  by_edge.reserve(3 * tris.size());
   for (std::size_t t = 0; t < tris.size(); ++t) {
     for (std::size_t k = 0; k < 3; ++k)
-      by_edge[directed_key(tris[t][k], tris[t][(k + 1) % 3])] = t;
+      by_edge.emplace_back(directed_key(tris[t][k], tris[t][(k + 1) % 3]), t);
   }
-  std::unordered_set<std::uint64_t> walls;
+  std::sort(by_edge.begin(), by_edge.end());
+  const auto triangle_of = [&](std::uint64_t key) -> std::optional<std::size_t> {
+    const auto it = std::lower_bound(by_edge.begin(), by_edge.end(),
+                                     std::pair<std::uint64_t, std::size_t>{key, 0});
+    if (it == by_edge.end() || it->first != key) return std::nullopt;
+    return it->second;
+  };
+  std::vector<std::uint64_t> walls;
+  walls.reserve(outline.size());
   std::vector<std::size_t> stack;
   for (const std::uint64_t e : outline) {
     const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
-    walls.insert(edge_key(a, b));
-    const auto it = by_edge.find(positive ? directed_key(a, b) : directed_key(b, a));
-    if (it == by_edge.end()) return std::nullopt;  // not an edge: the pieces were not recovered
-    stack.push_back(it->second);
+    walls.push_back(edge_key(a, b));
+    const std::optional<std::size_t> t =
+        triangle_of(positive ? directed_key(a, b) : directed_key(b, a));
+    if (!t) return std::nullopt;  // not an edge: the pieces were not recovered
+    stack.push_back(*t);
   }
+  std::sort(walls.begin(), walls.end());
   std::vector<bool> seen(tris.size(), false);
   std::vector<Face> out;
   while (!stack.empty()) {
@@ -145,9 +157,9 @@ std::optional<std::vector<Face>> inside(const std::vector<Face>& tris,
     }
     out.push_back(positive ? v : Face{v[0], v[2], v[1]});
     for (std::size_t k = 0; k < 3; ++k) {
-      if (walls.contains(edge_key(v[k], v[(k + 1) % 3]))) continue;
-      const auto it = by_edge.find(directed_key(v[(k + 1) % 3], v[k]));
-      if (it != by_edge.end()) stack.push_back(it->second);
+      if (std::binary_search(walls.begin(), walls.end(), edge_key(v[k], v[(k + 1) % 3]))) continue;
+      if (const std::optional<std::size_t> across = triangle_of(directed_key(v[(k + 1) % 3], v[k])))
+        stack.push_back(*across);
     }
   }
   return out;
@@ -178,27 +190,32 @@ void merge_region(const Soup& soup, const BoundaryFaces& boundary,
                   std::span<const std::size_t> region, std::size_t leader,
                   const std::vector<std::size_t>& owner, PointStore& store, Faces& out) {
   const std::vector<std::size_t> faces(region.begin(), region.end());
-  std::unordered_set<std::uint64_t> directed;
+  // Sorted arrays, not hash sets (a region holds a few dozen edges).
+  std::vector<std::uint64_t> directed;
+  directed.reserve(3 * faces.size());
   for (const std::size_t f : faces) {
     const Face& v = boundary.faces[f];
     for (std::size_t k = 0; k < 3; ++k)
-      directed.insert(directed_key(v[k], v[(k + 1) % 3]));
+      directed.push_back(directed_key(v[k], v[(k + 1) % 3]));
   }
+  std::sort(directed.begin(), directed.end());
+  directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
   std::vector<std::uint64_t> outline;  // directed edges whose reverse is in no region face
-  std::unordered_set<std::int32_t> on_outline;
+  std::vector<std::int32_t> on_outline;
   for (const std::uint64_t e : directed) {
     const auto a = static_cast<std::int32_t>(e >> 32U), b = static_cast<std::int32_t>(e);
-    if (directed.contains(directed_key(b, a))) continue;
-    outline.push_back(e);
-    on_outline.insert(a);
-    on_outline.insert(b);
+    if (std::binary_search(directed.begin(), directed.end(), directed_key(b, a))) continue;
+    outline.push_back(e);  // ascending, as `directed`
+    on_outline.push_back(a);
+    on_outline.push_back(b);
   }
-  std::sort(outline.begin(), outline.end());
+  std::sort(on_outline.begin(), on_outline.end());
   std::vector<std::int32_t> keep;
   bool drops = false;
   for (const std::size_t f : faces) {
     for (const std::int32_t p : boundary.faces[f]) {
-      if (on_outline.contains(p) || owner[static_cast<std::size_t>(p)] != leader) {
+      if (std::binary_search(on_outline.begin(), on_outline.end(), p) ||
+          owner[static_cast<std::size_t>(p)] != leader) {
         keep.push_back(p);
       } else {
         drops = true;

@@ -40,97 +40,142 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/exact_point.h"
 #include "contain/bvh/bvh.h"
+#include "contain/collide/tri_tri.h"
 #include "contain/core/location.h"
 #include "contain/core/union_find.h"
 #include "contain/inside/point_in_mesh.h"
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
+#include "contain/values/segment.h"
+#include "contain/values/triangle.h"
 
 namespace contain::clip::solid {
 namespace {
 
 using predicates::orient2d;
 
-struct Flat {
-  int axis;
-  [[nodiscard]] Vec2 operator()(Vec3 v) const {
-    const double c[3] = {v.x, v.y, v.z};
-    return {c[(axis + 1) % 3], c[(axis + 2) % 3]};
+// The projection that drops coordinate `axis` (the other two in cyclic order).
+Vec2 drop(Vec3 v, int axis) {
+  const double c[3] = {v.x, v.y, v.z};
+  return {c[(axis + 1) % 3], c[(axis + 2) % 3]};
+}
+
+// The axis along which the triangle's normal is largest in doubles: a choice of projection only
+// (the test below is exact whatever the axis; this one keeps the projection's area large).
+int largest_axis(const std::array<Vec3, 3>& t) {
+  const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
+  const double x = std::fabs(n.x), y = std::fabs(n.y), z = std::fabs(n.z);
+  return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
+}
+
+// Whether an edge line of a's projection (of orientation `turn`, not zero) has b's projected
+// corners strictly outside a, but those b shares with a that are ends of that edge (corner m of
+// b is corner b_in_a[m] of a, or -1). Then the projections meet only in the hull of those
+// shared ends: U' lies in the closed outer half-plane touching the line only there.
+bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::array<Vec2, 3>& b,
+                         const std::array<int, 3>& b_in_a) {
+  unsigned shared = 0;  // a's corners that b shares, as bits
+  for (const int k : b_in_a) {
+    if (k >= 0) shared |= 1U << static_cast<unsigned>(k);
   }
-};
-
-bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
-  return orient2d(a, b, p) == Sign::zero && std::min(a.x, b.x) <= p.x &&
-         p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
-}
-
-bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = to_int(orient2d(a, b, c)), o2 = to_int(orient2d(a, b, d));
-  const int o3 = to_int(orient2d(c, d, a)), o4 = to_int(orient2d(c, d, b));
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
-}
-
-bool in_triangle(const std::array<Vec2, 3>& t, Vec2 p) {
-  const int o = to_int(orient2d(t[0], t[1], t[2]));
-  for (int i = 0; i < 3; ++i) {
-    if (to_int(
-            orient2d(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)], p)) *
-            o <
-        0) {
-      return false;
+  for (unsigned i = 0; i < 3; ++i) {
+    const unsigned j = (i + 1) % 3;
+    // A shared corner off the edge (a's third corner) is inside: no orient2d asked then.
+    if ((shared & ~((1U << i) | (1U << j))) != 0) continue;
+    bool outside = true;
+    for (std::size_t m = 0; m < 3 && outside; ++m) {
+      if (b_in_a[m] >= 0) continue;  // a shared end of the edge: on the line
+      const Sign side = orient2d(a[i], a[j], b[m]);
+      outside = side != Sign::zero && side != turn;
     }
-  }
-  return true;
-}
-
-bool segment_meets_triangle(Vec2 a, Vec2 b, const std::array<Vec2, 3>& t) {
-  if (in_triangle(t, a) || in_triangle(t, b)) return true;
-  for (int i = 0; i < 3; ++i) {
-    if (segments_meet(a, b, t[static_cast<std::size_t>(i)],
-                      t[static_cast<std::size_t>((i + 1) % 3)])) {
-      return true;
-    }
+    if (outside) return true;
   }
   return false;
 }
 
-// Coplanar triangles t, u of the soup meet beyond their shared corners.
-bool coplanar_meet(const Soup& soup, std::int32_t t, std::int32_t u) {
-  const Flat flat{soup.projection(static_cast<std::size_t>(t)).axis};
-  const TriangleIndices& vt = soup.triangles[static_cast<std::size_t>(t)];
-  const TriangleIndices& vu = soup.triangles[static_cast<std::size_t>(u)];
-  std::array<Vec2, 3> a{}, b{};
-  int shared = 0, at = -1, bt = -1;
-  for (std::size_t i = 0; i < 3; ++i) {
-    a[i] = flat(soup.vertices[static_cast<std::size_t>(vt[i])]);
-    b[i] = flat(soup.vertices[static_cast<std::size_t>(vu[i])]);
-    for (std::size_t j = 0; j < 3; ++j) {
-      if (vt[i] == vu[j]) {
-        ++shared;
-        at = static_cast<int>(i);
-        bt = static_cast<int>(j);
-      }
+// A cheap sufficient test, exact: in the projection along `axis`, an edge line of one
+// triangle's projection leaves the other's corners outside but for shared ends of that edge.
+// Then the projections meet at most in the hull H of those shared corners, and so do the
+// triangles: a common point z projects into H, onto the projection of some w of H; z and w lie
+// in the triangle whose projection is not flat (exactly, by orient2d), on which the projection
+// is one to one, so z = w. Triangles in one plane (merged faces, pieces of one input triangle,
+// on which every orient3d is an exact zero) and neighbours across an edge are most of the pairs
+// of the check, and are settled here by a few orient2d.
+bool apart_in_projection(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
+                         const std::array<int, 3>& t_in_u, const std::array<int, 3>& u_in_t,
+                         int axis) {
+  const std::array<Vec2, 3> a = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
+  const std::array<Vec2, 3> b = {drop(u[0], axis), drop(u[1], axis), drop(u[2], axis)};
+  const Sign turn_a = orient2d(a[0], a[1], a[2]);
+  if (turn_a != Sign::zero && edge_line_separates(a, turn_a, b, u_in_t)) return true;
+  const Sign turn_b = orient2d(b[0], b[1], b[2]);
+  return turn_b != Sign::zero && edge_line_separates(b, turn_b, a, t_in_u);
+}
+
+// Triangles t and u (not of zero area) meet beyond the corners they share (corner m of u is
+// corner u_in_t[m] of t, or -1) and the edge they share, exactly: the projection test first,
+// then by the shared corners (as collide::self_intersections decides, with tri_tri and
+// segment_triangle, orient3d and orient2d signs only): none shared, any common point; one
+// shared, the edge of either opposite it meets the other (a common point beyond the corner
+// makes a segment from it, which leaves one of the triangles through that edge or ends inside
+// both); an edge shared, both in one plane with the third corners on one side of it. Three
+// shared (the same triangle twice, either way round): they meet.
+bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
+                        const std::array<int, 3>& u_in_t) {
+  std::array<int, 3> t_in_u = {-1, -1, -1};
+  int shared = 0;
+  for (std::size_t m = 0; m < 3; ++m) {
+    if (u_in_t[m] >= 0) {
+      t_in_u[static_cast<std::size_t>(u_in_t[m])] = static_cast<int>(m);
+      ++shared;
     }
   }
-  if (shared >= 2) return true;  // folded onto each other or repeated (the pair stage kept it)
+  if (shared == 3) return true;
+  if (apart_in_projection(t, u, t_in_u, u_in_t, largest_axis(t))) return false;
+  const Triangle3 tt{t[0], t[1], t[2]}, uu{u[0], u[1], u[2]};
+  if (shared == 0) return collide::tri_tri(tt, uu);
+  const auto lone = [](const std::array<int, 3>& in, bool is_shared) {
+    std::size_t k = 0;
+    while ((in[k] >= 0) != is_shared)
+      ++k;
+    return k;
+  };
   if (shared == 1) {
-    const auto far = [](const std::array<Vec2, 3>& x, int k) {
-      return std::pair{x[static_cast<std::size_t>((k + 1) % 3)],
-                       x[static_cast<std::size_t>((k + 2) % 3)]};
-    };
-    const auto [a1, a2] = far(a, at);
-    const auto [b1, b2] = far(b, bt);
-    return segment_meets_triangle(a1, a2, b) || segment_meets_triangle(b1, b2, a);
+    const std::size_t pt = lone(t_in_u, true), pu = lone(u_in_t, true);
+    const Segment3 far_t{t[(pt + 1) % 3], t[(pt + 2) % 3]};
+    const Segment3 far_u{u[(pu + 1) % 3], u[(pu + 2) % 3]};
+    return collide::segment_triangle(far_t, uu) || collide::segment_triangle(far_u, tt);
   }
-  for (int i = 0; i < 3; ++i) {
-    if (segment_meets_triangle(a[static_cast<std::size_t>(i)],
-                               a[static_cast<std::size_t>((i + 1) % 3)], b)) {
-      return true;
+  // Edge p q shared, x and y the third corners: meeting beyond it needs one plane.
+  const std::size_t xt = lone(t_in_u, false), yu = lone(u_in_t, false);
+  const Vec3 p = t[(xt + 1) % 3], q = t[(xt + 2) % 3], x = t[xt], y = u[yu];
+  if (predicates::orient3d(p, q, x, y) != Sign::zero) return false;
+  // In one plane: x and y on one side of p q in a projection that is one to one on it (x is off
+  // the line p q in some projection, t having area; y is then off it too, u having area).
+  for (int axis = 0; axis < 3; ++axis) {
+    const Sign sx = orient2d(drop(p, axis), drop(q, axis), drop(x, axis));
+    if (sx != Sign::zero) return orient2d(drop(p, axis), drop(q, axis), drop(y, axis)) == sx;
+  }
+  return true;  // unreachable: t has area
+}
+
+// meet_beyond_shared on triangles t and u of the local soup (shared corners by number: the
+// soup is welded by position).
+bool pair_meets(const Soup& soup, std::size_t t, std::size_t u) {
+  const TriangleIndices& vt = soup.triangles[t];
+  const TriangleIndices& vu = soup.triangles[u];
+  std::array<Vec3, 3> a{}, b{};
+  std::array<int, 3> u_in_t = {-1, -1, -1};
+  for (std::size_t m = 0; m < 3; ++m) {
+    a[m] = soup.vertices[static_cast<std::size_t>(vt[m])];
+    b[m] = soup.vertices[static_cast<std::size_t>(vu[m])];
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (vu[m] == vt[k]) u_in_t[m] = static_cast<int>(k);
     }
   }
-  return in_triangle(a, b[0]);
+  return meet_beyond_shared(a, b, u_in_t);
 }
 
 Status failure(const std::string& what) {
@@ -361,6 +406,17 @@ bool oriented(const Mesh& mesh) {
 }
 }  // namespace
 
+bool written_pair_meets(const Triangle3& a, const Triangle3& b) {
+  const std::array<Vec3, 3> t = {a.a, a.b, a.c}, u = {b.a, b.b, b.c};
+  std::array<int, 3> u_in_t = {-1, -1, -1};
+  for (std::size_t m = 0; m < 3; ++m) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (u[m] == t[k]) u_in_t[m] = static_cast<int>(k);
+    }
+  }
+  return meet_beyond_shared(t, u, u_in_t);
+}
+
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
   return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
          orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
@@ -414,25 +470,33 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
   if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
-  const std::vector<TriangleWork> work = meeting_pairs(soup);
-  std::vector<bool> bad(work.size(), false);
-  for (std::size_t t = 0; t < work.size(); ++t) {
-    for (const Constraint& c : work[t].constraints) {
-      // The partner holds the same constraint: it is marked at its own turn.
-      if (c.edge == no_edge) {
-        if (crossing == nullptr) return failure("two triangles cross");
-        status = failure("two triangles cross");
+  // Pairs of two triangles with every corner kept need no test (above); each other pair whose
+  // boxes meet is tested once.
+  std::vector<bool> tested(chosen.size(), false);
+  for (std::size_t i = 0, r = 0; i < chosen.size(); ++i) {
+    while (r < rounded.size() && rounded[r] < chosen[i])
+      ++r;
+    tested[i] = r < rounded.size() && rounded[r] == chosen[i];
+  }
+  std::vector<bool> bad(chosen.size(), false);
+  const char* what = nullptr;
+  (void)bvh::traverse_self(
+      soup.tree, [](const bvh::Node& x, const bvh::Node& y) { return x.box.overlaps(y.box); },
+      [&](std::int32_t i, std::int32_t j) {
+        const auto t = static_cast<std::size_t>(std::min(i, j));
+        const auto u = static_cast<std::size_t>(std::max(i, j));
+        if ((!tested[t] && !tested[u]) || !soup.boxes[t].overlaps(soup.boxes[u])) {
+          return bvh::Visit::proceed;
+        }
+        if (!pair_meets(soup, t, u)) return bvh::Visit::proceed;
+        what = "two triangles cross or overlap";
         bad[t] = true;
-      }
-    }
-    for (const std::int32_t u : work[t].coplanar) {
-      if (coplanar_meet(soup, static_cast<std::int32_t>(t), u)) {
-        if (crossing == nullptr) return failure("two triangles in one plane overlap");
-        status = failure("two triangles in one plane overlap");
-        bad[t] = true;
-        bad[static_cast<std::size_t>(u)] = true;
-      }
-    }
+        bad[u] = true;
+        return crossing == nullptr ? bvh::Visit::stop : bvh::Visit::proceed;
+      });
+  if (what != nullptr) {
+    if (crossing == nullptr) return failure(what);
+    status = failure(what);
   }
   for (std::size_t t = 0; t < bad.size(); ++t) {
     if (bad[t]) crossing->push_back(chosen[t]);

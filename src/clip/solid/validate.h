@@ -6,6 +6,7 @@
 
 #include "contain/core/result.h"
 #include "contain/shapes/mesh.h"
+#include "contain/values/triangle.h"
 
 namespace contain::clip::solid {
 
@@ -28,6 +29,11 @@ namespace contain::clip::solid {
 /// appended.
 [[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
                                    std::vector<std::int32_t>* crossing = nullptr);
+
+/// Whether triangles a and b (neither of zero area) meet beyond the corners they share (corners
+/// at the same position) and the edge they share, exactly: the pair test of check_written. The
+/// same triangle twice (either way round) meets.
+[[nodiscard]] bool written_pair_meets(const Triangle3& a, const Triangle3& b);
 
 /// Zero area, exactly: the three projections onto the coordinate planes have zero area.
 [[nodiscard]] bool zero_area(Vec3 a, Vec3 b, Vec3 c);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/solid_oracle.h"
 #include "contain/clip/mesh_boolean.h"
+#include "contain/collide/self_intersections.h"
 #include "support/case_budget.h"
 
 namespace contain::test {
@@ -132,6 +134,82 @@ TEST(CheckWritten, MeetingPairsMakeTheDecisionsOfThePairStage) {
     }
     EXPECT_GT(constraints, 0U) << what;
   }
+}
+
+// The check's pair test (a projection along one axis where an edge line leaves the other
+// triangle outside, then the exact tests by shared corners) against collide's
+// self_intersections (GMP-checked) on the two triangles as a mesh: random triangles on the
+// lattice {0, 1, 2}^3 and in the plane z = 0 (shared corners, shared edges, coplanar overlaps,
+// folds, touching at a corner or along an edge), and fans in one plane whose outer corners are
+// moved by an ulp off it or along it (the merged faces of a written result). Symmetric and
+// independent of the corners' order; the same triangle twice, either way round, meets.
+TEST(CheckWritten, PairTestAgreesWithSelfIntersectionsOnLatticeAndNearlyCoplanarPairs) {
+  using clip::solid::written_pair_meets;
+  using clip::solid::zero_area;
+  std::mt19937_64 rng(25);
+  std::uniform_int_distribution<int> coordinate(0, 2), coin(0, 3);
+  const auto lattice = [&](bool flat) {
+    return Vec3{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
+                flat ? 0.0 : static_cast<double>(coordinate(rng))};
+  };
+  const auto decide = [](const Triangle3& a, const Triangle3& b) {
+    const bool meets = written_pair_meets(a, b);
+    EXPECT_EQ(written_pair_meets(b, a), meets);
+    EXPECT_EQ(written_pair_meets({a.b, a.c, a.a}, {b.c, b.a, b.b}), meets);
+    const Mesh pair{{a.a, a.b, a.c, b.a, b.b, b.c}, {{0, 1, 2}, {3, 4, 5}}};
+    EXPECT_EQ(meets, !collide::self_intersections(pair).empty())
+        << a.a.x << " " << a.a.y << " " << a.a.z << " / " << a.b.x << " " << a.b.y << " " << a.b.z
+        << " / " << a.c.x << " " << a.c.y << " " << a.c.z << " | " << b.a.x << " " << b.a.y << " "
+        << b.a.z << " / " << b.b.x << " " << b.b.y << " " << b.b.z << " / " << b.c.x << " " << b.c.y
+        << " " << b.c.z;
+    return meets;
+  };
+  std::array<int, 2> outcomes{};
+  const int cases = case_budget(20000, 4000);
+  for (int k = 0; k < cases; ++k) {
+    const bool flat = k % 2 == 0;
+    const Triangle3 a{lattice(flat), lattice(flat), lattice(flat)};
+    Triangle3 b{lattice(flat), lattice(flat), lattice(flat)};
+    // Shared corners: b takes some of a's (any of them, in any place).
+    const std::array<Vec3, 3> ca = {a.a, a.b, a.c};
+    if (coin(rng) != 0) b.a = ca[static_cast<std::size_t>(coordinate(rng))];
+    if (coin(rng) == 0) b.b = ca[static_cast<std::size_t>(coordinate(rng))];
+    if (zero_area(a.a, a.b, a.c) || zero_area(b.a, b.b, b.c)) continue;
+    const bool same = (b.a == a.a || b.a == a.b || b.a == a.c) &&
+                      (b.b == a.a || b.b == a.b || b.b == a.c) &&
+                      (b.c == a.a || b.c == a.b || b.c == a.c);
+    if (same) {
+      EXPECT_TRUE(written_pair_meets(a, b));
+      continue;
+    }
+    ++outcomes[decide(a, b) ? 1 : 0];
+  }
+  // A fan of four triangles around the origin in the plane x + 2y + 3z = 0 (exact on these
+  // doubles), each pair of neighbours sharing an edge, the others the centre; then an outer
+  // corner moved by an ulp in each coordinate, both ways: off the plane or along it, the pairs
+  // are decided exactly (a move across a neighbour's edge folds them).
+  const Vec3 o{0, 0, 0};
+  std::array<Vec3, 4> rim = {Vec3{3, 0, -1}, Vec3{0, 3, -2}, Vec3{-3, 0, 1}, Vec3{0, -3, 2}};
+  for (std::size_t moved = 0; moved < 4; ++moved) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double toward : {-1e300, 1e300}) {
+        std::array<Vec3, 4> r = rim;
+        double* c = axis == 0 ? &r[moved].x : axis == 1 ? &r[moved].y : &r[moved].z;
+        *c = std::nextafter(*c, toward);
+        for (std::size_t i = 0; i < 4; ++i) {
+          for (std::size_t j = i + 1; j < 4; ++j) {
+            const Triangle3 a{o, r[i], r[(i + 1) % 4]}, b{o, r[j], r[(j + 1) % 4]};
+            ++outcomes[decide(a, b) ? 1 : 0];
+          }
+        }
+      }
+    }
+  }
+  // A triangle folded onto its neighbour in the plane, and one just across it: both decided.
+  EXPECT_TRUE(decide({o, rim[0], rim[1]}, {rim[1], o, Vec3{1, 1, -1}}));
+  EXPECT_FALSE(decide({o, rim[0], rim[1]}, {rim[0], o, rim[3]}));
+  EXPECT_GT(outcomes[0], 100);
+  EXPECT_GT(outcomes[1], 100);
 }
 
 // Made by hand: the top vertex of an octahedron pushed down and out past a lower face folds
