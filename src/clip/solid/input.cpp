@@ -130,15 +130,11 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
     }
     soup.boxes.push_back(box);
   }
-  // Large soups take the linear build: the SAH's sweep of every triangle per level was a
-  // quarter of a boolean of two spheres of 131k triangles, the looser tree costs the pairs and
-  // rays far less. Small ones keep the SAH tree (cheap there): the tree's order numbers the
-  // crossing points, which steers how merged coplanar faces are triangulated again, so their
-  // written meshes stay those of before (the same solid either way).
-  constexpr std::size_t linear_build_from = 16384;
-  soup.tree = bvh::Bvh(
-      soup.boxes, {.method = soup.triangles.size() >= linear_build_from ? bvh::BuildMethod::morton
-                                                                        : bvh::BuildMethod::sah});
+  // The linear (Morton) build at every size: the SAH's sweep of every triangle per level was a
+  // quarter of a boolean of two spheres of 131k triangles and a tenth of one of 2k, and the
+  // looser tree costs the pairs and rays less than that. (The tree's order numbers the crossing
+  // points, which steers how merged coplanar faces are triangulated again: the same solid.)
+  soup.tree = bvh::Bvh(soup.boxes, {.method = bvh::BuildMethod::morton});
   return soup;
 }
 
