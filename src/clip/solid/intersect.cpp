@@ -15,8 +15,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -240,6 +243,27 @@ bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corn
   return (bits & shared) != 0;
 }
 
+// The item pairs of a leaf pair (a and b the same span: one leaf's pairs i < j) whose boxes
+// meet, as bits i * 4 + j, tested without a branch per pair (whether two boxes of neighbouring
+// triangles meet is a coin toss for the branch predictor). Leaves of at most 4 items.
+std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std::int32_t> a,
+                            std::span<const std::int32_t> b) {
+  const bool same = a.data() == b.data();
+  std::uint32_t bits = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Box3& p = boxes[static_cast<std::size_t>(a[i])];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Box3& q = boxes[static_cast<std::size_t>(b[j])];
+      // As Box3::overlaps, with & for && (an empty box still meets nothing).
+      const bool meet = (p.min.x <= q.max.x) & (q.min.x <= p.max.x) & (p.min.y <= q.max.y) &
+                        (q.min.y <= p.max.y) & (p.min.z <= q.max.z) & (q.min.z <= p.max.z) &
+                        (!same | (j > i));
+      bits |= static_cast<std::uint32_t>(meet) << (4 * i + j);
+    }
+  }
+  return bits;
+}
+
 template <class Points>
 std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
   const std::vector<Box3>& boxes = soup.boxes;
@@ -248,13 +272,29 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   const std::vector<std::uint8_t> corners = neighbours == Neighbours::proven
                                                 ? proven_corners(soup)
                                                 : std::vector<std::uint8_t>(soup.triangles.size());
-  (void)bvh::traverse_self(
+  const auto pair = [&](std::int32_t t, std::int32_t u) {
+    const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
+    if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
+  };
+  // The pairs in the order of traverse_self (the order numbers the crossing points).
+  (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
-      [&](std::int32_t t, std::int32_t u) {
-        const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
-        if (boxes[static_cast<std::size_t>(t)].overlaps(boxes[static_cast<std::size_t>(u)])) {
-          if (share_proven_corner(soup, corners, lo, hi)) return bvh::Visit::proceed;
-          intersect_pair(soup, lo, hi, store, work);
+      [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
+        if (a.size() > 4 || b.size() > 4) {
+          const bool same = a.data() == b.data();
+          for (std::size_t i = 0; i < a.size(); ++i) {
+            for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
+              if (boxes[static_cast<std::size_t>(a[i])].overlaps(
+                      boxes[static_cast<std::size_t>(b[j])])) {
+                pair(a[i], b[j]);
+              }
+            }
+          }
+          return bvh::Visit::proceed;
+        }
+        for (std::uint32_t bits = meeting_boxes(boxes, a, b); bits != 0; bits &= bits - 1) {
+          const auto k = static_cast<std::size_t>(std::countr_zero(bits));
+          pair(a[k / 4], b[k % 4]);
         }
         return bvh::Visit::proceed;
       });
