@@ -93,12 +93,19 @@ struct EnclosedPoints {
   }
 };
 
+// One or two point ids (a plane cut's ends), without an allocation per pair.
+struct Ends {
+  std::array<std::int32_t, 3> id{};
+  std::size_t size = 0;
+  void push_back(std::int32_t p) { id[size++] = p; }
+};
+
 // The ends (one or two point ids) of t's part of u's plane, given t's signs against it (not all
 // zero and not all on one side).
 template <class Points>
-std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32_t u,
-                                    const std::array<Sign, 3>& s, Points& store) {
-  std::vector<std::int32_t> ends;
+Ends plane_cut(const Soup& soup, std::int32_t t, std::int32_t u, const std::array<Sign, 3>& s,
+               Points& store) {
+  Ends ends;
   for (int i = 0; i < 3; ++i) {
     if (s[static_cast<std::size_t>(i)] == Sign::zero) ends.push_back(vertex_id(soup, t, i));
   }
@@ -114,13 +121,12 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
 
 // The ends ordered by coordinate k (ascending); one end is used twice.
 template <class Points>
-std::array<std::int32_t, 2> ordered(const std::vector<std::int32_t>& ends, const Points& store,
-                                    int k) {
-  if (ends.size() == 1) return {ends[0], ends[0]};
-  if (compare_coordinate(store.point(ends[0]), store.point(ends[1]), k) == Sign::positive) {
-    return {ends[1], ends[0]};
+std::array<std::int32_t, 2> ordered(const Ends& ends, const Points& store, int k) {
+  if (ends.size == 1) return {ends.id[0], ends.id[0]};
+  if (compare_coordinate(store.point(ends.id[0]), store.point(ends.id[1]), k) == Sign::positive) {
+    return {ends.id[1], ends.id[0]};
   }
-  return {ends[0], ends[1]};
+  return {ends.id[0], ends.id[1]};
 }
 
 bool shares(const Soup& soup, std::int32_t t, std::int32_t id) {
