@@ -329,6 +329,9 @@ Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work, Point
            given.contains(edge_key(a, b));
   };
   Refinement out;
+  // Every triangle gives a face, a split one about two more per point it gains (one growth by
+  // doubling copied the whole array).
+  out.faces.reserve(soup.triangles.size() + 2 * own.points.size() + 64);
   std::size_t constrained = 0;  // constrained triangles before t
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     if (soup.degenerate[t]) continue;
