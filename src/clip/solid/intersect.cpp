@@ -25,6 +25,7 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/star_proof.h"
 #include "contain/bvh/bvh.h"
+#include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
 
@@ -142,26 +143,31 @@ int shared_corners(const Soup& soup, std::int32_t t, std::int32_t u) {
 }
 
 // Two coplanar triangles sharing an edge overlap only when folded onto each other: their third
-// corners on the same side of the edge (exactly: the orientation of the four points in the
-// plane, by the sign of the normals' dot product, both normals non-zero).
+// corners on the same side of the edge, whichever way each triangle runs along it. Exactly: the
+// four points lie in one plane, so their projection dropping an axis in which t's normal is
+// non-zero (the plane's normal, u's too) keeps which side of the edge each third corner lies
+// on, and neither lies on the edge's line (both triangles non-degenerate): orient2d of doubles
+// (the normals' dot product in big numbers gave the same answer, at a hundred times the cost).
 bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
-  const BigVec3& nt = soup.normal(static_cast<std::size_t>(t));
-  const BigVec3& nu = soup.normal(static_cast<std::size_t>(u));
-  // Sharing edge p q: t = p q x, u = q p y when the two are oriented alike (a normal mesh):
-  // normals agree (dot > 0) exactly when x and y lie on opposite sides. Oriented oppositely
-  // (t = p q x, u = p q y): normals agree when x, y lie on the same side. Decide by the edge's
-  // direction in both.
-  int direction = 0;
+  std::int32_t p = -1, q = -1, x = -1, y = -1;
   for (int i = 0; i < 3; ++i) {
-    const std::int32_t p = vertex_id(soup, t, i), q = vertex_id(soup, t, (i + 1) % 3);
-    for (int j = 0; j < 3; ++j) {
-      const std::int32_t r = vertex_id(soup, u, j), s = vertex_id(soup, u, (j + 1) % 3);
-      if (p == r && q == s) direction = 1;
-      if (p == s && q == r) direction = -1;
+    const std::int32_t v = vertex_id(soup, t, i);
+    if (!shares(soup, u, v)) {
+      x = v;
+      p = vertex_id(soup, t, (i + 1) % 3);
+      q = vertex_id(soup, t, (i + 2) % 3);
     }
+    const std::int32_t w = vertex_id(soup, u, i);
+    if (!shares(soup, t, w)) y = w;
   }
-  const Sign agree = predicates::dot(nt, nu).sign();
-  return direction == 1 ? agree == Sign::positive : agree == Sign::negative;
+  const int axis = soup.projection(static_cast<std::size_t>(t)).axis;
+  const auto at = [&](std::int32_t i) {
+    const Vec3 v = soup.vertices[static_cast<std::size_t>(i)];
+    if (axis == 0) return Vec2{v.y, v.z};
+    if (axis == 1) return Vec2{v.z, v.x};
+    return Vec2{v.x, v.y};
+  };
+  return predicates::orient2d(at(p), at(q), at(x)) == predicates::orient2d(at(p), at(q), at(y));
 }
 
 // The first axis in which the direction nt x nu of the planes' line is non-zero (nt, nu the
