@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -174,6 +175,98 @@ TEST(Bvh, SelfTraversalFindsEachOverlappingPairOfDistinctItemsOnce) {
       [](std::int32_t, std::int32_t) { return Visit::proceed; });
   EXPECT_LT(stats.items, both.items);
   EXPECT_FALSE(stats.stopped);
+}
+
+// The self traversal as first written (every pair of nodes pushed, then popped), to check
+// that the walk by leaves keeps its order: the mesh booleans number their crossing points in it.
+std::vector<std::pair<std::int32_t, std::int32_t>> stack_walk_pairs(const Bvh& tree,
+                                                                    std::size_t& nodes) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> out;
+  nodes = 0;
+  if (tree.empty()) return out;
+  const auto n = tree.nodes();
+  const auto items = tree.items();
+  std::vector<std::pair<std::int32_t, std::int32_t>> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [x, y] = stack.back();
+    stack.pop_back();
+    ++nodes;
+    const Node& p = n[static_cast<std::size_t>(x)];
+    const Node& q = n[static_cast<std::size_t>(y)];
+    if (x == y) {
+      if (!p.is_leaf()) {
+        stack.emplace_back(p.first, p.first);
+        stack.emplace_back(x + 1, p.first);
+        stack.emplace_back(x + 1, x + 1);
+        continue;
+      }
+      for (std::int32_t s = p.first; s < p.first + p.count; ++s)
+        for (std::int32_t t = s + 1; t < p.first + p.count; ++t)
+          out.emplace_back(items[static_cast<std::size_t>(s)], items[static_cast<std::size_t>(t)]);
+      continue;
+    }
+    if (!p.box.overlaps(q.box)) continue;
+    if (p.is_leaf() && q.is_leaf()) {
+      for (std::int32_t s = p.first; s < p.first + p.count; ++s)
+        for (std::int32_t t = q.first; t < q.first + q.count; ++t)
+          out.emplace_back(items[static_cast<std::size_t>(s)], items[static_cast<std::size_t>(t)]);
+      continue;
+    }
+    if (q.is_leaf() || (!p.is_leaf() && surface_area(p.box) >= surface_area(q.box))) {
+      stack.emplace_back(p.first, y);
+      stack.emplace_back(x + 1, y);
+    } else {
+      stack.emplace_back(x, q.first);
+      stack.emplace_back(x, y + 1);
+    }
+  }
+  return out;
+}
+
+TEST(Bvh, SelfTraversalAndItsWalkByLeavesVisitThePairsOfTheStackWalkInItsOrder) {
+  const BuildOptions wide_leaves{.max_leaf_items = 8, .item_cost = 4.0};
+  for (const unsigned seed : {31U, 32U, 33U}) {
+    const std::vector<Box3> boxes = random_boxes(700, seed, 0.25);
+    for (const BuildOptions& options :
+         {BuildOptions{}, BuildOptions{.method = BuildMethod::morton}, wide_leaves}) {
+      const Bvh tree(boxes, options);
+      std::size_t nodes = 0;
+      const auto expected = stack_walk_pairs(tree, nodes);
+      const auto enter = [](const Node& x, const Node& y) { return x.box.overlaps(y.box); };
+      std::vector<std::pair<std::int32_t, std::int32_t>> by_pairs, by_leaves;
+      const TraversalStats stats = traverse_self(tree, enter, [&](std::int32_t i, std::int32_t j) {
+        by_pairs.emplace_back(i, j);
+        return Visit::proceed;
+      });
+      const TraversalStats leaf_stats = traverse_self_leaves(
+          tree, enter, [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
+            const bool same = a.data() == b.data();
+            if (same) {
+              EXPECT_EQ(a.size(), b.size());
+            }
+            for (std::size_t i = 0; i < a.size(); ++i)
+              for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j)
+                by_leaves.emplace_back(a[i], b[j]);
+            return Visit::proceed;
+          });
+      EXPECT_EQ(by_pairs, expected);
+      EXPECT_EQ(by_leaves, expected);
+      EXPECT_EQ(stats.nodes, nodes);
+      EXPECT_EQ(leaf_stats.nodes, nodes);
+      EXPECT_EQ(stats.items, expected.size());
+      EXPECT_GT(expected.size(), 1000U);
+    }
+  }
+  // A walk by leaves that stops ends at once.
+  const std::vector<Box3> same(10, Box3{{0, 0, 0}, {1, 1, 1}});
+  int leaves = 0;
+  const TraversalStats stopped = traverse_self_leaves(
+      Bvh(same), [](const Node&, const Node&) { return true; },
+      [&](std::span<const std::int32_t>, std::span<const std::int32_t>) {
+        return ++leaves == 2 ? Visit::stop : Visit::proceed;
+      });
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(leaves, 2);
 }
 
 TEST(Bvh, SelfTraversalOfOneItemOrNoneVisitsNothingAndStopsOnRequest) {

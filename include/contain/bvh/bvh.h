@@ -124,6 +124,15 @@ TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPa
 template <class Enter, class VisitPair>
 TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit);
 
+/// The walk of `traverse_self` by pairs of leaves: `visit(std::span<const std::int32_t> a,
+/// std::span<const std::int32_t> b) -> Visit` sees the items of each pair of leaves whose pairs
+/// `traverse_self` would visit, in its order: a leaf with itself (a and b the same span: its
+/// pairs are a[i], a[j] with i < j) and two different leaves accepted by `enter` (every a[i]
+/// with every b[j], i major). For visitors that test a leaf pair's item pairs together (masks
+/// instead of a branch per pair). `items` of the stats is left 0 (the visitor counts).
+template <class Enter, class VisitLeaves>
+TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit);
+
 /// Surface area of a closed box (0 for an empty or flat one), the SAH's measure.
 [[nodiscard]] constexpr double surface_area(const Box3& box) {
   if (box.empty()) return 0.0;
@@ -227,42 +236,79 @@ TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPa
   return stats;
 }
 
-template <class Enter, class VisitPair>
-TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit) {
+template <class Enter, class VisitLeaves>
+TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit) {
   TraversalStats stats;
   if (tree.empty()) return stats;
   const std::span<const std::int32_t> items = tree.items();
+  const std::span<const Node> nodes = tree.nodes();
+  const auto leaf = [&](const Node& n) {
+    return items.subspan(static_cast<std::size_t>(n.first), static_cast<std::size_t>(n.count));
+  };
   // (x, x) is a node against itself: the pairs within it. x != y are two disjoint subtrees
-  // (pushed only as siblings' descendants), so no pair of items comes twice.
+  // (pushed only as siblings' descendants), so no pair of items comes twice. The first of the
+  // two (or three) pairs a step makes is walked at once, not pushed and popped: the same order.
   std::vector<std::pair<std::int32_t, std::int32_t>> stack;
   stack.reserve(static_cast<std::size_t>(4 * tree.depth() + 4));
-  stack.emplace_back(0, 0);
-  while (!stack.empty()) {
-    const auto [x, y] = stack.back();
-    stack.pop_back();
-    if (x != y) {
-      if (!detail::pair_step(tree, tree, x, y, stack, stats, enter, visit)) break;
-      continue;
-    }
-    const Node& node = tree.nodes()[static_cast<std::size_t>(x)];
+  std::int32_t x = 0, y = 0;
+  for (;;) {
+    const Node& p = nodes[static_cast<std::size_t>(x)];
     ++stats.nodes;
-    if (!node.is_leaf()) {
-      stack.emplace_back(node.first, node.first);
-      stack.emplace_back(x + 1, node.first);
-      stack.emplace_back(x + 1, x + 1);
-      continue;
-    }
-    for (std::int32_t s = node.first; s < node.first + node.count; ++s) {
-      for (std::int32_t t = s + 1; t < node.first + node.count; ++t) {
-        ++stats.items;
-        if (visit(items[static_cast<std::size_t>(s)], items[static_cast<std::size_t>(t)]) ==
-            Visit::stop) {
-          stats.stopped = true;
-          return stats;
+    if (x == y) {
+      if (!p.is_leaf()) {
+        stack.emplace_back(p.first, p.first);
+        stack.emplace_back(x + 1, p.first);
+        y = ++x;
+        continue;
+      }
+      if (visit(leaf(p), leaf(p)) == Visit::stop) {
+        stats.stopped = true;
+        return stats;
+      }
+    } else {
+      const Node& q = nodes[static_cast<std::size_t>(y)];
+      if (enter(p, q)) {
+        if (p.is_leaf() && q.is_leaf()) {
+          if (visit(leaf(p), leaf(q)) == Visit::stop) {
+            stats.stopped = true;
+            return stats;
+          }
+        } else {
+          // As detail::pair_step: the larger inner node split, its first child first.
+          if (q.is_leaf() || (!p.is_leaf() && surface_area(p.box) >= surface_area(q.box))) {
+            stack.emplace_back(p.first, y);
+            ++x;
+          } else {
+            stack.emplace_back(x, q.first);
+            ++y;
+          }
+          continue;
         }
       }
     }
+    if (stack.empty()) break;
+    x = stack.back().first;
+    y = stack.back().second;
+    stack.pop_back();
   }
+  return stats;
+}
+
+template <class Enter, class VisitPair>
+TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit) {
+  std::size_t pairs = 0;
+  TraversalStats stats = traverse_self_leaves(
+      tree, enter, [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
+        const bool same = a.data() == b.data();
+        for (std::size_t s = 0; s < a.size(); ++s) {
+          for (std::size_t t = same ? s + 1 : 0; t < b.size(); ++t) {
+            ++pairs;
+            if (visit(a[s], b[t]) == Visit::stop) return Visit::stop;
+          }
+        }
+        return Visit::proceed;
+      });
+  stats.items = pairs;
   return stats;
 }
 

@@ -15,13 +15,17 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "clip/solid/engine.h"
 #include "clip/solid/star_proof.h"
 #include "contain/bvh/bvh.h"
+#include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
 
@@ -90,12 +94,19 @@ struct EnclosedPoints {
   }
 };
 
+// One or two point ids (a plane cut's ends), without an allocation per pair.
+struct Ends {
+  std::array<std::int32_t, 3> id{};
+  std::size_t size = 0;
+  void push_back(std::int32_t p) { id[size++] = p; }
+};
+
 // The ends (one or two point ids) of t's part of u's plane, given t's signs against it (not all
 // zero and not all on one side).
 template <class Points>
-std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32_t u,
-                                    const std::array<Sign, 3>& s, Points& store) {
-  std::vector<std::int32_t> ends;
+Ends plane_cut(const Soup& soup, std::int32_t t, std::int32_t u, const std::array<Sign, 3>& s,
+               Points& store) {
+  Ends ends;
   for (int i = 0; i < 3; ++i) {
     if (s[static_cast<std::size_t>(i)] == Sign::zero) ends.push_back(vertex_id(soup, t, i));
   }
@@ -111,13 +122,12 @@ std::vector<std::int32_t> plane_cut(const Soup& soup, std::int32_t t, std::int32
 
 // The ends ordered by coordinate k (ascending); one end is used twice.
 template <class Points>
-std::array<std::int32_t, 2> ordered(const std::vector<std::int32_t>& ends, const Points& store,
-                                    int k) {
-  if (ends.size() == 1) return {ends[0], ends[0]};
-  if (compare_coordinate(store.point(ends[0]), store.point(ends[1]), k) == Sign::positive) {
-    return {ends[1], ends[0]};
+std::array<std::int32_t, 2> ordered(const Ends& ends, const Points& store, int k) {
+  if (ends.size == 1) return {ends.id[0], ends.id[0]};
+  if (compare_coordinate(store.point(ends.id[0]), store.point(ends.id[1]), k) == Sign::positive) {
+    return {ends.id[1], ends.id[0]};
   }
-  return {ends[0], ends[1]};
+  return {ends.id[0], ends.id[1]};
 }
 
 bool shares(const Soup& soup, std::int32_t t, std::int32_t id) {
@@ -133,26 +143,31 @@ int shared_corners(const Soup& soup, std::int32_t t, std::int32_t u) {
 }
 
 // Two coplanar triangles sharing an edge overlap only when folded onto each other: their third
-// corners on the same side of the edge (exactly: the orientation of the four points in the
-// plane, by the sign of the normals' dot product, both normals non-zero).
+// corners on the same side of the edge, whichever way each triangle runs along it. Exactly: the
+// four points lie in one plane, so their projection dropping an axis in which t's normal is
+// non-zero (the plane's normal, u's too) keeps which side of the edge each third corner lies
+// on, and neither lies on the edge's line (both triangles non-degenerate): orient2d of doubles
+// (the normals' dot product in big numbers gave the same answer, at a hundred times the cost).
 bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
-  const BigVec3& nt = soup.normal(static_cast<std::size_t>(t));
-  const BigVec3& nu = soup.normal(static_cast<std::size_t>(u));
-  // Sharing edge p q: t = p q x, u = q p y when the two are oriented alike (a normal mesh):
-  // normals agree (dot > 0) exactly when x and y lie on opposite sides. Oriented oppositely
-  // (t = p q x, u = p q y): normals agree when x, y lie on the same side. Decide by the edge's
-  // direction in both.
-  int direction = 0;
+  std::int32_t p = -1, q = -1, x = -1, y = -1;
   for (int i = 0; i < 3; ++i) {
-    const std::int32_t p = vertex_id(soup, t, i), q = vertex_id(soup, t, (i + 1) % 3);
-    for (int j = 0; j < 3; ++j) {
-      const std::int32_t r = vertex_id(soup, u, j), s = vertex_id(soup, u, (j + 1) % 3);
-      if (p == r && q == s) direction = 1;
-      if (p == s && q == r) direction = -1;
+    const std::int32_t v = vertex_id(soup, t, i);
+    if (!shares(soup, u, v)) {
+      x = v;
+      p = vertex_id(soup, t, (i + 1) % 3);
+      q = vertex_id(soup, t, (i + 2) % 3);
     }
+    const std::int32_t w = vertex_id(soup, u, i);
+    if (!shares(soup, t, w)) y = w;
   }
-  const Sign agree = predicates::dot(nt, nu).sign();
-  return direction == 1 ? agree == Sign::positive : agree == Sign::negative;
+  const int axis = soup.projection(static_cast<std::size_t>(t)).axis;
+  const auto at = [&](std::int32_t i) {
+    const Vec3 v = soup.vertices[static_cast<std::size_t>(i)];
+    if (axis == 0) return Vec2{v.y, v.z};
+    if (axis == 1) return Vec2{v.z, v.x};
+    return Vec2{v.x, v.y};
+  };
+  return predicates::orient2d(at(p), at(q), at(x)) == predicates::orient2d(at(p), at(q), at(y));
 }
 
 // The first axis in which the direction nt x nu of the planes' line is non-zero (nt, nu the
@@ -240,6 +255,27 @@ bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corn
   return (bits & shared) != 0;
 }
 
+// The item pairs of a leaf pair (a and b the same span: one leaf's pairs i < j) whose boxes
+// meet, as bits i * 4 + j, tested without a branch per pair (whether two boxes of neighbouring
+// triangles meet is a coin toss for the branch predictor). Leaves of at most 4 items.
+std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std::int32_t> a,
+                            std::span<const std::int32_t> b) {
+  const bool same = a.data() == b.data();
+  std::uint32_t bits = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Box3& p = boxes[static_cast<std::size_t>(a[i])];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Box3& q = boxes[static_cast<std::size_t>(b[j])];
+      // As Box3::overlaps, with & for && (an empty box still meets nothing).
+      const bool meet = (p.min.x <= q.max.x) & (q.min.x <= p.max.x) & (p.min.y <= q.max.y) &
+                        (q.min.y <= p.max.y) & (p.min.z <= q.max.z) & (q.min.z <= p.max.z) &
+                        (!same | (j > i));
+      bits |= static_cast<std::uint32_t>(meet) << (4 * i + j);
+    }
+  }
+  return bits;
+}
+
 template <class Points>
 std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
   const std::vector<Box3>& boxes = soup.boxes;
@@ -248,13 +284,29 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   const std::vector<std::uint8_t> corners = neighbours == Neighbours::proven
                                                 ? proven_corners(soup)
                                                 : std::vector<std::uint8_t>(soup.triangles.size());
-  (void)bvh::traverse_self(
+  const auto pair = [&](std::int32_t t, std::int32_t u) {
+    const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
+    if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
+  };
+  // The pairs in the order of traverse_self (the order numbers the crossing points).
+  (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
-      [&](std::int32_t t, std::int32_t u) {
-        const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
-        if (boxes[static_cast<std::size_t>(t)].overlaps(boxes[static_cast<std::size_t>(u)])) {
-          if (share_proven_corner(soup, corners, lo, hi)) return bvh::Visit::proceed;
-          intersect_pair(soup, lo, hi, store, work);
+      [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
+        if (a.size() > 4 || b.size() > 4) {
+          const bool same = a.data() == b.data();
+          for (std::size_t i = 0; i < a.size(); ++i) {
+            for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
+              if (boxes[static_cast<std::size_t>(a[i])].overlaps(
+                      boxes[static_cast<std::size_t>(b[j])])) {
+                pair(a[i], b[j]);
+              }
+            }
+          }
+          return bvh::Visit::proceed;
+        }
+        for (std::uint32_t bits = meeting_boxes(boxes, a, b); bits != 0; bits &= bits - 1) {
+          const auto k = static_cast<std::size_t>(std::countr_zero(bits));
+          pair(a[k / 4], b[k % 4]);
         }
         return bvh::Visit::proceed;
       });

@@ -10,6 +10,8 @@
 // is conforming, every point found on an input edge (T's own or a coplanar partner's) is
 // gathered per edge in a first pass over all triangles and given to every triangle that has
 // that edge as a segment in the second: triangles sharing an edge split it at the same points.
+// A triangle is arranged once: the first pass keeps its points (and which of its edges each
+// lies on, known from the test that kept it in T), the second adds the points given to it.
 
 #include <algorithm>
 #include <array>
@@ -57,26 +59,76 @@ struct Local {
     return to_int(sense) *
            to_int(orient2d_dropped(store->point(p), store->point(q), store->point(r), axis));
   }
-  [[nodiscard]] bool inside(std::int32_t p) const {
-    return orient(corners[0], corners[1], p) >= 0 && orient(corners[1], corners[2], p) >= 0 &&
-           orient(corners[2], corners[0], p) >= 0;
+  // Whether p lies in T (closed) and, when it does, on which of T's edges: bit i for the edge
+  // from corner i to corner i + 1 (p on its line, hence, being in T, on the edge).
+  [[nodiscard]] bool inside(std::int32_t p, std::uint8_t& on_edges) const {
+    on_edges = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int o = orient(corners[i], corners[(i + 1) % 3], p);
+      if (o < 0) return false;
+      on_edges |= static_cast<std::uint8_t>(o == 0 ? 1U << i : 0U);
+    }
+    return true;
   }
 };
 
+struct Segment {
+  std::int32_t a, b;
+  std::uint64_t edge;
+  bool own;  // one of T's edges
+};
+
+// The points of a triangle's arrangement (inside T, corners included), ascending, each with its
+// bits of T's edges it lies on.
 struct Arranged {
-  std::vector<std::int32_t> points;                     // inside T, corners included
-  std::vector<std::array<std::int32_t, 2>> pieces;      // constraint pieces (not T's edges)
+  std::vector<std::int32_t> points;
+  std::vector<std::uint8_t> on_edges;
+
+  void clear() {
+    points.clear();
+    on_edges.clear();
+  }
+  void push_back(std::int32_t p, std::uint8_t edges) {
+    points.push_back(p);
+    on_edges.push_back(edges);
+  }
+};
+
+// Buffers kept from one triangle to the next (the refinement of most triangles allocated a
+// dozen small vectors, each call).
+struct Scratch {
+  std::vector<Segment> segments;
+  std::vector<std::int32_t> candidates;
+  std::vector<std::int32_t> run;
+  Arranged arranged;
+  Arranged merged;
   std::vector<std::array<std::int32_t, 2>> all_pieces;  // T's edge pieces too
 };
 
-// Points of `candidates` on segment a b (ends included), sorted from a to b.
-std::vector<std::int32_t> on_segment(const Local& l, std::int32_t a, std::int32_t b,
-                                     const std::vector<std::int32_t>& candidates) {
+// The coordinate along which segment a b is ordered (one in which a and b differ) and the
+// direction from a to b in it.
+std::pair<int, Sign> order_of(const Local& l, std::int32_t a, std::int32_t b) {
   const PointStore& store = *l.store;
   int k = (l.axis + 1) % 3;
   if (compare_coordinate(store.point(a), store.point(b), k) == Sign::zero) k = (l.axis + 2) % 3;
-  const Sign dir = compare_coordinate(store.point(b), store.point(a), k);
-  std::vector<std::int32_t> out;
+  return {k, compare_coordinate(store.point(b), store.point(a), k)};
+}
+
+// `run` (distinct points of segment a b) sorted from a to b.
+void sort_along(const Local& l, std::int32_t a, std::int32_t b, std::vector<std::int32_t>& run) {
+  const PointStore& store = *l.store;
+  const auto [k, dir] = order_of(l, a, b);
+  std::sort(run.begin(), run.end(), [&, k = k, dir = dir](std::int32_t p, std::int32_t q) {
+    return compare_coordinate(store.point(p), store.point(q), k) == dir;
+  });
+}
+
+// Points of `candidates` (distinct, in T) on segment a b (ends included), sorted from a to b.
+void on_segment(const Local& l, std::int32_t a, std::int32_t b,
+                const std::vector<std::int32_t>& candidates, std::vector<std::int32_t>& out) {
+  const PointStore& store = *l.store;
+  const auto [k, dir] = order_of(l, a, b);
+  out.clear();
   for (const std::int32_t p : candidates) {
     if (p == a || p == b) {
       out.push_back(p);
@@ -86,42 +138,58 @@ std::vector<std::int32_t> on_segment(const Local& l, std::int32_t a, std::int32_
       out.push_back(p);
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  std::sort(out.begin(), out.end(), [&](std::int32_t p, std::int32_t q) {
-    return compare_coordinate(store.point(p), store.point(q), k) == dir;
-  });
-  return out;
+  sort_along(l, a, b, out);
 }
 
-struct Segment {
-  std::int32_t a, b;
-  std::uint64_t edge;
-  bool own;  // one of T's edges
-};
+// The points of `arranged` on T's edge i (its ends included), sorted from its start.
+void on_own_edge(const Local& l, const Arranged& arranged, std::size_t i,
+                 std::vector<std::int32_t>& out) {
+  out.clear();
+  for (std::size_t j = 0; j < arranged.points.size(); ++j) {
+    if ((arranged.on_edges[j] >> i) & 1U) out.push_back(arranged.points[j]);
+  }
+  sort_along(l, l.corners[i], l.corners[(i + 1) % 3], out);
+}
 
-Arranged arrange(const Local& l, const TriangleWork& work, const EdgePoints& given,
-                 PointStore& store) {
-  std::vector<Segment> segments;
-  std::vector<std::int32_t> points(l.corners.begin(), l.corners.end());
-  for (int i = 0; i < 3; ++i) {
-    const std::int32_t a = l.corners[static_cast<std::size_t>(i)],
-                       b = l.corners[static_cast<std::size_t>((i + 1) % 3)];
+// T's edges, then its constraints' segments not among them.
+void segments_of(const Local& l, const TriangleWork& work, std::vector<Segment>& segments) {
+  segments.clear();
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::int32_t a = l.corners[i], b = l.corners[(i + 1) % 3];
     segments.push_back({a, b, edge_key(a, b), true});
   }
   for (const Constraint& c : work.constraints) {
-    points.push_back(c.a);
-    points.push_back(c.b);
     if (c.a == c.b) continue;
     const bool seen = std::any_of(segments.begin(), segments.end(), [&](const Segment& s) {
       return (s.a == c.a && s.b == c.b) || (s.a == c.b && s.b == c.a);
     });
     if (!seen) segments.push_back({c.a, c.b, c.edge, false});
   }
-  for (const Segment& s : segments) {
-    if (s.edge == no_edge) continue;
-    given.append(s.edge, points);
+}
+
+// `candidates` sorted, unique, and those in T kept in `out` (ascending).
+void keep_inside(const Local& l, std::vector<std::int32_t>& candidates, Arranged& out) {
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  out.clear();
+  for (const std::int32_t p : candidates) {
+    std::uint8_t edges = 0;
+    if (l.inside(p, edges)) out.push_back(p, edges);
   }
+}
+
+// The points of T's own arrangement (before its neighbours' points are given): its corners, its
+// constraints' ends, and the crossings of its segments (made and stored here, once per triangle
+// and in the order of before: the store numbers them).
+void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratch& scratch) {
+  segments_of(l, work, scratch.segments);
+  std::vector<std::int32_t>& points = scratch.candidates;
+  points.assign(l.corners.begin(), l.corners.end());
+  for (const Constraint& c : work.constraints) {
+    points.push_back(c.a);
+    points.push_back(c.b);
+  }
+  const std::vector<Segment>& segments = scratch.segments;
   for (std::size_t i = 0; i < segments.size(); ++i) {
     for (std::size_t j = i + 1; j < segments.size(); ++j) {
       const Segment& s = segments[i];
@@ -135,20 +203,7 @@ Arranged arrange(const Local& l, const TriangleWork& work, const EdgePoints& giv
       }
     }
   }
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  Arranged out;
-  for (const std::int32_t p : points) {
-    if (l.inside(p)) out.points.push_back(p);
-  }
-  for (const Segment& s : segments) {
-    const std::vector<std::int32_t> run = on_segment(l, s.a, s.b, out.points);
-    for (std::size_t i = 1; i < run.size(); ++i) {
-      out.all_pieces.push_back({run[i - 1], run[i]});
-      if (!s.own) out.pieces.push_back({run[i - 1], run[i]});
-    }
-  }
-  return out;
+  keep_inside(l, points, scratch.arranged);
 }
 
 Local local_of(const Soup& soup, std::size_t t, const PointStore& store) {
@@ -165,29 +220,44 @@ Local local_of(const Soup& soup, std::size_t t, const PointStore& store) {
   return l;
 }
 
-// The points each input edge holds, from every triangle that has it as a segment.
+// The own arrangements of the triangles with constraints, in triangle order, one after the
+// other: made once, by the gathering pass, and completed by the refining pass with the points
+// its neighbours give (the same points and pieces as arranging each triangle again).
+struct OwnArrangements {
+  std::vector<std::int32_t> points;
+  std::vector<std::uint8_t> on_edges;
+  std::vector<std::size_t> start{0};  // of each constrained triangle's points, and the end
+};
+
+// The points each input edge holds, from every triangle that has it as a segment; and each
+// constrained triangle's own arrangement.
 EdgePoints gather_edge_points(const Soup& soup, const std::vector<TriangleWork>& work,
-                              PointStore& store) {
+                              PointStore& store, Scratch& scratch, OwnArrangements& own) {
   EdgePoints found;
-  const EdgePoints none;
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     if (soup.degenerate[t] || work[t].constraints.empty()) continue;
     const Local l = local_of(soup, t, store);
-    const Arranged arranged = arrange(l, work[t], none, store);
-    std::vector<std::uint64_t> keys;
-    for (int i = 0; i < 3; ++i) {
-      keys.push_back(edge_key(l.corners[static_cast<std::size_t>(i)],
-                              l.corners[static_cast<std::size_t>((i + 1) % 3)]));
+    arrange(l, work[t], store, scratch);
+    const Arranged& arranged = scratch.arranged;
+    own.points.insert(own.points.end(), arranged.points.begin(), arranged.points.end());
+    own.on_edges.insert(own.on_edges.end(), arranged.on_edges.begin(), arranged.on_edges.end());
+    own.start.push_back(own.points.size());
+    // T's own edges: the points on them are known from the test that kept them in T.
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint64_t key = edge_key(l.corners[i], l.corners[(i + 1) % 3]);
+      found.keys.push_back(key);
+      for (std::size_t j = 0; j < arranged.points.size(); ++j) {
+        if ((arranged.on_edges[j] >> i) & 1U) found.points.emplace_back(key, arranged.points[j]);
+      }
     }
     for (const Constraint& c : work[t].constraints) {
-      if (c.edge != no_edge) keys.push_back(c.edge);
-    }
-    for (const std::uint64_t key : keys) {
-      const auto a = static_cast<std::int32_t>(key >> 32U);
-      const auto b = static_cast<std::int32_t>(key & 0xffffffffU);
-      found.keys.push_back(key);
-      for (const std::int32_t p : on_segment(l, a, b, arranged.points))
-        found.points.emplace_back(key, p);
+      if (c.edge == no_edge) continue;
+      const auto a = static_cast<std::int32_t>(c.edge >> 32U);
+      const auto b = static_cast<std::int32_t>(c.edge & 0xffffffffU);
+      found.keys.push_back(c.edge);
+      on_segment(l, a, b, arranged.points, scratch.run);
+      for (const std::int32_t p : scratch.run)
+        found.points.emplace_back(c.edge, p);
     }
   }
   std::sort(found.keys.begin(), found.keys.end());
@@ -197,31 +267,111 @@ EdgePoints gather_edge_points(const Soup& soup, const std::vector<TriangleWork>&
   return found;
 }
 
+// T's points once its neighbours' are given: its own arrangement (`own_begin` .. `own_end`,
+// none for a triangle without constraints: then only its corners) and the points given on its
+// segments that lie in T, ascending.
+void complete(const Local& l, const EdgePoints& given, const OwnArrangements& own,
+              std::size_t own_begin, std::size_t own_end, Scratch& scratch) {
+  std::vector<std::int32_t>& extra = scratch.candidates;
+  extra.clear();
+  for (const Segment& s : scratch.segments) {
+    if (s.edge != no_edge) given.append(s.edge, extra);
+  }
+  Arranged& base = scratch.arranged;
+  base.clear();
+  if (own_begin == own_end) {
+    // No constraints: its corners, each on its two edges.
+    std::array<std::pair<std::int32_t, std::uint8_t>, 3> corners{
+        {{l.corners[0], 0b101}, {l.corners[1], 0b011}, {l.corners[2], 0b110}}};
+    std::sort(corners.begin(), corners.end());
+    for (const auto& [p, edges] : corners)
+      base.push_back(p, edges);
+  } else {
+    base.points.assign(own.points.begin() + static_cast<std::ptrdiff_t>(own_begin),
+                       own.points.begin() + static_cast<std::ptrdiff_t>(own_end));
+    base.on_edges.assign(own.on_edges.begin() + static_cast<std::ptrdiff_t>(own_begin),
+                         own.on_edges.begin() + static_cast<std::ptrdiff_t>(own_end));
+  }
+  std::sort(extra.begin(), extra.end());
+  extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+  // Merge the given points not already there (tested for T) into the ascending list.
+  Arranged& out = scratch.merged;
+  out.clear();
+  std::size_t i = 0;
+  for (const std::int32_t p : extra) {
+    while (i < base.points.size() && base.points[i] < p) {
+      out.push_back(base.points[i], base.on_edges[i]);
+      ++i;
+    }
+    if (i < base.points.size() && base.points[i] == p) continue;
+    std::uint8_t edges = 0;
+    if (l.inside(p, edges)) out.push_back(p, edges);
+  }
+  for (; i < base.points.size(); ++i)
+    out.push_back(base.points[i], base.on_edges[i]);
+}
+
 }  // namespace
 
 Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store) {
-  const EdgePoints given = gather_edge_points(soup, work, store);
+  Scratch scratch;
+  OwnArrangements own;
+  const EdgePoints given = gather_edge_points(soup, work, store, scratch, own);
+  // The vertices of the edges given points: a triangle with fewer than two of them as corners
+  // has none of those edges (no search of `given` for it).
+  std::vector<bool> on_given(soup.vertices.size(), false);
+  for (const std::uint64_t key : given.keys) {
+    on_given[static_cast<std::size_t>(key >> 32U)] = true;
+    on_given[static_cast<std::size_t>(key & 0xffffffffU)] = true;
+  }
+  const auto given_edge = [&](std::int32_t a, std::int32_t b) {
+    return on_given[static_cast<std::size_t>(a)] && on_given[static_cast<std::size_t>(b)] &&
+           given.contains(edge_key(a, b));
+  };
   Refinement out;
+  // Every triangle gives a face, a split one about two more per point it gains (one growth by
+  // doubling copied the whole array).
+  out.faces.reserve(soup.triangles.size() + 2 * own.points.size() + 64);
+  std::size_t constrained = 0;  // constrained triangles before t
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     if (soup.degenerate[t]) continue;
     const TriangleIndices& v = soup.triangles[t];
-    const bool plain = work[t].constraints.empty() && !given.contains(edge_key(v[0], v[1])) &&
-                       !given.contains(edge_key(v[1], v[2])) &&
-                       !given.contains(edge_key(v[2], v[0]));
+    const bool has_constraints = !work[t].constraints.empty();
+    const bool plain = !has_constraints && !given_edge(v[0], v[1]) && !given_edge(v[1], v[2]) &&
+                       !given_edge(v[2], v[0]);
     if (plain) {
       out.faces.push_back({{v[0], v[1], v[2]}, static_cast<std::int32_t>(t)});
       continue;
     }
     const Local l = local_of(soup, t, store);
-    const Arranged arranged = arrange(l, work[t], given, store);
+    segments_of(l, work[t], scratch.segments);
+    std::size_t own_begin = 0, own_end = 0;
+    if (has_constraints) {
+      own_begin = own.start[constrained];
+      own_end = own.start[constrained + 1];
+      ++constrained;
+    }
+    complete(l, given, own, own_begin, own_end, scratch);
+    const Arranged& arranged = scratch.merged;
     if (arranged.points.size() == 3) {
       out.faces.push_back({l.corners, static_cast<std::int32_t>(t)});
       continue;
     }
-    for (const auto& piece : arranged.pieces)
-      out.curve_edges.push_back(edge_key(piece[0], piece[1]));
+    scratch.all_pieces.clear();
+    for (std::size_t i = 0; i < scratch.segments.size(); ++i) {
+      const Segment& s = scratch.segments[i];
+      if (s.own) {
+        on_own_edge(l, arranged, i, scratch.run);
+      } else {
+        on_segment(l, s.a, s.b, arranged.points, scratch.run);
+      }
+      for (std::size_t j = 1; j < scratch.run.size(); ++j) {
+        scratch.all_pieces.push_back({scratch.run[j - 1], scratch.run[j]});
+        if (!s.own) out.curve_edges.push_back(edge_key(scratch.run[j - 1], scratch.run[j]));
+      }
+    }
     for (const auto& f :
-         triangulate(l.corners, arranged.points, arranged.all_pieces, store, l.axis, l.sense)) {
+         triangulate(l.corners, arranged.points, scratch.all_pieces, store, l.axis, l.sense)) {
       out.faces.push_back({f, static_cast<std::int32_t>(t)});
     }
   }

@@ -404,3 +404,58 @@ TEST(StarProof, PairStageOfDegeneratePairsGivesTheSameWorkWithAndWithoutTheSkip)
 
 }  // namespace
 }  // namespace contain::test
+
+namespace contain::test {
+namespace {
+
+// Two triangles in one tilted plane sharing the edge p q (each running along it either way),
+// their third corners x and y at integer plane coordinates: the pair test makes them coplanar
+// partners exactly when x and y lie on the same side of the edge (folded onto each other), as
+// the sign of the dot product of their exact normals says too.
+TEST(StarProof, CoplanarNeighboursAcrossAnEdgeArePartnersExactlyWhenFolded) {
+  std::mt19937 rng(77);
+  std::uniform_int_distribution<int> coordinate(-40, 40);
+  // The plane O + s U + t V: integer points, exact in doubles, every axis's normal component
+  // non-zero (the projection's axis is chosen, not given).
+  const Vec3 origin{3, -5, 7}, along_u{1, 2, -3}, along_v{-2, 1, 4};
+  const auto at = [&](int s, int t) {
+    return Vec3{origin.x + s * along_u.x + t * along_v.x, origin.y + s * along_u.y + t * along_v.y,
+                origin.z + s * along_u.z + t * along_v.z};
+  };
+  const auto side = [](std::array<int, 2> p, std::array<int, 2> q, std::array<int, 2> r) {
+    const long d = static_cast<long>(q[0] - p[0]) * (r[1] - p[1]) -
+                   static_cast<long>(q[1] - p[1]) * (r[0] - p[0]);
+    return d > 0 ? 1 : (d < 0 ? -1 : 0);
+  };
+  int folded = 0, apart = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::array<std::array<int, 2>, 4> c;  // p, q, x, y
+    for (auto& point : c)
+      point = {coordinate(rng), coordinate(rng)};
+    const int sx = side(c[0], c[1], c[2]), sy = side(c[0], c[1], c[3]);
+    if (sx == 0 || sy == 0 || c[0] == c[1]) continue;
+    std::vector<Vec3> vertices;
+    for (const auto& point : c)
+      vertices.push_back(at(point[0], point[1]));
+    for (const bool t_forward : {true, false}) {
+      for (const bool u_forward : {true, false}) {
+        const TriangleIndices t = t_forward ? TriangleIndices{0, 1, 2} : TriangleIndices{1, 0, 2};
+        const TriangleIndices u = u_forward ? TriangleIndices{0, 1, 3} : TriangleIndices{1, 0, 3};
+        const Soup soup = raw_soup(vertices, {t, u});
+        // The normals' dot product: positive when both turn the same way in the plane.
+        const Sign agree = predicates::dot(soup.normal(0), soup.normal(1)).sign();
+        const bool by_normals =
+            t_forward == u_forward ? agree == Sign::positive : agree == Sign::negative;
+        const bool expected = sx == sy;
+        EXPECT_EQ(by_normals, expected);
+        EXPECT_EQ(pair_gives_work(soup, 0, 1), expected) << trial;
+        (expected ? folded : apart) += 1;
+      }
+    }
+  }
+  EXPECT_GT(folded, 200);
+  EXPECT_GT(apart, 200);
+}
+
+}  // namespace
+}  // namespace contain::test
