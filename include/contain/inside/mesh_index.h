@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -116,6 +117,13 @@ class MeshIndex {
   /// Where `point` lies.
   [[nodiscard]] Location locate(Vec3 point) const;
 
+  /// The location every point of the closed box `box` has, when the index knows it without
+  /// looking at a point (regime `closed_exact` only): the box wholly beyond the triangles'
+  /// bounds (`outside`), or strictly inside one grid cell that no triangle's box meets (its
+  /// stored answer); none otherwise (a box touching a cell's side, a surface cell, a box over
+  /// several cells, no grid, the winding regime). Exact comparisons only, so an answer given is
+  /// `locate(p)` for every p in the box. O(1).
+  [[nodiscard]] std::optional<Location> locate_settled(const Box3& box) const;
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all). Deterministic.
   void locate(std::span<const Vec3> points, std::span<Location> out,
