@@ -81,9 +81,27 @@ int run_polygon(const InsideOptions& o) {
   if (!region) return report(region.error());
   enter_phase(Phase::prepare);
   // Few points: one cell, no grid (the index's cost model; the answers are the same).
-  const inside::PolygonIndex index(*region, {.fill = o.fill, .queries = most_points(o.points, 4)});
+  // Many points: a finer grid (16 times the default's least cells; about a millisecond for a
+  // 100-vertex star) leaves fewer points in cells that edges cross, so more are answered from
+  // their first digits (10^6 points in a 100-vertex star: 15% less CPU; 2^18 cells cost more to
+  // build than they save).
+  const std::size_t queries = most_points(o.points, 4);
+  const inside::PolygonIndex index(
+      *region, {.fill = o.fill,
+                .min_cells = queries > 100000 ? std::size_t{1} << 16
+                                              : inside::PolygonIndexOptions{}.min_cells,
+                .queries = queries});
   enter_phase(Phase::read);
-  // Points as boxes from their first digits: most lie in a cell of one answer, and need no more.
+  // Points as boxes from their first digits, where most cells have one answer (a point there
+  // needs no more digits; the others are read twice).
+  const inside::PolygonIndex::Stats stats = index.stats();
+  if (2 * stats.edge_cells > stats.cells) {
+    return answer(locate_streamed<Vec2>(o, io::read_points2_chunked,
+                                        [&](auto points, std::span<Location> out) {
+                                          index.locate(points, out, {.threads = o.threads});
+                                        }),
+                  o);
+  }
   return answer(locate_streamed<io::BoundedPoint2>(o, io::read_points2_bounded,
                                                    [&](auto points, std::span<Location> out) {
                                                      io::locate_bounded(index, points, out,
@@ -121,11 +139,21 @@ int run_mesh(const InsideOptions& o) {
   // Few points: no grid (the index's cost model; the answers are the same).
   const inside::MeshIndex index(std::move(file->mesh), {.queries = most_points(o.points)});
   enter_phase(Phase::read);
-  // Points as boxes from their first digits: most lie in a cell of one answer, and need no more.
-  auto locations = locate_streamed<io::BoundedPoint3>(
-      o, io::read_points3_bounded, [&](auto points, std::span<Location> out) {
-        io::locate_bounded(index, points, out, {.threads = o.threads});
-      });
+  // Points as boxes from their first digits, where a grid has most cells of one answer (a point
+  // there needs no more digits; the others are read twice).
+  const inside::MeshIndex::Stats stats = index.stats();
+  const bool bounded =
+      index.regime() == inside::MeshRegime::closed_exact && 2 * stats.surface_cells < stats.cells;
+  auto locations = bounded
+                       ? locate_streamed<io::BoundedPoint3>(
+                             o, io::read_points3_bounded,
+                             [&](auto points, std::span<Location> out) {
+                               io::locate_bounded(index, points, out, {.threads = o.threads});
+                             })
+                       : locate_streamed<Vec3>(o, io::read_points3_chunked,
+                                               [&](auto points, std::span<Location> out) {
+                                                 index.locate(points, out, {.threads = o.threads});
+                                               });
   if (!locations) return report(locations.error());
   const std::string warning = io::mesh_warning(index.regime(), index.report());
   if (!warning.empty()) warn(o.mesh + ": " + warning);

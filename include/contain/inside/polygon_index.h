@@ -83,6 +83,15 @@ class PolygonIndex {
   /// given is `locate(p)` for every p in the box. O(1).
   [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const;
 
+  /// Warms the cache for a query at `point` (its guessed cell's word), for callers' pipelines;
+  /// no effect on any answer.
+  void prefetch(Vec2 point) const {
+    if (!bounds_.contains(point)) return;  // also: no grid
+    __builtin_prefetch(
+        &cells_[static_cast<std::size_t>(y_.guess(point.y)) * static_cast<std::size_t>(x_.cells()) +
+                static_cast<std::size_t>(x_.guess(point.x))]);
+  }
+
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all hardware threads). Deterministic.
   void locate(std::span<const Vec2> points, std::span<Location> out,

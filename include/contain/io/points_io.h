@@ -115,16 +115,32 @@ struct BoundedPoint3 {
 /// Locates bounded points with an index that can answer for a whole box: `out[i]` is
 /// `index.locate_settled(points[i].box)` where it has an answer, else `index.locate` of the
 /// exact point; so exactly `index.locate(exact_point(points[i]))` whenever `locate_settled` is
-/// right (inside::PolygonIndex, inside::MeshIndex). On `options.threads` threads (0: all).
+/// right (inside::PolygonIndex, inside::MeshIndex). The unsettled points go to the index's batch
+/// locate (its prefetching pipeline), and `index.prefetch(p)` warms the cell of a box a few
+/// points ahead. On `options.threads` threads (0: all).
 template <class Index, class Bounded>
 void locate_bounded(const Index& index, std::span<const Bounded> points, std::span<Location> out,
                     const BatchOptions& options = {}) {
+  using Point = decltype(exact_point(points[0]));
+  constexpr std::size_t kAhead = 8;
   parallel_for(batch_size(points.size(), out.size()), options,
                [&](std::size_t begin, std::size_t end) {
+                 std::vector<Point> exact;
+                 std::vector<std::size_t> where;
                  for (std::size_t k = begin; k < end; ++k) {
+                   if (k + kAhead < end) index.prefetch(points[k + kAhead].box.min);
                    const auto settled = index.locate_settled(points[k].box);
-                   out[k] = settled ? *settled : index.locate(exact_point(points[k]));
+                   if (settled) {
+                     out[k] = *settled;
+                   } else {
+                     exact.push_back(exact_point(points[k]));
+                     where.push_back(k);
+                   }
                  }
+                 std::vector<Location> answers(exact.size());
+                 index.locate(exact, answers, {.threads = 1});
+                 for (std::size_t i = 0; i < where.size(); ++i)
+                   out[where[i]] = answers[i];
                });
 }
 
