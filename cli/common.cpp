@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -192,16 +193,27 @@ void add_quiet_option(CLI::App& app, bool& quiet) {
 }
 
 std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {
-  // The three lines once, copied by index: a location is -1, 0 or 1.
-  std::array<std::string, 3> lines;
+  // The three lines once ("in\n", "on\n", "out\n"), each copied as 8 bytes and the end moved by
+  // its length: a fixed-size copy a line (the next line or the final resize drops the rest),
+  // not a string append.
+  constexpr std::size_t kSlot = 8;
+  std::array<std::array<char, kSlot>, 3> lines{};
+  std::array<std::size_t, 3> lengths{};
   for (const Location l : {Location::outside, Location::boundary, Location::inside}) {
-    lines[static_cast<std::size_t>(static_cast<int>(l) + 1)] =
-        std::string(to_string(apply(policy, l))) + '\n';
+    const auto at = static_cast<std::size_t>(static_cast<int>(l) + 1);
+    const std::string_view word = to_string(apply(policy, l));
+    lengths[at] = std::min(word.size(), kSlot - 1) + 1;
+    std::copy_n(word.begin(), lengths[at] - 1, lines[at].begin());
+    lines[at][lengths[at] - 1] = '\n';
   }
-  std::string out;
-  out.reserve(locations.size() * 4);
-  for (const Location l : locations)
-    out += lines[static_cast<std::size_t>(static_cast<int>(l) + 1)];
+  std::string out(locations.size() * kSlot, '\0');
+  char* end = out.data();
+  for (const Location l : locations) {
+    const auto at = static_cast<std::size_t>(static_cast<int>(l) + 1);
+    std::memcpy(end, lines[at].data(), kSlot);
+    end += lengths[at];
+  }
+  out.resize(static_cast<std::size_t>(end - out.data()));
   return out;
 }
 

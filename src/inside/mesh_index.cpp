@@ -616,6 +616,31 @@ Location MeshIndex::locate(Vec3 p) const {
   return locate_exact(p);
 }
 
+std::optional<Location> MeshIndex::locate_settled(const Box3& box) const {
+  if (regime_ == MeshRegime::winding_number) return std::nullopt;
+  // Wholly beyond the closed bounds: locate_exact's first test answers `outside` for every point.
+  if (box.min.x > bounds_.max.x || box.max.x < bounds_.min.x || box.min.y > bounds_.max.y ||
+      box.max.y < bounds_.min.y || box.min.z > bounds_.max.z || box.max.z < bounds_.min.z) {
+    return Location::outside;
+  }
+  if (state_.empty()) return std::nullopt;  // few queries: no grid
+  // Strictly between two lines on each axis (so within the bounds): cell_of gives every point of
+  // the box that cell, whose state, for an empty cell, holds in the whole closed cell.
+  const int i = x_.cell_of(std::max(box.min.x, bounds_.min.x));
+  if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
+  const int j = y_.cell_of(std::max(box.min.y, bounds_.min.y));
+  if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
+  const int k = z_.cell_of(std::max(box.min.z, bounds_.min.z));
+  if (!(z_.line(k) < box.min.z && box.max.z < z_.line(k + 1))) return std::nullopt;
+  const std::size_t cell =
+      (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
+          static_cast<std::size_t>(nx_) +
+      static_cast<std::size_t>(i);
+  const std::uint8_t state = state_[cell];
+  if (state < 2) return state == 1 ? Location::inside : Location::outside;
+  return std::nullopt;
+}
+
 Location MeshIndex::locate_exact(Vec3 p) const {
   if (!bounds_.contains(p)) return Location::outside;
   if (state_.empty()) return locate_direct(p);  // few queries: no grid

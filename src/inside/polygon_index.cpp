@@ -303,6 +303,23 @@ Location PolygonIndex::locate(Vec2 point) const {
   return locate_in_edge_cell(point, i, edge_cells_[code - 2]);
 }
 
+std::optional<Location> PolygonIndex::locate_settled(const Box2& box) const {
+  // Wholly beyond the closed bounds: locate's first test answers `outside` for every point.
+  if (box.min.x > bounds_.max.x || box.max.x < bounds_.min.x || box.min.y > bounds_.max.y ||
+      box.max.y < bounds_.min.y) {
+    return Location::outside;
+  }
+  if (cells_.empty()) return std::nullopt;
+  // Strictly between two lines on each axis: cell_of gives every point of the box that cell.
+  const int i = x_.cell_of(std::max(box.min.x, bounds_.min.x));
+  if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
+  const int j = y_.cell_of(std::max(box.min.y, bounds_.min.y));
+  if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
+  const std::uint32_t code = cells_[static_cast<std::size_t>(j * x_.cells() + i)];
+  if (code < 2) return code == 1 ? Location::inside : Location::outside;
+  return std::nullopt;
+}
+
 Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const {
   // winding(p+) = winding(t+) + crossings of t -> s up the right side + sum c(p) - c(s).
   const double x1 = x_.line(column + 1);

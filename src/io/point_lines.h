@@ -14,8 +14,11 @@
 #include <cstring>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <vector>
 
+#include "contain/io/points_io.h"
+#include "io/number_bound.h"
 #include "io/text_scan.h"
 
 namespace contain::io::detail {
@@ -53,17 +56,15 @@ struct PointLinesScan {
   std::int64_t first_row = 0;  ///< the line of the first point, from 1 (0: none)
 };
 
-/// Scans `text` (whole lines; the last may lack its newline) for points of `Point` (Vec2: 2
-/// numbers a line, Vec3: 3), appending them to `points` and, when `lines` is given, each one's
-/// line (`lines_before` + its line in the text). The grammar of parse_number_table: numbers apart
-/// by blanks or by one comma with optional blanks around it, blank lines, `#` comments (a whole
-/// line, or after the numbers), CR LF. The text's byte order mark, if any, is the caller's.
-template <class Point>
-PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& points,
-                                std::vector<std::int64_t>* lines = nullptr,
-                                std::int64_t lines_before = 0) {
-  constexpr int kColumns = sizeof(Point) / sizeof(double);
-  static_assert(kColumns == 2 || kColumns == 3);
+/// Walks `text` (whole lines; the last may lack its newline) by the grammar of
+/// parse_number_table for rows of `kColumns` numbers: numbers apart by blanks or by one comma
+/// with optional blanks around it, blank lines, `#` comments (a whole line, or after the
+/// numbers), CR LF. `read(p, end, k)` reads the k-th number of a row at `p` (advancing `p`
+/// past it; false: not a number, the walk stops); `row(first, last, line)` takes a row whose
+/// numbers span [first, last), on the text's 1-based line `line`. The text's byte order mark,
+/// if any, is the caller's.
+template <int kColumns, class Read, class Row>
+PointLinesScan walk_point_lines(std::string_view text, Read&& read, Row&& row) {
   PointLinesScan scan;
   const char* p = text.data();
   const char* const end = p + text.size();
@@ -79,8 +80,8 @@ PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& point
       skip_past_line(p, end);
       continue;
     }
-    double v[kColumns];
-    if (!scan_finite_number(p, end, v[0])) return scan;
+    const char* first = p;
+    if (!read(p, end, 0)) return scan;
     for (int k = 1; k < kColumns; ++k) {
       const char* after = p;
       skip_blanks(p, end);
@@ -90,8 +91,9 @@ PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& point
       } else if (p == after) {
         return scan;  // a character glued to the number
       }
-      if (!scan_finite_number(p, end, v[k])) return scan;
+      if (!read(p, end, k)) return scan;
     }
+    const char* last = p;
     skip_blanks(p, end);
     if (p != end) {
       if (*p == '\n') {
@@ -102,16 +104,84 @@ PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& point
         return scan;  // another number, a comma, other text
       }
     }
-    if constexpr (kColumns == 2) {
-      points.push_back({v[0], v[1]});
-    } else {
-      points.push_back({v[0], v[1], v[2]});
-    }
-    if (lines != nullptr) lines->push_back(lines_before + scan.lines);
+    row(first, last, scan.lines);
     if (scan.first_row == 0) scan.first_row = scan.lines;
   }
   scan.complete = true;
   return scan;
+}
+
+/// Scans `text` (whole lines, as walk_point_lines) for points of `Point` (Vec2: 2 numbers a
+/// line, Vec3: 3), appending them to `points` and, when `lines` is given, each one's line
+/// (`lines_before` + its line in the text).
+template <class Point>
+PointLinesScan scan_point_lines(std::string_view text, std::vector<Point>& points,
+                                std::vector<std::int64_t>* lines = nullptr,
+                                std::int64_t lines_before = 0) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  static_assert(kColumns == 2 || kColumns == 3);
+  double v[kColumns];
+  return walk_point_lines<kColumns>(
+      text,
+      [&](const char*& p, const char* end, int k) { return scan_finite_number(p, end, v[k]); },
+      [&](const char*, const char*, std::int64_t line) {
+        if constexpr (kColumns == 2) {
+          points.push_back({v[0], v[1]});
+        } else {
+          points.push_back({v[0], v[1], v[2]});
+        }
+        if (lines != nullptr) lines->push_back(lines_before + line);
+      });
+}
+
+/// The one point of [first, last), text that scan_point_lines takes as one row (as a bounded
+/// point's numbers): the doubles it gives for them.
+template <class Point>
+Point scan_one_point(const char* first, const char* last) {
+  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  double v[kColumns] = {};
+  walk_point_lines<kColumns>(
+      std::string_view(first, static_cast<std::size_t>(last - first)),
+      [&](const char*& p, const char* end, int k) { return scan_finite_number(p, end, v[k]); },
+      [](const char*, const char*, std::int64_t) {});
+  if constexpr (kColumns == 2) {
+    return {v[0], v[1]};
+  } else {
+    return {v[0], v[1], v[2]};
+  }
+}
+
+/// Scans `text` as scan_point_lines does (the same lines taken, the same lines refused), each
+/// point as a box from its numbers' first digits (bound_plain_number; a number of another shape
+/// read in full), appended to `points` (BoundedPoint2 or BoundedPoint3).
+template <class Bounded>
+PointLinesScan scan_bounded_lines(std::string_view text, std::vector<Bounded>& points) {
+  constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
+  NumberBound v[kColumns];
+  int read_in_full = 0;
+  return walk_point_lines<kColumns>(
+      text,
+      // Inlined into the walk: a call a number cost a tenth of the scan.
+      [&](const char*& p, const char* end, int k) __attribute__((always_inline)) {
+        if (bound_plain_number(p, end, v[k])) return true;
+        read_in_full += 1;
+        if (!scan_finite_number(p, end, v[k].lo)) return false;
+        v[k].hi = v[k].lo;
+        return true;
+      },
+      [&](const char* first, const char* last, std::int64_t) __attribute__((always_inline)) {
+        Bounded& point = points.emplace_back();
+        if constexpr (kColumns == 2) {
+          point.box = {{v[0].lo, v[1].lo}, {v[0].hi, v[1].hi}};
+        } else {
+          point.box = {{v[0].lo, v[1].lo, v[2].lo}, {v[0].hi, v[1].hi, v[2].hi}};
+        }
+        if (read_in_full < kColumns) {
+          point.first = first;
+          point.last = last;
+        }
+        read_in_full = 0;
+      });
 }
 
 }  // namespace contain::io::detail

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <type_traits>
 #include <utility>
 
 #include "contain/core/parallel.h"
@@ -20,17 +21,44 @@ std::int64_t count_lines(std::string_view text) {
   return std::count(text.begin(), text.end(), '\n') + (text.empty() || text.back() == '\n' ? 0 : 1);
 }
 
-// The rows of a table of 2 or 3 columns as points, appended.
-template <class Point>
-void append_rows(const NumberTable& table, std::vector<Point>& points) {
-  const std::vector<double>& v = table.values;
+// The coordinates a point file's item holds: 2 or 3.
+template <class Item>
+constexpr int kColumnsOf =
+    std::is_same_v<Item, Vec2> || std::is_same_v<Item, BoundedPoint2> ? 2 : 3;
+
+// A row of a table of 2 or 3 columns as an item, appended: a point, or a bounded point whose
+// box is the point (read in full).
+void append_row(const double* v, std::vector<Vec2>& points) {
+  points.push_back({v[0], v[1]});
+}
+void append_row(const double* v, std::vector<Vec3>& points) {
+  points.push_back({v[0], v[1], v[2]});
+}
+void append_row(const double* v, std::vector<BoundedPoint2>& points) {
+  const Vec2 p{v[0], v[1]};
+  points.push_back({.box = {p, p}});
+}
+void append_row(const double* v, std::vector<BoundedPoint3>& points) {
+  const Vec3 p{v[0], v[1], v[2]};
+  points.push_back({.box = {p, p}});
+}
+
+// The rows of a table of 2 or 3 columns as items, appended.
+template <class Item>
+void append_rows(const NumberTable& table, std::vector<Item>& points) {
+  constexpr std::size_t columns = kColumnsOf<Item>;
   points.reserve(points.size() + table.rows());
-  for (std::size_t i = 0; i < table.rows(); ++i) {
-    if constexpr (sizeof(Point) == 2 * sizeof(double)) {
-      points.push_back({v[2 * i], v[2 * i + 1]});
-    } else {
-      points.push_back({v[3 * i], v[3 * i + 1], v[3 * i + 2]});
-    }
+  for (std::size_t i = 0; i < table.rows(); ++i)
+    append_row(table.values.data() + columns * i, points);
+}
+
+// The one-pass scan of a slice into items: points, or bounded points.
+template <class Item>
+detail::PointLinesScan scan_items(std::string_view text, std::vector<Item>& items) {
+  if constexpr (std::is_same_v<Item, Vec2> || std::is_same_v<Item, Vec3>) {
+    return detail::scan_point_lines(text, items);
+  } else {
+    return detail::scan_bounded_lines(text, items);
   }
 }
 
@@ -77,7 +105,7 @@ struct Slice {
 template <class Point>
 void parse_slice(std::string_view text, Slice<Point>& slice) {
   slice.points.clear();
-  const detail::PointLinesScan scan = detail::scan_point_lines(text, slice.points);
+  const detail::PointLinesScan scan = scan_items(text, slice.points);
   slice.failed = !scan.complete;
   slice.lines = scan.lines;
   slice.first_row = scan.first_row;
@@ -123,7 +151,7 @@ template <class Point>
 Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
                    ReadPosition& at, std::uintmax_t file_size, std::vector<Slice<Point>>& slices,
                    const std::function<void(std::span<const Point>, double)>& consume) {
-  constexpr int kColumns = sizeof(Point) / sizeof(double);
+  constexpr int kColumns = kColumnsOf<Point>;
   const BatchOptions options{.threads = reading.threads};
   const std::vector<std::size_t> starts =
       slice_starts(text, thread_count(options, text.size(), kSliceBytes));
@@ -243,6 +271,27 @@ Status read_points3_chunked(const std::filesystem::path& path, const ChunkedRead
                             const std::function<void(std::span<const Vec3>, double)>& consume) {
   return read_chunked<Vec3>(path, reading, consume);
 }
+Status read_points2_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading,
+    const std::function<void(std::span<const BoundedPoint2>, double)>& consume) {
+  return read_chunked<BoundedPoint2>(path, reading, consume);
+}
+Status read_points3_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading,
+    const std::function<void(std::span<const BoundedPoint3>, double)>& consume) {
+  return read_chunked<BoundedPoint3>(path, reading, consume);
+}
+
+// The text of a bounded point was taken by the scanner, so the scan of it succeeds.
+Vec2 exact_point(const BoundedPoint2& point) {
+  if (point.first == nullptr) return point.box.min;
+  return detail::scan_one_point<Vec2>(point.first, point.last);
+}
+Vec3 exact_point(const BoundedPoint3& point) {
+  if (point.first == nullptr) return point.box.min;
+  return detail::scan_one_point<Vec3>(point.first, point.last);
+}
+
 Result<Points2> read_points2(std::istream& in, const std::string& source) {
   auto text = detail::read_stream(in, source);
   if (!text) return text.error();

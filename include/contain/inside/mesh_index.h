@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -116,6 +117,24 @@ class MeshIndex {
   /// Where `point` lies.
   [[nodiscard]] Location locate(Vec3 point) const;
 
+  /// The location every point of the closed box `box` has, when the index knows it without
+  /// looking at a point (regime `closed_exact` only): the box wholly beyond the triangles'
+  /// bounds (`outside`), or strictly inside one grid cell that no triangle's box meets (its
+  /// stored answer); none otherwise (a box touching a cell's side, a surface cell, a box over
+  /// several cells, no grid, the winding regime). Exact comparisons only, so an answer given is
+  /// `locate(p)` for every p in the box. O(1).
+  [[nodiscard]] std::optional<Location> locate_settled(const Box3& box) const;
+  /// Warms the cache for a query at `p` (its guessed cell's state byte), for callers'
+  /// pipelines; no effect on any answer.
+  void prefetch(Vec3 p) const {
+    if (state_.empty() || !bounds_.contains(p)) return;
+    const std::size_t cell =
+        (static_cast<std::size_t>(z_.guess(p.z)) * static_cast<std::size_t>(ny_) +
+         static_cast<std::size_t>(y_.guess(p.y))) *
+            static_cast<std::size_t>(nx_) +
+        static_cast<std::size_t>(x_.guess(p.x));
+    __builtin_prefetch(&state_[cell]);
+  }
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all). Deterministic.
   void locate(std::span<const Vec3> points, std::span<Location> out,

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -74,6 +75,22 @@ class PolygonIndex {
 
   /// Where `point` lies: exactly as `point_in_polygon(rings, point, {.fill})`.
   [[nodiscard]] Location locate(Vec2 point) const;
+
+  /// The location every point of the closed box `box` has, when the index knows it without
+  /// looking at a point: the box wholly beyond the edges' bounds (`outside`), or strictly
+  /// inside one cell that no edge touches (its stored answer); none otherwise (a box touching a
+  /// cell's side, an edge cell, a box over several cells). Exact comparisons only, so an answer
+  /// given is `locate(p)` for every p in the box. O(1).
+  [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const;
+
+  /// Warms the cache for a query at `point` (its guessed cell's word), for callers' pipelines;
+  /// no effect on any answer.
+  void prefetch(Vec2 point) const {
+    if (!bounds_.contains(point)) return;  // also: no grid
+    __builtin_prefetch(
+        &cells_[static_cast<std::size_t>(y_.guess(point.y)) * static_cast<std::size_t>(x_.cells()) +
+                static_cast<std::size_t>(x_.guess(point.x))]);
+  }
 
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all hardware threads). Deterministic.

@@ -12,7 +12,10 @@
 #include <string_view>
 #include <vector>
 
+#include "contain/core/location.h"
+#include "contain/core/parallel.h"
 #include "contain/core/result.h"
+#include "contain/values/box.h"
 #include "contain/values/vec.h"
 
 namespace contain::io {
@@ -70,6 +73,76 @@ struct ChunkedReading {
 [[nodiscard]] Status read_points3_chunked(
     const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const Vec3>, double)>& consume);
+
+/// A 2D point known from its numbers' first digits: the closed box `box` holds the point the
+/// full text denotes (the double std::from_chars gives for each number), proven for every
+/// token, not estimated. A number of the plain shape `-?D.F` (1 to 7 digits D) is bounded by
+/// its first 8 digits after the point, the rest only checked to be digits; any other number is
+/// read in full. `first` is null when every number was read in full (the box is then the
+/// point); else [first, last) is the text of the point's numbers, valid only in the call that
+/// hands the point over, for `exact_point`.
+struct BoundedPoint2 {
+  Box2 box;
+  const char* first = nullptr;
+  const char* last = nullptr;
+};
+
+/// A 3D point known from its numbers' first digits (see `BoundedPoint2`).
+struct BoundedPoint3 {
+  Box3 box;
+  const char* first = nullptr;
+  const char* last = nullptr;
+};
+
+/// The point itself: its numbers read in full (std::from_chars), the doubles `read_points2`
+/// gives. Only within the call that handed the point over (its text must be alive).
+[[nodiscard]] Vec2 exact_point(const BoundedPoint2& point);
+/// The point itself (see the 2D overload).
+[[nodiscard]] Vec3 exact_point(const BoundedPoint3& point);
+
+/// Reads 2D points in pieces as `read_points2_chunked` does (the same lines, order, errors and
+/// chunks), each point as a box from its numbers' first digits, so that a caller whose answer is
+/// the same over the whole box needs no more digits (`locate_bounded`). Every byte is still
+/// checked: a line the chunked reader refuses is the same error here.
+[[nodiscard]] Status read_points2_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading,
+    const std::function<void(std::span<const BoundedPoint2>, double)>& consume);
+/// Reads 3D points in pieces as boxes (see `read_points2_bounded`).
+[[nodiscard]] Status read_points3_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading,
+    const std::function<void(std::span<const BoundedPoint3>, double)>& consume);
+
+/// Locates bounded points with an index that can answer for a whole box: `out[i]` is
+/// `index.locate_settled(points[i].box)` where it has an answer, else `index.locate` of the
+/// exact point; so exactly `index.locate(exact_point(points[i]))` whenever `locate_settled` is
+/// right (inside::PolygonIndex, inside::MeshIndex). The unsettled points go to the index's batch
+/// locate (its prefetching pipeline), and `index.prefetch(p)` warms the cell of a box a few
+/// points ahead. On `options.threads` threads (0: all).
+template <class Index, class Bounded>
+void locate_bounded(const Index& index, std::span<const Bounded> points, std::span<Location> out,
+                    const BatchOptions& options = {}) {
+  using Point = decltype(exact_point(points[0]));
+  constexpr std::size_t kAhead = 8;
+  parallel_for(batch_size(points.size(), out.size()), options,
+               [&](std::size_t begin, std::size_t end) {
+                 std::vector<Point> exact;
+                 std::vector<std::size_t> where;
+                 for (std::size_t k = begin; k < end; ++k) {
+                   if (k + kAhead < end) index.prefetch(points[k + kAhead].box.min);
+                   const auto settled = index.locate_settled(points[k].box);
+                   if (settled) {
+                     out[k] = *settled;
+                   } else {
+                     exact.push_back(exact_point(points[k]));
+                     where.push_back(k);
+                   }
+                 }
+                 std::vector<Location> answers(exact.size());
+                 index.locate(exact, answers, {.threads = 1});
+                 for (std::size_t i = 0; i < where.size(); ++i)
+                   out[where[i]] = answers[i];
+               });
+}
 
 /// Reads 2D points from a stream to its end; `source` names it in errors.
 [[nodiscard]] Result<Points2> read_points2(std::istream& in, const std::string& source);

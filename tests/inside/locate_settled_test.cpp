@@ -1,0 +1,166 @@
+// locate_settled of PolygonIndex and MeshIndex (the answer for a whole box, used for points read
+// from their first digits): where it answers, every point of the box is located so by the
+// ordinary locate (corners, centre, the point the box was made around), on random and
+// degenerate points (vertices, edges, grid lines); a box touching a grid line is never settled
+// inside the bounds; and it does answer for most small boxes (the test is not vacuous).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "contain/inside/mesh_index.h"
+#include "contain/inside/polygon_index.h"
+#include "inside/mesh_test_meshes.h"
+#include "inside/polygon_random.h"
+
+namespace contain::inside {
+namespace {
+
+// Boxes around p: the point itself, tiny boxes on each side, one as wide as a cell, and one
+// whose low x corner is the nearest grid line (touching it).
+std::vector<Box2> boxes_around(Vec2 p, std::span<const double> grid_x, double cell) {
+  std::vector<Box2> boxes{{p, p}};
+  for (const double w : {1e-12, 1e-8, 1e-3, cell}) {
+    boxes.push_back({p, {p.x + w, p.y + w}});
+    boxes.push_back({{p.x - w, p.y - w}, p});
+  }
+  const auto line = std::lower_bound(grid_x.begin(), grid_x.end(), p.x);
+  if (line != grid_x.end()) boxes.push_back({{*line, p.y}, {*line + 1e-9, p.y + 1e-9}});
+  return boxes;
+}
+
+// Where the index settles the box, the ordinary locate agrees at its corners and centre.
+int expect_settled_agrees(const PolygonIndex& index, const Box2& box) {
+  const std::optional<Location> settled = index.locate_settled(box);
+  if (!settled) return 0;
+  const std::array<Vec2, 5> probes{
+      box.min, box.max, Vec2{box.min.x, box.max.y}, Vec2{box.max.x, box.min.y},
+      box.min + 0.5 * (box.max - box.min)};  // the centre, in the box even when subnormal
+  for (const Vec2& q : probes) {
+    EXPECT_EQ(index.locate(q), *settled) << q.x << " " << q.y;
+  }
+  return 1;
+}
+
+TEST(LocateSettled, PolygonAnswersOnlyWhereEveryPointOfTheBoxLocatesSo) {
+  std::mt19937_64 rng(27);
+  for (int round = 0; round < 40; ++round) {
+    const std::vector<Ring> rings =
+        round % 2 == 0 ? test::random_integer_rings(rng, 3, 12, 8)
+                       : std::vector<Ring>{test::random_star(rng, 20 + round, 0.0, 0.0, 1.0)};
+    const PolygonIndex index(std::span<const Ring>(rings), {.min_cells = 64});
+    const Box2 b = index.bounds();
+    const double cell = (b.max.x - b.min.x) / static_cast<double>(index.grid_x().size());
+    std::vector<Vec2> points = test::points_near_rings(rng, rings, 3);
+    std::uniform_real_distribution<double> ux(b.min.x - 0.1, b.max.x + 0.1),
+        uy(b.min.y - 0.1, b.max.y + 0.1);
+    int tiny = 0;  // random points whose tiny box is settled
+    for (int k = 0; k < 300; ++k) {
+      const Vec2 p{ux(rng), uy(rng)};
+      tiny += index.locate_settled({p, {p.x + 1e-8, p.y + 1e-8}}) ? 1 : 0;
+      points.push_back(p);
+    }
+    for (const double x : index.grid_x())  // on the grid lines
+      points.push_back({x, uy(rng)});
+    int settled = 0;
+    for (const Vec2& p : points) {
+      for (const Box2& box : boxes_around(p, index.grid_x(), cell)) {
+        settled += expect_settled_agrees(index, box);
+      }
+    }
+    EXPECT_GT(settled, 0);
+    if (round % 2 == 1) {  // a star: most random points are far from its edges
+      EXPECT_GT(tiny, 100);
+    }
+  }
+}
+
+TEST(LocateSettled, PolygonBoxTouchingAnInnerGridLineIsNotSettled) {
+  std::mt19937_64 rng(5);
+  const std::vector<Ring> rings{test::random_star(rng, 30, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  const std::span<const double> xs = index.grid_x(), ys = index.grid_y();
+  for (std::size_t i = 1; i + 1 < xs.size(); ++i) {
+    for (std::size_t j = 1; j + 1 < ys.size(); j += 7) {
+      const double y = 0.5 * ys[j] + 0.5 * ys[j + 1];
+      EXPECT_FALSE(index.locate_settled({{xs[i], y}, {xs[i] + 1e-9, y}}));
+      EXPECT_FALSE(index.locate_settled({{xs[i] - 1e-9, y}, {xs[i], y}}));
+    }
+  }
+  // Beyond the bounds, even touching them: outside.
+  const Box2 b = index.bounds();
+  EXPECT_EQ(index.locate_settled({{b.max.x + 1.0, 0.0}, {b.max.x + 2.0, 0.0}}), Location::outside);
+  // An empty region settles every box as outside, as it locates every point.
+  EXPECT_EQ(PolygonIndex().locate_settled({{0, 0}, {1, 1}}), Location::outside);
+}
+
+TEST(LocateSettled, PolygonWithoutGridSettlesOnlyBoxesBeyondItsBounds) {
+  std::mt19937_64 rng(8);
+  const std::vector<Ring> rings{test::random_star(rng, 30, 0.0, 0.0, 1.0)};
+  const PolygonIndex index(std::span<const Ring>(rings), {.queries = 1});
+  EXPECT_FALSE(index.locate_settled({{0, 0}, {1e-9, 1e-9}}));
+  EXPECT_EQ(index.locate_settled({{5, 5}, {6, 6}}), Location::outside);
+}
+
+int expect_settled_agrees(const MeshIndex& index, const Box3& box) {
+  const std::optional<Location> settled = index.locate_settled(box);
+  if (!settled) return 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 q{(corner & 1) != 0 ? box.max.x : box.min.x,
+                 (corner & 2) != 0 ? box.max.y : box.min.y,
+                 (corner & 4) != 0 ? box.max.z : box.min.z};
+    EXPECT_EQ(index.locate(q), *settled) << q.x << " " << q.y << " " << q.z;
+  }
+  const Vec3 centre = box.min + 0.5 * (box.max - box.min);  // in the box, even when subnormal
+  EXPECT_EQ(index.locate(centre), *settled);
+  return 1;
+}
+
+TEST(LocateSettled, MeshAnswersOnlyWhereEveryPointOfTheBoxLocatesSo) {
+  std::mt19937_64 rng(3);
+  const std::vector<Mesh> meshes{test::grid_cube(0.0, 4.0, 4), test::octahedron(2.0),
+                                 test::l_prism(), test::scaled(test::l_prism(), 0.25)};
+  for (const Mesh& mesh : meshes) {
+    const MeshIndex index(mesh);
+    const Box3 b = index.bounds();
+    std::uniform_real_distribution<double> ux(b.min.x - 0.5, b.max.x + 0.5),
+        uy(b.min.y - 0.5, b.max.y + 0.5), uz(b.min.z - 0.5, b.max.z + 0.5);
+    std::uniform_int_distribution<int> lattice(-2, 18);
+    std::vector<Vec3> points;
+    for (int k = 0; k < 2000; ++k)
+      points.push_back({ux(rng), uy(rng), uz(rng)});
+    for (int k = 0; k < 2000; ++k) {  // on vertices, faces and grid planes: quarter lattice
+      points.push_back({0.25 * lattice(rng), 0.25 * lattice(rng), 0.25 * lattice(rng)});
+    }
+    for (const Vec3& v : mesh.vertices)
+      points.push_back(v);
+    int settled = 0, tiny = 0;
+    for (const Vec3& p : points) {
+      for (const double w : {0.0, 1e-9, 1e-3, 0.3}) {
+        settled += expect_settled_agrees(index, {p, p + Vec3{w, w, w}});
+        settled += expect_settled_agrees(index, {p - Vec3{w, w, w}, p});
+      }
+      tiny += index.locate_settled({p, p + Vec3{1e-8, 1e-8, 1e-8}}) ? 1 : 0;
+    }
+    EXPECT_GT(settled, 0);
+    EXPECT_GT(tiny, 1000);
+  }
+}
+
+TEST(LocateSettled, MeshBoxTouchingAGridPlaneOrWithoutGridIsNotSettledInsideTheBounds) {
+  const Mesh cube = test::grid_cube(0.0, 4.0, 2);
+  const MeshIndex index(cube);
+  const Box3 b = index.bounds();
+  const Vec3 mid = 0.5 * b.min + 0.5 * b.max;
+  EXPECT_FALSE(index.locate_settled({{b.min.x, mid.y, mid.z}, {b.min.x + 1e-9, mid.y, mid.z}}));
+  EXPECT_EQ(index.locate_settled({{-2, -2, -2}, {-1, -1, -1}}), Location::outside);
+  const MeshIndex few(cube, {.queries = 1});
+  EXPECT_FALSE(few.locate_settled({mid, mid}));
+  EXPECT_EQ(few.locate_settled({{5, 5, 5}, {6, 6, 6}}), Location::outside);
+}
+
+}  // namespace
+}  // namespace contain::inside
