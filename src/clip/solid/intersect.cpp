@@ -70,13 +70,52 @@ bool one_side(const std::array<Sign, 3>& s, int shared) {
   return zeros <= shared && zeros < 3 && (positive == 0 || negative == 0);
 }
 
-// The points of the pair stage for the engine: every crossing rounded and stored once.
-struct StoredPoints {
-  PointStore& store;
-  std::int32_t crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
-    return store.add(line_plane(p, q, a, b, c));
+// The points of the pair stage for the engine: every crossing rounded and stored once. The
+// crossing of an edge with a plane is asked by both triangles on the edge (each meets the
+// plane's triangle): the second gets the first's number from a table of (edge, plane's
+// triangle), where it was rounded, compared exactly with the first and given its number again.
+class StoredPoints {
+ public:
+  explicit StoredPoints(PointStore& store) : store_(store) {}
+
+  std::int32_t crossing(std::uint64_t edge, std::int32_t plane, Vec3 p, Vec3 q, Vec3 a, Vec3 b,
+                        Vec3 c) {
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    std::size_t i = slot_of(edge, plane);
+    if (slots_[i].id >= 0) return slots_[i].id;
+    slots_[i] = {edge, plane, store_.add(line_plane(p, q, a, b, c))};
+    ++used_;
+    return slots_[i].id;
   }
-  [[nodiscard]] const ExactPoint& point(std::int32_t i) const { return store.point(i); }
+  [[nodiscard]] const ExactPoint& point(std::int32_t i) const { return store_.point(i); }
+
+ private:
+  struct Slot {
+    std::uint64_t edge = 0;
+    std::int32_t plane = 0;
+    std::int32_t id = -1;
+  };
+  [[nodiscard]] std::size_t slot_of(std::uint64_t edge, std::int32_t plane) const {
+    std::uint64_t h = (edge ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(plane)) *
+                               0x9e3779b97f4a7c15ULL)) *
+                      0xff51afd7ed558ccdULL;
+    h ^= h >> 32U;
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = static_cast<std::size_t>(h) & mask;; i = (i + 1) & mask) {
+      const Slot& s = slots_[i];
+      if (s.id < 0 || (s.edge == edge && s.plane == plane)) return i;
+    }
+  }
+  void grow() {
+    std::vector<Slot> old(std::max<std::size_t>(1024, 2 * slots_.size()));
+    old.swap(slots_);
+    for (const Slot& s : old) {
+      if (s.id >= 0) slots_[slot_of(s.edge, s.plane)] = s;
+    }
+  }
+  PointStore& store_;
+  std::vector<Slot> slots_;
+  std::size_t used_ = 0;
 };
 
 // The points of the pair stage for the check of a written mesh, which asks only whether pairs
@@ -85,7 +124,8 @@ struct StoredPoints {
 // corner of that triangle and the tests on shared corners do not change).
 struct EnclosedPoints {
   std::vector<ExactPoint> points;
-  std::int32_t crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+  std::int32_t crossing(std::uint64_t /*edge*/, std::int32_t /*plane*/, Vec3 p, Vec3 q, Vec3 a,
+                        Vec3 b, Vec3 c) {
     points.push_back(line_plane_enclosed(p, q, a, b, c));
     return static_cast<std::int32_t>(points.size() - 1);
   }
@@ -113,7 +153,8 @@ Ends plane_cut(const Soup& soup, std::int32_t t, std::int32_t u, const std::arra
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     if (to_int(s[static_cast<std::size_t>(i)]) * to_int(s[static_cast<std::size_t>(j)]) < 0) {
-      ends.push_back(store.crossing(corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
+      ends.push_back(store.crossing(edge_key(vertex_id(soup, t, i), vertex_id(soup, t, j)), u,
+                                    corner(soup, t, i), corner(soup, t, j), corner(soup, u, 0),
                                     corner(soup, u, 1), corner(soup, u, 2)));
     }
   }
@@ -327,7 +368,7 @@ EnclosedPoints enclosed_vertices(const Soup& soup) {
 
 std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
                                           Neighbours neighbours) {
-  StoredPoints points{store};
+  StoredPoints points(store);
   return pairs_of(soup, points, neighbours);
 }
 
