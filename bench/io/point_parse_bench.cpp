@@ -8,7 +8,15 @@
 //   scanner             detail::scan_point_lines on the whole text (the reader's hot loop);
 //   mapped              the file memory-mapped in windows (MAP_POPULATE) and scanned;
 //   read_copy           the file read with read() into a 256 KB block, nothing parsed (the copy);
-//   reader              read_points3_chunked from the file, one thread (the whole read phase).
+//   reader              read_points3_chunked from the file, one thread (the whole read phase);
+//   byte_classes        every byte checked to be a digit, '-', '.', blank or newline, 16 at a
+//                       time (the floor of checking every byte, with no token logic at all);
+//   prefix_walk         each number's first digits bounded (detail::bound_plain_number: the
+//                       8-digit prefix read, the rest checked to be digits; from_chars for the
+//                       few other shapes), one separator byte skipped between numbers (the
+//                       floor of not parsing every digit: no line grammar, no points stored);
+//   bounded_scanner     detail::scan_bounded_lines on the whole text (the bounded reader's loop);
+//   bounded_reader      read_points3_bounded from the file, one thread (its whole read phase).
 // Counter: bytes/s of the file's text.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
@@ -24,9 +32,11 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "contain/io/points_io.h"
+#include "io/number_bound.h"
 #include "io/point_lines.h"
 
 namespace {
@@ -210,6 +220,82 @@ void reader(benchmark::State& state) {
   set_bytes(state, bytes);
 }
 
+void byte_classes(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  // 16 bytes at a time in GCC's portable vectors (SSE2 on x86-64): a byte is allowed iff it is a
+  // digit or one of "-. \n"; the flags are or-ed together, nothing else is done.
+  using Bytes = unsigned char __attribute__((vector_size(16)));
+  for (auto _ : state) {
+    Bytes bad{};
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    for (; end - p >= 16; p += 16) {
+      Bytes x;
+      std::memcpy(&x, p, 16);
+      const Bytes digit = (x - '0') < 10;
+      const Bytes other = (x == '-') | (x == '.') | (x == ' ') | (x == '\n');
+      bad |= ~(digit | other);
+    }
+    benchmark::DoNotOptimize(bad);
+  }
+  set_bytes(state, text.size());
+}
+
+void prefix_walk(benchmark::State& state, int columns) {
+  const std::string& text = file_text(columns);
+  std::vector<contain::io::detail::NumberBound> bounds(tokens(columns).size() + 1);
+  for (auto _ : state) {
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    auto* out = bounds.data();
+    while (p < end) {
+      if (!contain::io::detail::bound_plain_number(p, end, *out)) {
+        p = std::from_chars(p, end, out->lo).ptr;  // another shape (an exponent): in full
+      }
+      ++out;
+      ++p;
+    }
+    benchmark::DoNotOptimize(bounds.data());
+    benchmark::ClobberMemory();
+  }
+  set_bytes(state, text.size());
+}
+
+template <class Bounded>
+void bounded_scanner(benchmark::State& state) {
+  constexpr int kColumns = std::is_same_v<Bounded, contain::io::BoundedPoint2> ? 2 : 3;
+  const std::string& text = file_text(kColumns);
+  std::vector<Bounded> points;
+  points.reserve(tokens(kColumns).size() / kColumns + 1);
+  for (auto _ : state) {
+    points.clear();
+    const auto scan = contain::io::detail::scan_bounded_lines(text, points);
+    benchmark::DoNotOptimize(scan);
+    benchmark::DoNotOptimize(points.data());
+  }
+  set_bytes(state, text.size());
+}
+
+template <class Bounded>
+void bounded_reader(benchmark::State& state) {
+  constexpr int kColumns = std::is_same_v<Bounded, contain::io::BoundedPoint2> ? 2 : 3;
+  const std::size_t bytes = file_text(kColumns).size();
+  const contain::io::ChunkedReading reading{.threads = 1};
+  for (auto _ : state) {
+    std::size_t count = 0;
+    const auto consume = [&](std::span<const Bounded> points, double) { count += points.size(); };
+    contain::Status status = contain::Ok{};
+    if constexpr (kColumns == 3) {
+      status = contain::io::read_points3_bounded(points_path(3), reading, consume);
+    } else {
+      status = contain::io::read_points2_bounded(points_path(2), reading, consume);
+    }
+    if (!status) state.SkipWithError("the file does not read");
+    benchmark::DoNotOptimize(count);
+  }
+  set_bytes(state, bytes);
+}
+
 }  // namespace
 
 BENCHMARK_CAPTURE(from_chars_tokens, 3d, 3)->Unit(benchmark::kMillisecond);
@@ -225,9 +311,18 @@ BENCHMARK_TEMPLATE(reader, contain::Vec3)
     ->Arg(128)
     ->Arg(512)
     ->Arg(1024);
+BENCHMARK_CAPTURE(byte_classes, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(prefix_walk, 3d, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(bounded_scanner, contain::io::BoundedPoint3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(bounded_reader, contain::io::BoundedPoint3)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(from_chars_tokens, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(from_chars_walk, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(scanner, contain::Vec2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(reader, contain::Vec2)->Unit(benchmark::kMillisecond)->Arg(0);
+BENCHMARK_CAPTURE(read_copy, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(byte_classes, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(prefix_walk, 2d, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(bounded_scanner, contain::io::BoundedPoint2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(bounded_reader, contain::io::BoundedPoint2)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
