@@ -1,8 +1,10 @@
-// The exact check of the written mesh. Crossings are found with the pair stage itself on the
-// written doubles (welded by position, so sheets kept apart at one position share corners): any
-// constraint between triangles in different planes is a meeting beyond their shared corners;
-// triangles in one plane are tested in 2D with exact orient2d (closed edges against closed
-// triangles, the edges through a shared corner left out, as collide::self_intersections does).
+// The exact check of the written mesh. Pairs of triangles whose boxes meet are tested on the
+// written doubles (welded by position, so sheets kept apart at one position share corners) by
+// the corners they share, with orient2d and orient3d signs only (meet_beyond_shared): first in
+// one projection, where an edge line leaving the other triangle outside settles most pairs (a
+// merged face's fan, pieces of one plane, neighbours across an edge) with a few orient2d, then
+// as collide::self_intersections decides. It asks only whether two triangles meet, never where:
+// no crossing point is made (the pair stage's enclosed crossings were two thirds of the check).
 //
 // Why the pairs of triangles with three kept corners need no test. The engine's exact result
 // is conforming: each input triangle is refined by a constrained triangulation holding every
