@@ -96,6 +96,21 @@ bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::arr
   return false;
 }
 
+// The projection of a pair's test: the axis dropped (the first triangle's largest_axis), the
+// orientation of the first triangle's projection, and of the second's when known (the same
+// axis is its own largest: the signs are each triangle's, computed once per triangle).
+struct Facing {
+  int axis = 0;
+  Sign turn_t = Sign::zero;
+  std::optional<Sign> turn_u;
+};
+
+// The axis and orientation of a triangle's own projection.
+std::pair<int, Sign> own_projection(const std::array<Vec3, 3>& t) {
+  const int axis = largest_axis(t);
+  return {axis, orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis))};
+}
+
 // A cheap sufficient test, exact: in the projection along `axis`, an edge line of one
 // triangle's projection leaves the other's corners outside but for shared ends of that edge.
 // Then the projections meet at most in the hull H of those shared corners, and so do the
@@ -106,12 +121,12 @@ bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::arr
 // of the check, and are settled here by a few orient2d.
 bool apart_in_projection(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
                          const std::array<int, 3>& t_in_u, const std::array<int, 3>& u_in_t,
-                         int axis) {
+                         const Facing& facing) {
+  const int axis = facing.axis;
   const std::array<Vec2, 3> a = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
   const std::array<Vec2, 3> b = {drop(u[0], axis), drop(u[1], axis), drop(u[2], axis)};
-  const Sign turn_a = orient2d(a[0], a[1], a[2]);
-  if (turn_a != Sign::zero && edge_line_separates(a, turn_a, b, u_in_t)) return true;
-  const Sign turn_b = orient2d(b[0], b[1], b[2]);
+  if (facing.turn_t != Sign::zero && edge_line_separates(a, facing.turn_t, b, u_in_t)) return true;
+  const Sign turn_b = facing.turn_u ? *facing.turn_u : orient2d(b[0], b[1], b[2]);
   return turn_b != Sign::zero && edge_line_separates(b, turn_b, a, t_in_u);
 }
 
@@ -176,7 +191,7 @@ bool segment_meets_triangle(Vec3 p, Vec3 q, const std::array<Vec3, 3>& t) {
 // both); an edge shared, both in one plane with the third corners on one side of it. Three
 // shared (the same triangle twice, either way round): they meet.
 bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
-                        const std::array<int, 3>& u_in_t) {
+                        const std::array<int, 3>& u_in_t, const Facing& facing) {
   std::array<int, 3> t_in_u = {-1, -1, -1};
   int shared = 0;
   for (std::size_t m = 0; m < 3; ++m) {
@@ -186,7 +201,7 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
     }
   }
   if (shared == 3) return true;
-  if (apart_in_projection(t, u, t_in_u, u_in_t, largest_axis(t))) return false;
+  if (apart_in_projection(t, u, t_in_u, u_in_t, facing)) return false;
   if (shared == 0) {
     // Any common point: then one lies on an edge of one of them (an extreme point of the
     // compact convex intersection), so some edge meets the other triangle.
@@ -224,7 +239,8 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
 
 // meet_beyond_shared on triangles t and u of the local soup (shared corners by number: the
 // soup is welded by position).
-bool pair_meets(const Soup& soup, std::size_t t, std::size_t u) {
+bool pair_meets(const Soup& soup, const std::vector<std::pair<int, Sign>>& projections,
+                std::size_t t, std::size_t u) {
   const TriangleIndices& vt = soup.triangles[t];
   const TriangleIndices& vu = soup.triangles[u];
   std::array<Vec3, 3> a{}, b{};
@@ -236,7 +252,11 @@ bool pair_meets(const Soup& soup, std::size_t t, std::size_t u) {
       if (vu[m] == vt[k]) u_in_t[m] = static_cast<int>(k);
     }
   }
-  return meet_beyond_shared(a, b, u_in_t);
+  const auto [axis, turn_t] = projections[t];
+  const Facing facing{
+      axis, turn_t,
+      projections[u].first == axis ? std::optional(projections[u].second) : std::nullopt};
+  return meet_beyond_shared(a, b, u_in_t, facing);
 }
 
 Status failure(const std::string& what) {
@@ -475,7 +495,8 @@ bool written_pair_meets(const Triangle3& a, const Triangle3& b) {
       if (u[m] == t[k]) u_in_t[m] = static_cast<int>(k);
     }
   }
-  return meet_beyond_shared(t, u, u_in_t);
+  const auto [axis, turn_t] = own_projection(t);
+  return meet_beyond_shared(t, u, u_in_t, Facing{axis, turn_t, std::nullopt});
 }
 
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
@@ -539,6 +560,14 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
       ++r;
     tested[i] = r < rounded.size() && rounded[r] == chosen[i];
   }
+  // Each tested triangle's own projection, once (not per pair).
+  std::vector<std::pair<int, Sign>> projections(chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const TriangleIndices& v = soup.triangles[i];
+    projections[i] = own_projection({soup.vertices[static_cast<std::size_t>(v[0])],
+                                     soup.vertices[static_cast<std::size_t>(v[1])],
+                                     soup.vertices[static_cast<std::size_t>(v[2])]});
+  }
   std::vector<bool> bad(chosen.size(), false);
   const char* what = nullptr;
   (void)bvh::traverse_self(
@@ -549,7 +578,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
         if ((!tested[t] && !tested[u]) || !soup.boxes[t].overlaps(soup.boxes[u])) {
           return bvh::Visit::proceed;
         }
-        if (!pair_meets(soup, t, u)) return bvh::Visit::proceed;
+        if (!pair_meets(soup, projections, t, u)) return bvh::Visit::proceed;
         what = "two triangles cross or overlap";
         bad[t] = true;
         bad[u] = true;
