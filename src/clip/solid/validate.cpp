@@ -1,8 +1,11 @@
-// The exact check of the written mesh. Crossings are found with the pair stage itself on the
-// written doubles (welded by position, so sheets kept apart at one position share corners): any
-// constraint between triangles in different planes is a meeting beyond their shared corners;
-// triangles in one plane are tested in 2D with exact orient2d (closed edges against closed
-// triangles, the edges through a shared corner left out, as collide::self_intersections does).
+// The exact check of the written mesh. Pairs of triangles whose boxes meet are tested on the
+// written doubles (welded by position, so sheets kept apart at one position share corners) by
+// the corners they share, with orient2d and orient3d signs only (meet_beyond_shared): first in
+// one projection, where an edge line leaving the other triangle outside settles most pairs (a
+// merged face's fan, pieces of one plane, neighbours across an edge) with a few orient2d, then
+// as collide::self_intersections decides (segment against triangle, orient3d and orient2d
+// signs). It asks only whether two triangles meet, never where:
+// no crossing point is made (the pair stage's enclosed crossings were two thirds of the check).
 //
 // Why the pairs of triangles with three kept corners need no test. The engine's exact result
 // is conforming: each input triangle is refined by a constrained triangulation holding every
@@ -40,7 +43,6 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/exact_point.h"
 #include "contain/bvh/bvh.h"
-#include "contain/collide/tri_tri.h"
 #include "contain/core/location.h"
 #include "contain/core/union_find.h"
 #include "contain/inside/point_in_mesh.h"
@@ -48,7 +50,6 @@
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
-#include "contain/values/segment.h"
 #include "contain/values/triangle.h"
 
 namespace contain::clip::solid {
@@ -95,6 +96,21 @@ bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::arr
   return false;
 }
 
+// The projection of a pair's test: the axis dropped (the first triangle's largest_axis), the
+// orientation of the first triangle's projection, and of the second's when known (the same
+// axis is its own largest: the signs are each triangle's, computed once per triangle).
+struct Facing {
+  int axis = 0;
+  Sign turn_t = Sign::zero;
+  std::optional<Sign> turn_u;
+};
+
+// The axis and orientation of a triangle's own projection.
+std::pair<int, Sign> own_projection(const std::array<Vec3, 3>& t) {
+  const int axis = largest_axis(t);
+  return {axis, orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis))};
+}
+
 // A cheap sufficient test, exact: in the projection along `axis`, an edge line of one
 // triangle's projection leaves the other's corners outside but for shared ends of that edge.
 // Then the projections meet at most in the hull H of those shared corners, and so do the
@@ -105,25 +121,77 @@ bool edge_line_separates(const std::array<Vec2, 3>& a, Sign turn, const std::arr
 // of the check, and are settled here by a few orient2d.
 bool apart_in_projection(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
                          const std::array<int, 3>& t_in_u, const std::array<int, 3>& u_in_t,
-                         int axis) {
+                         const Facing& facing) {
+  const int axis = facing.axis;
   const std::array<Vec2, 3> a = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
   const std::array<Vec2, 3> b = {drop(u[0], axis), drop(u[1], axis), drop(u[2], axis)};
-  const Sign turn_a = orient2d(a[0], a[1], a[2]);
-  if (turn_a != Sign::zero && edge_line_separates(a, turn_a, b, u_in_t)) return true;
-  const Sign turn_b = orient2d(b[0], b[1], b[2]);
+  if (facing.turn_t != Sign::zero && edge_line_separates(a, facing.turn_t, b, u_in_t)) return true;
+  const Sign turn_b = facing.turn_u ? *facing.turn_u : orient2d(b[0], b[1], b[2]);
   return turn_b != Sign::zero && edge_line_separates(b, turn_b, a, t_in_u);
+}
+
+// In the plane of a triangle, projected along an axis where it is not flat (one to one there).
+bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
+  return orient2d(a, b, p) == Sign::zero && std::min(a.x, b.x) <= p.x &&
+         p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = to_int(orient2d(a, b, c)), o2 = to_int(orient2d(a, b, d));
+  const int o3 = to_int(orient2d(c, d, a)), o4 = to_int(orient2d(c, d, b));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+}
+
+bool in_triangle(const std::array<Vec2, 3>& t, Vec2 p) {
+  const int o = to_int(orient2d(t[0], t[1], t[2]));
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (to_int(orient2d(t[i], t[(i + 1) % 3], p)) * o < 0) return false;
+  }
+  return true;
+}
+
+// The closed segment p q meets the closed triangle t (not of zero area), exactly: ends on
+// opposite sides of its plane, then the crossing is in t when the tetrahedra of p q with t's
+// edges have no two opposite signs; an end on the plane, or both, in a projection one to one
+// on it.
+bool segment_meets_triangle(Vec3 p, Vec3 q, const std::array<Vec3, 3>& t) {
+  const Sign sp = predicates::orient3d(t[0], t[1], t[2], p);
+  const Sign sq = predicates::orient3d(t[0], t[1], t[2], q);
+  if (sp != Sign::zero && sp == sq) return false;
+  if (sp == Sign::zero || sq == Sign::zero) {
+    int axis = 0;
+    while (axis < 2 && orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)) == Sign::zero)
+      ++axis;
+    const std::array<Vec2, 3> f = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
+    const Vec2 a = drop(p, axis), b = drop(q, axis);
+    if (sp != Sign::zero) return in_triangle(f, b);
+    if (sq != Sign::zero) return in_triangle(f, a);
+    if (in_triangle(f, a) || in_triangle(f, b)) return true;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (segments_meet(a, b, f[i], f[(i + 1) % 3])) return true;
+    }
+    return false;
+  }
+  const Sign e0 = predicates::orient3d(p, q, t[0], t[1]);
+  const Sign e1 = predicates::orient3d(p, q, t[1], t[2]);
+  const Sign e2 = predicates::orient3d(p, q, t[2], t[0]);
+  const bool positive = e0 == Sign::positive || e1 == Sign::positive || e2 == Sign::positive;
+  const bool negative = e0 == Sign::negative || e1 == Sign::negative || e2 == Sign::negative;
+  return !(positive && negative);
 }
 
 // Triangles t and u (not of zero area) meet beyond the corners they share (corner m of u is
 // corner u_in_t[m] of t, or -1) and the edge they share, exactly: the projection test first,
-// then by the shared corners (as collide::self_intersections decides, with tri_tri and
-// segment_triangle, orient3d and orient2d signs only): none shared, any common point; one
+// then by the shared corners (the decisions of collide::self_intersections, made here with
+// segment_meets_triangle: clip may not use collide, a sibling layer): none shared, an edge of
+// either meets the other; one
 // shared, the edge of either opposite it meets the other (a common point beyond the corner
 // makes a segment from it, which leaves one of the triangles through that edge or ends inside
 // both); an edge shared, both in one plane with the third corners on one side of it. Three
 // shared (the same triangle twice, either way round): they meet.
 bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
-                        const std::array<int, 3>& u_in_t) {
+                        const std::array<int, 3>& u_in_t, const Facing& facing) {
   std::array<int, 3> t_in_u = {-1, -1, -1};
   int shared = 0;
   for (std::size_t m = 0; m < 3; ++m) {
@@ -133,9 +201,18 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
     }
   }
   if (shared == 3) return true;
-  if (apart_in_projection(t, u, t_in_u, u_in_t, largest_axis(t))) return false;
-  const Triangle3 tt{t[0], t[1], t[2]}, uu{u[0], u[1], u[2]};
-  if (shared == 0) return collide::tri_tri(tt, uu);
+  if (apart_in_projection(t, u, t_in_u, u_in_t, facing)) return false;
+  if (shared == 0) {
+    // Any common point: then one lies on an edge of one of them (an extreme point of the
+    // compact convex intersection), so some edge meets the other triangle.
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (segment_meets_triangle(t[k], t[(k + 1) % 3], u) ||
+          segment_meets_triangle(u[k], u[(k + 1) % 3], t)) {
+        return true;
+      }
+    }
+    return false;
+  }
   const auto lone = [](const std::array<int, 3>& in, bool is_shared) {
     std::size_t k = 0;
     while ((in[k] >= 0) != is_shared)
@@ -144,9 +221,8 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
   };
   if (shared == 1) {
     const std::size_t pt = lone(t_in_u, true), pu = lone(u_in_t, true);
-    const Segment3 far_t{t[(pt + 1) % 3], t[(pt + 2) % 3]};
-    const Segment3 far_u{u[(pu + 1) % 3], u[(pu + 2) % 3]};
-    return collide::segment_triangle(far_t, uu) || collide::segment_triangle(far_u, tt);
+    return segment_meets_triangle(t[(pt + 1) % 3], t[(pt + 2) % 3], u) ||
+           segment_meets_triangle(u[(pu + 1) % 3], u[(pu + 2) % 3], t);
   }
   // Edge p q shared, x and y the third corners: meeting beyond it needs one plane.
   const std::size_t xt = lone(t_in_u, false), yu = lone(u_in_t, false);
@@ -163,7 +239,8 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
 
 // meet_beyond_shared on triangles t and u of the local soup (shared corners by number: the
 // soup is welded by position).
-bool pair_meets(const Soup& soup, std::size_t t, std::size_t u) {
+bool pair_meets(const Soup& soup, const std::vector<std::pair<int, Sign>>& projections,
+                std::size_t t, std::size_t u) {
   const TriangleIndices& vt = soup.triangles[t];
   const TriangleIndices& vu = soup.triangles[u];
   std::array<Vec3, 3> a{}, b{};
@@ -175,7 +252,11 @@ bool pair_meets(const Soup& soup, std::size_t t, std::size_t u) {
       if (vu[m] == vt[k]) u_in_t[m] = static_cast<int>(k);
     }
   }
-  return meet_beyond_shared(a, b, u_in_t);
+  const auto [axis, turn_t] = projections[t];
+  const Facing facing{
+      axis, turn_t,
+      projections[u].first == axis ? std::optional(projections[u].second) : std::nullopt};
+  return meet_beyond_shared(a, b, u_in_t, facing);
 }
 
 Status failure(const std::string& what) {
@@ -414,7 +495,8 @@ bool written_pair_meets(const Triangle3& a, const Triangle3& b) {
       if (u[m] == t[k]) u_in_t[m] = static_cast<int>(k);
     }
   }
-  return meet_beyond_shared(t, u, u_in_t);
+  const auto [axis, turn_t] = own_projection(t);
+  return meet_beyond_shared(t, u, u_in_t, Facing{axis, turn_t, std::nullopt});
 }
 
 bool zero_area(Vec3 a, Vec3 b, Vec3 c) {
@@ -478,6 +560,14 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
       ++r;
     tested[i] = r < rounded.size() && rounded[r] == chosen[i];
   }
+  // Each tested triangle's own projection, once (not per pair).
+  std::vector<std::pair<int, Sign>> projections(chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const TriangleIndices& v = soup.triangles[i];
+    projections[i] = own_projection({soup.vertices[static_cast<std::size_t>(v[0])],
+                                     soup.vertices[static_cast<std::size_t>(v[1])],
+                                     soup.vertices[static_cast<std::size_t>(v[2])]});
+  }
   std::vector<bool> bad(chosen.size(), false);
   const char* what = nullptr;
   (void)bvh::traverse_self(
@@ -488,7 +578,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
         if ((!tested[t] && !tested[u]) || !soup.boxes[t].overlaps(soup.boxes[u])) {
           return bvh::Visit::proceed;
         }
-        if (!pair_meets(soup, t, u)) return bvh::Visit::proceed;
+        if (!pair_meets(soup, projections, t, u)) return bvh::Visit::proceed;
         what = "two triangles cross or overlap";
         bad[t] = true;
         bad[u] = true;
