@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Do two closed triangles in space share a point? The exact narrow-phase test of mesh collision.
+/// Do two closed triangles in space share a point, and do two of one mesh meet beyond what they
+/// share? The exact tests of collide (tri_tri, self_intersections) and of clip's mesh check.
 
 #include <array>
 
