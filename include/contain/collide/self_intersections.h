@@ -53,17 +53,17 @@ struct SelfIntersections {
 /// - one shared corner P (a = P a1 a2, b = P b1 b2): a and b meet beyond P iff the edge a1 a2
 ///   meets b or the edge b1 b2 meets a (a triangle crossing its neighbour's interior, a fold
 ///   onto the neighbour's plane);
-/// - a shared edge P Q (a = P Q a2, b = P Q b2): iff a2 lies in b, b2 lies in a, Q a2 meets
-///   P b2 or P a2 meets Q b2: this happens only when both lie in one plane on the same side of
-///   P Q (a folded, overlapping pair); across the edge, or at any angle, they meet only there;
+/// - a shared edge P Q (a = P Q a2, b = P Q b2): iff both lie in one plane (orient3d) with a2
+///   and b2 on the same side of P Q (a folded, overlapping pair; orient2d in a projection one
+///   to one on that plane); across the edge, or at any angle, they meet only there;
 /// - all three corners shared (a duplicated triangle): not counted here, `validate_mesh`
 ///   reports duplicates.
 /// Why these are exact: a ∩ b is compact and convex; if it holds a point besides the shared
 /// corners, it has an extreme point besides them, and an extreme point of a ∩ b lies on an edge
 /// of a or of b. An edge through a shared corner P that goes on into the other triangle either
 /// ends inside it (its far end is in the other triangle, so the far edge meets it) or leaves it
-/// through the other's edge opposite P. Each test is `segment_triangle` (a segment as
-/// a flat triangle, a point as a zero-length segment): orient3d and orient2d signs only.
+/// through the other's edge opposite P. The decision is predicates::triangles_meet_beyond_shared
+/// (shared with clip's check of a written mesh): orient3d and orient2d signs only.
 /// Degenerate triangles (collinear or coincident corners, decided exactly) are skipped: they
 /// bound no area, `validate_mesh` counts them, and a shared corner in the middle of one would
 /// make every neighbour "meet it beyond the corner".

@@ -1,35 +1,25 @@
 #pragma once
 /// \file
-/// Do two closed triangles in space share a point? The exact narrow-phase test of mesh collision.
+/// Do two closed triangles in space share a point? The exact narrow-phase test of mesh collision,
+/// under collide's names: the decisions live in predicates (`predicates/triangles_meet.h`), one
+/// implementation shared with clip's check of a written mesh.
 
+#include "contain/predicates/triangles_meet.h"
 #include "contain/values/segment.h"
 #include "contain/values/triangle.h"
 
 namespace contain::collide {
 
-/// True when the closed triangles `a` and `b` share at least one point: crossing, touching at a
-/// vertex or along an edge, a vertex on the other's face, and coplanar overlap or touch all
-/// count. Exact on the given doubles (checked against a GMP oracle): every decision is a
-/// predicates::orient3d or orient2d sign.
-///
-/// Outline (Guigue and Devillers, "Fast and robust triangle-triangle overlap test using
-/// orientation predicates", JGT 8(1), 2003): the signs of each triangle's vertices against the
-/// other's plane reject most pairs (6 orient3d); otherwise both triangles meet the line L of the
-/// two planes in an interval, and after a cyclic relabelling that leaves one vertex of each
-/// triangle alone on its side, the intervals overlap iff two more orient3d signs allow it.
-/// Special cases are decided exactly: coplanar triangles by the 2D test (`tri_tri_2d.h`) in a
-/// coordinate projection along which their projected area is exactly non-zero (an affine
-/// bijection of their plane); a degenerate triangle (collinear or coincident vertices) as the
-/// segment or point it spans (segment against triangle: the section's edge-face test with
-/// orient3d; segment against segment; point on a triangle or segment).
-/// O(1): about 6-8 orient3d calls.
-[[nodiscard]] bool tri_tri(const Triangle3& a, const Triangle3& b);
+/// True when the closed triangles `a` and `b` share at least one point (crossing, touching and
+/// coplanar overlap all count), exactly: predicates::triangles_meet. O(1).
+[[nodiscard]] inline bool tri_tri(const Triangle3& a, const Triangle3& b) {
+  return predicates::triangles_meet(a, b);
+}
 
-/// True when the closed segment `s` and the closed triangle `t` share a point (the section's
-/// edge-face test made exact: endpoints on opposite sides or on the plane by orient3d, then the
-/// crossing point in the face by the signs of the three tetrahedra (s, edge), never by computing
-/// the point). Coplanar: the 2D test in an exact projection. Degenerate `t` or zero-length `s`
-/// included. O(1).
-[[nodiscard]] bool segment_triangle(const Segment3& s, const Triangle3& t);
+/// True when the closed segment `s` and the closed triangle `t` share a point (degenerate `t`
+/// or zero-length `s` included), exactly: predicates::segment_meets_triangle. O(1).
+[[nodiscard]] inline bool segment_triangle(const Segment3& s, const Triangle3& t) {
+  return predicates::segment_meets_triangle(s, t);
+}
 
 }  // namespace contain::collide

@@ -3,9 +3,9 @@
 // the corners they share, with orient2d and orient3d signs only (meet_beyond_shared): first in
 // one projection, where an edge line leaving the other triangle outside settles most pairs (a
 // merged face's fan, pieces of one plane, neighbours across an edge) with a few orient2d, then
-// as collide::self_intersections decides (segment against triangle, orient3d and orient2d
-// signs). It asks only whether two triangles meet, never where:
-// no crossing point is made (the pair stage's enclosed crossings were two thirds of the check).
+// as collide::self_intersections decides (predicates::triangles_meet_beyond_shared). It asks only
+// whether two triangles meet, never where: no crossing point is made (the pair stage's enclosed
+// crossings were two thirds of the check).
 //
 // Why the pairs of triangles with three kept corners need no test. The engine's exact result
 // is conforming: each input triangle is refined by a constrained triangulation holding every
@@ -48,7 +48,7 @@
 #include "contain/inside/point_in_mesh.h"
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/orient2d.h"
-#include "contain/predicates/orient3d.h"
+#include "contain/predicates/triangles_meet.h"
 #include "contain/values/box.h"
 #include "contain/values/triangle.h"
 
@@ -130,66 +130,10 @@ bool apart_in_projection(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>
   return turn_b != Sign::zero && edge_line_separates(b, turn_b, a, t_in_u);
 }
 
-// In the plane of a triangle, projected along an axis where it is not flat (one to one there).
-bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
-  return orient2d(a, b, p) == Sign::zero && std::min(a.x, b.x) <= p.x &&
-         p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
-}
-
-bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = to_int(orient2d(a, b, c)), o2 = to_int(orient2d(a, b, d));
-  const int o3 = to_int(orient2d(c, d, a)), o4 = to_int(orient2d(c, d, b));
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
-}
-
-bool in_triangle(const std::array<Vec2, 3>& t, Vec2 p) {
-  const int o = to_int(orient2d(t[0], t[1], t[2]));
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (to_int(orient2d(t[i], t[(i + 1) % 3], p)) * o < 0) return false;
-  }
-  return true;
-}
-
-// The closed segment p q meets the closed triangle t (not of zero area), exactly: ends on
-// opposite sides of its plane, then the crossing is in t when the tetrahedra of p q with t's
-// edges have no two opposite signs; an end on the plane, or both, in a projection one to one
-// on it.
-bool segment_meets_triangle(Vec3 p, Vec3 q, const std::array<Vec3, 3>& t) {
-  const Sign sp = predicates::orient3d(t[0], t[1], t[2], p);
-  const Sign sq = predicates::orient3d(t[0], t[1], t[2], q);
-  if (sp != Sign::zero && sp == sq) return false;
-  if (sp == Sign::zero || sq == Sign::zero) {
-    int axis = 0;
-    while (axis < 2 && orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)) == Sign::zero)
-      ++axis;
-    const std::array<Vec2, 3> f = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
-    const Vec2 a = drop(p, axis), b = drop(q, axis);
-    if (sp != Sign::zero) return in_triangle(f, b);
-    if (sq != Sign::zero) return in_triangle(f, a);
-    if (in_triangle(f, a) || in_triangle(f, b)) return true;
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (segments_meet(a, b, f[i], f[(i + 1) % 3])) return true;
-    }
-    return false;
-  }
-  const Sign e0 = predicates::orient3d(p, q, t[0], t[1]);
-  const Sign e1 = predicates::orient3d(p, q, t[1], t[2]);
-  const Sign e2 = predicates::orient3d(p, q, t[2], t[0]);
-  const bool positive = e0 == Sign::positive || e1 == Sign::positive || e2 == Sign::positive;
-  const bool negative = e0 == Sign::negative || e1 == Sign::negative || e2 == Sign::negative;
-  return !(positive && negative);
-}
-
 // Triangles t and u (not of zero area) meet beyond the corners they share (corner m of u is
 // corner u_in_t[m] of t, or -1) and the edge they share, exactly: the projection test first,
-// then by the shared corners (the decisions of collide::self_intersections, made here with
-// segment_meets_triangle: clip may not use collide, a sibling layer): none shared, an edge of
-// either meets the other; one
-// shared, the edge of either opposite it meets the other (a common point beyond the corner
-// makes a segment from it, which leaves one of the triangles through that edge or ends inside
-// both); an edge shared, both in one plane with the third corners on one side of it. Three
-// shared (the same triangle twice, either way round): they meet.
+// then predicates::triangles_meet_beyond_shared, the decision collide::self_intersections
+// makes too. Three shared (the same triangle twice, either way round): they meet.
 bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u,
                         const std::array<int, 3>& u_in_t, const Facing& facing) {
   std::array<int, 3> t_in_u = {-1, -1, -1};
@@ -202,39 +146,7 @@ bool meet_beyond_shared(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>&
   }
   if (shared == 3) return true;
   if (apart_in_projection(t, u, t_in_u, u_in_t, facing)) return false;
-  if (shared == 0) {
-    // Any common point: then one lies on an edge of one of them (an extreme point of the
-    // compact convex intersection), so some edge meets the other triangle.
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (segment_meets_triangle(t[k], t[(k + 1) % 3], u) ||
-          segment_meets_triangle(u[k], u[(k + 1) % 3], t)) {
-        return true;
-      }
-    }
-    return false;
-  }
-  const auto lone = [](const std::array<int, 3>& in, bool is_shared) {
-    std::size_t k = 0;
-    while ((in[k] >= 0) != is_shared)
-      ++k;
-    return k;
-  };
-  if (shared == 1) {
-    const std::size_t pt = lone(t_in_u, true), pu = lone(u_in_t, true);
-    return segment_meets_triangle(t[(pt + 1) % 3], t[(pt + 2) % 3], u) ||
-           segment_meets_triangle(u[(pu + 1) % 3], u[(pu + 2) % 3], t);
-  }
-  // Edge p q shared, x and y the third corners: meeting beyond it needs one plane.
-  const std::size_t xt = lone(t_in_u, false), yu = lone(u_in_t, false);
-  const Vec3 p = t[(xt + 1) % 3], q = t[(xt + 2) % 3], x = t[xt], y = u[yu];
-  if (predicates::orient3d(p, q, x, y) != Sign::zero) return false;
-  // In one plane: x and y on one side of p q in a projection that is one to one on it (x is off
-  // the line p q in some projection, t having area; y is then off it too, u having area).
-  for (int axis = 0; axis < 3; ++axis) {
-    const Sign sx = orient2d(drop(p, axis), drop(q, axis), drop(x, axis));
-    if (sx != Sign::zero) return orient2d(drop(p, axis), drop(q, axis), drop(y, axis)) == sx;
-  }
-  return true;  // unreachable: t has area
+  return predicates::triangles_meet_beyond_shared({t[0], t[1], t[2]}, {u[0], u[1], u[2]}, u_in_t);
 }
 
 // meet_beyond_shared on triangles t and u of the local soup (shared corners by number: the

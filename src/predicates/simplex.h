@@ -8,7 +8,7 @@
 
 #include "contain/values/vec.h"
 
-namespace contain::collide::detail {
+namespace contain::predicates::detail {
 
 // Lexicographic order on coordinates: exact. The extremes of collinear points in this order are
 // the endpoints of the segment they span (the order is monotone along any line).
@@ -37,4 +37,4 @@ template <class V>
   return {1, {lo, hi, hi}};
 }
 
-}  // namespace contain::collide::detail
+}  // namespace contain::predicates::detail

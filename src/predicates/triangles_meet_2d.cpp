@@ -1,14 +1,13 @@
-#include "contain/collide/tri_tri_2d.h"
+#include "contain/predicates/triangles_meet_2d.h"
 
 #include <algorithm>
 
-#include "collide/simplex.h"
 #include "contain/predicates/orient2d.h"
+#include "predicates/simplex.h"
 
-namespace contain::collide {
+namespace contain::predicates {
 namespace {
 
-using predicates::orient2d;
 using Simplex2 = detail::Simplex<Vec2>;
 
 bool point_on_segment(Vec2 p, Vec2 a, Vec2 b) {
@@ -52,7 +51,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
     case 7:  // triangle, segment
       if (point_in_ccw(t.p[0], s.p) || point_in_ccw(t.p[1], s.p)) return true;
       for (int e = 0; e < 3; ++e) {
-        if (segment_segment(
+        if (segments_meet(
                 {s.p[static_cast<std::size_t>(e)], s.p[static_cast<std::size_t>((e + 1) % 3)]},
                 {t.p[0], t.p[1]})) {
           return true;
@@ -62,7 +61,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
     case 6:  // triangle, point
       return point_in_ccw(t.p[0], s.p);
     case 4:  // segment, segment
-      return segment_segment({s.p[0], s.p[1]}, {t.p[0], t.p[1]});
+      return segments_meet({s.p[0], s.p[1]}, {t.p[0], t.p[1]});
     case 3:  // segment, point
       return point_on_segment(t.p[0], s.p[0], s.p[1]);
     default:  // point, point
@@ -72,7 +71,7 @@ bool simplices_intersect(const Simplex2& s, const Simplex2& t) {
 
 }  // namespace
 
-bool segment_segment(const Segment2& a, const Segment2& b) {
+bool segments_meet(const Segment2& a, const Segment2& b) {
   if (a.a == a.b) return point_on_segment(a.a, b.a, b.b);
   if (b.a == b.b) return point_on_segment(b.a, a.a, a.b);
   const Sign o1 = orient2d(a.a, a.b, b.a), o2 = orient2d(a.a, a.b, b.b);
@@ -91,8 +90,8 @@ bool segment_segment(const Segment2& a, const Segment2& b) {
   return true;
 }
 
-bool tri_tri(const Triangle2& a, const Triangle2& b) {
+bool triangles_meet(const Triangle2& a, const Triangle2& b) {
   return simplices_intersect(simplex_of(a), simplex_of(b));
 }
 
-}  // namespace contain::collide
+}  // namespace contain::predicates

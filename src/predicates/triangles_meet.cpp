@@ -1,21 +1,19 @@
-#include "contain/collide/tri_tri.h"
+#include "contain/predicates/triangles_meet.h"
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <utility>
 
-#include "collide/simplex.h"
-#include "contain/collide/tri_tri_2d.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/orient3d_set.h"
+#include "contain/predicates/triangles_meet_2d.h"
+#include "predicates/simplex.h"
 
-namespace contain::collide {
+namespace contain::predicates {
 namespace {
 
-using predicates::orient2d;
-using predicates::orient3d;
 using Simplex3 = detail::Simplex<Vec3>;
 
 // The projection that drops coordinate k (0: x, 1: y, 2: z). On a plane whose normal has a
@@ -62,30 +60,40 @@ bool segments_intersect3(Vec3 s0, Vec3 s1, Vec3 t0, Vec3 t1) {
     for (k = 2; k > 0 && drop(s0, k) == drop(s1, k); --k) {
     }
   }
-  return segment_segment({drop(s0, k), drop(s1, k)}, {drop(t0, k), drop(t1, k)});
+  return segments_meet({drop(s0, k), drop(s1, k)}, {drop(t0, k), drop(t1, k)});
 }
 
-// Segment (s0, s1) against a proper triangle whose projection along `axis` is proper: the
-// section's edge-face test. Endpoints on opposite sides of the face plane (or on it), then the
-// crossing point is in the closed face iff the tetrahedra (s0, s1, edge) have no two opposite
-// signs: the line through s0 and s1 passes on the inner side of (or through) every edge.
-bool segment_proper_triangle(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis) {
-  const Sign o0 = orient3d(a, b, c, s0), o1 = orient3d(a, b, c, s1);
-  if (o0 != Sign::zero && o0 == o1) return false;
-  if (o0 == Sign::zero && o1 == Sign::zero) {
-    const Vec2 p = drop(s0, axis), q = drop(s1, axis);
-    return tri_tri(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{p, q, q});
-  }
+// The segment (s0, s1) in the plane of the triangle (a, b, c), whose projection along `axis` is
+// proper: the 2D test there (the projection is one to one on that plane).
+bool segment_in_plane_meets(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis) {
+  const Vec2 p = drop(s0, axis), q = drop(s1, axis);
+  return triangles_meet(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{p, q, q});
+}
+
+// The segment (s0, s1) with its ends on opposite sides of the plane of (a, b, c), or one end on
+// it: the point where it meets the plane is in the closed face iff the tetrahedra (s0, s1, edge)
+// have no two opposite signs (the line through s0 and s1 passes on the inner side of, or
+// through, every edge).
+bool crossing_in_face(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c) {
   const Sign e0 = orient3d(s0, s1, a, b), e1 = orient3d(s0, s1, b, c), e2 = orient3d(s0, s1, c, a);
   const bool any_pos = e0 == Sign::positive || e1 == Sign::positive || e2 == Sign::positive;
   const bool any_neg = e0 == Sign::negative || e1 == Sign::negative || e2 == Sign::negative;
   return !(any_pos && any_neg);
 }
 
+// Segment (s0, s1) against a proper triangle whose projection along `axis` is proper: the
+// section's edge-face test.
+bool segment_proper_triangle(Vec3 s0, Vec3 s1, Vec3 a, Vec3 b, Vec3 c, int axis) {
+  const Sign o0 = orient3d(a, b, c, s0), o1 = orient3d(a, b, c, s1);
+  if (o0 != Sign::zero && o0 == o1) return false;
+  if (o0 == Sign::zero && o1 == Sign::zero) return segment_in_plane_meets(s0, s1, a, b, c, axis);
+  return crossing_in_face(s0, s1, a, b, c);
+}
+
 bool point_in_proper_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c, int axis) {
   if (orient3d(a, b, c, p) != Sign::zero) return false;
   const Vec2 q = drop(p, axis);
-  return tri_tri(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{q, q, q});
+  return triangles_meet(Triangle2{drop(a, axis), drop(b, axis), drop(c, axis)}, Triangle2{q, q, q});
 }
 
 bool simplices_intersect(const Simplex3& s, int s_axis, const Simplex3& t, int t_axis) {
@@ -93,8 +101,8 @@ bool simplices_intersect(const Simplex3& s, int s_axis, const Simplex3& t, int t
   switch (s.dim * 3 + t.dim) {
     case 8: {  // two proper triangles, known to be coplanar here
       const int k = s_axis;
-      return tri_tri(Triangle2{drop(s.p[0], k), drop(s.p[1], k), drop(s.p[2], k)},
-                     Triangle2{drop(t.p[0], k), drop(t.p[1], k), drop(t.p[2], k)});
+      return triangles_meet(Triangle2{drop(s.p[0], k), drop(s.p[1], k), drop(s.p[2], k)},
+                            Triangle2{drop(t.p[0], k), drop(t.p[1], k), drop(t.p[2], k)});
     }
     case 7:
       return segment_proper_triangle(t.p[0], t.p[1], s.p[0], s.p[1], s.p[2], s_axis);
@@ -190,7 +198,7 @@ constexpr std::array<SignPattern, 27> kPatterns = make_patterns();
 
 }  // namespace
 
-bool tri_tri(const Triangle3& a, const Triangle3& b) {
+bool triangles_meet(const Triangle3& a, const Triangle3& b) {
   // The six vertices, T1 as 0, 1, 2 and T2 as 3, 4, 5, share one filter bound; each plane's
   // normal is formed once for its three queries.
   const predicates::Orient3dSet<6> set({a.a, a.b, a.c, b.a, b.b, b.c});
@@ -231,8 +239,66 @@ bool tri_tri(const Triangle3& a, const Triangle3& b) {
   return (i_side != Sign::positive) & (j_side != Sign::positive);
 }
 
-bool segment_triangle(const Segment3& s, const Triangle3& t) {
-  return tri_tri(Triangle3{s.a, s.b, s.b}, t);
+bool segment_meets_triangle(const Segment3& s, const Triangle3& t) {
+  const Sign o0 = orient3d(t.a, t.b, t.c, s.a), o1 = orient3d(t.a, t.b, t.c, s.b);
+  if (o0 != Sign::zero && o0 == o1) return false;
+  if (o0 != Sign::zero || o1 != Sign::zero) return crossing_in_face(s.a, s.b, t.a, t.b, t.c);
+  // In t's plane, or t degenerate (then every orient3d against it is zero).
+  const int axis = proper_axis(t.a, t.b, t.c);
+  if (axis < 0) return special_case(Triangle3{s.a, s.b, s.b}, t);
+  return segment_in_plane_meets(s.a, s.b, t.a, t.b, t.c, axis);
 }
 
-}  // namespace contain::collide
+std::array<int, 3> shared_corners(const Triangle3& a, const Triangle3& b) {
+  const Vec3 ta[3] = {a.a, a.b, a.c}, tb[3] = {b.a, b.b, b.c};
+  std::array<int, 3> b_in_a{-1, -1, -1};
+  for (std::size_t m = 0; m < 3; ++m) {
+    for (int k = 0; k < 3; ++k) {
+      if (tb[m] == ta[k]) b_in_a[m] = k;
+    }
+  }
+  return b_in_a;
+}
+
+bool triangles_meet_beyond_shared(const Triangle3& a, const Triangle3& b,
+                                  const std::array<int, 3>& b_in_a) {
+  std::array<int, 3> a_in_b{-1, -1, -1};
+  int shared = 0;
+  for (std::size_t m = 0; m < 3; ++m) {
+    if (b_in_a[m] >= 0) {
+      a_in_b[static_cast<std::size_t>(b_in_a[m])] = static_cast<int>(m);
+      ++shared;
+    }
+  }
+  if (shared == 0) return triangles_meet(a, b);
+  if (shared == 3) return false;
+  const Vec3 ta[3] = {a.a, a.b, a.c}, tb[3] = {b.a, b.b, b.c};
+  // The first corner of `in` that is shared (is_shared) or not.
+  const auto first = [](const std::array<int, 3>& in, bool is_shared) {
+    std::size_t k = 0;
+    while ((in[k] >= 0) != is_shared)
+      ++k;
+    return k;
+  };
+  if (shared == 1) {
+    const std::size_t pa = first(a_in_b, true), pb = first(b_in_a, true);
+    return segment_meets_triangle({ta[(pa + 1) % 3], ta[(pa + 2) % 3]}, b) ||
+           segment_meets_triangle({tb[(pb + 1) % 3], tb[(pb + 2) % 3]}, a);
+  }
+  // Edge p q shared, x and y the third corners. Not coplanar (the usual neighbours): the planes
+  // meet in the line p q, which holds a and b's common points, and each triangle meets that line
+  // in the edge p q only. One orient3d.
+  const std::size_t xa = first(a_in_b, false), yb = first(b_in_a, false);
+  const Vec3 p = ta[(xa + 1) % 3], q = ta[(xa + 2) % 3], x = ta[xa], y = tb[yb];
+  if (orient3d(p, q, x, y) != Sign::zero) return false;
+  // In one plane: they meet beyond p q iff x and y are on one side of it, asked in a projection
+  // in which x is off the line p q (one exists, a having area; it is one to one on the plane,
+  // so y, off the line too as b has area, keeps its side).
+  for (int k = 2; k >= 0; --k) {
+    const Sign sx = orient2d(drop(p, k), drop(q, k), drop(x, k));
+    if (sx != Sign::zero) return orient2d(drop(p, k), drop(q, k), drop(y, k)) == sx;
+  }
+  return false;  // unreachable: a has area
+}
+
+}  // namespace contain::predicates
