@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 success, 2 usage error, 3 bad input (the message names the file "
       "and line).\nRun 'contain VERB --help' for a verb's options and examples.");
-  std::vector<Verb> verbs = all_verbs(app);
+  std::vector<Verb> verbs = verbs_for(app, argc, argv);
   bool show_timings = false;
   for (const Verb& verb : verbs) {
     if (verb.app->get_name() != "demo") add_timings_option(*verb.app, show_timings);

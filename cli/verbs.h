@@ -19,4 +19,7 @@ Verb add_index(CLI::App& app);
 /// Every verb, in the order `contain --help` lists them.
 std::vector<Verb> all_verbs(CLI::App& app);
 
+/// The verbs that parsing `argv` can select: the one verb it names first, or all of them.
+std::vector<Verb> verbs_for(CLI::App& app, int argc, char** argv);
+
 }  // namespace contain::cli

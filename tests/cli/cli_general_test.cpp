@@ -54,5 +54,16 @@ TEST(CliGeneral, MissingInputFileIsBadInputWithExitThreeNamingTheFile) {
   EXPECT_NE(run.err.find("/nonexistent/where.off"), std::string::npos);
 }
 
+// `contain` builds only the verb named first (cli/verbs.cpp's table of names): each name must
+// build its own verb, whose help is then the one printed.
+TEST(CliGeneral, EachVerbNamedFirstPrintsItsOwnHelp) {
+  for (const std::string verb :
+       {"inside", "bound", "clip", "collide", "distance", "slice", "index", "demo"}) {
+    const CliRun r = run_contain({verb, "--help"});
+    EXPECT_EQ(r.exit_code, 0) << verb;
+    EXPECT_TRUE(has(r.out, "Usage: contain " + verb + " ")) << verb << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace contain::test
