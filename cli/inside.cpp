@@ -80,24 +80,9 @@ int run_polygon(const InsideOptions& o) {
   auto region = read_region_warned(o.polygon);
   if (!region) return report(region.error());
   enter_phase(Phase::prepare);
-  // Few points: one cell, no grid (the index's cost model; the answers are the same).
-  // Many points in a small region (under 2048 edges: a grid the default's least cells bound): a
-  // grid of 16 times those cells (about a millisecond for a 100-vertex star) leaves fewer points
-  // in cells that edges cross, so more are answered from their first digits (10^6 points in a
-  // 100-vertex star: 15% less CPU; 2^18 cells cost more to build than they save). Larger
-  // regions keep their grid: a 10k-vertex star's long edges made the finer one 10% slower.
-  const std::size_t queries = most_points(o.points, 4);
-  std::size_t edges = 0;
-  for (const Polygon& polygon : region->polygons) {
-    for (const Ring& ring : polygon.rings)
-      edges += ring.size();
-  }
-  const inside::PolygonIndexOptions defaults;
-  const inside::PolygonIndex index(
-      *region,
-      {.fill = o.fill,
-       .min_cells = queries > 100000 && edges < 2048 ? std::size_t{1} << 16 : defaults.min_cells,
-       .queries = queries});
+  // Few points: one cell, no grid; many in a small region: a finer grid (the index's cost
+  // model; the answers are the same).
+  const inside::PolygonIndex index(*region, {.fill = o.fill, .queries = most_points(o.points, 4)});
   enter_phase(Phase::read);
   // Points as boxes from their first digits, where most cells have one answer (a point there
   // needs no more digits; the others are read twice).

@@ -243,8 +243,17 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   const std::vector<Edge> edges = edges_of(rings, bounds_);
   stats_.edges = edges.size();
   if (edges.empty()) return;
+  // Many queries in a small region (under 2048 edges): a grid of at least 2^16 cells (about a
+  // millisecond for a 100-vertex star) leaves fewer points in cells that edges cross, which the
+  // readers of point files answer from a number's first digits (10^6 points in a 100-vertex
+  // star: 15% less CPU for `contain inside`; 2^18 cells cost more to build than they save).
+  // Larger regions keep their grid: a 10k-vertex star's long edges made the finer one slower.
+  PolygonIndexOptions sized = options;
+  if (options.queries > 100000 && edges.size() < 2048) {
+    sized.min_cells = std::max(options.min_cells, std::size_t{1} << 16);
+  }
   // Few queries: one cell, which every edge touches (no grid lines inside it to settle).
-  GridSize size = grid_size(edges, bounds_, options);
+  GridSize size = grid_size(edges, bounds_, sized);
   if (few_queries(options.queries, edges.size(), size.pairs)) size = {};
   const int columns = size.columns, rows = size.rows;
   x_ = GridAxis(bounds_.min.x, bounds_.max.x, columns);
