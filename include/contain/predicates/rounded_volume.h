@@ -15,10 +15,12 @@ namespace contain::predicates {
 /// even): the volume a closed mesh encloses, positive when it is oriented outward (any closed
 /// mesh: the sum does not depend on the origin then). Precondition: finite coordinates and
 /// indices into `vertices`.
-/// Method: each triangle's determinant split into doubles whose sum is exact (Two-Product), all
-/// accumulated by Two-Sum with a running bound of the low part's rounding, the result certified
+/// Method: each product of the determinants split by Two-Product into a leading double, summed
+/// exactly by Two-Sum, and small parts of order u^2 summed with a running bound of what their
+/// roundings lose; the result certified
 /// against the rounding boundaries in long double; where that cannot decide (a value within
-/// about 2^-100 of a boundary, or coordinates beyond 2^+-300) the exact big-number sum decides.
+/// about 2^-62 of a boundary, relative: exact ties among them, or coordinates beyond 2^+-300)
+/// the exact big-number sum decides.
 /// O(triangles).
 [[nodiscard]] double rounded_signed_volume(std::span<const Vec3> vertices,
                                            std::span<const std::array<std::int32_t, 3>> triangles);
