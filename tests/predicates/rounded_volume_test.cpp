@@ -142,7 +142,7 @@ TEST(RoundedSignedVolume, SumsAHairFromHalfwayRoundToTheNearerSide) {
   }
 }
 
-TEST(RoundedSignedVolume, HugeAndTinyCoordinatesTakeTheExactStage) {
+TEST(RoundedSignedVolume, HugeAndTinyCoordinatesBeyondTheFastStagesRangeGiveTheNearestDouble) {
   std::mt19937_64 rng(28);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (const int e : {-700, -400, -301, 301, 330}) {
