@@ -133,6 +133,15 @@ TraversalStats traverse_self(const Bvh& tree, Enter&& enter, VisitPair&& visit);
 template <class Enter, class VisitLeaves>
 TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit);
 
+/// `traverse_self_leaves` that asks `within(std::int32_t node) -> bool` once for each inner node,
+/// before the pairs within it: false skips all of them (its children's pairs with each other
+/// too), as though the node's subtree held no pair; the remaining pairs come in the same order.
+/// For callers that can prove a subtree's items never meet each other (a patch of a surface
+/// whose projection is an embedding) at less cost than walking its pairs.
+template <class Enter, class VisitLeaves, class Within>
+TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit,
+                                    Within&& within);
+
 /// Surface area of a closed box (0 for an empty or flat one), the SAH's measure.
 [[nodiscard]] constexpr double surface_area(const Box3& box) {
   if (box.empty()) return 0.0;
@@ -238,6 +247,12 @@ TraversalStats traverse_pairs(const Bvh& a, const Bvh& b, Enter&& enter, VisitPa
 
 template <class Enter, class VisitLeaves>
 TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit) {
+  return traverse_self_leaves(tree, enter, visit, [](std::int32_t) { return true; });
+}
+
+template <class Enter, class VisitLeaves, class Within>
+TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&& visit,
+                                    Within&& within) {
   TraversalStats stats;
   if (tree.empty()) return stats;
   const std::span<const std::int32_t> items = tree.items();
@@ -255,13 +270,13 @@ TraversalStats traverse_self_leaves(const Bvh& tree, Enter&& enter, VisitLeaves&
     const Node& p = nodes[static_cast<std::size_t>(x)];
     ++stats.nodes;
     if (x == y) {
-      if (!p.is_leaf()) {
+      if (!p.is_leaf() && within(x)) {
         stack.emplace_back(p.first, p.first);
         stack.emplace_back(x + 1, p.first);
         y = ++x;
         continue;
       }
-      if (visit(leaf(p), leaf(p)) == Visit::stop) {
+      if (p.is_leaf() && visit(leaf(p), leaf(p)) == Visit::stop) {
         stats.stopped = true;
         return stats;
       }

@@ -11,7 +11,8 @@
 // gets the other's edges as constraints (the refinement keeps their pieces inside it) and the
 // other as a coplanar partner (which of them writes the common part is decided at output).
 // An intersection made only of corners the two share (neighbours in a mesh) is no constraint.
-// Pairs that share a vertex proven by star_proof.h (most neighbours) are skipped untested.
+// Pairs that share a vertex proven by star_proof.h (most neighbours) are skipped untested, and so
+// are the pairs within a subtree of the hierarchy proven an embedded patch by patch_proof.h.
 
 #include <algorithm>
 #include <array>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "clip/solid/patch_proof.h"
 #include "clip/solid/star_proof.h"
 #include "contain/bvh/bvh.h"
 #include "contain/predicates/orient2d.h"
@@ -329,7 +331,11 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
     const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
     if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
   };
-  // The pairs in the order of traverse_self (the order numbers the crossing points).
+  // The pairs within a subtree proven an embedded patch of proven vertices are skipped
+  // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
+  // points).
+  std::optional<PatchProofs> patches;
+  if (neighbours == Neighbours::proven) patches.emplace(soup, corners);
   (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
@@ -350,7 +356,8 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
           pair(a[k / 4], b[k % 4]);
         }
         return bvh::Visit::proceed;
-      });
+      },
+      [&](std::int32_t node) { return !patches || !patches->settled(node); });
   return work;
 }
 
