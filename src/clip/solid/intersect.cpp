@@ -324,9 +324,13 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.
-  const std::vector<std::uint8_t> corners = neighbours == Neighbours::proven
-                                                ? proven_corners(soup)
-                                                : std::vector<std::uint8_t>(soup.triangles.size());
+  ProvenStars stars;
+  if (neighbours == Neighbours::proven) {
+    stars = proven_stars(soup);
+  } else {
+    stars.corners.assign(soup.triangles.size(), 0);
+  }
+  const std::vector<std::uint8_t>& corners = stars.corners;
   const auto pair = [&](std::int32_t t, std::int32_t u) {
     const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
     if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
@@ -335,7 +339,7 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
   // points).
   std::optional<PatchProofs> patches;
-  if (neighbours == Neighbours::proven) patches.emplace(soup, corners);
+  if (neighbours == Neighbours::proven) patches.emplace(soup, stars.corners, stars.across);
   (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {

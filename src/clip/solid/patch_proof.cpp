@@ -47,10 +47,9 @@ struct DirectedEdge {
   std::int32_t from, to;
 };
 
-// The boundary chain of the patch as one cycle of distinct vertices, in order; empty when it is
-// not one (no boundary, an edge left over twice, two cycles, a vertex twice on one).
-std::vector<DirectedEdge> boundary_cycle(const Soup& soup, std::span<const std::int32_t> patch) {
-  // Each half-edge under its undirected key, +1 when it runs from the lower vertex number.
+// The boundary chain of the patch by a sort of its half-edges (each under its undirected key,
+// +1 when it runs from the lower vertex number); empty when an edge is left over twice.
+std::vector<DirectedEdge> sorted_boundary(const Soup& soup, std::span<const std::int32_t> patch) {
   std::vector<std::pair<std::uint64_t, int>> halves;
   halves.reserve(3 * patch.size());
   for (const std::int32_t t : patch) {
@@ -74,28 +73,7 @@ std::vector<DirectedEdge> boundary_cycle(const Soup& soup, std::span<const std::
     if (net > 1 || net < -1) return {};
     i = j;
   }
-  if (boundary.size() < 3) return {};
-  std::sort(boundary.begin(), boundary.end(),
-            [](DirectedEdge e, DirectedEdge f) { return e.from < f.from; });
-  for (std::size_t i = 1; i < boundary.size(); ++i) {
-    if (boundary[i].from == boundary[i - 1].from) return {};
-  }
-  // From edge 0 along each edge's successor (the one edge leaving its end): back at edge 0 after
-  // all of them exactly when they form one cycle (a walk that repeats an edge first never
-  // returns to edge 0, each edge having one predecessor on the walk).
-  std::vector<DirectedEdge> cycle;
-  cycle.reserve(boundary.size());
-  std::size_t current = 0;
-  for (std::size_t step = 0; step < boundary.size(); ++step) {
-    cycle.push_back(boundary[current]);
-    const auto next =
-        std::lower_bound(boundary.begin(), boundary.end(), boundary[current].to,
-                         [](DirectedEdge e, std::int32_t from) { return e.from < from; });
-    if (next == boundary.end() || next->from != boundary[current].to) return {};
-    current = static_cast<std::size_t>(next - boundary.begin());
-    if (current == 0) return step + 1 == boundary.size() ? cycle : std::vector<DirectedEdge>{};
-  }
-  return {};
+  return boundary;
 }
 
 // Sign of b - a compared by value.
@@ -103,65 +81,153 @@ int value_order(double a, double b) {
   return a < b ? 1 : (b < a ? -1 : 0);
 }
 
-// Whether consecutive edges a -> b -> c of the projected polygon meet only at b: not when c
-// lies on the line of a b on a's side of b (folded back), nor when an edge has no length.
-bool turn_apart(Vec2 a, Vec2 b, Vec2 c) {
-  if ((a.x == b.x && a.y == b.y) || (c.x == b.x && c.y == b.y)) return false;
-  if (orient2d(a, b, c) != Sign::zero) return true;
-  // On one line through b: the same direction from b in some coordinate is the same ray.
-  return value_order(b.x, a.x) * value_order(b.x, c.x) <= 0 &&
-         value_order(b.y, a.y) * value_order(b.y, c.y) <= 0;
+// Whether two edges from a common end s to p and to q meet only at s: not when one lies along
+// the other (on one line through s, the same way in some coordinate), nor when one has no length.
+bool apart_at(Vec2 s, Vec2 p, Vec2 q) {
+  if ((p.x == s.x && p.y == s.y) || (q.x == s.x && q.y == s.y)) return false;
+  if (orient2d(s, p, q) != Sign::zero) return true;
+  return value_order(s.x, p.x) * value_order(s.x, q.x) <= 0 &&
+         value_order(s.y, p.y) * value_order(s.y, q.y) <= 0;
 }
 
-// Whether the cycle's projection dropping `axis` is a simple polygon: a sweep along the first
-// coordinate over the edges' boxes, each pair of boxes that meet tested exactly.
-bool simple_polygon(const Soup& soup, const std::vector<DirectedEdge>& cycle, int axis) {
-  const std::size_t m = cycle.size();
-  struct ProjectedEdge {
-    Vec2 p, q;
-    double x_min, x_max, y_min, y_max;
-  };
-  std::vector<ProjectedEdge> pieces(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    const Vec2 p = flattened(soup.vertices[static_cast<std::size_t>(cycle[i].from)], axis);
-    const Vec2 q = flattened(soup.vertices[static_cast<std::size_t>(cycle[i].to)], axis);
-    pieces[i] = {
-        p, q, std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y)};
-  }
+// Whether the boundary's projected edges meet only at the ends they share by number: a sweep
+// along the first coordinate over the edges' boxes, each pair of boxes that meet tested exactly.
+bool edges_apart(const std::vector<Vec2>& from, const std::vector<Vec2>& to,
+                 const std::vector<DirectedEdge>& boundary) {
+  const std::size_t m = boundary.size();
   std::vector<std::uint32_t> order(m);
   for (std::size_t i = 0; i < m; ++i)
     order[i] = static_cast<std::uint32_t>(i);
+  const auto x_min = [&](std::uint32_t i) { return std::min(from[i].x, to[i].x); };
   std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
-    return pieces[i].x_min < pieces[j].x_min || (pieces[i].x_min == pieces[j].x_min && i < j);
+    return x_min(i) < x_min(j) || (x_min(i) == x_min(j) && i < j);
   });
   std::vector<std::uint32_t> active;
   for (const std::uint32_t i : order) {
-    const ProjectedEdge& e = pieces[i];
-    std::erase_if(active, [&](std::uint32_t j) { return pieces[j].x_max < e.x_min; });
+    const double x = x_min(i);
+    std::erase_if(active, [&](std::uint32_t j) { return std::max(from[j].x, to[j].x) < x; });
+    const double y_lo = std::min(from[i].y, to[i].y), y_hi = std::max(from[i].y, to[i].y);
     for (const std::uint32_t j : active) {
-      const ProjectedEdge& f = pieces[j];
-      if (f.y_max < e.y_min || e.y_max < f.y_min) continue;
-      if (j == (i + 1) % m) {
-        if (!turn_apart(e.p, e.q, f.q)) return false;
-      } else if (i == (j + 1) % m) {
-        if (!turn_apart(f.p, f.q, e.q)) return false;
-      } else if (predicates::segments_meet({e.p, e.q}, {f.p, f.q})) {
-        return false;
+      if (std::max(from[j].y, to[j].y) < y_lo || y_hi < std::min(from[j].y, to[j].y)) continue;
+      const DirectedEdge e = boundary[i], f = boundary[j];
+      bool apart = true;
+      if (e.from == f.from) {
+        apart = apart_at(from[i], to[i], to[j]);
+      } else if (e.from == f.to) {
+        apart = apart_at(from[i], to[i], from[j]);
+      } else if (e.to == f.from) {
+        apart = apart_at(to[i], from[i], to[j]);
+      } else if (e.to == f.to) {
+        apart = apart_at(to[i], from[i], from[j]);
+      } else {
+        apart = !predicates::segments_meet({from[i], to[i]}, {from[j], to[j]});
       }
+      if (!apart) return false;
     }
     active.push_back(i);
   }
   return true;
 }
 
-// The embedded-patch test of patch_proof.h given the directions in which every triangle of the
-// patch turns strictly (bits as `strict_turns`).
-bool embedded_in(const Soup& soup, std::span<const std::int32_t> patch, unsigned directions) {
-  if (directions == 0) return false;
-  const std::vector<DirectedEdge> cycle = boundary_cycle(soup, patch);
-  if (cycle.empty()) return false;
+// Whether ray r from o lies strictly inside the counter-clockwise sector from ray a to ray b
+// (three directions pairwise different).
+bool in_sector(Vec2 o, Vec2 a, Vec2 b, Vec2 r) {
+  const Sign ab = orient2d(o, a, b);
+  if (ab == Sign::positive) {
+    return orient2d(o, a, r) == Sign::positive && orient2d(o, r, b) == Sign::positive;
+  }
+  if (ab == Sign::zero) return orient2d(o, a, r) == Sign::positive;  // a and b opposite
+  return orient2d(o, a, r) != Sign::negative || orient2d(o, r, b) != Sign::negative;
+}
+
+int find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return static_cast<int>(i);
+}
+
+// Whether the boundary (sorted by `from`) is connected: each edge joined to the first edge
+// leaving each of its ends (a chain's boundary leaves every vertex it enters).
+bool connected(const std::vector<DirectedEdge>& boundary) {
+  const std::size_t m = boundary.size();
+  const auto first_out = [&](std::int32_t v) {
+    return static_cast<std::size_t>(
+        std::lower_bound(boundary.begin(), boundary.end(), v,
+                         [](DirectedEdge e, std::int32_t x) { return e.from < x; }) -
+        boundary.begin());
+  };
+  std::vector<std::uint32_t> parent(m);
+  for (std::size_t i = 0; i < m; ++i)
+    parent[i] = static_cast<std::uint32_t>(i);
+  std::size_t components = m;
+  for (std::size_t i = 0; i < m; ++i) {
+    for (const std::int32_t v : {boundary[i].from, boundary[i].to}) {
+      const std::size_t f = first_out(v);
+      if (f == m || boundary[f].from != v) return false;
+      const int a = find_root(parent, static_cast<std::uint32_t>(i));
+      const int b = find_root(parent, static_cast<std::uint32_t>(f));
+      if (a != b) {
+        parent[static_cast<std::size_t>(a)] = static_cast<std::uint32_t>(b);
+        --components;
+      }
+    }
+  }
+  return components == 1;
+}
+
+// The boundary conditions of patch_proof.h in the projection dropping `axis`.
+bool boundary_embeds(const Soup& soup, const std::vector<DirectedEdge>& boundary, int axis) {
+  const std::size_t m = boundary.size();
+  std::vector<Vec2> from(m), to(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    from[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].from)], axis);
+    to[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].to)], axis);
+  }
+  if (!edges_apart(from, to, boundary)) return false;
+  // Each vertex's edges alternate in and out around it (boundary sorted by `from`; a chain's
+  // boundary has as many in as out at each vertex): two out, then the two in one on each side.
+  std::vector<std::uint32_t> by_to(m);
+  for (std::size_t i = 0; i < m; ++i)
+    by_to[i] = static_cast<std::uint32_t>(i);
+  std::sort(by_to.begin(), by_to.end(),
+            [&](std::uint32_t i, std::uint32_t j) { return boundary[i].to < boundary[j].to; });
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m;) {
+    std::size_t j = i;
+    while (j < m && boundary[j].from == boundary[i].from)
+      ++j;
+    while (k < m && boundary[by_to[k]].to < boundary[i].from)
+      ++k;
+    const std::size_t outs = j - i;
+    if (outs > 2) return false;
+    if (outs == 2) {
+      if (k + 1 >= m || boundary[by_to[k]].to != boundary[i].from ||
+          boundary[by_to[k + 1]].to != boundary[i].from) {
+        return false;
+      }
+      const Vec2 o = from[i];
+      if (in_sector(o, to[i], to[i + 1], from[by_to[k]]) ==
+          in_sector(o, to[i], to[i + 1], from[by_to[k + 1]])) {
+        return false;
+      }
+    }
+    i = j;
+  }
+  return true;
+}
+
+// The embedded-patch test of patch_proof.h given the patch's boundary chain and the directions
+// in which every triangle of the patch turns strictly (bits as `strict_turns`).
+bool embedded_in(const Soup& soup, std::vector<DirectedEdge>& boundary, unsigned directions) {
+  if (directions == 0 || boundary.size() < 3) return false;
+  std::sort(boundary.begin(), boundary.end(), [](DirectedEdge e, DirectedEdge f) {
+    return e.from < f.from || (e.from == f.from && e.to < f.to);
+  });
+  if (!connected(boundary)) return false;
   for (int k = 0; k < 3; ++k) {
-    if ((directions >> (2 * k) & 3U) != 0 && simple_polygon(soup, cycle, k)) return true;
+    if ((directions >> (2 * k) & 3U) != 0 && boundary_embeds(soup, boundary, k)) return true;
   }
   return false;
 }
@@ -172,45 +238,67 @@ bool embedded_patch(const Soup& soup, std::span<const std::int32_t> patch) {
   unsigned directions = 0x3f;
   for (const std::int32_t t : patch)
     directions &= strict_turns(soup, t);
-  return !patch.empty() && embedded_in(soup, patch, directions);
+  std::vector<DirectedEdge> boundary = sorted_boundary(soup, patch);
+  return !patch.empty() && embedded_in(soup, boundary, directions);
 }
 
-PatchProofs::PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners) : soup_(soup) {
+PatchProofs::PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners,
+                         std::span<const std::array<std::int32_t, 3>> across)
+    : soup_(soup), across_(across) {
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   const std::span<const std::int32_t> items = soup.tree.items();
   directions_.assign(nodes.size(), 0);
+  ranges_.assign(nodes.size(), {0, 0});
+  position_.assign(soup.triangles.size(), -1);
+  for (std::size_t k = 0; k < items.size(); ++k)
+    position_[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
+  // The input of each node's triangles (-1: of several). Subtrees of two inputs are not tried:
+  // they hold the places where the inputs come near each other, and their proofs failed there
+  // (at a union of two 131k-triangle spheres, 3,282 tries over 1.1 M triangles, for nothing).
+  std::vector<std::int32_t> input(nodes.size(), -1);
   // Children after their parent: bottom up in reverse.
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const bvh::Node& n = nodes[i];
     if (n.is_leaf()) {
       unsigned bits = 0x3f;
+      const std::int32_t one =
+          soup.input[static_cast<std::size_t>(items[static_cast<std::size_t>(n.first)])];
       for (std::int32_t k = n.first; k < n.first + n.count && bits != 0; ++k) {
-        const std::int32_t t = items[static_cast<std::size_t>(k)];
-        bits &= corners[static_cast<std::size_t>(t)] == 7 ? strict_turns(soup, t) : 0U;
+        const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
+        if (corners[t] != 7 || soup.input[t] != one) bits = 0;
+        if (bits != 0) bits &= strict_turns(soup, static_cast<std::int32_t>(t));
       }
       directions_[i] = static_cast<std::uint8_t>(bits);
+      input[i] = one;
+      ranges_[i] = {n.first, n.first + n.count};
     } else {
-      directions_[i] = static_cast<std::uint8_t>(directions_[i + 1] &
-                                                 directions_[static_cast<std::size_t>(n.first)]);
+      const auto second = static_cast<std::size_t>(n.first);
+      input[i] = input[i + 1] == input[second] ? input[second] : -1;
+      directions_[i] =
+          input[i] < 0 ? 0 : static_cast<std::uint8_t>(directions_[i + 1] & directions_[second]);
+      ranges_[i] = {ranges_[i + 1][0], ranges_[second][1]};
     }
   }
 }
 
 bool PatchProofs::settled(std::int32_t node) const {
-  const std::span<const bvh::Node> nodes = soup_.tree.nodes();
-  const unsigned directions = directions_[static_cast<std::size_t>(node)];
-  if (directions == 0 || nodes[static_cast<std::size_t>(node)].is_leaf()) return false;
-  // The subtree's items are contiguous in leaf order: from its first leaf to its last.
-  std::int32_t first = node, last = node;
-  while (!nodes[static_cast<std::size_t>(first)].is_leaf())
-    ++first;
-  while (!nodes[static_cast<std::size_t>(last)].is_leaf())
-    last = nodes[static_cast<std::size_t>(last)].first;
-  const bvh::Node& a = nodes[static_cast<std::size_t>(first)];
-  const bvh::Node& b = nodes[static_cast<std::size_t>(last)];
-  const std::span<const std::int32_t> patch = soup_.tree.items().subspan(
-      static_cast<std::size_t>(a.first), static_cast<std::size_t>(b.first + b.count - a.first));
-  const bool embedded = embedded_in(soup_, patch, directions);
+  const auto i = static_cast<std::size_t>(node);
+  const unsigned directions = directions_[i];
+  if (directions == 0 || soup_.tree.nodes()[i].is_leaf()) return false;
+  // The subtree's items are contiguous in leaf order; an edge is on its boundary when the
+  // triangle across it is not among them (every corner is proven: `across` knows them all).
+  const auto [first, end] = ranges_[i];
+  const std::span<const std::int32_t> items = soup_.tree.items();
+  std::vector<DirectedEdge> boundary;
+  for (std::int32_t k = first; k < end; ++k) {
+    const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
+    const TriangleIndices& v = soup_.triangles[t];
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::int32_t at = position_[static_cast<std::size_t>(across_[t][e])];
+      if (at < first || at >= end) boundary.push_back({v[e], v[(e + 1) % 3]});
+    }
+  }
+  const bool embedded = embedded_in(soup_, boundary, directions);
   ++(embedded ? settled_ : failed_);
   return embedded;
 }

@@ -33,6 +33,8 @@
 // walk would descend, from a bottom-up mask of the directions in which all of a subtree's
 // triangles turn strictly.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -48,8 +50,10 @@ namespace contain::clip::solid {
 /// The proofs of the pair stage, per node of `soup.tree`.
 class PatchProofs {
  public:
-  /// `corners` as from `proven_corners`: bit k of triangle t set when its corner k is proven.
-  PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners);
+  /// `corners` and `across` as from `proven_stars`: bit k of triangle t set when its corner k
+  /// is proven, and the neighbours across the edges at proven corners.
+  PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners,
+              std::span<const std::array<std::int32_t, 3>> across);
 
   /// Whether the triangles under inner node `node` of `soup.tree` form an embedded patch whose
   /// corners are all proven: then no pair of them gives the pair stage anything. Leaves are
@@ -62,6 +66,10 @@ class PatchProofs {
 
  private:
   const Soup& soup_;
+  std::span<const std::array<std::int32_t, 3>> across_;
+  // Per node: its items' range in leaf order; per triangle: its position there.
+  std::vector<std::array<std::int32_t, 2>> ranges_;
+  std::vector<std::int32_t> position_;
   // Per node: bit 2k (2k + 1) when every triangle below turns strictly positively (negatively)
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;

@@ -27,11 +27,13 @@ constexpr std::size_t max_star = 16;
 // of the ring around v.
 struct LinkEdge {
   std::int32_t a, b;
+  std::int32_t corner;  // 3 t + k: the star's triangle t, v its corner k
 };
 
 // The ring of v's star in order (triangle i is v w[i] w[i + 1], w[n] = w[0]) from its link
 // edges; false when they are not one closed fan of distinct ring vertices.
-bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star>& w) {
+bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star>& w,
+               std::array<std::uint8_t, max_star>& order) {
   const std::size_t n = star.size();
   // Follow a -> b from edge 0: the next edge is the first whose a is this one's b. One cycle
   // through all n edges, back to edge 0 only at the end, makes the a's distinct (a second edge
@@ -42,6 +44,7 @@ bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star
   std::size_t current = 0;
   for (std::size_t i = 0; i < n; ++i) {
     w[i] = star[current].a;
+    order[i] = static_cast<std::uint8_t>(current);
     std::size_t next = n;
     for (std::size_t j = 0; j < n; ++j) {
       if (star[j].a == star[current].b) {
@@ -83,11 +86,15 @@ Vec2 projection_of(Vec3 p, int axis) {
   return {p.x, p.y};
 }
 
-bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star) {
+// Whether v's star is proven; if so and `across` is given, its triangles' neighbours across
+// the edges at v written there.
+bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star,
+                 std::vector<std::array<std::int32_t, 3>>* across) {
   const std::size_t n = star.size();
   if (n < 3 || n > max_star) return false;
   std::array<std::int32_t, max_star> ids;
-  if (!walk_ring(star, ids)) return false;
+  std::array<std::uint8_t, max_star> order;
+  if (!walk_ring(star, ids, order)) return false;
   // The positions by pointer: an array of Vec3 would be zeroed first (member initializers).
   std::array<const Vec3*, max_star> ring;
   for (std::size_t i = 0; i < n; ++i)
@@ -120,12 +127,21 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
   for (std::size_t i = 1; i < n; ++i) {
     if (orient3d(apex, *ring[i], *ring[(i + 1) % n], *ring[(i + 2) % n]) != bend) return false;
   }
+  if (across != nullptr) {
+    // Triangle i is v w(i) w(i + 1), its corner k at v: its edge (k + 2) mod 3 runs w(i + 1)
+    // -> v, which is edge k' (v -> w(i + 1)) of triangle i + 1.
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int32_t from = star[order[i]].corner, to = star[order[(i + 1) % n]].corner;
+      (*across)[static_cast<std::size_t>(from / 3)][static_cast<std::size_t>((from % 3 + 2) % 3)] =
+          to / 3;
+      (*across)[static_cast<std::size_t>(to / 3)][static_cast<std::size_t>(to % 3)] = from / 3;
+    }
+  }
   return true;
 }
 
-}  // namespace
-
-std::vector<bool> proven_vertices(const Soup& soup) {
+std::vector<bool> proven_vertices_of(const Soup& soup,
+                                     std::vector<std::array<std::int32_t, 3>>* across) {
   const std::size_t vertices = soup.vertices.size();
   // The link edges of each vertex, by a counting sort of the triangles' corners (a triangle
   // naming a vertex twice is listed twice, and fails the turns).
@@ -139,10 +155,11 @@ std::vector<bool> proven_vertices(const Soup& soup) {
   std::vector<LinkEdge> star(static_cast<std::size_t>(start[vertices]));
   {
     std::vector<std::int32_t> next(start.begin(), start.end() - 1);
-    for (const TriangleIndices& t : soup.triangles) {
+    for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
+      const TriangleIndices& t = soup.triangles[i];
       for (std::size_t k = 0; k < 3; ++k) {
-        star[static_cast<std::size_t>(next[static_cast<std::size_t>(t[k])]++)] = {t[(k + 1) % 3],
-                                                                                  t[(k + 2) % 3]};
+        star[static_cast<std::size_t>(next[static_cast<std::size_t>(t[k])]++)] = {
+            t[(k + 1) % 3], t[(k + 2) % 3], static_cast<std::int32_t>(3 * i + k)};
       }
     }
   }
@@ -151,13 +168,12 @@ std::vector<bool> proven_vertices(const Soup& soup) {
     const auto first = static_cast<std::size_t>(start[v]);
     const auto count = static_cast<std::size_t>(start[v + 1]) - first;
     proven[v] = proven_star(soup, static_cast<std::int32_t>(v),
-                            std::span<const LinkEdge>(star).subspan(first, count));
+                            std::span<const LinkEdge>(star).subspan(first, count), across);
   }
   return proven;
 }
 
-std::vector<std::uint8_t> proven_corners(const Soup& soup) {
-  const std::vector<bool> proven = proven_vertices(soup);
+std::vector<std::uint8_t> corners_of(const Soup& soup, const std::vector<bool>& proven) {
   std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     std::uint8_t bits = 0;
@@ -169,6 +185,23 @@ std::vector<std::uint8_t> proven_corners(const Soup& soup) {
     corners[t] = bits;
   }
   return corners;
+}
+
+}  // namespace
+
+std::vector<bool> proven_vertices(const Soup& soup) {
+  return proven_vertices_of(soup, nullptr);
+}
+
+std::vector<std::uint8_t> proven_corners(const Soup& soup) {
+  return corners_of(soup, proven_vertices(soup));
+}
+
+ProvenStars proven_stars(const Soup& soup) {
+  ProvenStars stars;
+  stars.across.assign(soup.triangles.size(), {-1, -1, -1});
+  stars.corners = corners_of(soup, proven_vertices_of(soup, &stars.across));
+  return stars;
 }
 
 }  // namespace contain::clip::solid

@@ -29,6 +29,7 @@
 // inputs' cones, a saddle, a flat fan and a ring winding twice are not proven (tested by
 // star_proof_test against the pair test itself).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +42,16 @@ namespace contain::clip::solid {
 
 /// For each triangle of the soup: bit k set when its corner k is a proven vertex.
 [[nodiscard]] std::vector<std::uint8_t> proven_corners(const Soup& soup);
+
+/// `proven_corners`, and each triangle's neighbour across each of its edges that has a proven
+/// end (-1 for the others): across[t][k] is the triangle on the other side of the edge from
+/// corner k to corner k + 1 (mod 3), which runs the other way there (a proven star is a closed
+/// fan, so an edge at a proven vertex has exactly two triangles).
+struct ProvenStars {
+  std::vector<std::uint8_t> corners;
+  std::vector<std::array<std::int32_t, 3>> across;
+};
+[[nodiscard]] ProvenStars proven_stars(const Soup& soup);
 
 /// Whether `intersect_pair` would give triangles t and u (t < u) a constraint or a coplanar
 /// partner, or make a crossing point on the way (for the tests; defined in intersect.cpp).

@@ -291,8 +291,8 @@ TEST(PatchProof, CoplanarOverlapsTouchingTrianglesAndNonDisksAreNotEmbedded) {
 
 // The subtrees of `soup`'s hierarchy proven by PatchProofs, each checked by brute force.
 std::size_t settled_subtrees(const Soup& soup) {
-  const std::vector<std::uint8_t> corners = clip::solid::proven_corners(soup);
-  const PatchProofs proofs(soup, corners);
+  const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
+  const PatchProofs proofs(soup, stars.corners, stars.across);
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   std::size_t settled = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
