@@ -160,7 +160,7 @@ TEST(PatchProof, HeightFieldsAreEmbeddedWhateverTheirHeights) {
 
 TEST(PatchProof, JitteredFoldedAndCutPatchesAreNeverClaimedWhenTwoTrianglesMeet) {
   std::mt19937_64 rng(2525);
-  const int cases = case_budget(600, 6);
+  const int cases = case_budget(1200, 6);
   std::size_t claims = 0, meetings = 0;
   for (int k = 0; k < cases; ++k) {
     // Jitter up to most of a cell folds some triangles over their neighbours; flat patches
@@ -176,6 +176,18 @@ TEST(PatchProof, JitteredFoldedAndCutPatchesAreNeverClaimedWhenTwoTrianglesMeet)
           return Vec3{i + jitter * u(rng), j + jitter * u(rng), height * u(rng)};
         },
         [&](int, int) { return coin(rng); });
+    // Every fourth case adds a second grid over the first (crossing it, or in its plane).
+    if (k % 4 == 3) {
+      const Vec3 shift{n * 0.5 * u(rng), n * 0.5 * u(rng), height * u(rng)};
+      std::vector<Vec3> vertices = soup.vertices;
+      std::vector<TriangleIndices> triangles = soup.triangles;
+      const auto offset = static_cast<std::int32_t>(vertices.size());
+      for (const Vec3 v : soup.vertices)
+        vertices.push_back({v.x + shift.x, v.y + shift.y, v.z + shift.z});
+      for (const TriangleIndices& t : soup.triangles)
+        triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+      soup = patch_soup(vertices, triangles);
+    }
     // Every third case keeps a random part of the grid (holes, pieces, pinched corners).
     if (k % 3 == 2) {
       std::vector<TriangleIndices> kept;
@@ -287,6 +299,30 @@ TEST(PatchProof, CoplanarOverlapsTouchingTrianglesAndNonDisksAreNotEmbedded) {
     annulus.push_back({a, b + 1, b});
   }
   EXPECT_FALSE(claimed(patch_soup(ring, annulus), "annulus"));
+}
+
+TEST(PatchProof, PinchedBoundariesAreEmbeddedExactlyWhenTheirLobesAreApart) {
+  // Two triangles sharing only corner 0: apart (a bow tie), or one within the other's angle
+  // (nested at the pinch: the edges around corner 0 go out, out, in, in).
+  const std::vector<Vec3> bow{{0, 0, 0}, {2, 1, 0.5}, {2, 2, 0}, {-2, -1, 0.3}, {-2, -2, 0}};
+  EXPECT_TRUE(claimed(patch_soup(bow, {{0, 1, 2}, {0, 3, 4}}), "bow tie"));
+  const std::vector<Vec3> nested{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 0.5, 0}, {0.5, 1, 0}};
+  EXPECT_FALSE(claimed(patch_soup(nested, {{0, 1, 2}, {0, 3, 4}}), "nested"));
+  EXPECT_TRUE(some_pair_meets(patch_soup(nested, {{0, 1, 2}, {0, 3, 4}})));
+  // Lifted off the plane it still overlaps in projection: not claimed (though apart in space).
+  const std::vector<Vec3> lifted{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 0.5, 1}, {0.5, 1, 1}};
+  EXPECT_FALSE(claimed(patch_soup(lifted, {{0, 1, 2}, {0, 3, 4}}), "lifted"));
+  // A square with a square hole touching its outer boundary at corner 0 (a pinched annulus):
+  // outer 0 1 2 3 = (0,0) (4,0) (4,4) (0,4), hole 0 4 5 6 = (0,0) (2,1) (2,2) (1,2).
+  const std::vector<Vec3> frame{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0},
+                                {2, 1, 0}, {2, 2, 0}, {1, 2, 0}};
+  const std::vector<TriangleIndices> pinched_annulus{{0, 1, 4}, {1, 5, 4}, {1, 2, 5},
+                                                     {2, 6, 5}, {2, 3, 6}, {3, 0, 6}};
+  EXPECT_TRUE(claimed(patch_soup(frame, pinched_annulus), "pinched annulus"));
+  // Three lobes at one corner are left unproven.
+  const std::vector<Vec3> three{{0, 0, 0},  {2, 0, 0},   {2, 1, 0}, {-1, 2, 0},
+                                {-2, 1, 0}, {-1, -2, 0}, {0, -2, 0}};
+  EXPECT_FALSE(claimed(patch_soup(three, {{0, 1, 2}, {0, 3, 4}, {0, 5, 6}}), "three lobes"));
 }
 
 // The subtrees of `soup`'s hierarchy proven by PatchProofs, each checked by brute force.
