@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <set>
@@ -221,6 +223,71 @@ std::vector<std::pair<std::int32_t, std::int32_t>> stack_walk_pairs(const Bvh& t
     }
   }
   return out;
+}
+
+// The walk by leaves asked `within` at each inner node: the pairs it skips are exactly those
+// with both items under a refused node, the others come in the order of the full walk.
+TEST(Bvh, SelfWalkByLeavesSkipsExactlyThePairsWithinRefusedNodesKeepingTheOrder) {
+  for (const unsigned seed : {41U, 42U}) {
+    const std::vector<Box3> boxes = random_boxes(600, seed, 0.25);
+    const Bvh tree(boxes, {.method = BuildMethod::morton});
+    const auto enter = [](const Node& x, const Node& y) { return x.box.overlaps(y.box); };
+    std::vector<std::pair<std::int32_t, std::int32_t>> all, kept;
+    const auto collect = [](std::vector<std::pair<std::int32_t, std::int32_t>>& out) {
+      return [&out](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
+        const bool same = a.data() == b.data();
+        for (std::size_t i = 0; i < a.size(); ++i)
+          for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j)
+            out.emplace_back(a[i], b[j]);
+        return Visit::proceed;
+      };
+    };
+    (void)traverse_self_leaves(tree, enter, collect(all));
+    // Refuse every inner node whose index is 3 modulo 7 (not the root); record their items.
+    const std::span<const Node> nodes = tree.nodes();
+    std::vector<std::int32_t> refused;
+    std::size_t asked = 0;
+    (void)traverse_self_leaves(tree, enter, collect(kept), [&](std::int32_t node) {
+      ++asked;
+      EXPECT_FALSE(nodes[static_cast<std::size_t>(node)].is_leaf());
+      if (node % 7 != 3) return true;
+      refused.push_back(node);
+      return false;
+    });
+    EXPECT_GT(refused.size(), 3U);
+    EXPECT_GT(asked, refused.size());
+    const auto items_below = [&](std::int32_t node) {
+      std::vector<bool> below(boxes.size(), false);
+      std::vector<std::int32_t> stack{node};
+      while (!stack.empty()) {
+        const std::int32_t x = stack.back();
+        stack.pop_back();
+        const Node& n = nodes[static_cast<std::size_t>(x)];
+        if (n.is_leaf()) {
+          for (std::int32_t k = n.first; k < n.first + n.count; ++k)
+            below[static_cast<std::size_t>(tree.items()[static_cast<std::size_t>(k)])] = true;
+        } else {
+          stack.push_back(x + 1);
+          stack.push_back(n.first);
+        }
+      }
+      return below;
+    };
+    std::vector<std::vector<bool>> refused_items;
+    for (const std::int32_t node : refused)
+      refused_items.push_back(items_below(node));
+    std::vector<std::pair<std::int32_t, std::int32_t>> expected;
+    for (const auto& [i, j] : all) {
+      bool skipped = false;
+      for (const std::vector<bool>& below : refused_items) {
+        skipped =
+            skipped || (below[static_cast<std::size_t>(i)] && below[static_cast<std::size_t>(j)]);
+      }
+      if (!skipped) expected.emplace_back(i, j);
+    }
+    EXPECT_EQ(kept, expected);
+    EXPECT_LT(kept.size(), all.size());
+  }
 }
 
 TEST(Bvh, SelfTraversalAndItsWalkByLeavesVisitThePairsOfTheStackWalkInItsOrder) {
