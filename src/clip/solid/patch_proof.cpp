@@ -43,13 +43,9 @@ std::uint8_t strict_turns(const Soup& soup, std::int32_t t) {
   return static_cast<std::uint8_t>(bits);
 }
 
-struct DirectedEdge {
-  std::int32_t from, to;
-};
-
 // The boundary chain of the patch by a sort of its half-edges (each under its undirected key,
 // +1 when it runs from the lower vertex number); empty when an edge is left over twice.
-std::vector<DirectedEdge> sorted_boundary(const Soup& soup, std::span<const std::int32_t> patch) {
+std::vector<BoundaryEdge> sorted_boundary(const Soup& soup, std::span<const std::int32_t> patch) {
   std::vector<std::pair<std::uint64_t, int>> halves;
   halves.reserve(3 * patch.size());
   for (const std::int32_t t : patch) {
@@ -60,7 +56,7 @@ std::vector<DirectedEdge> sorted_boundary(const Soup& soup, std::span<const std:
     }
   }
   std::sort(halves.begin(), halves.end());
-  std::vector<DirectedEdge> boundary;
+  std::vector<BoundaryEdge> boundary;
   for (std::size_t i = 0; i < halves.size();) {
     std::size_t j = i;
     int net = 0;
@@ -92,24 +88,28 @@ bool apart_at(Vec2 s, Vec2 p, Vec2 q) {
 
 // Whether the boundary's projected edges meet only at the ends they share by number: a sweep
 // along the first coordinate over the edges' boxes, each pair of boxes that meet tested exactly.
-bool edges_apart(const std::vector<Vec2>& from, const std::vector<Vec2>& to,
-                 const std::vector<DirectedEdge>& boundary) {
+bool edges_apart(PatchScratch& scratch) {
+  const std::vector<BoundaryEdge>& boundary = scratch.boundary;
+  const std::vector<Vec2>& from = scratch.from;
+  const std::vector<Vec2>& to = scratch.to;
   const std::size_t m = boundary.size();
-  std::vector<std::uint32_t> order(m);
+  std::vector<std::uint32_t>& order = scratch.order;
+  order.resize(m);
   for (std::size_t i = 0; i < m; ++i)
     order[i] = static_cast<std::uint32_t>(i);
   const auto x_min = [&](std::uint32_t i) { return std::min(from[i].x, to[i].x); };
   std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
     return x_min(i) < x_min(j) || (x_min(i) == x_min(j) && i < j);
   });
-  std::vector<std::uint32_t> active;
+  std::vector<std::uint32_t>& active = scratch.active;
+  active.clear();
   for (const std::uint32_t i : order) {
     const double x = x_min(i);
     std::erase_if(active, [&](std::uint32_t j) { return std::max(from[j].x, to[j].x) < x; });
     const double y_lo = std::min(from[i].y, to[i].y), y_hi = std::max(from[i].y, to[i].y);
     for (const std::uint32_t j : active) {
       if (std::max(from[j].y, to[j].y) < y_lo || y_hi < std::min(from[j].y, to[j].y)) continue;
-      const DirectedEdge e = boundary[i], f = boundary[j];
+      const BoundaryEdge e = boundary[i], f = boundary[j];
       bool apart = true;
       if (e.from == f.from) {
         apart = apart_at(from[i], to[i], to[j]);
@@ -150,15 +150,15 @@ int find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 
 // Whether the boundary (sorted by `from`) is connected: each edge joined to the first edge
 // leaving each of its ends (a chain's boundary leaves every vertex it enters).
-bool connected(const std::vector<DirectedEdge>& boundary) {
+bool connected(const std::vector<BoundaryEdge>& boundary, std::vector<std::uint32_t>& parent) {
   const std::size_t m = boundary.size();
   const auto first_out = [&](std::int32_t v) {
     return static_cast<std::size_t>(
         std::lower_bound(boundary.begin(), boundary.end(), v,
-                         [](DirectedEdge e, std::int32_t x) { return e.from < x; }) -
+                         [](BoundaryEdge e, std::int32_t x) { return e.from < x; }) -
         boundary.begin());
   };
-  std::vector<std::uint32_t> parent(m);
+  parent.resize(m);
   for (std::size_t i = 0; i < m; ++i)
     parent[i] = static_cast<std::uint32_t>(i);
   std::size_t components = m;
@@ -178,17 +178,25 @@ bool connected(const std::vector<DirectedEdge>& boundary) {
 }
 
 // The boundary conditions of patch_proof.h in the projection dropping `axis`.
-bool boundary_embeds(const Soup& soup, const std::vector<DirectedEdge>& boundary, int axis) {
+bool boundary_embeds(const Soup& soup, PatchScratch& scratch, int axis) {
+  const std::vector<BoundaryEdge>& boundary = scratch.boundary;
   const std::size_t m = boundary.size();
-  std::vector<Vec2> from(m), to(m);
+  std::vector<Vec2>& from = scratch.from;
+  std::vector<Vec2>& to = scratch.to;
+  from.resize(m);
+  to.resize(m);
+  bool pinched = false;
   for (std::size_t i = 0; i < m; ++i) {
     from[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].from)], axis);
     to[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].to)], axis);
+    pinched = pinched || (i > 0 && boundary[i].from == boundary[i - 1].from);
   }
-  if (!edges_apart(from, to, boundary)) return false;
+  if (!edges_apart(scratch)) return false;
+  if (!pinched) return true;
   // Each vertex's edges alternate in and out around it (boundary sorted by `from`; a chain's
   // boundary has as many in as out at each vertex): two out, then the two in one on each side.
-  std::vector<std::uint32_t> by_to(m);
+  std::vector<std::uint32_t>& by_to = scratch.by_to;
+  by_to.resize(m);
   for (std::size_t i = 0; i < m; ++i)
     by_to[i] = static_cast<std::uint32_t>(i);
   std::sort(by_to.begin(), by_to.end(),
@@ -220,14 +228,15 @@ bool boundary_embeds(const Soup& soup, const std::vector<DirectedEdge>& boundary
 
 // The embedded-patch test of patch_proof.h given the patch's boundary chain and the directions
 // in which every triangle of the patch turns strictly (bits as `strict_turns`).
-bool embedded_in(const Soup& soup, std::vector<DirectedEdge>& boundary, unsigned directions) {
+bool embedded_in(const Soup& soup, PatchScratch& scratch, unsigned directions) {
+  std::vector<BoundaryEdge>& boundary = scratch.boundary;
   if (directions == 0 || boundary.size() < 3) return false;
-  std::sort(boundary.begin(), boundary.end(), [](DirectedEdge e, DirectedEdge f) {
+  std::sort(boundary.begin(), boundary.end(), [](BoundaryEdge e, BoundaryEdge f) {
     return e.from < f.from || (e.from == f.from && e.to < f.to);
   });
-  if (!connected(boundary)) return false;
+  if (!connected(boundary, scratch.parent)) return false;
   for (int k = 0; k < 3; ++k) {
-    if ((directions >> (2 * k) & 3U) != 0 && boundary_embeds(soup, boundary, k)) return true;
+    if ((directions >> (2 * k) & 3U) != 0 && boundary_embeds(soup, scratch, k)) return true;
   }
   return false;
 }
@@ -238,8 +247,9 @@ bool embedded_patch(const Soup& soup, std::span<const std::int32_t> patch) {
   unsigned directions = 0x3f;
   for (const std::int32_t t : patch)
     directions &= strict_turns(soup, t);
-  std::vector<DirectedEdge> boundary = sorted_boundary(soup, patch);
-  return !patch.empty() && embedded_in(soup, boundary, directions);
+  PatchScratch scratch;
+  scratch.boundary = sorted_boundary(soup, patch);
+  return !patch.empty() && embedded_in(soup, scratch, directions);
 }
 
 PatchProofs::PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners,
@@ -294,7 +304,8 @@ bool PatchProofs::settled(std::int32_t node) const {
   // triangle across it is not among them (every corner is proven: `across` knows them all).
   const auto [first, end] = ranges_[i];
   const std::span<const std::int32_t> items = soup_.tree.items();
-  std::vector<DirectedEdge> boundary;
+  std::vector<BoundaryEdge>& boundary = scratch_.boundary;
+  boundary.clear();
   for (std::int32_t k = first; k < end; ++k) {
     const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
     const TriangleIndices& v = soup_.triangles[t];
@@ -303,7 +314,7 @@ bool PatchProofs::settled(std::int32_t node) const {
       if (at < first || at >= end) boundary.push_back({v[e], v[(e + 1) % 3]});
     }
   }
-  const bool embedded = embedded_in(soup_, boundary, directions);
+  const bool embedded = embedded_in(soup_, scratch_, directions);
   ++(embedded ? settled_ : failed_);
   return embedded;
 }

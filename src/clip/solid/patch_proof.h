@@ -47,6 +47,18 @@ namespace contain::clip::solid {
 /// projection dropping some axis. O(n log n) in the patch's triangles.
 [[nodiscard]] bool embedded_patch(const Soup& soup, std::span<const std::int32_t> patch);
 
+/// An edge of a patch's boundary chain (vertex numbers of the soup).
+struct BoundaryEdge {
+  std::int32_t from, to;
+};
+
+/// The buffers of a proof, kept from one to the next.
+struct PatchScratch {
+  std::vector<BoundaryEdge> boundary;
+  std::vector<Vec2> from, to;
+  std::vector<std::uint32_t> order, active, by_to, parent;
+};
+
 /// The proofs of the pair stage, per node of `soup.tree`.
 class PatchProofs {
  public:
@@ -73,6 +85,7 @@ class PatchProofs {
   // Per node: bit 2k (2k + 1) when every triangle below turns strictly positively (negatively)
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;
+  mutable PatchScratch scratch_;
   mutable std::size_t settled_ = 0, failed_ = 0;
 };
 
