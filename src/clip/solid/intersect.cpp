@@ -324,9 +324,13 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.
+  const bool patches_pay =
+      neighbours == Neighbours::proven && soup.triangles.size() >= patch_proofs_from;
   ProvenStars stars;
-  if (neighbours == Neighbours::proven) {
+  if (patches_pay) {
     stars = proven_stars(soup);
+  } else if (neighbours == Neighbours::proven) {
+    stars.corners = proven_corners(soup);
   } else {
     stars.corners.assign(soup.triangles.size(), 0);
   }
@@ -339,7 +343,7 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
   // points).
   std::optional<PatchProofs> patches;
-  if (neighbours == Neighbours::proven) patches.emplace(soup, stars.corners, stars.across);
+  if (patches_pay) patches.emplace(soup, stars.corners, stars.across);
   (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {
