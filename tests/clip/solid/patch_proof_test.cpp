@@ -26,6 +26,7 @@
 #include "clip/solid/star_proof.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/triangles_meet.h"
+#include "scenes/scenes.h"
 #include "support/case_budget.h"
 
 namespace contain::test {
@@ -363,6 +364,21 @@ Soup welded_soup(const std::vector<Mesh>& inputs) {
 TEST(PatchProof, SubtreesOfSmoothSpheresAreSettledAndSound) {
   const Soup sphere = welded_soup({icosphere(4, 1.0, {0, 0, 0})});
   EXPECT_GT(settled_subtrees(sphere), 8U);
+  // A lumpy sphere (saddles between the lumps: unproven corners there) turned off the axes,
+  // then jittered by a hundredth of its edges: settled subtrees checked the same way.
+  Mesh lumpy = icosphere(4, 1.0, {0, 0, 0});
+  for (Vec3& v : lumpy.vertices) {
+    const double r = 1.0 + 0.15 * std::sin(3 * v.x) * std::cos(2 * v.y + v.z);
+    v = {r * (v.x * 0.8 - v.z * 0.6), r * v.y, r * (v.x * 0.6 + v.z * 0.8)};
+  }
+  const std::size_t lumpy_settled = settled_subtrees(welded_soup({lumpy}));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.0005, 0.0005);
+  for (Vec3& v : lumpy.vertices)
+    v = {v.x + jitter(rng), v.y + jitter(rng), v.z + jitter(rng)};
+  const std::size_t jittered_settled = settled_subtrees(welded_soup({lumpy}));
+  EXPECT_GT(lumpy_settled, 8U);
+  EXPECT_GT(jittered_settled, 8U);
   // Two crossing spheres: settled subtrees away from the crossing.
   const Soup pair = welded_soup({icosphere(3, 1.0, {0, 0, 0}), icosphere(3, 1.0, {0.5, 0.4, 0.3})});
   EXPECT_GT(settled_subtrees(pair), 4U);
