@@ -1,6 +1,8 @@
-// The proofs of patch_proof.h: the boundary chain of a patch by a sort of its half-edges, walked
-// as one cycle, then the simplicity of its projection by a sweep over the edges' boxes with
-// exact segment tests (predicates::segments_meet, orient2d).
+// The proofs of patch_proof.h: the boundary chain of a patch (through the neighbours across
+// edges for a subtree, by a sort of its half-edges for any set), its connection by union-find,
+// then in each projection its triangles all turn in, the edges' meetings by a sweep over their
+// boxes with exact segment tests (predicates::segments_meet, orient2d), and the alternation of
+// in and out around its pinches.
 
 #include "clip/solid/patch_proof.h"
 
@@ -310,7 +312,9 @@ bool PatchProofs::settled(std::int32_t node) const {
     const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
     const TriangleIndices& v = soup_.triangles[t];
     for (std::size_t e = 0; e < 3; ++e) {
-      const std::int32_t at = position_[static_cast<std::size_t>(across_[t][e])];
+      const std::int32_t u = across_[t][e];
+      if (u < 0) return false;  // (not reached: all its corners are proven)
+      const std::int32_t at = position_[static_cast<std::size_t>(u)];
       if (at < first || at >= end) boundary.push_back({v[e], v[(e + 1) % 3]});
     }
   }
