@@ -306,6 +306,7 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   read_triangles_by_cell(mesh);
   list_triangles_by_cell();
   settle_empty_cells();
+  pack_states();
   return false;
 }
 
@@ -564,6 +565,25 @@ void MeshIndex::settle_empty_cells() {
   }
 }
 
+// The states four to a byte (packed_state_).
+void MeshIndex::pack_states() {
+  const std::size_t cells = state_.size();
+  packed_state_ = HugePageVector<std::uint8_t>((cells + 3) / 4);
+  const std::uint8_t* const state = state_.data();
+  std::uint8_t* const packed = packed_state_.data();
+  std::size_t c = 0;
+  for (; c + 4 <= cells; c += 4) {
+    packed[c / 4] = static_cast<std::uint8_t>(state[c] | state[c + 1] << 2U | state[c + 2] << 4U |
+                                              state[c + 3] << 6U);
+  }
+  if (c < cells) {
+    unsigned last = 0;
+    for (std::size_t k = c; k < cells; ++k)
+      last |= static_cast<unsigned>(state[k]) << (2 * (k - c));
+    packed[c / 4] = static_cast<std::uint8_t>(last);
+  }
+}
+
 bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
   // Outside the outward-rounded box: certainly not on the triangle.
   if ((p.x < t.lo[0]) | (p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) |
@@ -636,7 +656,7 @@ std::optional<Location> MeshIndex::locate_settled(const Box3& box) const {
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
           static_cast<std::size_t>(nx_) +
       static_cast<std::size_t>(i);
-  const std::uint8_t state = state_[cell];
+  const std::uint8_t state = packed_state(cell);
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   return std::nullopt;
 }
@@ -650,7 +670,7 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   const std::size_t row =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
       static_cast<std::size_t>(nx_);
-  const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
+  const std::uint8_t state = packed_state(row + static_cast<std::size_t>(i));
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
@@ -816,7 +836,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
     // The surface cell of the guessed cell of point q, or -1.
     auto surface_cell = [&](std::size_t q) -> std::ptrdiff_t {
       const std::ptrdiff_t c = guessed[q % kAhead];
-      if (c < 0 || state_[static_cast<std::size_t>(c)] != 2) return -1;
+      if (c < 0 || packed_state(static_cast<std::size_t>(c)) != 2) return -1;
       return c;
     };
     for (std::size_t q = begin; q < std::min(end, begin + kAhead); ++q)
@@ -860,7 +880,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
         const std::ptrdiff_t c = guess(points[q + kAhead]);
         guessed[q % kAhead] = c;
         if (c >= 0) {
-          __builtin_prefetch(&state_[static_cast<std::size_t>(c)]);
+          __builtin_prefetch(&packed_state_[static_cast<std::size_t>(c) / 4]);
         }
       }
     }

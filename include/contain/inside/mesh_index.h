@@ -127,13 +127,13 @@ class MeshIndex {
   /// Warms the cache for a query at `p` (its guessed cell's state byte), for callers'
   /// pipelines; no effect on any answer.
   void prefetch(Vec3 p) const {
-    if (state_.empty() || !bounds_.contains(p)) return;
+    if (packed_state_.empty() || !bounds_.contains(p)) return;
     const std::size_t cell =
         (static_cast<std::size_t>(z_.guess(p.z)) * static_cast<std::size_t>(ny_) +
          static_cast<std::size_t>(y_.guess(p.y))) *
             static_cast<std::size_t>(nx_) +
         static_cast<std::size_t>(x_.guess(p.x));
-    __builtin_prefetch(&state_[cell]);
+    __builtin_prefetch(&packed_state_[cell / 4]);
   }
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all). Deterministic.
@@ -204,6 +204,11 @@ class MeshIndex {
   template <class Cell>
   void list_triangles_by_cell_as();
   void settle_empty_cells();
+  void pack_states();
+  // A cell's state (as state_) from the packed copy: two bits a cell.
+  [[nodiscard]] std::uint8_t packed_state(std::size_t cell) const {
+    return static_cast<std::uint8_t>((packed_state_[cell / 4] >> (2 * (cell % 4))) & 3U);
+  }
 
   [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
@@ -234,6 +239,10 @@ class MeshIndex {
   // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
   // most queries read stays small in cache).
   HugePageVector<std::uint8_t> state_;
+  // The same states, four cells a byte (cell c: bits 2 (c % 4) and up of byte c / 4), read by the
+  // queries' first look at a cell: a quarter of the bytes (400 kB for the 1.6 M cells of 100k
+  // triangles) stays in the L2 cache while the points stream past, where state_ did not.
+  HugePageVector<std::uint8_t> packed_state_;
   // Per cell: where state 2, its surface cell number k; in an empty cell, its signed crossing
   // count (the winding number), as the two's complement bits of an int32.
   HugePageVector<std::uint32_t> surface_;
