@@ -601,7 +601,7 @@ bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
 int MeshIndex::count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
   int count = 0;
   for (int i = first; i < nx_; ++i) {
-    const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
+    const std::uint8_t state = packed_state(row + static_cast<std::size_t>(i));
     if (state < 2) {
       return count + static_cast<std::int32_t>(surface_[row + static_cast<std::size_t>(i)]);
     }
@@ -609,7 +609,7 @@ int MeshIndex::count_run(Vec3 q, std::size_t row, int first, bool q_in_first) co
     // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
     // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
     // (no hit can lie in its closed box).
-    const bool test_upper = i + 1 < nx_ && state_[row + static_cast<std::size_t>(i) + 1] == 2;
+    const bool test_upper = i + 1 < nx_ && packed_state(row + static_cast<std::size_t>(i) + 1) == 2;
     const Vec3 lower{x_.line(i), q.y, q.z};
     const Vec3 upper{x_.line(i + 1), q.y, q.z};
     const bool from_q = q_in_first && i == first;
@@ -759,7 +759,7 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
                               static_cast<std::size_t>(nx_);
       for (int i = i0; i < nx_; ++i) {
         const std::size_t c = row + static_cast<std::size_t>(i);
-        if (state_[c] != 2) continue;
+        if (packed_state(c) != 2) continue;
         const std::uint32_t cell = surface_[c];
         for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
           const CellRef& ref = refs_[r];
