@@ -85,7 +85,10 @@ struct MeshIndexOptions {
 /// surface may touch keeps its triangles; a query there follows its own ray along the row of
 /// cells until the first empty cell, whose winding number it adds, counting the perturbed hits
 /// inside each cell's half-open slab [X_i, X_i+1) of x (a hit exactly on a grid plane is decided
-/// by the same perturbation), so each hit is counted once.
+/// by the same perturbation), so each hit is counted once. (It takes the shortest of six such
+/// walks: along +x, or -x subtracting the hits behind it from the empty cell's number, or along
+/// y or z by the same rule on cyclically permuted coordinates; the winding number, and a count's
+/// parity, are the same whichever ray counts them.)
 ///
 /// Regime `winding_number` (any other mesh: border edges, unmatched edges): `boundary` exactly as
 /// a point on a triangle, else `inside` where the generalized winding number is >= 0.5
@@ -215,7 +218,10 @@ class MeshIndex {
            (p.z > r.hi[2]);
   }
   [[nodiscard]] bool on_triangle(const Tri& t, Vec3 p) const;
-  [[nodiscard]] int count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const;
+  // The signed crossing count of a point in a surface cell along an axis (mesh_index.cpp, "Walks").
+  template <int Axis>
+  [[nodiscard]] int count_walk(Vec3 p, std::size_t cell, int first, int step) const;
+  [[nodiscard]] int count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k) const;
   [[nodiscard]] Location locate_exact(Vec3 p) const;
   [[nodiscard]] Location locate_direct(Vec3 p) const;
   [[nodiscard]] Location locate_direct_on_surface(Vec3 p,
