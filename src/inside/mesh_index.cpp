@@ -733,13 +733,14 @@ std::optional<Location> MeshIndex::locate_settled(const Box3& box) const {
     return Location::outside;
   }
   if (state_.empty()) return std::nullopt;  // few queries: no grid
-  // Strictly between two lines on each axis (so within the bounds): cell_of gives every point of
-  // the box that cell, whose state, for an empty cell, holds in the whole closed cell.
-  const int i = x_.cell_of(std::max(box.min.x, bounds_.min.x));
+  // Strictly between two lines on each axis (so within the bounds): every point of the box lies
+  // in that cell, however it was found (the floating-point guess; where it is wrong, the test
+  // fails and the point is read in full), and an empty cell's state holds in its closed box.
+  const int i = x_.guess(box.min.x);
   if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
-  const int j = y_.cell_of(std::max(box.min.y, bounds_.min.y));
+  const int j = y_.guess(box.min.y);
   if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
-  const int k = z_.cell_of(std::max(box.min.z, bounds_.min.z));
+  const int k = z_.guess(box.min.z);
   if (!(z_.line(k) < box.min.z && box.max.z < z_.line(k + 1))) return std::nullopt;
   const std::size_t cell =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
