@@ -306,6 +306,7 @@ bool MeshIndex::prepare(const Mesh& mesh, const MeshIndexOptions& options) {
   read_triangles_by_cell(mesh);
   list_triangles_by_cell();
   settle_empty_cells();
+  pack_states();
   return false;
 }
 
@@ -564,6 +565,25 @@ void MeshIndex::settle_empty_cells() {
   }
 }
 
+// The states four to a byte (packed_state_).
+void MeshIndex::pack_states() {
+  const std::size_t cells = state_.size();
+  packed_state_ = HugePageVector<std::uint8_t>((cells + 3) / 4);
+  const std::uint8_t* const state = state_.data();
+  std::uint8_t* const packed = packed_state_.data();
+  std::size_t c = 0;
+  for (; c + 4 <= cells; c += 4) {
+    packed[c / 4] = static_cast<std::uint8_t>(state[c] | state[c + 1] << 2U | state[c + 2] << 4U |
+                                              state[c + 3] << 6U);
+  }
+  if (c < cells) {
+    unsigned last = 0;
+    for (std::size_t k = c; k < cells; ++k)
+      last |= static_cast<unsigned>(state[k]) << (2 * (k - c));
+    packed[c / 4] = static_cast<std::uint8_t>(last);
+  }
+}
+
 bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
   // Outside the outward-rounded box: certainly not on the triangle.
   if ((p.x < t.lo[0]) | (p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) |
@@ -574,41 +594,130 @@ bool MeshIndex::on_triangle(const Tri& t, Vec3 p) const {
   return point_in_triangle(Triangle3{t.a, t.b, t.c}, p) != Location::outside;
 }
 
-// Signed count of the perturbed hits of the +x ray from q through the cells first, first + 1,
-// ... of the row until an empty cell (its count is added) or the end of the grid (nothing
-// beyond). q lies in cell `first` when q_in_first, else at or left of its lower plane in an
-// empty cell.
-int MeshIndex::count_run(Vec3 q, std::size_t row, int first, bool q_in_first) const {
-  int count = 0;
-  for (int i = first; i < nx_; ++i) {
-    const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
-    if (state < 2) {
-      return count + static_cast<std::int32_t>(surface_[row + static_cast<std::size_t>(i)]);
+namespace {
+
+// The coordinates of v cyclically permuted so that axis `Axis` comes first: (x, y, z), (y, z, x)
+// or (z, x, y). A cyclic permutation keeps orientations (every orient3d and orient2d sign), so the
+// perturbed +x ray rule applied to permuted points is the same rule for a ray along +y or +z (its
+// origin moved symbolically along the next two axes), and a crossing's sign, the sign of the
+// normal's component along the ray, counts the winding number as along x.
+template <int Axis>
+Vec3 axis_first(Vec3 v) {
+  if constexpr (Axis == 0) {
+    return v;
+  } else if constexpr (Axis == 1) {
+    return {v.y, v.z, v.x};
+  } else {
+    return {v.z, v.x, v.y};
+  }
+}
+
+double coordinate(Vec3 v, int axis) {
+  return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+
+}  // namespace
+
+// Walks. A point p in a surface cell, not on the surface, has the winding number of every point
+// near it, and the winding number is the signed count of the perturbed hits of any ray from p
+// along an axis (the rule above, on permuted coordinates for y and z), or of the line's part
+// behind p subtracted from the count of a point behind: W(p) = W(q) - (hits at or before p and
+// beyond q) for q on the same line behind p. An empty cell's stored count is the winding number
+// of every point of its closed box and of points infinitely near it (no surface meets the closed
+// box; for a mesh read by parity, a count of the parity of every such point), so a walk from p's
+// cell along an axis, either way, stops at the first empty cell and adds (ahead) or subtracts
+// from (behind) its count the hits in the surface cells between; off the grid the count is 0.
+// Each hit is counted in one slab [L_m, L_m+1) of the walk's axis (hit_side at the planes, the
+// perturbation deciding hits exactly on one); a plane next to an empty cell needs no test (no
+// hit lies in the empty cell's closed box, and a triangle listed here with a hit beyond it
+// would meet it: the row's argument in mesh_index.h). locate_exact takes the walk through the
+// fewest cells (the states are in cache): in the 100k torus (10^6 random points, 39,556 in
+// surface cells) 1.9 cells a walk, where along +x alone it was 6.5 (23% of the runs 7 cells or
+// more: where the surface lies flat along x).
+template <int Axis>
+int MeshIndex::count_walk(Vec3 p, std::size_t cell, int first, int step) const {
+  const GridAxis& axis = Axis == 0 ? x_ : (Axis == 1 ? y_ : z_);
+  const int n = axis.cells();
+  const std::ptrdiff_t stride =
+      Axis == 0 ? 1
+                : (Axis == 1 ? static_cast<std::ptrdiff_t>(nx_)
+                             : static_cast<std::ptrdiff_t>(nx_) * static_cast<std::ptrdiff_t>(ny_));
+  constexpr int d1 = (Axis + 1) % 3, d2 = (Axis + 2) % 3;  // the other two axes
+  const double u = coordinate(p, d1), v = coordinate(p, d2);
+  const Vec3 q = axis_first<Axis>(p);
+  int between = 0;  // the signed hits counted so far
+  for (int m = first; m >= 0 && m < n; m += step) {
+    const auto c = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) +
+                                            static_cast<std::ptrdiff_t>(m - first) * stride);
+    if (packed_state(c) < 2) {
+      const auto count = static_cast<std::int32_t>(surface_[c]);
+      return step > 0 ? between + count : count - between;
     }
-    const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
-    // The slab's upper plane needs no test where nothing lies beyond it in this row's sense: at
-    // the end of the grid (hits at x = max are in the last, closed slab) or before an empty cell
-    // (no hit can lie in its closed box).
-    const bool test_upper = i + 1 < nx_ && state_[row + static_cast<std::size_t>(i) + 1] == 2;
-    const Vec3 lower{x_.line(i), q.y, q.z};
-    const Vec3 upper{x_.line(i + 1), q.y, q.z};
-    const bool from_q = q_in_first && i == first;
-    for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
+    // Ahead (step +1): hits beyond p in p's cell, else at or beyond the lower plane; below the
+    // upper plane unless the next cell is empty or there is none. Behind (step -1): hits at or
+    // before p in p's cell, else below the upper plane; at or beyond the lower plane unless the
+    // cell before is empty or there is none.
+    const bool has_next =
+        m + 1 < n &&
+        packed_state(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + stride)) == 2;
+    const bool has_before =
+        m > 0 &&
+        packed_state(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) - stride)) == 2;
+    const bool test_lower = step > 0 ? m != first : has_before;
+    const bool test_upper = step > 0 ? has_next : m != first;
+    const Vec3 lower{axis.line(m), q.y, q.z};
+    const Vec3 upper{axis.line(m + 1), q.y, q.z};
+    const std::uint32_t k = surface_[c];
+    for (std::uint32_t r = cell_start_[k]; r < cell_start_[k + 1]; ++r) {
       const CellRef& ref = refs_[r];
-      if ((q.y < ref.lo[1]) | (q.y > ref.hi[1]) | (q.z < ref.lo[2]) | (q.z > ref.hi[2])) continue;
+      if ((u < ref.lo[d1]) | (u > ref.hi[d1]) | (v < ref.lo[d2]) | (v > ref.hi[d2])) continue;
       const Tri& t = tris_[ref.tri];
-      if (t.s == Sign::zero || !predicates::perturbed_line_hits_unboxed(t.a, t.b, t.c, t.s, q)) {
-        continue;
+      const Vec3 a = axis_first<Axis>(t.a), b = axis_first<Axis>(t.b), cc = axis_first<Axis>(t.c);
+      const Sign s = Axis == 0 ? t.s : predicates::projected_sign(a, b, cc);
+      if (s == Sign::zero || !predicates::perturbed_line_hits_unboxed(a, b, cc, s, q)) continue;
+      if (m == first) {
+        const int side = predicates::hit_side(a, b, cc, s, q);
+        if (step > 0 ? side <= 0 : side > 0) continue;
       }
-      if (from_q ? predicates::hit_side(t.a, t.b, t.c, t.s, q) <= 0
-                 : predicates::hit_side(t.a, t.b, t.c, t.s, lower) < 0) {
-        continue;
-      }
-      if (test_upper && predicates::hit_side(t.a, t.b, t.c, t.s, upper) >= 0) continue;
-      count += to_int(t.s);
+      if (test_lower && predicates::hit_side(a, b, cc, s, lower) < 0) continue;
+      if (test_upper && predicates::hit_side(a, b, cc, s, upper) >= 0) continue;
+      between += to_int(s);
     }
   }
-  return count;
+  return step > 0 ? between : -between;  // off the grid: nothing beyond
+}
+
+// The signed crossing count of p (in surface cell `cell`, (i, j, k), not on the surface) by the
+// walk through the fewest cells (a walk's length: its surface cells and the empty cell that ends
+// it, read from the packed states); +x first, which wins ties.
+int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k) const {
+  const std::array<int, 3> at{i, j, k};
+  const std::array<int, 3> size{nx_, ny_, nz_};
+  const std::array<std::ptrdiff_t, 3> stride{
+      1, static_cast<std::ptrdiff_t>(nx_),
+      static_cast<std::ptrdiff_t>(nx_) * static_cast<std::ptrdiff_t>(ny_)};
+  int best_axis = 0, best_step = 1, best = std::numeric_limits<int>::max();
+  for (const int axis : {0, 2, 1}) {
+    for (const int step : {1, -1}) {
+      const auto a = static_cast<std::size_t>(axis);
+      int length = 0;
+      auto c = static_cast<std::ptrdiff_t>(cell);
+      for (int m = at[a]; m >= 0 && m < size[a] && length < best;
+           m += step, c += step * stride[a]) {
+        ++length;
+        if (packed_state(static_cast<std::size_t>(c)) < 2) break;
+      }
+      if (length < best) {
+        best = length;
+        best_axis = axis;
+        best_step = step;
+      }
+    }
+  }
+  const int first = at[static_cast<std::size_t>(best_axis)];
+  if (best_axis == 0) return count_walk<0>(p, cell, first, best_step);
+  if (best_axis == 1) return count_walk<1>(p, cell, first, best_step);
+  return count_walk<2>(p, cell, first, best_step);
 }
 
 Location MeshIndex::locate(Vec3 p) const {
@@ -624,19 +733,20 @@ std::optional<Location> MeshIndex::locate_settled(const Box3& box) const {
     return Location::outside;
   }
   if (state_.empty()) return std::nullopt;  // few queries: no grid
-  // Strictly between two lines on each axis (so within the bounds): cell_of gives every point of
-  // the box that cell, whose state, for an empty cell, holds in the whole closed cell.
-  const int i = x_.cell_of(std::max(box.min.x, bounds_.min.x));
+  // Strictly between two lines on each axis (so within the bounds): every point of the box lies
+  // in that cell, however it was found (the floating-point guess; where it is wrong, the test
+  // fails and the point is read in full), and an empty cell's state holds in its closed box.
+  const int i = x_.guess(box.min.x);
   if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
-  const int j = y_.cell_of(std::max(box.min.y, bounds_.min.y));
+  const int j = y_.guess(box.min.y);
   if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
-  const int k = z_.cell_of(std::max(box.min.z, bounds_.min.z));
+  const int k = z_.guess(box.min.z);
   if (!(z_.line(k) < box.min.z && box.max.z < z_.line(k + 1))) return std::nullopt;
   const std::size_t cell =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
           static_cast<std::size_t>(nx_) +
       static_cast<std::size_t>(i);
-  const std::uint8_t state = state_[cell];
+  const std::uint8_t state = packed_state(cell);
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   return std::nullopt;
 }
@@ -650,7 +760,7 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   const std::size_t row =
       (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) + static_cast<std::size_t>(j)) *
       static_cast<std::size_t>(nx_);
-  const std::uint8_t state = state_[row + static_cast<std::size_t>(i)];
+  const std::uint8_t state = packed_state(row + static_cast<std::size_t>(i));
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
@@ -661,7 +771,8 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   // On the top faces of the box the perturbed ray leaves the grid's rows: it meets nothing, and
   // a point there that is not on the surface is outside (the solid's interior is open).
   if (p.y == bounds_.max.y || p.z == bounds_.max.z) return Location::outside;
-  return inside_by_count(count_run(p, row, i, true)) ? Location::inside : Location::outside;
+  const int count = count_shortest_walk(p, row + static_cast<std::size_t>(i), i, j, k);
+  return inside_by_count(count) ? Location::inside : Location::outside;
 }
 
 namespace {
@@ -739,7 +850,7 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
                               static_cast<std::size_t>(nx_);
       for (int i = i0; i < nx_; ++i) {
         const std::size_t c = row + static_cast<std::size_t>(i);
-        if (state_[c] != 2) continue;
+        if (packed_state(c) != 2) continue;
         const std::uint32_t cell = surface_[c];
         for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
           const CellRef& ref = refs_[r];
@@ -816,7 +927,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
     // The surface cell of the guessed cell of point q, or -1.
     auto surface_cell = [&](std::size_t q) -> std::ptrdiff_t {
       const std::ptrdiff_t c = guessed[q % kAhead];
-      if (c < 0 || state_[static_cast<std::size_t>(c)] != 2) return -1;
+      if (c < 0 || packed_state(static_cast<std::size_t>(c)) != 2) return -1;
       return c;
     };
     for (std::size_t q = begin; q < std::min(end, begin + kAhead); ++q)
@@ -860,7 +971,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
         const std::ptrdiff_t c = guess(points[q + kAhead]);
         guessed[q % kAhead] = c;
         if (c >= 0) {
-          __builtin_prefetch(&state_[static_cast<std::size_t>(c)]);
+          __builtin_prefetch(&packed_state_[static_cast<std::size_t>(c) / 4]);
         }
       }
     }

@@ -217,6 +217,7 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
     const MeshIndex::Tri& t = index.tris_[refs[i]];
     index.refs_[i] = {{t.lo[0], t.lo[1], t.lo[2]}, {t.hi[0], t.hi[1], t.hi[2]}, refs[i]};
   }
+  index.pack_states();
   index.stats_.nx = index.nx_;
   index.stats_.ny = index.ny_;
   index.stats_.nz = index.nz_;

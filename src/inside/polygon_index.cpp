@@ -265,7 +265,17 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
     edges_.push_back({edges[k].a, edges[k].b});
   stats_.edge_refs = edges_.size();
   settle_cells(lists.start, corner_windings(edges, x_, y_));
+  pack_states();
   stats_.edge_cells = edge_cells_.size();
+}
+
+void PolygonIndex::pack_states() {
+  packed_states_.assign((cells_.size() + 3) / 4, 0);
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    const unsigned state = std::min<std::uint32_t>(cells_[c], 2);
+    packed_states_[c / 4] =
+        static_cast<std::uint8_t>(packed_states_[c / 4] | state << (2 * (c % 4)));
+  }
 }
 
 void PolygonIndex::settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner) {
@@ -319,13 +329,17 @@ std::optional<Location> PolygonIndex::locate_settled(const Box2& box) const {
     return Location::outside;
   }
   if (cells_.empty()) return std::nullopt;
-  // Strictly between two lines on each axis: cell_of gives every point of the box that cell.
-  const int i = x_.cell_of(std::max(box.min.x, bounds_.min.x));
+  // Strictly between two lines on each axis: every point of the box lies in that cell, however
+  // the cell was found (the floating-point guess; where it is wrong, the test fails and the
+  // point is read in full).
+  const int i = x_.guess(box.min.x);
   if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
-  const int j = y_.cell_of(std::max(box.min.y, bounds_.min.y));
+  const int j = y_.guess(box.min.y);
   if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
-  const std::uint32_t code = cells_[static_cast<std::size_t>(j * x_.cells() + i)];
-  if (code < 2) return code == 1 ? Location::inside : Location::outside;
+  const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
+                 static_cast<std::size_t>(i);
+  const unsigned state = (packed_states_[c / 4] >> (2 * (c % 4))) & 3U;
+  if (state < 2) return state == 1 ? Location::inside : Location::outside;
   return std::nullopt;
 }
 
@@ -356,8 +370,9 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
 
 std::size_t PolygonIndex::memory_bytes() const {
   return sizeof(*this) + (x_.lines().size() + y_.lines().size()) * sizeof(double) +
-         cells_.capacity() * sizeof(std::uint32_t) + edge_cells_.capacity() * sizeof(EdgeCell) +
-         edges_.capacity() * sizeof(CellEdge) + side_edges_.capacity() * sizeof(SideEdge);
+         cells_.capacity() * sizeof(std::uint32_t) + packed_states_.capacity() +
+         edge_cells_.capacity() * sizeof(EdgeCell) + edges_.capacity() * sizeof(CellEdge) +
+         side_edges_.capacity() * sizeof(SideEdge);
 }
 
 std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {

@@ -85,13 +85,14 @@ class PolygonIndex {
   /// given is `locate(p)` for every p in the box. O(1).
   [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const;
 
-  /// Warms the cache for a query at `point` (its guessed cell's word), for callers' pipelines;
+  /// Warms the cache for a query at `point` (its guessed cell's state), for callers' pipelines;
   /// no effect on any answer.
   void prefetch(Vec2 point) const {
     if (!bounds_.contains(point)) return;  // also: no grid
-    __builtin_prefetch(
-        &cells_[static_cast<std::size_t>(y_.guess(point.y)) * static_cast<std::size_t>(x_.cells()) +
-                static_cast<std::size_t>(x_.guess(point.x))]);
+    __builtin_prefetch(&packed_states_[(static_cast<std::size_t>(y_.guess(point.y)) *
+                                            static_cast<std::size_t>(x_.cells()) +
+                                        static_cast<std::size_t>(x_.guess(point.x))) /
+                                       4]);
   }
 
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
@@ -140,6 +141,8 @@ class PolygonIndex {
   // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
   void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
   [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const;  // -1 outside the box
+  // packed_states_ from cells_ (after construction and after loading).
+  void pack_states();
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
 
   Fill fill_ = Fill::even_odd;
@@ -147,6 +150,11 @@ class PolygonIndex {
   GridAxis x_, y_;  // the grid's columns and rows
   // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: edge_cells_[k - 2].
   std::vector<std::uint32_t> cells_;
+  // The same cells' states four to a byte (0 outside, 1 inside, 2 an edge cell; cell c in bits
+  // 2 (c % 4) and up of byte c / 4), read by locate_settled: 16 kB for the 2^16 cells of a small
+  // region queried 10^6 times stays in the L1 and L2 caches while the points stream past, where the
+  // 256 kB of cells_ did not.
+  std::vector<std::uint8_t> packed_states_;
   std::vector<EdgeCell> edge_cells_;
   std::vector<CellEdge> edges_;
   std::vector<SideEdge> side_edges_;
