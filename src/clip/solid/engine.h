@@ -212,6 +212,10 @@ enum class Neighbours : std::uint8_t { proven, tested };
 struct Sheets {
   std::vector<std::array<std::int32_t, 3>> faces;
   std::vector<std::int32_t> points;
+  /// Every edge of the given faces is held by exactly two of them, in opposite directions: then
+  /// each directed edge of `faces` occurs once and its reverse once (the two faces of an edge
+  /// share their renumbered corners at both its ends, and only they map to that edge's points).
+  bool paired = false;
 };
 [[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                                      const PointStore& store);

@@ -92,6 +92,12 @@ std::vector<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
                 [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
   // Faces are numbered in 32 bits (EdgeUses): sets of half the size of std::size_t ones.
   UnionFind<std::uint32_t> sets(r.faces.size());
+  // The lower points of the curve edges: most edges have none there and skip the search.
+  std::vector<char> starts_curve(uses.start.size(), 0);
+  for (const std::uint64_t e : r.curve_edges) {
+    const std::size_t lo = e >> 32U;
+    if (lo < starts_curve.size()) starts_curve[lo] = 1;
+  }
   for_each_edge(uses, [&](std::int32_t a, std::int32_t b, std::span<const std::uint64_t> group) {
     if (group.size() != 2) return;
     const std::uint32_t x = EdgeUses::face(group[0]), y = EdgeUses::face(group[1]);
@@ -104,7 +110,8 @@ std::vector<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
     if (forward_x != forward_y &&
         soup.input[static_cast<std::size_t>(r.faces[x].triangle)] ==
             soup.input[static_cast<std::size_t>(r.faces[y].triangle)] &&
-        !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), edge_key(a, b))) {
+        (starts_curve[static_cast<std::size_t>(a)] == 0 ||
+         !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), edge_key(a, b)))) {
       sets.unite(x, y);
     }
   });

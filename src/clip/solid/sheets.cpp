@@ -231,9 +231,16 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     return Use{face, a < b ? k : (k + 1) % 3, a < b};
   };
   Grouping grouping{UnionFind<std::size_t>(3 * faces.size()), {}};
+  bool paired = true;
   for_each_edge(uses, [&](std::int32_t p, std::int32_t q, std::span<const std::uint64_t> group) {
-    if (group.size() == 2) join_across(grouping.manifold, use(p, q, group, 0), use(p, q, group, 1));
-    if (group.size() <= 2) return;  // a single face is left to the check
+    if (group.size() == 2) {
+      const Use a = use(p, q, group, 0), b = use(p, q, group, 1);
+      paired = paired && a.forward != b.forward;
+      join_across(grouping.manifold, a, b);
+      return;
+    }
+    paired = false;
+    if (group.size() < 2) return;  // a single face is left to the check
     std::vector<Use> list;
     for (std::size_t k = 0; k < group.size(); ++k)
       list.push_back(use(p, q, group, k));
@@ -246,6 +253,7 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     corners = grouping.corners();
   }
   Sheets out;
+  out.paired = paired;
   std::vector<std::int32_t> vertex(3 * faces.size(), -1);  // of each corner set's root
   out.faces.reserve(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {

@@ -223,6 +223,7 @@ bool written_exactly(const ExactPoint& p) {
 struct Written {
   Mesh mesh;
   std::vector<bool> kept;
+  Edges edges = Edges::checked;  // known_matched when the sheets found every edge paired
 };
 
 // The faces' mesh with points merged by `rep`, sheets kept apart.
@@ -233,6 +234,7 @@ Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
   for (const std::int32_t point : rep.ids)
     merged[static_cast<std::size_t>(rep.at(point))] += written_exactly(store.point(point)) ? 1 : 2;
   Written out;
+  out.edges = sheets.paired ? Edges::known_matched : Edges::checked;
   out.mesh.vertices.reserve(sheets.points.size());
   out.kept.reserve(sheets.points.size());
   for (const std::int32_t p : sheets.points) {
@@ -338,7 +340,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
                         std::size_t* rounds) {
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
   std::vector<std::int32_t> crossing;
-  Status valid = check_written(written.mesh, written.kept, &crossing);
+  Status valid = check_written(written.mesh, written.kept, &crossing, written.edges);
   const std::size_t limit = 2 * written.mesh.triangles.size() + 64;
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
     if (rounds != nullptr) *rounds = round + 1;
@@ -349,7 +351,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
       return not_converging(written.mesh.triangles.size(), "wrote triangles:", limit);
     }
     crossing.clear();
-    valid = check_written(written.mesh, written.kept, &crossing);
+    valid = check_written(written.mesh, written.kept, &crossing, written.edges);
   }
   if (!valid) {
     return Error{.kind = ErrorKind::degenerate,

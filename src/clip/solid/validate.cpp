@@ -435,8 +435,8 @@ Status check_written(const Mesh& mesh) {
 }
 
 Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
-                     std::vector<std::int32_t>* crossing) {
-  if (!edges_matched(mesh)) {
+                     std::vector<std::int32_t>* crossing, Edges edges) {
+  if (edges == Edges::checked && !edges_matched(mesh)) {
     // No pair is known to be the cause: every triangle is the region to repair.
     for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
       crossing->push_back(static_cast<std::int32_t>(t));
