@@ -159,22 +159,28 @@ std::vector<std::size_t> partners(const Fan& fan) {
   return partner;
 }
 
-void join_across(UnionFind<std::size_t>& sets, const Use& a, const Use& b) {
-  sets.unite(3 * a.face + static_cast<std::size_t>(a.corner),
-             3 * b.face + static_cast<std::size_t>(b.corner));
-  sets.unite(3 * a.face + static_cast<std::size_t>(q_corner(a)),
-             3 * b.face + static_cast<std::size_t>(q_corner(b)));
+// The faces' corners (3 face + k) in sets of 32-bit numbers, half the memory of std::size_t
+// ones: the written vertices, one per set, are numbered in 32 bits anyway.
+using CornerSets = UnionFind<std::uint32_t>;
+
+std::uint32_t corner_number(std::size_t face, int k) {
+  return static_cast<std::uint32_t>(3 * face + static_cast<std::size_t>(k));
+}
+
+void join_across(CornerSets& sets, const Use& a, const Use& b) {
+  sets.unite(corner_number(a.face, a.corner), corner_number(b.face, b.corner));
+  sets.unite(corner_number(a.face, q_corner(a)), corner_number(b.face, q_corner(b)));
 }
 
 struct Grouping {
   // The corners joined across the edges held by two faces, joined as they are found (no list
   // of the pairs: one per edge of the result); the sets depend only on which corners are
   // joined, not on the order (UnionFind's representative is the smallest element).
-  UnionFind<std::size_t> manifold;
+  CornerSets manifold;
   std::vector<Fan> fans;
 
-  [[nodiscard]] UnionFind<std::size_t> corners() const {
-    UnionFind<std::size_t> sets = manifold;
+  [[nodiscard]] CornerSets corners() const {
+    CornerSets sets = manifold;
     for (const Fan& fan : fans) {
       const std::vector<std::size_t> partner = partners(fan);
       for (std::size_t i = 0; i < fan.sorted.size(); ++i) {
@@ -186,14 +192,14 @@ struct Grouping {
 
   // Fans whose passes end in the same vertex pair (the edge would be written twice) move on to
   // their next pairing; false when there was none.
-  bool shift_pinched(UnionFind<std::size_t>& sets) {
+  bool shift_pinched(CornerSets& sets) {
     bool any = false;
     for (Fan& fan : fans) {
-      std::vector<std::pair<std::size_t, std::size_t>> ends;
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
       for (const Use& u : fan.sorted) {
         if (u.forward) continue;
-        ends.emplace_back(sets.find(3 * u.face + static_cast<std::size_t>(u.corner)),
-                          sets.find(3 * u.face + static_cast<std::size_t>(q_corner(u))));
+        ends.emplace_back(sets.find(corner_number(u.face, u.corner)),
+                          sets.find(corner_number(u.face, q_corner(u))));
       }
       std::sort(ends.begin(), ends.end());
       if (std::adjacent_find(ends.begin(), ends.end()) != ends.end()) {
@@ -230,7 +236,7 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                        b = faces[face][static_cast<std::size_t>((k + 1) % 3)];
     return Use{face, a < b ? k : (k + 1) % 3, a < b};
   };
-  Grouping grouping{UnionFind<std::size_t>(3 * faces.size()), {}};
+  Grouping grouping{CornerSets(3 * faces.size()), {}};
   bool paired = true;
   for_each_edge(uses, [&](std::int32_t p, std::int32_t q, std::span<const std::uint64_t> group) {
     if (group.size() == 2) {
@@ -248,7 +254,7 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     grouping.fans.push_back({edge_key(p, q), std::move(list), 0});
   });
   // Visited in key order already (the same output on every platform).
-  UnionFind<std::size_t> corners = grouping.corners();
+  CornerSets corners = grouping.corners();
   for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
     corners = grouping.corners();
   }
@@ -259,7 +265,7 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<std::int32_t, 3> t{};
     for (std::size_t k = 0; k < 3; ++k) {
-      std::int32_t& v = vertex[corners.find(3 * f + k)];
+      std::int32_t& v = vertex[corners.find(corner_number(f, static_cast<int>(k)))];
       if (v < 0) {
         v = static_cast<std::int32_t>(out.points.size());
         out.points.push_back(faces[f][k]);

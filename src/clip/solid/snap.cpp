@@ -42,6 +42,7 @@
 #include "clip/solid/result_boundary.h"
 #include "clip/solid/validate.h"
 #include "contain/bvh/bvh.h"
+#include "contain/core/sort_few.h"
 #include "contain/core/union_find.h"
 #include "contain/values/box.h"
 
@@ -96,12 +97,14 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
         static_cast<std::uint32_t>(i),
         t[1] > t[2]};
   }
+  // By insertion (sort_few): a corner has a few faces, where std::sort's set-up cost more than
+  // the sorting; (key, face) pairs are distinct, so any sort gives this order.
   for (std::size_t p = 0; p < points; ++p) {
-    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start[p]),
-              keys.begin() + static_cast<std::ptrdiff_t>(start[p + 1]),
-              [](const CornerKey& x, const CornerKey& y) {
-                return x.key != y.key ? x.key < y.key : x.face < y.face;
-              });
+    sort_few(keys.begin() + static_cast<std::ptrdiff_t>(start[p]),
+             keys.begin() + static_cast<std::ptrdiff_t>(start[p + 1]), 16,
+             [](const CornerKey& x, const CornerKey& y) {
+               return x.key != y.key ? x.key < y.key : x.face < y.face;
+             });
   }
   // Cancel opposite pairs in face order: a face cancels the latest still open face of the
   // other direction among the earlier ones (as a stack of each direction per key).
