@@ -212,10 +212,25 @@ bool edges_matched(const Mesh& mesh) {
   return true;
 }
 
+// The box of each written triangle, computed when asked (a stored box per triangle was 48
+// bytes each, megabytes of fresh pages for a large result): empty for a zero-area triangle.
+struct TriangleBoxes {
+  const Mesh& mesh;
+  const std::vector<char>& flat;  // zero area
+  [[nodiscard]] std::size_t size() const { return flat.size(); }
+  [[nodiscard]] Box3 operator[](std::size_t t) const {
+    Box3 box;
+    if (flat[t] != 0) return box;
+    for (const std::int32_t v : mesh.triangles[t])
+      box.expand(mesh.vertex(v));
+    return box;
+  }
+};
+
 // The triangles whose boxes meet the box of a triangle of `rounded` (those included): every
 // triangle that can meet one of them. A hierarchy over the rounded triangles' boxes only, one
 // query per triangle.
-std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
+std::vector<std::int32_t> neighbourhood(const TriangleBoxes& boxes,
                                         const std::vector<std::int32_t>& rounded) {
   if (rounded.size() == boxes.size()) return rounded;
   std::vector<Box3> own;
@@ -227,7 +242,7 @@ std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
   const bvh::Bvh tree(own, {.method = bvh::BuildMethod::morton});
   std::vector<std::int32_t> near;
   for (std::size_t t = 0; t < boxes.size(); ++t) {
-    const Box3& box = boxes[t];
+    const Box3 box = boxes[t];
     if (!tree.bounds().overlaps(box)) continue;
     const bvh::TraversalStats seen =
         tree.traverse([&](const bvh::Node& node, std::int32_t) { return node.box.overlaps(box); },
@@ -243,7 +258,7 @@ std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
 // The soup of the triangles `chosen` of the written mesh (none of zero area), welded by
 // position as the pair stage needs: sheets kept apart at one position share corners there.
 Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
-                const std::vector<Box3>& boxes) {
+                const TriangleBoxes& boxes) {
   Soup soup;
   soup.inputs = 1;
   // Welded by the flat table of the engine's soups (PointTable: +0 and -0 one key), not a
@@ -467,25 +482,24 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
     return failure("an edge is not matched by exactly one opposite edge");
   }
   Status status = Ok{};
-  std::vector<Box3> boxes(mesh.triangles.size());  // empty for a zero-area triangle
-  std::vector<std::int32_t> rounded;               // triangles with a corner that is not kept
+  std::vector<char> flat(mesh.triangles.size(), 0);  // zero area
+  std::vector<std::int32_t> rounded;                 // triangles with a corner that is not kept
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]), b = mesh.vertex(v[1]), c = mesh.vertex(v[2]);
     if (zero_area(a, b, c)) {
       if (crossing == nullptr) return failure("a triangle has zero area");
       status = failure("a triangle has zero area");
+      flat[t] = 1;
       continue;
     }
-    boxes[t].expand(a);
-    boxes[t].expand(b);
-    boxes[t].expand(c);
     if (!kept[static_cast<std::size_t>(v[0])] || !kept[static_cast<std::size_t>(v[1])] ||
         !kept[static_cast<std::size_t>(v[2])]) {
       rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
   if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
+  const TriangleBoxes boxes{mesh, flat};
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
   // Pairs of two triangles with every corner kept need no test (above); each other pair whose
