@@ -254,7 +254,8 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
     grouping.fans.push_back({edge_key(p, q), std::move(list), 0});
   });
   // Visited in key order already (the same output on every platform).
-  CornerSets corners = grouping.corners();
+  // With no fans the manifold sets are the corner sets (no copy of them).
+  CornerSets corners = grouping.fans.empty() ? std::move(grouping.manifold) : grouping.corners();
   for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
     corners = grouping.corners();
   }

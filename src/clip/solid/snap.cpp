@@ -109,6 +109,7 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
   // Cancel opposite pairs in face order: a face cancels the latest still open face of the
   // other direction among the earlier ones (as a stack of each direction per key).
   std::vector<bool> gone(merged.size(), false);
+  bool any_gone = false;
   std::array<std::vector<std::uint32_t>, 2> open;
   for (std::size_t i = 0, j = 0; i < keys.size(); i = j) {
     while (j < keys.size() && keys[j].key == keys[i].key)
@@ -120,12 +121,14 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
       if (!other.empty()) {
         gone[other.back()] = true;
         gone[keys[k].face] = true;
+        any_gone = true;
         other.pop_back();
       } else {
         open[keys[k].reversed ? 1 : 0].push_back(keys[k].face);
       }
     }
   }
+  if (!any_gone) return merged;  // most results: no copy
   std::vector<std::array<std::int32_t, 3>> out;
   out.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
