@@ -230,7 +230,9 @@ Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
   const auto use = [&](std::int32_t p, std::int32_t q, std::span<const std::uint64_t> group,
                        std::size_t i) {
     const std::uint32_t face = EdgeUses::face(group[i]);
-    const int nth = i > 0 && EdgeUses::face(group[i - 1]) == face ? 1 : 0;
+    int nth = 0;  // the face's uses before this one (a face {a, a, a} holds its edge thrice)
+    for (std::size_t j = i; j > 0 && EdgeUses::face(group[j - 1]) == face; --j)
+      ++nth;
     const int k = corner_of_edge(faces[face], p, q, nth);
     const std::int32_t a = faces[face][static_cast<std::size_t>(k)],
                        b = faces[face][static_cast<std::size_t>((k + 1) % 3)];
