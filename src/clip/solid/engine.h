@@ -26,7 +26,6 @@
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
-#include "contain/core/sort_few.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 
@@ -139,56 +138,6 @@ class PointStore {
 }
 inline constexpr std::uint64_t no_edge = ~std::uint64_t{0};
 
-/// One use of an undirected edge by a face: the edge's key, the face, and its corner k (the
-/// edge runs from corner k to corner k + 1). 16 bytes: faces are numbered in 32 bits as points
-/// are, and the arrays of every use (three corners of every face) are a large part of the
-/// labels', merging's and sheets' memory traffic.
-struct EdgeUse {
-  std::uint64_t key;
-  std::uint32_t face;
-  std::int32_t k;
-  bool operator<(const EdgeUse& o) const {
-    return key != o.key ? key < o.key : (face != o.face ? face < o.face : k < o.k);
-  }
-};
-
-/// Every edge use of `faces` (indexable, each a face's three corner numbers by
-/// `corners(face) -> const std::array<std::int32_t, 3>&`), sorted by (edge, face, corner): a
-/// counting sort by the edge's lower point, then each point's few uses sorted (one sort of
-/// all uses was a third of the labels' time, and a tenth of the merging of coplanar faces).
-template <class Corners>
-[[nodiscard]] std::vector<EdgeUse> sorted_edge_uses(std::size_t faces, Corners&& corners) {
-  std::size_t points = 0;
-  for (std::size_t f = 0; f < faces; ++f) {
-    for (const std::int32_t p : corners(f))
-      points = std::max(points, static_cast<std::size_t>(p) + 1);
-  }
-  std::vector<std::size_t> start(points + 1, 0);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const auto& v = corners(f);
-    for (std::size_t k = 0; k < 3; ++k)
-      ++start[static_cast<std::size_t>(std::min(v[k], v[(k + 1) % 3])) + 1];
-  }
-  for (std::size_t i = 1; i < start.size(); ++i)
-    start[i] += start[i - 1];
-  std::vector<EdgeUse> uses(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const auto& v = corners(f);
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t a = v[k], b = v[(k + 1) % 3];
-      uses[next[static_cast<std::size_t>(std::min(a, b))]++] = {
-          edge_key(a, b), static_cast<std::uint32_t>(f), static_cast<std::int32_t>(k)};
-    }
-  }
-  // Each point's uses (about six on a mesh; a fan's apex more).
-  for (std::size_t i = 0; i + 1 < start.size(); ++i) {
-    sort_few(uses.begin() + static_cast<std::ptrdiff_t>(start[i]),
-             uses.begin() + static_cast<std::ptrdiff_t>(start[i + 1]), 16);
-  }
-  return uses;
-}
-
 /// A segment (or a point, a == b) that a triangle must have as edges of its refinement.
 struct Constraint {
   std::int32_t a = 0, b = 0;
@@ -263,6 +212,10 @@ enum class Neighbours : std::uint8_t { proven, tested };
 struct Sheets {
   std::vector<std::array<std::int32_t, 3>> faces;
   std::vector<std::int32_t> points;
+  /// Every edge of the given faces is held by exactly two of them, in opposite directions: then
+  /// each directed edge of `faces` occurs once and its reverse once (the two faces of an edge
+  /// share their renumbered corners at both its ends, and only they map to that edge's points).
+  bool paired = false;
 };
 [[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                                      const PointStore& store);

@@ -17,9 +17,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <span>
 #include <vector>
 
+#include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
 #include "contain/core/next_double.h"
@@ -85,32 +86,38 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
 }
 
 // Patch of each face (a representative face number).
-std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
-  const std::vector<EdgeUse> uses = sorted_edge_uses(
-      r.faces.size(),
-      [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
-  // a < b in the face's direction
-  const auto forward = [&](const EdgeUse& u) {
-    const auto& v = r.faces[u.face].v;
-    return v[static_cast<std::size_t>(u.k)] < v[static_cast<std::size_t>((u.k + 1) % 3)];
-  };
-  UnionFind<std::size_t> sets(r.faces.size());
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].key == uses[i].key)
-      ++j;
-    const EdgeUse& x = uses[i];
-    const EdgeUse& y = uses[i + 1 < j ? i + 1 : i];
-    const bool pair = j - i == 2 && forward(x) != forward(y) &&
-                      soup.input[static_cast<std::size_t>(r.faces[x.face].triangle)] ==
-                          soup.input[static_cast<std::size_t>(r.faces[y.face].triangle)] &&
-                      !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), x.key);
-    if (pair) sets.unite(x.face, y.face);
-    i = j;
+std::vector<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
+  const EdgeUses uses =
+      edge_uses(r.faces.size(),
+                [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
+  // Faces are numbered in 32 bits (EdgeUses): sets of half the size of std::size_t ones.
+  UnionFind<std::uint32_t> sets(r.faces.size());
+  // The lower points of the curve edges: most edges have none there and skip the search.
+  std::vector<char> starts_curve(uses.start.size(), 0);
+  for (const std::uint64_t e : r.curve_edges) {
+    const std::size_t lo = e >> 32U;
+    if (lo < starts_curve.size()) starts_curve[lo] = 1;
   }
-  std::vector<std::size_t> out(r.faces.size());
+  for_each_edge(uses, [&](std::int32_t a, std::int32_t b, std::span<const std::uint64_t> group) {
+    if (group.size() != 2) return;
+    const std::uint32_t x = EdgeUses::face(group[0]), y = EdgeUses::face(group[1]);
+    const auto& vx = r.faces[x].v;
+    const auto& vy = r.faces[y].v;
+    // Whether each runs a -> b (a < b); a face holding the edge twice is x and y both.
+    const bool forward_x = vx[static_cast<std::size_t>(corner_of_edge(vx, a, b, 0))] == a;
+    const bool forward_y =
+        vy[static_cast<std::size_t>(corner_of_edge(vy, a, b, x == y ? 1 : 0))] == a;
+    if (forward_x != forward_y &&
+        soup.input[static_cast<std::size_t>(r.faces[x].triangle)] ==
+            soup.input[static_cast<std::size_t>(r.faces[y].triangle)] &&
+        (starts_curve[static_cast<std::size_t>(a)] == 0 ||
+         !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), edge_key(a, b)))) {
+      sets.unite(x, y);
+    }
+  });
+  std::vector<std::uint32_t> out(r.faces.size());
   for (std::size_t f = 0; f < out.size(); ++f)
-    out[f] = sets.find(f);
+    out[f] = sets.find(static_cast<std::uint32_t>(f));
   return out;
 }
 
@@ -118,7 +125,7 @@ std::vector<std::size_t> patches(const Soup& soup, const Refinement& r) {
 
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
-  const std::vector<std::size_t> patch = patches(soup, refinement);
+  const std::vector<std::uint32_t> patch = patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "clip/solid/snap.h"
 #include "contain/core/union_find.h"
@@ -52,34 +53,28 @@ bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
 // directions, of one plane, lying on the two sides of the edge.
 UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
                                const PointStore& store) {
-  // Every edge use as (edge, face, corner), sorted: one flat array, not a map of vectors (one
-  // allocation per edge was a tenth of the boolean).
-  const std::vector<EdgeUse> uses = sorted_edge_uses(
-      boundary.faces.size(), [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
+  // Every edge use, grouped by edge: flat arrays, not a map of vectors (one allocation per edge
+  // was a tenth of the boolean).
+  const EdgeUses uses = edge_uses(boundary.faces.size(),
+                                  [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
   UnionFind<std::size_t> sets(boundary.faces.size());
-  for (std::size_t u = 0; u < uses.size();) {
-    std::size_t end = u + 1;
-    while (end < uses.size() && uses[end].key == uses[u].key)
-      ++end;
-    const std::size_t count = end - u;
-    const std::size_t first = u;
-    u = end;
-    if (count != 2) continue;
-    const std::size_t f = uses[first].face, g = uses[first + 1].face;
-    const int i = uses[first].k, j = uses[first + 1].k;
+  for_each_edge(uses, [&](std::int32_t lo, std::int32_t hi, std::span<const std::uint64_t> group) {
+    if (group.size() != 2) return;
+    const std::size_t f = EdgeUses::face(group[0]), g = EdgeUses::face(group[1]);
     const Face& a = boundary.faces[f];
     const Face& b = boundary.faces[g];
+    const int i = corner_of_edge(a, lo, hi, 0), j = corner_of_edge(b, lo, hi, f == g ? 1 : 0);
     const std::int32_t p = a[static_cast<std::size_t>(i)],
                        q = a[static_cast<std::size_t>((i + 1) % 3)];
-    if (b[static_cast<std::size_t>(j)] != q) continue;  // same direction: not one oriented plane
-    if (!same_plane(soup, boundary.triangle[f], boundary.triangle[g])) continue;
+    if (b[static_cast<std::size_t>(j)] != q) return;  // same direction: not one oriented plane
+    if (!same_plane(soup, boundary.triangle[f], boundary.triangle[g])) return;
     const int axis = soup.projection(static_cast<std::size_t>(boundary.triangle[f])).axis;
     const std::int32_t r = a[static_cast<std::size_t>((i + 2) % 3)];
     const std::int32_t s = b[static_cast<std::size_t>((j + 2) % 3)];
     const int sr = to_int(orient2d_dropped(store.point(p), store.point(q), store.point(r), axis));
     const int ss = to_int(orient2d_dropped(store.point(p), store.point(q), store.point(s), axis));
     if (sr * ss < 0) sets.unite(f, g);
-  }
+  });
   return sets;
 }
 

@@ -112,11 +112,19 @@ std::size_t moved_count(const Faces& faces, const PointStore& store,
 BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
                              const std::vector<TriangleWork>& work, const FaceLabels& labels,
                              const PointStore& store, Op op) {
+  // The answer on each side of each patch once (a face shares its patch's labels): 1 front
+  // filled, 2 back filled.
+  std::vector<std::uint8_t> sides(labels.of_patch.size());
+  for (std::size_t p = 0; p < sides.size(); ++p) {
+    sides[p] = static_cast<std::uint8_t>((filled(op, labels.of_patch[p].front) ? 1U : 0U) |
+                                         (filled(op, labels.of_patch[p].back) ? 2U : 0U));
+  }
   BoundaryFaces out;
   for (std::size_t f = 0; f < refinement.faces.size(); ++f) {
     const RefinedFace& face = refinement.faces[f];
-    const bool front = filled(op, labels[f].front), back = filled(op, labels[f].back);
-    if (front == back) continue;
+    const std::uint8_t side = sides[labels.patch[f]];
+    if (side == 0 || side == 3) continue;  // the same answer on both sides
+    const bool back = side == 2;
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
     out.faces.push_back(back ? face.v
                              : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});

@@ -16,9 +16,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
+#include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "contain/core/union_find.h"
 
@@ -157,24 +159,32 @@ std::vector<std::size_t> partners(const Fan& fan) {
   return partner;
 }
 
+// The faces' corners (3 face + k) in sets of 32-bit numbers, half the memory of std::size_t
+// ones: the written vertices, one per set, are numbered in 32 bits anyway.
+using CornerSets = UnionFind<std::uint32_t>;
+
+std::uint32_t corner_number(std::size_t face, int k) {
+  return static_cast<std::uint32_t>(3 * face + static_cast<std::size_t>(k));
+}
+
+void join_across(CornerSets& sets, const Use& a, const Use& b) {
+  sets.unite(corner_number(a.face, a.corner), corner_number(b.face, b.corner));
+  sets.unite(corner_number(a.face, q_corner(a)), corner_number(b.face, q_corner(b)));
+}
+
 struct Grouping {
-  std::vector<std::pair<Use, Use>> manifold;  // the two faces of an edge held by two
+  // The corners joined across the edges held by two faces, joined as they are found (no list
+  // of the pairs: one per edge of the result); the sets depend only on which corners are
+  // joined, not on the order (UnionFind's representative is the smallest element).
+  CornerSets manifold;
   std::vector<Fan> fans;
 
-  [[nodiscard]] UnionFind<std::size_t> corners(std::size_t faces) const {
-    UnionFind<std::size_t> sets(3 * faces);
-    const auto join = [&](const Use& a, const Use& b) {
-      sets.unite(3 * a.face + static_cast<std::size_t>(a.corner),
-                 3 * b.face + static_cast<std::size_t>(b.corner));
-      sets.unite(3 * a.face + static_cast<std::size_t>(q_corner(a)),
-                 3 * b.face + static_cast<std::size_t>(q_corner(b)));
-    };
-    for (const auto& [a, b] : manifold)
-      join(a, b);
+  [[nodiscard]] CornerSets corners() const {
+    CornerSets sets = manifold;
     for (const Fan& fan : fans) {
       const std::vector<std::size_t> partner = partners(fan);
       for (std::size_t i = 0; i < fan.sorted.size(); ++i) {
-        if (!fan.sorted[i].forward) join(fan.sorted[i], fan.sorted[partner[i]]);
+        if (!fan.sorted[i].forward) join_across(sets, fan.sorted[i], fan.sorted[partner[i]]);
       }
     }
     return sets;
@@ -182,14 +192,14 @@ struct Grouping {
 
   // Fans whose passes end in the same vertex pair (the edge would be written twice) move on to
   // their next pairing; false when there was none.
-  bool shift_pinched(UnionFind<std::size_t>& sets) {
+  bool shift_pinched(CornerSets& sets) {
     bool any = false;
     for (Fan& fan : fans) {
-      std::vector<std::pair<std::size_t, std::size_t>> ends;
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
       for (const Use& u : fan.sorted) {
         if (u.forward) continue;
-        ends.emplace_back(sets.find(3 * u.face + static_cast<std::size_t>(u.corner)),
-                          sets.find(3 * u.face + static_cast<std::size_t>(q_corner(u))));
+        ends.emplace_back(sets.find(corner_number(u.face, u.corner)),
+                          sets.find(corner_number(u.face, q_corner(u))));
       }
       std::sort(ends.begin(), ends.end());
       if (std::adjacent_find(ends.begin(), ends.end()) != ends.end()) {
@@ -211,44 +221,54 @@ struct Grouping {
 // the written mesh judges the result.
 Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
                        const PointStore& store) {
-  // Every use keyed by its edge, in face order within an edge (the order the fans start from):
-  // one array sorted by (edge, face, corner) by a counting sort of the edges' lower points
-  // (a stable sort of all uses by key was a tenth of the written mesh's time).
-  const std::vector<EdgeUse> sorted = sorted_edge_uses(
+  // Every use grouped by its edge, in face order within an edge (the order the fans start
+  // from): EdgeUses, a counting sort of the edges' lower points.
+  const EdgeUses uses = edge_uses(
       faces.size(), [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return faces[f]; });
-  // The use of each, read where needed (no second array of all uses).
-  const auto use = [&](const EdgeUse& e) {
-    const std::int32_t a = faces[e.face][static_cast<std::size_t>(e.k)],
-                       b = faces[e.face][static_cast<std::size_t>((e.k + 1) % 3)];
-    return Use{e.face, a < b ? e.k : (e.k + 1) % 3, a < b};
+  // The use of the i-th entry of an edge p q's group (a face holding the edge twice is there
+  // twice: its uses in order of corner).
+  const auto use = [&](std::int32_t p, std::int32_t q, std::span<const std::uint64_t> group,
+                       std::size_t i) {
+    const std::uint32_t face = EdgeUses::face(group[i]);
+    int nth = 0;  // the face's uses before this one (a face {a, a, a} holds its edge thrice)
+    for (std::size_t j = i; j > 0 && EdgeUses::face(group[j - 1]) == face; --j)
+      ++nth;
+    const int k = corner_of_edge(faces[face], p, q, nth);
+    const std::int32_t a = faces[face][static_cast<std::size_t>(k)],
+                       b = faces[face][static_cast<std::size_t>((k + 1) % 3)];
+    return Use{face, a < b ? k : (k + 1) % 3, a < b};
   };
-  Grouping grouping;
-  for (std::size_t i = 0, j = 0; i < sorted.size(); i = j) {
-    const std::uint64_t key = sorted[i].key;
-    while (j < sorted.size() && sorted[j].key == key)
-      ++j;
-    if (j - i == 2) grouping.manifold.emplace_back(use(sorted[i]), use(sorted[i + 1]));
-    if (j - i <= 2) continue;  // a single face is left to the check
+  Grouping grouping{CornerSets(3 * faces.size()), {}};
+  bool paired = true;
+  for_each_edge(uses, [&](std::int32_t p, std::int32_t q, std::span<const std::uint64_t> group) {
+    if (group.size() == 2) {
+      const Use a = use(p, q, group, 0), b = use(p, q, group, 1);
+      paired = paired && a.forward != b.forward;
+      join_across(grouping.manifold, a, b);
+      return;
+    }
+    paired = false;
+    if (group.size() < 2) return;  // a single face is left to the check
     std::vector<Use> list;
-    for (std::size_t k = i; k < j; ++k)
-      list.push_back(use(sorted[k]));
-    sort_around(list, static_cast<std::int32_t>(key >> 32U),
-                static_cast<std::int32_t>(key & 0xffffffffU), faces, store);
-    grouping.fans.push_back({key, std::move(list), 0});
-  }
-  std::sort(grouping.fans.begin(), grouping.fans.end(),
-            [](const Fan& a, const Fan& b) { return a.key < b.key; });
-  UnionFind<std::size_t> corners = grouping.corners(faces.size());
+    for (std::size_t k = 0; k < group.size(); ++k)
+      list.push_back(use(p, q, group, k));
+    sort_around(list, p, q, faces, store);
+    grouping.fans.push_back({edge_key(p, q), std::move(list), 0});
+  });
+  // Visited in key order already (the same output on every platform).
+  // With no fans the manifold sets are the corner sets (no copy of them).
+  CornerSets corners = grouping.fans.empty() ? std::move(grouping.manifold) : grouping.corners();
   for (int round = 0; round < 8 && grouping.shift_pinched(corners); ++round) {
-    corners = grouping.corners(faces.size());
+    corners = grouping.corners();
   }
   Sheets out;
+  out.paired = paired;
   std::vector<std::int32_t> vertex(3 * faces.size(), -1);  // of each corner set's root
   out.faces.reserve(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<std::int32_t, 3> t{};
     for (std::size_t k = 0; k < 3; ++k) {
-      std::int32_t& v = vertex[corners.find(3 * f + k)];
+      std::int32_t& v = vertex[corners.find(corner_number(f, static_cast<int>(k)))];
       if (v < 0) {
         v = static_cast<std::int32_t>(out.points.size());
         out.points.push_back(faces[f][k]);

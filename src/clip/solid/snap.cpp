@@ -42,6 +42,7 @@
 #include "clip/solid/result_boundary.h"
 #include "clip/solid/validate.h"
 #include "contain/bvh/bvh.h"
+#include "contain/core/sort_few.h"
 #include "contain/core/union_find.h"
 #include "contain/values/box.h"
 
@@ -96,16 +97,19 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
         static_cast<std::uint32_t>(i),
         t[1] > t[2]};
   }
+  // By insertion (sort_few): a corner has a few faces, where std::sort's set-up cost more than
+  // the sorting; (key, face) pairs are distinct, so any sort gives this order.
   for (std::size_t p = 0; p < points; ++p) {
-    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start[p]),
-              keys.begin() + static_cast<std::ptrdiff_t>(start[p + 1]),
-              [](const CornerKey& x, const CornerKey& y) {
-                return x.key != y.key ? x.key < y.key : x.face < y.face;
-              });
+    sort_few(keys.begin() + static_cast<std::ptrdiff_t>(start[p]),
+             keys.begin() + static_cast<std::ptrdiff_t>(start[p + 1]), 16,
+             [](const CornerKey& x, const CornerKey& y) {
+               return x.key != y.key ? x.key < y.key : x.face < y.face;
+             });
   }
   // Cancel opposite pairs in face order: a face cancels the latest still open face of the
   // other direction among the earlier ones (as a stack of each direction per key).
   std::vector<bool> gone(merged.size(), false);
+  bool any_gone = false;
   std::array<std::vector<std::uint32_t>, 2> open;
   for (std::size_t i = 0, j = 0; i < keys.size(); i = j) {
     while (j < keys.size() && keys[j].key == keys[i].key)
@@ -117,12 +121,14 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
       if (!other.empty()) {
         gone[other.back()] = true;
         gone[keys[k].face] = true;
+        any_gone = true;
         other.pop_back();
       } else {
         open[keys[k].reversed ? 1 : 0].push_back(keys[k].face);
       }
     }
   }
+  if (!any_gone) return merged;  // most results: no copy
   std::vector<std::array<std::int32_t, 3>> out;
   out.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
@@ -223,6 +229,7 @@ bool written_exactly(const ExactPoint& p) {
 struct Written {
   Mesh mesh;
   std::vector<bool> kept;
+  Edges edges = Edges::checked;  // known_matched when the sheets found every edge paired
 };
 
 // The faces' mesh with points merged by `rep`, sheets kept apart.
@@ -233,6 +240,7 @@ Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
   for (const std::int32_t point : rep.ids)
     merged[static_cast<std::size_t>(rep.at(point))] += written_exactly(store.point(point)) ? 1 : 2;
   Written out;
+  out.edges = sheets.paired ? Edges::known_matched : Edges::checked;
   out.mesh.vertices.reserve(sheets.points.size());
   out.kept.reserve(sheets.points.size());
   for (const std::int32_t p : sheets.points) {
@@ -338,7 +346,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
                         std::size_t* rounds) {
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
   std::vector<std::int32_t> crossing;
-  Status valid = check_written(written.mesh, written.kept, &crossing);
+  Status valid = check_written(written.mesh, written.kept, &crossing, written.edges);
   const std::size_t limit = 2 * written.mesh.triangles.size() + 64;
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
     if (rounds != nullptr) *rounds = round + 1;
@@ -349,7 +357,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
       return not_converging(written.mesh.triangles.size(), "wrote triangles:", limit);
     }
     crossing.clear();
-    valid = check_written(written.mesh, written.kept, &crossing);
+    valid = check_written(written.mesh, written.kept, &crossing, written.edges);
   }
   if (!valid) {
     return Error{.kind = ErrorKind::degenerate,

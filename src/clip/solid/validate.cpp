@@ -212,10 +212,25 @@ bool edges_matched(const Mesh& mesh) {
   return true;
 }
 
+// The box of each written triangle, computed when asked (a stored box per triangle was 48
+// bytes each, megabytes of fresh pages for a large result): empty for a zero-area triangle.
+struct TriangleBoxes {
+  const Mesh& mesh;
+  const std::vector<char>& flat;  // zero area
+  [[nodiscard]] std::size_t size() const { return flat.size(); }
+  [[nodiscard]] Box3 operator[](std::size_t t) const {
+    Box3 box;
+    if (flat[t] != 0) return box;
+    for (const std::int32_t v : mesh.triangles[t])
+      box.expand(mesh.vertex(v));
+    return box;
+  }
+};
+
 // The triangles whose boxes meet the box of a triangle of `rounded` (those included): every
 // triangle that can meet one of them. A hierarchy over the rounded triangles' boxes only, one
 // query per triangle.
-std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
+std::vector<std::int32_t> neighbourhood(const TriangleBoxes& boxes,
                                         const std::vector<std::int32_t>& rounded) {
   if (rounded.size() == boxes.size()) return rounded;
   std::vector<Box3> own;
@@ -227,7 +242,7 @@ std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
   const bvh::Bvh tree(own, {.method = bvh::BuildMethod::morton});
   std::vector<std::int32_t> near;
   for (std::size_t t = 0; t < boxes.size(); ++t) {
-    const Box3& box = boxes[t];
+    const Box3 box = boxes[t];
     if (!tree.bounds().overlaps(box)) continue;
     const bvh::TraversalStats seen =
         tree.traverse([&](const bvh::Node& node, std::int32_t) { return node.box.overlaps(box); },
@@ -243,7 +258,7 @@ std::vector<std::int32_t> neighbourhood(const std::vector<Box3>& boxes,
 // The soup of the triangles `chosen` of the written mesh (none of zero area), welded by
 // position as the pair stage needs: sheets kept apart at one position share corners there.
 Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
-                const std::vector<Box3>& boxes) {
+                const TriangleBoxes& boxes) {
   Soup soup;
   soup.inputs = 1;
   // Welded by the flat table of the engine's soups (PointTable: +0 and -0 one key), not a
@@ -274,9 +289,12 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
 // The sign of a shell's volume, exactly: 6 V = sum of a . (b - a) x (c - a) over its triangles,
 // first in doubles with a bound on their error (each term within 8 ulps of the sum of the
 // magnitudes of its products, the sum within F ulps more), then as exact numbers.
-Sign volume_sign(const Mesh& mesh, const std::vector<std::size_t>& triangles) {
+// The triangles are `triangle(0) ... triangle(count - 1)`.
+template <class Triangle>
+Sign volume_sign(const Mesh& mesh, std::size_t count, Triangle&& triangle) {
   double sum = 0.0, magnitude = 0.0;
-  for (const std::size_t t : triangles) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t t = triangle(i);
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]), u = mesh.vertex(v[1]) - a, w = mesh.vertex(v[2]) - a;
     const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
@@ -286,13 +304,14 @@ Sign volume_sign(const Mesh& mesh, const std::vector<std::size_t>& triangles) {
     sum += a.x * n.x + a.y * n.y + a.z * n.z;
     magnitude += std::fabs(a.x) * m.x + std::fabs(a.y) * m.y + std::fabs(a.z) * m.z;
   }
-  const double bound = static_cast<double>(triangles.size() + 16) * 0x1p-50 * magnitude;
+  const double bound = static_cast<double>(count + 16) * 0x1p-50 * magnitude;
   if (std::isfinite(bound) && bound >= std::numeric_limits<double>::min() &&
       std::fabs(sum) > bound) {
     return sum > 0 ? Sign::positive : Sign::negative;
   }
   predicates::BigFloat six;
-  for (const std::size_t t : triangles) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t t = triangle(i);
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]);
     six = six + predicates::dot(predicates::to_big(a),
@@ -342,12 +361,31 @@ Shells shells_of(const Mesh& mesh) {
 // sum to 0, at odd depth to 1). The other shells' side is asked at a vertex of s whose position
 // no other shell uses: such a vertex is on no other shell (its triangles would meet that shell
 // beyond shared corners), and only shells whose boxes hold it can hold it.
+// Whether the triangles are connected through shared vertex numbers (one shell): a union-find
+// of 32-bit vertex numbers, no lists of each shell's triangles nor boxes.
+bool one_shell(const Mesh& mesh) {
+  if (mesh.triangles.empty()) return false;
+  UnionFind<std::uint32_t> sets(mesh.vertices.size());
+  const auto at = [](std::int32_t v) { return static_cast<std::uint32_t>(v); };
+  for (const TriangleIndices& t : mesh.triangles) {
+    sets.unite(at(t[0]), at(t[1]));
+    sets.unite(at(t[0]), at(t[2]));
+  }
+  const std::uint32_t first = sets.find(at(mesh.triangles[0][0]));
+  return std::all_of(mesh.triangles.begin(), mesh.triangles.end(),
+                     [&](const TriangleIndices& t) { return sets.find(at(t[0])) == first; });
+}
+
 bool oriented(const Mesh& mesh) {
-  const Shells shells = shells_of(mesh);
   // One shell (most results): no other shell to ask about (every position is its own, so the
   // loop below would ask no shell at its free vertex and find it outside), so it is oriented
-  // exactly when its volume is positive; the table of positions is built only for several.
-  if (shells.triangles.size() == 1) return volume_sign(mesh, shells.triangles[0]) == Sign::positive;
+  // exactly when its volume is positive; the shells' lists and the table of positions are built
+  // only for several.
+  if (one_shell(mesh)) {
+    return volume_sign(mesh, mesh.triangles.size(), [](std::size_t i) { return i; }) ==
+           Sign::positive;
+  }
+  const Shells shells = shells_of(mesh);
   // Each used vertex's position numbered by value (PointTable), and per position the first
   // shell met there and how many shell changes were seen at it (1: only one shell uses it).
   PointTable table;
@@ -370,7 +408,8 @@ bool oriented(const Mesh& mesh) {
     if (fresh || first[i] != shells.of_vertex[v]) ++users[i];
   }
   for (std::size_t s = 0; s < shells.triangles.size(); ++s) {
-    const Sign volume = volume_sign(mesh, shells.triangles[s]);
+    const std::vector<std::size_t>& own = shells.triangles[s];
+    const Sign volume = volume_sign(mesh, own.size(), [&](std::size_t i) { return own[i]; });
     if (volume == Sign::zero) return false;
     std::optional<Vec3> free;
     for (const std::size_t t : shells.triangles[s]) {
@@ -435,33 +474,32 @@ Status check_written(const Mesh& mesh) {
 }
 
 Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
-                     std::vector<std::int32_t>* crossing) {
-  if (!edges_matched(mesh)) {
+                     std::vector<std::int32_t>* crossing, Edges edges) {
+  if (edges == Edges::checked && !edges_matched(mesh)) {
     // No pair is known to be the cause: every triangle is the region to repair.
     for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
       crossing->push_back(static_cast<std::int32_t>(t));
     return failure("an edge is not matched by exactly one opposite edge");
   }
   Status status = Ok{};
-  std::vector<Box3> boxes(mesh.triangles.size());  // empty for a zero-area triangle
-  std::vector<std::int32_t> rounded;               // triangles with a corner that is not kept
+  std::vector<char> flat(mesh.triangles.size(), 0);  // zero area
+  std::vector<std::int32_t> rounded;                 // triangles with a corner that is not kept
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]), b = mesh.vertex(v[1]), c = mesh.vertex(v[2]);
     if (zero_area(a, b, c)) {
       if (crossing == nullptr) return failure("a triangle has zero area");
       status = failure("a triangle has zero area");
+      flat[t] = 1;
       continue;
     }
-    boxes[t].expand(a);
-    boxes[t].expand(b);
-    boxes[t].expand(c);
     if (!kept[static_cast<std::size_t>(v[0])] || !kept[static_cast<std::size_t>(v[1])] ||
         !kept[static_cast<std::size_t>(v[2])]) {
       rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
   if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
+  const TriangleBoxes boxes{mesh, flat};
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
   // Pairs of two triangles with every corner kept need no test (above); each other pair whose

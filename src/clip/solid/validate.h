@@ -27,8 +27,12 @@ namespace contain::clip::solid {
 /// triangle of a pair that meets wrongly (ascending; zero-area triangles are not in it): the
 /// region a snap-rounding round repairs. An edge failure returns at once with every triangle
 /// appended.
+/// `edges`: `known_matched` skips the edge test for a mesh whose directed edges are known to
+/// occur once each with their reverse (Sheets::paired).
+enum class Edges : std::uint8_t { checked, known_matched };
 [[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
-                                   std::vector<std::int32_t>* crossing = nullptr);
+                                   std::vector<std::int32_t>* crossing = nullptr,
+                                   Edges edges = Edges::checked);
 
 /// Whether triangles a and b (neither of zero area) meet beyond the corners they share (corners
 /// at the same position) and the edge they share, exactly: the pair test of check_written. The

@@ -8,10 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "support/case_budget.h"
 
 namespace contain::test {
 namespace {
@@ -63,6 +65,64 @@ TEST(SolidSheets, AFanOutOfAlternatingOrderIsPairedWithEveryDirectedEdgeOnce) {
     }
     EXPECT_EQ(on_axis, 4);  // two sheets, each with p q once each way
   }
+}
+
+// Octahedra on random lattice points, some of their vertices identified (pinches, fans of
+// four faces on an edge, faces losing area or a corner), a face flipped or dropped, a second
+// octahedron sharing points: whenever the sheets report every edge paired (the check of the
+// written mesh then skips its edge test), each directed edge of the renumbered faces occurs
+// once and its reverse once, as the edge test would find.
+TEST(SolidSheets, EdgesReportedPairedAreEachMatchedOnceByTheirReverse) {
+  std::mt19937 rng(2025);
+  std::uniform_int_distribution<int> coordinate(-2, 2);
+  const std::array<std::array<std::int32_t, 3>, 8> octahedron = {
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+  int paired = 0, unpaired = 0;
+  for (int c = 0; c < case_budget(3000, 10); ++c) {
+    PointStore store;
+    std::vector<std::int32_t> point;
+    for (int i = 0; i < 12; ++i) {
+      point.push_back(
+          store.add(Vec3{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
+                         static_cast<double>(coordinate(rng))}));
+    }
+    std::vector<std::array<std::int32_t, 3>> faces;
+    const int shells = 1 + static_cast<int>(rng() % 2);
+    for (int shell = 0; shell < shells; ++shell) {
+      for (const auto& t : octahedron) {
+        faces.push_back({point[static_cast<std::size_t>(t[0] + 6 * shell)],
+                         point[static_cast<std::size_t>(t[1] + 6 * shell)],
+                         point[static_cast<std::size_t>(t[2] + 6 * shell)]});
+      }
+    }
+    const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
+    switch (rng() % 4) {
+      case 0:  // two points identified
+        for (auto& f : faces) {
+          for (auto& v : f)
+            v = v == point[pick(12)] ? point[pick(12)] : v;
+        }
+        break;
+      case 1:
+        std::swap(faces[pick(faces.size())][0], faces[pick(faces.size())][1]);
+        break;
+      case 2:
+        faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick(faces.size())));
+        break;
+      default:
+        break;
+    }
+    const Sheets sheets = clip::solid::separate_sheets(faces, store);
+    (sheets.paired ? paired : unpaired) += 1;
+    if (!sheets.paired) continue;
+    for (const auto& [edge, n] : directed_edges(sheets)) {
+      ASSERT_EQ(n, 1) << "case " << c;
+      ASSERT_EQ(directed_edges(sheets).count({edge.second, edge.first}), 1U) << "case " << c;
+    }
+  }
+  // Not vacuous: both answers, many times.
+  EXPECT_GE(paired, 50);
+  EXPECT_GE(unpaired, 50);
 }
 
 }  // namespace
