@@ -25,10 +25,54 @@ constexpr std::size_t kLineReach = 64 + 8;
   return masks[block].*field >> shift | (masks[block + 1].*field << 1) << (63 - shift);
 }
 
-// The box of a plain token of the line at `line`: its digits from `digits_at` (after its minus
-// when `negative`), its point at `dot`, its last byte at `last`.
-[[gnu::always_inline]] inline NumberBound bound_token(const char* line, unsigned digits_at,
-                                                      unsigned dot, unsigned last, bool negative) {
+// The digits of the tokens of the staged points (below), bounded together when they are handed
+// over: a loop the compiler vectorizes where the CPU has AVX-512DQ (64-bit multiplies, 64-bit
+// integers to doubles), eight tokens an instruction. Each lane does bound_from_digits' operations
+// (number_bound.h) on eight_digits' of the fraction: the sign as a factor of +-1, std::min and
+// std::max spelled as their comparisons; no a * b + c to contract into FMA. So the same bits as
+// one token at a time (the tests compare every version with scan_bounded_lines).
+struct TokenDigits {
+  static constexpr int kRoom = 96;      // 32 points of 3 numbers
+  std::uint64_t whole[kRoom];           // the integer part
+  std::uint64_t fraction_bytes[kRoom];  // the fraction's first 8 bytes, digits padded with '0'
+  double sign[kRoom];                   // -1 or 1
+  double lo[kRoom], hi[kRoom];
+};
+
+[[gnu::always_inline]] inline void bound_digits(TokenDigits& d, int count) {
+  constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50), kHighScale = 1e-8 * (1.0 + 0x1p-50);
+  for (int i = 0; i < count; ++i) {
+    const std::uint64_t m = d.whole[i] * 100000000u + eight_digits(d.fraction_bytes[i]);
+    // m < 10^15: exact as a signed integer and as a double.
+    const auto value = static_cast<double>(static_cast<std::int64_t>(m));
+    const double lo = value * kLowScale, hi = (value + 1.0) * kHighScale;
+    const double a = d.sign[i] * lo, b = d.sign[i] * hi;
+    d.lo[i] = b < a ? b : a;  // std::min(a, b)
+    d.hi[i] = a < b ? b : a;  // std::max(a, b)
+  }
+}
+
+void bound_digits_baseline(TokenDigits& d, int count) {
+  bound_digits(d, count);
+}
+#if defined(__GNUC__) && defined(__x86_64__)
+// GCC vectorizes from -O3 on; the portable bench preset builds with -O2.
+#if defined(__clang__)
+[[gnu::target("avx512f,avx512dq,avx512vl")]]
+#else
+[[gnu::target("avx512f,avx512dq,avx512vl"), gnu::optimize("tree-vectorize")]]
+#endif
+void bound_digits_avx512(TokenDigits& d, int count) {
+  bound_digits(d, count);
+}
+#endif
+using BoundDigits = void (*)(TokenDigits&, int);
+
+// Stores the digits of a plain token of the line at `line` (its digits from `digits_at`, after
+// its minus when `negative`; its point at `dot`; its last byte at `last`) as token `i`.
+[[gnu::always_inline]] inline void store_token(TokenDigits& d, int i, const char* line,
+                                               unsigned digits_at, unsigned dot, unsigned last,
+                                               bool negative) {
   const auto whole_count = static_cast<int>(dot - digits_at);  // 1 to 7
   std::uint64_t whole = static_cast<unsigned char>(line[digits_at]) - std::uint64_t{'0'};
   if (whole_count > 1) {  // rare in most files (coordinates below 10): a branch predicted well
@@ -37,9 +81,11 @@ constexpr std::size_t kLineReach = 64 + 8;
     whole = eight_digits(load8(line + digits_at) << (8 * pad) | (0x3030303030303030u & zeros));
   }
   const auto fraction_count = static_cast<int>(last - dot);  // 1 or more
-  const std::uint64_t fraction =
-      leading_fraction(load8(line + dot + 1), fraction_count < 8 ? fraction_count : 8);
-  return bound_from_digits(whole, fraction, negative);
+  const std::uint64_t kept =
+      fraction_count >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * fraction_count)) - 1;
+  d.whole[i] = whole;
+  d.fraction_bytes[i] = (load8(line + dot + 1) & kept) | (0x3030303030303030u & ~kept);
+  d.sign[i] = negative ? -1.0 : 1.0;
 }
 
 // Whether `bits` has exactly `count` (1 or more) bits set: without a population count, which the
@@ -51,20 +97,30 @@ template <int kCount>
   return bits != 0 && (bits & (bits - 1)) == 0;
 }
 
-// Points taken by the masks, staged in a small array and appended a run at a time: a vector's
-// emplace_back in the scan's loop is a call (too large a function for the compiler to inline it).
+// Points taken by the masks, staged in a small array with their tokens' digits, and appended a
+// run at a time with their boxes: a vector's emplace_back in the scan's loop is a call (too large
+// a function for the compiler to inline it), and the boxes are bounded together (TokenDigits).
 template <class Bounded>
 struct StagedPoints {
-  static constexpr int kRoom = 32;
+  static constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
+  static constexpr int kRoom = TokenDigits::kRoom / 3;
   Bounded staged[kRoom];
+  TokenDigits digits;
   int held = 0;
   std::vector<Bounded>& points;
+  BoundDigits bound;
 
-  [[gnu::always_inline]] Bounded& next() {
-    if (held == kRoom) flush();
-    return staged[held++];
-  }
   void flush() {
+    bound(digits, kColumns * held);
+    for (int i = 0; i < held; ++i) {
+      const double* lo = digits.lo + kColumns * i;
+      const double* hi = digits.hi + kColumns * i;
+      if constexpr (kColumns == 2) {
+        staged[i].box = {{lo[0], lo[1]}, {hi[0], hi[1]}};
+      } else {
+        staged[i].box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+      }
+    }
     points.insert(points.end(), staged, staged + held);
     held = 0;
   }
@@ -73,12 +129,12 @@ struct StagedPoints {
 template <class Bounded>
 [[gnu::always_inline]] inline PointLinesScan scan_masked(std::string_view text,
                                                          std::vector<Bounded>& points, MaskIsa isa,
-                                                         std::int64_t* walked) {
+                                                         BoundDigits bound, std::int64_t* walked) {
   constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
   PointLinesScan scan;
   const char* const base = text.data();
   const std::size_t size = text.size();
-  StagedPoints<Bounded> out{.points = points};
+  StagedPoints<Bounded> out{.points = points, .bound = bound};
   // The lines of [from, to) by the exact walk, taken into the scan; false where it stopped.
   const auto walk = [&](std::size_t from, std::size_t to) {
     out.flush();
@@ -127,9 +183,9 @@ template <class Bounded>
     // Not digits: signs, points, blanks, the newline and every other byte.
     const std::uint64_t non_digit = window(masks, &ByteMasks::non_digit, b, shift);
     bool taken = has_bits<kColumns>(starts);
-    NumberBound v[kColumns];
     unsigned first = 0, last = 0;
     if (taken) {
+      if (out.held == out.kRoom) out.flush();
       std::uint64_t next_start = starts, next_end = ends;
 #pragma GCC unroll 3
       for (int k = 0; k < kColumns; ++k) {
@@ -149,7 +205,7 @@ template <class Bounded>
           taken = false;
           break;
         }
-        v[k] = bound_token(line, digits_at, dot, e, negative);
+        store_token(out.digits, kColumns * out.held + k, line, digits_at, dot, e, negative);
         if (k == 0) first = s;
         last = e + 1;
       }
@@ -159,12 +215,7 @@ template <class Bounded>
       at += length + 1;
       continue;
     }
-    Bounded& point = out.next();
-    if constexpr (kColumns == 2) {
-      point.box = {{v[0].lo, v[1].lo}, {v[0].hi, v[1].hi}};
-    } else {
-      point.box = {{v[0].lo, v[1].lo, v[2].lo}, {v[0].hi, v[1].hi, v[2].hi}};
-    }
+    Bounded& point = out.staged[out.held++];  // its box at the flush
     point.first = line + first;
     point.last = line + last;
     ++scan.lines;
@@ -182,14 +233,13 @@ template <class Bounded>
 template <class Bounded>
 PointLinesScan scan_baseline(std::string_view text, std::vector<Bounded>& points, MaskIsa isa,
                              std::int64_t* walked) {
-  return scan_masked(text, points, isa, walked);
+  return scan_masked(text, points, isa, &bound_digits_baseline, walked);
 }
 
 #if defined(__GNUC__) && defined(__x86_64__)
-template <class Bounded>
-[[gnu::target("bmi,bmi2,popcnt,lzcnt")]] PointLinesScan scan_bit_instructions(
-    std::string_view text, std::vector<Bounded>& points, MaskIsa isa, std::int64_t* walked) {
-  return scan_masked(text, points, isa, walked);
+bool has_avx512_dq_vl() {
+  static const bool has = __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+  return has;
 }
 
 bool has_bit_instructions() {
@@ -197,6 +247,17 @@ bool has_bit_instructions() {
                           __builtin_cpu_supports("popcnt") && __builtin_cpu_supports("lzcnt");
   return has;
 }
+
+template <class Bounded>
+[[gnu::target("bmi,bmi2,popcnt,lzcnt")]] PointLinesScan scan_bit_instructions(
+    std::string_view text, std::vector<Bounded>& points, MaskIsa isa, std::int64_t* walked) {
+  // The boxes eight at a time where the CPU has AVX-512DQ (the masks' AVX-512 version says so).
+  const BoundDigits bound = isa == MaskIsa::avx512 && mask_isa_available(isa) && has_avx512_dq_vl()
+                                ? &bound_digits_avx512
+                                : &bound_digits_baseline;
+  return scan_masked(text, points, isa, bound, walked);
+}
+
 #endif
 
 template <class Bounded>
@@ -212,6 +273,14 @@ PointLinesScan scan_dispatched(std::string_view text, std::vector<Bounded>& poin
 }
 
 }  // namespace
+
+bool masked_scan_pays() {
+#if defined(__GNUC__) && defined(__x86_64__)
+  return best_mask_isa() == MaskIsa::avx512 && has_avx512_dq_vl() && has_bit_instructions();
+#else
+  return false;
+#endif
+}
 
 PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoint2>& points,
                                    MaskIsa isa, std::int64_t* walked) {

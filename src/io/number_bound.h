@@ -97,7 +97,8 @@ struct NumberBound {
 
 /// The box of a plain-shape token (see the file comment) from its integer part `whole` (below
 /// 10^7), the first 8 digits of its fraction `fraction` (padded with zeros) and its sign: the
-/// one computation of every reader of plain numbers, so that they give the same bits.
+/// computation of every reader of plain numbers, so that they give the same bits (the masked
+/// scanner's vector loop, io/masked_lines.cpp, does these operations lane by lane).
 [[nodiscard, gnu::always_inline]] inline NumberBound bound_from_digits(std::uint64_t whole,
                                                                        std::uint64_t fraction,
                                                                        bool negative) {
