@@ -135,12 +135,17 @@ template <class Bounded>
   const char* const base = text.data();
   const std::size_t size = text.size();
   StagedPoints<Bounded> out{.points = points, .bound = bound};
+  // Lines taken by the masks and left to the walk: a text of which more than a third goes to the
+  // walk (commas, comments, exponents) is walked from there on, whole, as without masks (a line
+  // walked alone costs the masks and a call more than in the walk of the whole text).
+  std::int64_t taken_lines = 0, walked_lines = 0;
   // The lines of [from, to) by the exact walk, taken into the scan; false where it stopped.
   const auto walk = [&](std::size_t from, std::size_t to) {
     out.flush();
     const PointLinesScan part = scan_bounded_lines(text.substr(from, to - from), points);
     if (scan.first_row == 0 && part.first_row != 0) scan.first_row = scan.lines + part.first_row;
     scan.lines += part.lines;
+    walked_lines += part.lines;
     if (walked != nullptr) *walked += part.lines;
     return part.complete;
   };
@@ -148,7 +153,7 @@ template <class Bounded>
   std::size_t held_from = 0, held = 0;  // the masks of blocks [held_from, held_from + held)
   const std::size_t whole_blocks = size / 64;
   std::size_t at = 0;  // the line's first byte
-  while (size - at >= kLineReach) {
+  while (size - at >= kLineReach && walked_lines <= taken_lines / 2 + 16) {
     const std::size_t block = at / 64;
     if (block + 2 > whole_blocks) break;
     if (block + 2 > held_from + held) {
@@ -175,6 +180,7 @@ template <class Bounded>
     const std::uint64_t tokens = ~window(masks, &ByteMasks::blank, b, shift) & in_line;
     if (tokens == 0) {  // blanks only
       ++scan.lines;
+      ++taken_lines;
       at += length + 1;
       continue;
     }
@@ -219,6 +225,7 @@ template <class Bounded>
     point.first = line + first;
     point.last = line + last;
     ++scan.lines;
+    ++taken_lines;
     if (scan.first_row == 0) scan.first_row = scan.lines;
     at += length + 1;
   }

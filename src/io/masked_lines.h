@@ -16,7 +16,8 @@
 /// is taken when it has exactly 2 or 3 such tokens (or only blanks). Any other line (a comment,
 /// a comma, an exponent, a '+', a line of 65 bytes or more, an error) and the last 72 to 191
 /// bytes of the text are walked by scan_bounded_lines itself, one line at a time, so the
-/// results there are that walk's by construction.
+/// results there are that walk's by construction; once more than a third of the lines went to
+/// the walk, the rest of the text does, in one walk (a file of commas reads as fast as before).
 
 #include <cstdint>
 #include <string_view>

@@ -68,7 +68,9 @@ void expect_as_the_walk_2d_and_3d(const std::string& text) {
 // A random number as a point file writes it: mostly shortest round-trip doubles of [-1, 1],
 // sometimes of any magnitude, integers, or long strings of digits.
 std::string random_number(std::mt19937_64& rng) {
-  std::uniform_int_distribution<int> kind(0, 9);
+  // Exponents and integers (kinds 0 and 1: lines for the walk) rare enough that the masks keep
+  // the text (they give it up to the walk past a third of its lines).
+  std::uniform_int_distribution<int> kind(0, 29);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   char buffer[64];
   switch (kind(rng)) {
@@ -90,7 +92,7 @@ std::string random_number(std::mt19937_64& rng) {
       return digits;
     }
     default: {
-      const double value = unit(rng) * (kind(rng) < 5 ? 1.0 : 1000.0);
+      const double value = unit(rng) * (kind(rng) < 15 ? 1.0 : 1000.0);
       return std::string(buffer, std::to_chars(buffer, buffer + 64, value).ptr);
     }
   }
@@ -182,6 +184,36 @@ TEST(MaskedLines, PlainLinesAreTakenByTheMasksNotTheWalk) {
     EXPECT_EQ(points.size(), 2000u);
     EXPECT_LE(walked, 5);
   }
+}
+
+TEST(MaskedLines, RandomFilesAreMostlyTakenByTheMasks) {
+  // The random files of the tests below exercise the masks, not only the walk.
+  std::mt19937_64 rng(2727);
+  for (int columns : {2, 3}) {
+    const std::string text = random_file(rng, columns, 2000, true);
+    std::vector<BoundedPoint3> points3;
+    std::vector<BoundedPoint2> points2;
+    std::int64_t walked = 0;
+    const auto scan = columns == 2
+                          ? detail::scan_bounded_masked(text, points2, MaskIsa::scalar, &walked)
+                          : detail::scan_bounded_masked(text, points3, MaskIsa::scalar, &walked);
+    EXPECT_TRUE(scan.complete);
+    EXPECT_LT(walked, scan.lines / 3) << columns;
+  }
+}
+
+TEST(MaskedLines, AFileOfCommasIsWalkedWholeAfterItsFirstLines) {
+  std::mt19937_64 rng(3);
+  std::string text;
+  for (int line = 0; line < 1000; ++line)
+    text += "0." + std::to_string(rng() % 1000000) + ",-0." + std::to_string(rng() % 1000) + "\n";
+  std::vector<BoundedPoint2> points;
+  std::int64_t walked = 0;
+  const auto scan = detail::scan_bounded_masked(text, points, MaskIsa::scalar, &walked);
+  EXPECT_TRUE(scan.complete);
+  EXPECT_EQ(points.size(), 1000u);
+  EXPECT_EQ(walked, 1000);
+  expect_as_the_walk<BoundedPoint2>(text);
 }
 
 TEST(MaskedLines, LinesStartingAtEveryOffsetOfABlockGiveTheWalksResults) {
