@@ -85,7 +85,9 @@ using BoundDigits = void (*)(TokenDigits&, int);
       fraction_count >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * fraction_count)) - 1;
   d.whole[i] = whole;
   d.fraction_bytes[i] = (load8(line + dot + 1) & kept) | (0x3030303030303030u & ~kept);
-  d.sign[i] = negative ? -1.0 : 1.0;
+  // -1.0 or 1.0 without a branch (random signs mispredict half the time): 1.0 with the sign bit.
+  d.sign[i] = std::bit_cast<double>(std::uint64_t{0x3ff0000000000000} |
+                                    static_cast<std::uint64_t>(negative) << 63);
 }
 
 // Whether `bits` has exactly `count` (1 or more) bits set: without a population count, which the
