@@ -26,11 +26,12 @@ constexpr std::size_t kLineReach = 64 + 8;
 }
 
 // The digits of the tokens of the staged points (below), bounded together when they are handed
-// over: a loop the compiler vectorizes where the CPU has AVX-512DQ (64-bit multiplies, 64-bit
-// integers to doubles), eight tokens an instruction. Each lane does bound_from_digits' operations
-// (number_bound.h) on eight_digits' of the fraction: the sign as a factor of +-1, std::min and
-// std::max spelled as their comparisons; no a * b + c to contract into FMA. So the same bits as
-// one token at a time (the tests compare every version with scan_bounded_lines).
+// over: a loop the compiler vectorizes, four tokens an instruction with AVX2 and eight with
+// AVX-512DQ (its 64-bit multiplies; AVX2's are built of 32-bit ones). Each lane does
+// bound_from_digits' operations (number_bound.h) on eight_digits' of the fraction: the sign as a
+// factor of +-1, std::min and std::max spelled as their comparisons; no a * b + c to contract
+// into FMA. So the same bits as one token at a time (the tests compare every version with
+// scan_bounded_lines).
 struct TokenDigits {
   static constexpr int kRoom = 96;      // 32 points of 3 numbers
   std::uint64_t whole[kRoom];           // the integer part
@@ -43,8 +44,9 @@ struct TokenDigits {
   constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50), kHighScale = 1e-8 * (1.0 + 0x1p-50);
   for (int i = 0; i < count; ++i) {
     const std::uint64_t m = d.whole[i] * 100000000u + eight_digits(d.fraction_bytes[i]);
-    // m < 10^15: exact as a signed integer and as a double.
-    const auto value = static_cast<double>(static_cast<std::int64_t>(m));
+    // m < 10^15 < 2^52: the double of exponent 52 whose low mantissa bits are m, less 2^52, is
+    // m exactly (the conversion of every version, AVX2 having no 64-bit integer to double).
+    const double value = std::bit_cast<double>(m | std::uint64_t{0x4330000000000000}) - 0x1p52;
     const double lo = value * kLowScale, hi = (value + 1.0) * kHighScale;
     const double a = d.sign[i] * lo, b = d.sign[i] * hi;
     d.lo[i] = b < a ? b : a;  // std::min(a, b)
@@ -63,6 +65,14 @@ void bound_digits_baseline(TokenDigits& d, int count) {
 [[gnu::target("avx512f,avx512dq,avx512vl"), gnu::optimize("tree-vectorize")]]
 #endif
 void bound_digits_avx512(TokenDigits& d, int count) {
+  bound_digits(d, count);
+}
+#if defined(__clang__)
+[[gnu::target("avx2")]]
+#else
+[[gnu::target("avx2"), gnu::optimize("tree-vectorize")]]
+#endif
+void bound_digits_avx2(TokenDigits& d, int count) {
   bound_digits(d, count);
 }
 #endif
@@ -260,10 +270,12 @@ bool has_bit_instructions() {
 template <class Bounded>
 [[gnu::target("bmi,bmi2,popcnt,lzcnt")]] PointLinesScan scan_bit_instructions(
     std::string_view text, std::vector<Bounded>& points, MaskIsa isa, std::int64_t* walked) {
-  // The boxes eight at a time where the CPU has AVX-512DQ (the masks' AVX-512 version says so).
+  // The boxes eight at a time where the CPU has AVX-512DQ, else four (AVX2: the masks' versions
+  // that come here are AVX2's or wider).
   const BoundDigits bound = isa == MaskIsa::avx512 && mask_isa_available(isa) && has_avx512_dq_vl()
                                 ? &bound_digits_avx512
-                                : &bound_digits_baseline;
+                            : mask_isa_available(MaskIsa::avx2) ? &bound_digits_avx2
+                                                                : &bound_digits_baseline;
   return scan_masked(text, points, isa, bound, walked);
 }
 
@@ -285,7 +297,8 @@ PointLinesScan scan_dispatched(std::string_view text, std::vector<Bounded>& poin
 
 bool masked_scan_pays() {
 #if defined(__GNUC__) && defined(__x86_64__)
-  return best_mask_isa() == MaskIsa::avx512 && has_avx512_dq_vl() && has_bit_instructions();
+  return (best_mask_isa() == MaskIsa::avx2 || best_mask_isa() == MaskIsa::avx512) &&
+         has_bit_instructions();
 #else
   return false;
 #endif

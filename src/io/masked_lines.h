@@ -38,11 +38,10 @@ PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoi
 PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoint3>& points,
                                    MaskIsa isa = best_mask_isa(), std::int64_t* walked = nullptr);
 
-/// Whether this CPU reads faster by masks than by scan_bounded_lines: where it has AVX-512 (BW,
-/// DQ, VL), whose masks come from one compare a class and whose boxes come eight at a time (7%
-/// less CPU for the whole `contain inside` of 10^6 points in a 100-vertex star,
-/// docs/benchmarks.md); with AVX2 or SSE2 alone the masked scan is slower than the walk (the boxes
-/// one at a time).
+/// Whether this CPU reads faster by masks than by scan_bounded_lines: where it has AVX2 (with
+/// BMI1/2, as every AVX2 CPU) or AVX-512 (the whole `contain inside` of 10^6 points in a
+/// 100-vertex star 15-18% less CPU, docs/benchmarks.md); with SSE2 alone the masked scan is no
+/// faster than the walk.
 [[nodiscard]] bool masked_scan_pays();
 
 }  // namespace contain::io::detail
