@@ -263,12 +263,12 @@ bool has_avx512_dq_vl() {
 
 bool has_bit_instructions() {
   static const bool has = __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
-                          __builtin_cpu_supports("popcnt") && __builtin_cpu_supports("lzcnt");
+                          __builtin_cpu_supports("popcnt");
   return has;
 }
 
 template <class Bounded>
-[[gnu::target("bmi,bmi2,popcnt,lzcnt")]] PointLinesScan scan_bit_instructions(
+[[gnu::target("bmi,bmi2,popcnt")]] PointLinesScan scan_bit_instructions(
     std::string_view text, std::vector<Bounded>& points, MaskIsa isa, std::int64_t* walked) {
   // The boxes eight at a time where the CPU has AVX-512DQ, else four (AVX2: the masks' versions
   // that come here are AVX2's or wider).
