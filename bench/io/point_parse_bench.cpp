@@ -17,6 +17,10 @@
 //                       floor of not parsing every digit: no line grammar, no points stored);
 //   bounded_scanner     detail::scan_bounded_lines on the whole text (the bounded reader's loop);
 //   bounded_reader      read_points3_bounded from the file, one thread (its whole read phase).
+//   masked_scanner      detail::scan_bounded_masked on the whole text (the bounded scanner by
+//                       byte masks; argument: the masks' version, 0 scalar, 1 SSE2, 2 AVX2,
+//                       3 AVX-512BW);
+//   masked_classes      detail::classify_blocks alone (the masks' first stage; the same argument).
 // Counter: bytes/s of the file's text.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
@@ -36,6 +40,8 @@
 #include <vector>
 
 #include "contain/io/points_io.h"
+#include "io/byte_masks.h"
+#include "io/masked_lines.h"
 #include "io/number_bound.h"
 #include "io/point_lines.h"
 
@@ -277,6 +283,45 @@ void bounded_scanner(benchmark::State& state) {
 }
 
 template <class Bounded>
+void masked_scanner(benchmark::State& state) {
+  constexpr int kColumns = std::is_same_v<Bounded, contain::io::BoundedPoint2> ? 2 : 3;
+  const auto isa = static_cast<contain::io::detail::MaskIsa>(state.range(0));
+  if (!contain::io::detail::mask_isa_available(isa)) {
+    state.SkipWithError("this CPU lacks the version");
+    return;
+  }
+  const std::string& text = file_text(kColumns);
+  std::vector<Bounded> points;
+  points.reserve(tokens(kColumns).size() / kColumns + 1);
+  for (auto _ : state) {
+    points.clear();
+    const auto scan = contain::io::detail::scan_bounded_masked(text, points, isa);
+    benchmark::DoNotOptimize(scan);
+    benchmark::DoNotOptimize(points.data());
+  }
+  set_bytes(state, text.size());
+}
+
+void masked_classes(benchmark::State& state, int columns) {
+  const auto isa = static_cast<contain::io::detail::MaskIsa>(state.range(0));
+  if (!contain::io::detail::mask_isa_available(isa)) {
+    state.SkipWithError("this CPU lacks the version");
+    return;
+  }
+  const std::string& text = file_text(columns);
+  // 16 KB at a time into masks that stay in the cache, as the scanner classifies.
+  std::vector<contain::io::detail::ByteMasks> masks(256);
+  for (auto _ : state) {
+    for (std::size_t at = 0; at + 64 <= text.size(); at += 64 * masks.size()) {
+      const std::size_t blocks = std::min(masks.size(), (text.size() - at) / 64);
+      contain::io::detail::classify_blocks(text.data() + at, blocks, masks.data(), isa);
+      benchmark::DoNotOptimize(masks.data());
+    }
+  }
+  set_bytes(state, text.size());
+}
+
+template <class Bounded>
 void bounded_reader(benchmark::State& state) {
   constexpr int kColumns = std::is_same_v<Bounded, contain::io::BoundedPoint2> ? 2 : 3;
   const std::size_t bytes = file_text(kColumns).size();
@@ -315,6 +360,18 @@ BENCHMARK_CAPTURE(byte_classes, 3d, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(prefix_walk, 3d, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(bounded_scanner, contain::io::BoundedPoint3)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(bounded_reader, contain::io::BoundedPoint3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(masked_scanner, contain::io::BoundedPoint3)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3);
+BENCHMARK_CAPTURE(masked_classes, 3d, 3)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3);
 BENCHMARK_CAPTURE(from_chars_tokens, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(from_chars_walk, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(scanner, contain::Vec2)->Unit(benchmark::kMillisecond);
@@ -324,5 +381,17 @@ BENCHMARK_CAPTURE(byte_classes, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(prefix_walk, 2d, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(bounded_scanner, contain::io::BoundedPoint2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(bounded_reader, contain::io::BoundedPoint2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(masked_scanner, contain::io::BoundedPoint2)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3);
+BENCHMARK_CAPTURE(masked_classes, 2d, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3);
 
 BENCHMARK_MAIN();

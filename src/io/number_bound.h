@@ -95,6 +95,29 @@ struct NumberBound {
   return skip_digits(p, end);
 }
 
+/// The box of a plain-shape token (see the file comment) from its integer part `whole` (below
+/// 10^7), the first 8 digits of its fraction `fraction` (padded with zeros) and its sign: the
+/// computation of every reader of plain numbers, so that they give the same bits (the masked
+/// scanner's vector loop, io/masked_lines.cpp, does these operations lane by lane).
+[[nodiscard, gnu::always_inline]] inline NumberBound bound_from_digits(std::uint64_t whole,
+                                                                       std::uint64_t fraction,
+                                                                       bool negative) {
+  constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50), kHighScale = 1e-8 * (1.0 + 0x1p-50);
+  const auto m = static_cast<double>(whole * 100000000u + fraction);
+  const double lo = m * kLowScale, hi = (m + 1.0) * kHighScale;
+  // The sign without a branch (random signs mispredict half the time): exact products, min/max.
+  const double sign = negative ? -1.0 : 1.0;
+  return {std::min(sign * lo, sign * hi), std::max(sign * lo, sign * hi)};
+}
+
+/// The fraction's first 8 digits of a token from the 8 bytes after its point (`bytes`, first in
+/// the low byte) of which the first `count` (1 to 8) are digits: the rest read as zeros.
+[[nodiscard, gnu::always_inline]] inline std::uint64_t leading_fraction(std::uint64_t bytes,
+                                                                        int count) {
+  const std::uint64_t kept = count >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * count)) - 1;
+  return eight_digits((bytes & kept) | (0x3030303030303030u & ~kept));
+}
+
 /// Bounds the plain-shape number at `p` (see the file comment), advancing `p` past its token;
 /// false, with `p` unchanged, for any other token (the caller parses it in full).
 [[nodiscard, gnu::always_inline]] inline bool bound_plain_number(const char*& p, const char* end,
@@ -117,10 +140,7 @@ struct NumberBound {
     const std::uint64_t flags = non_digit_bits(bytes);
     const int count = flags == 0 ? 8 : std::countr_zero(flags) / 8;
     if (count == 0) return false;
-    // The bytes past the digits replaced by '0'.
-    const std::uint64_t kept =
-        count == 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * count)) - 1;
-    fraction = eight_digits((bytes & kept) | (0x3030303030303030u & ~kept));
+    fraction = leading_fraction(bytes, count);
     after = count == 8 ? skip_digits_fast(q + 8, end) : q + count;
   } else {
     after = skip_digits(q, end);
@@ -132,12 +152,7 @@ struct NumberBound {
   }
   // An exponent changes the value: from_chars reads it (or decides it is not one).
   if (after != end && (*after == 'e' || *after == 'E')) return false;
-  constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50), kHighScale = 1e-8 * (1.0 + 0x1p-50);
-  const auto m = static_cast<double>(whole * 100000000u + fraction);
-  const double lo = m * kLowScale, hi = (m + 1.0) * kHighScale;
-  // The sign without a branch (random signs mispredict half the time): exact products, min/max.
-  const double sign = negative ? -1.0 : 1.0;
-  out = {std::min(sign * lo, sign * hi), std::max(sign * lo, sign * hi)};
+  out = bound_from_digits(whole, fraction, negative);
   p = after;
   return true;
 }

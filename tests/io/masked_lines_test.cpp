@@ -1,0 +1,352 @@
+// The bounded point scanner by byte masks (src/io/masked_lines.h, src/io/byte_masks.h): every
+// version of the byte classes gives the scalar masks on every byte value at every position, and
+// the scanner gives exactly what the exact walk (scan_bounded_lines) gives, with every version:
+// the same points, boxes bit for bit, spans, lines, first row and stopping line, on random point
+// files and on hostile ones (every byte that sends a line back to the walk, at every position
+// of a block; tokens across block edges; long digit strings; CR LF; comments; no final newline;
+// huge, tiny and negative-zero numbers; leading zeros; errors).
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "contain/io/points_io.h"
+#include "io/byte_masks.h"
+#include "io/masked_lines.h"
+#include "io/point_lines.h"
+
+namespace contain::io {
+namespace {
+
+using detail::MaskIsa;
+
+std::vector<MaskIsa> versions_here() {
+  std::vector<MaskIsa> out;
+  for (MaskIsa isa : {MaskIsa::scalar, MaskIsa::sse2, MaskIsa::avx2, MaskIsa::avx512}) {
+    if (detail::mask_isa_available(isa)) out.push_back(isa);
+  }
+  return out;
+}
+
+// Bit for bit (a negative zero is not a zero); boxes of doubles have no padding.
+template <class Bounded>
+bool same_box(const Bounded& a, const Bounded& b) {
+  return std::memcmp(&a.box, &b.box, sizeof a.box) == 0;
+}
+
+// The masked scan of `text` with every version gives the walk's scan, points and spans.
+template <class Bounded>
+void expect_as_the_walk(const std::string& text) {
+  std::vector<Bounded> expected;
+  const detail::PointLinesScan walk = detail::scan_bounded_lines(text, expected);
+  for (MaskIsa isa : versions_here()) {
+    std::vector<Bounded> got;
+    const detail::PointLinesScan masked = detail::scan_bounded_masked(text, got, isa);
+    const auto name = "version " + std::to_string(static_cast<int>(isa)) + " on:\n" + text;
+    ASSERT_EQ(masked.complete, walk.complete) << name;
+    ASSERT_EQ(masked.lines, walk.lines) << name;
+    ASSERT_EQ(masked.first_row, walk.first_row) << name;
+    ASSERT_EQ(got.size(), expected.size()) << name;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      ASSERT_TRUE(same_box(got[i], expected[i])) << "point " << i << ", " << name;
+      ASSERT_EQ(got[i].first, expected[i].first) << "point " << i << ", " << name;
+      ASSERT_EQ(got[i].last, expected[i].last) << "point " << i << ", " << name;
+    }
+  }
+}
+
+void expect_as_the_walk_2d_and_3d(const std::string& text) {
+  expect_as_the_walk<BoundedPoint2>(text);
+  expect_as_the_walk<BoundedPoint3>(text);
+}
+
+// A random number as a point file writes it: mostly shortest round-trip doubles of [-1, 1],
+// sometimes of any magnitude, integers, or long strings of digits.
+std::string random_number(std::mt19937_64& rng) {
+  // Exponents and integers (kinds 0 and 1: lines for the walk) rare enough that the masks keep
+  // the text (they give it up to the walk past a third of its lines).
+  std::uniform_int_distribution<int> kind(0, 29);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  char buffer[64];
+  switch (kind(rng)) {
+    case 0: {
+      std::uniform_real_distribution<double> exponent(-320.0, 308.0);
+      const double value = unit(rng) * std::pow(10.0, exponent(rng));
+      return std::string(buffer, std::to_chars(buffer, buffer + 64, value).ptr);
+    }
+    case 1:
+      return std::to_string(static_cast<long long>(rng() % 20000000) - 10000000);
+    case 2: {
+      std::string digits = rng() % 2 == 0 ? "-" : "";
+      const int whole = 1 + static_cast<int>(rng() % 9), fraction = static_cast<int>(rng() % 30);
+      for (int k = 0; k < whole; ++k)
+        digits += static_cast<char>('0' + rng() % 10);
+      digits += '.';
+      for (int k = 0; k < fraction; ++k)
+        digits += static_cast<char>('0' + rng() % 10);
+      return digits;
+    }
+    default: {
+      const double value = unit(rng) * (kind(rng) < 15 ? 1.0 : 1000.0);
+      return std::string(buffer, std::to_chars(buffer, buffer + 64, value).ptr);
+    }
+  }
+}
+
+// Random lines of `columns` numbers apart by runs of blanks, with leading and trailing blanks
+// and blank lines now and then.
+std::string random_file(std::mt19937_64& rng, int columns, int lines, bool odd_blanks) {
+  const char* blanks[] = {" ", " ", " ", "  ", "\t", " \t ", "\r", "\v", "\f"};
+  const int kinds = odd_blanks ? 9 : 1;
+  std::string text;
+  for (int line = 0; line < lines; ++line) {
+    if (rng() % 16 == 0) text += blanks[rng() % kinds];
+    if (rng() % 32 == 0) {
+      text += '\n';
+      continue;
+    }
+    for (int k = 0; k < columns; ++k) {
+      if (k > 0) text += blanks[rng() % kinds];
+      text += random_number(rng);
+    }
+    if (rng() % 16 == 0) text += blanks[rng() % kinds];
+    text += '\n';
+  }
+  return text;
+}
+
+TEST(ByteMasks, EveryVersionGivesTheScalarMasksForEveryByteValueAtEveryPosition) {
+  // Block j holds byte value (j + i) mod 256 at position i: every value at every position.
+  std::string text(64 * 256, '\0');
+  for (std::size_t j = 0; j < 256; ++j) {
+    for (std::size_t i = 0; i < 64; ++i)
+      text[64 * j + i] = static_cast<char>((j + i) % 256);
+  }
+  std::vector<detail::ByteMasks> expected(256), got(256);
+  detail::classify_blocks(text.data(), 256, expected.data(), MaskIsa::scalar);
+  for (MaskIsa isa : versions_here()) {
+    detail::classify_blocks(text.data(), 256, got.data(), isa);
+    for (std::size_t j = 0; j < 256; ++j) {
+      EXPECT_EQ(got[j].blank, expected[j].blank) << j;
+      EXPECT_EQ(got[j].newline, expected[j].newline) << j;
+      EXPECT_EQ(got[j].non_digit, expected[j].non_digit) << j;
+    }
+  }
+  // And the classes themselves: block i starts with byte value i.
+  for (std::size_t i = 0; i < 256; ++i) {
+    const auto c = static_cast<char>(i);
+    const detail::ByteMasks& block = expected[i];
+    const std::uint64_t bit = 1;
+    EXPECT_EQ((block.newline & bit) != 0, c == '\n') << i;
+    EXPECT_EQ((block.blank & bit) != 0, detail::is_blank(c)) << i;
+    EXPECT_EQ((block.non_digit & bit) != 0, !(c >= '0' && c <= '9')) << i;
+  }
+}
+
+TEST(ByteMasks, TheBestVersionIsAvailable) {
+  EXPECT_TRUE(detail::mask_isa_available(detail::best_mask_isa()));
+  EXPECT_TRUE(detail::mask_isa_available(MaskIsa::scalar));
+}
+
+TEST(MaskedLines, RandomPointFilesGiveTheWalksPointsBoxesSpansAndLines) {
+  std::mt19937_64 rng(2727);
+  for (int round = 0; round < 40; ++round) {
+    for (int columns : {2, 3}) {
+      const std::string text = random_file(rng, columns, 200, round % 2 == 1);
+      if (columns == 2) {
+        expect_as_the_walk<BoundedPoint2>(text);
+      } else {
+        expect_as_the_walk<BoundedPoint3>(text);
+      }
+    }
+  }
+}
+
+TEST(MaskedLines, PlainLinesAreTakenByTheMasksNotTheWalk) {
+  // Only the lines of the last 72 to 191 bytes (short of two whole blocks) go to the walk.
+  std::mt19937_64 rng(1);
+  std::string text;
+  char buffer[64];
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int line = 0; line < 2000; ++line) {
+    text += std::string(buffer, std::to_chars(buffer, buffer + 64, unit(rng)).ptr) + " ";
+    text += std::string(buffer, std::to_chars(buffer, buffer + 64, unit(rng)).ptr) + "\n";
+  }
+  for (MaskIsa isa : versions_here()) {
+    std::vector<BoundedPoint2> points;
+    std::int64_t walked = 0;
+    ASSERT_TRUE(detail::scan_bounded_masked(text, points, isa, &walked).complete);
+    EXPECT_EQ(points.size(), 2000u);
+    EXPECT_LE(walked, 5);
+  }
+}
+
+TEST(MaskedLines, RandomFilesAreMostlyTakenByTheMasks) {
+  // The random files of the tests below exercise the masks, not only the walk.
+  std::mt19937_64 rng(2727);
+  for (int columns : {2, 3}) {
+    const std::string text = random_file(rng, columns, 2000, true);
+    std::vector<BoundedPoint3> points3;
+    std::vector<BoundedPoint2> points2;
+    std::int64_t walked = 0;
+    const auto scan = columns == 2
+                          ? detail::scan_bounded_masked(text, points2, MaskIsa::scalar, &walked)
+                          : detail::scan_bounded_masked(text, points3, MaskIsa::scalar, &walked);
+    EXPECT_TRUE(scan.complete);
+    EXPECT_LT(walked, scan.lines / 3) << columns;
+  }
+}
+
+TEST(MaskedLines, AFileOfCommasIsWalkedWholeAfterItsFirstLines) {
+  std::mt19937_64 rng(3);
+  std::string text;
+  for (int line = 0; line < 1000; ++line)
+    text += "0." + std::to_string(rng() % 1000000) + ",-0." + std::to_string(rng() % 1000) + "\n";
+  std::vector<BoundedPoint2> points;
+  std::int64_t walked = 0;
+  const auto scan = detail::scan_bounded_masked(text, points, MaskIsa::scalar, &walked);
+  EXPECT_TRUE(scan.complete);
+  EXPECT_EQ(points.size(), 1000u);
+  EXPECT_EQ(walked, 1000);
+  expect_as_the_walk<BoundedPoint2>(text);
+}
+
+TEST(MaskedLines, LinesStartingAtEveryOffsetOfABlockGiveTheWalksResults) {
+  std::mt19937_64 rng(64);
+  const std::string body2 = random_file(rng, 2, 40, false);
+  const std::string body3 = random_file(rng, 3, 40, false);
+  for (int offset = 0; offset < 64; ++offset) {
+    const std::string blanks(static_cast<std::size_t>(offset), ' ');
+    expect_as_the_walk<BoundedPoint2>(blanks + "\n" + body2);
+    expect_as_the_walk<BoundedPoint3>(blanks + "\n" + body3);
+    expect_as_the_walk<BoundedPoint2>(std::string(static_cast<std::size_t>(offset), '\n') + body2);
+  }
+}
+
+TEST(MaskedLines, EveryByteThatSendsALineBackToTheWalkAtEveryPositionGivesTheWalksResults) {
+  std::mt19937_64 rng(99);
+  const std::string body2 = random_file(rng, 2, 12, false);
+  const std::string body3 = random_file(rng, 3, 8, false);
+  const std::string hostile[] = {
+      "#",    ",",  "e",    "E", "+",  "\r", "\t",   "x",   std::string(1, '\0'),
+      "\x80", ".",  "-",    " ", "\n", "5",  "\r\n", "nan", "inf",
+      ", ",   "e5", "e-400"};
+  for (const std::string* body : {&body2, &body3}) {
+    for (std::size_t at = 0; at < 160 && at < body->size(); ++at) {
+      for (const std::string& bytes : hostile) {
+        std::string replaced = *body;
+        replaced.replace(at, std::min(bytes.size(), replaced.size() - at), bytes);
+        expect_as_the_walk_2d_and_3d(replaced);
+        std::string inserted = *body;
+        inserted.insert(at, bytes);
+        expect_as_the_walk_2d_and_3d(inserted);
+      }
+    }
+  }
+}
+
+TEST(MaskedLines, EdgeShapesOfNumbersAndLinesGiveTheWalksResults) {
+  const std::string filler = "0.25 0.5\n-0.75 0.125\n0.5 -0.5\n";
+  const std::string filler3 = "0.25 0.5 0.1\n-0.75 0.125 0.2\n0.5 -0.5 0.3\n";
+  const char* lines2[] = {
+      "-0 -0.0\n",
+      "-0.0 0.0\n",
+      "0000001.5 -0000000.25\n",
+      "1234567.5 -7654321.125\n",
+      "12345678.5 1.5\n",
+      "-.5 .5\n",
+      "5. 5.\n",
+      "1.5.5 2.5\n",
+      "--1.5 2.5\n",
+      "1-.5 2.5\n",
+      "1.5- 2.5\n",
+      "- 1.5 2.5\n",
+      "1.5 2.5 3.5\n",
+      "1.5\n",
+      "1.5 -\n",
+      "1e308 1e-320\n",
+      "1.7976931348623157e308 4.9e-324\n",
+      "1e400 1.5\n",
+      "0.000000000000000000001 1.5\n",
+      "0.99999999999999999999999 -0.99999999999999999999999\n",
+      "0.1234567890123456789012345678901234567890 1.5\n",
+      "1.50000000 2.99999999\n",
+      "1.5 2.5#comment\n",
+      "1.5 2.5 # comment\n",
+      "# 1.5 2.5\n",
+      "1.5,2.5\n",
+      "1.5 , 2.5\n",
+      "+1.5 2.5\n",
+      "1.5\t2.5\r\n",
+      "   \n",
+      "\n",
+      "\r\n",
+      "  1.5   2.5  \n",
+      "1.5 2.5",
+      "1.5 2.5 ",
+      "nan 1.5\n",
+      "inf 1.5\n",
+      "1.5 2.5\x80\n",
+      "1.5 2.5x\n",
+      "15 25\n",
+      "1.5 25\n",
+  };
+  for (const char* line : lines2) {
+    // The line alone, after enough lines for the masks, and in the middle of them.
+    for (const std::string& text :
+         {std::string(line), filler + filler + filler + line,
+          filler + filler + filler + line + filler + filler + filler + filler,
+          filler3 + filler3 + filler3 + line + filler3 + filler3 + filler3}) {
+      expect_as_the_walk_2d_and_3d(text);
+    }
+  }
+  expect_as_the_walk_2d_and_3d("");
+  expect_as_the_walk_2d_and_3d("\n\n\n");
+  // A line of 64 bytes or more, and one of exactly 63, among plain ones.
+  const std::string line64 = "-0.1234567890123456789012345678 -0.1234567890123456789012345678\n";
+  const std::string line65 = "-0.1234567890123456789012345678 -0.12345678901234567890123456789\n";
+  const std::string line63 = "-0.123456789012345678901234567 -0.1234567890123456789012345678\n";
+  ASSERT_EQ(line63.size(), 63u);
+  ASSERT_EQ(line64.size(), 64u);
+  ASSERT_EQ(line65.size(), 65u);
+  for (int offset = 0; offset < 64; ++offset) {
+    expect_as_the_walk_2d_and_3d(std::string(static_cast<std::size_t>(offset), '\n') + filler +
+                                 line65 + filler + line64 + line63 + filler + filler + filler);
+  }
+}
+
+TEST(MaskedLines, StopsAtTheWalksLineWithTheWalksPointsBeforeIt) {
+  std::mt19937_64 rng(5);
+  std::string text = random_file(rng, 2, 100, false);
+  const std::size_t middle = text.find('\n', text.size() / 2) + 1;
+  for (const char* bad : {"1.5 2.5 3.5\n", "1.5\n", "abc\n", "1.5 2.5,\n", "1.5 2.5 #\n1.5\n"}) {
+    std::string broken = text;
+    broken.insert(middle, bad);
+    expect_as_the_walk<BoundedPoint2>(broken);
+  }
+}
+
+TEST(MaskedLines, TheBoundedReaderGivesTheChunkedReadersPointsInEveryBox) {
+  // The whole reader through the masks: each box holds the exactly read point.
+  std::mt19937_64 rng(11);
+  const std::string text = random_file(rng, 3, 3000, true);
+  std::vector<BoundedPoint3> bounded;
+  ASSERT_TRUE(detail::scan_bounded_masked(text, bounded).complete);
+  std::vector<Vec3> exact;
+  ASSERT_TRUE(detail::scan_point_lines(text, exact).complete);
+  ASSERT_EQ(bounded.size(), exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const Box3& box = bounded[i].box;
+    EXPECT_TRUE(box.min.x <= exact[i].x && box.min.y <= exact[i].y && box.min.z <= exact[i].z) << i;
+    EXPECT_TRUE(box.max.x >= exact[i].x && box.max.y >= exact[i].y && box.max.z >= exact[i].z) << i;
+    EXPECT_EQ(exact_point(bounded[i]), exact[i]) << i;
+  }
+}
+
+}  // namespace
+}  // namespace contain::io
