@@ -459,26 +459,9 @@ void MeshIndex::list_triangles_by_cell_as() {
   for (std::size_t c = first; c < cell_count; ++c)
     settle_cell(c);
   start[surface_cells] = listed_before;
-  if (for_saving_) {
-    // The file's lists: the triangles' numbers only (2.5 MB for 100k triangles, mostly in cache).
-    ref_tris_.resize(listed_before);
-    place_listed_triangles(std::span<const Pair>(pairs), surface, start, ref_tris_.data());
-  } else {
-    refs_.resize(listed_before);
-    // The references land scattered over 18 MB just faulted in (not in cache): each store's line
-    // is fetched a few pairs ahead (a prefetch for writing; where a cell's slot moves meanwhile
-    // the prefetch is only wasted).
-    constexpr std::size_t kAhead = 16;
-    for (std::size_t p = 0; p < pairs.size(); ++p) {
-      if (p + kAhead < pairs.size()) {
-        __builtin_prefetch(&refs_[start[surface[pairs[p + kAhead].cell]]], 1);
-      }
-      const auto [c, t] = pairs[p];
-      const Tri& tri = tris_[t];
-      refs_[start[surface[c]]++] = {
-          {tri.lo[0], tri.lo[1], tri.lo[2]}, {tri.hi[0], tri.hi[1], tri.hi[2]}, t};
-    }
-  }
+  // The lists: each pair's triangle number to its cell's next slot (2.5 MB for 100k triangles).
+  refs_.resize(listed_before);
+  place_listed_triangles(std::span<const Pair>(pairs), surface, start, refs_.data());
   // Each cursor now at its list's end, the next list's start: one place up, and 0 first.
   std::copy_backward(start, start + surface_cells, start + surface_cells + 1);
   start[0] = 0;
@@ -669,9 +652,8 @@ int MeshIndex::count_walk(Vec3 p, std::size_t cell, int first, int step) const {
     const Vec3 upper{axis.line(m + 1), q.y, q.z};
     const std::uint32_t k = surface_[c];
     for (std::uint32_t r = cell_start_[k]; r < cell_start_[k + 1]; ++r) {
-      const CellRef& ref = refs_[r];
-      if ((u < ref.lo[d1]) | (u > ref.hi[d1]) | (v < ref.lo[d2]) | (v > ref.hi[d2])) continue;
-      const Tri& t = tris_[ref.tri];
+      const Tri& t = tris_[refs_[r]];
+      if ((u < t.lo[d1]) | (u > t.hi[d1]) | (v < t.lo[d2]) | (v > t.hi[d2])) continue;
       const Vec3 a = axis_first<Axis>(t.a), b = axis_first<Axis>(t.b), cc = axis_first<Axis>(t.c);
       const Sign s = Axis == 0 ? t.s : predicates::projected_sign(a, b, cc);
       if (s == Sign::zero || !predicates::perturbed_line_hits_unboxed(a, b, cc, s, q)) continue;
@@ -764,7 +746,8 @@ Location MeshIndex::locate_exact(Vec3 p) const {
   if (state < 2) return state == 1 ? Location::inside : Location::outside;
   const std::uint32_t cell = surface_[row + static_cast<std::size_t>(i)];
   for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
-    if (!outside_box(refs_[r], p) && on_triangle(tris_[refs_[r].tri], p)) {
+    const Tri& t = tris_[refs_[r]];
+    if (!outside_box(t, p) && on_triangle(t, p)) {
       return by_parity_ ? Location::boundary : locate_on_surface(p);
     }
   }
@@ -853,12 +836,12 @@ Location MeshIndex::locate_on_surface(Vec3 p) const {
         if (packed_state(c) != 2) continue;
         const std::uint32_t cell = surface_[c];
         for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
-          const CellRef& ref = refs_[r];
-          if ((p.x > ref.hi[0]) | (p.y < ref.lo[1]) | (p.y > ref.hi[1]) | (p.z < ref.lo[2]) |
-              (p.z > ref.hi[2])) {
+          const Tri& t = tris_[refs_[r]];
+          if ((p.x > t.hi[0]) | (p.y < t.lo[1]) | (p.y > t.hi[1]) | (p.z < t.lo[2]) |
+              (p.z > t.hi[2])) {
             continue;
           }
-          near.push_back(ref.tri);
+          near.push_back(refs_[r]);
         }
       }
     }
@@ -946,23 +929,18 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
         if (c >= 0) {
           const char* first = reinterpret_cast<const char*>(
               &refs_[cell_start_[surface_[static_cast<std::size_t>(c)]]]);
-          __builtin_prefetch(first);
-          __builtin_prefetch(first + 64);
-          __builtin_prefetch(first + 128);
+          __builtin_prefetch(first);  // 16 references a line: most cells' whole list
         }
       }
       if (q + 1 < end) {
-        // The triangles of the next point's cell that its ray may meet: their records.
+        // The triangles of the next point's cell: their records (each one's box is read there).
         const std::ptrdiff_t c = surface_cell(q + 1);
         if (c >= 0) {
-          const Vec3 p = points[q + 1];
           const std::uint32_t cell = surface_[static_cast<std::size_t>(c)];
           for (std::uint32_t r = cell_start_[cell]; r < cell_start_[cell + 1]; ++r) {
-            const CellRef& ref = refs_[r];
-            if (!((p.y < ref.lo[1]) | (p.y > ref.hi[1]) | (p.z < ref.lo[2]) | (p.z > ref.hi[2]))) {
-              __builtin_prefetch(&tris_[ref.tri]);
-              __builtin_prefetch(reinterpret_cast<const char*>(&tris_[ref.tri]) + 64);
-            }
+            const char* record = reinterpret_cast<const char*>(&tris_[refs_[r]]);
+            __builtin_prefetch(record);
+            __builtin_prefetch(record + 64);
           }
         }
       }

@@ -85,8 +85,7 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   // reference: no copy of 10 MB for 100k triangles. An index for few queries keeps the mesh
   // instead: its records are made for the file, member by member into zeroed bytes.
   const bool direct = !index.mesh_.triangles.empty();
-  w.reserve((direct ? sizeof(MeshIndex::Tri) * index.mesh_.triangles.size() : 0) +
-            (index.for_saving_ ? 0 : 4 * index.refs_.size()) + 256);
+  w.reserve((direct ? sizeof(MeshIndex::Tri) * index.mesh_.triangles.size() : 0) + 256);
   if (direct) {
     const std::vector<MeshIndex::Tri> records = direct_records(index);
     std::byte* to = w.put_array_in_place<MeshIndex::Tri>(records.size());
@@ -110,17 +109,8 @@ void MeshIndexFile::write(const MeshIndex& index, index_bytes::Writer& w) {
   // Every cell's word: a surface cell's number, an empty cell's winding number.
   w.put_array_by_reference<std::uint32_t>(index.surface_);
   w.put_array_by_reference<std::uint32_t>(index.cell_start_);
-  // The lists' triangle numbers: as they lie where the index was built for saving, else taken
-  // from the references.
-  if (index.for_saving_) {
-    w.put_array_by_reference<std::uint32_t>(index.ref_tris_);
-  } else {
-    std::byte* ref_to = w.put_array_in_place<std::uint32_t>(index.refs_.size());
-    for (const MeshIndex::CellRef& ref : index.refs_) {
-      std::memcpy(ref_to, &ref.tri, sizeof ref.tri);
-      ref_to += sizeof ref.tri;
-    }
-  }
+  // The lists' triangle numbers, as they lie in memory.
+  w.put_array_by_reference<std::uint32_t>(index.refs_);
   const MeshIndex::Stats& s = index.stats_;
   for (std::size_t v : {s.triangles, s.cells, s.surface_cells, s.cell_refs})
     w.put<std::uint64_t>(v);
@@ -214,8 +204,7 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
   index.refs_.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     if (refs[i] >= triangles) return bad("a cell lists a triangle that does not exist");
-    const MeshIndex::Tri& t = index.tris_[refs[i]];
-    index.refs_[i] = {{t.lo[0], t.lo[1], t.lo[2]}, {t.hi[0], t.hi[1], t.hi[2]}, refs[i]};
+    index.refs_[i] = refs[i];
   }
   index.pack_states();
   index.stats_.nx = index.nx_;
@@ -225,7 +214,7 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
 }
 
 // The triangles as the index's own stage (read_triangles) makes them: finite corners, fewer
-// than 2^32 (CellRef numbers them in 32 bits), the ray sign exactly the projection's, the float
+// than 2^32 (the lists number them in 32 bits), the ray sign exactly the projection's, the float
 // box holding the corners (any such box is a correct rejection test). Sets the bounds.
 Status MeshIndexFile::check_triangles(MeshIndex& index) {
   if (index.tris_.size() >= (std::size_t{1} << 32)) return bad("too many triangles");

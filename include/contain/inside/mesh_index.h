@@ -184,18 +184,11 @@ class MeshIndex {
     std::uint8_t zero[7] = {};
   };
 
-  // A triangle of a surface cell, with a copy of its box so that a cell's rejection tests read one
-  // contiguous run of memory.
-  struct CellRef {
-    float lo[3], hi[3];  // the triangle's box rounded outward to float
-    std::uint32_t tri;   // into tris_
-  };
-
   [[nodiscard]] static Tri make_tri(Vec3 a, Vec3 b, Vec3 c);
 
-  // An index built only to be saved (MeshIndexToSave, index_file.h): the surface cells' lists
-  // hold the triangles' numbers only (ref_tris_), as the file stores them, not the CellRefs the
-  // queries read; such an index answers no query.
+  // An index built only to be saved (MeshIndexToSave, index_file.h): the records' hashes are
+  // summed as they are made and the winding regime's tree is not built; such an index answers
+  // no query.
   struct ForSaving {};
   MeshIndex(const Mesh& mesh, const MeshIndexOptions& options, ForSaving /*tag*/);
 
@@ -213,7 +206,7 @@ class MeshIndex {
     return static_cast<std::uint8_t>((packed_state_[cell / 4] >> (2 * (cell % 4))) & 3U);
   }
 
-  [[nodiscard]] static bool outside_box(const CellRef& r, Vec3 p) {
+  [[nodiscard]] static bool outside_box(const Tri& r, Vec3 p) {
     return (p.x < r.lo[0]) | (p.x > r.hi[0]) | (p.y < r.lo[1]) | (p.y > r.hi[1]) | (p.z < r.lo[2]) |
            (p.z > r.hi[2]);
   }
@@ -254,11 +247,12 @@ class MeshIndex {
   HugePageVector<std::uint32_t> surface_;
 
   std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
-  HugePageVector<CellRef> refs_;
-  // Built for saving only: refs_ stays empty and the lists are the triangles' numbers (4 bytes a
-  // reference, not 28: for 100k triangles 2.5 MB instead of 18 MB to fault in and fill).
+  // The surface cells' lists: the triangles' numbers (into tris_), 4 bytes a reference. A copy of
+  // each triangle's box beside its number (28 bytes) made the lists 18 MB for 100k triangles,
+  // most of the build's time spent by the kernel zeroing their pages; the box is read from the
+  // record instead (the triangles lie in cell order, so a cell's records lie close together).
+  HugePageVector<std::uint32_t> refs_;
   bool for_saving_ = false;
-  HugePageVector<std::uint32_t> ref_tris_;
   // Built for saving only: the sum of the records' triangle hashes (the file's fingerprint of the
   // mesh, index_file.h), added as the records are made, not in a second read of their 10 MB.
   std::uint64_t records_hash_sum_ = 0;
