@@ -2,8 +2,8 @@
 // The double nearest to an exact value given as a quotient (or base + offset / D) of expressions
 // in the input doubles, IEEE 754's rounding of a single operation (ties to even), in three
 // stages: a priori bounds in long double (`Mag`), running error bounds (`ErrLD`), and exact
-// big-number comparisons with the rounding boundaries. Shared by rounded_distance.cpp and
-// rounded_crossing.cpp; derivation in docs/robustness.md, "Distance".
+// big-number comparisons with the rounding boundaries. Shared by rounded_distance.cpp,
+// rounded_crossing.cpp and rounded_volume.cpp; derivation in docs/robustness.md, "Distance".
 
 #include <algorithm>
 #include <bit>

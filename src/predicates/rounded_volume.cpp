@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 
 #include "contain/predicates/big_float.h"
 #include "contain/predicates/unit_roundoff.h"
@@ -15,11 +16,13 @@ namespace {
 using detail::LD;
 using Triangles = std::span<const std::array<std::int32_t, 3>>;
 
-// Within 2^+-300 (or zero) a product of three coordinates and the parts below are exact or
-// carry the bounded roundings accounted for: no overflow, no underflow.
+// Within 2^+-200 (or zero) every part below is an exact double: a coordinate is a multiple of
+// 2^-252, so x * y, its leading double p and their difference pe are multiples of 2^-504, and
+// p * z, pe * z and their parts multiples of 2^-756, far above the subnormals; no product nears
+// overflow (2^600). Beyond, the exact stage decides.
 bool in_split_range(double x) {
   const double m = std::fabs(x);
-  return m == 0.0 || (m >= 0x1p-300 && m <= 0x1p300);
+  return m == 0.0 || (m >= 0x1p-200 && m <= 0x1p200);
 }
 
 // x * y = p + e exactly: by a fused multiply-add where the processor has one (chosen once at
@@ -34,18 +37,31 @@ inline void product_parts(double x, double y, double& p, double& e) {
   }
 }
 
-// A running sum: the exact sum of the terms is hi plus the exact sum of small parts, whose
-// rounded sum is lo; `small_mass` sums the small parts' magnitudes, for a bound of what lo's
-// roundings and the parts' own roundings lost.
+// A running sum in three levels: the exact sum of the terms is hi + lo + the exact sum of the
+// errors of lo's Two-Sums, whose rounded sum is lo2; `error_mass` sums those errors'
+// magnitudes, for a bound of what lo2's roundings lost. Every part is exact (in_split_range), so
+// that bound is the only one: of order u^2 of the small parts, which are of order u of the
+// products, and it does not grow with the coordinates' distance from the origin the way a
+// rounded sum of the small parts would (their roundings, of order u of terms that cancel, made
+// a mesh of 10^5 triangles 10^3 from the origin fall to the exact stage).
 struct Accumulator {
   double hi = 0.0;
   double lo = 0.0;
-  double small_mass = 0.0;
-  std::size_t small_parts = 0;
+  double lo2 = 0.0;
+  double error_mass = 0.0;
+  std::size_t errors = 0;
 
-  // Adds x * y * z: x * y = p + pe and p * z = q + qe exactly; q joins hi by Two-Sum (its error
-  // e joins lo), qe + pe * z joins lo rounded twice (within 2u (|qe| + |pe z|) (1 + u) of its
-  // exact value; |pe z| <= u |x y z|, so the bound is of order u^2 of the product).
+  void add_small(double x) {
+    double s = 0.0;
+    double e = 0.0;
+    detail::two_sum(lo, x, s, e);
+    lo = s;
+    lo2 += e;
+    error_mass += std::fabs(e);
+  }
+
+  // Adds x * y * z = p z + pe z = q + qe + r + re exactly (x * y = p + pe, p * z = q + qe,
+  // pe * z = r + re); q joins hi by Two-Sum, its error and the other three parts join lo.
   template <bool Fma>
   void add_product(double x, double y, double z) {
     double p = 0.0;
@@ -54,14 +70,18 @@ struct Accumulator {
     double q = 0.0;
     double qe = 0.0;
     product_parts<Fma>(p, z, q, qe);
+    double r = 0.0;
+    double re = 0.0;
+    product_parts<Fma>(pe, z, r, re);
     double s = 0.0;
     double e = 0.0;
     detail::two_sum(hi, q, s, e);
     hi = s;
-    const double r = pe * z;
-    lo += e + (qe + r);
-    small_mass += std::fabs(e) + std::fabs(qe) + std::fabs(r);
-    small_parts += 3;
+    add_small(e);
+    add_small(qe);
+    add_small(r);
+    add_small(re);
+    errors += 4;
   }
 };
 
@@ -108,28 +128,41 @@ BigFloat exact_determinant(Vec3 a, Vec3 b, Vec3 c) {
 
 }  // namespace
 
-double rounded_signed_volume(std::span<const Vec3> vertices, Triangles triangles) {
+namespace detail {
+
+std::optional<double> filtered_signed_volume(std::span<const Vec3> vertices, Triangles triangles) {
   bool in_range = true;
   for (const Vec3& v : vertices)
     in_range = in_range && in_split_range(v.x) && in_split_range(v.y) && in_split_range(v.z);
-  if (in_range) {
-    const Accumulator sum = fastest_determinant_sum(vertices, triangles);
-    // lo, the recursive sum of m small parts each rounded at most twice, is within
-    // (gamma_m + 2u (1 + u)) of their magnitudes' sum of their exact sum (Higham, "Accuracy and
-    // Stability of Numerical Algorithms", 4.2); 2 (m + 2) u covers that and the rounding of
-    // small_mass itself while m u < 1/4.
-    constexpr double u = unit_roundoff<double>;
-    const double m = static_cast<double>(sum.small_parts);
-    if (m * u < 0.25 && std::isfinite(sum.hi) && std::isfinite(sum.small_mass)) {
-      const LD low_error = static_cast<LD>(2.0 * (m + 2.0) * u) * static_cast<LD>(sum.small_mass);
-      const LD six_volume = static_cast<LD>(sum.hi) + static_cast<LD>(sum.lo);
-      const LD x = six_volume / 6;
-      const LD bound =
-          ((low_error + detail::kU * std::fabs(six_volume)) / 6 + detail::kU * std::fabs(x)) *
-          (1 + 16 * detail::kU);
-      double out = 0.0;
-      if (detail::certify_nearest(x, bound, out)) return out;
-    }
+  if (!in_range) return std::nullopt;
+  const Accumulator sum = fastest_determinant_sum(vertices, triangles);
+  // lo2, the recursive sum of m exact errors, is within gamma_m of their magnitudes' sum of
+  // their exact sum (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2);
+  // 2 (m + 2) u covers that and the rounding of error_mass itself while m u < 1/4. Then
+  // hi + lo + lo2 in long double, two roundings, and the division by 6, one more.
+  constexpr double u = unit_roundoff<double>;
+  const double m = static_cast<double>(sum.errors);
+  if (!(m * u < 0.25 && std::isfinite(sum.hi) && std::isfinite(sum.lo) &&
+        std::isfinite(sum.error_mass))) {
+    return std::nullopt;
+  }
+  const LD low_error = static_cast<LD>(2.0 * (m + 2.0) * u) * static_cast<LD>(sum.error_mass);
+  const LD leading = static_cast<LD>(sum.hi) + static_cast<LD>(sum.lo);
+  const LD six_volume = leading + static_cast<LD>(sum.lo2);
+  const LD x = six_volume / 6;
+  const LD bound =
+      ((low_error + kU * (std::fabs(leading) + std::fabs(six_volume))) / 6 + kU * std::fabs(x)) *
+      (1 + 16 * kU);
+  double out = 0.0;
+  if (!certify_nearest(x, bound, out)) return std::nullopt;
+  return out;
+}
+
+}  // namespace detail
+
+double rounded_signed_volume(std::span<const Vec3> vertices, Triangles triangles) {
+  if (const std::optional<double> fast = detail::filtered_signed_volume(vertices, triangles)) {
+    return *fast;
   }
   BigFloat six_volume;
   for (const auto& t : triangles) {
