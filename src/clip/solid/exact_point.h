@@ -79,6 +79,14 @@ struct Projection {
   Sign sense = Sign::positive;
 };
 
+/// The projection of `p` dropping coordinate `axis`, the other two in cyclic order (so that
+/// orient2d there is the sign of the normal's `axis` component).
+inline Vec2 drop_axis(Vec3 p, int axis) {
+  if (axis == 0) return {p.y, p.z};
+  if (axis == 1) return {p.z, p.x};
+  return {p.x, p.y};
+}
+
 /// `dropped_axis` of the exact normal (b - a) x (c - a) and that component's sign, decided by a
 /// filter in doubles where the largest component is certainly larger than the others by a
 /// relative 2^-31 (so that `dropped_axis`'s comparison by exponent and rounded significand picks

@@ -75,7 +75,7 @@ bool one_side(const std::array<Sign, 3>& s, int shared) {
 // The points of the pair stage for the engine: every crossing rounded and stored once. The
 // crossing of an edge with a plane is asked by both triangles on the edge (each meets the
 // plane's triangle): the second gets the first's number from a table of (edge, plane's
-// triangle), where it was rounded, compared exactly with the first and given its number again.
+// triangle) instead of being rounded again, compared exactly and renumbered.
 class StoredPoints {
  public:
   explicit StoredPoints(PointStore& store) : store_(store) {}
@@ -205,10 +205,7 @@ bool folded(const Soup& soup, std::int32_t t, std::int32_t u) {
   }
   const int axis = soup.projection(static_cast<std::size_t>(t)).axis;
   const auto at = [&](std::int32_t i) {
-    const Vec3 v = soup.vertices[static_cast<std::size_t>(i)];
-    if (axis == 0) return Vec2{v.y, v.z};
-    if (axis == 1) return Vec2{v.z, v.x};
-    return Vec2{v.x, v.y};
+    return drop_axis(soup.vertices[static_cast<std::size_t>(i)], axis);
   };
   return predicates::orient2d(at(p), at(q), at(x)) == predicates::orient2d(at(p), at(q), at(y));
 }

@@ -22,14 +22,6 @@ namespace {
 
 using predicates::orient2d;
 
-// The projection dropping `axis`, coordinates in cyclic order (orient2d there is the sign of the
-// normal's `axis` component).
-Vec2 flattened(Vec3 p, int axis) {
-  if (axis == 0) return {p.y, p.z};
-  if (axis == 1) return {p.z, p.x};
-  return {p.x, p.y};
-}
-
 // Bit 2k (2k + 1) when triangle t turns strictly positively (negatively) dropping axis k.
 std::uint8_t strict_turns(const Soup& soup, std::int32_t t) {
   const TriangleIndices& v = soup.triangles[static_cast<std::size_t>(t)];
@@ -38,7 +30,7 @@ std::uint8_t strict_turns(const Soup& soup, std::int32_t t) {
   const Vec3 c = soup.vertices[static_cast<std::size_t>(v[2])];
   unsigned bits = 0;
   for (int k = 0; k < 3; ++k) {
-    const Sign s = orient2d(flattened(a, k), flattened(b, k), flattened(c, k));
+    const Sign s = orient2d(drop_axis(a, k), drop_axis(b, k), drop_axis(c, k));
     if (s == Sign::positive) bits |= 1U << (2 * k);
     if (s == Sign::negative) bits |= 1U << (2 * k + 1);
   }
@@ -189,8 +181,8 @@ bool boundary_embeds(const Soup& soup, PatchScratch& scratch, int axis) {
   to.resize(m);
   bool pinched = false;
   for (std::size_t i = 0; i < m; ++i) {
-    from[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].from)], axis);
-    to[i] = flattened(soup.vertices[static_cast<std::size_t>(boundary[i].to)], axis);
+    from[i] = drop_axis(soup.vertices[static_cast<std::size_t>(boundary[i].from)], axis);
+    to[i] = drop_axis(soup.vertices[static_cast<std::size_t>(boundary[i].to)], axis);
     pinched = pinched || (i > 0 && boundary[i].from == boundary[i - 1].from);
   }
   if (!edges_apart(scratch)) return false;
@@ -318,9 +310,7 @@ bool PatchProofs::settled(std::int32_t node) const {
       if (at < first || at >= end) boundary.push_back({v[e], v[(e + 1) % 3]});
     }
   }
-  const bool embedded = embedded_in(soup_, scratch_, directions);
-  ++(embedded ? settled_ : failed_);
-  return embedded;
+  return embedded_in(soup_, scratch_, directions);
 }
 
 }  // namespace contain::clip::solid

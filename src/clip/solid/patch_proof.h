@@ -89,10 +89,6 @@ class PatchProofs {
   /// never settled (their few pairs cost less than a proof).
   [[nodiscard]] bool settled(std::int32_t node) const;
 
-  /// How many nodes were settled and how many tried in vain (for benchmarks and tests).
-  [[nodiscard]] std::size_t settled_count() const { return settled_; }
-  [[nodiscard]] std::size_t failed_count() const { return failed_; }
-
  private:
   const Soup& soup_;
   std::span<const std::array<std::int32_t, 3>> across_;
@@ -103,7 +99,6 @@ class PatchProofs {
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;
   mutable PatchScratch scratch_;
-  mutable std::size_t settled_ = 0, failed_ = 0;
 };
 
 }  // namespace contain::clip::solid

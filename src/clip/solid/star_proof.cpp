@@ -78,14 +78,6 @@ int fan_axis(Vec3 v, std::span<const Vec3* const> ring) {
   return ny >= nz ? 1 : 2;
 }
 
-// The projection dropping `axis`, coordinates in cyclic order (so that orient2d there is the
-// sign of the normal's `axis` component).
-Vec2 projection_of(Vec3 p, int axis) {
-  if (axis == 0) return {p.y, p.z};
-  if (axis == 1) return {p.z, p.x};
-  return {p.x, p.y};
-}
-
 // Whether v's star is proven; if so and `across` is given, its triangles' neighbours across
 // the edges at v written there.
 bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star,
@@ -101,10 +93,10 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
     ring[i] = &soup.vertices[static_cast<std::size_t>(ids[i])];
   const Vec3 apex = soup.vertices[static_cast<std::size_t>(v)];
   const int axis = fan_axis(apex, std::span<const Vec3* const>(ring.data(), n));
-  const Vec2 o = projection_of(apex, axis);
+  const Vec2 o = drop_axis(apex, axis);
   std::array<Vec2, max_star> p;  // (zeroed first, 256 bytes: cheap beside the tests)
   for (std::size_t i = 0; i < n; ++i)
-    p[i] = projection_of(*ring[i], axis);
+    p[i] = drop_axis(*ring[i], axis);
   // 1: every sector turns the same strict way (a zero-area triangle fails here).
   const Sign turn = orient2d(o, p[0], p[1]);
   if (turn == Sign::zero) return false;

@@ -57,12 +57,6 @@ namespace {
 
 using predicates::orient2d;
 
-// The projection that drops coordinate `axis` (the other two in cyclic order).
-Vec2 drop(Vec3 v, int axis) {
-  const double c[3] = {v.x, v.y, v.z};
-  return {c[(axis + 1) % 3], c[(axis + 2) % 3]};
-}
-
 // The axis along which the triangle's normal is largest in doubles: a choice of projection only
 // (the test below is exact whatever the axis; this one keeps the projection's area large).
 int largest_axis(const std::array<Vec3, 3>& t) {
@@ -108,7 +102,7 @@ struct Facing {
 // The axis and orientation of a triangle's own projection.
 std::pair<int, Sign> own_projection(const std::array<Vec3, 3>& t) {
   const int axis = largest_axis(t);
-  return {axis, orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis))};
+  return {axis, orient2d(drop_axis(t[0], axis), drop_axis(t[1], axis), drop_axis(t[2], axis))};
 }
 
 // A cheap sufficient test, exact: in the projection along `axis`, an edge line of one
@@ -123,8 +117,10 @@ bool apart_in_projection(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>
                          const std::array<int, 3>& t_in_u, const std::array<int, 3>& u_in_t,
                          const Facing& facing) {
   const int axis = facing.axis;
-  const std::array<Vec2, 3> a = {drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)};
-  const std::array<Vec2, 3> b = {drop(u[0], axis), drop(u[1], axis), drop(u[2], axis)};
+  const std::array<Vec2, 3> a = {drop_axis(t[0], axis), drop_axis(t[1], axis),
+                                 drop_axis(t[2], axis)};
+  const std::array<Vec2, 3> b = {drop_axis(u[0], axis), drop_axis(u[1], axis),
+                                 drop_axis(u[2], axis)};
   if (facing.turn_t != Sign::zero && edge_line_separates(a, facing.turn_t, b, u_in_t)) return true;
   const Sign turn_b = facing.turn_u ? *facing.turn_u : orient2d(b[0], b[1], b[2]);
   return turn_b != Sign::zero && edge_line_separates(b, turn_b, a, t_in_u);
@@ -354,13 +350,6 @@ Shells shells_of(const Mesh& mesh) {
   return out;
 }
 
-// Shells that do not cross nor touch other than at shared positions bound nested regions; the
-// winding number is 1 inside the result and 0 outside exactly when every shell s is outward
-// (positive volume) with the other shells' solid outside it, or inward with the other shells'
-// solid around it (by induction on the depth of nesting: the shells around a shell at even depth
-// sum to 0, at odd depth to 1). The other shells' side is asked at a vertex of s whose position
-// no other shell uses: such a vertex is on no other shell (its triangles would meet that shell
-// beyond shared corners), and only shells whose boxes hold it can hold it.
 // Whether the triangles are connected through shared vertex numbers (one shell): a union-find
 // of 32-bit vertex numbers, no lists of each shell's triangles nor boxes.
 bool one_shell(const Mesh& mesh) {
@@ -376,6 +365,13 @@ bool one_shell(const Mesh& mesh) {
                      [&](const TriangleIndices& t) { return sets.find(at(t[0])) == first; });
 }
 
+// Shells that do not cross nor touch other than at shared positions bound nested regions; the
+// winding number is 1 inside the result and 0 outside exactly when every shell s is outward
+// (positive volume) with the other shells' solid outside it, or inward with the other shells'
+// solid around it (by induction on the depth of nesting: the shells around a shell at even depth
+// sum to 0, at odd depth to 1). The other shells' side is asked at a vertex of s whose position
+// no other shell uses: such a vertex is on no other shell (its triangles would meet that shell
+// beyond shared corners), and only shells whose boxes hold it can hold it.
 bool oriented(const Mesh& mesh) {
   // One shell (most results): no other shell to ask about (every position is its own, so the
   // loop below would ask no shell at its free vertex and find it outside), so it is oriented
