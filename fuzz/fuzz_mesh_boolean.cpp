@@ -6,8 +6,8 @@
 //   non-finite coordinate (invalid_value), or a rounding that could not be repaired
 //   (degenerate); closed inputs are never refused as open;
 // - every result is the contract's mesh: finite vertices, indices in range, closed (each
-//   directed edge as often as its reverse), no zero-area triangle (exact orient2d on the three
-//   projections) and no two triangles meeting other than at shared corners or a shared edge
+//   directed edge as often as its reverse), no zero-area triangle (predicates::collinear, exact)
+//   and no two triangles meeting other than at shared corners or a shared edge
 //   (collide::self_intersections, exact);
 // - every result is the boolean's answer: a sample point farther than 4e-9 x (the largest input
 //   coordinate) from every input's surface (exact distance test) lies in the result exactly when
@@ -21,7 +21,7 @@
 #include "contain/collide/self_intersections.h"
 #include "contain/distance/mesh_distance.h"
 #include "contain/inside/mesh_index.h"
-#include "contain/predicates/orient2d.h"
+#include "contain/predicates/closest_feature.h"
 #include "contain/shapes/mesh_closure.h"
 #include "fuzz_support.h"
 
@@ -77,13 +77,6 @@ Mesh solid(fuzz::FuzzInput& in) {
   }
 }
 
-bool zero_area(const Triangle3& t) {
-  using predicates::orient2d;
-  return orient2d({t.a.x, t.a.y}, {t.b.x, t.b.y}, {t.c.x, t.c.y}) == Sign::zero &&
-         orient2d({t.a.y, t.a.z}, {t.b.y, t.b.z}, {t.c.y, t.c.z}) == Sign::zero &&
-         orient2d({t.a.z, t.a.x}, {t.b.z, t.b.x}, {t.c.z, t.c.x}) == Sign::zero;
-}
-
 void check_result(const Mesh& m) {
   for (const Vec3& v : m.vertices)
     FUZZ_CHECK(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
@@ -93,8 +86,10 @@ void check_result(const Mesh& m) {
       FUZZ_CHECK(i >= 0 && i < n);
   }
   FUZZ_CHECK(!unmatched_edge(m).has_value());
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    FUZZ_CHECK(!zero_area(m.triangle(t)));
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Triangle3 tri = m.triangle(t);
+    FUZZ_CHECK(!predicates::collinear(tri.a, tri.b, tri.c));
+  }
   FUZZ_CHECK(collide::self_intersections(m, {.keep = 1, .limit = 1}).empty());
 }
 

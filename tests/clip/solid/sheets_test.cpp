@@ -97,7 +97,7 @@ TEST(SolidSheets, EdgesReportedPairedAreEachMatchedOnceByTheirReverse) {
     }
     const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
     switch (rng() % 4) {
-      case 0:  // two points identified
+      case 0:  // corners moved at random onto other points (fans, pinches, repeated corners)
         for (auto& f : faces) {
           for (auto& v : f)
             v = v == point[pick(12)] ? point[pick(12)] : v;

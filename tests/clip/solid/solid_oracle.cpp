@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "contain/collide/self_intersections.h"
+#include "contain/predicates/closest_feature.h"
 #include "scenes/scenes.h"
 #include "support/exact.h"
 
@@ -220,6 +221,31 @@ Mesh joined(const Mesh& a, const Mesh& b) {
   for (const TriangleIndices& t : b.triangles)
     m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   return m;
+}
+
+clip::solid::Soup raw_soup(const std::vector<Vec3>& vertices,
+                           const std::vector<TriangleIndices>& triangles) {
+  clip::solid::Soup soup;
+  soup.inputs = 1;
+  soup.vertices = vertices;
+  soup.triangles = triangles;
+  soup.input.assign(triangles.size(), 0);
+  for (const TriangleIndices& t : triangles) {
+    const Vec3 a = vertices[static_cast<std::size_t>(t[0])];
+    const Vec3 b = vertices[static_cast<std::size_t>(t[1])];
+    const Vec3 c = vertices[static_cast<std::size_t>(t[2])];
+    const bool flat = predicates::collinear(a, b, c);
+    soup.degenerate.push_back(flat);
+    Box3 box;
+    if (!flat) {
+      box.expand(a);
+      box.expand(b);
+      box.expand(c);
+    }
+    soup.boxes.push_back(box);
+  }
+  soup.tree = bvh::Bvh(soup.boxes);
+  return soup;
 }
 
 }  // namespace contain::test

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "clip/solid/engine.h"
 #include "contain/clip/polygon_boolean.h"
 #include "contain/shapes/mesh.h"
 
@@ -38,5 +39,11 @@ namespace contain::test {
 [[nodiscard]] Mesh reversed(Mesh mesh);
 /// The meshes' vertices and triangles in one mesh.
 [[nodiscard]] Mesh joined(const Mesh& a, const Mesh& b);
+
+/// The triangles as given as a soup of one input: no welding and no closedness check (the open,
+/// folded and degenerate patches and stars the proofs must refuse); zero-area triangles marked
+/// degenerate with empty boxes, as make_soup marks them.
+[[nodiscard]] clip::solid::Soup raw_soup(const std::vector<Vec3>& vertices,
+                                         const std::vector<TriangleIndices>& triangles);
 
 }  // namespace contain::test

@@ -26,7 +26,6 @@
 #include "clip/solid/engine.h"
 #include "clip/solid/solid_oracle.h"
 #include "contain/collide/self_intersections.h"
-#include "contain/predicates/orient2d.h"
 #include "support/case_budget.h"
 
 namespace contain::test {
@@ -38,34 +37,6 @@ using clip::solid::PointStore;
 using clip::solid::proven_vertices;
 using clip::solid::Soup;
 using clip::solid::TriangleWork;
-
-// The triangles as given, one input, no welding and no closedness check (the open and
-// degenerate stars the proofs meet in the check of a written mesh's neighbourhood).
-Soup raw_soup(const std::vector<Vec3>& vertices, const std::vector<TriangleIndices>& triangles) {
-  Soup soup;
-  soup.inputs = 1;
-  soup.vertices = vertices;
-  soup.triangles = triangles;
-  soup.input.assign(triangles.size(), 0);
-  for (const TriangleIndices& t : triangles) {
-    const Vec3 a = vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = vertices[static_cast<std::size_t>(t[2])];
-    using predicates::orient2d;
-    const bool flat = orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
-                      orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
-                      orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
-    soup.degenerate.push_back(flat);
-    Box3 box;
-    if (!flat) {
-      for (const std::int32_t i : t)
-        box.expand(vertices[static_cast<std::size_t>(i)]);
-    }
-    soup.boxes.push_back(box);
-  }
-  soup.tree = bvh::Bvh(soup.boxes);
-  return soup;
-}
 
 Soup soup_of(const std::vector<Mesh>& inputs) {
   Result<Soup> soup = clip::solid::make_soup(inputs);
