@@ -14,10 +14,11 @@
 /// number_bound.h, whose box then comes from the integer part and the first 8 fraction digits
 /// (8-byte loads, bound_from_digits: the computation of bound_plain_number, bit for bit). A line
 /// is taken when it has exactly 2 or 3 such tokens (or only blanks). Any other line (a comment,
-/// a comma, an exponent, a '+', a line of 65 bytes or more, an error) and the last 72 to 191
-/// bytes of the text are walked by scan_bounded_lines itself, one line at a time, so the
-/// results there are that walk's by construction; once more than a third of the lines went to
-/// the walk, the rest of the text does, in one walk (a file of commas reads as fast as before).
+/// a comma, an exponent, a '+', a line of 65 bytes or more, an error) and the lines of at most
+/// the last 127 bytes of the text (those starting in its last whole block or after) are walked by
+/// scan_bounded_lines itself, one line at a time, so the results there are that walk's by
+/// construction; once more than a third of the lines went to the walk, the rest of the text does,
+/// in one walk (a file of commas reads as fast as before).
 
 #include <cstdint>
 #include <string_view>

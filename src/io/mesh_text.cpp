@@ -501,16 +501,6 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   return finish_mesh(std::move(vertices), std::move(triangles), info, source);
 }
 
-void append_vertex_line(std::string& out, const char* prefix, Vec3 v) {
-  out += prefix;
-  append_double(out, v.x);
-  out += ' ';
-  append_double(out, v.y);
-  out += ' ';
-  append_double(out, v.z);
-  out += '\n';
-}
-
 namespace {
 
 // The vertex and index lines of OBJ and OFF written in place into a buffer sized for the
@@ -575,6 +565,12 @@ std::string format_lines(const Mesh& mesh, const std::string& header, std::strin
 }
 
 }  // namespace
+
+void append_vertex_line(std::string& out, const char* prefix, Vec3 v) {
+  out += prefix;  // any length (STL's "vertex "): the line after it put in place
+  char line[kVertexLineRoom];
+  out.append(line, put_vertex_line(line, "", v));
+}
 
 std::string format_obj(const Mesh& mesh) {
   return format_lines(mesh, "# written by contain\n", "v ", "f ", 1);

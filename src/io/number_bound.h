@@ -68,7 +68,7 @@ struct NumberBound {
   }
 }
 
-/// How many leading bytes of [p, end) are digits, checked 8 bytes at a time where 8 remain.
+/// Past the leading digits of [p, end), checked 8 bytes at a time where 8 remain.
 [[nodiscard]] inline const char* skip_digits(const char* p, const char* end) {
   while (end - p >= 8) {
     const std::uint64_t flags = non_digit_bits(load8(p));
@@ -95,6 +95,11 @@ struct NumberBound {
   return skip_digits(p, end);
 }
 
+/// The scales of bound_from_digits (see the file comment): below and above 10^-8 by more than
+/// the roundings of the products they make, shared with the masked scanner's vector loop.
+inline constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50);
+inline constexpr double kHighScale = 1e-8 * (1.0 + 0x1p-50);
+
 /// The box of a plain-shape token (see the file comment) from its integer part `whole` (below
 /// 10^7), the first 8 digits of its fraction `fraction` (padded with zeros) and its sign: the
 /// computation of every reader of plain numbers, so that they give the same bits (the masked
@@ -102,7 +107,6 @@ struct NumberBound {
 [[nodiscard, gnu::always_inline]] inline NumberBound bound_from_digits(std::uint64_t whole,
                                                                        std::uint64_t fraction,
                                                                        bool negative) {
-  constexpr double kLowScale = 1e-8 * (1.0 - 0x1p-50), kHighScale = 1e-8 * (1.0 + 0x1p-50);
   const auto m = static_cast<double>(whole * 100000000u + fraction);
   const double lo = m * kLowScale, hi = (m + 1.0) * kHighScale;
   // The sign without a branch (random signs mispredict half the time): exact products, min/max.
@@ -110,12 +114,19 @@ struct NumberBound {
   return {std::min(sign * lo, sign * hi), std::max(sign * lo, sign * hi)};
 }
 
-/// The fraction's first 8 digits of a token from the 8 bytes after its point (`bytes`, first in
-/// the low byte) of which the first `count` (1 to 8) are digits: the rest read as zeros.
+/// The 8 bytes after a token's point (`bytes`, first in the low byte) of which the first `count`
+/// (1 or more) are digits, the rest replaced by '0' characters.
+[[nodiscard, gnu::always_inline]] inline std::uint64_t padded_fraction_bytes(std::uint64_t bytes,
+                                                                             int count) {
+  const std::uint64_t kept = count >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * count)) - 1;
+  return (bytes & kept) | (0x3030303030303030u & ~kept);
+}
+
+/// The fraction's first 8 digits of a token from the 8 bytes after its point, of which the
+/// first `count` are digits: the rest read as zeros.
 [[nodiscard, gnu::always_inline]] inline std::uint64_t leading_fraction(std::uint64_t bytes,
                                                                         int count) {
-  const std::uint64_t kept = count >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * count)) - 1;
-  return eight_digits((bytes & kept) | (0x3030303030303030u & ~kept));
+  return eight_digits(padded_fraction_bytes(bytes, count));
 }
 
 /// Bounds the plain-shape number at `p` (see the file comment), advancing `p` past its token;

@@ -168,7 +168,7 @@ TEST(MaskedLines, RandomPointFilesGiveTheWalksPointsBoxesSpansAndLines) {
 }
 
 TEST(MaskedLines, PlainLinesAreTakenByTheMasksNotTheWalk) {
-  // Only the lines of the last 72 to 191 bytes (short of two whole blocks) go to the walk.
+  // Only the lines of at most the last 127 bytes (short of two whole blocks) go to the walk.
   std::mt19937_64 rng(1);
   std::string text;
   char buffer[64];
@@ -331,7 +331,7 @@ TEST(MaskedLines, StopsAtTheWalksLineWithTheWalksPointsBeforeIt) {
   }
 }
 
-TEST(MaskedLines, TheBoundedReaderGivesTheChunkedReadersPointsInEveryBox) {
+TEST(MaskedLines, MaskedScanBoxesHoldTheExactScansPoints) {
   // The whole reader through the masks: each box holds the exactly read point.
   std::mt19937_64 rng(11);
   const std::string text = random_file(rng, 3, 3000, true);
