@@ -640,14 +640,11 @@ int MeshIndex::count_walk(Vec3 p, std::size_t cell, int first, int step) const {
     // upper plane unless the next cell is empty or there is none. Behind (step -1): hits at or
     // before p in p's cell, else below the upper plane; at or beyond the lower plane unless the
     // cell before is empty or there is none.
-    const bool has_next =
-        m + 1 < n &&
-        packed_state(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + stride)) == 2;
-    const bool has_before =
-        m > 0 &&
-        packed_state(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) - stride)) == 2;
-    const bool test_lower = step > 0 ? m != first : has_before;
-    const bool test_upper = step > 0 ? has_next : m != first;
+    const auto surface_at = [&](std::ptrdiff_t offset) {
+      return packed_state(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + offset)) == 2;
+    };
+    const bool test_lower = step > 0 ? m != first : m > 0 && surface_at(-stride);
+    const bool test_upper = step > 0 ? m + 1 < n && surface_at(stride) : m != first;
     const Vec3 lower{axis.line(m), q.y, q.z};
     const Vec3 upper{axis.line(m + 1), q.y, q.z};
     const std::uint32_t k = surface_[c];
@@ -900,13 +897,6 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
   constexpr std::size_t kAhead = 16, kNumberAhead = 11, kStartAhead = 7, kListAhead = 3;
   parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
     std::array<std::ptrdiff_t, kAhead> guessed{};
-    auto guess = [&](Vec3 p) -> std::ptrdiff_t {
-      if (!bounds_.contains(p)) return -1;
-      const int i = x_.guess(p.x);
-      const int j = y_.guess(p.y);
-      const int k = z_.guess(p.z);
-      return (static_cast<std::ptrdiff_t>(k) * ny_ + j) * nx_ + i;
-    };
     // The surface cell of the guessed cell of point q, or -1.
     auto surface_cell = [&](std::size_t q) -> std::ptrdiff_t {
       const std::ptrdiff_t c = guessed[q % kAhead];
@@ -914,7 +904,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
       return c;
     };
     for (std::size_t q = begin; q < std::min(end, begin + kAhead); ++q)
-      guessed[q % kAhead] = guess(points[q]);
+      guessed[q % kAhead] = guessed_cell(points[q]);
     for (std::size_t q = begin; q < end; ++q) {
       if (q + kNumberAhead < end) {
         const std::ptrdiff_t c = surface_cell(q + kNumberAhead);
@@ -946,7 +936,7 @@ void MeshIndex::locate(std::span<const Vec3> points, std::span<Location> out,
       }
       out[q] = locate_exact(points[q]);
       if (q + kAhead < end) {
-        const std::ptrdiff_t c = guess(points[q + kAhead]);
+        const std::ptrdiff_t c = guessed_cell(points[q + kAhead]);
         guessed[q % kAhead] = c;
         if (c >= 0) {
           __builtin_prefetch(&packed_state_[static_cast<std::size_t>(c) / 4]);

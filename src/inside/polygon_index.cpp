@@ -375,16 +375,6 @@ std::size_t PolygonIndex::memory_bytes() const {
          side_edges_.capacity() * sizeof(SideEdge);
 }
 
-std::ptrdiff_t PolygonIndex::guessed_cell(Vec2 point) const {
-  if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
-        point.y <= bounds_.max.y)) {
-    return -1;
-  }
-  const int i = x_.guess(point.x);
-  const int j = y_.guess(point.y);
-  return static_cast<std::ptrdiff_t>(j) * x_.cells() + i;
-}
-
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
                           const BatchOptions& options) const {
   const std::size_t count = batch_size(points.size(), out.size());

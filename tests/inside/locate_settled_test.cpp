@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "contain/inside/grid_axis.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/polygon_index.h"
 #include "inside/mesh_test_meshes.h"
@@ -156,6 +157,25 @@ TEST(LocateSettled, MeshBoxTouchingAGridPlaneOrWithoutGridIsNotSettledInsideTheB
   const Box3 b = index.bounds();
   const Vec3 mid = 0.5 * b.min + 0.5 * b.max;
   EXPECT_FALSE(index.locate_settled({{b.min.x, mid.y, mid.z}, {b.min.x + 1e-9, mid.y, mid.z}}));
+  // Every inner plane across x, touched from either side (the index's axis: its bounds cut
+  // into its cell count, as the index builds it), at a y and z inside a cell.
+  const MeshIndex::Stats stats = index.stats();
+  ASSERT_GT(stats.nx, 1);
+  const GridAxis xs(b.min.x, b.max.x, stats.nx);
+  const GridAxis ys(b.min.y, b.max.y, stats.ny), zs(b.min.z, b.max.z, stats.nz);
+  int settled_between = 0;  // the same boxes moved off the plane: settled in empty cells
+  for (int j = 0; j < stats.ny; j += 3) {
+    const double y = 0.5 * ys.line(j) + 0.5 * ys.line(j + 1);
+    const double z = 0.5 * zs.line(j % stats.nz) + 0.5 * zs.line(j % stats.nz + 1);
+    for (int i = 1; i < stats.nx; ++i) {
+      const double x = xs.line(i);
+      EXPECT_FALSE(index.locate_settled({{x, y, z}, {x + 1e-9, y, z}})) << i << " " << j;
+      EXPECT_FALSE(index.locate_settled({{x - 1e-9, y, z}, {x, y, z}})) << i << " " << j;
+      const double between = 0.5 * xs.line(i - 1) + 0.5 * x;
+      settled_between += index.locate_settled({{between, y, z}, {between + 1e-9, y, z}}) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(settled_between, 10);
   EXPECT_EQ(index.locate_settled({{-2, -2, -2}, {-1, -1, -1}}), Location::outside);
   const MeshIndex few(cube, {.queries = 1});
   EXPECT_FALSE(few.locate_settled({mid, mid}));

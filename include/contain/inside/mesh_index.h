@@ -130,13 +130,9 @@ class MeshIndex {
   /// Warms the cache for a query at `p` (its guessed cell's state byte), for callers'
   /// pipelines; no effect on any answer.
   void prefetch(Vec3 p) const {
-    if (packed_state_.empty() || !bounds_.contains(p)) return;
-    const std::size_t cell =
-        (static_cast<std::size_t>(z_.guess(p.z)) * static_cast<std::size_t>(ny_) +
-         static_cast<std::size_t>(y_.guess(p.y))) *
-            static_cast<std::size_t>(nx_) +
-        static_cast<std::size_t>(x_.guess(p.x));
-    __builtin_prefetch(&packed_state_[cell / 4]);
+    if (packed_state_.empty()) return;
+    const std::ptrdiff_t cell = guessed_cell(p);
+    if (cell >= 0) __builtin_prefetch(&packed_state_[static_cast<std::size_t>(cell) / 4]);
   }
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all). Deterministic.
@@ -173,6 +169,11 @@ class MeshIndex {
   [[nodiscard]] Stats stats() const { return stats_; }
 
  private:
+  // The cell p's doubles guess (the exact cell may be a neighbour); -1 outside the box.
+  [[nodiscard]] std::ptrdiff_t guessed_cell(Vec3 p) const {
+    if (!bounds_.contains(p)) return -1;
+    return (static_cast<std::ptrdiff_t>(z_.guess(p.z)) * ny_ + y_.guess(p.y)) * nx_ + x_.guess(p.x);
+  }
   // Saving and loading (src/inside/mesh_index_file.cpp) read and write every member.
   friend struct MeshIndexFile;
 

@@ -88,11 +88,8 @@ class PolygonIndex {
   /// Warms the cache for a query at `point` (its guessed cell's state), for callers' pipelines;
   /// no effect on any answer.
   void prefetch(Vec2 point) const {
-    if (!bounds_.contains(point)) return;  // also: no grid
-    __builtin_prefetch(&packed_states_[(static_cast<std::size_t>(y_.guess(point.y)) *
-                                            static_cast<std::size_t>(x_.cells()) +
-                                        static_cast<std::size_t>(x_.guess(point.x))) /
-                                       4]);
+    const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
+    if (cell >= 0) __builtin_prefetch(&packed_states_[static_cast<std::size_t>(cell) / 4]);
   }
 
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
@@ -140,7 +137,14 @@ class PolygonIndex {
   // The last stage of construction (polygon_index.cpp): the cells' codes, edge cells and side
   // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
   void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
-  [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const;  // -1 outside the box
+  // The cell the point's doubles guess (the exact cell may be a neighbour); -1 outside the box.
+  [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const {
+    if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
+          point.y <= bounds_.max.y)) {
+      return -1;
+    }
+    return static_cast<std::ptrdiff_t>(y_.guess(point.y)) * x_.cells() + x_.guess(point.x);
+  }
   // packed_states_ from cells_ (after construction and after loading).
   void pack_states();
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
