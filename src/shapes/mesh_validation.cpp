@@ -13,7 +13,6 @@
 #include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/rounded_volume.h"
-#include "contain/values/box.h"
 
 // Outline: the triangle corners grouped by vertex (one counting sort) give, at each vertex v,
 // its links: for each corner at v, the two neighbours along the triangle's edges. Links with the
@@ -250,14 +249,10 @@ MeshReport validate(const Mesh& mesh, bool quick_first) {
   r.triangles = mesh.triangles.size();
   const std::size_t nt = mesh.triangles.size();
 
-  Box3 box;
   for (const TriangleIndices& tri : mesh.triangles) {
     const Vec3 a = mesh.vertex(tri[0]);
     const Vec3 b = mesh.vertex(tri[1]);
     const Vec3 c = mesh.vertex(tri[2]);
-    box.expand(a);
-    box.expand(b);
-    box.expand(c);
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] || zero_area(a, b, c)) {
       ++r.degenerate_triangles;
     }
