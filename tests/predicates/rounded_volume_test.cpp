@@ -115,35 +115,44 @@ TEST(RoundedSignedVolume, ClosedBoxesFarFromTheOriginGiveTheirVolumesExactly) {
 
 // Many closed tetrahedra of full-precision coordinates, a unit apart, shifted far from the
 // origin: the products cancel to a volume of order one, which the fast stage certifies (its
-// bound does not grow with the distance), and it is the nearest double.
+// bound does not grow with the distance) unless the value lies by chance within its bound
+// (about 10^-3 of an ulp here) of a rounding boundary; what it gives is the nearest double.
 TEST(RoundedSignedVolume, LargeMeshesFarFromTheOriginAreCertifiedByTheFastStage) {
   std::mt19937_64 rng(2711);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const int tetrahedra = case_budget(5000, 10);
+  const int tetrahedra = case_budget(1000, 5);
+  constexpr int kMeshes = 10;
   for (const double offset : {0.0, 1e3, -1e5, 3e5}) {
-    Soup s;
-    for (int k = 0; k < tetrahedra; ++k) {
-      const auto first = static_cast<std::int32_t>(s.vertices.size());
-      for (int v = 0; v < 4; ++v)
-        s.vertices.push_back({offset + unit(rng), offset + unit(rng), offset - unit(rng)});
-      // A closed tetrahedron, its faces turned where its exact volume is negative.
-      std::array<Triangle, 4> faces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
-      Soup one;
-      one.vertices.assign(s.vertices.end() - 4, s.vertices.end());
-      one.triangles.assign(faces.begin(), faces.end());
-      if (exact_volume(one) < 0) {
-        for (Triangle& t : faces)
-          std::swap(t[1], t[2]);
+    int certified = 0;
+    for (int mesh = 0; mesh < kMeshes; ++mesh) {
+      Soup s;
+      for (int k = 0; k < tetrahedra; ++k) {
+        const auto first = static_cast<std::int32_t>(s.vertices.size());
+        for (int v = 0; v < 4; ++v)
+          s.vertices.push_back({offset + unit(rng), offset + unit(rng), offset - unit(rng)});
+        // A closed tetrahedron, its faces turned where its exact volume is negative.
+        std::array<Triangle, 4> faces{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+        Soup one;
+        one.vertices.assign(s.vertices.end() - 4, s.vertices.end());
+        one.triangles.assign(faces.begin(), faces.end());
+        if (exact_volume(one) < 0) {
+          for (Triangle& t : faces)
+            std::swap(t[1], t[2]);
+        }
+        for (const Triangle& t : faces)
+          s.triangles.push_back({first + t[0], first + t[1], first + t[2]});
       }
-      for (const Triangle& t : faces)
-        s.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+      const std::optional<double> fast =
+          predicates::detail::filtered_signed_volume(s.vertices, s.triangles);
+      const double v = volume(s);
+      EXPECT_TRUE(is_rounded(v, exact_volume(s))) << offset;
+      if (!fast) continue;
+      ++certified;
+      EXPECT_EQ(*fast, v) << offset;
     }
-    const std::optional<double> fast =
-        predicates::detail::filtered_signed_volume(s.vertices, s.triangles);
-    ASSERT_TRUE(fast.has_value()) << offset;
-    EXPECT_GT(*fast, 0.0) << offset;
-    EXPECT_TRUE(is_rounded(*fast, exact_volume(s))) << offset;
-    EXPECT_EQ(volume(s), *fast) << offset;
+    // (The rounded running sum of before sent a 100k-triangle torus 10^3 from the origin to the
+    // exact stage.)
+    EXPECT_GE(certified, kMeshes - 2) << offset;
   }
 }
 
