@@ -340,7 +340,7 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
   // points).
   std::optional<PatchProofs> patches;
-  if (patches_pay) patches.emplace(soup, stars.corners, stars.across);
+  if (patches_pay) patches.emplace(soup, stars);
   (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {

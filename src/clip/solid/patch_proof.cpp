@@ -246,37 +246,47 @@ bool embedded_patch(const Soup& soup, std::span<const std::int32_t> patch) {
   return !patch.empty() && embedded_in(soup, scratch, directions);
 }
 
-PatchProofs::PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners,
-                         std::span<const std::array<std::int32_t, 3>> across)
-    : soup_(soup), across_(across) {
+PatchProofs::PatchProofs(const Soup& soup, const ProvenStars& stars) : soup_(soup) {
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   const std::span<const std::int32_t> items = soup.tree.items();
+  const std::size_t triangles = soup.triangles.size();
   directions_.assign(nodes.size(), 0);
   ranges_.assign(nodes.size(), {0, 0});
-  position_.assign(soup.triangles.size(), -1);
+  std::vector<std::int32_t> position(triangles, -1);
   for (std::size_t k = 0; k < items.size(); ++k)
-    position_[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
+    position[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
+  // What the proofs read of each triangle, in leaf order (a subtree's triangles are then one
+  // run of memory, where reading them by triangle number missed the cache at each): its
+  // neighbours' positions, its turns (0 with a corner not proven: such a triangle is never in a
+  // settled subtree) and its input; filled in the triangles' own order, in which `across`,
+  // `corners` and `turns` are read in sequence and the neighbours' positions mostly in cache.
+  across_at_.assign(items.size(), {-1, -1, -1});
+  std::vector<std::uint8_t> turns(items.size(), 0);
+  std::vector<std::int32_t> input_at(items.size(), 0);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const std::int32_t at = position[t];
+    if (at < 0) continue;
+    const auto k = static_cast<std::size_t>(at);
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::int32_t u = stars.across[t][e];
+      across_at_[k][e] = u < 0 ? -1 : position[static_cast<std::size_t>(u)];
+    }
+    turns[k] = stars.corners[t] == 7 ? stars.turns[t] : std::uint8_t{0};
+    input_at[k] = soup.input[t];
+  }
   // The input of each node's triangles (-1: of several). Subtrees of two inputs are not tried:
   // they hold the places where the inputs come near each other, and their proofs failed there
   // (at a union of two 131k-triangle spheres, 3,282 tries over 1.1 M triangles, for nothing).
   std::vector<std::int32_t> input(nodes.size(), -1);
-  // The triangles' turns in their own order (their corners' positions mostly in cache), 0 for a
-  // triangle with a corner not proven.
-  std::vector<std::uint8_t> turns(soup.triangles.size(), 0);
-  for (std::size_t t = 0; t < turns.size(); ++t) {
-    if (corners[t] == 7) turns[t] = strict_turns(soup, static_cast<std::int32_t>(t));
-  }
   // Children after their parent: bottom up in reverse.
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const bvh::Node& n = nodes[i];
     if (n.is_leaf()) {
       unsigned bits = 0x3f;
-      const std::int32_t one =
-          soup.input[static_cast<std::size_t>(items[static_cast<std::size_t>(n.first)])];
-      for (std::int32_t k = n.first; k < n.first + n.count && bits != 0; ++k) {
-        const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
-        bits &= soup.input[t] == one ? turns[t] : 0U;
-      }
+      const auto first = static_cast<std::size_t>(n.first);
+      const std::int32_t one = input_at[first];
+      for (std::size_t k = first; k < first + static_cast<std::size_t>(n.count); ++k)
+        bits &= input_at[k] == one ? turns[k] : 0U;
       directions_[i] = static_cast<std::uint8_t>(bits);
       input[i] = one;
       ranges_[i] = {n.first, n.first + n.count};
@@ -301,13 +311,15 @@ bool PatchProofs::settled(std::int32_t node) const {
   std::vector<BoundaryEdge>& boundary = scratch_.boundary;
   boundary.clear();
   for (std::int32_t k = first; k < end; ++k) {
-    const auto t = static_cast<std::size_t>(items[static_cast<std::size_t>(k)]);
-    const TriangleIndices& v = soup_.triangles[t];
+    const std::array<std::int32_t, 3>& across = across_at_[static_cast<std::size_t>(k)];
     for (std::size_t e = 0; e < 3; ++e) {
-      const std::int32_t u = across_[t][e];
-      if (u < 0) return false;  // (not reached: all its corners are proven)
-      const std::int32_t at = position_[static_cast<std::size_t>(u)];
-      if (at < first || at >= end) boundary.push_back({v[e], v[(e + 1) % 3]});
+      const std::int32_t at = across[e];
+      if (at < 0) return false;  // (not reached: all its corners are proven)
+      if (at < first || at >= end) {
+        const TriangleIndices& v =
+            soup_.triangles[static_cast<std::size_t>(items[static_cast<std::size_t>(k)])];
+        boundary.push_back({v[e], v[(e + 1) % 3]});
+      }
     }
   }
   return embedded_in(soup_, scratch_, directions);

@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "clip/solid/star_proof.h"
 
 namespace contain::clip::solid {
 
@@ -79,10 +80,9 @@ struct PatchScratch {
 /// The proofs of the pair stage, per node of `soup.tree`.
 class PatchProofs {
  public:
-  /// `corners` and `across` as from `proven_stars`: bit k of triangle t set when its corner k
-  /// is proven, and the neighbours across the edges at proven corners.
-  PatchProofs(const Soup& soup, std::span<const std::uint8_t> corners,
-              std::span<const std::array<std::int32_t, 3>> across);
+  /// `stars` from `proven_stars`: which corners are proven, the neighbours across the edges at
+  /// proven corners and the triangles' turns.
+  PatchProofs(const Soup& soup, const ProvenStars& stars);
 
   /// Whether the triangles under inner node `node` of `soup.tree` form an embedded patch whose
   /// corners are all proven: then no pair of them gives the pair stage anything. Leaves are
@@ -91,10 +91,10 @@ class PatchProofs {
 
  private:
   const Soup& soup_;
-  std::span<const std::array<std::int32_t, 3>> across_;
-  // Per node: its items' range in leaf order; per triangle: its position there.
+  // Per node: its items' range in leaf order; per position in leaf order: the positions of the
+  // triangles across its triangle's edges (-1 across an edge without a proven end).
   std::vector<std::array<std::int32_t, 2>> ranges_;
-  std::vector<std::int32_t> position_;
+  std::vector<std::array<std::int32_t, 3>> across_at_;
   // Per node: bit 2k (2k + 1) when every triangle below turns strictly positively (negatively)
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -61,27 +62,24 @@ bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star
   return false;
 }
 
-// The dominant axis of the fan's area vector (sum of (wi - v) x (w(i+1) - v)) in doubles: the
-// projection most likely to pass; any axis keeps the proof exact.
-int fan_axis(Vec3 v, std::span<const Vec3* const> ring) {
-  double nx = 0.0, ny = 0.0, nz = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Vec3 p = *ring[i] - v, q = *ring[(i + 1) % ring.size()] - v;
-    nx += p.y * q.z - p.z * q.y;
-    ny += p.z * q.x - p.x * q.z;
-    nz += p.x * q.y - p.y * q.x;
-  }
-  nx = std::fabs(nx);
-  ny = std::fabs(ny);
-  nz = std::fabs(nz);
-  if (nx >= ny && nx >= nz) return 0;
-  return ny >= nz ? 1 : 2;
+// The sign of component `axis` of ck (dropping that axis: orient2d(v, wk, w(k+1)) there), by
+// `filtered_turn` or orient2d itself.
+Sign turn(const RingProducts& c, int axis, Vec2 v, Vec2 wk, Vec2 wk1) {
+  const std::optional<Sign> s = filtered_turn(c, axis);
+  return s ? *s : orient2d(v, wk, wk1);
 }
 
-// Whether v's star is proven; if so and `across` is given, its triangles' neighbours across
-// the edges at v written there.
+// orient3d(v, wk, w(k+1), w(k+2)) by `filtered_bend` or orient3d itself.
+Sign bend(const RingProducts& c, const std::array<double, 3>& t, Vec3 v, Vec3 wk, Vec3 wk1,
+          Vec3 wk2) {
+  const std::optional<Sign> s = filtered_bend(c, t);
+  return s ? *s : orient3d(v, wk, wk1, wk2);
+}
+
+// Whether v's star is proven; if so and `out` is given, its triangles' neighbours across the
+// edges at v written to out->across, and the turns of those whose corner 0 is v to out->turns.
 bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star,
-                 std::vector<std::array<std::int32_t, 3>>* across) {
+                 ProvenStars* out) {
   const std::size_t n = star.size();
   if (n < 3 || n > max_star) return false;
   std::array<std::int32_t, max_star> ids;
@@ -92,16 +90,33 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
   for (std::size_t i = 0; i < n; ++i)
     ring[i] = &soup.vertices[static_cast<std::size_t>(ids[i])];
   const Vec3 apex = soup.vertices[static_cast<std::size_t>(v)];
-  const int axis = fan_axis(apex, std::span<const Vec3* const>(ring.data(), n));
+  // Each difference and product once, where orient2d and orient3d would compute each three times.
+  std::array<std::array<double, 3>, max_star> d;
+  for (std::size_t i = 0; i < n; ++i)
+    d[i] = {ring[i]->x - apex.x, ring[i]->y - apex.y, ring[i]->z - apex.z};
+  std::array<RingProducts, max_star> c;
+  // The projection: the dominant axis of the fan's area vector (the sum of the ck) in doubles,
+  // the one most likely to pass; any axis keeps the proof exact.
+  double nx = 0.0, ny = 0.0, nz = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    c[i] = ring_products(d[i], d[(i + 1) % n]);
+    nx += c[i].yz - c[i].zy;
+    ny += c[i].zx - c[i].xz;
+    nz += c[i].xy - c[i].yx;
+  }
+  nx = std::fabs(nx);
+  ny = std::fabs(ny);
+  nz = std::fabs(nz);
+  const int axis = nx >= ny && nx >= nz ? 0 : (ny >= nz ? 1 : 2);
   const Vec2 o = drop_axis(apex, axis);
   std::array<Vec2, max_star> p;  // (zeroed first, 256 bytes: cheap beside the tests)
   for (std::size_t i = 0; i < n; ++i)
     p[i] = drop_axis(*ring[i], axis);
   // 1: every sector turns the same strict way (a zero-area triangle fails here).
-  const Sign turn = orient2d(o, p[0], p[1]);
-  if (turn == Sign::zero) return false;
+  const Sign first_turn = turn(c[0], axis, o, p[0], p[1]);
+  if (first_turn == Sign::zero) return false;
   for (std::size_t i = 1; i < n; ++i) {
-    if (orient2d(o, p[i], p[(i + 1) % n]) != turn) return false;
+    if (turn(c[i], axis, o, p[i], p[(i + 1) % n]) != first_turn) return false;
   }
   // 2: the sectors all below pi and turning one way, the ring winds around v as often as it
   // crosses the ray from v along the first projected axis; a sector from wi to w(i+1) crosses it
@@ -114,26 +129,41 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
   }
   if (crossings != 1) return false;
   // 3: every turn of the ring in space the same strict way.
-  const Sign bend = orient3d(apex, *ring[0], *ring[1], *ring[2 % n]);
-  if (bend == Sign::zero) return false;
+  const Sign first_bend = bend(c[0], d[2 % n], apex, *ring[0], *ring[1], *ring[2 % n]);
+  if (first_bend == Sign::zero) return false;
   for (std::size_t i = 1; i < n; ++i) {
-    if (orient3d(apex, *ring[i], *ring[(i + 1) % n], *ring[(i + 2) % n]) != bend) return false;
+    if (bend(c[i], d[(i + 2) % n], apex, *ring[i], *ring[(i + 1) % n], *ring[(i + 2) % n]) !=
+        first_bend) {
+      return false;
+    }
   }
-  if (across != nullptr) {
+  if (out != nullptr) {
     // Triangle i is v w(i) w(i + 1), its corner k at v: its edge (k + 2) mod 3 runs w(i + 1)
     // -> v, which is edge k' (v -> w(i + 1)) of triangle i + 1.
     for (std::size_t i = 0; i < n; ++i) {
       const std::int32_t from = star[order[i]].corner, to = star[order[(i + 1) % n]].corner;
-      (*across)[static_cast<std::size_t>(from / 3)][static_cast<std::size_t>((from % 3 + 2) % 3)] =
-          to / 3;
-      (*across)[static_cast<std::size_t>(to / 3)][static_cast<std::size_t>(to % 3)] = from / 3;
+      out->across[static_cast<std::size_t>(from / 3)]
+                 [static_cast<std::size_t>((from % 3 + 2) % 3)] = to / 3;
+      out->across[static_cast<std::size_t>(to / 3)][static_cast<std::size_t>(to % 3)] = from / 3;
+      // Its turns in the three projections (the triangle v w(i) w(i + 1) is a rotation of its
+      // corners, so each is the sign of strict_turns' orient2d): taken once, at its corner 0.
+      if (from % 3 == 0) {
+        unsigned bits = 0;
+        for (int k = 0; k < 3; ++k) {
+          const Sign s = k == axis ? first_turn
+                                   : turn(c[i], k, drop_axis(apex, k), drop_axis(*ring[i], k),
+                                          drop_axis(*ring[(i + 1) % n], k));
+          if (s == Sign::positive) bits |= 1U << (2 * k);
+          if (s == Sign::negative) bits |= 1U << (2 * k + 1);
+        }
+        out->turns[static_cast<std::size_t>(from / 3)] = static_cast<std::uint8_t>(bits);
+      }
     }
   }
   return true;
 }
 
-std::vector<bool> proven_vertices_of(const Soup& soup,
-                                     std::vector<std::array<std::int32_t, 3>>* across) {
+std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out) {
   const std::size_t vertices = soup.vertices.size();
   // The link edges of each vertex, by a counting sort of the triangles' corners (a triangle
   // naming a vertex twice is listed twice, and fails the turns).
@@ -160,7 +190,7 @@ std::vector<bool> proven_vertices_of(const Soup& soup,
     const auto first = static_cast<std::size_t>(start[v]);
     const auto count = static_cast<std::size_t>(start[v + 1]) - first;
     proven[v] = proven_star(soup, static_cast<std::int32_t>(v),
-                            std::span<const LinkEdge>(star).subspan(first, count), across);
+                            std::span<const LinkEdge>(star).subspan(first, count), out);
   }
   return proven;
 }
@@ -192,7 +222,8 @@ std::vector<std::uint8_t> proven_corners(const Soup& soup) {
 ProvenStars proven_stars(const Soup& soup) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
-  stars.corners = corners_of(soup, proven_vertices_of(soup, &stars.across));
+  stars.turns.assign(soup.triangles.size(), 0);
+  stars.corners = corners_of(soup, proven_vertices_of(soup, &stars));
   return stars;
 }
 

@@ -30,10 +30,14 @@
 // star_proof_test against the pair test itself).
 
 #include <array>
+#include <cfloat>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "contain/predicates/unit_roundoff.h"
 
 namespace contain::clip::solid {
 
@@ -46,12 +50,67 @@ namespace contain::clip::solid {
 /// `proven_corners`, and each triangle's neighbour across each of its edges that has a proven
 /// end (-1 for the others): across[t][k] is the triangle on the other side of the edge from
 /// corner k to corner k + 1 (mod 3), which runs the other way there (a proven star is a closed
-/// fan, so an edge at a proven vertex has exactly two triangles).
+/// fan, so an edge at a proven vertex has exactly two triangles). And for each triangle whose
+/// corner 0 is proven, the signs of its normal's components, exactly (the star's proof has
+/// their products at hand): bit 2k (2k + 1) of turns[t] when orient2d of its corners dropping
+/// axis k is positive (negative); 0 for the other triangles.
 struct ProvenStars {
   std::vector<std::uint8_t> corners;
   std::vector<std::array<std::int32_t, 3>> across;
+  std::vector<std::uint8_t> turns;
 };
 [[nodiscard]] ProvenStars proven_stars(const Soup& soup);
+
+/// The filters of the proofs, which share the differences dk = wk - v of the ring's vertices
+/// from the apex and the products of consecutive ones, ck = dk x d(k+1) as six products of
+/// doubles: every test of a star is a sign of ck (a sector's turn in a projection) or of
+/// d(k+2) . ck (a bend of the ring). Inline for the proofs' loop; declared here for their tests.
+struct RingProducts {
+  double yz, zy, zx, xz, xy, yx;  ///< dk.y d(k+1).z, dk.z d(k+1).y, ...
+};
+[[nodiscard]] inline RingProducts ring_products(const std::array<double, 3>& a,
+                                                const std::array<double, 3>& b) {
+  return {a[1] * b[2], a[2] * b[1], a[2] * b[0], a[0] * b[2], a[0] * b[1], a[1] * b[0]};
+}
+
+/// The sign of component `axis` of ck, which is orient2d(v, wk, w(k+1)) in the projection
+/// dropping that axis (`drop_axis`: the other two in cyclic order), where a filter decides it:
+/// orient2d's own (Shewchuk's stage A with pivot v, here on the shared differences and products,
+/// and the same bound (3 + 32 eps) eps (|left| + |right|) + DBL_MIN); nothing where it cannot.
+[[nodiscard]] inline std::optional<Sign> filtered_turn(const RingProducts& c, int axis) {
+  constexpr double kBound =
+      (3.0 + 32.0 * predicates::unit_roundoff<double>)*predicates::unit_roundoff<double>;
+  const double left = axis == 0 ? c.yz : axis == 1 ? c.zx : c.xy;
+  const double right = axis == 0 ? c.zy : axis == 1 ? c.xz : c.yx;
+  const double det = left - right;
+  const double errbound = kBound * (std::fabs(left) + std::fabs(right)) + DBL_MIN;
+  if (det > errbound) return Sign::positive;
+  if (-det > errbound) return Sign::negative;
+  return std::nullopt;
+}
+
+/// The sign of det(dk, d(k+1), d(k+2)) = d(k+2) . ck (`t` = d(k+2)), which is
+/// orient3d(v, wk, w(k+1), w(k+2)) (orient3d's determinant with pivot v is that of the same four
+/// points in the order wk, w(k+1), w(k+2), v, an odd permutation: the signs agree), where a
+/// filter decides it. Shewchuk's stage A expands along the pivot-less column z; here along the
+/// row d(k+2), the same evaluation (three differences, each times a difference of two products
+/// of differences, summed left to right) with the variables renamed, so his bound
+/// (7 + 56 eps) eps * permanent holds with this expansion's permanent; raised as orient3d's to
+/// (7 + 64 eps) eps for an underflow guard DBL_MIN scaled by the row's multipliers.
+[[nodiscard]] inline std::optional<Sign> filtered_bend(const RingProducts& c,
+                                                       const std::array<double, 3>& t) {
+  constexpr double kBound =
+      (7.0 + 64.0 * predicates::unit_roundoff<double>)*predicates::unit_roundoff<double>;
+  const double det = t[0] * (c.yz - c.zy) + t[1] * (c.zx - c.xz) + t[2] * (c.xy - c.yx);
+  const double ax = std::fabs(t[0]), ay = std::fabs(t[1]), az = std::fabs(t[2]);
+  const double permanent = ax * (std::fabs(c.yz) + std::fabs(c.zy)) +
+                           ay * (std::fabs(c.zx) + std::fabs(c.xz)) +
+                           az * (std::fabs(c.xy) + std::fabs(c.yx));
+  const double errbound = kBound * permanent + DBL_MIN * (1.0 + ax + ay + az);
+  if (det > errbound) return Sign::positive;
+  if (-det > errbound) return Sign::negative;
+  return std::nullopt;
+}
 
 /// Whether `intersect_pair` would give triangles t and u (t < u) a constraint or a coplanar
 /// partner, or make a crossing point on the way (for the tests; defined in intersect.cpp).

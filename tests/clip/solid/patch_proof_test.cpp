@@ -294,7 +294,7 @@ TEST(PatchProof, PinchedBoundariesAreEmbeddedExactlyWhenTheirLobesAreApart) {
 // The subtrees of `soup`'s hierarchy proven by PatchProofs, each checked by brute force.
 std::size_t settled_subtrees(const Soup& soup) {
   const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
-  const PatchProofs proofs(soup, stars.corners, stars.across);
+  const PatchProofs proofs(soup, stars);
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   std::size_t settled = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -417,7 +417,7 @@ TEST(PatchProof, PairStageOfSelfIntersectingInputsIsTheSameWithAndWithoutTheSkip
                                     pair_work(soup, clip::solid::Neighbours::proven),
                                     "case " + std::to_string(k));
     const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
-    const PatchProofs proofs(soup, stars.corners, stars.across);
+    const PatchProofs proofs(soup, stars);
     for (std::size_t i = 0; i < soup.tree.nodes().size(); ++i)
       settled += proofs.settled(static_cast<std::int32_t>(i)) ? 1 : 0;
   }
