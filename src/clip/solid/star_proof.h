@@ -75,8 +75,9 @@ struct RingProducts {
 
 /// The sign of component `axis` of ck, which is orient2d(v, wk, w(k+1)) in the projection
 /// dropping that axis (`drop_axis`: the other two in cyclic order), where a filter decides it:
-/// orient2d's own (Shewchuk's stage A with pivot v, here on the shared differences and products,
-/// and the same bound (3 + 32 eps) eps (|left| + |right|) + DBL_MIN); nothing where it cannot.
+/// orient2d's own (Shewchuk's stage A of orient2d(wk, w(k+1), v), pivot v, a cyclic turn of
+/// the same three points, on the shared differences and products, with the same bound
+/// (3 + 32 eps) eps (|left| + |right|) + DBL_MIN); nothing where it cannot.
 [[nodiscard]] inline std::optional<Sign> filtered_turn(const RingProducts& c, int axis) {
   constexpr double kBound =
       (3.0 + 32.0 * predicates::unit_roundoff<double>)*predicates::unit_roundoff<double>;
@@ -90,13 +91,14 @@ struct RingProducts {
 }
 
 /// The sign of det(dk, d(k+1), d(k+2)) = d(k+2) . ck (`t` = d(k+2)), which is
-/// orient3d(v, wk, w(k+1), w(k+2)) (orient3d's determinant with pivot v is that of the same four
-/// points in the order wk, w(k+1), w(k+2), v, an odd permutation: the signs agree), where a
-/// filter decides it. Shewchuk's stage A expands along the pivot-less column z; here along the
-/// row d(k+2), the same evaluation (three differences, each times a difference of two products
-/// of differences, summed left to right) with the variables renamed, so his bound
-/// (7 + 56 eps) eps * permanent holds with this expansion's permanent; raised as orient3d's to
-/// (7 + 64 eps) eps for an underflow guard DBL_MIN scaled by the row's multipliers.
+/// orient3d(v, wk, w(k+1), w(k+2)), where a filter decides it. (That determinant is Shewchuk's
+/// orient3d of wk, w(k+1), w(k+2), v, pivot v; contain's orient3d is minus Shewchuk's, and
+/// moving v from last to first is an odd permutation: the two sign changes cancel.) Shewchuk's
+/// stage A expands along the pivot-less column z; here along the row d(k+2), the same evaluation
+/// (three differences, each times a difference of two products of differences, summed left to
+/// right) with the variables renamed, so his bound (7 + 56 eps) eps * permanent holds with this
+/// expansion's permanent; raised as orient3d's to (7 + 64 eps) eps for an underflow guard DBL_MIN
+/// scaled by the row's multipliers.
 [[nodiscard]] inline std::optional<Sign> filtered_bend(const RingProducts& c,
                                                        const std::array<double, 3>& t) {
   constexpr double kBound =
