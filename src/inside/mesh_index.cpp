@@ -707,7 +707,11 @@ int MeshIndex::count_walk(Vec3 p, std::size_t cell, int first, int step) const {
 
 // The signed crossing count of p (in surface cell `cell`, (i, j, k), not on the surface) by the
 // walk through the fewest cells (a walk's length: its surface cells and the empty cell that ends
-// it, read from the packed states); +x first, which wins ties.
+// it, read from the packed states); +x first, which wins ties. Every walk gives the same count
+// (the rule above), so the choice is only a cost: the probes stop at the first walk of at most two
+// cells (its next cell empty or off the grid: none but a one-cell walk is shorter, and the probes
+// along y and z each read a cache line of their own), and p's own cell is not read again (it is
+// a surface cell).
 int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k) const {
   const std::array<int, 3> at{i, j, k};
   const std::array<int, 3> size{nx_, ny_, nz_};
@@ -718,9 +722,9 @@ int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k
   for (const int axis : {0, 2, 1}) {
     for (const int step : {1, -1}) {
       const auto a = static_cast<std::size_t>(axis);
-      int length = 0;
-      auto c = static_cast<std::ptrdiff_t>(cell);
-      for (int m = at[a]; m >= 0 && m < size[a] && length < best;
+      int length = 1;  // p's own cell
+      auto c = static_cast<std::ptrdiff_t>(cell) + step * stride[a];
+      for (int m = at[a] + step; m >= 0 && m < size[a] && length < best;
            m += step, c += step * stride[a]) {
         ++length;
         if (packed_state(static_cast<std::size_t>(c)) < 2) break;
@@ -730,7 +734,9 @@ int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k
         best_axis = axis;
         best_step = step;
       }
+      if (best <= 2) break;
     }
+    if (best <= 2) break;
   }
   const int first = at[static_cast<std::size_t>(best_axis)];
   if (best_axis == 0) return count_walk<0>(p, cell, first, best_step);
