@@ -88,18 +88,25 @@ class PlaneSeparation {
       tabs_[d] = std::max({std::abs(tv[d][0]), std::abs(tv[d][1]), std::abs(tv[d][2])});
   }
 
-  [[nodiscard]] bool separates(const Box3& box) const {
-    double bmin = 0.0, bmax = 0.0, scale = 0.0;
+  // One axis's part of the test for a box's span [lo, hi] along axis d: the least and greatest
+  // of the two products with n's component, and the component's part of the error scale.
+  struct AxisTerms {
+    double least = 0.0, greatest = 0.0, scale = 0.0;
+  };
+  [[nodiscard]] AxisTerms axis_terms(int d, double lo, double hi) const {
     const double nv[3] = {n_.x, n_.y, n_.z};
-    const double lo[3] = {box.min.x, box.min.y, box.min.z};
-    const double hi[3] = {box.max.x, box.max.y, box.max.z};
-    for (int d = 0; d < 3; ++d) {
-      const double p = nv[d] * lo[d], q = nv[d] * hi[d];
-      bmin += std::min(p, q);
-      bmax += std::max(p, q);
-      const double m = std::max({std::abs(lo[d]), std::abs(hi[d]), tabs_[d]});
-      scale += std::abs(nv[d]) * m;
-    }
+    const double p = nv[d] * lo, q = nv[d] * hi;
+    return {std::min(p, q), std::max(p, q),
+            std::abs(nv[d]) * std::max({std::abs(lo), std::abs(hi), tabs_[d]})};
+  }
+
+  // Whether the plane separates the box whose spans along x, y and z have these terms (summed
+  // x, y, z: the rounding the margin bounds; a caller computes each axis's terms once for all the
+  // boxes that share the span).
+  [[nodiscard]] bool separates(const AxisTerms& x, const AxisTerms& y, const AxisTerms& z) const {
+    const double bmin = (x.least + y.least) + z.least;
+    const double bmax = (x.greatest + y.greatest) + z.greatest;
+    const double scale = (x.scale + y.scale) + z.scale;
     // Each side is a sum of three rounded products: error <= 3 u scale (+ underflow); 2^-40 is
     // a generous multiple of u = 2^-53.
     const double margin = 0x1p-40 * scale + 64 * std::numeric_limits<double>::denorm_min();
@@ -111,6 +118,16 @@ class PlaneSeparation {
   double tmin_ = 0.0, tmax_ = 0.0;
   double tabs_[3] = {0.0, 0.0, 0.0};
 };
+
+// The plane test's terms of cells [first, last] along axis d (their spans between the axis's
+// lines), into `terms` (resized; its capacity kept from triangle to triangle).
+void fill_axis_terms(const PlaneSeparation& plane, int d, const GridAxis& axis, int first, int last,
+                     std::vector<PlaneSeparation::AxisTerms>& terms) {
+  terms.resize(static_cast<std::size_t>(last - first + 1));
+  for (int i = first; i <= last; ++i)
+    terms[static_cast<std::size_t>(i - first)] =
+        plane.axis_terms(d, axis.line(i), axis.line(i + 1));
+}
 
 // The listing's two passes over its (cell, triangle) pairs, each a function of its own (not
 // inlined): in the listing, GCC kept the count of cells in a stack slot (a store-to-load chain
@@ -392,6 +409,9 @@ void MeshIndex::list_triangles_by_cell_as() {
   // cell's pair stored and counted only where the plane does not separate.
   pairs.resize(8 * tris_.size());
   std::size_t listed = 0;
+  // The plane test's terms of a triangle's columns, rows and layers (reused: no allocation a
+  // triangle).
+  std::vector<PlaneSeparation::AxisTerms> terms_x, terms_y, terms_z;
   for (std::size_t t = 0; t < tris_.size(); ++t) {
     const Box3 b = bounding_box(Triangle3{tris_[t].a, tris_[t].b, tris_[t].c});
     const auto [i0, i1] = x_.cells_meeting(b.min.x, b.max.x);
@@ -401,9 +421,32 @@ void MeshIndex::list_triangles_by_cell_as() {
                       static_cast<std::size_t>(j1 - j0 + 1) * static_cast<std::size_t>(k1 - k0 + 1);
     if (listed + span > pairs.size()) pairs.resize(std::max(2 * pairs.size(), listed + span));
     // A triangle whose box spans several cells is tested against each cell's box along its
-    // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles.
+    // normal, conservatively (PlaneSeparation): fewer surface cells under big triangles. The
+    // test's terms of each column, row and layer are computed once for all the cells they bound.
     const bool big = (i1 > i0) + (j1 > j0) + (k1 > k0) >= 2;
-    const PlaneSeparation plane = big ? PlaneSeparation(tris_[t]) : PlaneSeparation();
+    if (big) {
+      const PlaneSeparation plane(tris_[t]);
+      fill_axis_terms(plane, 0, x_, i0, i1, terms_x);
+      fill_axis_terms(plane, 1, y_, j0, j1, terms_y);
+      fill_axis_terms(plane, 2, z_, k0, k1, terms_z);
+      for (int k = k0; k <= k1; ++k) {
+        const PlaneSeparation::AxisTerms& tz = terms_z[static_cast<std::size_t>(k - k0)];
+        for (int j = j0; j <= j1; ++j) {
+          const PlaneSeparation::AxisTerms& ty = terms_y[static_cast<std::size_t>(j - j0)];
+          const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(ny_) +
+                                   static_cast<std::size_t>(j)) *
+                                  static_cast<std::size_t>(nx_);
+          for (int i = i0; i <= i1; ++i) {
+            pairs[listed] = {static_cast<Cell>(row + static_cast<std::size_t>(i)),
+                             static_cast<std::uint32_t>(t)};
+            const bool separated =
+                plane.separates(terms_x[static_cast<std::size_t>(i - i0)], ty, tz);
+            listed += separated ? 0 : 1;
+          }
+        }
+      }
+      continue;
+    }
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
@@ -411,11 +454,7 @@ void MeshIndex::list_triangles_by_cell_as() {
                                  static_cast<std::size_t>(j)) *
                                     static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i);
-          pairs[listed] = {static_cast<Cell>(c), static_cast<std::uint32_t>(t)};
-          const bool separated =
-              big && plane.separates({{x_.line(i), y_.line(j), z_.line(k)},
-                                      {x_.line(i + 1), y_.line(j + 1), z_.line(k + 1)}});
-          listed += separated ? 0 : 1;
+          pairs[listed++] = {static_cast<Cell>(c), static_cast<std::uint32_t>(t)};
         }
   }
   pairs.resize(listed);
@@ -668,7 +707,11 @@ int MeshIndex::count_walk(Vec3 p, std::size_t cell, int first, int step) const {
 
 // The signed crossing count of p (in surface cell `cell`, (i, j, k), not on the surface) by the
 // walk through the fewest cells (a walk's length: its surface cells and the empty cell that ends
-// it, read from the packed states); +x first, which wins ties.
+// it, read from the packed states); +x first, which wins ties. Every walk gives the same count
+// (the rule above), so the choice is only a cost: the probes stop at the first walk of at most two
+// cells (its next cell empty or off the grid: none but a one-cell walk is shorter, and the probes
+// along y and z each read a cache line of their own), and p's own cell is not read again (it is
+// a surface cell).
 int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k) const {
   const std::array<int, 3> at{i, j, k};
   const std::array<int, 3> size{nx_, ny_, nz_};
@@ -679,9 +722,9 @@ int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k
   for (const int axis : {0, 2, 1}) {
     for (const int step : {1, -1}) {
       const auto a = static_cast<std::size_t>(axis);
-      int length = 0;
-      auto c = static_cast<std::ptrdiff_t>(cell);
-      for (int m = at[a]; m >= 0 && m < size[a] && length < best;
+      int length = 1;  // p's own cell
+      auto c = static_cast<std::ptrdiff_t>(cell) + step * stride[a];
+      for (int m = at[a] + step; m >= 0 && m < size[a] && length < best;
            m += step, c += step * stride[a]) {
         ++length;
         if (packed_state(static_cast<std::size_t>(c)) < 2) break;
@@ -691,7 +734,9 @@ int MeshIndex::count_shortest_walk(Vec3 p, std::size_t cell, int i, int j, int k
         best_axis = axis;
         best_step = step;
       }
+      if (best <= 2) break;
     }
+    if (best <= 2) break;
   }
   const int first = at[static_cast<std::size_t>(best_axis)];
   if (best_axis == 0) return count_walk<0>(p, cell, first, best_step);
