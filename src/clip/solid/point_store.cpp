@@ -77,7 +77,9 @@ void PointStore::reserve(std::size_t points) {
   rounded_.reserve(points);
   next_.reserve(points);
   first_of_.reserve(points);
-  first_.reserve(points, rounded_);
+  // An empty store's table is made by its first point (or taken over from a soup by
+  // add_vertices): a table of megabytes zeroed here would be dropped there.
+  if (!points_.empty()) first_.reserve(points, rounded_);
 }
 
 std::int32_t PointStore::add(const ExactPoint& p) {
@@ -94,9 +96,20 @@ void PointStore::add_vertices(const Soup& soup) {
       (void)add(v);
     return;
   }
-  // The room reserved before for the crossings stays (a larger table is rebuilt once).
+  PointTable index = soup.index;
+  add_vertices(soup, std::move(index));
+}
+
+void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
+  if (!points_.empty() || index.size() != soup.vertices.size()) {
+    for (const Vec3 v : soup.vertices)
+      (void)add(v);
+    return;
+  }
+  // The room reserved before for the crossings stays (a smaller table is rebuilt once; the
+  // engine's, sized by make_soup for store_room, is not).
   const std::size_t room = std::max(points_.capacity(), soup.vertices.size());
-  first_ = soup.index;
+  first_ = std::move(index);
   first_.reserve(room, soup.vertices);
   points_.reserve(room);
   for (const Vec3 v : soup.vertices)
@@ -111,6 +124,7 @@ void PointStore::add_vertices(const Soup& soup) {
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   const auto id = static_cast<std::int32_t>(points_.size());
+  if (id == 0) first_.reserve(std::max<std::size_t>(points_.capacity(), 1), rounded_);
   const auto [first, fresh] = first_.try_emplace(r, id, rounded_);
   if (!fresh) {
     std::int32_t i = first;

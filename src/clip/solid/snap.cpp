@@ -36,6 +36,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -313,10 +314,10 @@ Error not_converging(std::size_t found, const char* what, std::size_t bound) {
 // their rays through the whole mesh.
 Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
                          double scale, std::size_t limit) {
-  const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
+  Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
-  store.add_vertices(*soup);
+  store.add_vertices(*soup, std::move(soup->index));
   const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);
