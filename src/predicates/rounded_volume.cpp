@@ -105,9 +105,11 @@ inline Accumulator determinant_sum(std::span<const Vec3> vertices, Triangles tri
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 // The library is built for the baseline x86-64, without fused multiply-add; where the processor
-// has it, the exact products cost two operations instead of Dekker's seventeen.
-[[gnu::target("fma")]] Accumulator determinant_sum_fma(std::span<const Vec3> vertices,
-                                                       Triangles triangles) {
+// has it, the exact products cost two operations instead of Dekker's seventeen. Flattened: the
+// sum and its products inlined here are compiled for the target; called out of line they were
+// baseline code whose std::fma was a call into libm, three per product (a third of the time).
+[[gnu::target("fma"), gnu::flatten]] Accumulator determinant_sum_fma(std::span<const Vec3> vertices,
+                                                                     Triangles triangles) {
   return determinant_sum<true>(vertices, triangles);
 }
 Accumulator fastest_determinant_sum(std::span<const Vec3> vertices, Triangles triangles) {
