@@ -77,6 +77,7 @@ void PointStore::reserve(std::size_t points) {
   rounded_.reserve(points);
   next_.reserve(points);
   first_of_.reserve(points);
+  exact_double_.reserve(points);
   // An empty store's table is made by its first point (or taken over from a soup by
   // add_vertices): a table of megabytes zeroed here would be dropped there.
   if (!points_.empty()) first_.reserve(points, rounded_);
@@ -120,6 +121,8 @@ void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
   first_of_.resize(soup.vertices.size());
   for (std::size_t i = 0; i < first_of_.size(); ++i)
     first_of_[i] = static_cast<std::int32_t>(i);
+  exact_double_.reserve(room);
+  exact_double_.assign(soup.vertices.size(), 1);  // points of doubles
 }
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
@@ -138,6 +141,8 @@ std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   rounded_.push_back(r);
   next_.push_back(-1);
   first_of_.push_back(first);
+  exact_double_.push_back(
+      p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]) ? 1 : 0);
   return id;
 }
 

@@ -1,7 +1,8 @@
 // The point store of the mesh boolean (src/clip/solid/point_store.cpp) given a soup's vertices
 // by taking over the soup's index (the engine's path) against a store given the same vertices
 // one by one: the same numbers, the same answers for the vertices and for points added after
-// (crossings and points of doubles, new or equal to a vertex), through table growth.
+// (crossings and points of doubles, new or equal to a vertex), through table growth; and each
+// point's written_exactly byte as its definition on the point.
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 namespace contain::test {
 namespace {
 
+using clip::solid::ExactPoint;
 using clip::solid::PointStore;
 using clip::solid::Soup;
 
@@ -38,8 +40,9 @@ std::vector<Mesh> store_test_inputs(std::mt19937& rng, int count) {
   std::uniform_int_distribution<int> cell(-3, 3);
   std::vector<Mesh> inputs;
   for (int i = 0; i < count; ++i) {
-    Mesh m = store_test_tetrahedron(Vec3{static_cast<double>(cell(rng)), static_cast<double>(cell(rng)),
-                              static_cast<double>(cell(rng))});
+    Mesh m =
+        store_test_tetrahedron(Vec3{static_cast<double>(cell(rng)), static_cast<double>(cell(rng)),
+                                    static_cast<double>(cell(rng))});
     for (Vec3& v : m.vertices) {
       if (v.x == 0.0) v.x = -0.0;
     }
@@ -51,7 +54,7 @@ std::vector<Mesh> store_test_inputs(std::mt19937& rng, int count) {
 TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes) {
   std::mt19937 rng(25);
   std::uniform_real_distribution<double> coordinate(-4.0, 4.0);
-  int checked = 0;
+  int checked = 0, written_exactly = 0;
   for (int round = 0; round < 60; ++round) {
     const std::vector<Mesh> inputs = store_test_inputs(rng, 1 + round % 7);
     Result<Soup> soup = clip::solid::make_soup(inputs);
@@ -69,6 +72,7 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
       EXPECT_EQ(taken.rounded(id), soup->vertices[i]);
       EXPECT_EQ(taken.representative(id), id);
       EXPECT_EQ(taken.first_rounded_to(soup->vertices[i]), id);
+      EXPECT_TRUE(taken.written_exactly(id));
     }
     // Points added after: the vertices again (found, not added), new points of doubles and
     // midpoints (crossings of the store's kind), more than the reserved room (the table grows).
@@ -93,11 +97,18 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
       }
       ASSERT_EQ(a, b);
       ASSERT_EQ(taken.representative(a), one_by_one.representative(b));
+      const ExactPoint& p = taken.point(a);
+      ASSERT_EQ(taken.written_exactly(a),
+                p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]));
+      written_exactly += taken.written_exactly(a) ? 1 : 0;
       ++checked;
     }
     EXPECT_EQ(taken.size(), one_by_one.size());
   }
   EXPECT_EQ(checked, 60 * 3000);
+  // Not vacuous: midpoints of lattice points are doubles (exact), others are rounded.
+  EXPECT_GT(written_exactly, 60 * 1000);
+  EXPECT_LT(written_exactly, checked);
 }
 
 TEST(SolidPointStore, AReservedEmptyStoreFindsWhatItAdds) {
