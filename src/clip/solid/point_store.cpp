@@ -110,7 +110,9 @@ void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
   // The room reserved before for the crossings stays (a smaller table is rebuilt once; the
   // engine's, sized by make_soup for store_room, is not).
   const std::size_t room = std::max(points_.capacity(), soup.vertices.size());
-  first_ = std::move(index);
+  // Exchanged, not only moved from: the soup's index is left an empty table (size 0), never a
+  // moved-from one whose count would still claim the soup's vertices.
+  first_ = std::exchange(index, PointTable{});
   first_.reserve(room, soup.vertices);
   points_.reserve(room);
   for (const Vec3 v : soup.vertices)

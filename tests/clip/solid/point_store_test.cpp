@@ -67,6 +67,9 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
     if (round % 2 == 0) taken.reserve(clip::solid::store_room(soup->vertices.size()));
     taken.add_vertices(*soup, std::move(soup->index));
     ASSERT_EQ(taken.size(), one_by_one.size());
+    // The soup keeps an empty index: a later add_vertices of it adds each vertex again.
+    EXPECT_EQ(soup->index.size(), 0U);
+    EXPECT_EQ(soup->index.find(soup->vertices[0], soup->vertices), -1);
     for (std::size_t i = 0; i < soup->vertices.size(); ++i) {
       const auto id = static_cast<std::int32_t>(i);
       EXPECT_EQ(taken.rounded(id), soup->vertices[i]);
