@@ -2,6 +2,7 @@
 // (engine.h names the file of each stage).
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -14,12 +15,10 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   Result<solid::Soup> soup = solid::make_soup(inputs);
   if (!soup) return soup.error();
   solid::PointStore store;
-  // The input vertices and room for the crossings (a few per hundred vertices on smooth
-  // large inputs, relatively more on small ones: the crossings follow curves, about the
-  // square root of the triangles; 1,020 at a pair of 2,048-triangle spheres, whose store grew
-  // once without the 1,024; more grow the store): an index of 8 bytes a slot that stays in cache.
-  store.reserve(soup->vertices.size() + soup->vertices.size() / 4 + 1024);
-  store.add_vertices(*soup);
+  // The input vertices and room for the crossings (store_room; more grow the store): the
+  // soup's index, made with that room, becomes the store's table as it is.
+  store.reserve(solid::store_room(soup->vertices.size()));
+  store.add_vertices(*soup, std::move(soup->index));
   solid::BoundaryFaces boundary;
   {
     // The pairs' work, the refinement and the labels are done with once the result's faces are

@@ -76,15 +76,17 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
     vertices += mesh.vertices.size();
     triangles += mesh.triangles.size();
   }
-  welded.reserve(vertices, soup.vertices);
+  // Room for the point store's crossings too: the store takes this table over as it is.
+  welded.reserve(store_room(vertices), soup.vertices);
   soup.vertices.reserve(vertices);
   soup.triangles.reserve(triangles);
   soup.input.reserve(triangles);
   soup.degenerate.reserve(triangles);
   soup.boxes.reserve(triangles);
+  std::vector<std::int32_t> remap;  // welded number of each vertex of the input at hand
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const Mesh& mesh = inputs[k];
-    std::vector<std::int32_t> remap(mesh.vertices.size());
+    remap.resize(mesh.vertices.size());
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
       const Vec3 v = mesh.vertices[i];
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
@@ -100,6 +102,8 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
       remap[i] = id;
     }
     const std::size_t first = soup.triangles.size();
+    // Each triangle's welded corners, whether it is degenerate and its box in one pass over the
+    // input (a second pass over the soup read every corner again).
     for (const TriangleIndices& t : mesh.triangles) {
       for (const std::int32_t i : t) {
         if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
@@ -108,27 +112,28 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                                   std::to_string(i) + " out of range"};
         }
       }
-      soup.triangles.push_back({remap[static_cast<std::size_t>(t[0])],
-                                remap[static_cast<std::size_t>(t[1])],
-                                remap[static_cast<std::size_t>(t[2])]});
+      const TriangleIndices w = {remap[static_cast<std::size_t>(t[0])],
+                                 remap[static_cast<std::size_t>(t[1])],
+                                 remap[static_cast<std::size_t>(t[2])]};
+      soup.triangles.push_back(w);
       soup.input.push_back(static_cast<std::int32_t>(k));
+      const Vec3 a = soup.vertices[static_cast<std::size_t>(w[0])];
+      const Vec3 b = soup.vertices[static_cast<std::size_t>(w[1])];
+      const Vec3 c = soup.vertices[static_cast<std::size_t>(w[2])];
+      // Zero area exactly when the three projections onto the coordinate planes have zero area.
+      const bool degenerate = orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
+                              orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
+                              orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
+      soup.degenerate.push_back(degenerate);
+      Box3 box;  // empty for a degenerate triangle: it meets nothing
+      if (!degenerate) {
+        box.expand(a);
+        box.expand(b);
+        box.expand(c);
+      }
+      soup.boxes.push_back(box);
     }
     if (const Status closed = check_closed(soup, first, k); !closed) return closed.error();
-  }
-  for (const TriangleIndices& t : soup.triangles) {
-    const Vec3 a = soup.vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = soup.vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = soup.vertices[static_cast<std::size_t>(t[2])];
-    // Zero area exactly when the three projections onto the coordinate planes have zero area.
-    soup.degenerate.push_back(orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::zero &&
-                              orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
-                              orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero);
-    Box3 box;  // empty for a degenerate triangle: it meets nothing
-    if (!soup.degenerate.back()) {
-      for (const std::int32_t i : t)
-        box.expand(soup.vertices[static_cast<std::size_t>(i)]);
-    }
-    soup.boxes.push_back(box);
   }
   // The linear (Morton) build at every size: the SAH's binned sweep of every triangle per level
   // was a quarter of a boolean of two spheres of 131k triangles and 15% of one of 2k, and the

@@ -85,8 +85,8 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
   return w;
 }
 
-// Patch of each face (a representative face number).
-std::vector<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
+// The faces' patches: the set of each face's smallest face (UnionFind::find).
+UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
   const EdgeUses uses =
       edge_uses(r.faces.size(),
                 [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
@@ -115,21 +115,19 @@ std::vector<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
       sets.unite(x, y);
     }
   });
-  std::vector<std::uint32_t> out(r.faces.size());
-  for (std::size_t f = 0; f < out.size(); ++f)
-    out[f] = sets.find(static_cast<std::uint32_t>(f));
-  return out;
+  return sets;
 }
 
 }  // namespace
 
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
-  const std::vector<std::uint32_t> patch = patches(soup, refinement);
+  // Each face's root looked up as the faces are labelled (no array of roots first).
+  UnionFind<std::uint32_t> patch = patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
-    const std::size_t root = patch[f];
+    const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root != f) {
       labels.patch[f] = labels.patch[root];  // the root is the patch's first face: seen before
       continue;

@@ -77,7 +77,10 @@ void PointStore::reserve(std::size_t points) {
   rounded_.reserve(points);
   next_.reserve(points);
   first_of_.reserve(points);
-  first_.reserve(points, rounded_);
+  exact_double_.reserve(points);
+  // An empty store's table is made by its first point (or taken over from a soup by
+  // add_vertices): a table of megabytes zeroed here would be dropped there.
+  if (!points_.empty()) first_.reserve(points, rounded_);
 }
 
 std::int32_t PointStore::add(const ExactPoint& p) {
@@ -94,9 +97,22 @@ void PointStore::add_vertices(const Soup& soup) {
       (void)add(v);
     return;
   }
-  // The room reserved before for the crossings stays (a larger table is rebuilt once).
+  PointTable index = soup.index;
+  add_vertices(soup, std::move(index));
+}
+
+void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
+  if (!points_.empty() || index.size() != soup.vertices.size()) {
+    for (const Vec3 v : soup.vertices)
+      (void)add(v);
+    return;
+  }
+  // The room reserved before for the crossings stays (a smaller table is rebuilt once; the
+  // engine's, sized by make_soup for store_room, is not).
   const std::size_t room = std::max(points_.capacity(), soup.vertices.size());
-  first_ = soup.index;
+  // Exchanged, not only moved from: the soup's index is left an empty table (size 0), never a
+  // moved-from one whose count would still claim the soup's vertices.
+  first_ = std::exchange(index, PointTable{});
   first_.reserve(room, soup.vertices);
   points_.reserve(room);
   for (const Vec3 v : soup.vertices)
@@ -107,10 +123,13 @@ void PointStore::add_vertices(const Soup& soup) {
   first_of_.resize(soup.vertices.size());
   for (std::size_t i = 0; i < first_of_.size(); ++i)
     first_of_[i] = static_cast<std::int32_t>(i);
+  exact_double_.reserve(room);
+  exact_double_.assign(soup.vertices.size(), 1);  // points of doubles
 }
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   const auto id = static_cast<std::int32_t>(points_.size());
+  if (id == 0) first_.reserve(std::max<std::size_t>(points_.capacity(), 1), rounded_);
   const auto [first, fresh] = first_.try_emplace(r, id, rounded_);
   if (!fresh) {
     std::int32_t i = first;
@@ -124,6 +143,8 @@ std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   rounded_.push_back(r);
   next_.push_back(-1);
   first_of_.push_back(first);
+  exact_double_.push_back(
+      p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]) ? 1 : 0);
   return id;
 }
 

@@ -36,6 +36,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -217,13 +218,6 @@ Representative representatives(const std::vector<std::array<std::int32_t, 3>>& f
   return rep;
 }
 
-// A point written exactly where it is: a point of doubles, or an implicit point whose
-// enclosure is one double in every coordinate. Others count as rounded even when exact (safe:
-// their triangles are checked).
-bool written_exactly(const ExactPoint& p) {
-  return p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]);
-}
-
 // The mesh and which of its vertices are kept for check_written: the one point of the faces
 // merged into it, written exactly.
 struct Written {
@@ -238,7 +232,7 @@ Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
   const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
   std::vector<int> merged(store.size(), 0);  // points merged into each representative
   for (const std::int32_t point : rep.ids)
-    merged[static_cast<std::size_t>(rep.at(point))] += written_exactly(store.point(point)) ? 1 : 2;
+    merged[static_cast<std::size_t>(rep.at(point))] += store.written_exactly(point) ? 1 : 2;
   Written out;
   out.edges = sheets.paired ? Edges::known_matched : Edges::checked;
   out.mesh.vertices.reserve(sheets.points.size());
@@ -313,10 +307,10 @@ Error not_converging(std::size_t found, const char* what, std::size_t bound) {
 // their rays through the whole mesh.
 Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& crossing, int level,
                          double scale, std::size_t limit) {
-  const Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
+  Result<Soup> soup = make_soup(std::span<const Mesh>(&mesh, 1));
   if (!soup) return soup.error();
   PointStore store;
-  store.add_vertices(*soup);
+  store.add_vertices(*soup, std::move(soup->index));
   const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
                                              ? intersect_pairs(*soup, store)
                                              : intersect_pairs(region_soup(*soup, crossing), store);

@@ -1,0 +1,133 @@
+// The point store of the mesh boolean (src/clip/solid/point_store.cpp) given a soup's vertices
+// by taking over the soup's index (the engine's path) against a store given the same vertices
+// one by one: the same numbers, the same answers for the vertices and for points added after
+// (crossings and points of doubles, new or equal to a vertex), through table growth; and each
+// point's written_exactly byte as its definition on the point.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "clip/solid/engine.h"
+#include "contain/shapes/mesh.h"
+
+namespace contain::test {
+namespace {
+
+using clip::solid::ExactPoint;
+using clip::solid::PointStore;
+using clip::solid::Soup;
+
+// A closed mesh: a tetrahedron with its corners moved by `shift`, and its vertices repeated
+// with -0 (welded to +0) where a coordinate is 0.
+Mesh store_test_tetrahedron(Vec3 shift) {
+  Mesh m;
+  m.vertices = {shift + Vec3{0, 0, 0}, shift + Vec3{1, 0, 0}, shift + Vec3{0, 1, 0},
+                shift + Vec3{0, 0, 1}};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  return m;
+}
+
+// Random tetrahedra on a small lattice (shared corners across inputs: welded), with the
+// negative zero in some coordinates.
+std::vector<Mesh> store_test_inputs(std::mt19937& rng, int count) {
+  std::uniform_int_distribution<int> cell(-3, 3);
+  std::vector<Mesh> inputs;
+  for (int i = 0; i < count; ++i) {
+    Mesh m =
+        store_test_tetrahedron(Vec3{static_cast<double>(cell(rng)), static_cast<double>(cell(rng)),
+                                    static_cast<double>(cell(rng))});
+    for (Vec3& v : m.vertices) {
+      if (v.x == 0.0) v.x = -0.0;
+    }
+    inputs.push_back(std::move(m));
+  }
+  return inputs;
+}
+
+TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes) {
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> coordinate(-4.0, 4.0);
+  int checked = 0, written_exactly = 0;
+  for (int round = 0; round < 60; ++round) {
+    const std::vector<Mesh> inputs = store_test_inputs(rng, 1 + round % 7);
+    Result<Soup> soup = clip::solid::make_soup(inputs);
+    ASSERT_TRUE(soup);
+    PointStore one_by_one;
+    for (const Vec3 v : soup->vertices)
+      (void)one_by_one.add(v);
+    PointStore taken;
+    // As the engine: room reserved first (round 0: none), then the index moved in.
+    if (round % 2 == 0) taken.reserve(clip::solid::store_room(soup->vertices.size()));
+    taken.add_vertices(*soup, std::move(soup->index));
+    ASSERT_EQ(taken.size(), one_by_one.size());
+    // The soup keeps an empty index: a later add_vertices of it adds each vertex again.
+    EXPECT_EQ(soup->index.size(), 0U);
+    EXPECT_EQ(soup->index.find(soup->vertices[0], soup->vertices), -1);
+    for (std::size_t i = 0; i < soup->vertices.size(); ++i) {
+      const auto id = static_cast<std::int32_t>(i);
+      EXPECT_EQ(taken.rounded(id), soup->vertices[i]);
+      EXPECT_EQ(taken.representative(id), id);
+      EXPECT_EQ(taken.first_rounded_to(soup->vertices[i]), id);
+      EXPECT_TRUE(taken.written_exactly(id));
+    }
+    // Points added after: the vertices again (found, not added), new points of doubles and
+    // midpoints (crossings of the store's kind), more than the reserved room (the table grows).
+    for (int k = 0; k < 3000; ++k) {
+      std::int32_t a = 0, b = 0;
+      if (k % 3 == 0) {
+        const Vec3 v = soup->vertices[static_cast<std::size_t>(k) % soup->vertices.size()];
+        a = taken.add(v);
+        b = one_by_one.add(v);
+      } else if (k % 3 == 1) {
+        const Vec3 v{coordinate(rng), coordinate(rng), coordinate(rng)};
+        a = taken.add(v);
+        b = one_by_one.add(v);
+      } else {
+        const std::int32_t p =
+            static_cast<std::int32_t>(static_cast<std::size_t>(k) % taken.size());
+        const std::int32_t q =
+            static_cast<std::int32_t>(static_cast<std::size_t>(k * 7) % taken.size());
+        a = taken.add(clip::solid::centroid(taken.point(p), taken.point(q), taken.point(q)));
+        b = one_by_one.add(
+            clip::solid::centroid(one_by_one.point(p), one_by_one.point(q), one_by_one.point(q)));
+      }
+      ASSERT_EQ(a, b);
+      ASSERT_EQ(taken.representative(a), one_by_one.representative(b));
+      const ExactPoint& p = taken.point(a);
+      ASSERT_EQ(taken.written_exactly(a),
+                p.plain || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]));
+      written_exactly += taken.written_exactly(a) ? 1 : 0;
+      ++checked;
+    }
+    EXPECT_EQ(taken.size(), one_by_one.size());
+  }
+  EXPECT_EQ(checked, 60 * 3000);
+  // Not vacuous: midpoints of lattice points are doubles (exact), others are rounded.
+  EXPECT_GT(written_exactly, 60 * 1000);
+  EXPECT_LT(written_exactly, checked);
+}
+
+TEST(SolidPointStore, AReservedEmptyStoreFindsWhatItAdds) {
+  PointStore store;
+  store.reserve(100);
+  EXPECT_EQ(store.first_rounded_to(Vec3{1, 2, 3}), -1);
+  const std::int32_t a = store.add(Vec3{1, 2, 3});
+  EXPECT_EQ(a, 0);
+  EXPECT_EQ(store.add(Vec3{1, 2, 3}), 0);
+  EXPECT_EQ(store.add(Vec3{-0.0, 2, 3}), 1);
+  EXPECT_EQ(store.add(Vec3{0.0, 2, 3}), 1);
+  EXPECT_EQ(store.first_rounded_to(Vec3{0.0, 2, 3}), 1);
+  for (int i = 0; i < 1000; ++i)
+    EXPECT_EQ(store.add(Vec3{static_cast<double>(i), 0.5, 0}), 2 + i);
+  EXPECT_EQ(store.add(Vec3{999, 0.5, 0}), 1001);
+}
+
+}  // namespace
+}  // namespace contain::test
