@@ -19,8 +19,6 @@ void classify_scalar(const char* text, std::size_t blocks, ByteMasks* out) {
       if (c == '\n') m.newline |= bit;
       if (is_blank(c)) m.blank |= bit;
       if (static_cast<unsigned char>(c - '0') >= 10) m.non_digit |= bit;
-      if (c == '.') m.point |= bit;
-      if (c == '-') m.minus |= bit;
     }
     out[b] = m;
   }
@@ -50,8 +48,6 @@ void classify_sse2(const char* text, std::size_t blocks, ByteMasks* out) {
       m.blank |= bits16(blank) << shift;
       m.newline |= bits16(newline) << shift;
       m.non_digit |= (~bits16(within16(v, '0', 9)) & 0xffffu) << shift;
-      m.point |= bits16(_mm_cmpeq_epi8(v, _mm_set1_epi8('.'))) << shift;
-      m.minus |= bits16(_mm_cmpeq_epi8(v, _mm_set1_epi8('-'))) << shift;
     }
     out[b] = m;
   }
@@ -79,8 +75,6 @@ void classify_sse2(const char* text, std::size_t blocks, ByteMasks* out) {
       m.blank |= bits32(blank) << shift;
       m.newline |= bits32(newline) << shift;
       m.non_digit |= (~bits32(within32(v, '0', 9)) & 0xffffffffu) << shift;
-      m.point |= bits32(_mm256_cmpeq_epi8(v, _mm256_set1_epi8('.'))) << shift;
-      m.minus |= bits32(_mm256_cmpeq_epi8(v, _mm256_set1_epi8('-'))) << shift;
     }
     out[b] = m;
   }
@@ -92,18 +86,13 @@ void classify_sse2(const char* text, std::size_t blocks, ByteMasks* out) {
   const __m512i zero = _mm512_set1_epi8('0'), tab = _mm512_set1_epi8('\t');
   const __m512i nine = _mm512_set1_epi8(9), four = _mm512_set1_epi8(4);
   const __m512i newline_byte = _mm512_set1_epi8('\n'), space = _mm512_set1_epi8(' ');
-  const __m512i point = _mm512_set1_epi8('.'), minus = _mm512_set1_epi8('-');
   for (std::size_t b = 0; b < blocks; ++b) {
     const __m512i v = _mm512_loadu_si512(text + 64 * b);
     const __mmask64 newline = _mm512_cmpeq_epi8_mask(v, newline_byte);
     const __mmask64 controls = _mm512_cmple_epu8_mask(_mm512_sub_epi8(v, tab), four);
     const __mmask64 blank = (controls & ~newline) | _mm512_cmpeq_epi8_mask(v, space);
     const __mmask64 digit = _mm512_cmple_epu8_mask(_mm512_sub_epi8(v, zero), nine);
-    out[b] = {.blank = blank,
-              .newline = newline,
-              .non_digit = ~digit,
-              .point = _mm512_cmpeq_epi8_mask(v, point),
-              .minus = _mm512_cmpeq_epi8_mask(v, minus)};
+    out[b] = {.blank = blank, .newline = newline, .non_digit = ~digit};
   }
 }
 #endif

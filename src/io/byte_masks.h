@@ -3,8 +3,7 @@
 /// Private: the classes of a point file's bytes, 64 at a time, as bit masks (bit i: byte i of a
 /// block), the first stage of the masked point scanner (io/masked_lines.h): the blanks (' ',
 /// '\t', '\r', '\v', '\f': detail::is_blank), the newlines, and every byte that is not a decimal
-/// digit (blanks, newlines, signs, points, letters, NUL, bytes above 127: all of them); and the
-/// points ('.') and minus signs, for the scanner's runs of plain lines.
+/// digit (blanks, newlines, signs, points, letters, NUL, bytes above 127: all of them).
 ///
 /// Versions: scalar (every build), SSE2 (the x86-64 baseline), AVX2 and AVX-512BW (chosen at run
 /// time where the CPU has them; no -march needed). All give the same masks bit for bit (tested
@@ -20,8 +19,6 @@ struct ByteMasks {
   std::uint64_t blank = 0;
   std::uint64_t newline = 0;
   std::uint64_t non_digit = 0;
-  std::uint64_t point = 0;  // '.'
-  std::uint64_t minus = 0;  // '-'
 };
 
 /// A version of classify_blocks.

@@ -135,127 +135,6 @@ struct StagedPoints {
   }
 };
 
-// Runs of plain lines, read a block of masks at a time (not a line at a time): every token
-// start, end and line found from the masks at once, the whole run checked to be plain lines of
-// exactly kColumns plain tokens by bit operations on the masks, and only then its tokens bounded.
-// A run that is not (a comment, a comma, an exponent, a blank line, a token of another shape)
-// is left, untouched, to the line-by-line scan.
-constexpr std::size_t kRunBlocks = 16;  // 1 KB of text
-// Tokens a plain run can hold: a plain token and its separator take 4 bytes at least.
-constexpr int kRunTokens = 16 * static_cast<int>(kRunBlocks);
-
-struct RunTokens {
-  unsigned start[kRunTokens];  // the first byte, from the run's first
-  unsigned end[kRunTokens];    // the last byte
-  unsigned line[kRunTokens];   // the line in the run, from 0
-  unsigned dot[kRunTokens];    // the point
-};
-
-// Bit i: the parity of the set bits 0 to i of `x`.
-[[gnu::always_inline]] inline std::uint64_t prefix_parity(std::uint64_t x) {
-  x ^= x << 1;
-  x ^= x << 2;
-  x ^= x << 4;
-  x ^= x << 8;
-  x ^= x << 16;
-  x ^= x << 32;
-  return x;
-}
-
-// The bits from `from` on (0 to 63).
-[[gnu::always_inline]] inline std::uint64_t bits_from(unsigned from) {
-  return ~std::uint64_t{0} << from;
-}
-// The bits below `to` (1 to 64).
-[[gnu::always_inline]] inline std::uint64_t bits_below(unsigned to) {
-  return ~std::uint64_t{0} >> (64 - to);
-}
-
-// Checks the run of whole lines [from, to) of the text at `base` (`masks[k]` those of its block
-// `first_block + k`; `from` a line's first byte, `to` past a newline) and finds its tokens into
-// `run`: true when every line of it is kColumns plain tokens apart by blanks (number_bound.h's
-// shape: an optional minus, 1 to 7 digits, a point, one or more digits), with the count of its
-// lines in `lines`; false otherwise (then nothing is known of it).
-template <int kColumns>
-[[gnu::always_inline]] inline bool check_run(const char* base, const ByteMasks* masks,
-                                             std::size_t first_block, std::size_t from,
-                                             std::size_t to, RunTokens& run, unsigned& lines) {
-  const std::size_t last_block = (to - 1) / 64;
-  const std::size_t origin = from;  // token positions count from here
-  std::uint64_t bad = 0;
-  std::uint64_t token_carry = 0;  // the byte before the block is in a token (bit 0)
-  std::uint64_t digit_carry = 0;  // the byte before the block is a digit (bit 0)
-  std::uint64_t parity = 0;       // all ones when the starts and points before are odd
-  int starts_count = 0, ends_count = 0;
-  unsigned newlines = 0;
-  for (std::size_t block = from / 64; block <= last_block; ++block) {
-    const ByteMasks& m = masks[block - first_block];
-    std::uint64_t range = ~std::uint64_t{0};
-    if (block == from / 64) range &= bits_from(static_cast<unsigned>(from % 64));
-    if (block == last_block) range &= bits_below(static_cast<unsigned>((to - 1) % 64) + 1);
-    const std::uint64_t separator = m.blank | m.newline;
-    const std::uint64_t token = ~separator & range;
-    // The next block's first byte: in a token, a digit (none past the run: it ends in a newline).
-    std::uint64_t next_token = 0, next_digit = 0;
-    if (block < last_block) {
-      const ByteMasks& n = masks[block + 1 - first_block];
-      next_token = ~(n.blank | n.newline) & 1;
-      next_digit = ~n.non_digit & 1;
-    }
-    const std::uint64_t starts = token & ~(token << 1 | token_carry);
-    const std::uint64_t ends = token & ~(token >> 1 | next_token << 63);
-    const std::uint64_t digit = ~m.non_digit;
-    const std::uint64_t point = m.point & range;
-    // Only digits, points and minus signs in tokens; a minus only first; a point between digits.
-    bad |= m.non_digit & token & ~m.point & ~m.minus;
-    bad |= m.minus & range & ~starts;
-    bad |= point & ~(digit << 1 | digit_carry);
-    bad |= point & ~(digit >> 1 | next_digit << 63);
-    // One point a token: starts and points alternate, a start first (a point is never a start:
-    // a digit is before it).
-    const std::uint64_t odd = prefix_parity(starts | point) ^ parity;
-    bad |= (starts & ~odd) | (point & odd);
-    parity = static_cast<std::uint64_t>(0) - (odd >> 63);
-    token_carry = token >> 63;
-    digit_carry = (digit & range) >> 63;
-    // The tokens, each with its line (the newlines before it in the run).
-    const std::uint64_t newline = m.newline & range;
-    if (starts_count + std::popcount(starts) > kRunTokens) return false;
-    const auto offset = static_cast<unsigned>(64 * block - origin);
-    for (std::uint64_t s = starts; s != 0; s &= s - 1) {
-      const auto at = static_cast<unsigned>(std::countr_zero(s));
-      run.start[starts_count] = offset + at;
-      run.line[starts_count] =
-          newlines + static_cast<unsigned>(std::popcount(newline & ~bits_from(at)));
-      ++starts_count;
-    }
-    for (std::uint64_t e = ends; e != 0; e &= e - 1) {
-      if (ends_count == kRunTokens) return false;
-      run.end[ends_count++] = offset + static_cast<unsigned>(std::countr_zero(e));
-    }
-    newlines += static_cast<unsigned>(std::popcount(newline));
-  }
-  if (bad != 0 || parity != 0 || starts_count != ends_count ||
-      starts_count != kColumns * static_cast<int>(newlines)) {
-    return false;
-  }
-  // Line k holds tokens kColumns k to kColumns k + kColumns - 1: exactly kColumns a line (the
-  // lines of the tokens never decrease), so no blank line and no line of another count.
-  for (unsigned k = 0; k < newlines; ++k) {
-    if (run.line[kColumns * k] != k || run.line[kColumns * k + kColumns - 1] != k) return false;
-  }
-  // 1 to 7 digits before the point (at least one: a digit is before it).
-  const char* const text = base + origin;
-  for (int t = 0; t < starts_count; ++t) {
-    const unsigned digits_at = run.start[t] + (text[run.start[t]] == '-' ? 1u : 0u);
-    const std::uint64_t flags = non_digit_bits(load8(text + digits_at));
-    if (flags == 0) return false;  // 8 digits or more
-    run.dot[t] = digits_at + static_cast<unsigned>(std::countr_zero(flags)) / 8;
-  }
-  lines = newlines;
-  return true;
-}
-
 template <class Bounded>
 [[gnu::always_inline]] inline PointLinesScan scan_masked(std::string_view text,
                                                          std::vector<Bounded>& points, MaskIsa isa,
@@ -282,9 +161,7 @@ template <class Bounded>
   ByteMasks masks[kMaskBlocks];
   std::size_t held_from = 0, held = 0;  // the masks of blocks [held_from, held_from + held)
   const std::size_t whole_blocks = size / 64;
-  RunTokens run;
-  std::size_t run_refused_to = 0;  // no run tried before this byte
-  std::size_t at = 0;              // the line's first byte
+  std::size_t at = 0;  // the line's first byte
   while (size - at >= kLineReach && walked_lines <= taken_lines / 2 + 16) {
     const std::size_t block = at / 64;
     if (block + 2 > whole_blocks) break;
@@ -292,42 +169,6 @@ template <class Bounded>
       held_from = block;
       held = std::min(kMaskBlocks, whole_blocks - block);
       classify_blocks(base + 64 * block, held, masks, isa);
-    }
-    // A run of plain lines from here: to the last newline of the next kRunBlocks blocks held
-    // (one more held for the token ends), with room for the loads of its last token after it.
-    if (at >= run_refused_to) {
-      const std::size_t run_last = std::min(block + kRunBlocks, held_from + held - 1) - 1;
-      std::size_t to = 0;
-      for (std::size_t k = run_last + 1; k-- > block && to == 0;) {
-        const std::uint64_t newline =
-            masks[k - held_from].newline &
-            (k == block ? bits_from(static_cast<unsigned>(at % 64)) : ~std::uint64_t{0});
-        if (newline != 0) to = 64 * k + 64 - static_cast<std::size_t>(std::countl_zero(newline));
-      }
-      unsigned run_lines = 0;
-      if (to > at && size - to >= kLineReach &&
-          check_run<kColumns>(base, masks, held_from, at, to, run, run_lines)) {
-        const char* const run_text = base + at;
-        for (unsigned k = 0; k < run_lines; ++k) {
-          if (out.held == out.kRoom) out.flush();
-          for (int c = 0; c < kColumns; ++c) {
-            const int t = kColumns * static_cast<int>(k) + c;
-            const bool negative = run_text[run.start[t]] == '-';
-            store_token(out.digits, kColumns * out.held + c, run_text,
-                        run.start[t] + (negative ? 1u : 0u), run.dot[t], run.end[t], negative);
-          }
-          Bounded& point = out.staged[out.held++];
-          point.first = run_text + run.start[kColumns * k];
-          point.last = run_text + run.end[kColumns * k + kColumns - 1] + 1;
-        }
-        if (scan.first_row == 0) scan.first_row = scan.lines + 1;
-        scan.lines += run_lines;
-        taken_lines += run_lines;
-        at = to;
-        continue;
-      }
-      // Line by line to the run's end (it is tried once).
-      run_refused_to = std::max(to, at + 1);
     }
     const std::size_t b = block - held_from;
     const auto shift = static_cast<unsigned>(at % 64);
