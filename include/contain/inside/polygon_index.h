@@ -86,11 +86,11 @@ class PolygonIndex {
   /// over several cells). Exact comparisons and orientations only, so an answer given is
   /// `locate(p)` for every p in the box. O(1) outside edge cells, O(k) in a cell of k edges.
   // Inline: it runs once a point of a stream of bounded points (a call and the optional's
-  // branches cost as much as its tests), with the box's two tests each of one branch.
+  // branches cost as much as its tests).
   [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const {
     // Wholly beyond the closed bounds: locate's first test answers `outside` for every point.
-    if ((box.min.x > bounds_.max.x) | (box.max.x < bounds_.min.x) | (box.min.y > bounds_.max.y) |
-        (box.max.y < bounds_.min.y)) {
+    if (box.min.x > bounds_.max.x || box.max.x < bounds_.min.x || box.min.y > bounds_.max.y ||
+        box.max.y < bounds_.min.y) {
       return Location::outside;
     }
     if (packed_states_.empty()) return std::nullopt;
@@ -99,8 +99,8 @@ class PolygonIndex {
     // point is read in full).
     const int i = x_.guess(box.min.x);
     const int j = y_.guess(box.min.y);
-    const bool within = (x_.line(i) < box.min.x) & (box.max.x < x_.line(i + 1)) &
-                        (y_.line(j) < box.min.y) & (box.max.y < y_.line(j + 1));
+    const bool within = x_.line(i) < box.min.x && box.max.x < x_.line(i + 1) &&
+                        y_.line(j) < box.min.y && box.max.y < y_.line(j + 1);
     const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
                    static_cast<std::size_t>(i);
     const unsigned state = (packed_states_[c / 4] >> (2 * (c % 4))) & 3U;
