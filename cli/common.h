@@ -137,4 +137,12 @@ void add_quiet_option(CLI::App& app, bool& quiet);
 [[nodiscard]] std::string format_locations(std::span<const Location> locations,
                                            BoundaryPolicy policy);
 
+/// The bytes format_locations_into may write for each location (a line and the slack of its
+/// fixed-size copy).
+inline constexpr std::size_t kLocationSlot = 8;
+/// The text of format_locations written at `out`, which has room for kLocationSlot bytes a
+/// location (past the returned size the bytes are unspecified); returns the text's size.
+std::size_t format_locations_into(std::span<const Location> locations, BoundaryPolicy policy,
+                                  char* out);
+
 }  // namespace contain::cli

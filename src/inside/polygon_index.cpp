@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "inside/polygon_kernel.h"
@@ -322,25 +323,68 @@ Location PolygonIndex::locate(Vec2 point) const {
   return locate_in_edge_cell(point, i, edge_cells_[code - 2]);
 }
 
-std::optional<Location> PolygonIndex::locate_settled(const Box2& box) const {
-  // Wholly beyond the closed bounds: locate's first test answers `outside` for every point.
-  if (box.min.x > bounds_.max.x || box.max.x < bounds_.min.x || box.min.y > bounds_.max.y ||
-      box.max.y < bounds_.min.y) {
-    return Location::outside;
+std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int column,
+                                                          std::size_t cell_index) const {
+  // locate_in_edge_cell's walk, each of its tests shown to come out the same for every point p
+  // of the box (else no answer): then its winding number, and that no edge passes through p,
+  // hold for the whole box.
+  const EdgeCell& cell = edge_cells_[cells_[cell_index] - 2];
+  const double x1 = x_.line(column + 1);
+  const double y0 = box.min.y, y1 = box.max.y;
+  // The sign of orient2d(a, b, q) at every q of the segment or box given by its corners (affine
+  // in q: one strict sign at every corner is that sign everywhere between); zero when not one.
+  const auto one_sign = [](Vec2 a, Vec2 b, std::initializer_list<Vec2> corners) {
+    const Sign first = predicates::orient2d(a, b, *corners.begin());
+    for (const Vec2& q : corners) {
+      if (predicates::orient2d(a, b, q) != first) return Sign::zero;
+    }
+    return first;
+  };
+  int winding = cell.corner_winding;
+  for (std::uint32_t q = cell.side_begin; q < cell.side_end; ++q) {
+    const SideEdge& e = side_edges_[q];
+    // passes_below(e.l, e.r, x1, p.y): the sign at (x1, p.y) when not zero.
+    const Sign s = one_sign(e.l, e.r, {Vec2{x1, y0}, Vec2{x1, y1}});
+    if (s == Sign::zero) return std::nullopt;
+    if (s == Sign::positive) winding += e.dir;
   }
-  if (cells_.empty()) return std::nullopt;
-  // Strictly between two lines on each axis: every point of the box lies in that cell, however
-  // the cell was found (the floating-point guess; where it is wrong, the test fails and the
-  // point is read in full).
-  const int i = x_.guess(box.min.x);
-  if (!(x_.line(i) < box.min.x && box.max.x < x_.line(i + 1))) return std::nullopt;
-  const int j = y_.guess(box.min.y);
-  if (!(y_.line(j) < box.min.y && box.max.y < y_.line(j + 1))) return std::nullopt;
-  const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
-                 static_cast<std::size_t>(i);
-  const unsigned state = (packed_states_[c / 4] >> (2 * (c % 4))) & 3U;
-  if (state < 2) return state == 1 ? Location::inside : Location::outside;
-  return std::nullopt;
+  for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
+    const CellEdge& e = edges_[q];
+    // ray_crossing(a, b, p) and (a, b, s = (x1, p.y)): each end strictly below or above the
+    // box's heights, so that a.y <= p.y and b.y <= p.y are the same for every p and neither end
+    // is at p's height (no horizontal edge or vertex through p).
+    const bool a_below = e.a.y < y0, b_below = e.b.y < y0;
+    if (!(a_below || e.a.y > y1) || !(b_below || e.b.y > y1)) return std::nullopt;
+    if (a_below == b_below) continue;  // 0 for p and s
+    const int dir = a_below ? 1 : -1;
+    const double lo = std::min(e.a.x, e.b.x), hi = std::max(e.a.x, e.b.x);
+    // The crossing's contribution by the walk's own shortcuts where they hold for every p (and
+    // s), else by the sign (the shortcuts agree with it for a point off the edge).
+    const auto by_sign = [&](Sign s) { return (s == Sign::positive) == (dir > 0) ? dir : 0; };
+    int at_p = 0;
+    if (box.min.x > hi) {
+      at_p = 0;
+    } else if (box.max.x < lo) {
+      at_p = dir;
+    } else {
+      const Sign s =
+          one_sign(e.a, e.b, {box.min, box.max, Vec2{box.min.x, y1}, Vec2{box.max.x, y0}});
+      if (s == Sign::zero) return std::nullopt;
+      at_p = by_sign(s);
+    }
+    int at_s = 0;
+    if (x1 > hi) {
+      at_s = 0;
+    } else if (x1 < lo) {
+      at_s = dir;
+    } else {
+      const Sign s = one_sign(e.a, e.b, {Vec2{x1, y0}, Vec2{x1, y1}});
+      if (s == Sign::zero) return std::nullopt;
+      at_s = by_sign(s);
+    }
+    winding += at_p - at_s;
+  }
+  return is_filled(fill_, winding) ? Location::inside : Location::outside;
 }
 
 Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const {

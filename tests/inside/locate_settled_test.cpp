@@ -79,6 +79,54 @@ TEST(LocateSettled, PolygonAnswersOnlyWhereEveryPointOfTheBoxLocatesSo) {
   }
 }
 
+// Boxes in the cells that edges cross: settled only where every point of the box locates so
+// (corners, centre and points drawn inside it), whatever the fill rule, around vertices, points
+// on edges and near them, and on integer rings whose vertices share heights with the boxes'
+// sides; and a tiny box off the edges is settled there too (the test is not vacuous: without
+// the edge-cell proof no tiny box in an edge cell is).
+TEST(LocateSettled, PolygonBoxesInEdgeCellsAnswerOnlyWhereEveryPointLocatesSo) {
+  std::mt19937_64 rng(1027);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int round = 0; round < 24; ++round) {
+    const std::vector<Ring> rings =
+        round % 3 == 0 ? test::random_integer_rings(rng, 3, 12, 8)
+                       : std::vector<Ring>{test::random_star(rng, 20 + round, 0.0, 0.0, 1.0)};
+    const Fill fill = std::array{Fill::even_odd, Fill::nonzero, Fill::positive}[round % 3];
+    // A coarse grid: every edge cell holds several edges and side edges.
+    const PolygonIndex index(std::span<const Ring>(rings), {.fill = fill, .min_cells = 16});
+    std::vector<Vec2> points = test::points_near_rings(rng, rings, 8);
+    for (const Ring& ring : rings)
+      points.insert(points.end(), ring.begin(), ring.end());
+    for (const Vec2& p : std::vector<Vec2>(points)) {  // and just off each of them
+      points.push_back({p.x + 1e-9, p.y - 1e-9});
+      points.push_back({p.x - 1e-6, p.y + 1e-6});
+    }
+    for (const Vec2& p : points) {
+      for (const double w : {0.0, 1e-12, 1e-8, 1e-4, 0.05}) {
+        for (const Box2& box : {Box2{p, {p.x + w, p.y + w}}, Box2{{p.x - w, p.y - w}, p},
+                                Box2{{p.x - w, p.y}, {p.x, p.y + 2 * w}}}) {
+          if (expect_settled_agrees(index, box) == 0) continue;
+          for (int k = 0; k < 4; ++k) {
+            const Vec2 q{std::min(box.max.x, box.min.x + unit(rng) * (box.max.x - box.min.x)),
+                         std::min(box.max.y, box.min.y + unit(rng) * (box.max.y - box.min.y))};
+            EXPECT_EQ(index.locate(q), index.locate_settled(box)) << q.x << " " << q.y;
+          }
+        }
+      }
+    }
+    if (round % 3 != 0) {  // a star: random tiny boxes settle, edge cells or not
+      const Box2 b = index.bounds();
+      int tiny = 0;
+      for (int k = 0; k < 1000; ++k) {
+        const Vec2 p{b.min.x + unit(rng) * (b.max.x - b.min.x),
+                     b.min.y + unit(rng) * (b.max.y - b.min.y)};
+        tiny += index.locate_settled({p, {p.x + 1e-8, p.y + 1e-8}}) ? 1 : 0;
+      }
+      EXPECT_GT(tiny, 950);
+    }
+  }
+}
+
 TEST(LocateSettled, PolygonBoxTouchingAnInnerGridLineIsNotSettled) {
   std::mt19937_64 rng(5);
   const std::vector<Ring> rings{test::random_star(rng, 30, 0.0, 0.0, 1.0)};
@@ -98,12 +146,19 @@ TEST(LocateSettled, PolygonBoxTouchingAnInnerGridLineIsNotSettled) {
   EXPECT_EQ(PolygonIndex().locate_settled({{0, 0}, {1, 1}}), Location::outside);
 }
 
-TEST(LocateSettled, PolygonWithoutGridSettlesOnlyBoxesBeyondItsBounds) {
+// Without a grid (few queries) the one cell holds every edge: a box is settled by its walk where
+// no edge meets the box, never around a vertex.
+TEST(LocateSettled, PolygonWithoutGridSettlesBoxesOffTheEdgesByItsOneCell) {
   std::mt19937_64 rng(8);
   const std::vector<Ring> rings{test::random_star(rng, 30, 0.0, 0.0, 1.0)};
   const PolygonIndex index(std::span<const Ring>(rings), {.queries = 1});
-  EXPECT_FALSE(index.locate_settled({{0, 0}, {1e-9, 1e-9}}));
+  ASSERT_EQ(index.stats().cells, 1u);
+  EXPECT_EQ(index.locate_settled({{0, 0}, {1e-9, 1e-9}}), Location::inside);  // the star's centre
+  EXPECT_EQ(expect_settled_agrees(index, {{0, 0}, {1e-9, 1e-9}}), 1);
   EXPECT_EQ(index.locate_settled({{5, 5}, {6, 6}}), Location::outside);
+  for (const Vec2& v : rings[0]) {
+    EXPECT_FALSE(index.locate_settled({{v.x - 1e-9, v.y - 1e-9}, {v.x + 1e-9, v.y + 1e-9}}));
+  }
 }
 
 int expect_settled_agrees(const MeshIndex& index, const Box3& box) {

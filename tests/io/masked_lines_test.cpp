@@ -120,6 +120,31 @@ std::string random_file(std::mt19937_64& rng, int columns, int lines, bool odd_b
   return text;
 }
 
+// Lines of `columns` plain numbers (number_bound.h's shape: 1 to 7 digits, a point, 1 to 25
+// digits, a minus or not) apart by blanks of every kind, with leading and trailing blanks and no
+// blank line: lines that the masks take, for the tests of what must send them to the walk.
+std::string plain_file(std::mt19937_64& rng, int columns, int lines) {
+  const char* blanks[] = {" ", " ", " ", "  ", "\t", " \t ", "\r", "\v", "\f"};
+  std::string text;
+  for (int line = 0; line < lines; ++line) {
+    if (rng() % 8 == 0) text += blanks[rng() % 9];
+    for (int k = 0; k < columns; ++k) {
+      if (k > 0) text += blanks[rng() % 9];
+      if (rng() % 2 == 0) text += '-';
+      const int whole = rng() % 4 == 0 ? 1 + static_cast<int>(rng() % 7) : 1;
+      const int fraction = 1 + static_cast<int>(rng() % 25);
+      for (int d = 0; d < whole; ++d)
+        text += static_cast<char>('0' + rng() % 10);
+      text += '.';
+      for (int d = 0; d < fraction; ++d)
+        text += static_cast<char>('0' + rng() % 10);
+    }
+    if (rng() % 8 == 0) text += blanks[rng() % 9];
+    text += '\n';
+  }
+  return text;
+}
+
 TEST(ByteMasks, EveryVersionGivesTheScalarMasksForEveryByteValueAtEveryPosition) {
   // Block j holds byte value (j + i) mod 256 at position i: every value at every position.
   std::string text(64 * 256, '\0');
@@ -328,6 +353,101 @@ TEST(MaskedLines, StopsAtTheWalksLineWithTheWalksPointsBeforeIt) {
     std::string broken = text;
     broken.insert(middle, bad);
     expect_as_the_walk<BoundedPoint2>(broken);
+  }
+}
+
+TEST(MaskedLines, PlainFilesAreTakenByTheMasksWithTheWalksResults) {
+  std::mt19937_64 rng(1027);
+  for (int round = 0; round < 6; ++round) {
+    const std::string text2 = plain_file(rng, 2, 1500), text3 = plain_file(rng, 3, 1000);
+    expect_as_the_walk<BoundedPoint2>(text2);
+    expect_as_the_walk<BoundedPoint3>(text3);
+    for (MaskIsa isa : versions_here()) {
+      std::vector<BoundedPoint2> points;
+      std::int64_t walked = 0;
+      ASSERT_TRUE(detail::scan_bounded_masked(text2, points, isa, &walked).complete);
+      // Only the lines of 64 bytes or more and those of the last 127 bytes.
+      std::int64_t long_lines = 0;
+      for (std::size_t at = 0, end = text2.find('\n'); end != std::string::npos;
+           at = end + 1, end = text2.find('\n', at)) {
+        long_lines += end - at >= 64 ? 1 : 0;
+      }
+      EXPECT_LE(walked, long_lines + 5);
+    }
+  }
+}
+
+// Every byte that makes a plain line another (another character in a token, a token of another
+// shape, a line of another count, a blank line, an eighth digit before a point), at every
+// position of the first 1200 bytes of a plain file: the walk's results.
+TEST(MaskedLines, EveryByteThatChangesAPlainLineAtEveryPositionGivesTheWalksResults) {
+  std::mt19937_64 rng(4096);
+  std::string body2 = "1234567.5 -7654321.25\n" + plain_file(rng, 2, 50);
+  std::string body3 = "1234567.5 -7654321.25 0.5\n" + plain_file(rng, 3, 40);
+  const std::string hostile[] = {"#",    ",", "e",    "+",   std::string(1, '\0'),
+                                 "\x80", ".", "-",    " ",   "\n",
+                                 "\r\n", "5", "0.5 ", "\n\n"};
+  for (std::size_t at = 0; at < 1200; ++at) {
+    for (const std::string& bytes : hostile) {
+      std::string changed = body2;
+      if (at % 2 == 0) {
+        changed.replace(at, std::min(bytes.size(), changed.size() - at), bytes);
+      } else {
+        changed.insert(at, bytes);
+      }
+      expect_as_the_walk<BoundedPoint2>(changed);
+      if (at % 8 == 0) {
+        changed = body3;
+        changed.insert(at, bytes);
+        expect_as_the_walk<BoundedPoint3>(changed);
+      }
+    }
+  }
+}
+
+// A token without its point (an integer) wherever it lies; and a token moved from each line to the
+// next, or back (lines of one and three numbers, two lines still holding four): the walk's results.
+TEST(MaskedLines, EveryTokenWithoutItsPointAndEveryMovedTokenGiveTheWalksResults) {
+  std::mt19937_64 rng(31);
+  for (int columns : {2, 3}) {
+    const std::string body = plain_file(rng, columns, 120);
+    const auto expect = [&](const std::string& text) {
+      if (columns == 2) {
+        expect_as_the_walk<BoundedPoint2>(text);
+      } else {
+        expect_as_the_walk<BoundedPoint3>(text);
+      }
+    };
+    for (std::size_t at = body.find('.'); at != std::string::npos; at = body.find('.', at + 1)) {
+      std::string changed = body;
+      changed[at] = '5';
+      expect(changed);
+    }
+    for (std::size_t end = body.find('\n'); end + 1 < body.size(); end = body.find('\n', end + 1)) {
+      // The newline moved back over the line's last token: it starts the next line.
+      const std::size_t blank = body.find_last_of(" \t\v\f\r", end - 1);
+      std::string back = body;
+      back[end] = ' ';
+      back.insert(blank + 1, "\n");
+      expect(back);
+      // The newline moved past the next line's first token: it ends this line.
+      const std::size_t next_blank = body.find_first_of(" \t\v\f\r\n", end + 1);
+      std::string forward = body;
+      forward.insert(next_blank, "\n");
+      forward[end] = ' ';
+      expect(forward);
+    }
+  }
+}
+
+TEST(MaskedLines, PlainLinesStartingAtEveryOffsetOfABlockGiveTheWalksResults) {
+  std::mt19937_64 rng(65);
+  const std::string body2 = plain_file(rng, 2, 80), body3 = plain_file(rng, 3, 60);
+  for (int offset = 0; offset < 64; ++offset) {
+    const std::string blanks(static_cast<std::size_t>(offset), ' ');
+    expect_as_the_walk<BoundedPoint2>(blanks + "\n" + body2);
+    expect_as_the_walk<BoundedPoint3>(blanks + "\n" + body3);
+    expect_as_the_walk<BoundedPoint2>("0.5 0.5" + blanks + "\n" + body2);
   }
 }
 

@@ -79,11 +79,35 @@ class PolygonIndex {
   [[nodiscard]] Location locate(Vec2 point) const;
 
   /// The location every point of the closed box `box` has, when the index knows it without
-  /// looking at a point: the box wholly beyond the edges' bounds (`outside`), or strictly
-  /// inside one cell that no edge touches (its stored answer); none otherwise (a box touching a
-  /// cell's side, an edge cell, a box over several cells). Exact comparisons only, so an answer
-  /// given is `locate(p)` for every p in the box. O(1).
-  [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const;
+  /// looking at a point: the box wholly beyond the edges' bounds (`outside`), strictly inside
+  /// one cell that no edge touches (its stored answer), or strictly inside an edge cell where
+  /// every test of its walk comes out the same for every point of the box (no edge meets it, no
+  /// vertex shares its heights); none otherwise (a box touching a cell's side or an edge, a box
+  /// over several cells). Exact comparisons and orientations only, so an answer given is
+  /// `locate(p)` for every p in the box. O(1) outside edge cells, O(k) in a cell of k edges.
+  // Inline: it runs once a point of a stream of bounded points (a call and the optional's
+  // branches cost as much as its tests).
+  [[nodiscard]] std::optional<Location> locate_settled(const Box2& box) const {
+    // Wholly beyond the closed bounds: locate's first test answers `outside` for every point.
+    if (box.min.x > bounds_.max.x || box.max.x < bounds_.min.x || box.min.y > bounds_.max.y ||
+        box.max.y < bounds_.min.y) {
+      return Location::outside;
+    }
+    if (packed_states_.empty()) return std::nullopt;
+    // Strictly between two lines on each axis: every point of the box lies in that cell, however
+    // the cell was found (the floating-point guess; where it is wrong, the test fails and the
+    // point is read in full).
+    const int i = x_.guess(box.min.x);
+    const int j = y_.guess(box.min.y);
+    const bool within = x_.line(i) < box.min.x && box.max.x < x_.line(i + 1) &&
+                        y_.line(j) < box.min.y && box.max.y < y_.line(j + 1);
+    const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
+                   static_cast<std::size_t>(i);
+    const unsigned state = (packed_states_[c / 4] >> (2 * (c % 4))) & 3U;
+    if (!within) return std::nullopt;
+    if (state < 2) return state == 1 ? Location::inside : Location::outside;
+    return settle_in_edge_cell(box, i, c);
+  }
 
   /// Warms the cache for a query at `point` (its guessed cell's state), for callers' pipelines;
   /// no effect on any answer.
@@ -148,6 +172,9 @@ class PolygonIndex {
   // packed_states_ from cells_ (after construction and after loading).
   void pack_states();
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
+  // locate_settled's answer for a box strictly inside the edge cell `cell` of column `column`.
+  [[nodiscard]] std::optional<Location> settle_in_edge_cell(const Box2& box, int column,
+                                                            std::size_t cell) const;
 
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
