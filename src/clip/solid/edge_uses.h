@@ -7,10 +7,7 @@
 // (edge, face), the key's lower half being the bucket. A face's corner at the edge is found
 // again from its three corners when needed instead of being stored: half the memory of entries
 // of (edge key, face, corner), each fresh page of which costs a fault, and integer compares in
-// the buckets' insertion sorts. The entries sit in huge pages (HugePageVector), not zeroed
-// before the scatter writes each of them: the labels' uses of 269k refined faces at a 131k
-// union are 6.4 MB, whose 1,600 fresh 4 kB pages were faulted by the zeroing (6-10 ms of the
-// 15-20 ms that build took, 2 ms with huge pages).
+// the buckets' insertion sorts.
 
 #include <algorithm>
 #include <array>
@@ -19,7 +16,6 @@
 #include <span>
 #include <vector>
 
-#include "contain/core/huge_pages.h"
 #include "contain/core/sort_few.h"
 
 namespace contain::clip::solid {
@@ -28,7 +24,7 @@ namespace contain::clip::solid {
 /// the edges whose lower point is p, each (higher point << 32) | face, ascending.
 struct EdgeUses {
   std::vector<std::size_t> start;
-  HugePageVector<std::uint64_t> entry;  // every one written by edge_uses
+  std::vector<std::uint64_t> entry;
 
   [[nodiscard]] static std::int32_t higher(std::uint64_t e) {
     return static_cast<std::int32_t>(e >> 32U);
@@ -36,8 +32,6 @@ struct EdgeUses {
   [[nodiscard]] static std::uint32_t face(std::uint64_t e) {
     return static_cast<std::uint32_t>(e & 0xffffffffU);
   }
-  /// The number of a face that keep_faces drops.
-  static constexpr std::uint32_t dropped = 0xffffffffU;
 };
 
 /// The corner k of `v` where its `nth` use (0-based, in order of k) of the undirected edge
@@ -87,34 +81,6 @@ template <class Corners>
              out.entry.begin() + static_cast<std::ptrdiff_t>(out.start[i + 1]), 16);
   }
   return out;
-}
-
-/// `uses` narrowed in place to the faces f with `number[f] != EdgeUses::dropped`, face f
-/// renumbered `number[f]`: the same as `edge_uses` of the kept faces so numbered, when the
-/// numbers increase with f (the entries keep their order) and each kept face has the corners it
-/// had (in any order: the undirected edges are the same). One pass over the entries into their
-/// own memory, where a new build sorts and scatters into fresh pages: the boundary's uses at a
-/// 131k union (186k of the 269k refined faces) were 4-6 ms to build.
-inline void keep_faces(EdgeUses& uses, std::span<const std::uint32_t> number) {
-  std::size_t kept = 0, points = 0;
-  std::size_t begin = 0;  // the bucket's first entry before the narrowing
-  for (std::size_t p = 0; p + 1 < uses.start.size(); ++p) {
-    const std::size_t end = uses.start[p + 1];
-    uses.start[p] = kept;
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint64_t e = uses.entry[i];
-      const std::uint32_t to = number[EdgeUses::face(e)];
-      if (to == EdgeUses::dropped) continue;
-      uses.entry[kept++] = (e & ~std::uint64_t{0xffffffffU}) | to;
-      points = std::max(points, static_cast<std::size_t>(EdgeUses::higher(e)) + 1);
-    }
-    begin = end;
-  }
-  // The buckets from `points` on are empty (an edge's lower point is at most its higher one):
-  // cut as edge_uses sizes them, by the largest corner of the faces.
-  uses.start.resize(points + 1);
-  uses.start[points] = kept;
-  uses.entry.resize(kept);
 }
 
 /// Calls `visit(a, b, uses)` for each edge a < b, in ascending order of (a, b), with its uses

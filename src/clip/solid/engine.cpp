@@ -26,8 +26,8 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
     // memory (the process keeps freed memory) instead of faulting in fresh pages.
     const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
     const solid::Refinement refinement = solid::refine(*soup, work, store);
-    solid::FaceLabels labels = solid::label_faces(*soup, refinement, store);
-    boundary = solid::boundary_faces(*soup, refinement, work, std::move(labels), store, options.op);
+    const solid::FaceLabels labels = solid::label_faces(*soup, refinement, store);
+    boundary = solid::boundary_faces(*soup, refinement, work, labels, store, options.op);
   }
   return solid::write_result(*soup, boundary, store, options.op);
 }

@@ -22,7 +22,6 @@
 #include <utility>
 #include <vector>
 
-#include "clip/solid/edge_uses.h"
 #include "clip/solid/exact_point.h"
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
@@ -195,9 +194,6 @@ struct FaceLabel {
 struct FaceLabels {
   std::vector<FaceLabel> of_patch;
   std::vector<std::uint32_t> patch;  ///< of each face, an index into of_patch
-  /// The refined faces' edge uses (the patches walked them), narrowed by boundary_faces to the
-  /// boundary's faces.
-  EdgeUses uses;
   [[nodiscard]] const FaceLabel& operator[](std::size_t face) const {
     return of_patch[patch[face]];
   }

@@ -85,9 +85,11 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
   return w;
 }
 
-// The faces' patches: the set of each face's smallest face (UnionFind::find), walking `uses`,
-// the faces' edge uses.
-UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r, const EdgeUses& uses) {
+// The faces' patches: the set of each face's smallest face (UnionFind::find).
+UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
+  const EdgeUses uses =
+      edge_uses(r.faces.size(),
+                [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
   // Faces are numbered in 32 bits (EdgeUses): sets of half the size of std::size_t ones.
   UnionFind<std::uint32_t> sets(r.faces.size());
   // The lower points of the curve edges: most edges have none there and skip the search.
@@ -120,13 +122,9 @@ UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r, const Ed
 
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
-  FaceLabels labels;
-  // Kept with the labels: the boundary's faces are some of these, whose uses boundary_faces
-  // narrows them to for the merging of coplanar faces (no second build).
-  labels.uses = edge_uses(
-      refinement.faces.size(), [&](std::size_t f) -> const auto& { return refinement.faces[f].v; });
   // Each face's root looked up as the faces are labelled (no array of roots first).
-  UnionFind<std::uint32_t> patch = patches(soup, refinement, labels.uses);
+  UnionFind<std::uint32_t> patch = patches(soup, refinement);
+  FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));

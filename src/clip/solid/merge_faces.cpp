@@ -54,14 +54,9 @@ bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
 UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
                                const PointStore& store) {
   // Every edge use, grouped by edge: flat arrays, not a map of vectors (one allocation per edge
-  // was a tenth of the boolean); the labels' narrowed to these faces when boundary_faces gave
-  // them, made here otherwise.
-  EdgeUses made;
-  if (boundary.uses.start.empty()) {
-    made = edge_uses(boundary.faces.size(),
-                     [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
-  }
-  const EdgeUses& uses = boundary.uses.start.empty() ? made : boundary.uses;
+  // was a tenth of the boolean).
+  const EdgeUses uses = edge_uses(boundary.faces.size(),
+                                  [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
   UnionFind<std::size_t> sets(boundary.faces.size());
   for_each_edge(uses, [&](std::int32_t lo, std::int32_t hi, std::span<const std::uint64_t> group) {
     if (group.size() != 2) return;

@@ -110,7 +110,7 @@ std::size_t moved_count(const Faces& faces, const PointStore& store,
 }  // namespace
 
 BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
-                             const std::vector<TriangleWork>& work, FaceLabels&& labels,
+                             const std::vector<TriangleWork>& work, const FaceLabels& labels,
                              const PointStore& store, Op op) {
   // The answer on each side of each patch once (a face shares its patch's labels): 1 front
   // filled, 2 back filled.
@@ -120,24 +120,16 @@ BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
                                          (filled(op, labels.of_patch[p].back) ? 2U : 0U));
   }
   BoundaryFaces out;
-  // Each refined face's number among the boundary's, written over its patch once that is read
-  // (the labels are given up: no array of a fresh megabyte).
-  std::vector<std::uint32_t>& number = labels.patch;
   for (std::size_t f = 0; f < refinement.faces.size(); ++f) {
     const RefinedFace& face = refinement.faces[f];
-    const std::uint8_t side = sides[number[f]];
-    number[f] = EdgeUses::dropped;
+    const std::uint8_t side = sides[labels.patch[f]];
     if (side == 0 || side == 3) continue;  // the same answer on both sides
     const bool back = side == 2;
     if (!owned(soup, face, work[static_cast<std::size_t>(face.triangle)], store)) continue;
-    number[f] = static_cast<std::uint32_t>(out.faces.size());
     out.faces.push_back(back ? face.v
                              : std::array<std::int32_t, 3>{face.v[0], face.v[2], face.v[1]});
     out.triangle.push_back(face.triangle);
   }
-  // The boundary's faces are refined faces in their order, some turned over (the same edges).
-  keep_faces(labels.uses, number);
-  out.uses = std::move(labels.uses);
   return out;
 }
 

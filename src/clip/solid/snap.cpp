@@ -271,9 +271,8 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
 Faces arranged_faces(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store,
                      Op op) {
   const Refinement refinement = refine(soup, work, store);
-  FaceLabels labels = label_faces(soup, refinement, store);
-  const BoundaryFaces boundary =
-      boundary_faces(soup, refinement, work, std::move(labels), store, op);
+  const FaceLabels labels = label_faces(soup, refinement, store);
+  const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
   return merge_coplanar(soup, boundary, store);
 }
 

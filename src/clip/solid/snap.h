@@ -23,15 +23,14 @@ using Faces = std::vector<std::array<std::int32_t, 3>>;
 struct BoundaryFaces {
   Faces faces;
   std::vector<std::int32_t> triangle;
-  /// The edge uses of `faces` (the labels' narrowed to them); none made when `start` is empty.
-  EdgeUses uses;
 };
 
 /// The refined faces where `op` differs on the two sides, one of each set of coinciding faces
-/// (output.cpp). The labels are given up: their edge uses become the boundary's.
+/// (output.cpp).
 [[nodiscard]] BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
                                            const std::vector<TriangleWork>& work,
-                                           FaceLabels&& labels, const PointStore& store, Op op);
+                                           const FaceLabels& labels, const PointStore& store,
+                                           Op op);
 
 /// The result of `op` with the faces `boundary` (boundary_faces): merged where coplanar,
 /// written, checked and repaired (output.cpp).

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -84,83 +83,6 @@ TEST(EdgeUses, GroupsEveryUseAsAMapOfEdgesDoesOnRandomFacesWithFansAndRepeatedCo
   EXPECT_GE(cases, 40);
   EXPECT_GE(fans, 40);
   EXPECT_GE(twice, 40);
-}
-
-TEST(EdgeUses, LargeFaceSetsInHugePagesHoldEveryUseOnceInOrder) {
-  // 200,000 faces: 600,000 entries (4.8 MB), above the huge-page allocator's threshold, whose
-  // entries are not zeroed before the scatter writes them; each (edge, face) pair must be there
-  // as often as the faces use it, in ascending order, and nothing else.
-  std::mt19937 rng(2025);
-  constexpr std::int32_t points = 40000;
-  std::uniform_int_distribution<std::int32_t> point(0, points - 1);
-  std::vector<Face> faces(200000);
-  for (Face& f : faces)
-    f = {point(rng), point(rng), point(rng)};
-  std::vector<std::array<std::uint32_t, 3>> expected;  // (lower, higher, face)
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t a = faces[f][k], b = faces[f][(k + 1) % 3];
-      expected.push_back({static_cast<std::uint32_t>(std::min(a, b)),
-                          static_cast<std::uint32_t>(std::max(a, b)),
-                          static_cast<std::uint32_t>(f)});
-    }
-  }
-  std::sort(expected.begin(), expected.end());
-  const EdgeUses uses =
-      clip::solid::edge_uses(faces.size(), [&](std::size_t f) -> const Face& { return faces[f]; });
-  std::vector<std::array<std::uint32_t, 3>> seen;
-  clip::solid::for_each_edge(
-      uses, [&](std::int32_t a, std::int32_t b, std::span<const std::uint64_t> group) {
-        for (const std::uint64_t e : group) {
-          seen.push_back(
-              {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), EdgeUses::face(e)});
-        }
-      });
-  EXPECT_EQ(seen, expected);
-}
-
-// The uses of `faces` narrowed by keep_faces to a random subset (each kept face turned over or
-// rotated at random, as the boundary's faces are) against a build over the kept faces.
-void expect_narrowed_as_built(const std::vector<Face>& faces, std::mt19937& rng, int keep_in_4) {
-  EdgeUses narrowed =
-      clip::solid::edge_uses(faces.size(), [&](std::size_t f) -> const Face& { return faces[f]; });
-  std::vector<std::uint32_t> number(faces.size(), EdgeUses::dropped);
-  std::vector<Face> kept;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (static_cast<int>(rng() % 4) >= keep_in_4) continue;
-    number[f] = static_cast<std::uint32_t>(kept.size());
-    Face v = faces[f];
-    if (rng() % 2 == 0) std::swap(v[1], v[2]);
-    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rng() % 3), v.end());
-    kept.push_back(v);
-  }
-  clip::solid::keep_faces(narrowed, number);
-  const EdgeUses built =
-      clip::solid::edge_uses(kept.size(), [&](std::size_t f) -> const Face& { return kept[f]; });
-  EXPECT_EQ(narrowed.start, built.start);
-  EXPECT_TRUE(std::equal(narrowed.entry.begin(), narrowed.entry.end(), built.entry.begin(),
-                         built.entry.end()));
-}
-
-TEST(EdgeUses, NarrowedToKeptFacesEqualsABuildOverThemOnRandomSubsets) {
-  std::mt19937 rng(26);
-  for (int c = 0; c < case_budget(400, 10); ++c) {
-    const int points = 2 + static_cast<int>(rng() % 12);
-    const std::size_t count = rng() % 60;
-    std::uniform_int_distribution<std::int32_t> point(0, points - 1);
-    std::vector<Face> faces(count);
-    for (Face& f : faces)
-      f = {point(rng), point(rng), point(rng)};
-    // None, some (the highest points' faces among the dropped: the buckets cut), all kept.
-    expect_narrowed_as_built(faces, rng, c % 5);
-  }
-}
-
-TEST(EdgeUses, NarrowedEmptyUsesStayEmpty) {
-  EdgeUses none;
-  clip::solid::keep_faces(none, {});
-  EXPECT_EQ(none.start, std::vector<std::size_t>{0});
-  EXPECT_TRUE(none.entry.empty());
 }
 
 TEST(EdgeUses, ClosedMeshHasTwoOppositeUsesOfEveryEdge) {
