@@ -1,5 +1,6 @@
 #include "contain/predicates/rounded_volume.h"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -89,21 +90,27 @@ struct Accumulator {
   }
 };
 
-// The sum over the triangles of a . (b x c), by the six products of the cofactor expansion.
+// Adds a . (b x c) of the triangle t by the six products of the cofactor expansion.
+template <bool Fma>
+inline void add_determinant(Accumulator& sum, std::span<const Vec3> vertices,
+                            const std::array<std::int32_t, 3>& t) {
+  const Vec3 a = vertices[static_cast<std::size_t>(t[0])];
+  const Vec3 b = vertices[static_cast<std::size_t>(t[1])];
+  const Vec3 c = vertices[static_cast<std::size_t>(t[2])];
+  sum.add_product<Fma>(a.x, b.y, c.z);
+  sum.add_product<Fma>(-a.x, b.z, c.y);
+  sum.add_product<Fma>(a.y, b.z, c.x);
+  sum.add_product<Fma>(-a.y, b.x, c.z);
+  sum.add_product<Fma>(a.z, b.x, c.y);
+  sum.add_product<Fma>(-a.z, b.y, c.x);
+}
+
+// The sum over the triangles of a . (b x c).
 template <bool Fma>
 inline Accumulator determinant_sum(std::span<const Vec3> vertices, Triangles triangles) {
   Accumulator sum;
-  for (const auto& t : triangles) {
-    const Vec3 a = vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = vertices[static_cast<std::size_t>(t[2])];
-    sum.add_product<Fma>(a.x, b.y, c.z);
-    sum.add_product<Fma>(-a.x, b.z, c.y);
-    sum.add_product<Fma>(a.y, b.z, c.x);
-    sum.add_product<Fma>(-a.y, b.x, c.z);
-    sum.add_product<Fma>(a.z, b.x, c.y);
-    sum.add_product<Fma>(-a.z, b.y, c.x);
-  }
+  for (const auto& t : triangles)
+    add_determinant<Fma>(sum, vertices, t);
   return sum;
 }
 
@@ -219,18 +226,7 @@ struct Lanes {
   Accumulator sum;
   for (const Lanes* l : {&first, &second, &third})
     merge_lanes(*l, 4 * pairs, sum);
-  if (triangles.size() % 2 != 0) {
-    const auto& t = triangles.back();
-    const Vec3 a = vertices[static_cast<std::size_t>(t[0])];
-    const Vec3 b = vertices[static_cast<std::size_t>(t[1])];
-    const Vec3 c = vertices[static_cast<std::size_t>(t[2])];
-    sum.add_product<true>(a.x, b.y, c.z);
-    sum.add_product<true>(-a.x, b.z, c.y);
-    sum.add_product<true>(a.y, b.z, c.x);
-    sum.add_product<true>(-a.y, b.x, c.z);
-    sum.add_product<true>(a.z, b.x, c.y);
-    sum.add_product<true>(-a.z, b.y, c.x);
-  }
+  if (triangles.size() % 2 != 0) add_determinant<true>(sum, vertices, triangles.back());
   return sum;
 }
 Accumulator fastest_determinant_sum(std::span<const Vec3> vertices, Triangles triangles) {
