@@ -77,7 +77,6 @@ float float_above(double v) {
 // triangle's part is computed once (a big triangle is tested against many cells).
 class PlaneSeparation {
  public:
-  PlaneSeparation() = default;
   template <class Tri>
   explicit PlaneSeparation(const Tri& t) : n_(cross(t.b - t.a, t.c - t.a)) {
     const double ta = dot(n_, t.a), tb = dot(n_, t.b), tc = dot(n_, t.c);

@@ -335,8 +335,8 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
   // in q: one strict sign at every corner is that sign everywhere between); zero when not one.
   const auto one_sign = [](Vec2 a, Vec2 b, std::initializer_list<Vec2> corners) {
     const Sign first = predicates::orient2d(a, b, *corners.begin());
-    for (const Vec2& q : corners) {
-      if (predicates::orient2d(a, b, q) != first) return Sign::zero;
+    for (auto q = corners.begin() + 1; q != corners.end(); ++q) {
+      if (predicates::orient2d(a, b, *q) != first) return Sign::zero;
     }
     return first;
   };
@@ -350,6 +350,10 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
   }
   for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
     const CellEdge& e = edges_[q];
+    const double lo = std::min(e.a.x, e.b.x), hi = std::max(e.a.x, e.b.x);
+    // Wholly left of the box, so of s too: ray_crossing gives 0 for p and s whatever the
+    // heights (its shortcut, or no end and no horizontal part at p).
+    if (box.min.x > hi) continue;
     // ray_crossing(a, b, p) and (a, b, s = (x1, p.y)): each end strictly below or above the
     // box's heights, so that a.y <= p.y and b.y <= p.y are the same for every p and neither end
     // is at p's height (no horizontal edge or vertex through p).
@@ -357,14 +361,11 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
     if (!(a_below || e.a.y > y1) || !(b_below || e.b.y > y1)) return std::nullopt;
     if (a_below == b_below) continue;  // 0 for p and s
     const int dir = a_below ? 1 : -1;
-    const double lo = std::min(e.a.x, e.b.x), hi = std::max(e.a.x, e.b.x);
     // The crossing's contribution by the walk's own shortcuts where they hold for every p (and
     // s), else by the sign (the shortcuts agree with it for a point off the edge).
     const auto by_sign = [&](Sign s) { return (s == Sign::positive) == (dir > 0) ? dir : 0; };
     int at_p = 0;
-    if (box.min.x > hi) {
-      at_p = 0;
-    } else if (box.max.x < lo) {
+    if (box.max.x < lo) {
       at_p = dir;
     } else {
       const Sign s =

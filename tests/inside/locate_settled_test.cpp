@@ -104,7 +104,8 @@ TEST(LocateSettled, PolygonBoxesInEdgeCellsAnswerOnlyWhereEveryPointLocatesSo) {
     for (const Vec2& p : points) {
       for (const double w : {0.0, 1e-12, 1e-8, 1e-4, 0.05}) {
         for (const Box2& box : {Box2{p, {p.x + w, p.y + w}}, Box2{{p.x - w, p.y - w}, p},
-                                Box2{{p.x - w, p.y}, {p.x, p.y + 2 * w}}}) {
+                                Box2{{p.x - w, p.y}, {p.x, p.y + 2 * w}},
+                                Box2{{p.x - w, p.y - w}, {p.x + w, p.y + w}}}) {
           if (expect_settled_agrees(index, box) == 0) continue;
           for (int k = 0; k < 4; ++k) {
             const Vec2 q{std::min(box.max.x, box.min.x + unit(rng) * (box.max.x - box.min.x)),
@@ -159,6 +160,20 @@ TEST(LocateSettled, PolygonWithoutGridSettlesBoxesOffTheEdgesByItsOneCell) {
   for (const Vec2& v : rings[0]) {
     EXPECT_FALSE(index.locate_settled({{v.x - 1e-9, v.y - 1e-9}, {v.x + 1e-9, v.y + 1e-9}}));
   }
+}
+
+// An edge wholly left of a box adds nothing to the walk of any of its points, even with an end at
+// the box's heights: the box is settled (it was not while such ends refused the box first).
+TEST(LocateSettled, PolygonEdgeLeftOfTheBoxWithAnEndAtItsHeightsDoesNotUnsettleIt) {
+  // A pentagon with a vertex in the middle of its left side (at height 2) and its rightmost
+  // vertex (the one cell's right side) above the boxes' heights.
+  const std::vector<Ring> rings{{{0, 0}, {4, 0}, {6, 3}, {4, 4}, {0, 4}, {0, 2}}};
+  const PolygonIndex index(std::span<const Ring>(rings), {.queries = 1});
+  ASSERT_EQ(index.stats().cells, 1u);
+  EXPECT_EQ(index.locate_settled({{3, 1.9}, {3.5, 2.1}}), Location::inside);
+  EXPECT_EQ(expect_settled_agrees(index, {{3, 1.9}, {3.5, 2.1}}), 1);
+  // A box across the left side holds points in and out: no answer.
+  EXPECT_FALSE(index.locate_settled({{-0.5, 1.9}, {0.5, 2.1}}));
 }
 
 int expect_settled_agrees(const MeshIndex& index, const Box3& box) {

@@ -108,9 +108,9 @@ TEST(MeshValidationQuick, EmptyAndSingleTriangleMeshes) {
 }
 
 // Random damage (a triangle removed, repeated, flipped, turned or rewired to another vertex) to
-// meshes whose vertices have few corners (searched linearly) and many (poles of valence 20 and
-// 40: sorted and bisected): the quick proof holds exactly when the full analysis finds a closed,
-// oriented 2-manifold without duplicates, and the reports agree field by field.
+// meshes whose vertices have few corners and many (poles of valence 20 and 40): the quick proof
+// holds exactly when the full analysis finds a closed, oriented 2-manifold without duplicates, and
+// the reports agree field by field.
 TEST(MeshValidationQuick, RandomlyDamagedMeshesReportAsTheFullAnalysis) {
   std::mt19937 rng(27);
   const std::vector<std::pair<Mesh, std::string>> bases{

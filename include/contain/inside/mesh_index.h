@@ -45,7 +45,7 @@ struct MeshIndexOptions {
   double cells_per_triangle = 16.0;
   /// ... at least this many ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: 5 bytes a cell, 4 per triangle-cell pair).
+  /// ... and at most this many (memory: about 5.25 bytes a cell, 4 per triangle-cell pair).
   std::size_t max_cells = std::size_t{1} << 24;
   /// Accuracy of the winding number regime (see `FastWindingNumberOptions`).
   double winding_accuracy = 3.0;
@@ -236,8 +236,8 @@ class MeshIndex {
   // Grid (exact regime).
   GridAxis x_, y_, z_;
   int nx_ = 0, ny_ = 0, nz_ = 0;  // their cell counts
-  // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell (one byte: the array that
-  // most queries read stays small in cache).
+  // Per cell: 0 outside, 1 inside (empty cells), 2 surface cell, a byte each: what the build
+  // settles and the index file holds; the queries read packed_state_.
   HugePageVector<std::uint8_t> state_;
   // The same states, four cells a byte (cell c: bits 2 (c % 4) and up of byte c / 4), read by the
   // queries' first look at a cell: a quarter of the bytes (400 kB for the 1.6 M cells of 100k

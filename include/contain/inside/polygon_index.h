@@ -27,7 +27,7 @@ struct PolygonIndexOptions {
   double cells_per_edge = 4.0;
   /// ... at least this many cells (small polygons get a fine grid for free) ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: 4 bytes per cell plus 32 per edge-cell pair). The
+  /// ... and at most this many (memory: about 4.25 bytes per cell plus 32 per edge-cell pair). The
   /// grid is then coarsened (halved per axis) until the estimated edge-cell pairs are at most
   /// max(32 per edge, min_cells), so memory stays linear in the edges even when long edges
   /// cross the whole region (a star with long spikes); queries there read more edges per cell.
@@ -109,8 +109,8 @@ class PolygonIndex {
     return settle_in_edge_cell(box, i, c);
   }
 
-  /// Warms the cache for a query at `point` (its guessed cell's state), for callers' pipelines;
-  /// no effect on any answer.
+  /// Warms the cache for `locate_settled` at `point` (its guessed cell's packed state), for
+  /// callers' pipelines; no effect on any answer.
   void prefetch(Vec2 point) const {
     const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
     if (cell >= 0) __builtin_prefetch(&packed_states_[static_cast<std::size_t>(cell) / 4]);
@@ -163,10 +163,7 @@ class PolygonIndex {
   void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
   // The cell the point's doubles guess (the exact cell may be a neighbour); -1 outside the box.
   [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const {
-    if (!(point.x >= bounds_.min.x && point.x <= bounds_.max.x && point.y >= bounds_.min.y &&
-          point.y <= bounds_.max.y)) {
-      return -1;
-    }
+    if (!bounds_.contains(point)) return -1;
     return static_cast<std::ptrdiff_t>(y_.guess(point.y)) * x_.cells() + x_.guess(point.x);
   }
   // packed_states_ from cells_ (after construction and after loading).
