@@ -194,9 +194,6 @@ struct FaceLabel {
 struct FaceLabels {
   std::vector<FaceLabel> of_patch;
   std::vector<std::uint32_t> patch;  ///< of each face, an index into of_patch
-  [[nodiscard]] const FaceLabel& operator[](std::size_t face) const {
-    return of_patch[patch[face]];
-  }
 };
 
 /// The axis whose normal component is largest in magnitude (and non-zero): the one dropped to

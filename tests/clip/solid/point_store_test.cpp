@@ -24,8 +24,7 @@ using clip::solid::ExactPoint;
 using clip::solid::PointStore;
 using clip::solid::Soup;
 
-// A closed mesh: a tetrahedron with its corners moved by `shift`, and its vertices repeated
-// with -0 (welded to +0) where a coordinate is 0.
+// A closed mesh: a tetrahedron with its corners moved by `shift`.
 Mesh store_test_tetrahedron(Vec3 shift) {
   Mesh m;
   m.vertices = {shift + Vec3{0, 0, 0}, shift + Vec3{1, 0, 0}, shift + Vec3{0, 1, 0},
@@ -63,7 +62,7 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
     for (const Vec3 v : soup->vertices)
       (void)one_by_one.add(v);
     PointStore taken;
-    // As the engine: room reserved first (round 0: none), then the index moved in.
+    // As the engine: room reserved first (odd rounds: none), then the index moved in.
     if (round % 2 == 0) taken.reserve(clip::solid::store_room(soup->vertices.size()));
     taken.add_vertices(*soup, std::move(soup->index));
     ASSERT_EQ(taken.size(), one_by_one.size());
