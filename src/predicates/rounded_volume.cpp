@@ -250,12 +250,14 @@ BigFloat exact_determinant(Vec3 a, Vec3 b, Vec3 c) {
 
 namespace detail {
 
-std::optional<double> filtered_signed_volume(std::span<const Vec3> vertices, Triangles triangles) {
+std::optional<double> filtered_signed_volume(std::span<const Vec3> vertices, Triangles triangles,
+                                             VolumeSum how) {
   bool in_range = true;
   for (const Vec3& v : vertices)
     in_range = in_range && in_split_range(v.x) && in_split_range(v.y) && in_split_range(v.z);
   if (!in_range) return std::nullopt;
-  const Accumulator sum = fastest_determinant_sum(vertices, triangles);
+  const Accumulator sum = how == VolumeSum::scalar ? determinant_sum<false>(vertices, triangles)
+                                                   : fastest_determinant_sum(vertices, triangles);
   // lo2, the recursive sum of m exact errors, is within gamma_m of their magnitudes' sum of
   // their exact sum (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2);
   // 2 (m + 2) u covers that and the rounding of error_mass itself while m u < 1/4. Then

@@ -100,7 +100,8 @@ TEST(RoundedSignedVolume, RandomSoupsAtEveryScaleGiveTheNearestDouble) {
 }
 
 // The fast stage sums two triangles at a time in vector lanes and an odd last one alone: every
-// count from 1 to 9, in either order of the triangles, gives the nearest double (the same one).
+// count from 1 to 9, in either order of the triangles, gives the nearest double (the same one),
+// and the scalar sum of machines without AVX2, where it certifies, gives it too.
 TEST(RoundedSignedVolume, EveryTriangleCountAndOrderGivesTheNearestDouble) {
   std::mt19937_64 rng(2027);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -113,6 +114,14 @@ TEST(RoundedSignedVolume, EveryTriangleCountAndOrderGivesTheNearestDouble) {
         s.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
       const double forward = volume(s);
       EXPECT_TRUE(is_rounded(forward, exact_volume(s))) << n << " triangles, round " << round;
+      for (const auto how :
+           {predicates::detail::VolumeSum::fastest, predicates::detail::VolumeSum::scalar}) {
+        const std::optional<double> fast =
+            predicates::detail::filtered_signed_volume(s.vertices, s.triangles, how);
+        if (fast) {
+          EXPECT_EQ(*fast, forward) << n << " triangles, round " << round;
+        }
+      }
       std::reverse(s.triangles.begin(), s.triangles.end());
       EXPECT_EQ(volume(s), forward) << n << " triangles, round " << round;
     }
@@ -145,6 +154,7 @@ TEST(RoundedSignedVolume, LargeMeshesFarFromTheOriginAreCertifiedByTheFastStage)
   constexpr int kMeshes = 10;
   for (const double offset : {0.0, 1e3, -1e5, 3e5}) {
     int certified = 0;
+    int scalar_certified = 0;  // by the sum of machines without AVX2
     for (int mesh = 0; mesh < kMeshes; ++mesh) {
       Soup s;
       for (int k = 0; k < tetrahedra; ++k) {
@@ -165,8 +175,14 @@ TEST(RoundedSignedVolume, LargeMeshesFarFromTheOriginAreCertifiedByTheFastStage)
       }
       const std::optional<double> fast =
           predicates::detail::filtered_signed_volume(s.vertices, s.triangles);
+      const std::optional<double> scalar = predicates::detail::filtered_signed_volume(
+          s.vertices, s.triangles, predicates::detail::VolumeSum::scalar);
       const double v = volume(s);
       EXPECT_TRUE(is_rounded(v, exact_volume(s))) << offset;
+      if (scalar) {
+        ++scalar_certified;
+        EXPECT_EQ(*scalar, v) << offset;
+      }
       if (!fast) continue;
       ++certified;
       EXPECT_EQ(*fast, v) << offset;
@@ -174,6 +190,7 @@ TEST(RoundedSignedVolume, LargeMeshesFarFromTheOriginAreCertifiedByTheFastStage)
     // (The rounded running sum of before sent a 100k-triangle torus 10^3 from the origin to the
     // exact stage.)
     EXPECT_GE(certified, kMeshes - 2) << offset;
+    EXPECT_GE(scalar_certified, kMeshes - 2) << offset;
   }
 }
 

@@ -31,9 +31,12 @@ namespace contain::predicates {
 namespace detail {
 /// The fast stage of `rounded_signed_volume` alone: its result where it certifies the nearest
 /// double, nothing where the exact stage must decide (for tests: meshes far from the origin are
-/// decided here).
+/// decided here). `scalar` takes the sum that machines without AVX2 and FMA run, whatever this
+/// one has (for tests of both).
+enum class VolumeSum { fastest, scalar };
 [[nodiscard]] std::optional<double> filtered_signed_volume(
-    std::span<const Vec3> vertices, std::span<const std::array<std::int32_t, 3>> triangles);
+    std::span<const Vec3> vertices, std::span<const std::array<std::int32_t, 3>> triangles,
+    VolumeSum how = VolumeSum::fastest);
 }  // namespace detail
 
 }  // namespace contain::predicates
