@@ -79,8 +79,10 @@ class Soup {
   /// normal only where the filter cannot tell (it is made for so many triangles otherwise).
   [[nodiscard]] Projection projection(std::size_t t) const;
   std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
-  std::vector<Box3> boxes;       ///< of each triangle (empty for a degenerate one)
-  bvh::Bvh tree;                 ///< over `boxes`: the pairs and the rays of the labels
+  /// Of each triangle (empty for a degenerate one), for the pair stage: mesh_boolean frees
+  /// them once the pairs are found (later stages use `tree`, whose nodes hold their own boxes).
+  std::vector<Box3> boxes;
+  bvh::Bvh tree;  ///< over `boxes`: the pairs and the rays of the labels
   std::size_t inputs = 0;
   /// `vertices` numbered by value, as welded (empty for soups not made by make_soup).
   PointTable index;
