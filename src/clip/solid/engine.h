@@ -31,6 +31,19 @@
 
 namespace contain::clip::solid {
 
+/// The points a PointTable numbers, in one array or two: point i is head[i] for i <
+/// head.size(), else tail[i - head.size()]. Two, so that a point store keys its table by the
+/// soup's vertices and its own later points without a copy of the vertices (PointStore).
+struct PointKeys {
+  std::span<const Vec3> head, tail;
+  explicit(false) PointKeys(std::span<const Vec3> all) : head(all) {}
+  explicit(false) PointKeys(const std::vector<Vec3>& all) : head(all) {}
+  PointKeys(std::span<const Vec3> first, std::span<const Vec3> then) : head(first), tail(then) {}
+  [[nodiscard]] Vec3 operator[](std::size_t i) const {
+    return i < head.size() ? head[i] : tail[i - head.size()];
+  }
+};
+
 /// Numbers of points of doubles by value (+0 and -0 one key): open addressing, linear probing,
 /// load at most 1/2, where a node-based map allocated per point and hashed each coordinate
 /// byte by byte (the welding and the point store's index were a tenth of a boolean's time).
@@ -38,12 +51,12 @@ namespace contain::clip::solid {
 /// points are the caller's: `keys[i]` is the point numbered i.
 class PointTable {
  public:
-  void reserve(std::size_t points, std::span<const Vec3> keys);
+  void reserve(std::size_t points, PointKeys keys);
   /// The number stored under v and false; or `id`, now stored under v, and true (the caller
   /// then makes keys[id] == v).
-  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, std::span<const Vec3> keys);
+  std::pair<std::int32_t, bool> try_emplace(Vec3 v, std::int32_t id, PointKeys keys);
   /// The number stored under v, or -1.
-  [[nodiscard]] std::int32_t find(Vec3 v, std::span<const Vec3> keys) const;
+  [[nodiscard]] std::int32_t find(Vec3 v, PointKeys keys) const;
   [[nodiscard]] std::size_t size() const { return used_; }
 
  private:
@@ -53,7 +66,7 @@ class PointTable {
   };
   [[nodiscard]] static std::uint64_t hash(Vec3 v);
   // The slot holding v, or the empty slot where it goes.
-  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const;
+  [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, PointKeys keys) const;
   std::vector<Slot> slots_;
   std::size_t used_ = 0;
 };
@@ -120,12 +133,16 @@ class PointStore {
   void add_vertices(const Soup& soup);
   /// The same with the soup's index given up to the store (moved, not copied): made by
   /// make_soup with room for `store_room` of its vertices, it is the store's table as it is,
-  /// with no copy and no rebuild (a fresh table of megabytes, two copies of it before).
+  /// with no copy and no rebuild (a fresh table of megabytes, two copies of it before). Where
+  /// the index is taken (both forms, a soup of make_soup into an empty store), the soup's
+  /// `vertices` stay the doubles of points 0 ... n - 1, read where they are, not copied (3 MB
+  /// of fresh pages at two 131k-triangle spheres): the soup must outlive the store and keep
+  /// its vertices as they are.
   void add_vertices(const Soup& soup, PointTable&& index);
   [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
     return points_[static_cast<std::size_t>(i)];
   }
-  [[nodiscard]] Vec3 rounded(std::int32_t i) const { return rounded_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] Vec3 rounded(std::int32_t i) const { return keys()[static_cast<std::size_t>(i)]; }
   /// Whether point i is written exactly at `rounded(i)`: a point of doubles, or an implicit point
   /// whose enclosure is one double in every coordinate (others count as rounded even when exact).
   /// A byte per point kept as points are added: the written mesh asks it of every point it
@@ -137,13 +154,16 @@ class PointStore {
   /// The first stored point with the same nearest doubles as point i (i itself when none).
   [[nodiscard]] std::int32_t representative(std::int32_t i) const;
   /// The first stored point whose nearest doubles are r, or -1.
-  [[nodiscard]] std::int32_t first_rounded_to(Vec3 r) const { return first_.find(r, rounded_); }
+  [[nodiscard]] std::int32_t first_rounded_to(Vec3 r) const { return first_.find(r, keys()); }
 
  private:
   std::int32_t add(const ExactPoint& p, Vec3 r);
+  // The nearest doubles of every point: the soup's vertices, then the points added after.
+  [[nodiscard]] PointKeys keys() const { return {vertices_, rounded_}; }
 
   std::vector<ExactPoint> points_;
-  std::vector<Vec3> rounded_;
+  std::span<const Vec3> vertices_;  // a soup's vertices (add_vertices), points 0 ... n - 1
+  std::vector<Vec3> rounded_;       // the nearest doubles of the points after them
   PointTable first_;                // the first point of each nearest doubles
   std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
   // The first point with the same nearest doubles as each (itself for the first): known when

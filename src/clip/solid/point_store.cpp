@@ -27,7 +27,7 @@ std::uint64_t PointTable::hash(Vec3 v) {
   return h;
 }
 
-void PointTable::reserve(std::size_t points, std::span<const Vec3> keys) {
+void PointTable::reserve(std::size_t points, PointKeys keys) {
   std::size_t size = 16;
   while (size < 2 * points)
     size *= 2;
@@ -44,7 +44,7 @@ void PointTable::reserve(std::size_t points, std::span<const Vec3> keys) {
   }
 }
 
-std::size_t PointTable::slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> keys) const {
+std::size_t PointTable::slot_of(Vec3 v, std::uint64_t h, PointKeys keys) const {
   const std::size_t mask = slots_.size() - 1;
   const auto tag = static_cast<std::uint32_t>(h >> 32U);
   for (std::size_t i = static_cast<std::size_t>(h) & mask;; i = (i + 1) & mask) {
@@ -57,8 +57,7 @@ std::size_t PointTable::slot_of(Vec3 v, std::uint64_t h, std::span<const Vec3> k
   }
 }
 
-std::pair<std::int32_t, bool> PointTable::try_emplace(Vec3 v, std::int32_t id,
-                                                      std::span<const Vec3> keys) {
+std::pair<std::int32_t, bool> PointTable::try_emplace(Vec3 v, std::int32_t id, PointKeys keys) {
   if (2 * (used_ + 1) > slots_.size()) reserve(2 * (used_ + 1), keys);
   const std::uint64_t h = hash(v);
   Slot& s = slots_[slot_of(v, h, keys)];
@@ -68,7 +67,7 @@ std::pair<std::int32_t, bool> PointTable::try_emplace(Vec3 v, std::int32_t id,
   return {id, true};
 }
 
-std::int32_t PointTable::find(Vec3 v, std::span<const Vec3> keys) const {
+std::int32_t PointTable::find(Vec3 v, PointKeys keys) const {
   return slots_.empty() ? -1 : slots_[slot_of(v, hash(v), keys)].id;
 }
 
@@ -80,7 +79,7 @@ void PointStore::reserve(std::size_t points) {
   exact_double_.reserve(points);
   // An empty store's table is made by its first point (or taken over from a soup by
   // add_vertices): a table of megabytes zeroed here would be dropped there.
-  if (!points_.empty()) first_.reserve(points, rounded_);
+  if (!points_.empty()) first_.reserve(points, keys());
 }
 
 std::int32_t PointStore::add(const ExactPoint& p) {
@@ -117,7 +116,7 @@ void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
   points_.reserve(room);
   for (const Vec3 v : soup.vertices)
     points_.push_back(exact_point(v));
-  rounded_.assign(soup.vertices.begin(), soup.vertices.end());
+  vertices_ = soup.vertices;  // read there, not copied (add_vertices in engine.h)
   next_.assign(soup.vertices.size(), -1);
   first_of_.reserve(room);
   first_of_.resize(soup.vertices.size());
@@ -129,8 +128,8 @@ void PointStore::add_vertices(const Soup& soup, PointTable&& index) {
 
 std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   const auto id = static_cast<std::int32_t>(points_.size());
-  if (id == 0) first_.reserve(std::max<std::size_t>(points_.capacity(), 1), rounded_);
-  const auto [first, fresh] = first_.try_emplace(r, id, rounded_);
+  if (id == 0) first_.reserve(std::max<std::size_t>(points_.capacity(), 1), keys());
+  const auto [first, fresh] = first_.try_emplace(r, id, keys());
   if (!fresh) {
     std::int32_t i = first;
     for (;; i = next_[static_cast<std::size_t>(i)]) {
