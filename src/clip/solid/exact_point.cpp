@@ -108,7 +108,7 @@ const Homogeneous& full(const ExactPoint& p, Homogeneous& scratch) {
     }
     return *p.crossing->exact;
   }
-  if (!p.plain) return *p.exact;
+  if (!p.plain()) return *p.exact;
   scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
   scratch.w = BigFloat(1.0);
   return scratch;
@@ -258,7 +258,7 @@ void cross_and_magnitude(Vec3 p, Vec3 q, Vec3& value, Vec3& magnitude) {
 // on their line, so every projection of the three is collinear. The commonest exact zero of the
 // refinement (a crossing on the triangle edge it was made from), decided with no arithmetic.
 bool on_defining_line(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
-  if (!c.crossing || !a.plain || !b.plain) return false;
+  if (!c.crossing || !a.plain() || !b.plain()) return false;
   const Crossing& k = *c.crossing;
   return (a.v == k.p && b.v == k.q) || (a.v == k.q && b.v == k.p);
 }
@@ -320,7 +320,6 @@ const BigFloat& component(const BigVec3& v, int i) {
 
 ExactPoint exact_point(Vec3 v) {
   ExactPoint p;
-  p.plain = true;
   p.v = v;
   p.lo = {v.x, v.y, v.z};
   p.hi = p.lo;
@@ -519,7 +518,7 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 }
 
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
-  if (a.plain && b.plain) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
+  if (a.plain() && b.plain()) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
   if (same_crossing(a, b)) return true;
   for (std::size_t i = 0; i < 3; ++i) {
     if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
@@ -528,7 +527,7 @@ bool same_point(const ExactPoint& a, const ExactPoint& b) {
 }
 
 Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
-  if (a.plain && b.plain) {
+  if (a.plain() && b.plain()) {
     const double x = coordinate(a.v, i), y = coordinate(b.v, i);
     return x > y ? Sign::positive : (x < y ? Sign::negative : Sign::zero);
   }
@@ -539,7 +538,7 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
 }
 
 Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis) {
-  if (a.plain && b.plain && c.plain) {
+  if (a.plain() && b.plain() && c.plain()) {
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     return predicates::orient2d({coordinate(a.v, u), coordinate(a.v, v)},
                                 {coordinate(b.v, u), coordinate(b.v, v)},
@@ -635,7 +634,7 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 }
 
 Vec3 nearest_double(const ExactPoint& p) {
-  if (p.plain || p.crossing) return p.v;
+  if (p.plain() || p.crossing) return p.v;
   const Homogeneous& h = *p.exact;
   return {nearest_quotient(h.x[0], h.w), nearest_quotient(h.x[1], h.w),
           nearest_quotient(h.x[2], h.w)};
