@@ -2,7 +2,8 @@
 // by taking over the soup's index (the engine's path) against a store given the same vertices
 // one by one: the same numbers, the same answers for the vertices and for points added after
 // (crossings and points of doubles, new or equal to a vertex), through table growth; and each
-// point's written_exactly byte as its definition on the point.
+// point's written_exactly byte as its definition on the point. The point table keyed by two
+// arrays (the store's soup vertices and its own points) against one array of them all.
 
 #include <gtest/gtest.h>
 
@@ -98,6 +99,8 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
             clip::solid::centroid(one_by_one.point(p), one_by_one.point(q), one_by_one.point(q)));
       }
       ASSERT_EQ(a, b);
+      // Past the soup's vertices, the store's own array of doubles (PointKeys' tail).
+      ASSERT_EQ(taken.rounded(a), one_by_one.rounded(b));
       ASSERT_EQ(taken.representative(a), one_by_one.representative(b));
       const ExactPoint& p = taken.point(a);
       ASSERT_EQ(taken.written_exactly(a),
@@ -111,6 +114,52 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
   // Not vacuous: midpoints of lattice points are doubles (exact), others are rounded.
   EXPECT_GT(written_exactly, 60 * 1000);
   EXPECT_LT(written_exactly, checked);
+}
+
+TEST(SolidPointTable, KeysInTwoArraysNumberPointsAsTheirConcatenationDoes) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> cell(-6, 6);  // few values: many repeats, and -0 and +0
+  const auto point = [&] {
+    double x = 0.5 * cell(rng);
+    if (x == 0.0 && cell(rng) < 0) x = -0.0;  // one key with +0
+    return Vec3{x, static_cast<double>(cell(rng)), 0.25 * cell(rng)};
+  };
+  std::vector<Vec3> head, tail, all;
+  clip::solid::PointTable split, whole;
+  // The head numbered first (a soup's welded vertices), then points added to the tail.
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 v = point();
+    const auto next = static_cast<std::int32_t>(all.size());
+    const auto [id, fresh] = whole.try_emplace(v, next, all);
+    const auto [split_id, split_fresh] = split.try_emplace(v, next, head);
+    ASSERT_EQ(id, split_id);
+    ASSERT_EQ(fresh, split_fresh);
+    if (fresh) {
+      all.push_back(v);
+      head.push_back(v);
+    }
+  }
+  int found = 0;
+  for (int i = 0; i < 4000; ++i) {  // through several growths of the table
+    const Vec3 v = point() + Vec3{static_cast<double>(i % 97), 0, 0};
+    const auto next = static_cast<std::int32_t>(all.size());
+    const auto [id, fresh] = whole.try_emplace(v, next, all);
+    const auto [split_id, split_fresh] =
+        split.try_emplace(v, next, clip::solid::PointKeys{head, tail});
+    ASSERT_EQ(id, split_id);
+    ASSERT_EQ(fresh, split_fresh);
+    if (fresh) {
+      all.push_back(v);
+      tail.push_back(v);
+    } else {
+      ++found;
+    }
+    ASSERT_EQ(split.find(v, clip::solid::PointKeys{head, tail}), whole.find(v, all));
+  }
+  EXPECT_EQ(split.size(), all.size());
+  // Not vacuous: points found in both arrays, and new ones.
+  EXPECT_GT(found, 100);
+  EXPECT_GT(tail.size(), 100U);
 }
 
 TEST(SolidPointStore, AReservedEmptyStoreFindsWhatItAdds) {
