@@ -61,13 +61,14 @@ Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
 }
 
 ExactPoint with_bounds(Homogeneous h) {
-  ExactPoint p;
+  Enclosure e;
   for (std::size_t i = 0; i < 3; ++i) {
     const Interval c = quotient_interval(h.x[i], h.w);
-    p.lo[i] = c.lo;
-    p.hi[i] = c.hi;
+    e.lo[i] = c.lo;
+    e.hi[i] = c.hi;
   }
-  p.exact = std::make_shared<const Homogeneous>(std::move(h));
+  ExactPoint p;
+  p.exact = std::make_shared<const Constructed>(Constructed{std::move(h), e});
   return p;
 }
 
@@ -108,7 +109,7 @@ const Homogeneous& full(const ExactPoint& p, Homogeneous& scratch) {
     }
     return *p.crossing->exact;
   }
-  if (!p.plain()) return *p.exact;
+  if (!p.plain()) return p.exact->numbers;
   scratch.x = {BigFloat(p.v.x), BigFloat(p.v.y), BigFloat(p.v.z)};
   scratch.w = BigFloat(1.0);
   return scratch;
@@ -138,12 +139,13 @@ bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoin
                        Sign& s) {
   const auto u = static_cast<std::size_t>((axis + 1) % 3),
              v = static_cast<std::size_t>((axis + 2) % 3);
-  const double x1 = b.lo[u] - a.lo[u], y2 = c.lo[v] - a.lo[v];
-  const double y1 = b.lo[v] - a.lo[v], x2 = c.lo[u] - a.lo[u];
-  const double rx1 = (b.hi[u] - b.lo[u]) + (a.hi[u] - a.lo[u]);
-  const double ry2 = (c.hi[v] - c.lo[v]) + (a.hi[v] - a.lo[v]);
-  const double ry1 = (b.hi[v] - b.lo[v]) + (a.hi[v] - a.lo[v]);
-  const double rx2 = (c.hi[u] - c.lo[u]) + (a.hi[u] - a.lo[u]);
+  const Enclosure ea = a.enclosure(), eb = b.enclosure(), ec = c.enclosure();
+  const double x1 = eb.lo[u] - ea.lo[u], y2 = ec.lo[v] - ea.lo[v];
+  const double y1 = eb.lo[v] - ea.lo[v], x2 = ec.lo[u] - ea.lo[u];
+  const double rx1 = (eb.hi[u] - eb.lo[u]) + (ea.hi[u] - ea.lo[u]);
+  const double ry2 = (ec.hi[v] - ec.lo[v]) + (ea.hi[v] - ea.lo[v]);
+  const double ry1 = (eb.hi[v] - eb.lo[v]) + (ea.hi[v] - ea.lo[v]);
+  const double rx2 = (ec.hi[u] - ec.lo[u]) + (ea.hi[u] - ea.lo[u]);
   const double left = x1 * y2, right = y1 * x2;
   const double det = left - right;
   const double moved = std::abs(x1) * ry2 + std::abs(y2) * rx1 + rx1 * ry2 + std::abs(y1) * rx2 +
@@ -321,8 +323,6 @@ const BigFloat& component(const BigVec3& v, int i) {
 ExactPoint exact_point(Vec3 v) {
   ExactPoint p;
   p.v = v;
-  p.lo = {v.x, v.y, v.z};
-  p.hi = p.lo;
   return p;
 }
 
@@ -336,11 +336,12 @@ ExactPoint line_plane(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   ExactPoint out;
   out.v = predicates::rounded_plane_crossing(p, q, a, b, c);
   // The exact coordinate is within half a step of its nearest double on either side.
+  Enclosure e;
   for (std::size_t i = 0; i < 3; ++i) {
-    out.lo[i] = down(coordinate(out.v, static_cast<int>(i)));
-    out.hi[i] = up(coordinate(out.v, static_cast<int>(i)));
+    e.lo[i] = down(coordinate(out.v, static_cast<int>(i)));
+    e.hi[i] = up(coordinate(out.v, static_cast<int>(i)));
   }
-  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c, e});
   return out;
 }
 
@@ -439,15 +440,15 @@ ExactPoint line_plane_intervals(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const PlaneOfSegment<Wide> f = plane_of_segment(ip, iq, at(a), at(b), at(c));
   const Wide dp = f.dp, dq = f.dq;
   const Wide t = dp / (dp - dq);
-  ExactPoint out;
+  Enclosure e;
   for (std::size_t i = 0; i < 3; ++i) {
     // The point lies on the segment: its ends bound every coordinate.
     const double pi = coordinate(p, static_cast<int>(i)), qi = coordinate(q, static_cast<int>(i));
-    to_doubles(ip[i] + (iq[i] - ip[i]) * t, std::min(pi, qi), std::max(pi, qi), out.lo[i],
-               out.hi[i]);
+    to_doubles(ip[i] + (iq[i] - ip[i]) * t, std::min(pi, qi), std::max(pi, qi), e.lo[i], e.hi[i]);
   }
-  out.v = {out.lo[0], out.lo[1], out.lo[2]};
-  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  ExactPoint out;
+  out.v = {e.lo[0], e.lo[1], e.lo[2]};
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c, e});
   return out;
 }
 
@@ -484,7 +485,7 @@ ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   if (const L high = sp + sq - ep - eq; high > 0) {
     t_hi = std::min<L>(1, (sp + ep) / high * (1 + 0x1p-60L));
   }
-  ExactPoint out;
+  Enclosure e;
   for (std::size_t i = 0; i < 3; ++i) {
     const L d = lq[i] - lp[i];
     const L slack = (std::fabs(lp[i]) + std::fabs(d)) * 0x1p-60L;
@@ -492,10 +493,11 @@ ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
     // The point lies on the segment: its ends bound every coordinate.
     const double pi = coordinate(p, static_cast<int>(i)), qi = coordinate(q, static_cast<int>(i));
     to_doubles(Wide{std::min(x1, x2) - slack, std::max(x1, x2) + slack}, std::min(pi, qi),
-               std::max(pi, qi), out.lo[i], out.hi[i]);
+               std::max(pi, qi), e.lo[i], e.hi[i]);
   }
-  out.v = {out.lo[0], out.lo[1], out.lo[2]};
-  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c});
+  ExactPoint out;
+  out.v = {e.lo[0], e.lo[1], e.lo[2]};
+  out.crossing = std::make_shared<const Crossing>(Crossing{p, q, a, b, c, e});
   return out;
 }
 
@@ -520,8 +522,9 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
   if (a.plain() && b.plain()) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
   if (same_crossing(a, b)) return true;
+  const Enclosure ea = a.enclosure(), eb = b.enclosure();
   for (std::size_t i = 0; i < 3; ++i) {
-    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
+    if (ea.hi[i] < eb.lo[i] || eb.hi[i] < ea.lo[i]) return false;
   }
   return same_exact(a, b);
 }
@@ -532,8 +535,9 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
     return x > y ? Sign::positive : (x < y ? Sign::negative : Sign::zero);
   }
   const std::size_t k = static_cast<std::size_t>(i);
-  if (a.hi[k] < b.lo[k]) return Sign::negative;
-  if (a.lo[k] > b.hi[k]) return Sign::positive;
+  const Enclosure ea = a.enclosure(), eb = b.enclosure();
+  if (ea.hi[k] < eb.lo[k]) return Sign::negative;
+  if (ea.lo[k] > eb.hi[k]) return Sign::positive;
   return compare_exact(a, b, k);
 }
 
@@ -564,11 +568,12 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q, const ExactPoint& a,
                                       const ExactPoint& b) {
   std::array<std::array<double, 3>, 3> m{}, r{};
-  const std::array<const ExactPoint*, 3> rows = {&q, &a, &b};
+  const Enclosure ep = p.enclosure();
+  const std::array<Enclosure, 3> rows = {q.enclosure(), a.enclosure(), b.enclosure()};
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t k = 0; k < 3; ++k) {
-      m[i][k] = rows[i]->lo[k] - p.lo[k];
-      r[i][k] = (rows[i]->hi[k] - rows[i]->lo[k]) + (p.hi[k] - p.lo[k]);
+      m[i][k] = rows[i].lo[k] - ep.lo[k];
+      r[i][k] = (rows[i].hi[k] - rows[i].lo[k]) + (ep.hi[k] - ep.lo[k]);
     }
   }
   const auto det = [](const std::array<std::array<double, 3>, 3>& x) {
@@ -635,7 +640,7 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 
 Vec3 nearest_double(const ExactPoint& p) {
   if (p.plain() || p.crossing) return p.v;
-  const Homogeneous& h = *p.exact;
+  const Homogeneous& h = p.exact->numbers;
   return {nearest_quotient(h.x[0], h.w), nearest_quotient(h.x[1], h.w),
           nearest_quotient(h.x[2], h.w)};
 }

@@ -25,12 +25,25 @@ struct Homogeneous {
   BigFloat w;
 };
 
+/// Bounds of a point's coordinates: lo[i] <= x[i] / w <= hi[i].
+struct Enclosure {
+  std::array<double, 3> lo{}, hi{};
+};
+
 /// Where the segment p q crosses the plane of the triangle a b c: the doubles that define a
 /// crossing point, kept instead of its big numbers, which are made from them when a predicate
-/// first needs them and kept in `exact` (not thread-safe: the engine runs on one thread).
+/// first needs them and kept in `exact` (not thread-safe: the engine runs on one thread); and
+/// the crossing's enclosure.
 struct Crossing {
   Vec3 p, q, a, b, c;
+  Enclosure bounds;
   mutable std::shared_ptr<const Homogeneous> exact;
+};
+
+/// The big numbers of another constructed point and its enclosure.
+struct Constructed {
+  Homogeneous numbers;
+  Enclosure bounds;
 };
 
 /// (x / w, y / w, z / w) with w > 0, the big numbers shared (immutable) by the copies of a point.
@@ -38,20 +51,27 @@ struct Crossing {
 /// needs them), so that predicates on points of doubles only take the filtered predicates of
 /// `predicates` and most input vertices never allocate a big number. A crossing (`line_plane`)
 /// is likewise only its `Crossing` and its nearest doubles v, rounded by a filtered predicate:
-/// most crossings never allocate a big number either. Every point also keeps an enclosure of its
+/// most crossings never allocate a big number either. Every point also has an enclosure of its
 /// coordinates, lo[i] <= x[i] / w <= hi[i] (lo = hi = v for a point of doubles; v's neighbours
 /// for a crossing): the floating-point filter that decides most predicates on implicit points
 /// without the big numbers (rule solid-exact-points).
 ///
-/// 104 bytes, no flag beside the pointers: a point store holds one per input vertex (14 MB at
-/// two 131k-triangle spheres), and its pages are first touched, each a page fault.
+/// 56 bytes: the enclosure of an implicit point is kept with its shared numbers or crossing and
+/// a point of doubles has none (it is v), because a point store holds one point per input
+/// vertex (7 MB at two 131k-triangle spheres, 14 MB with an enclosure in each) and its pages
+/// are first touched, each a page fault.
 struct ExactPoint {
-  std::shared_ptr<const Homogeneous> exact;  ///< set for the other constructed points
+  std::shared_ptr<const Constructed> exact;  ///< set for the other constructed points
   std::shared_ptr<const Crossing> crossing;  ///< set for a crossing
   Vec3 v{};  ///< the point (plain) or its nearest doubles (a crossing)
-  std::array<double, 3> lo{}, hi{};
   /// The point is `v`, doubles: neither a crossing nor another constructed point.
   [[nodiscard]] bool plain() const { return !exact && !crossing; }
+  /// Bounds of the point's coordinates (lo = hi = v for a point of doubles).
+  [[nodiscard]] Enclosure enclosure() const {
+    if (crossing) return crossing->bounds;
+    if (exact) return exact->bounds;
+    return {{v.x, v.y, v.z}, {v.x, v.y, v.z}};
+  }
 };
 
 /// The double point v.

@@ -142,8 +142,7 @@ std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   rounded_.push_back(r);
   next_.push_back(-1);
   first_of_.push_back(first);
-  exact_double_.push_back(
-      p.plain() || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]) ? 1 : 0);
+  exact_double_.push_back(p.plain() || p.enclosure().lo == p.enclosure().hi ? 1 : 0);
   return id;
 }
 

@@ -268,8 +268,8 @@ void expect_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
   const ExactPoint e = clip::solid::line_plane_enclosed(p, q, a, b, c);
   for (int i = 0; i < 3; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    EXPECT_LE(mpq_class(e.lo[k]), coord(x->q, i)) << i;
-    EXPECT_GE(mpq_class(e.hi[k]), coord(x->q, i)) << i;
+    EXPECT_LE(mpq_class(e.enclosure().lo[k]), coord(x->q, i)) << i;
+    EXPECT_GE(mpq_class(e.enclosure().hi[k]), coord(x->q, i)) << i;
     EXPECT_EQ(clip::solid::compare_coordinate(e, x->point, i), Sign::zero) << i;
     for (const Vec3 v : {p, q, a}) {
       EXPECT_EQ(clip::solid::compare_coordinate(e, clip::solid::exact_point(v), i),

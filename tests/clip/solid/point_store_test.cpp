@@ -103,8 +103,7 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
       ASSERT_EQ(taken.rounded(a), one_by_one.rounded(b));
       ASSERT_EQ(taken.representative(a), one_by_one.representative(b));
       const ExactPoint& p = taken.point(a);
-      ASSERT_EQ(taken.written_exactly(a),
-                p.plain() || (p.lo[0] == p.hi[0] && p.lo[1] == p.hi[1] && p.lo[2] == p.hi[2]));
+      ASSERT_EQ(taken.written_exactly(a), p.plain() || p.enclosure().lo == p.enclosure().hi);
       written_exactly += taken.written_exactly(a) ? 1 : 0;
       ++checked;
     }
