@@ -1,7 +1,7 @@
-"""contain.read_points: point files into numpy arrays, each value the correctly rounded double
-of its text (Python's float() is the oracle), the dimension from the first point line, the
-same points whatever the threads, errors naming file and line, and the command's answers on
-the points it reads."""
+"""contain.read_points and iter_points: point files into numpy arrays, each value the correctly
+rounded double of its text (Python's float() is the oracle), the dimension from the first point
+line, the same points whatever the threads and chunks, errors naming file and line, an
+iteration stopped early, and the command's answers on the points it reads."""
 
 import random
 import subprocess
@@ -133,3 +133,64 @@ def test_located_points_answer_as_the_command_reading_the_same_file(tmp_path, cl
                              check=True, capture_output=True, text=True).stdout.split()
     assert ours == command
     assert ours[-2:] == ["on", "on"]
+
+
+def test_chunks_concatenate_to_the_whole_file_on_any_threads(tmp_path):
+    rng = np.random.default_rng(8)
+    points = rng.uniform(-10.0, 10.0, size=(250_003, 2))
+    path = tmp_path / "plane.txt"
+    np.savetxt(path, points, fmt="%.17g", delimiter=",")
+    for chunk, threads in [(1000, 1), (65_536, 0), (1 << 20, 2)]:
+        chunks = contain.iter_points(path, chunk=chunk, threads=threads)
+        assert chunks.columns == 2
+        arrays = list(chunks)
+        assert all(a.shape == (chunk, 2) for a in arrays[:-1])
+        assert arrays[-1].shape[1] == 2 and 0 < len(arrays[-1]) <= chunk
+        assert np.concatenate(arrays).tobytes() == points.tobytes()
+    assert list(contain.iter_points(tmp_path / "plane.txt", 2, chunk=10**9))[0].shape == (250_003, 2)
+
+
+def test_chunks_before_a_bad_line_come_first_then_its_error(tmp_path):
+    path = tmp_path / "late.txt"
+    with open(path, "w") as out:
+        for k in range(100_000):  # 1.9 MB: blocks of the reader before the bad line's
+            out.write(f"{k} {k}.5 1\n")
+        out.write("1 2 inf\n")
+    got = []
+    with pytest.raises(contain.ContainError, match="not finite") as error:
+        for block in contain.iter_points(path, chunk=100, threads=1):
+            got.append(block)
+    assert error.value.line == 100_001 and error.value.source == str(path)
+    # The lines before the bad line's block, in whole chunks but the last; every one right.
+    assert got and sum(len(b) for b in got) < 100_000
+    assert all(len(b) == 100 for b in got[:-1])
+    whole = np.concatenate(got)
+    assert (whole[:, 0] == np.arange(len(whole))).all() and (whole[:, 2] == 1.0).all()
+
+
+def test_an_iteration_dropped_early_stops_the_reader(tmp_path):
+    rng = np.random.default_rng(9)
+    path = tmp_path / "big.xyz"
+    np.savetxt(path, rng.uniform(size=(400_000, 3)), fmt="%.17g")
+    for _ in range(20):
+        chunks = contain.iter_points(path, chunk=1000)
+        first = next(chunks)
+        assert first.shape == (1000, 3)
+        del chunks  # the reader, waiting to hand over its next chunk, stops
+    assert len(list(contain.iter_points(tmp_path / "big.xyz", chunk=1000))) == 400
+
+
+def test_iter_points_checks_its_arguments(tmp_path):
+    path = tmp_path / "p.txt"
+    path.write_text("1 2\n")
+    with pytest.raises(ValueError, match="chunk"):
+        contain.iter_points(path, chunk=0)
+    with pytest.raises(ValueError, match="dimension must be 2 or 3"):
+        contain.iter_points(path, 1)
+    with pytest.raises(ValueError, match="standard input"):
+        contain.iter_points("-")
+    with pytest.raises(contain.ContainIOError):
+        next(contain.iter_points(tmp_path / "missing.txt", 3))
+    with pytest.raises(contain.ContainError, match="found 2 numbers on the line, expected 3"):
+        list(contain.iter_points(path, 3))
+    assert [a.tolist() for a in contain.iter_points(path)] == [[[1.0, 2.0]]]
