@@ -197,13 +197,52 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   return Ok{};
 }
 
+// A mapped file in the blocks read_chunked would read (the same whole lines, so the same pieces
+// and errors), without copying them: each block is the text from the end of the last, up to
+// `block` bytes cut after its last newline; a line longer than a block grows the block.
+template <class Point>
+Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
+                   const std::string& source,
+                   const std::function<void(std::span<const Point>, double)>& consume) {
+  std::size_t block = block_bytes(reading);
+  const std::string_view text = mapped.text();
+  ReadPosition at;
+  std::vector<Slice<Point>> slices;
+  std::size_t from = text.size() - detail::skip_bom(text).size();
+  at.bytes = from;
+  while (from < text.size()) {
+    std::size_t to = text.size();
+    while (text.size() - from > block) {
+      const std::size_t newline = text.rfind('\n', from + block - 1);
+      if (newline != std::string_view::npos && newline >= from) {
+        to = newline + 1;
+        break;
+      }
+      block *= 2;
+    }
+    mapped.reach(to);
+    if (Status parsed = parse_block(text.substr(from, to - from), reading, source, at, text.size(),
+                                    slices, consume);
+        !parsed) {
+      return parsed;
+    }
+    from = to;
+    mapped.release(from);
+  }
+  return Ok{};
+}
+
 // The file a block at a time: each block's whole lines parsed (parse_block), the partial last
-// line carried to the next; a line longer than a block grows the block.
+// line carried to the next; a line longer than a block grows the block. A regular file is mapped
+// instead (read_mapped).
 template <class Point>
 Status read_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                     const std::function<void(std::span<const Point>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
+  if (auto mapped = detail::MappedText::map(input->file(), input->size())) {
+    return read_mapped(*mapped, reading, input->source(), consume);
+  }
   std::size_t block = block_bytes(reading);
   std::unique_ptr<char[]> buffer(new char[block]);
   std::size_t held = 0;  // bytes in the buffer
