@@ -197,22 +197,22 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   return Ok{};
 }
 
-// A mapped file in the blocks read_chunked would read (the same whole lines, so the same pieces
-// and errors), without copying them: each block is the text from the end of the last, up to
-// `block` bytes cut after its last newline; a line longer than a block grows the block.
+// A mapped file in the blocks read_chunked would read from a stream (the same whole lines, so
+// the same pieces and errors), without copying them: each block is the text from the end of the
+// last, `block` bytes cut after their last newline unless the rest is shorter; a line longer than
+// a block grows the block. The byte order mark counts in the first block, as in the stream's.
 template <class Point>
 Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
                    const std::string& source,
                    const std::function<void(std::span<const Point>, double)>& consume) {
   std::size_t block = block_bytes(reading);
   const std::string_view text = mapped.text();
-  ReadPosition at;
+  const std::size_t mark = text.size() - detail::skip_bom(text).size();
+  ReadPosition at{.bytes = mark};
   std::vector<Slice<Point>> slices;
-  std::size_t from = text.size() - detail::skip_bom(text).size();
-  at.bytes = from;
-  while (from < text.size()) {
+  for (std::size_t from = 0; from < text.size();) {
     std::size_t to = text.size();
-    while (text.size() - from > block) {
+    while (text.size() - from >= block) {
       const std::size_t newline = text.rfind('\n', from + block - 1);
       if (newline != std::string_view::npos && newline >= from) {
         to = newline + 1;
@@ -221,8 +221,9 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
       block *= 2;
     }
     mapped.reach(to);
-    if (Status parsed = parse_block(text.substr(from, to - from), reading, source, at, text.size(),
-                                    slices, consume);
+    const std::size_t first = std::max(from, mark);
+    if (Status parsed = parse_block(text.substr(first, to - first), reading, source, at,
+                                    text.size(), slices, consume);
         !parsed) {
       return parsed;
     }
