@@ -160,7 +160,7 @@ namespace {
 // The window made present ahead of the reader, and the text dropped behind it at a time: large
 // enough that the system calls are few (a few for 40 MB), small beside the memory of 10^8 points.
 constexpr std::size_t kPresentWindow = std::size_t{8} << 20;
-constexpr std::size_t kReleaseWindow = std::size_t{64} << 20;
+constexpr std::size_t kReleaseWindow = std::size_t{16} << 20;
 
 std::size_t page_bytes() {
   static const auto bytes = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
