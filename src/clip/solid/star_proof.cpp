@@ -169,7 +169,10 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
   return true;
 }
 
-std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out) {
+// Whether each vertex is proven; with `out`, the neighbours and turns of `proven_stars`; with
+// `corners` (zeros, one per triangle), bit k of each triangle whose corner k is proven.
+std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
+                                     std::vector<std::uint8_t>* corners) {
   const std::size_t vertices = soup.vertices.size();
   // The corners at each vertex (3 t + k: triangle t's corner k), by a counting sort, in
   // ascending order (a triangle naming a vertex twice is listed twice, and fails the turns).
@@ -198,41 +201,39 @@ std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out) {
   for (std::size_t v = 0; v < vertices; ++v) {
     const auto first = static_cast<std::size_t>(start[v + 1]);
     const auto end = v + 2 <= vertices ? static_cast<std::size_t>(start[v + 2]) : star.size();
-    proven[v] = proven_star(soup, static_cast<std::int32_t>(v),
-                            std::span<const std::int32_t>(star).subspan(first, end - first), out);
-  }
-  return proven;
-}
-
-std::vector<std::uint8_t> corners_of(const Soup& soup, const std::vector<bool>& proven) {
-  std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    std::uint8_t bits = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (proven[static_cast<std::size_t>(soup.triangles[t][k])]) {
-        bits = static_cast<std::uint8_t>(bits | (1U << k));
+    const std::span<const std::int32_t> at_v =
+        std::span<const std::int32_t>(star).subspan(first, end - first);
+    proven[v] = proven_star(soup, static_cast<std::int32_t>(v), at_v, out);
+    // The triangles of a proven star marked at their corner v here, where the bits of every
+    // triangle's three corners looked up afterwards was a second pass over the triangles.
+    if (proven[v] && corners != nullptr) {
+      for (const std::int32_t c : at_v) {
+        std::uint8_t& bits = (*corners)[static_cast<std::size_t>(c / 3)];
+        bits = static_cast<std::uint8_t>(bits | (1U << (c % 3)));
       }
     }
-    corners[t] = bits;
   }
-  return corners;
+  return proven;
 }
 
 }  // namespace
 
 std::vector<bool> proven_vertices(const Soup& soup) {
-  return proven_vertices_of(soup, nullptr);
+  return proven_vertices_of(soup, nullptr, nullptr);
 }
 
 std::vector<std::uint8_t> proven_corners(const Soup& soup) {
-  return corners_of(soup, proven_vertices(soup));
+  std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
+  (void)proven_vertices_of(soup, nullptr, &corners);
+  return corners;
 }
 
 ProvenStars proven_stars(const Soup& soup) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
   stars.turns.assign(soup.triangles.size(), 0);
-  stars.corners = corners_of(soup, proven_vertices_of(soup, &stars));
+  stars.corners.assign(soup.triangles.size(), 0);
+  (void)proven_vertices_of(soup, &stars, &stars.corners);
   return stars;
 }
 
