@@ -170,7 +170,8 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
 }
 
 // Whether each vertex is proven; with `out`, the neighbours and turns of `proven_stars`; with
-// `corners` (zeros, one per triangle), bit k of each triangle whose corner k is proven.
+// `corners`, bit k of each triangle whose corner k is proven (made here, after the sort's
+// buffers: below them, it would leave their memory a hole the next allocations may not fit).
 std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
                                      std::vector<std::uint8_t>* corners) {
   const std::size_t vertices = soup.vertices.size();
@@ -198,6 +199,7 @@ std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
   }
   // start[v + 1] is now the start of v's bucket; v's bucket ends where v + 1's starts.
   std::vector<bool> proven(vertices, false);
+  if (corners != nullptr) corners->assign(soup.triangles.size(), 0);
   for (std::size_t v = 0; v < vertices; ++v) {
     const auto first = static_cast<std::size_t>(start[v + 1]);
     const auto end = v + 2 <= vertices ? static_cast<std::size_t>(start[v + 2]) : star.size();
@@ -223,7 +225,7 @@ std::vector<bool> proven_vertices(const Soup& soup) {
 }
 
 std::vector<std::uint8_t> proven_corners(const Soup& soup) {
-  std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
+  std::vector<std::uint8_t> corners;
   (void)proven_vertices_of(soup, nullptr, &corners);
   return corners;
 }
@@ -232,7 +234,6 @@ ProvenStars proven_stars(const Soup& soup) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
   stars.turns.assign(soup.triangles.size(), 0);
-  stars.corners.assign(soup.triangles.size(), 0);
   (void)proven_vertices_of(soup, &stars, &stars.corners);
   return stars;
 }
