@@ -116,7 +116,7 @@ void expect_settled_agrees(const Soup& soup, const std::string& what, SettledTal
 
 // A soup of the meshes' triangles as they are (no welding: equal positions stay distinct
 // vertices), each mesh's triangles of input `inputs[k]`.
-Soup soup_of(const std::vector<Mesh>& meshes, const std::vector<std::int32_t>& inputs) {
+Soup unwelded_soup(const std::vector<Mesh>& meshes, const std::vector<std::int32_t>& inputs) {
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
   std::vector<std::int32_t> input;
@@ -168,7 +168,7 @@ TEST(PatchProofSettled, AgreesWithTheFullPathOnFoldedBumpedAndDentedSpheres) {
         v = {v.x - shift * axis.x, v.y - shift * axis.y, v.z - shift * axis.z};
       }
     }
-    expect_settled_agrees(soup_of({mesh}, {0}), "sphere " + std::to_string(k), tally);
+    expect_settled_agrees(unwelded_soup({mesh}, {0}), "sphere " + std::to_string(k), tally);
   }
   EXPECT_GT(tally.settled, 0U);
   EXPECT_GT(tally.crossed, 0U);
@@ -189,8 +189,8 @@ TEST(PatchProofSettled, AgreesWithTheFullPathOnCrossingAndDuplicatedSpheres) {
       {reversed(icosphere(2, 0.9, {0.2, 0.1, 0})), "inside out, crossing"}};
   for (const auto& [b, what] : others) {
     // One input (self-intersecting: its subtrees are tried), and two.
-    expect_settled_agrees(soup_of({a, b}, {0, 0}), what + ", one input", tally);
-    expect_settled_agrees(soup_of({a, b}, {0, 1}), what + ", two inputs", tally);
+    expect_settled_agrees(unwelded_soup({a, b}, {0, 0}), what + ", one input", tally);
+    expect_settled_agrees(unwelded_soup({a, b}, {0, 1}), what + ", two inputs", tally);
   }
   EXPECT_GT(tally.settled, 0U);
   EXPECT_GT(tally.crossed, 0U);
@@ -240,7 +240,7 @@ TEST(PatchProofSettled, AgreesWithTheFullPathOnIntegerPolyhedraOverlappingInThei
       }
     }
     if (meshes.empty()) continue;
-    expect_settled_agrees(soup_of(meshes, inputs), "polyhedra " + std::to_string(k), tally);
+    expect_settled_agrees(unwelded_soup(meshes, inputs), "polyhedra " + std::to_string(k), tally);
   }
   EXPECT_GT(tally.settled, 0U);
   EXPECT_GT(tally.refused, 0U);
