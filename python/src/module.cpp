@@ -32,6 +32,7 @@ PYBIND11_MODULE(_contain, m) {
   bind_distance(m);
   bind_mesh_boolean(m);
   bind_slice(m);
+  bind_points(m);
   m.def("_reads_in_place", &reads_in_place, py::arg("array"),
         "True when the batch calls read `array` without a copy (C-contiguous aligned float64).");
 #ifdef CONTAIN_VERSION

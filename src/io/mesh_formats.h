@@ -40,8 +40,13 @@ inline void append_fan(std::vector<TriangleIndices>& triangles,
                                            std::vector<TriangleIndices> triangles, MeshInfo info,
                                            const std::string& source);
 
-/// Appends "PREFIX x y z\n" with the shortest round-trip form of each coordinate: the vertex
-/// lines of OBJ ("v "), OFF and ASCII PLY (""), and ASCII STL ("vertex ").
+/// Appends "PREFIX x y z\n" with the shortest round-trip form of each coordinate, as
+/// format_lines writes its vertex lines: ASCII STL's ("vertex ", a prefix of any length).
 void append_vertex_line(std::string& out, const char* prefix, Vec3 v);
+
+/// `header`, then "VERTEX x y z\n" per vertex (the shortest round-trip form of each coordinate)
+/// and "FACE i j k\n" per triangle with indices from `base`: the text of OBJ, OFF and ASCII PLY.
+[[nodiscard]] std::string format_lines(const Mesh& mesh, const std::string& header,
+                                       std::string_view vertex, std::string_view face, int base);
 
 }  // namespace contain::io::detail

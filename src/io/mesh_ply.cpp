@@ -479,15 +479,7 @@ std::string format_ply(const Mesh& mesh, MeshFormat format) {
          "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
          std::to_string(mesh.triangles.size()) +
          "\nproperty list uchar int vertex_indices\nend_header\n";
-  if (ascii) {
-    for (const Vec3& v : mesh.vertices)
-      append_vertex_line(out, "", v);
-    for (const TriangleIndices& t : mesh.triangles) {
-      out += "3 " + std::to_string(t[0]) + ' ' + std::to_string(t[1]) + ' ' + std::to_string(t[2]) +
-             '\n';
-    }
-    return out;
-  }
+  if (ascii) return format_lines(mesh, out, "", "3 ", 0);  // OFF's lines under PLY's header
   auto put = [&](std::uint64_t raw, int n) {
     for (int i = 0; i < n; ++i) {
       const int shift = big ? 8 * (n - 1 - i) : 8 * i;

@@ -503,7 +503,7 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
 
 namespace {
 
-// The vertex and index lines of OBJ and OFF written in place into a buffer sized for the
+// The vertex and index lines of OBJ, OFF and ASCII PLY written in place into a buffer sized for the
 // longest lines, then trimmed: no std::string append per number nor std::to_string per index
 // (writing was twice the time of reading the same mesh). The same bytes as appending.
 constexpr std::size_t kPrefixRoom = 2;  // "v ", "f ", "3 " or nothing
@@ -538,6 +538,8 @@ char* put_index_line(char* at, std::string_view prefix, const TriangleIndices& t
   return at;
 }
 
+}  // namespace
+
 // `header`, then a line per vertex and per triangle, written through a buffer of a few pages
 // (a buffer for the whole text, zeroed by resizing, was a pass more over megabytes).
 std::string format_lines(const Mesh& mesh, const std::string& header, std::string_view vertex,
@@ -563,8 +565,6 @@ std::string format_lines(const Mesh& mesh, const std::string& header, std::strin
   out.append(chunk.data(), at);
   return out;
 }
-
-}  // namespace
 
 void append_vertex_line(std::string& out, const char* prefix, Vec3 v) {
   out += prefix;  // any length (STL's "vertex "): the line after it put in place

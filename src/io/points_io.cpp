@@ -197,13 +197,53 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   return Ok{};
 }
 
+// A mapped file in the blocks read_chunked would read from a stream (the same whole lines, so
+// the same pieces and errors), without copying them: each block is the text from the end of the
+// last, `block` bytes cut after their last newline unless the rest is shorter; a line longer than
+// a block grows the block. The byte order mark counts in the first block, as in the stream's.
+template <class Point>
+Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
+                   const std::string& source,
+                   const std::function<void(std::span<const Point>, double)>& consume) {
+  std::size_t block = block_bytes(reading);
+  const std::string_view text = mapped.text();
+  const std::size_t mark = text.size() - detail::skip_bom(text).size();
+  ReadPosition at{.bytes = mark};
+  std::vector<Slice<Point>> slices;
+  for (std::size_t from = 0; from < text.size();) {
+    std::size_t to = text.size();
+    while (text.size() - from >= block) {
+      const std::size_t newline = text.rfind('\n', from + block - 1);
+      if (newline != std::string_view::npos && newline >= from) {
+        to = newline + 1;
+        break;
+      }
+      block *= 2;
+    }
+    mapped.reach(to);
+    const std::size_t first = std::max(from, mark);
+    if (Status parsed = parse_block(text.substr(first, to - first), reading, source, at,
+                                    text.size(), slices, consume);
+        !parsed) {
+      return parsed;
+    }
+    from = to;
+    mapped.release(from);
+  }
+  return Ok{};
+}
+
 // The file a block at a time: each block's whole lines parsed (parse_block), the partial last
-// line carried to the next; a line longer than a block grows the block.
+// line carried to the next; a line longer than a block grows the block. A regular file is mapped
+// instead (read_mapped).
 template <class Point>
 Status read_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                     const std::function<void(std::span<const Point>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
+  if (auto mapped = detail::MappedText::map(input->file(), input->size())) {
+    return read_mapped(*mapped, reading, input->source(), consume);
+  }
   std::size_t block = block_bytes(reading);
   std::unique_ptr<char[]> buffer(new char[block]);
   std::size_t held = 0;  // bytes in the buffer

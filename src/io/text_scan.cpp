@@ -10,12 +10,19 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <regex>
 #include <system_error>
 #include <utility>
 #include <vector>
 
 #include "io/shortest_double.h"
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 namespace contain::io::detail {
 
@@ -147,6 +154,75 @@ Result<std::size_t> BlockInput::read(char* to, std::size_t bytes) {
   }
   return got;
 }
+
+#if defined(__unix__) || defined(__APPLE__)
+namespace {
+// The window made present ahead of the reader, and the text dropped behind it at a time: large
+// enough that the system calls are few (a few for 40 MB), small beside the memory of 10^8 points.
+constexpr std::size_t kPresentWindow = std::size_t{8} << 20;
+constexpr std::size_t kReleaseWindow = std::size_t{16} << 20;
+
+std::size_t page_bytes() {
+  static const auto bytes = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  return bytes;
+}
+}  // namespace
+
+std::optional<MappedText> MappedText::map(std::FILE* file, std::uintmax_t size) {
+  if (file == nullptr || size == 0 || size > std::numeric_limits<std::size_t>::max()) return {};
+  const int fd = ::fileno(file);
+  struct stat st {};
+  if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ||
+      static_cast<std::uintmax_t>(st.st_size) != size || ::lseek(fd, 0, SEEK_CUR) != 0) {
+    return {};
+  }
+  void* data = ::mmap(nullptr, static_cast<std::size_t>(size), PROT_READ, MAP_PRIVATE, fd, 0);
+  if (data == MAP_FAILED) return {};
+#if defined(MADV_SEQUENTIAL)
+  (void)::madvise(data, static_cast<std::size_t>(size), MADV_SEQUENTIAL);
+#endif
+  return MappedText(static_cast<const char*>(data), static_cast<std::size_t>(size));
+}
+
+MappedText::MappedText(MappedText&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)),
+      size_(std::exchange(other.size_, 0)),
+      present_(other.present_),
+      released_(other.released_) {}
+
+MappedText::~MappedText() {
+  if (data_ != nullptr) ::munmap(const_cast<char*>(data_), size_);
+}
+
+void MappedText::reach(std::size_t to) {
+  if (to <= present_) return;
+  const std::size_t from = present_ / page_bytes() * page_bytes();
+  present_ = std::min(size_, std::max(to, present_ + kPresentWindow));
+#if defined(MADV_POPULATE_READ)
+  // Faults a window at once instead of a page (or a fault-around of 16) at a time; a hint: on a
+  // kernel without it the pages come by faults as ever.
+  (void)::madvise(const_cast<char*>(data_) + from, present_ - from, MADV_POPULATE_READ);
+#else
+  (void)from;
+#endif
+}
+
+void MappedText::release(std::size_t from) {
+  const std::size_t upto = std::min(from, size_) / page_bytes() * page_bytes();
+  if (upto < released_ + kReleaseWindow) return;
+  (void)::madvise(const_cast<char*>(data_) + released_, upto - released_, MADV_DONTNEED);
+  released_ = upto;
+}
+#else
+std::optional<MappedText> MappedText::map(std::FILE*, std::uintmax_t) {
+  return {};
+}
+MappedText::MappedText(MappedText&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+MappedText::~MappedText() = default;
+void MappedText::reach(std::size_t) {}
+void MappedText::release(std::size_t) {}
+#endif
 
 Result<std::string> read_stream(std::istream& in, const std::string& source) {
   std::string data;

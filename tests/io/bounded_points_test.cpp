@@ -3,18 +3,25 @@
 // every length, signs, zeros, powers of ten and runs of nines, at every offset from the end of
 // the text; tokens of other shapes are refused and read in full; the bounded readers take and
 // refuse exactly the lines the chunked readers do, with the same errors, and their exact points
-// are those readers' points bit for bit.
+// are those readers' points bit for bit; a mapped file gives the pieces of its bytes read through
+// a pipe.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <random>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "contain/io/points_io.h"
 #include "io/number_bound.h"
@@ -255,6 +262,84 @@ TEST(BoundedPoints, TheBoundedReadersGiveTheChunkedReadersPointsAndErrors) {
   ASSERT_FALSE(got3.ok());
   EXPECT_EQ(got3.error().message, expected3.error().message);
   EXPECT_EQ(got3.error().line, expected3.error().line);
+}
+
+}  // namespace
+}  // namespace contain::io
+
+namespace contain::io {
+namespace {
+
+// What a bounded reader handed over: each piece's size, the exact points, and its status.
+struct PiecesRead {
+  std::vector<std::size_t> sizes;
+  std::vector<Vec2> points;
+  Status status = Ok{};
+};
+
+PiecesRead read_pieces(const std::filesystem::path& path, const ChunkedReading& reading) {
+  PiecesRead read;
+  read.status =
+      read_points2_bounded(path, reading, [&](std::span<const BoundedPoint2> piece, double) {
+        read.sizes.push_back(piece.size());
+        for (const BoundedPoint2& point : piece)
+          read.points.push_back(exact_point(point));
+      });
+  return read;
+}
+
+// `text` read from a pipe (a FIFO: read() into blocks, never mapped), written by a thread.
+PiecesRead read_piped(const std::string& text, const ChunkedReading& reading) {
+  const test::TempFile fifo(".fifo");
+  EXPECT_EQ(::mkfifo(fifo.path().c_str(), 0600), 0);
+  // A reader that stops at an error closes the pipe before the writer is done: EPIPE, no signal.
+  const auto old_handler = std::signal(SIGPIPE, SIG_IGN);
+  std::thread writer([&] {
+    const int fd = ::open(fifo.path().c_str(), O_WRONLY);
+    for (std::size_t at = 0; fd >= 0 && at < text.size();) {
+      const ssize_t wrote = ::write(fd, text.data() + at, text.size() - at);
+      if (wrote <= 0) break;
+      at += static_cast<std::size_t>(wrote);
+    }
+    if (fd >= 0) ::close(fd);
+  });
+  PiecesRead read = read_pieces(fifo.path(), reading);
+  writer.join();
+  std::signal(SIGPIPE, old_handler);
+  return read;
+}
+
+TEST(BoundedPoints, AMappedFileGivesThePiecesPointsAndErrorsOfTheSameBytesThroughAPipe) {
+  std::mt19937_64 rng(27);
+  const std::string text = random_point_text(rng, 600, 2);
+  const std::string long_line = "1.25" + std::string(300, ' ') + "-0.5\n";
+  const std::size_t cut = text.find('\n', 997) + 1;
+  const std::vector<std::string> texts{
+      text,
+      "\xEF\xBB\xBF" + text,                                       // a byte order mark
+      text.substr(0, cut) + long_line + text.substr(cut) + "7 8",  // a line past a block
+      text + "0.5 x\n" + text,                                     // an error
+      text.substr(0, 4096),                                        // a block's size exactly
+  };
+  const std::vector<ChunkedReading> ways{
+      {.chunk = 7, .block = 100}, {.chunk = 64, .block = 997}, {.threads = 2, .block = 4096}, {}};
+  for (std::size_t t = 0; t < texts.size(); ++t) {
+    const test::TempFile file(".txt", texts[t]);
+    for (const ChunkedReading& reading : ways) {
+      const PiecesRead mapped = read_pieces(file.path(), reading);
+      const PiecesRead piped = read_piped(texts[t], reading);
+      EXPECT_EQ(mapped.sizes, piped.sizes) << t << " " << reading.block;
+      EXPECT_EQ(mapped.points, piped.points) << t << " " << reading.block;
+      ASSERT_EQ(mapped.status.ok(), piped.status.ok()) << t << " " << reading.block;
+      if (!mapped.status.ok()) {
+        EXPECT_EQ(mapped.status.error().line, piped.status.error().line) << t;
+        EXPECT_EQ(mapped.status.error().message, piped.status.error().message) << t;
+        if (t == 3) {
+          EXPECT_EQ(mapped.status.error().line, 601);
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

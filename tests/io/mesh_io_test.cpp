@@ -66,6 +66,20 @@ TEST(MeshIo, LosslessFormatsRoundTripBitForBit) {
   }
 }
 
+// ASCII PLY's body is OFF's line for line (the same writer): only the headers differ.
+TEST(MeshIo, AsciiPlyBodyIsTheOffBodyUnderItsOwnHeader) {
+  const Mesh m = awkward_mesh();
+  const std::string off = format_mesh(m, MeshFormat::off);
+  const std::string ply = format_mesh(m, MeshFormat::ply_ascii);
+  const std::string off_header = "OFF\n40 38 0\n";
+  const std::string ply_end = "end_header\n";
+  ASSERT_EQ(off.substr(0, off_header.size()), off_header);
+  const std::size_t body = ply.find(ply_end);
+  ASSERT_NE(body, std::string::npos);
+  EXPECT_EQ(ply.substr(body + ply_end.size()), off.substr(off_header.size()));
+  EXPECT_NE(ply.find("3 0 1 2\n"), std::string::npos);
+}
+
 TEST(MeshIo, BinaryStlRoundTripsMeshesOfFloats) {
   Mesh m = awkward_mesh();
   for (Vec3& v : m.vertices) {

@@ -331,16 +331,23 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   } else {
     stars.corners.assign(soup.triangles.size(), 0);
   }
+  // The pairs within a subtree proven an embedded patch of proven vertices are skipped
+  // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
+  // points).
+  std::optional<PatchProofs> patches;
+  if (patches_pay) {
+    patches.emplace(soup, stars);
+    // What the proofs read once, given back before the walk, whose allocations (constraints,
+    // the table of crossings, the store's growth) then take it over instead of growing the heap
+    // (the process keeps freed memory; each fresh page is a fault).
+    std::vector<std::array<std::int32_t, 3>>().swap(stars.across);
+    std::vector<std::uint8_t>().swap(stars.turns);
+  }
   const std::vector<std::uint8_t>& corners = stars.corners;
   const auto pair = [&](std::int32_t t, std::int32_t u) {
     const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
     if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
   };
-  // The pairs within a subtree proven an embedded patch of proven vertices are skipped
-  // (patch_proof.h); the rest in the order of traverse_self (the order numbers the crossing
-  // points).
-  std::optional<PatchProofs> patches;
-  if (patches_pay) patches.emplace(soup, stars);
   (void)bvh::traverse_self_leaves(
       soup.tree, [](const bvh::Node& a, const bvh::Node& b) { return a.box.overlaps(b.box); },
       [&](std::span<const std::int32_t> a, std::span<const std::int32_t> b) {

@@ -1,5 +1,5 @@
-// Stage 4 of the mesh boolean: the winding number of every input on both sides of every refined
-// face (rule solid-labels in docs/robustness.md).
+// Stage 4 of the mesh boolean: the inputs whose winding number is positive on each side of every
+// refined face, as the operations ask them (rule solid-labels in docs/robustness.md).
 //
 // Faces are grouped into patches: two faces are joined across an edge that exactly these two
 // faces hold, in opposite directions, from the same input, and that lies on no intersection
@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "clip/solid/edge_uses.h"
@@ -66,8 +67,11 @@ int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
   return side == -nx ? to_int(nx) : 0;
 }
 
-std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const ExactPoint& p,
-                                 Vec3 near, int s) {
+// The inputs filled at the perturbed point: each input's winding number summed from the
+// crossings of its triangles (`crossings`: scratch, kept between calls), sorted by input. A ray
+// meets few inputs' surfaces, so only those are counted, not every input.
+SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const ExactPoint& p, Vec3 near, int s,
+                     std::vector<std::pair<std::int32_t, int>>& crossings) {
   // The exact point is within half an ulp of `near`: the boxes that may hold a crossing.
   const Vec3 lo{next_down(near.x), next_down(near.y), next_down(near.z)};
   const Vec3 hi{next_up(near.x), next_up(near.y), next_up(near.z)};
@@ -75,14 +79,28 @@ std::vector<int> winding_numbers(const Soup& soup, const bvh::Bvh& tree, const E
     return b.max.x >= lo.x && b.min.y <= hi.y && b.max.y >= lo.y && b.min.z <= hi.z &&
            b.max.z >= lo.z;
   };
-  std::vector<int> w(soup.inputs, 0);
+  crossings.clear();
   (void)tree.traverse([&](const bvh::Node& node, std::int32_t) { return reaches(node.box); },
                       [&](std::int32_t t) {
                         const auto k = static_cast<std::size_t>(t);
-                        w[static_cast<std::size_t>(soup.input[k])] += crossing(soup, k, p, s);
+                        if (const int c = crossing(soup, k, p, s); c != 0) {
+                          crossings.emplace_back(soup.input[k], c);
+                        }
                         return bvh::Visit::proceed;
                       });
-  return w;
+  std::sort(crossings.begin(), crossings.end());
+  SideLabel side;
+  for (std::size_t i = 0; i < crossings.size();) {
+    const std::int32_t input = crossings[i].first;
+    int winding = 0;
+    for (; i < crossings.size() && crossings[i].first == input; ++i)
+      winding += crossings[i].second;
+    if (winding > 0) {
+      ++side.filled;
+      side.first_filled = side.first_filled || input == 0;
+    }
+  }
+  return side;
 }
 
 // The faces' patches: the set of each face's smallest face (UnionFind::find).
@@ -126,6 +144,7 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
   UnionFind<std::uint32_t> patch = patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
+  std::vector<std::pair<std::int32_t, int>> crossings;
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root != f) {
@@ -141,11 +160,10 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
     const Sign first = n.y.sign() != Sign::zero
                            ? n.y.sign()
                            : (n.z.sign() != Sign::zero ? n.z.sign() : n.x.sign());
-    std::vector<int> plus = winding_numbers(soup, tree, c, near, 1);
-    std::vector<int> minus = winding_numbers(soup, tree, c, near, -1);
-    labels.of_patch.push_back(first == Sign::positive
-                                  ? FaceLabel{std::move(plus), std::move(minus)}
-                                  : FaceLabel{std::move(minus), std::move(plus)});
+    const SideLabel plus = side_label(soup, tree, c, near, 1, crossings);
+    const SideLabel minus = side_label(soup, tree, c, near, -1, crossings);
+    labels.of_patch.push_back(first == Sign::positive ? FaceLabel{plus, minus}
+                                                      : FaceLabel{minus, plus});
   }
   return labels;
 }

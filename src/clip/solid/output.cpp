@@ -25,20 +25,17 @@
 namespace contain::clip::solid {
 namespace {
 
-bool filled(Op op, const std::vector<int>& w) {
-  if (w.empty()) return false;
-  std::size_t count = 0;
-  for (const int x : w)
-    count += x > 0 ? 1 : 0;
+bool filled(Op op, const SideLabel& side, std::size_t inputs) {
+  if (inputs == 0) return false;
   switch (op) {
     case Op::union_:
-      return count > 0;
+      return side.filled > 0;
     case Op::intersection:
-      return count == w.size();
+      return side.filled == inputs;
     case Op::difference:
-      return w[0] > 0 && count == 1;
+      return side.first_filled && side.filled == 1;
     case Op::xor_:
-      return count % 2 == 1;
+      return side.filled % 2 == 1;
   }
   return false;
 }
@@ -116,8 +113,9 @@ BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
   // filled, 2 back filled.
   std::vector<std::uint8_t> sides(labels.of_patch.size());
   for (std::size_t p = 0; p < sides.size(); ++p) {
-    sides[p] = static_cast<std::uint8_t>((filled(op, labels.of_patch[p].front) ? 1U : 0U) |
-                                         (filled(op, labels.of_patch[p].back) ? 2U : 0U));
+    const FaceLabel& label = labels.of_patch[p];
+    sides[p] = static_cast<std::uint8_t>((filled(op, label.front, soup.inputs) ? 1U : 0U) |
+                                         (filled(op, label.back, soup.inputs) ? 2U : 0U));
   }
   BoundaryFaces out;
   for (std::size_t f = 0; f < refinement.faces.size(); ++f) {

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "contain/core/union_find.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/triangles_meet_2d.h"
 
@@ -134,17 +135,9 @@ bool in_sector(Vec2 o, Vec2 a, Vec2 b, Vec2 r) {
   return orient2d(o, a, r) != Sign::negative || orient2d(o, r, b) != Sign::negative;
 }
 
-int find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return static_cast<int>(i);
-}
-
 // Whether the boundary (sorted by `from`) is connected: each edge joined to the first edge
 // leaving each of its ends (a chain's boundary leaves every vertex it enters).
-bool connected(const std::vector<BoundaryEdge>& boundary, std::vector<std::uint32_t>& parent) {
+bool connected(const std::vector<BoundaryEdge>& boundary, UnionFind<std::uint32_t>& sets) {
   const std::size_t m = boundary.size();
   const auto first_out = [&](std::int32_t v) {
     return static_cast<std::size_t>(
@@ -152,18 +145,16 @@ bool connected(const std::vector<BoundaryEdge>& boundary, std::vector<std::uint3
                          [](BoundaryEdge e, std::int32_t x) { return e.from < x; }) -
         boundary.begin());
   };
-  parent.resize(m);
-  for (std::size_t i = 0; i < m; ++i)
-    parent[i] = static_cast<std::uint32_t>(i);
+  sets.reset(m);
   std::size_t components = m;
   for (std::size_t i = 0; i < m; ++i) {
     for (const std::int32_t v : {boundary[i].from, boundary[i].to}) {
       const std::size_t f = first_out(v);
       if (f == m || boundary[f].from != v) return false;
-      const int a = find_root(parent, static_cast<std::uint32_t>(i));
-      const int b = find_root(parent, static_cast<std::uint32_t>(f));
+      const std::uint32_t a = sets.find(static_cast<std::uint32_t>(i));
+      const std::uint32_t b = sets.find(static_cast<std::uint32_t>(f));
       if (a != b) {
-        parent[static_cast<std::size_t>(a)] = static_cast<std::uint32_t>(b);
+        sets.unite(a, b);
         --components;
       }
     }
@@ -228,7 +219,7 @@ bool embedded_in(const Soup& soup, PatchScratch& scratch, unsigned directions) {
   std::sort(boundary.begin(), boundary.end(), [](BoundaryEdge e, BoundaryEdge f) {
     return e.from < f.from || (e.from == f.from && e.to < f.to);
   });
-  if (!connected(boundary, scratch.parent)) return false;
+  if (!connected(boundary, scratch.sets)) return false;
   for (int k = 0; k < 3; ++k) {
     if ((directions >> (2 * k) & 3U) != 0 && boundary_embeds(soup, scratch, k)) return true;
   }

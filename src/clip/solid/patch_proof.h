@@ -55,6 +55,7 @@
 
 #include "clip/solid/engine.h"
 #include "clip/solid/star_proof.h"
+#include "contain/core/union_find.h"
 
 namespace contain::clip::solid {
 
@@ -78,7 +79,8 @@ struct BoundaryEdge {
 struct PatchScratch {
   std::vector<BoundaryEdge> boundary;
   std::vector<Vec2> from, to;
-  std::vector<std::uint32_t> order, active, by_to, parent;
+  std::vector<std::uint32_t> order, active, by_to;
+  UnionFind<std::uint32_t> sets{0};  ///< the boundary's edges, joined at shared ends
 };
 
 /// The proofs of the pair stage, per node of `soup.tree`.

@@ -78,13 +78,19 @@ Sign bend(const RingProducts& c, const std::array<double, 3>& t, Vec3 v, Vec3 wk
 
 // Whether v's star is proven; if so and `out` is given, its triangles' neighbours across the
 // edges at v written to out->across, and the turns of those whose corner 0 is v to out->turns.
-bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> star,
+bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t> corners,
                  ProvenStars* out) {
-  const std::size_t n = star.size();
+  const std::size_t n = corners.size();
   if (n < 3 || n > max_star) return false;
+  std::array<LinkEdge, max_star> star;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<std::size_t>(corners[i]);
+    const TriangleIndices& t = soup.triangles[c / 3];
+    star[i] = {t[(c + 1) % 3], t[(c + 2) % 3], corners[i]};
+  }
   std::array<std::int32_t, max_star> ids;
   std::array<std::uint8_t, max_star> order;
-  if (!walk_ring(star, ids, order)) return false;
+  if (!walk_ring(std::span<const LinkEdge>(star.data(), n), ids, order)) return false;
   // The positions by pointer: an array of Vec3 would be zeroed first (member initializers).
   std::array<const Vec3*, max_star> ring;
   for (std::size_t i = 0; i < n; ++i)
@@ -163,10 +169,17 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const LinkEdge> sta
   return true;
 }
 
-std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out) {
+// Whether each vertex is proven; with `out`, the neighbours and turns of `proven_stars`; with
+// `corners`, bit k of each triangle whose corner k is proven (made here, after the sort's
+// buffers: below them, it would leave their memory a hole the next allocations may not fit).
+std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
+                                     std::vector<std::uint8_t>* corners) {
   const std::size_t vertices = soup.vertices.size();
-  // The link edges of each vertex, by a counting sort of the triangles' corners (a triangle
-  // naming a vertex twice is listed twice, and fails the turns).
+  // The corners at each vertex (3 t + k: triangle t's corner k), by a counting sort, in
+  // ascending order (a triangle naming a vertex twice is listed twice, and fails the turns).
+  // Four bytes a corner, the link edge read again from the triangle when the star is proven:
+  // a buffer of link edges (12 bytes a corner) was 9.4 MB of fresh pages at a union of two
+  // 131k-triangle spheres, more than the proofs' own work in page faults.
   std::vector<std::int32_t> start(vertices + 1, 0);
   for (const TriangleIndices& t : soup.triangles) {
     for (const std::int32_t i : t)
@@ -174,56 +187,54 @@ std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out) {
   }
   for (std::size_t i = 1; i <= vertices; ++i)
     start[i] += start[i - 1];
-  std::vector<LinkEdge> star(static_cast<std::size_t>(start[vertices]));
-  {
-    std::vector<std::int32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
-      const TriangleIndices& t = soup.triangles[i];
-      for (std::size_t k = 0; k < 3; ++k) {
-        star[static_cast<std::size_t>(next[static_cast<std::size_t>(t[k])]++)] = {
-            t[(k + 1) % 3], t[(k + 2) % 3], static_cast<std::int32_t>(3 * i + k)};
-      }
+  std::vector<std::int32_t> star(static_cast<std::size_t>(start[vertices]));
+  // Filled from the back, each bucket's end moving down to its start (no second array of
+  // positions).
+  for (std::size_t i = soup.triangles.size(); i-- > 0;) {
+    const TriangleIndices& t = soup.triangles[i];
+    for (std::size_t k = 3; k-- > 0;) {
+      star[static_cast<std::size_t>(--start[static_cast<std::size_t>(t[k]) + 1])] =
+          static_cast<std::int32_t>(3 * i + k);
     }
   }
+  // start[v + 1] is now the start of v's bucket; v's bucket ends where v + 1's starts.
   std::vector<bool> proven(vertices, false);
+  if (corners != nullptr) corners->assign(soup.triangles.size(), 0);
   for (std::size_t v = 0; v < vertices; ++v) {
-    const auto first = static_cast<std::size_t>(start[v]);
-    const auto count = static_cast<std::size_t>(start[v + 1]) - first;
-    proven[v] = proven_star(soup, static_cast<std::int32_t>(v),
-                            std::span<const LinkEdge>(star).subspan(first, count), out);
+    const auto first = static_cast<std::size_t>(start[v + 1]);
+    const auto end = v + 2 <= vertices ? static_cast<std::size_t>(start[v + 2]) : star.size();
+    const std::span<const std::int32_t> at_v =
+        std::span<const std::int32_t>(star).subspan(first, end - first);
+    proven[v] = proven_star(soup, static_cast<std::int32_t>(v), at_v, out);
+    // The triangles of a proven star marked at their corner v here, where the bits of every
+    // triangle's three corners looked up afterwards was a second pass over the triangles.
+    if (proven[v] && corners != nullptr) {
+      for (const std::int32_t c : at_v) {
+        std::uint8_t& bits = (*corners)[static_cast<std::size_t>(c / 3)];
+        bits = static_cast<std::uint8_t>(bits | (1U << (c % 3)));
+      }
+    }
   }
   return proven;
-}
-
-std::vector<std::uint8_t> corners_of(const Soup& soup, const std::vector<bool>& proven) {
-  std::vector<std::uint8_t> corners(soup.triangles.size(), 0);
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    std::uint8_t bits = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (proven[static_cast<std::size_t>(soup.triangles[t][k])]) {
-        bits = static_cast<std::uint8_t>(bits | (1U << k));
-      }
-    }
-    corners[t] = bits;
-  }
-  return corners;
 }
 
 }  // namespace
 
 std::vector<bool> proven_vertices(const Soup& soup) {
-  return proven_vertices_of(soup, nullptr);
+  return proven_vertices_of(soup, nullptr, nullptr);
 }
 
 std::vector<std::uint8_t> proven_corners(const Soup& soup) {
-  return corners_of(soup, proven_vertices(soup));
+  std::vector<std::uint8_t> corners;
+  (void)proven_vertices_of(soup, nullptr, &corners);
+  return corners;
 }
 
 ProvenStars proven_stars(const Soup& soup) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
   stars.turns.assign(soup.triangles.size(), 0);
-  stars.corners = corners_of(soup, proven_vertices_of(soup, &stars));
+  (void)proven_vertices_of(soup, &stars, &stars.corners);
   return stars;
 }
 

@@ -556,6 +556,49 @@ TEST(MeshBoolean, GridOfUnitCubesUnitesToOneBox) {
   EXPECT_EQ(r.mesh.triangles.size(), 6U * 14U);
 }
 
+// The n-ary operations (the first input minus all others; an odd count for xor) on a dozen boxes
+// of integer corners: the exact volume is the count of unit cells the operation fills, each
+// cell's inputs counted apart from the boolean (an oracle of its own).
+TEST(MeshBoolean, ADozenOverlappingBoxesGiveTheCellCountedVolumeOfEveryOperation) {
+  std::mt19937_64 rng(12);
+  std::uniform_int_distribution<int> corner(0, 5);
+  std::vector<std::array<int, 6>> boxes;  // lo x, y, z, hi x, y, z
+  std::vector<Mesh> in;
+  while (boxes.size() < 12) {
+    std::array<int, 6> b{};
+    bool flat = false;
+    for (int k = 0; k < 3; ++k) {
+      const int a = corner(rng), c = corner(rng);
+      flat = flat || a == c;
+      b[static_cast<std::size_t>(k)] = std::min(a, c);
+      b[static_cast<std::size_t>(k + 3)] = std::max(a, c);
+    }
+    if (flat) continue;  // drawn again
+    boxes.push_back(b);
+    in.push_back(box_mesh({double(b[0]), double(b[1]), double(b[2])},
+                          {double(b[3]), double(b[4]), double(b[5])}));
+  }
+  for (const Op op : all_ops) {
+    int cells = 0;
+    for (int x = 0; x < 5; ++x) {
+      for (int y = 0; y < 5; ++y) {
+        for (int z = 0; z < 5; ++z) {
+          std::vector<int> w;
+          for (const auto& b : boxes) {
+            w.push_back(b[0] <= x && x < b[3] && b[1] <= y && y < b[4] && b[2] <= z && z < b[5]);
+          }
+          cells += in_result(op, w) ? 1 : 0;
+        }
+      }
+    }
+    const clip::MeshBooleanResult r = checked(in, op, 100);
+    EXPECT_EQ(exact_volume(r.mesh), mpq_class(cells)) << static_cast<int>(op);
+    if (op == Op::union_) {
+      EXPECT_GT(cells, 0);
+    }
+  }
+}
+
 // Coplanar pieces of the result merged and triangulated again: a face keeps only the points on
 // its outline (which its neighbours hold too), so the counts are those of the polyhedra
 // themselves, closed genus 0 (V = 2 + F / 2), with the exact volumes unchanged.
