@@ -252,6 +252,14 @@ def test_a_pose_is_12_numbers_a_3x4_or_a_4x4_matrix_wherever_a_transform_is_take
 
 # --- reprs -----------------------------------------------------------------------------------
 
+def point_file():
+    """A small point file of the format `contain inside --points` reads (in the working
+    directory: CTest runs these tests in the build tree)."""
+    with open("conventions_points.xyz", "w") as out:
+        out.write("0 0 0\n1 2 3\n")
+    return "conventions_points.xyz"
+
+
 def instances():
     """One object of every public class, as a user makes it."""
     box = cube()
@@ -281,6 +289,7 @@ def instances():
         "SelfIntersections": contain.self_intersections(box),
         "SolidScene": contain.SolidScene([box]),
         "TileIterator": contain.iter_tiles(WKT, 2, 2),
+        "PointChunks": contain.iter_points(point_file()),
         "FastWindingNumber": contain.FastWindingNumber(box),
     }
 
@@ -296,6 +305,7 @@ def test_every_class_has_a_repr_that_shows_what_it_holds():
     assert repr(objects["MeshDistance"]) == "contain.MeshDistance(12 triangles, regime='closed_exact')"
     assert repr(objects["RegionDistance"]) == "contain.RegionDistance(8 edges, fill='nonzero')"
     assert repr(objects["MeshPairDistance"]) == "contain.MeshPairDistance(a: 12 triangles, solid; b: 12 triangles, solid)"
+    assert repr(objects["PointChunks"]) == "contain.PointChunks(3D points)"
     assert repr(objects["MovingMeshPair"]) == "contain.MovingMeshPair(a: 8 vertices, solid; b: 8 vertices, solid)"
     assert repr(objects["ConvexShape"]) == "contain.ConvexShape.sphere(center=[0.0, 0.0, 0.0], radius=1.5)"
     assert repr(objects["ConvexDistance"]) == "contain.ConvexDistance(12 faces, 8 vertices)"
