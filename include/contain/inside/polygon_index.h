@@ -28,10 +28,11 @@ struct PolygonIndexOptions {
   double cells_per_edge = 4.0;
   /// ... at least this many cells (small polygons get a fine grid for free) ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: about 4.25 bytes per cell plus 32 per edge-cell pair). The
-  /// grid is then coarsened (halved per axis) until the estimated edge-cell pairs are at most
-  /// max(32 per edge, min_cells), so memory stays linear in the edges even when long edges
-  /// cross the whole region (a star with long spikes); queries there read more edges per cell.
+  /// ... and at most this many (memory: about 4.4 bytes per cell, 84 per edge cell and 32 per
+  /// edge-cell pair). The grid is then coarsened (halved per axis) until the estimated edge-cell
+  /// pairs are at most max(32 per edge, min_cells), so memory stays linear in the edges even when
+  /// long edges cross the whole region (a star with long spikes); queries there read more edges
+  /// per cell.
   std::size_t max_cells = std::size_t{1} << 20;
   /// How many points the caller means to locate (0: not known, many). Building the grid costs
   /// about as much as 4.4 queries without it times the edge-cell pairs an edge (1 for short
