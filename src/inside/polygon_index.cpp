@@ -266,16 +266,26 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
     edges_.push_back({edges[k].a, edges[k].b});
   stats_.edge_refs = edges_.size();
   settle_cells(lists.start, corner_windings(edges, x_, y_));
-  pack_states();
+  prepare_queries();
   stats_.edge_cells = edge_cells_.size();
 }
 
-void PolygonIndex::pack_states() {
-  packed_states_.assign((cells_.size() + 3) / 4, 0);
+void PolygonIndex::prepare_queries() {
+  packed_states_.assign((cells_.size() + 31) / 32, 0);
+  edge_ranks_.assign(packed_states_.size(), 0);
+  std::uint32_t edge_cells = 0;
   for (std::size_t c = 0; c < cells_.size(); ++c) {
-    const unsigned state = std::min<std::uint32_t>(cells_[c], 2);
-    packed_states_[c / 4] =
-        static_cast<std::uint8_t>(packed_states_[c / 4] | state << (2 * (c % 4)));
+    if (c % 32 == 0) edge_ranks_[c / 32] = edge_cells;
+    const std::uint64_t state = std::min<std::uint32_t>(cells_[c], 2);
+    packed_states_[c / 32] |= state << (2 * (c % 32));
+    edge_cells += state == 2 ? 1 : 0;
+  }
+  slots_.clear();
+  slots_.reserve(edge_cells_.size());
+  for (const EdgeCell& cell : edge_cells_) {
+    // (A loaded file's ranges are checked to lie within edges_, not to be non-empty.)
+    slots_.push_back(
+        {cell.edges_begin < cell.edges_end ? edges_[cell.edges_begin] : CellEdge{}, cell});
   }
 }
 
@@ -324,11 +334,11 @@ Location PolygonIndex::locate(Vec2 point) const {
 }
 
 std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int column,
-                                                          std::size_t cell_index) const {
+                                                          const EdgeSlot& slot) const {
   // locate_in_edge_cell's walk, each of its tests shown to come out the same for every point p
   // of the box (else no answer): then its winding number, and that no edge passes through p,
   // hold for the whole box.
-  const EdgeCell& cell = edge_cells_[cells_[cell_index] - 2];
+  const EdgeCell& cell = slot.cell;
   const double x1 = x_.line(column + 1);
   const double y0 = box.min.y, y1 = box.max.y;
   // The sign of orient2d(a, b, q) at every q of the segment or box given by its corners (affine
@@ -341,25 +351,27 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
     return first;
   };
   int winding = cell.corner_winding;
-  for (std::uint32_t q = cell.side_begin; q < cell.side_end; ++q) {
-    const SideEdge& e = side_edges_[q];
-    // passes_below(e.l, e.r, x1, p.y): the sign at (x1, p.y) when not zero.
-    const Sign s = one_sign(e.l, e.r, {Vec2{x1, y0}, Vec2{x1, y1}});
-    if (s == Sign::zero) return std::nullopt;
-    if (s == Sign::positive) winding += e.dir;
-  }
-  for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
-    const CellEdge& e = edges_[q];
-    const double lo = std::min(e.a.x, e.b.x), hi = std::max(e.a.x, e.b.x);
+  // The crossing of the path up the right side by the side edge l -> r (dir: +1 if written left
+  // to right); false when it is not the same for every height of the box.
+  const auto add_side = [&](Vec2 l, Vec2 r, int dir) {
+    // passes_below(l, r, x1, p.y): the sign at (x1, p.y) when not zero.
+    const Sign s = one_sign(l, r, {Vec2{x1, y0}, Vec2{x1, y1}});
+    if (s == Sign::zero) return false;
+    if (s == Sign::positive) winding += dir;
+    return true;
+  };
+  // c(p) - c(s) for the edge a -> b; false when it is not the same for every point of the box.
+  const auto add_edge = [&](Vec2 a, Vec2 b) {
+    const double lo = std::min(a.x, b.x), hi = std::max(a.x, b.x);
     // Wholly left of the box, so of s too: ray_crossing gives 0 for p and s whatever the
     // heights (its shortcut, or no end and no horizontal part at p).
-    if (box.min.x > hi) continue;
+    if (box.min.x > hi) return true;
     // ray_crossing(a, b, p) and (a, b, s = (x1, p.y)): each end strictly below or above the
     // box's heights, so that a.y <= p.y and b.y <= p.y are the same for every p and neither end
     // is at p's height (no horizontal edge or vertex through p).
-    const bool a_below = e.a.y < y0, b_below = e.b.y < y0;
-    if (!(a_below || e.a.y > y1) || !(b_below || e.b.y > y1)) return std::nullopt;
-    if (a_below == b_below) continue;  // 0 for p and s
+    const bool a_below = a.y < y0, b_below = b.y < y0;
+    if (!(a_below || a.y > y1) || !(b_below || b.y > y1)) return false;
+    if (a_below == b_below) return true;  // 0 for p and s
     const int dir = a_below ? 1 : -1;
     // The crossing's contribution by the walk's own shortcuts where they hold for every p (and
     // s), else by the sign (the shortcuts agree with it for a point off the edge).
@@ -368,9 +380,8 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
     if (box.max.x < lo) {
       at_p = dir;
     } else {
-      const Sign s =
-          one_sign(e.a, e.b, {box.min, box.max, Vec2{box.min.x, y1}, Vec2{box.max.x, y0}});
-      if (s == Sign::zero) return std::nullopt;
+      const Sign s = one_sign(a, b, {box.min, box.max, Vec2{box.min.x, y1}, Vec2{box.max.x, y0}});
+      if (s == Sign::zero) return false;
       at_p = by_sign(s);
     }
     int at_s = 0;
@@ -379,11 +390,29 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
     } else if (x1 < lo) {
       at_s = dir;
     } else {
-      const Sign s = one_sign(e.a, e.b, {Vec2{x1, y0}, Vec2{x1, y1}});
-      if (s == Sign::zero) return std::nullopt;
+      const Sign s = one_sign(a, b, {Vec2{x1, y0}, Vec2{x1, y1}});
+      if (s == Sign::zero) return false;
       at_s = by_sign(s);
     }
     winding += at_p - at_s;
+    return true;
+  };
+  if (cell.edges_end - cell.edges_begin == 1) {
+    // One edge, in the slot: a side edge of the cell is one of its edges, so it is this one.
+    const Vec2 a = slot.first.a, b = slot.first.b;
+    if (cell.side_end != cell.side_begin &&
+        !add_side(a.x <= b.x ? a : b, a.x <= b.x ? b : a, a.x < b.x ? 1 : -1)) {
+      return std::nullopt;
+    }
+    if (!add_edge(a, b)) return std::nullopt;
+  } else {
+    for (std::uint32_t q = cell.side_begin; q < cell.side_end; ++q) {
+      const SideEdge& e = side_edges_[q];
+      if (!add_side(e.l, e.r, e.dir)) return std::nullopt;
+    }
+    for (std::uint32_t q = cell.edges_begin; q < cell.edges_end; ++q) {
+      if (!add_edge(edges_[q].a, edges_[q].b)) return std::nullopt;
+    }
   }
   return is_filled(fill_, winding) ? Location::inside : Location::outside;
 }
@@ -415,7 +444,9 @@ Location PolygonIndex::locate_in_edge_cell(Vec2 point, int column, const EdgeCel
 
 std::size_t PolygonIndex::memory_bytes() const {
   return sizeof(*this) + (x_.lines().size() + y_.lines().size()) * sizeof(double) +
-         cells_.capacity() * sizeof(std::uint32_t) + packed_states_.capacity() +
+         cells_.capacity() * sizeof(std::uint32_t) +
+         packed_states_.capacity() * sizeof(std::uint64_t) +
+         edge_ranks_.capacity() * sizeof(std::uint32_t) + slots_.capacity() * sizeof(EdgeSlot) +
          edge_cells_.capacity() * sizeof(EdgeCell) + edges_.capacity() * sizeof(CellEdge) +
          side_edges_.capacity() * sizeof(SideEdge);
 }

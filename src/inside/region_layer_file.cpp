@@ -117,7 +117,6 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
     return bad("a region's grid does not span its box");
   for (std::uint32_t code : index.cells_)
     if (code >= 2 && code - 2 >= index.edge_cells_.size()) return bad("a region's cell code");
-  index.pack_states();
   for (const PolygonIndex::EdgeCell& c : index.edge_cells_) {
     if (!ranges_within(c.edges_begin, c.edges_end, index.edges_.size()) ||
         !ranges_within(c.side_begin, c.side_end, index.side_edges_.size())) {
@@ -128,6 +127,7 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
     if (!finite(e.a) || !finite(e.b)) return bad("an edge is not finite");
   for (const PolygonIndex::SideEdge& e : index.side_edges_)
     if (!finite(e.l) || !finite(e.r) || (e.dir != 1 && e.dir != -1)) return bad("a side edge");
+  index.prepare_queries();
   return Ok{};
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contain/inside/grid_axis.h"
+#include "contain/inside/index_file.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/polygon_index.h"
 #include "inside/mesh_test_meshes.h"
@@ -174,6 +175,31 @@ TEST(LocateSettled, PolygonEdgeLeftOfTheBoxWithAnEndAtItsHeightsDoesNotUnsettleI
   EXPECT_EQ(expect_settled_agrees(index, {{3, 1.9}, {3.5, 2.1}}), 1);
   // A box across the left side holds points in and out: no answer.
   EXPECT_FALSE(index.locate_settled({{-0.5, 1.9}, {0.5, 2.1}}));
+}
+
+// An index saved and loaded settles every box as the index it was saved from: the records
+// locate_settled reads (edge cells found by their rank in the packed states, a cell's first edge
+// beside its record) are rebuilt on loading, for cells of one edge (the fine grid) and of
+// several (the coarse one).
+TEST(LocateSettled, PolygonLoadedFromItsFileSettlesBoxesAsTheIndexSaved) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> unit(-1.1, 1.1);
+  const std::vector<Ring> rings{test::random_star(rng, 100, 0.0, 0.0, 1.0)};
+  for (const std::size_t min_cells : {std::size_t{16}, std::size_t{1} << 16}) {
+    const PolygonIndex built(std::span<const Ring>(rings), {.min_cells = min_cells});
+    const auto loaded = parse_polygon_index(format_index(built, 0));
+    ASSERT_TRUE(loaded);
+    int settled = 0;
+    for (int k = 0; k < 20000; ++k) {
+      const Vec2 p{unit(rng), unit(rng)};
+      for (const double w : {0.0, 1e-8, 1e-3}) {
+        const Box2 box{p, {p.x + w, p.y + w}};
+        ASSERT_EQ(loaded->locate_settled(box), built.locate_settled(box)) << p.x << " " << p.y;
+        settled += expect_settled_agrees(*loaded, box);
+      }
+    }
+    EXPECT_GT(settled, 50000);
+  }
 }
 
 int expect_settled_agrees(const MeshIndex& index, const Box3& box) {

@@ -3,6 +3,7 @@
 /// A prepared polygon for many exact point-in-polygon queries: a uniform grid with an exact
 /// answer per empty cell and an exact local test in the cells that edges cross.
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -27,10 +28,11 @@ struct PolygonIndexOptions {
   double cells_per_edge = 4.0;
   /// ... at least this many cells (small polygons get a fine grid for free) ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: about 4.25 bytes per cell plus 32 per edge-cell pair). The
-  /// grid is then coarsened (halved per axis) until the estimated edge-cell pairs are at most
-  /// max(32 per edge, min_cells), so memory stays linear in the edges even when long edges
-  /// cross the whole region (a star with long spikes); queries there read more edges per cell.
+  /// ... and at most this many (memory: about 4.4 bytes per cell, 84 per edge cell and 32 per
+  /// edge-cell pair). The grid is then coarsened (halved per axis) until the estimated edge-cell
+  /// pairs are at most max(32 per edge, min_cells), so memory stays linear in the edges even when
+  /// long edges cross the whole region (a star with long spikes); queries there read more edges
+  /// per cell.
   std::size_t max_cells = std::size_t{1} << 20;
   /// How many points the caller means to locate (0: not known, many). Building the grid costs
   /// about as much as 4.4 queries without it times the edge-cell pairs an edge (1 for short
@@ -103,17 +105,22 @@ class PolygonIndex {
                         y_.line(j) < box.min.y && box.max.y < y_.line(j + 1);
     const auto c = static_cast<std::size_t>(j) * static_cast<std::size_t>(x_.cells()) +
                    static_cast<std::size_t>(i);
-    const unsigned state = (packed_states_[c / 4] >> (2 * (c % 4))) & 3U;
+    const std::uint64_t word = packed_states_[c / 32];
+    const unsigned state = state_in(word, c);
     if (!within) return std::nullopt;
     if (state < 2) return state == 1 ? Location::inside : Location::outside;
-    return settle_in_edge_cell(box, i, c);
+    return settle_in_edge_cell(box, i, slots_[edge_rank(word, c)]);
   }
 
-  /// Warms the cache for `locate_settled` at `point` (its guessed cell's packed state), for
-  /// callers' pipelines; no effect on any answer.
+  /// Warms the cache for `locate_settled` at `point` (the record of its guessed cell where that
+  /// is an edge cell; the states themselves stay in the L1 cache), for callers' pipelines; no
+  /// effect on any answer.
   void prefetch(Vec2 point) const {
     const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
-    if (cell >= 0) __builtin_prefetch(&packed_states_[static_cast<std::size_t>(cell) / 4]);
+    if (cell < 0) return;
+    const auto c = static_cast<std::size_t>(cell);
+    const std::uint64_t word = packed_states_[c / 32];
+    if (state_in(word, c) == 2) __builtin_prefetch(&slots_[edge_rank(word, c)]);
   }
 
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
@@ -157,6 +164,15 @@ class PolygonIndex {
     std::uint32_t side_begin, side_end;    // into side_edges_
     int corner_winding;                    // at the lower-right corner, right-up perturbed
   };
+  // An edge cell as locate_settled reads it: one cache line, found from the packed states (its
+  // rank among the edge cells) without reading cells_, and holding the cell's first edge, so that
+  // a cell of one edge (94% of the 100-vertex star's) needs no other line. Before, settling a box
+  // read cells_, then the EdgeCell, then the edges: three dependent misses (the random cells are
+  // evicted by the streaming text), 40% of the location's time on the star.
+  struct alignas(64) EdgeSlot {
+    CellEdge first;  // edges_[cell.edges_begin]
+    EdgeCell cell;
+  };
 
   // The last stage of construction (polygon_index.cpp): the cells' codes, edge cells and side
   // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
@@ -166,23 +182,40 @@ class PolygonIndex {
     if (!bounds_.contains(point)) return -1;
     return static_cast<std::ptrdiff_t>(y_.guess(point.y)) * x_.cells() + x_.guess(point.x);
   }
-  // packed_states_ from cells_ (after construction and after loading).
-  void pack_states();
+  // packed_states_, edge_ranks_ and slots_ from cells_, edge_cells_ and edges_ (after
+  // construction, and after loading once those are checked).
+  void prepare_queries();
+  // The state (0, 1, 2) of cell c, from word c / 32 of packed_states_.
+  [[nodiscard]] static unsigned state_in(std::uint64_t word, std::size_t c) {
+    return static_cast<unsigned>(word >> (2 * (c % 32))) & 3U;
+  }
+  // The rank of edge cell c among the edge cells (its index into edge_cells_ and slots_), from
+  // word c / 32 of packed_states_: the edge cells before the word, and those before c within it
+  // (state 2 is the only one with its high bit set).
+  [[nodiscard]] std::size_t edge_rank(std::uint64_t word, std::size_t c) const {
+    const std::uint64_t below = (std::uint64_t{1} << (2 * (c % 32))) - 1;
+    return edge_ranks_[c / 32] +
+           static_cast<std::size_t>(std::popcount(word & below & 0xAAAAAAAAAAAAAAAAULL));
+  }
   [[nodiscard]] Location locate_in_edge_cell(Vec2 point, int column, const EdgeCell& cell) const;
-  // locate_settled's answer for a box strictly inside the edge cell `cell` of column `column`.
+  // locate_settled's answer for a box strictly inside the edge cell `slot` of column `column`.
   [[nodiscard]] std::optional<Location> settle_in_edge_cell(const Box2& box, int column,
-                                                            std::size_t cell) const;
+                                                            const EdgeSlot& slot) const;
 
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
   GridAxis x_, y_;  // the grid's columns and rows
   // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: edge_cells_[k - 2].
   std::vector<std::uint32_t> cells_;
-  // The same cells' states four to a byte (0 outside, 1 inside, 2 an edge cell; cell c in bits
-  // 2 (c % 4) and up of byte c / 4), read by locate_settled: 16 kB for the 2^16 cells of a small
-  // region queried 10^6 times stays in the L1 and L2 caches while the points stream past, where the
-  // 256 kB of cells_ did not.
-  std::vector<std::uint8_t> packed_states_;
+  // The same cells' states 32 to a word (0 outside, 1 inside, 2 an edge cell; cell c in bits
+  // 2 (c % 32) and up of word c / 32), read by locate_settled: 16 kB for the 2^16 cells of a
+  // small region queried 10^6 times stays in the L1 and L2 caches while the points stream past,
+  // where the 256 kB of cells_ did not.
+  std::vector<std::uint64_t> packed_states_;
+  // Per word of packed_states_: the edge cells in the words before it (8 kB for 2^16 cells).
+  std::vector<std::uint32_t> edge_ranks_;
+  // Per edge cell, in cell order (as edge_cells_): its record and first edge (locate_settled).
+  std::vector<EdgeSlot> slots_;
   std::vector<EdgeCell> edge_cells_;
   std::vector<CellEdge> edges_;
   std::vector<SideEdge> side_edges_;
