@@ -1,6 +1,6 @@
-// contain.read_points: a point file into a numpy array by the library's reader, with its errors
-// naming file and line (numpy.loadtxt took 1.85 s for the 10^6 points of 59 MB this reads in
-// 0.28 s on one thread: 23:31 UTC 29 Nov, load 9).
+// contain.read_points and iter_points: a point file into numpy arrays, whole or a chunk at a
+// time, by the library's reader, with its errors naming file and line (numpy.loadtxt took 1.85 s
+// for the 10^6 points of 59 MB this reads in 0.28 s on one thread: 23:31 UTC 29 Nov, load 9).
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +24,7 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "contain/io/number_table.h"
 #include "contain/io/points_io.h"
 #include "errors.h"
 
@@ -33,31 +36,26 @@ using namespace pybind11::literals;
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double),
               "a point's numbers are its doubles side by side, as numpy's rows");
 
-// How many numbers the first point line of the file holds (separated as the reader separates
-// them: white space and commas), from its first 64 KB; 0 when those hold no point line.
-std::size_t numbers_on_first_point_line(const std::filesystem::path& path) {
+// How many numbers the first point line of a regular file holds, read from its first 64 KB by
+// the library's table parser (its blanks, commas, comments, byte order mark); nothing when those
+// hold no whole point line or the line is not a row of numbers (the reader then names it).
+std::optional<int> numbers_on_first_point_line(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   std::array<char, 1U << 16U> head{};
   file.read(head.data(), static_cast<std::streamsize>(head.size()));
-  const std::string_view text(head.data(), static_cast<std::size_t>(file.gcount()));
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view line = text.substr(start, end - start);
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first != std::string_view::npos && line[first] != '#') {
-      std::size_t numbers = 0;
-      bool in_number = false;
-      for (const char c : line) {
-        const bool separator = c == ' ' || c == '\t' || c == '\r' || c == ',';
-        if (!separator && !in_number) ++numbers;
-        in_number = !separator;
-      }
-      return numbers;
-    }
-    start = end + 1;
+  const auto size = static_cast<std::size_t>(file.gcount());
+  const std::string_view text(head.data(), size);
+  const bool whole = size < head.size();  // the file ends within: its last line counts too
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t newline = text.find('\n', start);
+    if (newline == std::string_view::npos && !whole) return std::nullopt;
+    const std::size_t end = newline == std::string_view::npos ? text.size() : newline + 1;
+    const auto row = io::parse_number_table(text.substr(start, end - start), "");
+    if (!row) return std::nullopt;
+    if (row->rows() > 0) return row->columns;
+    start = end;
   }
-  return 0;
+  return std::nullopt;
 }
 
 // Every point of the file, its numbers appended in file order (GIL released by the caller).
@@ -68,11 +66,14 @@ Status read_all(const std::filesystem::path& path, int threads, std::vector<doub
   return read(path, io::ChunkedReading{.threads = threads},
               [&](std::span<const Point> points, double /*share*/) {
                 const auto* first = reinterpret_cast<const double*>(points.data());
-                values.insert(values.end(), first, first + points.size() * sizeof(Point) / 8);
+                values.insert(values.end(), first,
+                              first + points.size() * sizeof(Point) / sizeof(double));
               });
 }
 
-// The arguments both readers share, checked; the dimension when it is given.
+// The arguments both readers share, checked; the dimension when it is given. It is guessed only
+// from a regular file: the first line of a pipe or of standard input, read to guess, would be
+// lost to the reader.
 void check_arguments(const char* name, const std::filesystem::path& path,
                      std::optional<int> dimension, int threads) {
   const std::string function = std::string("contain.") + name;
@@ -81,8 +82,12 @@ void check_arguments(const char* name, const std::filesystem::path& path,
                           std::to_string(*dimension));
   }
   if (threads < 0) throw py::value_error(function + ": threads must be 0 (all) or more");
-  if (!dimension && path == "-") {
-    throw py::value_error(function + ": standard input (\"-\") needs dimension=2 or 3");
+  std::error_code error;
+  if (!dimension && (path == "-" || (std::filesystem::exists(path, error) &&
+                                     !std::filesystem::is_regular_file(path, error)))) {
+    throw py::value_error(function +
+                          ": standard input, a pipe or a device needs dimension=2 or 3 (it is "
+                          "guessed from a regular file's first point line only)");
   }
 }
 
@@ -119,9 +124,10 @@ py::array_t<double> read_points(const std::filesystem::path& path, std::optional
 
 // The points of a file a chunk at a time, for files larger than memory: the library's reader runs
 // on a thread of its own and hands over one chunk at a time (it waits while a chunk is untaken),
-// so the process holds the reader's block and at most three chunks (the one being filled, the
-// one waiting, the caller's). Every chunk but the last has exactly `chunk` points. Dropping the
-// iterator stops the reader.
+// so the process holds the reader's block with its parsed points (up to 8 MB of text on several
+// threads, and for a mapped file up to 24 MB of its pages) and at most three chunks (the one
+// being filled, the one waiting, the caller's). Every chunk but the last has exactly `chunk`
+// points. Dropping the iterator stops the reader.
 class PointChunks {
  public:
   PointChunks(std::filesystem::path path, int columns, std::size_t chunk, int threads)
@@ -136,7 +142,9 @@ class PointChunks {
         if (!filling_.empty()) give(std::move(filling_));
       } catch (const Stopped&) {
       } catch (const std::exception& e) {
-        status = Error{.kind = ErrorKind::io, .message = e.what()};
+        status = Error{.kind = ErrorKind::io,
+                       .message = std::string("reading stopped: ") + e.what(),
+                       .source = path.string()};
       }
       const std::lock_guard lock(mutex_);
       if (!status) error_ = status.error();
@@ -152,20 +160,27 @@ class PointChunks {
       stopped_ = true;
       changed_.notify_all();
     }
-    reader_.join();  // soon: the reader stops at its next chunk (it never needs the GIL)
+    // Soon for a file: the reader stops at its next piece (a block's parse at most); a pipe's
+    // reader first waits for the pipe's next data or its end. It never needs the GIL.
+    reader_.join();
   }
 
   py::array_t<double> next() {
     std::vector<double> values;
-    {
-      py::gil_scoped_release release;
-      std::unique_lock lock(mutex_);
-      changed_.wait(lock, [&] { return waiting_.has_value() || finished_; });
-      if (waiting_) {
-        values = std::move(*waiting_);
-        waiting_.reset();
-        changed_.notify_all();
+    for (bool ready = false; !ready;) {
+      {
+        py::gil_scoped_release release;
+        std::unique_lock lock(mutex_);
+        ready = changed_.wait_for(lock, std::chrono::milliseconds(100),
+                                  [&] { return waiting_.has_value() || finished_; });
+        if (ready && waiting_) {
+          values = std::move(*waiting_);
+          waiting_.reset();
+          changed_.notify_all();
+        }
       }
+      // A wait on a slow pipe answers Ctrl-C (KeyboardInterrupt) within a tenth of a second.
+      if (!ready && PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
     if (values.empty()) {
       if (error_) throw Failure{*std::exchange(error_, std::nullopt)};
@@ -185,6 +200,7 @@ class PointChunks {
   template <class Point>
   std::function<void(std::span<const Point>, double)> hand_over() {
     return [this](std::span<const Point> points, double /*share*/) {
+      if (stopped_) throw Stopped{};  // dropped while a long chunk fills: no more parsing
       const auto* first = reinterpret_cast<const double*>(points.data());
       const auto* last = first + points.size() * sizeof(Point) / sizeof(double);
       while (first != last) {
@@ -216,15 +232,17 @@ class PointChunks {
   std::optional<std::vector<double>> waiting_;
   std::optional<Error> error_;
   bool finished_ = false;
-  bool stopped_ = false;
-  std::thread reader_;  // last: started once the members it uses exist
+  std::atomic<bool> stopped_ = false;  // set under mutex_; read by the reader between pieces
+  std::thread reader_;  // last: joined (by the destructor's body) before the members it uses go
 };
 
 std::unique_ptr<PointChunks> iter_points(const std::filesystem::path& path,
                                          std::optional<int> dimension, std::size_t chunk,
                                          int threads) {
   check_arguments("iter_points", path, dimension, threads);
-  if (chunk == 0) throw py::value_error("contain.iter_points: chunk must be at least 1 point");
+  if (chunk == 0 || chunk > (std::size_t{1} << 40U)) {
+    throw py::value_error("contain.iter_points: chunk must be 1 to 2^40 points");
+  }
   int columns = 0;
   {
     py::gil_scoped_release release;
@@ -253,8 +271,11 @@ The points of a point file (the format of read_points) as float64 arrays of shap
 (K, 3), K at most `chunk`, in file order: for files larger than memory, e.g.
 `for block in contain.iter_points("huge.xyz"): index.locate(block)`. The file is parsed ahead on
 `threads` threads (0: all cores) while the caller works on the last chunk; at most three chunks
-and a block of text are held at once. Errors as read_points, raised when the iteration reaches
-the bad line; an iterator dropped early stops the reading.
+and a block of text with its points (tens of MB) are held at once, whatever the file's size.
+Errors as read_points, raised when the iteration reaches the bad line; an iterator dropped early
+stops the reading. A regular file is read through a memory map: it must not be shortened while
+it is read (a shortening found before the pages are read is an error; one between the check and
+the read ends the process with SIGBUS, as for any reader of a mapped file).
 )doc");
   m.def("read_points", &read_points, "path"_a, "dimension"_a = py::none(), py::kw_only(),
         "threads"_a = 0, R"doc(

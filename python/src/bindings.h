@@ -25,6 +25,6 @@ void bind_layer(py::module_& m);     // RegionLayer, SolidScene (many shapes at 
 void bind_distance(py::module_& m);  // MeshDistance, RegionDistance, MeshPairDistance
 void bind_mesh_boolean(py::module_& m);  // mesh_boolean, repair_solid, MeshBooleanResult
 void bind_slice(py::module_& m);         // slice_mesh, shadow, mesh_section
-void bind_points(py::module_& m);        // read_points
+void bind_points(py::module_& m);        // read_points, iter_points, PointChunks
 
 }  // namespace contain::python

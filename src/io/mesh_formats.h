@@ -46,6 +46,8 @@ void append_vertex_line(std::string& out, const char* prefix, Vec3 v);
 
 /// `header`, then "VERTEX x y z\n" per vertex (the shortest round-trip form of each coordinate)
 /// and "FACE i j k\n" per triangle with indices from `base`: the text of OBJ, OFF and ASCII PLY.
+/// VERTEX and FACE are at most 2 bytes ("v ", "f ", "3 ", ""): the lines are put in place in
+/// buffers sized for them (a longer prefix is written by append_vertex_line).
 [[nodiscard]] std::string format_lines(const Mesh& mesh, const std::string& header,
                                        std::string_view vertex, std::string_view face, int base);
 

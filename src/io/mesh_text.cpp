@@ -1,6 +1,7 @@
 // OBJ and OFF: line-based text formats, read in one pass over the whole file in memory.
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
@@ -544,6 +545,7 @@ char* put_index_line(char* at, std::string_view prefix, const TriangleIndices& t
 // (a buffer for the whole text, zeroed by resizing, was a pass more over megabytes).
 std::string format_lines(const Mesh& mesh, const std::string& header, std::string_view vertex,
                          std::string_view face, int base) {
+  assert(vertex.size() <= kPrefixRoom && face.size() <= kPrefixRoom && "lines sized for these");
   std::string out;
   out.reserve(header.size() + mesh.vertices.size() * 48 + mesh.triangles.size() * 24);
   out += header;

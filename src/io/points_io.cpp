@@ -210,8 +210,16 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
   const std::size_t mark = text.size() - detail::skip_bom(text).size();
   ReadPosition at{.bytes = mark};
   std::vector<Slice<Point>> slices;
+  const auto unreadable = [&] {
+    return detail::make_error(ErrorKind::io,
+                              "the file could not be read to its end (shortened while being "
+                              "read, or a read error)",
+                              source);
+  };
   for (std::size_t from = 0; from < text.size();) {
     std::size_t to = text.size();
+    // Present before the search for a line end reads them.
+    if (!mapped.reach(std::min(text.size(), from + block))) return unreadable();
     while (text.size() - from >= block) {
       const std::size_t newline = text.rfind('\n', from + block - 1);
       if (newline != std::string_view::npos && newline >= from) {
@@ -220,7 +228,7 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
       }
       block *= 2;
     }
-    mapped.reach(to);
+    if (!mapped.reach(to)) return unreadable();
     const std::size_t first = std::max(from, mark);
     if (Status parsed = parse_block(text.substr(first, to - first), reading, source, at,
                                     text.size(), slices, consume);

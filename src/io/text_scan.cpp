@@ -194,17 +194,20 @@ MappedText::~MappedText() {
   if (data_ != nullptr) ::munmap(const_cast<char*>(data_), size_);
 }
 
-void MappedText::reach(std::size_t to) {
-  if (to <= present_) return;
+bool MappedText::reach(std::size_t to) {
+  if (to <= present_) return true;
   const std::size_t from = present_ / page_bytes() * page_bytes();
   present_ = std::min(size_, std::max(to, present_ + kPresentWindow));
 #if defined(MADV_POPULATE_READ)
-  // Faults a window at once instead of a page (or a fault-around of 16) at a time; a hint: on a
-  // kernel without it the pages come by faults as ever.
-  (void)::madvise(const_cast<char*>(data_) + from, present_ - from, MADV_POPULATE_READ);
+  // Faults a window at once instead of a page (or a fault-around of 16) at a time. Otherwise a
+  // hint: on a kernel without it (EINVAL) the pages come by faults as ever.
+  if (::madvise(const_cast<char*>(data_) + from, present_ - from, MADV_POPULATE_READ) != 0) {
+    return errno != EFAULT && errno != EIO;  // pages past the file's end, or unreadable
+  }
 #else
   (void)from;
 #endif
+  return true;
 }
 
 void MappedText::release(std::size_t from) {
@@ -220,7 +223,9 @@ std::optional<MappedText> MappedText::map(std::FILE*, std::uintmax_t) {
 MappedText::MappedText(MappedText&& other) noexcept
     : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
 MappedText::~MappedText() = default;
-void MappedText::reach(std::size_t) {}
+bool MappedText::reach(std::size_t) {
+  return true;
+}
 void MappedText::release(std::size_t) {}
 #endif
 

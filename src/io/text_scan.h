@@ -84,8 +84,10 @@ class MappedText {
 
   /// The file's bytes.
   [[nodiscard]] std::string_view text() const { return {data_, size_}; }
-  /// Makes the bytes before `to` present in memory, a window at a time ahead of it.
-  void reach(std::size_t to);
+  /// Makes the bytes before `to` present in memory, a window at a time ahead of it. False when
+  /// the system says those pages cannot be read (the file shortened since it was mapped, or a
+  /// read error): touching them would end the process (SIGBUS), so the reader stops first.
+  [[nodiscard]] bool reach(std::size_t to);
   /// Drops the pages wholly before `from` from the mapping (their text is no longer used).
   void release(std::size_t from);
 

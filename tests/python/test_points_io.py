@@ -3,8 +3,10 @@ rounded double of its text (Python's float() is the oracle), the dimension from 
 line, the same points whatever the threads and chunks, errors naming file and line, an
 iteration stopped early, and the command's answers on the points it reads."""
 
+import os
 import random
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -67,6 +69,39 @@ def test_the_points_are_the_same_on_one_thread_and_on_all(tmp_path):
     assert one.tobytes() == every.tobytes() == points.tobytes()
 
 
+def test_the_dimension_is_guessed_as_the_reader_reads_the_first_line(tmp_path):
+    cases = {
+        "bom.txt": "\ufeff# x y\n1 2\n3 4\n",           # a byte order mark, then a comment
+        "trailing.txt": "1 2 # a note\n3 4\n",            # a comment after the numbers
+        "blanks.txt": "\v\f\n 1,\t2 \r\n3 4\n",          # blank lines of other blanks, CRLF
+        "late.txt": "#\n" * 10_000 + "1 2\n",              # the first point past a block of comments
+    }
+    for name, text in cases.items():
+        path = tmp_path / name
+        path.write_bytes(text.encode("utf-8"))
+        got = contain.read_points(path)
+        assert got.shape[1] == 2, name
+        assert got[0].tolist() == [1.0, 2.0], name
+        assert next(contain.iter_points(path)).shape[1] == 2, name
+
+
+def test_a_pipe_needs_the_dimension_and_is_read_whole(tmp_path):
+    fifo = tmp_path / "points.fifo"
+    os.mkfifo(fifo)
+    with pytest.raises(ValueError, match="pipe"):
+        contain.read_points(fifo)
+
+    def write():
+        with open(fifo, "w") as out:
+            out.write("1 2 3\n4 5 6\n")
+
+    writer = threading.Thread(target=write)
+    writer.start()
+    got = contain.read_points(fifo, 3)
+    writer.join()
+    assert got.tolist() == [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]
+
+
 def test_files_without_points_give_empty_arrays(tmp_path):
     empty = tmp_path / "empty.txt"
     empty.write_text("")
@@ -114,8 +149,6 @@ def test_errors_name_the_file_and_line(tmp_path):
         contain.read_points(bad, 4)
     with pytest.raises(ValueError, match="threads"):
         contain.read_points(bad, threads=-1)
-    with pytest.raises(ValueError, match="standard input"):
-        contain.read_points("-")
 
 
 def test_located_points_answer_as_the_command_reading_the_same_file(tmp_path, cli):
@@ -168,16 +201,20 @@ def test_chunks_before_a_bad_line_come_first_then_its_error(tmp_path):
     assert (whole[:, 0] == np.arange(len(whole))).all() and (whole[:, 2] == 1.0).all()
 
 
-def test_an_iteration_dropped_early_stops_the_reader(tmp_path):
+def test_an_iteration_dropped_midway_or_before_its_first_chunk_lets_go(tmp_path):
+    """Dropped while its reader waits to hand over a chunk, or while it fills one chunk of the
+    whole file: the drop returns (the reader stops and is joined) and nothing is left held."""
     rng = np.random.default_rng(9)
     path = tmp_path / "big.xyz"
-    np.savetxt(path, rng.uniform(size=(400_000, 3)), fmt="%.17g")
-    for _ in range(20):
-        chunks = contain.iter_points(path, chunk=1000)
-        first = next(chunks)
-        assert first.shape == (1000, 3)
-        del chunks  # the reader, waiting to hand over its next chunk, stops
-    assert len(list(contain.iter_points(tmp_path / "big.xyz", chunk=1000))) == 400
+    points = rng.uniform(size=(400_000, 3))
+    np.savetxt(path, points, fmt="%.17g")
+    for chunk in (1000, 10**9):
+        for threads in (1, 0):
+            chunks = contain.iter_points(path, chunk=chunk, threads=threads)
+            if chunk == 1000:
+                assert next(chunks).tobytes() == points[:1000].tobytes()
+            del chunks
+    assert len(list(contain.iter_points(path, chunk=1000))) == 400
 
 
 def test_iter_points_checks_its_arguments(tmp_path):
@@ -185,10 +222,14 @@ def test_iter_points_checks_its_arguments(tmp_path):
     path.write_text("1 2\n")
     with pytest.raises(ValueError, match="chunk"):
         contain.iter_points(path, chunk=0)
+    with pytest.raises(ValueError, match="chunk"):
+        contain.iter_points(path, chunk=2**41)
     with pytest.raises(ValueError, match="dimension must be 2 or 3"):
         contain.iter_points(path, 1)
     with pytest.raises(ValueError, match="standard input"):
         contain.iter_points("-")
+    with pytest.raises(ValueError, match="standard input"):
+        contain.read_points("-")
     with pytest.raises(contain.ContainIOError):
         next(contain.iter_points(tmp_path / "missing.txt", 3))
     with pytest.raises(contain.ContainError, match="found 2 numbers on the line, expected 3"):
