@@ -398,7 +398,8 @@ std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int c
     return true;
   };
   if (cell.edges_end - cell.edges_begin == 1) {
-    // One edge, in the slot: a side edge of the cell is one of its edges, so it is this one.
+    // One edge, in the slot: a side edge of the cell is one of its edges, so it is this one
+    // (settle_cells writes at most that one; a loaded file is checked for it).
     const Vec2 a = slot.first.a, b = slot.first.b;
     if (cell.side_end != cell.side_begin &&
         !add_side(a.x <= b.x ? a : b, a.x <= b.x ? b : a, a.x < b.x ? 1 : -1)) {

@@ -22,6 +22,10 @@ struct RegionLayerFile {
   static Status read(index_bytes::Reader& r, PolygonIndex& index);
   static void write(const RegionLayer& layer, index_bytes::Writer& w);
   static Result<RegionLayer> read(index_bytes::Reader& r);
+
+ private:
+  static bool one_edge_cell_sides_are_its_edge(const PolygonIndex& index,
+                                               const PolygonIndex::EdgeCell& c);
 };
 
 namespace {
@@ -48,6 +52,20 @@ bool ranges_within(std::uint32_t begin, std::uint32_t end, std::size_t size) {
 }
 
 }  // namespace
+
+// What settle_in_edge_cell's one-edge path takes from the builder (settle_cells: a cell's side
+// edges are its edges that cross its right side): a cell of one edge has no side edge, or one,
+// that edge as settle_cells writes it. (Its ranges are already checked.)
+bool RegionLayerFile::one_edge_cell_sides_are_its_edge(const PolygonIndex& index,
+                                                       const PolygonIndex::EdgeCell& c) {
+  if (c.edges_end - c.edges_begin != 1 || c.side_end == c.side_begin) return true;
+  if (c.side_end - c.side_begin != 1) return false;
+  const PolygonIndex::CellEdge& e = index.edges_[c.edges_begin];
+  const PolygonIndex::SideEdge& s = index.side_edges_[c.side_begin];
+  const bool rightward = e.a.x <= e.b.x;
+  return s.l == (rightward ? e.a : e.b) && s.r == (rightward ? e.b : e.a) &&
+         s.dir == (e.a.x < e.b.x ? 1 : -1);
+}
 
 void RegionLayerFile::write(const PolygonIndex& index, index_bytes::Writer& w) {
   w.put<std::uint8_t>(static_cast<std::uint8_t>(index.fill_));
@@ -115,13 +133,23 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
   }
   if (!grid_spans(index.x_, index.y_, index.bounds_, index.cells_.size()))
     return bad("a region's grid does not span its box");
-  for (std::uint32_t code : index.cells_)
-    if (code >= 2 && code - 2 >= index.edge_cells_.size()) return bad("a region's cell code");
+  // locate finds an edge cell's record by its code, locate_settled by its rank among the edge
+  // cells in cell order (prepare_queries): the same record only with the codes the builder
+  // writes, 2, 3, 4, ... in cell order, one per record.
+  std::size_t edge_cells = 0;
+  for (std::uint32_t code : index.cells_) {
+    if (code < 2) continue;
+    if (code - 2 != edge_cells) return bad("a region's cell code");
+    ++edge_cells;
+  }
+  if (edge_cells != index.edge_cells_.size()) return bad("a region's cell code");
   for (const PolygonIndex::EdgeCell& c : index.edge_cells_) {
     if (!ranges_within(c.edges_begin, c.edges_end, index.edges_.size()) ||
         !ranges_within(c.side_begin, c.side_end, index.side_edges_.size())) {
       return bad("a region's cell lists edges that do not exist");
     }
+    if (!one_edge_cell_sides_are_its_edge(index, c))
+      return bad("a one-edge cell's side edges are not its edge");
   }
   for (const PolygonIndex::CellEdge& e : index.edges_)
     if (!finite(e.a) || !finite(e.b)) return bad("an edge is not finite");

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "inside/mesh_test_meshes.h"
@@ -508,6 +510,123 @@ TEST(PolygonIndexFile, LoadedPolygonIndexAnswersExactlyAsFreshAndFlippedBytesAre
       ASSERT_FALSE(parse_polygon_index(damaged).ok()) << i;
     }
     EXPECT_FALSE(parse_region_layer(bytes).ok());  // another kind
+  }
+}
+
+// Where a saved PolygonIndex's arrays lie in its file (the order RegionLayerFile writes them:
+// fill, box, two axes, then each array after its count): offsets of their first elements.
+struct PolygonIndexLayout {
+  std::size_t cells = 0, cell_count = 0;            // std::uint32_t codes
+  std::size_t edge_cells = 0, edge_cell_count = 0;  // 5 four-byte fields each
+  std::size_t side_edges = 0, side_edge_count = 0;  // l, r, dir: 36 bytes each
+};
+
+template <class T>
+T read_at(std::span<const std::byte> bytes, std::size_t at) {
+  T value;
+  std::memcpy(&value, bytes.data() + at, sizeof value);
+  return value;
+}
+
+template <class T>
+void write_at(std::vector<std::byte>& bytes, std::size_t at, T value) {
+  std::memcpy(bytes.data() + at, &value, sizeof value);
+}
+
+PolygonIndexLayout layout_of(std::span<const std::byte> bytes) {
+  PolygonIndexLayout l;
+  std::size_t at = index_header_size + 1 + 32 + 20 + 20;
+  const auto array = [&](std::size_t element, std::size_t& count) {
+    count = static_cast<std::size_t>(read_at<std::uint64_t>(bytes, at));
+    const std::size_t first = at + 8;
+    at = first + element * count;
+    return first;
+  };
+  std::size_t edge_count = 0;
+  l.cells = array(4, l.cell_count);
+  l.edge_cells = array(20, l.edge_cell_count);
+  array(32, edge_count);
+  l.side_edges = array(36, l.side_edge_count);
+  return l;
+}
+
+// locate finds an edge cell's record by its code, locate_settled by its rank among the edge
+// cells: codes that are not 2, 3, 4, ... in cell order (each below the edge cells' count + 2,
+// which is all the loader checked before) are refused, not read past the records.
+TEST(PolygonIndexFile, CellCodesThatDoNotCountTheEdgeCellsInCellOrderAreRefused) {
+  std::mt19937_64 rng(15);
+  const std::vector<Ring> rings{test::random_star(rng, 40, 0.0, 0.0, 1.0)};
+  const PolygonIndex index(std::span<const Ring>(rings), {.min_cells = 256});
+  const auto bytes = format_index(index, 0);
+  const PolygonIndexLayout l = layout_of(bytes);
+  ASSERT_EQ(l.cell_count, index.stats().cells);
+  ASSERT_EQ(l.edge_cell_count, index.stats().edge_cells);
+  std::vector<std::size_t> edge, empty;  // where the codes of edge cells and of empty cells lie
+  for (std::size_t c = 0; c < l.cell_count; ++c) {
+    const std::size_t at = l.cells + 4 * c;
+    (read_at<std::uint32_t>(bytes, at) >= 2 ? edge : empty).push_back(at);
+  }
+  ASSERT_GE(edge.size(), 3U);
+  ASSERT_FALSE(empty.empty());
+  const auto last = static_cast<std::uint32_t>(edge.size() + 1);
+  using Change = std::vector<std::pair<std::size_t, std::uint32_t>>;  // (where, new code)
+  const std::vector<Change> changes{
+      {{edge[1], 2}},                // a code repeated
+      {{edge[1], 2}, {edge[2], 2}},  // three cells coded 2
+      {{edge[0], 3}, {edge[1], 2}},  // two codes swapped
+      {{empty.front(), last}},       // an empty cell given the last record too
+      {{edge.back(), 0}},            // an edge cell made empty: a record left over
+      {{edge.back(), last - 1}},     // ... or read twice
+  };
+  auto resealed = bytes;
+  reseal(resealed);
+  ASSERT_TRUE(parse_polygon_index(resealed).ok());
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    auto crafted = bytes;
+    for (const auto& [at, code] : changes[k])
+      write_at(crafted, at, code);
+    reseal(crafted);
+    const auto loaded = parse_polygon_index(crafted);
+    ASSERT_FALSE(loaded.ok()) << k;
+    EXPECT_NE(loaded.error().message.find("cell code"), std::string::npos)
+        << k << ": " << loaded.error().message;
+  }
+}
+
+// locate_settled takes the side edge of a cell of one edge to be that edge (the builder's side
+// edges are the cell's edges that cross its right side): a file where it is not is refused.
+TEST(PolygonIndexFile, OneEdgeCellWhoseSideEdgesAreNotItsEdgeIsRefused) {
+  std::mt19937_64 rng(16);
+  const std::vector<Ring> rings{test::random_star(rng, 40, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  const auto bytes = format_index(index, 0);
+  const PolygonIndexLayout l = layout_of(bytes);
+  ASSERT_EQ(l.edge_cell_count, index.stats().edge_cells);
+  // The record of a cell of one edge that crosses its right side.
+  std::size_t record = 0;
+  for (std::size_t k = 0; k < l.edge_cell_count && record == 0; ++k) {
+    const std::size_t at = l.edge_cells + 20 * k;
+    const auto field = [&](int f) { return read_at<std::uint32_t>(bytes, at + 4 * f); };
+    if (field(1) - field(0) != 1 || field(3) - field(2) != 1 || field(3) >= l.side_edge_count)
+      continue;
+    // The next side edge is another edge (not the same one crossing a cell further right).
+    const std::byte* side = bytes.data() + l.side_edges + 36 * field(2);
+    if (std::memcmp(side, side + 36, 36) != 0) record = at;
+  }
+  ASSERT_NE(record, 0U);
+  const auto side_begin = read_at<std::uint32_t>(bytes, record + 8);
+  const std::size_t dir = l.side_edges + 36 * side_begin + 32;
+  std::vector<std::vector<std::byte>> crafted(3, bytes);
+  write_at(crafted[0], dir, -read_at<std::int32_t>(bytes, dir));  // its direction reversed
+  write_at(crafted[1], record + 12, side_begin + 2);              // a second side edge
+  write_at(crafted[2], record + 8, side_begin + 1);               // another cell's side edge
+  write_at(crafted[2], record + 12, side_begin + 2);
+  for (std::size_t k = 0; k < crafted.size(); ++k) {
+    reseal(crafted[k]);
+    const auto loaded = parse_polygon_index(crafted[k]);
+    ASSERT_FALSE(loaded.ok()) << k;
+    EXPECT_NE(loaded.error().message.find("one-edge cell"), std::string::npos)
+        << k << ": " << loaded.error().message;
   }
 }
 

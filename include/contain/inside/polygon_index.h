@@ -113,8 +113,9 @@ class PolygonIndex {
   }
 
   /// Warms the cache for `locate_settled` at `point` (the record of its guessed cell where that
-  /// is an edge cell; the states themselves stay in the L1 cache), for callers' pipelines; no
-  /// effect on any answer.
+  /// is an edge cell, not the packed states: 2 bits a cell, they stay cached on small grids, 16 kB
+  /// for 2^16 cells, but at max_cells they are 256 kB and the word read here may miss), for
+  /// callers' pipelines; no effect on any answer.
   void prefetch(Vec2 point) const {
     const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
     if (cell < 0) return;
