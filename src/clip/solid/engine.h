@@ -4,7 +4,8 @@
 //   intersect.cpp  candidate pairs (BVH) and their exact intersections: constraints per triangle
 //   refine.cpp     each triangle split by its constraints (triangulate.cpp: the constrained
 //                  triangulation), points on shared edges given to every triangle on the edge
-//   label.cpp      the winding numbers of every input on both sides of each refined face
+//   label.cpp      on both sides of each refined face, how many inputs fill it and whether
+//                  the first input does
 //   output.cpp     the faces on the result's boundary, coplanar ones merged (merge_faces.cpp),
 //                  sheets kept apart (sheets.cpp), rounded and repaired by snap rounding
 //                  (snap.cpp, snap.h), checked exactly (validate.cpp)
@@ -92,8 +93,10 @@ class Soup {
   /// normal only where the filter cannot tell (it is made for so many triangles otherwise).
   [[nodiscard]] Projection projection(std::size_t t) const;
   std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
-  /// Of each triangle (empty for a degenerate one), for the pair stage: mesh_boolean frees
-  /// them once the pairs are found (later stages use `tree`, whose nodes hold their own boxes).
+  /// Of each triangle (empty for a degenerate one), for the pair stage: mesh_boolean
+  /// (engine.cpp) frees them once the pairs are found, so later stages must not read them (they
+  /// use `tree`, whose nodes hold their own boxes). The pair stage and region_soup (snap.cpp)
+  /// require one box per triangle.
   std::vector<Box3> boxes;
   bvh::Bvh tree;  ///< over `boxes`: the pairs and the rays of the labels
   std::size_t inputs = 0;
@@ -120,8 +123,13 @@ struct Vec3Equal {
 };
 
 /// Every exact point of the arrangement once; the input vertices first (point i is vertex i).
+/// Lifetime: a store that took a soup's index (add_vertices) reads that soup's `vertices` where
+/// they are, so the soup must outlive the store and keep its vertices unchanged (neither
+/// modified nor reallocated) while the store is used.
 class PointStore {
  public:
+  /// Room for `points` in all, the first `soup_vertices` of them a soup's vertices that
+  /// add_vertices will take (their doubles are read from the soup, not held: no room for them).
   void reserve(std::size_t points);
   /// The point's number, new or that of an equal point already stored.
   std::int32_t add(const ExactPoint& p);
@@ -129,7 +137,8 @@ class PointStore {
   std::int32_t add(Vec3 v);
   /// A soup's vertices as points 0 ... n - 1, in an empty store: as `add` of each, but a soup
   /// made by make_soup brings its index of them (distinct by welding), copied whole instead of
-  /// rebuilt by one scattered insert per vertex (a tenth of a large boolean).
+  /// rebuilt by one scattered insert per vertex (a tenth of a large boolean). Then the store
+  /// reads `soup.vertices` in place: the soup must outlive the store, vertices unchanged.
   void add_vertices(const Soup& soup);
   /// The same with the soup's index given up to the store (moved, not copied): made by
   /// make_soup with room for `store_room` of its vertices, it is the store's table as it is,
@@ -137,7 +146,7 @@ class PointStore {
   /// the index is taken (both forms, a soup of make_soup into an empty store), the soup's
   /// `vertices` stay the doubles of points 0 ... n - 1, read where they are, not copied (3 MB
   /// of fresh pages at two 131k-triangle spheres): the soup must outlive the store and keep
-  /// its vertices as they are.
+  /// its vertices unchanged (neither modified nor reallocated).
   void add_vertices(const Soup& soup, PointTable&& index);
   [[nodiscard]] const ExactPoint& point(std::int32_t i) const {
     return points_[static_cast<std::size_t>(i)];
@@ -146,7 +155,7 @@ class PointStore {
   /// Whether point i is written exactly at `rounded(i)`: a point of doubles, or an implicit point
   /// whose enclosure is one double in every coordinate (others count as rounded even when exact).
   /// A byte per point kept as points are added: the written mesh asks it of every point it
-  /// writes, where reading each 112-byte point was half of that stage's time (a cache miss each).
+  /// writes, where reading each 56-byte point was half of that stage's time (a cache miss each).
   [[nodiscard]] bool written_exactly(std::int32_t i) const {
     return exact_double_[static_cast<std::size_t>(i)] != 0;
   }

@@ -73,6 +73,10 @@ struct ExactPoint {
     return {{v.x, v.y, v.z}, {v.x, v.y, v.z}};
   }
 };
+#if defined(__x86_64__) && defined(__LP64__)
+// The size the comments above and PointStore::written_exactly count with (two shared_ptr, v).
+static_assert(sizeof(ExactPoint) == 56);
+#endif
 
 /// The double point v.
 [[nodiscard]] ExactPoint exact_point(Vec3 v);

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -318,6 +319,8 @@ std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std:
 
 template <class Points>
 std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
+  // One box per triangle: mesh_boolean frees them after this stage (Soup::boxes).
+  assert(soup.boxes.size() == soup.triangles.size());
   const std::vector<Box3>& boxes = soup.boxes;
   std::vector<TriangleWork> work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.

@@ -87,7 +87,9 @@ struct PatchScratch {
 class PatchProofs {
  public:
   /// `stars` from `proven_stars`: which corners are proven, the neighbours across the edges at
-  /// proven corners and the triangles' turns.
+  /// proven corners and the triangles' turns. Read during construction only, not kept: the pair
+  /// stage (intersect.cpp) frees them once the proofs are made. `soup` is kept and must outlive
+  /// the proofs.
   PatchProofs(const Soup& soup, const ProvenStars& stars);
 
   /// Whether the triangles under inner node `node` of `soup.tree` form an embedded patch whose

@@ -73,6 +73,11 @@ std::int32_t PointTable::find(Vec3 v, PointKeys keys) const {
 
 void PointStore::reserve(std::size_t points) {
   points_.reserve(points);
+  // Room for all `points`, though after add_vertices takes a soup's index rounded_ holds only
+  // the points after its vertices: the room left over is never touched (no page faults), and
+  // reserving only the points after the vertices measured more faults, not fewer (18,871
+  // against 18,726 at the union of two 131k-triangle spheres: where the allocator places the
+  // smaller block changes which freed pages later allocations reuse).
   rounded_.reserve(points);
   next_.reserve(points);
   first_of_.reserve(points);

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -253,6 +254,8 @@ constexpr std::array<int, 10> round_levels = {-1, -1, -1, 2, 5, 8, 11, 14, 17, 2
 // The soup with a hierarchy over the triangles of `region` only (the others get empty boxes):
 // the pair stage on it tests just their pairs, with the soup's own vertex and triangle numbers.
 Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
+  // One box per triangle: not a soup whose boxes mesh_boolean freed (Soup::boxes).
+  assert(soup.boxes.size() == soup.triangles.size());
   Soup out;
   out.vertices = soup.vertices;
   out.triangles = soup.triangles;

@@ -177,9 +177,10 @@ std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
   const std::size_t vertices = soup.vertices.size();
   // The corners at each vertex (3 t + k: triangle t's corner k), by a counting sort, in
   // ascending order (a triangle naming a vertex twice is listed twice, and fails the turns).
-  // Four bytes a corner, the link edge read again from the triangle when the star is proven:
-  // a buffer of link edges (12 bytes a corner) was 9.4 MB of fresh pages at a union of two
-  // 131k-triangle spheres, more than the proofs' own work in page faults.
+  // Four bytes a corner, the link edges read from the triangles by proven_star for every star of
+  // 3 to max_star corners, before its proof: a buffer of link edges (12 bytes a corner) was
+  // 9.4 MB of fresh pages at a union of two 131k-triangle spheres, more than the proofs' own
+  // work in page faults.
   std::vector<std::int32_t> start(vertices + 1, 0);
   for (const TriangleIndices& t : soup.triangles) {
     for (const std::int32_t i : t)

@@ -560,24 +560,26 @@ TEST(MeshBoolean, GridOfUnitCubesUnitesToOneBox) {
 // of integer corners: the exact volume is the count of unit cells the operation fills, each
 // cell's inputs counted apart from the boolean (an oracle of its own).
 TEST(MeshBoolean, ADozenOverlappingBoxesGiveTheCellCountedVolumeOfEveryOperation) {
+  // Every box holds the cell [2, 3]^3 (lo in [0, 2], hi in [3, 5] on each axis), so that no
+  // operation is empty (the intersection of a dozen boxes drawn anywhere nearly always was) and
+  // cells covered by 3, 5 ... boxes test xor beyond "covered once". The first is the whole grid
+  // [0, 5]^3, so that the difference keeps the cells the others miss (one drawn as they are was
+  // covered by them).
   std::mt19937_64 rng(12);
-  std::uniform_int_distribution<int> corner(0, 5);
-  std::vector<std::array<int, 6>> boxes;  // lo x, y, z, hi x, y, z
-  std::vector<Mesh> in;
+  std::uniform_int_distribution<int> low(0, 2), high(3, 5);
+  std::vector<std::array<int, 6>> boxes = {{0, 0, 0, 5, 5, 5}};  // lo x, y, z, hi x, y, z
+  std::vector<Mesh> in = {box_mesh({0, 0, 0}, {5, 5, 5})};
   while (boxes.size() < 12) {
     std::array<int, 6> b{};
-    bool flat = false;
-    for (int k = 0; k < 3; ++k) {
-      const int a = corner(rng), c = corner(rng);
-      flat = flat || a == c;
-      b[static_cast<std::size_t>(k)] = std::min(a, c);
-      b[static_cast<std::size_t>(k + 3)] = std::max(a, c);
+    for (std::size_t k = 0; k < 3; ++k) {
+      b[k] = low(rng);
+      b[k + 3] = high(rng);
     }
-    if (flat) continue;  // drawn again
     boxes.push_back(b);
     in.push_back(box_mesh({double(b[0]), double(b[1]), double(b[2])},
                           {double(b[3]), double(b[4]), double(b[5])}));
   }
+  int odd_beyond_one = 0;  // cells of the xor covered by 3 or more boxes
   for (const Op op : all_ops) {
     int cells = 0;
     for (int x = 0; x < 5; ++x) {
@@ -587,16 +589,17 @@ TEST(MeshBoolean, ADozenOverlappingBoxesGiveTheCellCountedVolumeOfEveryOperation
           for (const auto& b : boxes) {
             w.push_back(b[0] <= x && x < b[3] && b[1] <= y && y < b[4] && b[2] <= z && z < b[5]);
           }
-          cells += in_result(op, w) ? 1 : 0;
+          const bool in_op = in_result(op, w);
+          cells += in_op ? 1 : 0;
+          if (op == Op::xor_ && in_op && std::count(w.begin(), w.end(), 1) >= 3) ++odd_beyond_one;
         }
       }
     }
+    EXPECT_GT(cells, 0) << static_cast<int>(op);
     const clip::MeshBooleanResult r = checked(in, op, 100);
     EXPECT_EQ(exact_volume(r.mesh), mpq_class(cells)) << static_cast<int>(op);
-    if (op == Op::union_) {
-      EXPECT_GT(cells, 0);
-    }
   }
+  EXPECT_GT(odd_beyond_one, 0);
 }
 
 // Coplanar pieces of the result merged and triangulated again: a face keeps only the points on

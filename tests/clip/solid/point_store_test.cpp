@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -138,7 +139,7 @@ TEST(SolidPointTable, KeysInTwoArraysNumberPointsAsTheirConcatenationDoes) {
       head.push_back(v);
     }
   }
-  int found = 0;
+  int found = 0, found_in_head = 0;
   for (int i = 0; i < 4000; ++i) {  // through several growths of the table
     const Vec3 v = point() + Vec3{static_cast<double>(i % 97), 0, 0};
     const auto next = static_cast<std::int32_t>(all.size());
@@ -152,13 +153,35 @@ TEST(SolidPointTable, KeysInTwoArraysNumberPointsAsTheirConcatenationDoes) {
       tail.push_back(v);
     } else {
       ++found;
+      found_in_head += static_cast<std::size_t>(split_id) < head.size() ? 1 : 0;
     }
     ASSERT_EQ(split.find(v, clip::solid::PointKeys{head, tail}), whole.find(v, all));
   }
   EXPECT_EQ(split.size(), all.size());
   // Not vacuous: points found in both arrays, and new ones.
-  EXPECT_GT(found, 100);
+  EXPECT_GT(found_in_head, 0);
+  EXPECT_GT(found - found_in_head, 0);
   EXPECT_GT(tail.size(), 100U);
+  // -0 and +0 one key, directly: a head point with a zero found by its other sign, and a point
+  // with -0 added to the tail found, and not added again, by +0.
+  const clip::solid::PointKeys keys{head, tail};
+  int signed_zeros = 0;
+  for (std::size_t i = 0; i < head.size(); ++i) {
+    if (head[i].x != 0.0) continue;
+    const Vec3 flipped{-head[i].x, head[i].y, head[i].z};
+    ASSERT_NE(std::signbit(flipped.x), std::signbit(head[i].x));
+    EXPECT_EQ(split.find(flipped, keys), static_cast<std::int32_t>(i));
+    ++signed_zeros;
+  }
+  EXPECT_GT(signed_zeros, 0);
+  const Vec3 minus{-0.0, 1000.5, -0.0}, plus{0.0, 1000.5, 0.0};
+  const auto next = static_cast<std::int32_t>(all.size());
+  const auto [id, fresh] = split.try_emplace(minus, next, keys);
+  ASSERT_TRUE(fresh);
+  tail.push_back(minus);
+  const clip::solid::PointKeys grown{head, tail};
+  EXPECT_EQ(split.find(plus, grown), id);
+  EXPECT_EQ(split.try_emplace(plus, next + 1, grown), std::make_pair(id, false));
 }
 
 TEST(SolidPointStore, AReservedEmptyStoreFindsWhatItAdds) {
