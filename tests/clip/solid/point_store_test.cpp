@@ -11,12 +11,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/shapes/mesh.h"
 
 namespace contain::test {
@@ -52,10 +54,27 @@ std::vector<Mesh> store_test_inputs(std::mt19937& rng, int count) {
   return inputs;
 }
 
+// Where a random segment crosses the plane of the soup's triangle k % count (line_plane, as the
+// pair stage makes them), or nothing when the draws stay on one side.
+std::optional<ExactPoint> crossing_of_a_triangle(const Soup& soup, int k, std::mt19937& rng) {
+  std::uniform_real_distribution<double> coordinate(-4.0, 4.0);
+  const TriangleIndices& t = soup.triangles[static_cast<std::size_t>(k) % soup.triangles.size()];
+  const Vec3 a = soup.vertices[static_cast<std::size_t>(t[0])],
+             b = soup.vertices[static_cast<std::size_t>(t[1])],
+             c = soup.vertices[static_cast<std::size_t>(t[2])];
+  for (int draw = 0; draw < 8; ++draw) {
+    const Vec3 p{coordinate(rng), coordinate(rng), coordinate(rng)};
+    const Vec3 q{coordinate(rng), coordinate(rng), coordinate(rng)};
+    const Sign sp = predicates::orient3d(a, b, c, p), sq = predicates::orient3d(a, b, c, q);
+    if (sp != Sign::zero && sq == -sp) return clip::solid::line_plane(p, q, a, b, c);
+  }
+  return std::nullopt;
+}
+
 TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes) {
   std::mt19937 rng(25);
   std::uniform_real_distribution<double> coordinate(-4.0, 4.0);
-  int checked = 0, written_exactly = 0;
+  int checked = 0, written_exactly = 0, crossings = 0;
   for (int round = 0; round < 60; ++round) {
     const std::vector<Mesh> inputs = store_test_inputs(rng, 1 + round % 7);
     Result<Soup> soup = clip::solid::make_soup(inputs);
@@ -78,8 +97,9 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
       EXPECT_EQ(taken.first_rounded_to(soup->vertices[i]), id);
       EXPECT_TRUE(taken.written_exactly(id));
     }
-    // Points added after: the vertices again (found, not added), new points of doubles and
-    // midpoints (crossings of the store's kind), more than the reserved room (the table grows).
+    // Points added after: the vertices again (found, not added), new points of doubles,
+    // constructed points (centroids) and crossings of triangles' planes, more than the reserved
+    // room (the table grows).
     for (int k = 0; k < 3000; ++k) {
       std::int32_t a = 0, b = 0;
       if (k % 3 == 0) {
@@ -90,6 +110,16 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
         const Vec3 v{coordinate(rng), coordinate(rng), coordinate(rng)};
         a = taken.add(v);
         b = one_by_one.add(v);
+      } else if (const std::optional<ExactPoint> x =
+                     k % 6 == 5 ? crossing_of_a_triangle(*soup, k, rng) : std::nullopt;
+                 x) {
+        // A crossing (line_plane: the points the pair stage adds), added twice: found the
+        // second time by its exact equality, in both stores.
+        a = taken.add(*x);
+        b = one_by_one.add(*x);
+        ASSERT_EQ(taken.add(*x), a);
+        ASSERT_EQ(one_by_one.add(*x), b);
+        ++crossings;
       } else {
         const std::int32_t p =
             static_cast<std::int32_t>(static_cast<std::size_t>(k) % taken.size());
@@ -111,6 +141,7 @@ TEST(SolidPointStore, TakingOverTheSoupsIndexNumbersPointsAsAddingEachVertexDoes
     EXPECT_EQ(taken.size(), one_by_one.size());
   }
   EXPECT_EQ(checked, 60 * 3000);
+  EXPECT_GT(crossings, 60 * 100);
   // Not vacuous: midpoints of lattice points are doubles (exact), others are rounded.
   EXPECT_GT(written_exactly, 60 * 1000);
   EXPECT_LT(written_exactly, checked);
