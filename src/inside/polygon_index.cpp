@@ -267,7 +267,7 @@ PolygonIndex::PolygonIndex(std::span<const Ring> rings, const PolygonIndexOption
   stats_.edge_refs = edges_.size();
   settle_cells(lists.start, corner_windings(edges, x_, y_));
   prepare_queries();
-  stats_.edge_cells = edge_cells_.size();
+  stats_.edge_cells = slots_.size();
 }
 
 void PolygonIndex::prepare_queries() {
@@ -280,12 +280,10 @@ void PolygonIndex::prepare_queries() {
     packed_states_[c / 32] |= state << (2 * (c % 32));
     edge_cells += state == 2 ? 1 : 0;
   }
-  slots_.clear();
-  slots_.reserve(edge_cells_.size());
-  for (const EdgeCell& cell : edge_cells_) {
+  for (EdgeSlot& slot : slots_) {
     // (A loaded file's ranges are checked to lie within edges_, not to be non-empty.)
-    slots_.push_back(
-        {cell.edges_begin < cell.edges_end ? edges_[cell.edges_begin] : CellEdge{}, cell});
+    const EdgeCell& cell = slot.cell;
+    slot.first = cell.edges_begin < cell.edges_end ? edges_[cell.edges_begin] : CellEdge{};
   }
 }
 
@@ -315,8 +313,8 @@ void PolygonIndex::settle_cells(std::span<const std::uint32_t> start, std::span<
         }
       }
       cell.side_end = static_cast<std::uint32_t>(side_edges_.size());
-      cells_[c] = static_cast<std::uint32_t>(edge_cells_.size()) + 2u;
-      edge_cells_.push_back(cell);
+      cells_[c] = static_cast<std::uint32_t>(slots_.size()) + 2u;
+      slots_.push_back({CellEdge{}, cell});  // its first edge set by prepare_queries
     }
   }
 }
@@ -330,7 +328,7 @@ Location PolygonIndex::locate(Vec2 point) const {
   const int j = y_.cell_of(point.y);
   const std::uint32_t code = cells_[static_cast<std::size_t>(j * x_.cells() + i)];
   if (code < 2) return code == 1 ? Location::inside : Location::outside;
-  return locate_in_edge_cell(point, i, edge_cells_[code - 2]);
+  return locate_in_edge_cell(point, i, slots_[code - 2].cell);
 }
 
 std::optional<Location> PolygonIndex::settle_in_edge_cell(const Box2& box, int column,
@@ -448,8 +446,7 @@ std::size_t PolygonIndex::memory_bytes() const {
          cells_.capacity() * sizeof(std::uint32_t) +
          packed_states_.capacity() * sizeof(std::uint64_t) +
          edge_ranks_.capacity() * sizeof(std::uint32_t) + slots_.capacity() * sizeof(EdgeSlot) +
-         edge_cells_.capacity() * sizeof(EdgeCell) + edges_.capacity() * sizeof(CellEdge) +
-         side_edges_.capacity() * sizeof(SideEdge);
+         edges_.capacity() * sizeof(CellEdge) + side_edges_.capacity() * sizeof(SideEdge);
 }
 
 void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
@@ -464,7 +461,7 @@ void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
   // its edges. Prefetches only warm the cache (the guessed cell need not be the exact one), so
   // the answers do not change.
   const std::size_t bytes = cells_.size() * sizeof(std::uint32_t) +
-                            edge_cells_.size() * sizeof(EdgeCell) +
+                            slots_.size() * sizeof(EdgeCell) +  // the records read
                             edges_.size() * sizeof(CellEdge);
   if (bytes < (std::size_t{512} << 10)) {
     parallel_for(count, options, [&](std::size_t begin, std::size_t end) {
@@ -484,7 +481,7 @@ void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
         const std::ptrdiff_t c = guessed[(k + kRecordAhead) % kAhead];
         if (c >= 0) {
           const std::uint32_t code = cells_[static_cast<std::size_t>(c)];
-          if (code >= 2) __builtin_prefetch(&edge_cells_[code - 2]);
+          if (code >= 2) __builtin_prefetch(&slots_[code - 2]);
         }
       }
       if (k + kEdgesAhead < end) {
@@ -492,7 +489,7 @@ void PolygonIndex::locate(std::span<const Vec2> points, std::span<Location> out,
         if (c >= 0) {
           const std::uint32_t code = cells_[static_cast<std::size_t>(c)];
           if (code >= 2) {
-            const EdgeCell& cell = edge_cells_[code - 2];
+            const EdgeCell& cell = slots_[code - 2].cell;
             __builtin_prefetch(&edges_[cell.edges_begin]);
             if (cell.side_begin < side_edges_.size()) {
               __builtin_prefetch(&side_edges_[cell.side_begin]);

@@ -73,8 +73,9 @@ void RegionLayerFile::write(const PolygonIndex& index, index_bytes::Writer& w) {
   w.put(index.x_);
   w.put(index.y_);
   w.put_array<std::uint32_t>(index.cells_);
-  w.put<std::uint64_t>(index.edge_cells_.size());
-  for (const PolygonIndex::EdgeCell& c : index.edge_cells_) {
+  w.put<std::uint64_t>(index.slots_.size());
+  for (const PolygonIndex::EdgeSlot& slot : index.slots_) {
+    const PolygonIndex::EdgeCell& c = slot.cell;
     for (std::uint32_t v : {c.edges_begin, c.edges_end, c.side_begin, c.side_end})
       w.put(v);
     w.put<std::int32_t>(c.corner_winding);
@@ -101,8 +102,9 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
   index.x_ = r.get_axis();
   index.y_ = r.get_axis();
   index.cells_ = r.get_array<std::uint32_t>();
-  index.edge_cells_.resize(r.get_count(20));
-  for (PolygonIndex::EdgeCell& c : index.edge_cells_) {
+  index.slots_.resize(r.get_count(20));  // 20 bytes a record in the file
+  for (PolygonIndex::EdgeSlot& slot : index.slots_) {
+    PolygonIndex::EdgeCell& c = slot.cell;
     for (std::uint32_t* v : {&c.edges_begin, &c.edges_end, &c.side_begin, &c.side_end})
       *v = r.get<std::uint32_t>();
     c.corner_winding = r.get<std::int32_t>();
@@ -125,7 +127,7 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
   if (index.cells_.empty()) {
     // No grid: locate must stop at the box test, so the box holds no point (empty or NaN).
     const Box2& b = index.bounds_;
-    if (!index.edge_cells_.empty() || !index.edges_.empty() || !index.side_edges_.empty() ||
+    if (!index.slots_.empty() || !index.edges_.empty() || !index.side_edges_.empty() ||
         (b.min.x <= b.max.x && b.min.y <= b.max.y)) {
       return bad("a region without a grid holds edges or a box");
     }
@@ -142,8 +144,9 @@ Status RegionLayerFile::read(index_bytes::Reader& r, PolygonIndex& index) {
     if (code - 2 != edge_cells) return bad("a region's cell code");
     ++edge_cells;
   }
-  if (edge_cells != index.edge_cells_.size()) return bad("a region's cell code");
-  for (const PolygonIndex::EdgeCell& c : index.edge_cells_) {
+  if (edge_cells != index.slots_.size()) return bad("a region's cell code");
+  for (const PolygonIndex::EdgeSlot& slot : index.slots_) {
+    const PolygonIndex::EdgeCell& c = slot.cell;
     if (!ranges_within(c.edges_begin, c.edges_end, index.edges_.size()) ||
         !ranges_within(c.side_begin, c.side_end, index.side_edges_.size())) {
       return bad("a region's cell lists edges that do not exist");

@@ -28,7 +28,7 @@ struct PolygonIndexOptions {
   double cells_per_edge = 4.0;
   /// ... at least this many cells (small polygons get a fine grid for free) ...
   std::size_t min_cells = 4096;
-  /// ... and at most this many (memory: about 4.4 bytes per cell, 84 per edge cell and 32 per
+  /// ... and at most this many (memory: about 4.4 bytes per cell, 64 per edge cell and 32 per
   /// edge-cell pair). The grid is then coarsened (halved per axis) until the estimated edge-cell
   /// pairs are at most max(32 per edge, min_cells), so memory stays linear in the edges even when
   /// long edges cross the whole region (a star with long spikes); queries there read more edges
@@ -183,14 +183,14 @@ class PolygonIndex {
     if (!bounds_.contains(point)) return -1;
     return static_cast<std::ptrdiff_t>(y_.guess(point.y)) * x_.cells() + x_.guess(point.x);
   }
-  // packed_states_, edge_ranks_ and slots_ from cells_, edge_cells_ and edges_ (after
-  // construction, and after loading once those are checked).
+  // packed_states_, edge_ranks_ and the slots' first edges from cells_, slots_ and edges_
+  // (after construction, and after loading once those are checked).
   void prepare_queries();
   // The state (0, 1, 2) of cell c, from word c / 32 of packed_states_.
   [[nodiscard]] static unsigned state_in(std::uint64_t word, std::size_t c) {
     return static_cast<unsigned>(word >> (2 * (c % 32))) & 3U;
   }
-  // The rank of edge cell c among the edge cells (its index into edge_cells_ and slots_), from
+  // The rank of edge cell c among the edge cells (its index into slots_), from
   // word c / 32 of packed_states_: the edge cells before the word, and those before c within it
   // (state 2 is the only one with its high bit set).
   [[nodiscard]] std::size_t edge_rank(std::uint64_t word, std::size_t c) const {
@@ -206,7 +206,7 @@ class PolygonIndex {
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
   GridAxis x_, y_;  // the grid's columns and rows
-  // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: edge_cells_[k - 2].
+  // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: slots_[k - 2].
   std::vector<std::uint32_t> cells_;
   // The same cells' states 32 to a word (0 outside, 1 inside, 2 an edge cell; cell c in bits
   // 2 (c % 32) and up of word c / 32), read by locate_settled: 16 kB for the 2^16 cells of a
@@ -215,9 +215,9 @@ class PolygonIndex {
   std::vector<std::uint64_t> packed_states_;
   // Per word of packed_states_: the edge cells in the words before it (8 kB for 2^16 cells).
   std::vector<std::uint32_t> edge_ranks_;
-  // Per edge cell, in cell order (as edge_cells_): its record and first edge (locate_settled).
+  // Per edge cell, in cell order: its record and first edge (the record alone is what the file
+  // holds; locate reads it by the cell's code, locate_settled by its rank).
   std::vector<EdgeSlot> slots_;
-  std::vector<EdgeCell> edge_cells_;
   std::vector<CellEdge> edges_;
   std::vector<SideEdge> side_edges_;
   Stats stats_;

@@ -147,7 +147,8 @@ std::int32_t PointStore::add(const ExactPoint& p, Vec3 r) {
   rounded_.push_back(r);
   next_.push_back(-1);
   first_of_.push_back(first);
-  exact_double_.push_back(p.plain() || p.enclosure().lo == p.enclosure().hi ? 1 : 0);
+  const Enclosure bounds = p.enclosure();
+  exact_double_.push_back(bounds.lo == bounds.hi ? 1 : 0);  // (a point of doubles: lo = hi = v)
   return id;
 }
 
