@@ -36,6 +36,13 @@ using namespace pybind11::literals;
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double),
               "a point's numbers are its doubles side by side, as numpy's rows");
 
+// The points' numbers, row after row (the layout numpy's (N, 2) / (N, 3) arrays have).
+template <class Point>
+std::span<const double> numbers_of(std::span<const Point> points) {
+  return {reinterpret_cast<const double*>(points.data()),
+          points.size() * sizeof(Point) / sizeof(double)};
+}
+
 // How many numbers the first point line of a regular file holds, read from its first 64 KB by
 // the library's table parser (its blanks, commas, comments, byte order mark); nothing when those
 // hold no whole point line or the line is not a row of numbers (the reader then names it).
@@ -65,9 +72,8 @@ Status read_all(const std::filesystem::path& path, int threads, std::vector<doub
                                const std::function<void(std::span<const Point>, double)>&)) {
   return read(path, io::ChunkedReading{.threads = threads},
               [&](std::span<const Point> points, double /*share*/) {
-                const auto* first = reinterpret_cast<const double*>(points.data());
-                values.insert(values.end(), first,
-                              first + points.size() * sizeof(Point) / sizeof(double));
+                const std::span<const double> numbers = numbers_of(points);
+                values.insert(values.end(), numbers.begin(), numbers.end());
               });
 }
 
@@ -201,8 +207,9 @@ class PointChunks {
   std::function<void(std::span<const Point>, double)> hand_over() {
     return [this](std::span<const Point> points, double /*share*/) {
       if (stopped_) throw Stopped{};  // dropped while a long chunk fills: no more parsing
-      const auto* first = reinterpret_cast<const double*>(points.data());
-      const auto* last = first + points.size() * sizeof(Point) / sizeof(double);
+      const std::span<const double> numbers = numbers_of(points);
+      const double* first = numbers.data();
+      const double* const last = first + numbers.size();
       while (first != last) {
         // Room for a whole chunk up front, up to 24 MB (a chunk of 10^9 points grows as read).
         if (filling_.empty()) filling_.reserve(std::min<std::size_t>(chunk_values_, 3U << 20U));
