@@ -8,6 +8,7 @@
 
 #include "contain/core/next_double.h"
 #include "contain/predicates/orient2d.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/predicates/rounded_crossing.h"
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <compare>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -33,6 +35,9 @@ struct Interval {
 };
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// The filter of det[q - p, a - p, b - p] on the enclosures of p and of q, a, b (`rows`).
+std::optional<Sign> filtered_orient3d(const Enclosure& ep, const std::array<Enclosure, 3>& rows);
 
 // One step beyond a round-to-nearest result, which is within half a step of the exact value.
 // Inlined by force with Wide's operations: gcc kept them as calls, which with their ends'
@@ -60,7 +65,7 @@ Interval quotient_interval(const BigFloat& x, const BigFloat& w) {
   return {down(q - r), up(q + r)};
 }
 
-ExactPoint with_bounds(Homogeneous h) {
+ExactPoint with_bounds(Homogeneous h, const Hull& hull = {}) {
   Enclosure e;
   for (std::size_t i = 0; i < 3; ++i) {
     const Interval c = quotient_interval(h.x[i], h.w);
@@ -68,17 +73,73 @@ ExactPoint with_bounds(Homogeneous h) {
     e.hi[i] = c.hi;
   }
   ExactPoint p;
-  p.exact = std::make_shared<const Constructed>(Constructed{std::move(h), e});
+  p.exact = std::make_shared<const Constructed>(Constructed{std::move(h), e, hull});
   return p;
 }
 
-ExactPoint normalized(Homogeneous p) {
+ExactPoint normalized(Homogeneous p, const Hull& hull) {
   if (p.w.sign() == Sign::negative) {
     for (BigFloat& c : p.x)
       c = -c;
     p.w = -p.w;
   }
-  return with_bounds(std::move(p));
+  return with_bounds(std::move(p), hull);
+}
+
+// The hulls together (a combination of the points with positive weights has the union of
+// their hulls as its hull), or none when one is unknown or they do not fit.
+Hull joined(std::initializer_list<Hull> parts) {
+  Hull out;
+  for (const Hull& h : parts) {
+    if (h.size == 0 || out.size + h.size > hull_capacity) return {};
+    for (std::size_t i = 0; i < h.size; ++i)
+      out.points[out.size++] = h.points[i];
+  }
+  return out;
+}
+
+// The sign of a predicate affine in each of its points with positive weights, from its signs at
+// the hulls' points (`signs` calls `take` with each, and stops when it returns false): decided
+// unless two are opposite.
+template <class Signs>
+std::optional<Sign> hull_sign(Signs signs) {
+  bool positive = false, negative = false;
+  signs([&](Sign s) {
+    positive = positive || s == Sign::positive;
+    negative = negative || s == Sign::negative;
+    return !(positive && negative);
+  });
+  if (positive && negative) return std::nullopt;
+  return positive ? Sign::positive : (negative ? Sign::negative : Sign::zero);
+}
+
+// orient2d_dropped of three points by their hulls' points (the orientation is affine in each).
+std::optional<Sign> hull_orient2d(const Hull& a, const Hull& b, const Hull& c, int axis) {
+  if (a.size == 0 || b.size == 0 || c.size == 0) return std::nullopt;
+  return hull_sign([&](auto take) {
+    for (std::size_t i = 0; i < a.size; ++i) {
+      const Vec2 pa = drop_axis(a.points[i], axis);
+      for (std::size_t j = 0; j < b.size; ++j) {
+        const Vec2 pb = drop_axis(b.points[j], axis);
+        for (std::size_t k = 0; k < c.size; ++k) {
+          if (!take(predicates::orient2d(pa, pb, drop_axis(c.points[k], axis)))) return;
+        }
+      }
+    }
+  });
+}
+
+// Sign of coordinate k of a - b by the hulls' points.
+std::optional<Sign> hull_compare(const Hull& a, const Hull& b, int k) {
+  if (a.size == 0 || b.size == 0) return std::nullopt;
+  return hull_sign([&](auto take) {
+    for (std::size_t i = 0; i < a.size; ++i) {
+      for (std::size_t j = 0; j < b.size; ++j) {
+        const double x = coordinate(a.points[i], k), y = coordinate(b.points[j], k);
+        if (!take(x > y ? Sign::positive : (x < y ? Sign::negative : Sign::zero))) return;
+      }
+    }
+  });
 }
 
 // The big numbers of a crossing: p + t (q - p) with t = dp / (dp - dq), dx = n . (x - a), as
@@ -135,11 +196,10 @@ bool same_crossing(const ExactPoint& a, const ExactPoint& b) {
 // raised by 2^-46 relative and 2^-1019 absolute (underflow); an infinite or NaN term decides
 // nothing (every comparison with it fails). One straight evaluation: the interval operations
 // per product, each end rounded outward, cost about twice as much in the refinement.
-bool filtered_orient2d(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c, int axis,
+bool filtered_orient2d(const Enclosure& ea, const Enclosure& eb, const Enclosure& ec, int axis,
                        Sign& s) {
   const auto u = static_cast<std::size_t>((axis + 1) % 3),
              v = static_cast<std::size_t>((axis + 2) % 3);
-  const Enclosure ea = a.enclosure(), eb = b.enclosure(), ec = c.enclosure();
   const double x1 = eb.lo[u] - ea.lo[u], y2 = ec.lo[v] - ea.lo[v];
   const double y1 = eb.lo[v] - ea.lo[v], x2 = ec.lo[u] - ea.lo[u];
   const double rx1 = (eb.hi[u] - eb.lo[u]) + (ea.hi[u] - ea.lo[u]);
@@ -502,7 +562,7 @@ ExactPoint line_plane_enclosed(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
 }
 
 ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
-                     const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis) {
+                     const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis, bool proper) {
   const std::array<BigFloat, 3> l1 = cross3(dropped(p1, axis), dropped(p2, axis));
   const std::array<BigFloat, 3> l2 = cross3(dropped(q1, axis), dropped(q2, axis));
   const std::array<BigFloat, 3> x = cross3(l1, l2);  // (u, v, w) of the crossing
@@ -516,7 +576,14 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
   out.x[static_cast<std::size_t>(axis)] =
       d * x[2] - component(n, iu) * x[0] - component(n, iv) * x[1];
   out.w = x[2] * nk;
-  return normalized(std::move(out));
+  // Strictly inside both segments: a combination of either's ends with positive weights (the
+  // projection to the plane keeps the ratio along a line); the smaller hull kept.
+  Hull hull;
+  if (proper) {
+    const Hull hp = joined({hull_of(p1), hull_of(p2)}), hq = joined({hull_of(q1), hull_of(q2)});
+    hull = hp.size == 0 || (hq.size != 0 && hq.size < hp.size) ? hq : hp;
+  }
+  return normalized(std::move(out), hull);
 }
 
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
@@ -526,7 +593,15 @@ bool same_point(const ExactPoint& a, const ExactPoint& b) {
   for (std::size_t i = 0; i < 3; ++i) {
     if (ea.hi[i] < eb.lo[i] || eb.hi[i] < ea.lo[i]) return false;
   }
-  return same_exact(a, b);
+  // Equal when every coordinate is, different when one is not: by the hulls where they decide.
+  const Hull ha = hull_of(a), hb = hull_of(b);
+  bool all_equal = true;
+  for (int i = 0; i < 3; ++i) {
+    const std::optional<Sign> s = hull_compare(ha, hb, i);
+    if (s && *s != Sign::zero) return false;
+    all_equal = all_equal && s.has_value();
+  }
+  return all_equal || same_exact(a, b);
 }
 
 Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
@@ -538,6 +613,7 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
   const Enclosure ea = a.enclosure(), eb = b.enclosure();
   if (ea.hi[k] < eb.lo[k]) return Sign::negative;
   if (ea.lo[k] > eb.hi[k]) return Sign::positive;
+  if (const std::optional<Sign> s = hull_compare(hull_of(a), hull_of(b), i)) return *s;
   return compare_exact(a, b, k);
 }
 
@@ -551,7 +627,13 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
   if (on_defining_line(a, b, c) || on_defining_line(b, c, a) || on_defining_line(c, a, b)) {
     return Sign::zero;
   }
-  if (Sign s = Sign::zero; filtered_orient2d(a, b, c, axis, s)) return s;
+  if (Sign s = Sign::zero;
+      filtered_orient2d(a.enclosure(), b.enclosure(), c.enclosure(), axis, s)) {
+    return s;
+  }
+  if (const std::optional<Sign> s = hull_orient2d(hull_of(a), hull_of(b), hull_of(c), axis)) {
+    return *s;
+  }
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
   const std::array<BigFloat, 3> m = cross3(pb, pc);
@@ -567,9 +649,13 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
 // (underflow of degree-3 products). An infinite or NaN term decides nothing.
 std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q, const ExactPoint& a,
                                       const ExactPoint& b) {
+  return filtered_orient3d(p.enclosure(), {q.enclosure(), a.enclosure(), b.enclosure()});
+}
+
+namespace {
+
+std::optional<Sign> filtered_orient3d(const Enclosure& ep, const std::array<Enclosure, 3>& rows) {
   std::array<std::array<double, 3>, 3> m{}, r{};
-  const Enclosure ep = p.enclosure();
-  const std::array<Enclosure, 3> rows = {q.enclosure(), a.enclosure(), b.enclosure()};
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t k = 0; k < 3; ++k) {
       m[i][k] = rows[i].lo[k] - ep.lo[k];
@@ -600,6 +686,8 @@ std::optional<Sign> filtered_orient3d(const ExactPoint& p, const ExactPoint& q, 
   return std::nullopt;
 }
 
+}  // namespace
+
 Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n) {
   Homogeneous sp;
   const Homogeneous& fp = full(p, sp);
@@ -620,7 +708,7 @@ ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) {
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * fb.w + fb.x[i] * fa.w;
   m.w = (fa.w * fb.w).scaled(1);
-  return with_bounds(std::move(m));
+  return with_bounds(std::move(m), joined({hull_of(a), hull_of(b)}));
 }
 
 ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
@@ -635,7 +723,109 @@ ExactPoint centroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
   for (std::size_t i = 0; i < 3; ++i)
     m.x[i] = fa.x[i] * bc + fb.x[i] * ac + fc.x[i] * ab;
   m.w = BigFloat(3.0) * ab * fc.w;
-  return with_bounds(std::move(m));
+  return with_bounds(std::move(m), joined({hull_of(a), hull_of(b), hull_of(c)}));
+}
+
+Hull hull_of(const ExactPoint& p) {
+  Hull h;
+  if (p.crossing) {
+    h.points[0] = p.crossing->p;
+    h.points[1] = p.crossing->q;
+    h.size = 2;
+  } else if (p.exact) {
+    h = p.exact->hull;
+  } else {
+    h.points[0] = p.v;
+    h.size = 1;
+  }
+  return h;
+}
+
+ExactPoint without_shortcuts(const ExactPoint& p) {
+  Homogeneous scratch;
+  return with_bounds(full(p, scratch));
+}
+
+namespace {
+
+// A lower and an upper bound of (x + y + z) / 3, or of the sum's smallest and largest terms
+// where that would overflow (the centroid lies between its corners).
+double third_of_sum_down(double x, double y, double z) {
+  const double bound = down(down(down(x + y) + z) / 3.0);
+  const double least = std::min({x, y, z});
+  return std::isfinite(bound) ? std::max(bound, least) : least;
+}
+double third_of_sum_up(double x, double y, double z) {
+  const double bound = up(up(up(x + y) + z) / 3.0);
+  const double most = std::max({x, y, z});
+  return std::isfinite(bound) ? std::min(bound, most) : most;
+}
+
+}  // namespace
+
+LazyCentroid::LazyCentroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
+    : corners_{a, b, c} {
+  const Enclosure ea = a.enclosure(), eb = b.enclosure(), ec = c.enclosure();
+  for (std::size_t i = 0; i < 3; ++i) {
+    bounds_.lo[i] = third_of_sum_down(ea.lo[i], eb.lo[i], ec.lo[i]);
+    bounds_.hi[i] = third_of_sum_up(ea.hi[i], eb.hi[i], ec.hi[i]);
+  }
+  for (const ExactPoint& p : corners_) {
+    const Hull h = hull_of(p);
+    if (h.size == 0) {
+      hull_size_ = 0;
+      return;
+    }
+    for (std::size_t i = 0; i < h.size; ++i)
+      hull_[hull_size_++] = h.points[i];
+  }
+}
+
+const ExactPoint& LazyCentroid::point() const {
+  if (!exact_) exact_ = centroid(corners_[0], corners_[1], corners_[2]);
+  return *exact_;
+}
+
+Sign LazyCentroid::orient2d(Vec3 a, Vec3 b, int axis, const std::array<Vec3, 3>& plane,
+                            const BigVec3& n) const {
+  const ExactPoint pa = exact_point(a), pb = exact_point(b);
+  if (Sign s = Sign::zero; filtered_orient2d(pa.enclosure(), pb.enclosure(), bounds_, axis, s)) {
+    return s;
+  }
+  // The corners' plane parallel to the dropped axis projects to a line; a and b on the plane are
+  // on that line, and so is the centroid.
+  if (component(n, axis).is_zero() &&
+      predicates::orient3d(plane[0], plane[1], plane[2], a) == Sign::zero &&
+      predicates::orient3d(plane[0], plane[1], plane[2], b) == Sign::zero) {
+    return Sign::zero;
+  }
+  if (hull_size_ != 0) {
+    const Vec2 da = drop_axis(a, axis), db = drop_axis(b, axis);
+    const std::optional<Sign> s = hull_sign([&](auto take) {
+      for (std::size_t i = 0; i < hull_size_; ++i) {
+        if (!take(predicates::orient2d(da, db, drop_axis(hull_[i], axis)))) return;
+      }
+    });
+    if (s) return *s;
+  }
+  return orient2d_dropped(pa, pb, point(), axis);
+}
+
+Sign LazyCentroid::plane_side(Vec3 a, Vec3 b, Vec3 c, const BigVec3& n) const {
+  const ExactPoint pa = exact_point(a);
+  if (const std::optional<Sign> s = filtered_orient3d(
+          pa.enclosure(), {exact_point(b).enclosure(), exact_point(c).enclosure(), bounds_})) {
+    return *s;
+  }
+  if (hull_size_ != 0) {
+    const std::optional<Sign> s = hull_sign([&](auto take) {
+      for (std::size_t i = 0; i < hull_size_; ++i) {
+        if (!take(predicates::orient3d(a, b, c, hull_[i]))) return;
+      }
+    });
+    if (s) return *s;
+  }
+  return solid::plane_side(point(), a, n);
 }
 
 Vec3 nearest_double(const ExactPoint& p) {

@@ -6,6 +6,7 @@
 // clip.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -40,10 +41,25 @@ struct Crossing {
   mutable std::shared_ptr<const Homogeneous> exact;
 };
 
-/// The big numbers of another constructed point and its enclosure.
+/// The most points of doubles a constructed point keeps as its hull (below).
+inline constexpr std::size_t hull_capacity = 6;
+
+/// Points of doubles of which a point is a convex combination with every weight positive (the
+/// first `size`; none known when size is 0). A predicate affine in each of its points (an
+/// orientation, a side of a plane, a difference of coordinates) is then a sum, with positive
+/// weights, of its values at the hulls' points, each decided on doubles: where none of those
+/// signs is opposite to another, they decide it, exact zeros included (a point constructed on
+/// a line or a plane of doubles is there by construction, and its hull is on it too).
+struct Hull {
+  std::array<Vec3, hull_capacity> points{};
+  std::size_t size = 0;
+};
+
+/// The big numbers of another constructed point, its enclosure and its hull.
 struct Constructed {
   Homogeneous numbers;
   Enclosure bounds;
+  Hull hull;
 };
 
 /// (x / w, y / w, z / w) with w > 0, the big numbers shared (immutable) by the copies of a point.
@@ -96,9 +112,11 @@ static_assert(sizeof(ExactPoint) == 56);
 
 /// Where the lines p1 p2 and q1 q2, all four in the plane through a with normal n, cross.
 /// `axis` is dropped to project (n[axis] != 0). Precondition: the projected lines cross in one
-/// point.
+/// point. `proper`: they cross strictly inside both segments p1 p2 and q1 q2 (decided exactly by
+/// the caller), so that the point's hull is known from its ends'.
 [[nodiscard]] ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoint& q1,
-                                   const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis);
+                                   const ExactPoint& q2, Vec3 a, const BigVec3& n, int axis,
+                                   bool proper = false);
 
 /// The plane a triangle is worked in: the axis whose normal component is largest in magnitude
 /// (dropped) and that component's sign.
@@ -148,6 +166,39 @@ inline Vec2 drop_axis(Vec3 p, int axis) {
 
 /// Sign of n . (p - a): the side of the plane through a with normal n that p lies on.
 [[nodiscard]] Sign plane_side(const ExactPoint& p, Vec3 a, const BigVec3& n);
+
+/// The hull of p: p itself for a point of doubles, the segment's ends for a crossing, the kept
+/// hull of another constructed point (none when it has none).
+[[nodiscard]] Hull hull_of(const ExactPoint& p);
+
+/// The same point as big numbers only (no crossing, no hull): predicates on it take the filters
+/// and the big numbers, never a shortcut by construction (the tests compare the two).
+[[nodiscard]] ExactPoint without_shortcuts(const ExactPoint& p);
+
+/// The centroid of three points (a refined face's corners) for the rays of the labels, made of
+/// the corners without big numbers: its enclosure (interval sums of the corners'), its hull (the
+/// corners' hulls together), and the exact point only where those cannot decide a predicate
+/// (then made once). Not thread-safe (the engine runs on one thread).
+class LazyCentroid {
+ public:
+  LazyCentroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c);
+  [[nodiscard]] const Enclosure& enclosure() const { return bounds_; }
+  /// orient2d_dropped(a, b, centroid, axis). `plane` (three points of doubles, not collinear)
+  /// and its exact normal `n`: a plane the three corners lie in, exactly.
+  [[nodiscard]] Sign orient2d(Vec3 a, Vec3 b, int axis, const std::array<Vec3, 3>& plane,
+                              const BigVec3& n) const;
+  /// plane_side(centroid, a, n) for the plane of a, b, c with n = exact_normal(a, b, c).
+  [[nodiscard]] Sign plane_side(Vec3 a, Vec3 b, Vec3 c, const BigVec3& n) const;
+  /// The exact centroid, made on first use.
+  [[nodiscard]] const ExactPoint& point() const;
+
+ private:
+  std::array<ExactPoint, 3> corners_;
+  Enclosure bounds_;
+  std::array<Vec3, 3 * hull_capacity> hull_{};
+  std::size_t hull_size_ = 0;  // 0: some corner's hull is unknown
+  mutable std::optional<ExactPoint> exact_;
+};
 
 /// (a + b) / 2 and (a + b + c) / 3, exactly.
 [[nodiscard]] ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b);

@@ -14,6 +14,7 @@
 // sign of the face normal's first non-zero component in the order y, z, x.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,7 +25,6 @@
 #include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
-#include "contain/core/next_double.h"
 #include "contain/core/union_find.h"
 #include "contain/values/box.h"
 
@@ -35,9 +35,17 @@ Sign sign_of_difference(double b, double a) {
   return b > a ? Sign::positive : (b < a ? Sign::negative : Sign::zero);
 }
 
+// The label point of a patch: the centroid of one of its faces, and the plane of that face's
+// input triangle (corners and exact normal), which holds the face's corners.
+struct LabelPoint {
+  LazyCentroid centroid;
+  std::array<Vec3, 3> plane;
+  const BigVec3* normal;
+};
+
 // Sign of the (y, z) orientation of a, b and the perturbed point.
-Sign edge_side(Vec3 a, Vec3 b, const ExactPoint& p, int s) {
-  const Sign o = orient2d_dropped(exact_point(a), exact_point(b), p, 0);
+Sign edge_side(Vec3 a, Vec3 b, const LabelPoint& p, int s) {
+  const Sign o = p.centroid.orient2d(a, b, 0, p.plane, *p.normal);
   if (o != Sign::zero) return o;
   const Sign dz = sign_of_difference(b.z, a.z);
   if (dz != Sign::zero) return s > 0 ? -dz : dz;
@@ -47,7 +55,7 @@ Sign edge_side(Vec3 a, Vec3 b, const ExactPoint& p, int s) {
 
 // +1 / -1 when the +x ray from the perturbed point crosses triangle t (its normal pointing to
 // +x / -x), 0 when it misses.
-int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
+int crossing(const Soup& soup, std::size_t t, const LabelPoint& p, int s) {
   const BigVec3& n = soup.normal(t);
   const Sign nx = n.x.sign();
   if (nx == Sign::zero) return 0;  // parallel to the ray: a generic ray misses it
@@ -58,7 +66,7 @@ int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
   if (edge_side(a, b, p, s) != nx || edge_side(b, c, p, s) != nx || edge_side(c, a, p, s) != nx) {
     return 0;
   }
-  Sign side = plane_side(p, a, n);
+  Sign side = p.centroid.plane_side(a, b, c, n);
   if (side == Sign::zero) {
     side = n.y.sign() != Sign::zero ? n.y.sign() : (n.z.sign() != Sign::zero ? n.z.sign() : nx);
     if (s < 0) side = -side;
@@ -70,11 +78,12 @@ int crossing(const Soup& soup, std::size_t t, const ExactPoint& p, int s) {
 // The inputs filled at the perturbed point: each input's winding number summed from the
 // crossings of its triangles (`crossings`: scratch, kept between calls), sorted by input. A ray
 // meets few inputs' surfaces, so only those are counted, not every input.
-SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const ExactPoint& p, Vec3 near, int s,
+SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const LabelPoint& p, int s,
                      std::vector<std::pair<std::int32_t, int>>& crossings) {
-  // The exact point is within half an ulp of `near`: the boxes that may hold a crossing.
-  const Vec3 lo{next_down(near.x), next_down(near.y), next_down(near.z)};
-  const Vec3 hi{next_up(near.x), next_up(near.y), next_up(near.z)};
+  // The exact point lies in its enclosure: the boxes that may hold a crossing.
+  const Enclosure& e = p.centroid.enclosure();
+  const Vec3 lo{e.lo[0], e.lo[1], e.lo[2]};
+  const Vec3 hi{e.hi[0], e.hi[1], e.hi[2]};
   const auto reaches = [&](const Box3& b) {
     return b.max.x >= lo.x && b.min.y <= hi.y && b.max.y >= lo.y && b.min.z <= hi.z &&
            b.max.z >= lo.z;
@@ -153,15 +162,20 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
     }
     labels.patch[f] = static_cast<std::uint32_t>(labels.of_patch.size());
     const RefinedFace& face = refinement.faces[f];
-    const ExactPoint c =
-        centroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2]));
-    const Vec3 near = nearest_double(c);
-    const BigVec3& n = soup.normal(static_cast<std::size_t>(face.triangle));
+    const auto t = static_cast<std::size_t>(face.triangle);
+    const BigVec3& n = soup.normal(t);
+    const TriangleIndices& corners = soup.triangles[t];
+    const LabelPoint c{
+        LazyCentroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2])),
+        {soup.vertices[static_cast<std::size_t>(corners[0])],
+         soup.vertices[static_cast<std::size_t>(corners[1])],
+         soup.vertices[static_cast<std::size_t>(corners[2])]},
+        &n};
     const Sign first = n.y.sign() != Sign::zero
                            ? n.y.sign()
                            : (n.z.sign() != Sign::zero ? n.z.sign() : n.x.sign());
-    const SideLabel plus = side_label(soup, tree, c, near, 1, crossings);
-    const SideLabel minus = side_label(soup, tree, c, near, -1, crossings);
+    const SideLabel plus = side_label(soup, tree, c, 1, crossings);
+    const SideLabel minus = side_label(soup, tree, c, -1, crossings);
     labels.of_patch.push_back(first == Sign::positive ? FaceLabel{plus, minus}
                                                       : FaceLabel{minus, plus});
   }

@@ -199,7 +199,7 @@ void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratc
           l.orient(t.a, t.b, s.a) * l.orient(t.a, t.b, s.b) < 0) {
         points.push_back(
             store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a),
-                                store.point(t.b), l.a, l.soup->normal(l.triangle), l.axis)));
+                                store.point(t.b), l.a, l.soup->normal(l.triangle), l.axis, true)));
       }
     }
   }
