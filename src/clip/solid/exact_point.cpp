@@ -7,6 +7,7 @@
 #include "clip/solid/exact_point.h"
 
 #include "contain/core/next_double.h"
+#include "contain/predicates/crossing_orientation.h"
 #include "contain/predicates/orient2d.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/predicates/rounded_crossing.h"
@@ -586,6 +587,32 @@ ExactPoint line_line(const ExactPoint& p1, const ExactPoint& p2, const ExactPoin
   return normalized(std::move(out), hull);
 }
 
+namespace {
+
+// Sign of coordinate i of v minus that of the crossing: orient2d of (v_i, 0), (v_i, 1) and the
+// crossing projected to (x_i, x_j) is v_i - x_i.
+Sign plain_minus_crossing(Vec3 v, const Crossing& k, int i) {
+  const double c = coordinate(v, i);
+  return predicates::orient2d_of_crossing({c, 0.0}, {c, 1.0}, k.p, k.q, k.a, k.b, k.c, i,
+                                          (i + 1) % 3);
+}
+
+// Whether v is the crossing: the segment's line meets the plane in one point (its ends lie
+// strictly on opposite sides), so v is that point exactly when v is on the plane and on the line
+// (collinear with the ends in all three coordinate planes).
+bool is_crossing(Vec3 v, const Crossing& k) {
+  if (predicates::orient3d(k.a, k.b, k.c, v) != Sign::zero) return false;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (predicates::orient2d(drop_axis(k.p, axis), drop_axis(k.q, axis), drop_axis(v, axis)) !=
+        Sign::zero) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 bool same_point(const ExactPoint& a, const ExactPoint& b) {
   if (a.plain() && b.plain()) return a.v.x == b.v.x && a.v.y == b.v.y && a.v.z == b.v.z;
   if (same_crossing(a, b)) return true;
@@ -593,6 +620,8 @@ bool same_point(const ExactPoint& a, const ExactPoint& b) {
   for (std::size_t i = 0; i < 3; ++i) {
     if (ea.hi[i] < eb.lo[i] || eb.hi[i] < ea.lo[i]) return false;
   }
+  if (a.plain() && b.crossing) return is_crossing(a.v, *b.crossing);
+  if (a.crossing && b.plain()) return is_crossing(b.v, *a.crossing);
   // Equal when every coordinate is, different when one is not: by the hulls where they decide.
   const Hull ha = hull_of(a), hb = hull_of(b);
   bool all_equal = true;
@@ -614,6 +643,8 @@ Sign compare_coordinate(const ExactPoint& a, const ExactPoint& b, int i) {
   if (ea.hi[k] < eb.lo[k]) return Sign::negative;
   if (ea.lo[k] > eb.hi[k]) return Sign::positive;
   if (const std::optional<Sign> s = hull_compare(hull_of(a), hull_of(b), i)) return *s;
+  if (a.plain() && b.crossing) return plain_minus_crossing(a.v, *b.crossing, i);
+  if (a.crossing && b.plain()) return -plain_minus_crossing(b.v, *a.crossing, i);
   return compare_exact(a, b, k);
 }
 
@@ -634,6 +665,17 @@ Sign orient2d_dropped(const ExactPoint& a, const ExactPoint& b, const ExactPoint
   if (const std::optional<Sign> s = hull_orient2d(hull_of(a), hull_of(b), hull_of(c), axis)) {
     return *s;
   }
+  // One crossing and two points of doubles (the commonest case left, from T's edges and the
+  // constraints' ends): by the crossing's defining doubles, turned so that it comes third.
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto of_crossing = [&](const ExactPoint& p, const ExactPoint& q, const ExactPoint& x) {
+    const Crossing& k = *x.crossing;
+    return predicates::orient2d_of_crossing(drop_axis(p.v, axis), drop_axis(q.v, axis), k.p, k.q,
+                                            k.a, k.b, k.c, u, v);
+  };
+  if (a.plain() && b.plain() && c.crossing) return of_crossing(a, b, c);
+  if (b.plain() && c.plain() && a.crossing) return of_crossing(b, c, a);
+  if (c.plain() && a.plain() && b.crossing) return of_crossing(c, a, b);
   const std::array<BigFloat, 3> pa = dropped(a, axis), pb = dropped(b, axis), pc = dropped(c, axis);
   // det [pa; pb; pc] over (u, v, w), all w > 0: the sign of the affine orientation.
   const std::array<BigFloat, 3> m = cross3(pb, pc);
@@ -799,6 +841,12 @@ Sign LazyCentroid::orient2d(Vec3 a, Vec3 b, int axis, const std::array<Vec3, 3>&
       predicates::orient3d(plane[0], plane[1], plane[2], b) == Sign::zero) {
     return Sign::zero;
   }
+  const bool plain = corners_[0].plain() && corners_[1].plain() && corners_[2].plain();
+  if (plain) {
+    return predicates::orient2d_of_centroid(
+        drop_axis(a, axis), drop_axis(b, axis), drop_axis(corners_[0].v, axis),
+        drop_axis(corners_[1].v, axis), drop_axis(corners_[2].v, axis));
+  }
   if (hull_size_ != 0) {
     const Vec2 da = drop_axis(a, axis), db = drop_axis(b, axis);
     const std::optional<Sign> s = hull_sign([&](auto take) {
@@ -816,6 +864,9 @@ Sign LazyCentroid::plane_side(Vec3 a, Vec3 b, Vec3 c, const BigVec3& n) const {
   if (const std::optional<Sign> s = filtered_orient3d(
           pa.enclosure(), {exact_point(b).enclosure(), exact_point(c).enclosure(), bounds_})) {
     return *s;
+  }
+  if (corners_[0].plain() && corners_[1].plain() && corners_[2].plain()) {
+    return predicates::orient3d_of_centroid(a, b, c, corners_[0].v, corners_[1].v, corners_[2].v);
   }
   if (hull_size_ != 0) {
     const std::optional<Sign> s = hull_sign([&](auto take) {

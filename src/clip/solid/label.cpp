@@ -154,14 +154,33 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   std::vector<std::pair<std::int32_t, int>> crossings;
+  // Every face of a patch has its labels: each patch is labelled from its face with the most
+  // corners of doubles (input vertices), whose centroid's predicates are sums of predicates on
+  // doubles (constructed corners make them rational functions, mostly left to big numbers).
+  // Kept in the root's entry of labels.patch until the root is labelled.
+  const auto plain_corners = [&](std::size_t f) {
+    int count = 0;
+    for (const std::int32_t v : refinement.faces[f].v)
+      count += static_cast<std::size_t>(v) < soup.vertices.size() ? 1 : 0;
+    return count;
+  };
+  for (std::size_t f = 0; f < labels.patch.size(); ++f) {
+    const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
+    if (root == f) {
+      labels.patch[f] = static_cast<std::uint32_t>(f);
+    } else if (plain_corners(labels.patch[root]) < 3 &&
+               plain_corners(f) > plain_corners(labels.patch[root])) {
+      labels.patch[root] = static_cast<std::uint32_t>(f);
+    }
+  }
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root != f) {
       labels.patch[f] = labels.patch[root];  // the root is the patch's first face: seen before
       continue;
     }
+    const RefinedFace& face = refinement.faces[labels.patch[f]];
     labels.patch[f] = static_cast<std::uint32_t>(labels.of_patch.size());
-    const RefinedFace& face = refinement.faces[f];
     const auto t = static_cast<std::size_t>(face.triangle);
     const BigVec3& n = soup.normal(t);
     const TriangleIndices& corners = soup.triangles[t];

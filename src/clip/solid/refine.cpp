@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -178,6 +179,25 @@ void keep_inside(const Local& l, std::vector<std::int32_t>& candidates, Arranged
   }
 }
 
+// The number of the point where segments s and t of T cross properly (strictly inside both).
+// Where one of `known` (points of T's plane: its corners and its constraints' ends) lies on both
+// lines, it is that point (the lines meet once, and the projection is one to one on T's plane):
+// the store would number the constructed point as it, so it is not constructed (on inputs in
+// common planes most crossings of segments are such points, and each construction and its
+// comparison with the stored point took the big numbers). A triangle with many constraints
+// constructs (the scan is linear in its points).
+std::int32_t crossing_of(const Local& l, const Segment& s, const Segment& t,
+                         std::span<const std::int32_t> known, PointStore& store) {
+  constexpr std::size_t scanned = 64;
+  if (known.size() <= scanned) {
+    for (const std::int32_t p : known) {
+      if (l.orient(s.a, s.b, p) == 0 && l.orient(t.a, t.b, p) == 0) return p;
+    }
+  }
+  return store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a), store.point(t.b),
+                             l.a, l.soup->normal(l.triangle), l.axis, true));
+}
+
 // The points of T's own arrangement (before its neighbours' points are given): its corners, its
 // constraints' ends, and the crossings of its segments (made and stored here, once per triangle
 // and in the order of before: the store numbers them).
@@ -190,6 +210,7 @@ void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratc
     points.push_back(c.b);
   }
   const std::vector<Segment>& segments = scratch.segments;
+  const std::size_t given = points.size();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     for (std::size_t j = i + 1; j < segments.size(); ++j) {
       const Segment& s = segments[i];
@@ -197,9 +218,7 @@ void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratc
       if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
       if (l.orient(s.a, s.b, t.a) * l.orient(s.a, s.b, t.b) < 0 &&
           l.orient(t.a, t.b, s.a) * l.orient(t.a, t.b, s.b) < 0) {
-        points.push_back(
-            store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a),
-                                store.point(t.b), l.a, l.soup->normal(l.triangle), l.axis, true)));
+        points.push_back(crossing_of(l, s, t, {points.data(), given}, store));
       }
     }
   }
