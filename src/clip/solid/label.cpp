@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -26,6 +27,7 @@
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
 #include "contain/core/union_find.h"
+#include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
 
 namespace contain::clip::solid {
@@ -145,6 +147,35 @@ UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
   return sets;
 }
 
+// A point of doubles strictly inside the face, where the mean of its corners' nearest doubles
+// (a coordinate they share taken as it is) is one, proven: on the plane of its input triangle
+// (`plane`) and strictly on the inner side of its three edges. The labels are the same at every
+// point inside a face, and at a point of doubles the rays' predicates are predicates on doubles
+// (a centroid of constructed corners is a rational function of them, its orientations against
+// edges in the same planes exact zeros: big numbers). Inputs whose faces lie in planes of
+// doubles (axis-aligned parts) have such points; others mostly not (then nothing).
+std::optional<Vec3> inner_double(const Soup& soup, const RefinedFace& face, const PointStore& store,
+                                 const std::array<Vec3, 3>& plane) {
+  const Vec3 r0 = store.rounded(face.v[0]), r1 = store.rounded(face.v[1]),
+             r2 = store.rounded(face.v[2]);
+  const auto mean = [](double a, double b, double c) {
+    return a == b && b == c ? a : (a + b + c) / 3.0;
+  };
+  const Vec3 q{mean(r0.x, r1.x, r2.x), mean(r0.y, r1.y, r2.y), mean(r0.z, r1.z, r2.z)};
+  if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) return std::nullopt;
+  if (predicates::orient3d(plane[0], plane[1], plane[2], q) != Sign::zero) return std::nullopt;
+  const int axis = soup.projection(static_cast<std::size_t>(face.triangle)).axis;
+  const ExactPoint &f0 = store.point(face.v[0]), &f1 = store.point(face.v[1]),
+                   &f2 = store.point(face.v[2]);
+  const Sign turn = orient2d_dropped(f0, f1, f2, axis);
+  const ExactPoint p = exact_point(q);
+  if (turn == Sign::zero || orient2d_dropped(f0, f1, p, axis) != turn ||
+      orient2d_dropped(f1, f2, p, axis) != turn || orient2d_dropped(f2, f0, p, axis) != turn) {
+    return std::nullopt;
+  }
+  return q;
+}
+
 }  // namespace
 
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
@@ -154,22 +185,23 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   std::vector<std::pair<std::int32_t, int>> crossings;
-  // Every face of a patch has its labels: each patch is labelled from its face with the most
-  // corners of doubles (input vertices), whose centroid's predicates are sums of predicates on
-  // doubles (constructed corners make them rational functions, mostly left to big numbers).
-  // Kept in the root's entry of labels.patch until the root is labelled.
-  const auto plain_corners = [&](std::size_t f) {
-    int count = 0;
-    for (const std::int32_t v : refinement.faces[f].v)
-      count += static_cast<std::size_t>(v) < soup.vertices.size() ? 1 : 0;
-    return count;
+  // Every face of a patch has its labels: each patch is labelled from its largest face (by the
+  // area of its corners' nearest doubles), which most likely holds a point of doubles inside
+  // (`inner_double`; slivers along intersection curves, where unions of many parts make many,
+  // hold none, and their centroids' predicates are near or exact zeros). Kept in the root's
+  // entry of labels.patch until the root is labelled.
+  const auto area = [&](std::size_t f) {
+    const auto& v = refinement.faces[f].v;
+    const Vec3 a = store.rounded(v[0]), b = store.rounded(v[1]), c = store.rounded(v[2]);
+    const Vec3 u = b - a, w = c - a;
+    const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
+    return n.x * n.x + n.y * n.y + n.z * n.z;
   };
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root == f) {
       labels.patch[f] = static_cast<std::uint32_t>(f);
-    } else if (plain_corners(labels.patch[root]) < 3 &&
-               plain_corners(f) > plain_corners(labels.patch[root])) {
+    } else if (area(f) > area(labels.patch[root])) {
       labels.patch[root] = static_cast<std::uint32_t>(f);
     }
   }
@@ -184,12 +216,16 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
     const auto t = static_cast<std::size_t>(face.triangle);
     const BigVec3& n = soup.normal(t);
     const TriangleIndices& corners = soup.triangles[t];
+    const std::array<Vec3, 3> plane = {soup.vertices[static_cast<std::size_t>(corners[0])],
+                                       soup.vertices[static_cast<std::size_t>(corners[1])],
+                                       soup.vertices[static_cast<std::size_t>(corners[2])]};
+    const ExactPoint &f0 = store.point(face.v[0]), &f1 = store.point(face.v[1]),
+                     &f2 = store.point(face.v[2]);
+    const std::optional<Vec3> inner = inner_double(soup, face, store, plane);
     const LabelPoint c{
-        LazyCentroid(store.point(face.v[0]), store.point(face.v[1]), store.point(face.v[2])),
-        {soup.vertices[static_cast<std::size_t>(corners[0])],
-         soup.vertices[static_cast<std::size_t>(corners[1])],
-         soup.vertices[static_cast<std::size_t>(corners[2])]},
-        &n};
+        inner ? LazyCentroid(exact_point(*inner), exact_point(*inner), exact_point(*inner))
+              : LazyCentroid(f0, f1, f2),
+        plane, &n};
     const Sign first = n.y.sign() != Sign::zero
                            ? n.y.sign()
                            : (n.z.sign() != Sign::zero ? n.z.sign() : n.x.sign());

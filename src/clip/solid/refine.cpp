@@ -15,14 +15,16 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <span>
 #include <utility>
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "contain/core/next_double.h"
+#include "contain/predicates/orient3d.h"
 
 namespace contain::clip::solid {
 namespace {
@@ -179,19 +181,52 @@ void keep_inside(const Local& l, std::vector<std::int32_t>& candidates, Arranged
   }
 }
 
+// Whether point p lies in T's plane, by doubles that define it: every point of its hull on the
+// plane, or for a crossing the three corners of its plane (a sufficient test only: false where
+// neither shows it).
+bool in_plane(const Local& l, const ExactPoint& p) {
+  const Soup& soup = *l.soup;
+  const Vec3 a = soup.vertices[static_cast<std::size_t>(l.corners[0])],
+             b = soup.vertices[static_cast<std::size_t>(l.corners[1])],
+             c = soup.vertices[static_cast<std::size_t>(l.corners[2])];
+  const auto on = [&](Vec3 v) { return predicates::orient3d(a, b, c, v) == Sign::zero; };
+  if (p.crossing && on(p.crossing->a) && on(p.crossing->b) && on(p.crossing->c)) return true;
+  const Hull h = hull_of(p);
+  if (h.size == 0) return false;
+  for (std::size_t i = 0; i < h.size; ++i) {
+    if (!on(h.points[i])) return false;
+  }
+  return true;
+}
+
 // The number of the point where segments s and t of T cross properly (strictly inside both).
-// Where one of `known` (points of T's plane: its corners and its constraints' ends) lies on both
-// lines, it is that point (the lines meet once, and the projection is one to one on T's plane):
-// the store would number the constructed point as it, so it is not constructed (on inputs in
-// common planes most crossings of segments are such points, and each construction and its
-// comparison with the stored point took the big numbers). A triangle with many constraints
-// constructs (the scan is linear in its points).
-std::int32_t crossing_of(const Local& l, const Segment& s, const Segment& t,
-                         std::span<const std::int32_t> known, PointStore& store) {
-  constexpr std::size_t scanned = 64;
-  if (known.size() <= scanned) {
-    for (const std::int32_t p : known) {
-      if (l.orient(s.a, s.b, p) == 0 && l.orient(t.a, t.b, p) == 0) return p;
+// On inputs in common planes most such crossings are points already stored (a vertex, an edge's
+// crossing with a plane, another triangle's crossing of the same lines), and their construction
+// in big numbers, rounding and exact comparison with the stored point were a third of the
+// refinement. So first the stored points whose nearest doubles are within one step of the
+// crossing's estimate in doubles are asked: one in T's plane (by its hull) on both lines is the
+// crossing (the lines meet once, and the projection is one to one on T's plane), the number the
+// store would give it. Otherwise it is constructed and stored as before.
+std::int32_t crossing_of(const Local& l, const Segment& s, const Segment& t, PointStore& store) {
+  const Vec3 sa = store.rounded(s.a), sb = store.rounded(s.b), ta = store.rounded(t.a),
+             tb = store.rounded(t.b);
+  const Vec2 ps = drop_axis(sa, l.axis), qs = drop_axis(sb, l.axis), pt = drop_axis(ta, l.axis),
+             qt = drop_axis(tb, l.axis);
+  const Vec2 ds = qs - ps, dt = qt - pt, w = pt - ps;
+  const double den = ds.x * dt.y - ds.y * dt.x;
+  const double lambda = (w.x * dt.y - w.y * dt.x) / den;
+  if (std::isfinite(lambda)) {
+    const Vec3 x = sa + (sb - sa) * lambda;
+    const auto near = [](double v, int k) {
+      return k < 0 ? next_down(v) : (k > 0 ? next_up(v) : v);
+    };
+    for (int i = 0; i < 27; ++i) {
+      const Vec3 r{near(x.x, i % 3 - 1), near(x.y, (i / 3) % 3 - 1), near(x.z, i / 9 - 1)};
+      const std::int32_t p = store.first_rounded_to(r);
+      if (p >= 0 && p != s.a && p != s.b && p != t.a && p != t.b && in_plane(l, store.point(p)) &&
+          l.orient(s.a, s.b, p) == 0 && l.orient(t.a, t.b, p) == 0) {
+        return p;
+      }
     }
   }
   return store.add(line_line(store.point(s.a), store.point(s.b), store.point(t.a), store.point(t.b),
@@ -210,7 +245,6 @@ void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratc
     points.push_back(c.b);
   }
   const std::vector<Segment>& segments = scratch.segments;
-  const std::size_t given = points.size();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     for (std::size_t j = i + 1; j < segments.size(); ++j) {
       const Segment& s = segments[i];
@@ -218,7 +252,7 @@ void arrange(const Local& l, const TriangleWork& work, PointStore& store, Scratc
       if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
       if (l.orient(s.a, s.b, t.a) * l.orient(s.a, s.b, t.b) < 0 &&
           l.orient(t.a, t.b, s.a) * l.orient(t.a, t.b, s.b) < 0) {
-        points.push_back(crossing_of(l, s, t, {points.data(), given}, store));
+        points.push_back(crossing_of(l, s, t, store));
       }
     }
   }
