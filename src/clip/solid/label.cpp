@@ -5,7 +5,8 @@
 // faces hold, in opposite directions, from the same input, and that lies on no intersection
 // curve. Along a patch no other surface is crossed, so every input's winding number is the same
 // on the patch's front side everywhere, and on its back side. Each patch is labelled by two rays
-// from the centroid c of one of its faces: the winding number of each input at the perturbed
+// from a point c strictly inside its largest face (a point of doubles where one is proven there,
+// else the face's centroid): the winding number of each input at the perturbed
 // points c + s (e^3, e, e^2), s = +1 and -1, e > 0 infinitesimal, counted by the crossings of the
 // ray +x from there (Simulation of Simplicity in the style of Edelsbrunner and Mucke: every sign
 // that is zero at e = 0 is decided by the first non-zero coefficient of its expansion in e, all
