@@ -38,8 +38,9 @@ Sign sign_of_difference(double b, double a) {
   return b > a ? Sign::positive : (b < a ? Sign::negative : Sign::zero);
 }
 
-// The label point of a patch: the centroid of one of its faces, and the plane of that face's
-// input triangle (corners and exact normal), which holds the face's corners.
+// The label point of a patch: a point strictly inside one of its faces (a point of doubles, as a
+// centroid of three equal corners, or the face's centroid), and the plane of that face's input
+// triangle (corners and exact normal), which holds the face's corners.
 struct LabelPoint {
   LazyCentroid centroid;
   std::array<Vec3, 3> plane;

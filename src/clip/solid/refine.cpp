@@ -204,7 +204,7 @@ bool in_plane(const Local& l, const ExactPoint& p) {
 // crossing with a plane, another triangle's crossing of the same lines), and their construction
 // in big numbers, rounding and exact comparison with the stored point were a third of the
 // refinement. So first the stored points whose nearest doubles are within one step of the
-// crossing's estimate in doubles are asked: one in T's plane (by its hull) on both lines is the
+// crossing's estimate in doubles are asked: one in T's plane (`in_plane`) on both lines is the
 // crossing (the lines meet once, and the projection is one to one on T's plane), the number the
 // store would give it. Otherwise it is constructed and stored as before.
 std::int32_t crossing_of(const Local& l, const Segment& s, const Segment& t, PointStore& store) {
