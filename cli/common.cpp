@@ -2,11 +2,16 @@
 
 #include <unistd.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +19,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "contain/core/parallel.h"
@@ -133,11 +139,12 @@ int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
   // blocks of 4 M answers (16 MB of text at most) in parts, written in order.
   constexpr std::size_t kPiece = std::size_t{1} << 16;
   if (thread_count(options, locations.size(), kPiece) == 1) {
-    const auto buffer = std::make_unique_for_overwrite<char[]>(kLocationSlot * kPiece);
+    std::vector<char, LargeAllocator<char>> buffer;
+    buffer.reserve(kLocationSlot * kPiece);
     for (std::size_t begin = 0; begin < locations.size(); begin += kPiece) {
       const auto piece = locations.subspan(begin, std::min(kPiece, locations.size() - begin));
-      const std::size_t size = format_locations_into(piece, policy, buffer.get());
-      if (Status written = output->write({buffer.get(), size}); !written) {
+      const std::size_t size = format_locations_into(piece, policy, buffer.data());
+      if (Status written = output->write({buffer.data(), size}); !written) {
         return report(written.error());
       }
     }
@@ -228,6 +235,48 @@ std::size_t format_locations_into(std::span<const Location> locations, BoundaryP
     end += lengths[at];
   }
   return static_cast<std::size_t>(end - out);
+}
+
+namespace {
+constexpr std::size_t kLargeFrom = std::size_t{256} << 10;
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+std::size_t huge_pages_of(std::size_t bytes) {
+  return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+}
+#endif
+}  // namespace
+
+void* allocate_large(std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (bytes >= kLargeFrom) {
+    // A mapping a huge page longer, cut to the aligned part (the kernel places a huge page only
+    // at an aligned address).
+    const std::size_t size = huge_pages_of(bytes);
+    void* mapped = ::mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE,
+                          MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (mapped == MAP_FAILED) throw std::bad_alloc();
+    const auto start = reinterpret_cast<std::uintptr_t>(mapped);
+    const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
+    if (aligned > start) ::munmap(mapped, aligned - start);
+    if (const std::size_t tail = start + kHugePage - aligned; tail > 0) {
+      ::munmap(reinterpret_cast<void*>(aligned + size), tail);
+    }
+    (void)::madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE);
+    return reinterpret_cast<void*>(aligned);
+  }
+#endif
+  return ::operator new(bytes);
+}
+
+void free_large(void* memory, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (bytes >= kLargeFrom) {
+    ::munmap(memory, huge_pages_of(bytes));
+    return;
+  }
+#endif
+  ::operator delete(memory);
 }
 
 std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {

@@ -243,14 +243,16 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
 
 // The file a block at a time: each block's whole lines parsed (parse_block), the partial last
 // line carried to the next; a line longer than a block grows the block. A regular file is mapped
-// instead (read_mapped).
+// instead (read_mapped) where `reading.map` asks it.
 template <class Point>
 Status read_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                     const std::function<void(std::span<const Point>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
-  if (auto mapped = detail::MappedText::map(input->file(), input->size())) {
-    return read_mapped(*mapped, reading, input->source(), consume);
+  if (reading.map) {
+    if (auto mapped = detail::MappedText::map(input->file(), input->size())) {
+      return read_mapped(*mapped, reading, input->source(), consume);
+    }
   }
   std::size_t block = block_bytes(reading);
   std::unique_ptr<char[]> buffer(new char[block]);
