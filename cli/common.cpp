@@ -2,16 +2,11 @@
 
 #include <unistd.h>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -22,6 +17,7 @@
 #include <new>
 #include <string>
 
+#include "contain/core/huge_pages.h"
 #include "contain/core/parallel.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
@@ -239,43 +235,21 @@ std::size_t format_locations_into(std::span<const Location> locations, BoundaryP
 
 namespace {
 constexpr std::size_t kLargeFrom = std::size_t{256} << 10;
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
 std::size_t huge_pages_of(std::size_t bytes) {
-  return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+  return (bytes + detail::huge_page_bytes - 1) / detail::huge_page_bytes * detail::huge_page_bytes;
 }
-#endif
 }  // namespace
 
 void* allocate_large(std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (bytes >= kLargeFrom) {
-    // A mapping a huge page longer, cut to the aligned part (the kernel places a huge page only
-    // at an aligned address).
-    const std::size_t size = huge_pages_of(bytes);
-    void* mapped = ::mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE,
-                          MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (mapped == MAP_FAILED) throw std::bad_alloc();
-    const auto start = reinterpret_cast<std::uintptr_t>(mapped);
-    const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
-    if (aligned > start) ::munmap(mapped, aligned - start);
-    if (const std::size_t tail = start + kHugePage - aligned; tail > 0) {
-      ::munmap(reinterpret_cast<void*>(aligned + size), tail);
-    }
-    (void)::madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE);
-    return reinterpret_cast<void*>(aligned);
-  }
-#endif
+  if (bytes >= kLargeFrom) return detail::allocate_huge_page_block(huge_pages_of(bytes));
   return ::operator new(bytes);
 }
 
 void free_large(void* memory, std::size_t bytes) noexcept {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (bytes >= kLargeFrom) {
-    ::munmap(memory, huge_pages_of(bytes));
+    detail::free_huge_page_block(memory);
     return;
   }
-#endif
   ::operator delete(memory);
 }
 

@@ -146,11 +146,11 @@ std::size_t format_locations_into(std::span<const Location> locations, BoundaryP
                                   char* out);
 
 /// Memory for a large buffer of a run (the answers of every point, the text written from them):
-/// from 256 KB on, on Linux, whole pieces of 2 MB aligned to 2 MB and marked for transparent huge
-/// pages (MADV_HUGEPAGE, honoured where the system's setting is "madvise" or "always"), so that
-/// writing it first costs a page fault every 2 MB instead of every 4 KB. A fault a 4 KB page cost
-/// 11.6 us on the project's machine (a virtual machine whose hypervisor takes each fault), 3 ms
-/// for the 1 MB of answers of 10^6 points; elsewhere, and for less, operator new.
+/// from 256 KB on, whole 2 MB pages advised for transparent huge pages
+/// (detail::allocate_huge_page_block; HugePageAllocator starts at 4 MB), so that writing it first
+/// costs a page fault every 2 MB instead of every 4 KB. A fault a 4 KB page cost 11.6 us on the
+/// project's machine (a virtual machine whose hypervisor takes each fault), 3 ms for the 1 MB of
+/// answers of 10^6 points. Below 256 KB, operator new.
 [[nodiscard]] void* allocate_large(std::size_t bytes);
 /// Frees what allocate_large(bytes) gave.
 void free_large(void* memory, std::size_t bytes) noexcept;
