@@ -135,8 +135,7 @@ int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
   // blocks of 4 M answers (16 MB of text at most) in parts, written in order.
   constexpr std::size_t kPiece = std::size_t{1} << 16;
   if (thread_count(options, locations.size(), kPiece) == 1) {
-    std::vector<char, LargeAllocator<char>> buffer;
-    buffer.reserve(kLocationSlot * kPiece);
+    std::vector<char, LargeAllocator<char>> buffer(kLocationSlot * kPiece);
     for (std::size_t begin = 0; begin < locations.size(); begin += kPiece) {
       const auto piece = locations.subspan(begin, std::min(kPiece, locations.size() - begin));
       const std::size_t size = format_locations_into(piece, policy, buffer.data());
