@@ -14,8 +14,10 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <string>
 
+#include "contain/core/huge_pages.h"
 #include "contain/core/parallel.h"
 #include "contain/io/mesh_warning.h"
 #include "contain/io/number_table.h"
@@ -133,11 +135,11 @@ int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
   // blocks of 4 M answers (16 MB of text at most) in parts, written in order.
   constexpr std::size_t kPiece = std::size_t{1} << 16;
   if (thread_count(options, locations.size(), kPiece) == 1) {
-    const auto buffer = std::make_unique_for_overwrite<char[]>(kLocationSlot * kPiece);
+    std::vector<char, LargeAllocator<char>> buffer(kLocationSlot * kPiece);
     for (std::size_t begin = 0; begin < locations.size(); begin += kPiece) {
       const auto piece = locations.subspan(begin, std::min(kPiece, locations.size() - begin));
-      const std::size_t size = format_locations_into(piece, policy, buffer.get());
-      if (Status written = output->write({buffer.get(), size}); !written) {
+      const std::size_t size = format_locations_into(piece, policy, buffer.data());
+      if (Status written = output->write({buffer.data(), size}); !written) {
         return report(written.error());
       }
     }
@@ -228,6 +230,26 @@ std::size_t format_locations_into(std::span<const Location> locations, BoundaryP
     end += lengths[at];
   }
   return static_cast<std::size_t>(end - out);
+}
+
+namespace {
+constexpr std::size_t kLargeFrom = std::size_t{256} << 10;
+std::size_t huge_pages_of(std::size_t bytes) {
+  return (bytes + detail::huge_page_bytes - 1) / detail::huge_page_bytes * detail::huge_page_bytes;
+}
+}  // namespace
+
+void* allocate_large(std::size_t bytes) {
+  if (bytes >= kLargeFrom) return detail::allocate_huge_page_block(huge_pages_of(bytes));
+  return ::operator new(bytes);
+}
+
+void free_large(void* memory, std::size_t bytes) noexcept {
+  if (bytes >= kLargeFrom) {
+    detail::free_huge_page_block(memory);
+    return;
+  }
+  ::operator delete(memory);
 }
 
 std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {

@@ -7,18 +7,24 @@
 // huge, tiny and negative-zero numbers; leading zeros; errors).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <random>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "contain/io/points_io.h"
 #include "io/byte_masks.h"
 #include "io/masked_lines.h"
 #include "io/point_lines.h"
+#include "io/temp_file.h"
 
 namespace contain::io {
 namespace {
@@ -465,6 +471,248 @@ TEST(MaskedLines, MaskedScanBoxesHoldTheExactScansPoints) {
     EXPECT_TRUE(box.min.x <= exact[i].x && box.min.y <= exact[i].y && box.min.z <= exact[i].z) << i;
     EXPECT_TRUE(box.max.x >= exact[i].x && box.max.y >= exact[i].y && box.max.z >= exact[i].z) << i;
     EXPECT_EQ(exact_point(bounded[i]), exact[i]) << i;
+  }
+}
+
+// The double a number's text denotes, by the oracle of the contract: std::from_chars (after a
+// '+', which it does not take), and where it reports underflow or overflow, strtod (correctly
+// rounded in glibc) as parse_double does; false for NaN, infinities and overflow.
+bool oracle(const std::string& token, double& value) {
+  const std::string body = !token.empty() && token[0] == '+' ? token.substr(1) : token;
+  const auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
+  if (ptr != body.data() + body.size()) return false;
+  if (ec == std::errc::result_out_of_range) value = std::strtod(body.c_str(), nullptr);
+  return (ec == std::errc{} || ec == std::errc::result_out_of_range) && std::isfinite(value);
+}
+
+// The exact decimal of the midpoint of the double `d` and the next one away from zero (a
+// halfway case: from_chars rounds it to the even one of the two), from long double's 64-bit
+// significand, which holds it exactly, printed in full by glibc's printf.
+std::string midpoint_text(double d, int digits) {
+  const double next = std::nextafter(d, d < 0 ? -INFINITY : INFINITY);
+  const long double mid = (static_cast<long double>(d) + static_cast<long double>(next)) / 2;
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "%.*Lf", digits, mid);
+  std::string text = buffer;
+  while (text.back() == '0')
+    text.pop_back();
+  return text;
+}
+
+// Hostile numbers of every kind, each with the double the oracle gives (finite ones only).
+std::vector<std::string> hostile_tokens(std::mt19937_64& rng) {
+  std::vector<std::string> out = {
+      // long mantissas and 19/20-digit runs, before and after the point
+      "0.12345678901234567890123456789",
+      "-0.99999999999999999999999999999",
+      "9.9999999999999999999",
+      "1234567.8901234567890",
+      "-1234567.8901234567890",
+      "12345678.901234567890",
+      "1234567890123456789",
+      "12345678901234567890",
+      "0.0000000000000000001",
+      "-0.00000000000000000000000000000000000001",
+      "0.99999999999999994448884876874217297882",
+      "0.99999999999999994448884876874217297883",
+      "1.00000000000000011102230246251565404236",
+      "9007199254740993",
+      "9007199254740992.5",
+      // exponents
+      "1e-5",
+      "2.5E+3",
+      "-7.25e2",
+      "1E0",
+      "3e-320",
+      "1e308",
+      "1.7976931348623157e308",
+      // subnormals and the smallest numbers
+      "4.9e-324",
+      "5e-324",
+      "2.4703282292062327e-324",
+      "2.4703282292062328e-324",
+      "2.2250738585072011e-308",
+      "2.2250738585072014e-308",
+      "-4.9406564584124654e-324",
+      // signs and zeros
+      "-0.0",
+      "+0.5",
+      "+.5",
+      "-.5",
+      "0.",
+      "-0",
+      "+7",
+      "0.000000000",
+      "-0.000000001",
+  };
+  // Doubles in [2^20, 2^23) have 7 integer digits and their midpoints 30 to 33 decimals: lines
+  // of one such number short enough for the masks (64 bytes); those in [-1, 1], 50 decimals and
+  // more, go to the walk.
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), wide(1048576.0, 8388608.0);
+  for (int k = 0; k < 60; ++k) {
+    // Halfway cases: the exact midpoints of neighbouring doubles, and a digit past each.
+    const double d = k % 3 == 0 ? unit(rng) : (rng() % 2 == 0 ? -1.0 : 1.0) * wide(rng);
+    const std::string mid = midpoint_text(d, 80);
+    out.push_back(mid);
+    out.push_back(mid + "1");
+    out.push_back(mid.substr(0, mid.size() - 1));  // just below (or above) halfway
+  }
+  for (int k = 0; k < 40; ++k) {
+    // Runs of 19 and 20 digits with a point anywhere.
+    std::string digits = rng() % 2 == 0 ? "-" : "";
+    const int count = 19 + static_cast<int>(rng() % 2), point = static_cast<int>(rng() % 9);
+    for (int d = 0; d < count; ++d) {
+      if (d == point) digits += '.';
+      digits += static_cast<char>('0' + (d == 0 ? 1 + rng() % 9 : rng() % 10));
+    }
+    out.push_back(digits);
+  }
+  return out;
+}
+
+// Hostile numbers among plain lines (three plain lines to one hostile, so the masks keep the text
+// and meet the hostile lines one by one), with CR LF or LF ends and no final newline: every
+// version's points read back as the oracle's doubles bit for bit, inside their boxes, and as the
+// walk's; and the whole reader from a file gives the same doubles.
+TEST(MaskedLines, HostileNumbersReadBackAsTheFromCharsDoublesInTheirBoxes) {
+  std::mt19937_64 rng(2027);
+  const std::vector<std::string> tokens = hostile_tokens(rng);
+  char buffer[64];
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto plain = [&] {
+    return std::string(buffer, std::to_chars(buffer, buffer + 64, unit(rng)).ptr);
+  };
+  for (int columns : {2, 3}) {
+    for (const char* end : {"\n", "\r\n"}) {
+      std::string text;
+      std::vector<double> expected;
+      for (std::size_t t = 0; t < tokens.size(); ++t) {
+        for (int line = 0; line < 3; ++line) {
+          for (int k = 0; k < columns; ++k) {
+            const std::string number = plain();
+            text += (k > 0 ? " " : "") + number;
+            expected.push_back(std::stod(number));
+          }
+          text += end;
+        }
+        // The hostile token at each column in turn, plain numbers beside it.
+        for (int k = 0; k < columns; ++k) {
+          const std::string number =
+              k == static_cast<int>(t % static_cast<std::size_t>(columns)) ? tokens[t] : plain();
+          double value = 0.0;
+          ASSERT_TRUE(oracle(number, value)) << number;
+          text += (k > 0 ? " " : "") + number;
+          expected.push_back(value);
+        }
+        if (t + 1 < tokens.size()) text += end;  // the last line without its newline
+      }
+      if (columns == 2) {
+        expect_as_the_walk<BoundedPoint2>(text);
+      } else {
+        expect_as_the_walk<BoundedPoint3>(text);
+      }
+      for (MaskIsa isa : versions_here()) {
+        std::vector<double> got;
+        std::vector<BoundedPoint2> points2;
+        std::vector<BoundedPoint3> points3;
+        std::int64_t walked = 0;
+        const auto scan = columns == 2 ? detail::scan_bounded_masked(text, points2, isa, &walked)
+                                       : detail::scan_bounded_masked(text, points3, isa, &walked);
+        ASSERT_TRUE(scan.complete) << static_cast<int>(isa);
+        // Most lines by the masks, not the walk.
+        EXPECT_LT(walked, scan.lines / 2) << static_cast<int>(isa);
+        for (const BoundedPoint2& p : points2) {
+          const Vec2 v = exact_point(p);
+          EXPECT_TRUE(p.box.contains(v));
+          got.insert(got.end(), {v.x, v.y});
+        }
+        for (const BoundedPoint3& p : points3) {
+          const Vec3 v = exact_point(p);
+          EXPECT_TRUE(p.box.contains(v));
+          got.insert(got.end(), {v.x, v.y, v.z});
+        }
+        ASSERT_EQ(got.size(), expected.size());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(got[i]), std::bit_cast<std::uint64_t>(expected[i]))
+              << "number " << i << " (version " << static_cast<int>(isa) << ")";
+        }
+      }
+      // The whole reader (blocks of 256 KB, 997 bytes, and mapped).
+      const test::TempFile file(".txt", text);
+      for (const ChunkedReading reading :
+           {ChunkedReading{}, ChunkedReading{.block = 997}, ChunkedReading{.map = true}}) {
+        std::vector<double> got;
+        const auto take = [&](auto piece, double) {
+          for (const auto& p : piece) {
+            const auto v = exact_point(p);
+            if constexpr (std::is_same_v<decltype(v), const Vec2>) {
+              got.insert(got.end(), {v.x, v.y});
+            } else {
+              got.insert(got.end(), {v.x, v.y, v.z});
+            }
+          }
+        };
+        const Status status = columns == 2
+                                  ? read_points2_bounded(file.path(), reading,
+                                                         [&](std::span<const BoundedPoint2> piece,
+                                                             double share) { take(piece, share); })
+                                  : read_points3_bounded(file.path(), reading,
+                                                         [&](std::span<const BoundedPoint3> piece,
+                                                             double share) { take(piece, share); });
+        ASSERT_TRUE(status.ok()) << status.error().what();
+        ASSERT_EQ(got.size(), expected.size());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(got[i]), std::bit_cast<std::uint64_t>(expected[i]))
+              << "number " << i;
+        }
+      }
+    }
+  }
+}
+
+// A malformed line at known lines of a file of several 256 KB blocks (the first line, lines
+// about each block's end, the last line without its newline), with LF and CR LF ends: the
+// reader's error names that line, with the table parser's words, whatever the block or mapping.
+TEST(MaskedLines, AMalformedLineIsAnErrorWithItsOwnLineNumber) {
+  std::mt19937_64 rng(404);
+  char buffer[64];
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<std::string> lines;
+  for (int line = 0; line < 16000; ++line) {  // about 600 KB: three blocks
+    std::string text = std::string(buffer, std::to_chars(buffer, buffer + 64, unit(rng)).ptr);
+    text += ' ';
+    text += std::string(buffer, std::to_chars(buffer, buffer + 64, unit(rng)).ptr);
+    lines.push_back(text);
+  }
+  const std::vector<std::string> bad{"0.5 x",     "0.5",          "0.5 0.5 0.5", "nan 0.5",
+                                     "0.5 1e400", "0.5,,0.5",     "0.5 -",       "0.5-0.5",
+                                     "1.5.5 2",   "0.25 0.5\x01", "+-1 2",       "0.5 --0.5"};
+  for (const char* end : {"\n", "\r\n"}) {
+    for (std::size_t at : {std::size_t{0}, std::size_t{6700}, std::size_t{6701}, std::size_t{13405},
+                           lines.size() - 1}) {
+      for (std::size_t b = 0; b < bad.size(); b += at == 0 ? 1 : 3) {
+        std::string text;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+          text += i == at ? bad[b] : lines[i];
+          if (i + 1 < lines.size()) text += end;
+        }
+        const test::TempFile file(".txt", text);
+        const auto whole = read_points2(file.path());
+        ASSERT_FALSE(whole.ok()) << bad[b];
+        EXPECT_EQ(whole.error().line, static_cast<std::int64_t>(at) + 1) << bad[b];
+        for (const ChunkedReading reading :
+             {ChunkedReading{}, ChunkedReading{.block = 4096}, ChunkedReading{.map = true}}) {
+          std::size_t points = 0;
+          const Status status = read_points2_bounded(
+              file.path(), reading,
+              [&](std::span<const BoundedPoint2> piece, double) { points += piece.size(); });
+          ASSERT_FALSE(status.ok()) << bad[b];
+          EXPECT_EQ(status.error().line, static_cast<std::int64_t>(at) + 1) << bad[b] << " " << at;
+          EXPECT_EQ(status.error().message, whole.error().message) << bad[b];
+          EXPECT_LE(points, at) << bad[b];
+        }
+      }
+    }
   }
 }
 

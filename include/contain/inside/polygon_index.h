@@ -176,8 +176,9 @@ class PolygonIndex {
   };
 
   // The last stage of construction (polygon_index.cpp): the cells' codes, edge cells and side
-  // edges from the per-cell lists of edges_ (start) and the corner winding numbers.
-  void settle_cells(std::span<const std::uint32_t> start, std::span<const int> corner);
+  // edges from the per-cell lists of edges_ (start) and the corner winding numbers, which cells_
+  // holds on entry (an int's bits a cell) and the codes replace.
+  void settle_cells(std::span<const std::uint32_t> start);
   // The cell the point's doubles guess (the exact cell may be a neighbour); -1 outside the box.
   [[nodiscard]] std::ptrdiff_t guessed_cell(Vec2 point) const {
     if (!bounds_.contains(point)) return -1;
