@@ -131,7 +131,7 @@ py::array_t<double> read_points(const std::filesystem::path& path, std::optional
 // The points of a file a chunk at a time, for files larger than memory: the library's reader runs
 // on a thread of its own and hands over one chunk at a time (it waits while a chunk is untaken),
 // so the process holds the reader's block with its parsed points (up to 8 MB of text on several
-// threads, and for a mapped file up to 24 MB of its pages) and at most three chunks (the one
+// threads) and at most three chunks (the one
 // being filled, the one waiting, the caller's). Every chunk but the last has exactly `chunk`
 // points. Dropping the iterator stops the reader.
 class PointChunks {
@@ -280,9 +280,7 @@ The points of a point file (the format of read_points) as float64 arrays of shap
 `threads` threads (0: all cores) while the caller works on the last chunk; at most three chunks
 and a block of text with its points (tens of MB) are held at once, whatever the file's size.
 Errors as read_points, raised when the iteration reaches the bad line; an iterator dropped early
-stops the reading. A regular file is read through a memory map: it must not be shortened while
-it is read (a shortening found before the pages are read is an error; one between the check and
-the read ends the process with SIGBUS, as for any reader of a mapped file).
+stops the reading.
 )doc");
   m.def("read_points", &read_points, "path"_a, "dimension"_a = py::none(), py::kw_only(),
         "threads"_a = 0, R"doc(
