@@ -247,7 +247,7 @@ class MeshIndex {
   // count (the winding number), as the two's complement bits of an int32.
   HugePageVector<std::uint32_t> surface_;
 
-  std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
+  HugePageVector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
   // The surface cells' lists: the triangles' numbers (into tris_), 4 bytes a reference. A copy of
   // each triangle's box beside its number (28 bytes) made the lists 18 MB for 100k triangles,
   // most of the build's time spent by the kernel zeroing their pages; the box is read from the
