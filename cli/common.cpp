@@ -135,7 +135,8 @@ int emit_locations(std::span<const Location> locations, BoundaryPolicy policy,
   // blocks of 4 M answers (16 MB of text at most) in parts, written in order.
   constexpr std::size_t kPiece = std::size_t{1} << 16;
   if (thread_count(options, locations.size(), kPiece) == 1) {
-    std::vector<char, LargeAllocator<char>> buffer(kLocationSlot * kPiece);
+    // In a huge page (core/huge_pages.h): its 64-128 pages of 4 kB cost more to fault in.
+    HugePageVector<char> buffer(kLocationSlot * kPiece);
     for (std::size_t begin = 0; begin < locations.size(); begin += kPiece) {
       const auto piece = locations.subspan(begin, std::min(kPiece, locations.size() - begin));
       const std::size_t size = format_locations_into(piece, policy, buffer.data());
@@ -230,26 +231,6 @@ std::size_t format_locations_into(std::span<const Location> locations, BoundaryP
     end += lengths[at];
   }
   return static_cast<std::size_t>(end - out);
-}
-
-namespace {
-constexpr std::size_t kLargeFrom = std::size_t{256} << 10;
-std::size_t huge_pages_of(std::size_t bytes) {
-  return (bytes + detail::huge_page_bytes - 1) / detail::huge_page_bytes * detail::huge_page_bytes;
-}
-}  // namespace
-
-void* allocate_large(std::size_t bytes) {
-  if (bytes >= kLargeFrom) return detail::allocate_huge_page_block(huge_pages_of(bytes));
-  return ::operator new(bytes);
-}
-
-void free_large(void* memory, std::size_t bytes) noexcept {
-  if (bytes >= kLargeFrom) {
-    detail::free_huge_page_block(memory);
-    return;
-  }
-  ::operator delete(memory);
 }
 
 std::string format_locations(std::span<const Location> locations, BoundaryPolicy policy) {

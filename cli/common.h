@@ -145,28 +145,4 @@ inline constexpr std::size_t kLocationSlot = 8;
 std::size_t format_locations_into(std::span<const Location> locations, BoundaryPolicy policy,
                                   char* out);
 
-/// Memory for a large buffer of a run (the answers of every point, the text written from them):
-/// from 256 KB on, whole 2 MB pages advised for transparent huge pages
-/// (detail::allocate_huge_page_block; HugePageAllocator starts at 4 MB), so that writing it first
-/// costs a page fault every 2 MB instead of every 4 KB. A fault a 4 KB page cost 11.6 us on the
-/// project's machine (a virtual machine whose hypervisor takes each fault), 3 ms for the 1 MB of
-/// answers of 10^6 points. Below 256 KB, operator new.
-[[nodiscard]] void* allocate_large(std::size_t bytes);
-/// Frees what allocate_large(bytes) gave.
-void free_large(void* memory, std::size_t bytes) noexcept;
-
-/// A std::allocator by allocate_large, for the vectors of a run's large buffers.
-template <class T>
-struct LargeAllocator {
-  using value_type = T;
-  LargeAllocator() = default;
-  template <class U>
-  explicit LargeAllocator(const LargeAllocator<U>&) noexcept {}
-  [[nodiscard]] T* allocate(std::size_t n) {
-    return static_cast<T*>(allocate_large(n * sizeof(T)));
-  }
-  void deallocate(T* p, std::size_t n) noexcept { free_large(p, n * sizeof(T)); }
-  friend bool operator==(const LargeAllocator&, const LargeAllocator&) { return true; }
-};
-
 }  // namespace contain::cli

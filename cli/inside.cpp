@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common.h"
+#include "contain/core/huge_pages.h"
 #include "contain/inside/csg.h"
 #include "contain/inside/mesh_index.h"
 #include "contain/inside/polygon_index.h"
@@ -44,12 +45,14 @@ std::size_t most_points(const std::string& path, std::size_t shortest_line = 6) 
   return error ? unknown : static_cast<std::size_t>(size / shortest_line + 1);
 }
 
+// A byte a point, in huge pages (core/huge_pages.h): 10^6 answers are 245 pages of 4 kB to fault
+// in otherwise, and each element is written by the locate that follows its resize.
+using Answers = HugePageVector<Location>;
+
 // Reads the points a block at a time and answers each piece as it comes, keeping only the
 // answers (a byte a point): 10^8 points cost their answers and a block of text, not 2.4 GB of
 // points. Nothing is written before the whole file has been read, so a bad line late in the file
 // still gives exit 3 and no output. `locate(items, out)` answers a piece.
-// The answers of every point, a byte each: 1 MB for 10^6 points, in huge pages (allocate_large).
-using Answers = std::vector<Location, LargeAllocator<Location>>;
 
 template <class Item, class Read, class Locate>
 Result<Answers> locate_streamed(const InsideOptions& o, Read&& read, Locate&& locate) {

@@ -528,7 +528,9 @@ void MeshIndex::settle_empty_cells() {
     int column;         // the empty cells left of it count the hit
     int sign;
   };
-  std::vector<Hit> hits;
+  // Huge pages (26k hits, 310 kB, for the 100k torus): 4 kB pages cost more to fault in.
+  HugePageVector<Hit> hits;
+  hits.reserve(tris_.size() / 2);
   for (const Tri& tri : tris_) {
     if (tri.s == Sign::zero) continue;
     const Box3 b = bounding_box(Triangle3{tri.a, tri.b, tri.c});
@@ -565,7 +567,7 @@ void MeshIndex::settle_empty_cells() {
     ++start[h.row + 1];
   for (std::size_t r = 0; r < rows; ++r)
     start[r + 1] += start[r];
-  std::vector<Hit> by_row(hits.size());
+  HugePageVector<Hit> by_row(hits.size());  // default-initialized: every element written
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (const Hit& h : hits)

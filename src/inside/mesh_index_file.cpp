@@ -128,7 +128,7 @@ Result<MeshIndex> MeshIndexFile::read(index_bytes::Reader& r) {
   index.z_ = r.get_axis();
   index.state_ = r.get_array<std::uint8_t, HugePageAllocator<std::uint8_t>>();
   const auto surface = r.get_view<std::uint32_t>();
-  index.cell_start_ = r.get_array<std::uint32_t>();
+  index.cell_start_ = r.get_array<std::uint32_t, HugePageAllocator<std::uint32_t>>();
   const auto refs = r.get_view<std::uint32_t>();
   MeshIndex::Stats& s = index.stats_;
   for (std::size_t* v : {&s.triangles, &s.cells, &s.surface_cells, &s.cell_refs})
@@ -181,7 +181,7 @@ Result<MeshIndex> MeshIndexFile::read_grid(MeshIndex index,
       index.z_.lines().back() != b.max.z) {
     return bad("the grid does not match the triangles");
   }
-  const std::vector<std::uint32_t>& start = index.cell_start_;
+  const HugePageVector<std::uint32_t>& start = index.cell_start_;
   if (start.empty() || start.front() != 0 || start.back() != refs.size() ||
       !std::is_sorted(start.begin(), start.end()) || surface.size() != cells) {
     return bad("the surface cells' lists are malformed");

@@ -14,6 +14,10 @@
 #include "io/point_lines.h"
 #include "io/text_scan.h"
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace contain::io::detail {
 namespace {
 
@@ -262,6 +266,25 @@ Status read_off_vertices(Lines& in, std::int64_t nv, std::vector<Vec3>& vertices
   return Ok{};
 }
 
+// Maps in the pages of a vector's reserved capacity with one call (Linux's
+// MADV_POPULATE_WRITE) instead of a page fault each as the scanner first writes them: on the
+// 2-core VM of docs/benchmarks.md a fault costs about 12 us, the populated page about half of
+// that. Only the pages wholly inside the block are asked for; a hint, no effect on the contents.
+template <class T>
+void populate_capacity(std::vector<T>& values) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr std::uintptr_t kPage = 4096;
+  const auto begin = reinterpret_cast<std::uintptr_t>(values.data());
+  const std::uintptr_t first = (begin + kPage - 1) & ~(kPage - 1);
+  const std::uintptr_t last = (begin + values.capacity() * sizeof(T)) & ~(kPage - 1);
+  if (last > first + 16 * kPage) {
+    (void)::madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+  }
+#else
+  (void)values;
+#endif
+}
+
 bool keyword_is(std::string_view word, std::initializer_list<std::string_view> list) {
   return std::find(list.begin(), list.end(), word) != list.end();
 }
@@ -450,6 +473,8 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   std::vector<TriangleIndices> triangles;
   vertices.reserve(static_cast<std::size_t>(std::min(nv, cap)));
   triangles.reserve(static_cast<std::size_t>(std::min(nf, cap)));
+  populate_capacity(vertices);
+  populate_capacity(triangles);
   if (auto s = read_off_vertices(in, nv, vertices, source); !s) return s.error();
   MeshInfo info{.format = MeshFormat::off};
   std::vector<std::int32_t> corners;

@@ -39,8 +39,11 @@ template <class T>
 struct HugePageAllocator {
   using value_type = T;
   static constexpr std::size_t huge_page = detail::huge_page_bytes;
-  /// Below this, the slack of a 2 MB rounding is not worth it.
-  static constexpr std::size_t huge_page_threshold = 2 * huge_page;
+  /// Below this (128 kB), the slack of a 2 MB rounding is not worth it. Measured on the 2-core
+  /// VM of docs/benchmarks.md: the first touch of a 4 kB page costs about 12 us there (49 ms for
+  /// 16 MB), of a 2 MB huge page about 160 us (1.3 ms for 16 MB), so a block of 32 small pages
+  /// already costs more than one huge page; where faults are cheap it is about even.
+  static constexpr std::size_t huge_page_threshold = std::size_t{1} << 17;
 
   HugePageAllocator() = default;
   template <class U>

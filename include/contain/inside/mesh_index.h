@@ -129,7 +129,9 @@ class MeshIndex {
   [[nodiscard]] std::optional<Location> locate_settled(const Box3& box) const;
   /// Warms the cache for a query at `p` (its guessed cell's state byte), for callers'
   /// pipelines; no effect on any answer.
-  void prefetch(Vec3 p) const {
+  // Always inlined: out of line, GCC (12) takes a function whose only effect is
+  // __builtin_prefetch for one without effects (pure) and drops every call to it.
+  [[gnu::always_inline]] void prefetch(Vec3 p) const {
     if (packed_state_.empty()) return;
     const std::ptrdiff_t cell = guessed_cell(p);
     if (cell >= 0) __builtin_prefetch(&packed_state_[static_cast<std::size_t>(cell) / 4]);
@@ -247,7 +249,7 @@ class MeshIndex {
   // count (the winding number), as the two's complement bits of an int32.
   HugePageVector<std::uint32_t> surface_;
 
-  std::vector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
+  HugePageVector<std::uint32_t> cell_start_;  // surface cell k: refs_[cell_start_[k] .. [k + 1])
   // The surface cells' lists: the triangles' numbers (into tris_), 4 bytes a reference. A copy of
   // each triangle's box beside its number (28 bytes) made the lists 18 MB for 100k triangles,
   // most of the build's time spent by the kernel zeroing their pages; the box is read from the

@@ -116,7 +116,10 @@ class PolygonIndex {
   /// is an edge cell, not the packed states: 2 bits a cell, they stay cached on small grids, 16 kB
   /// for 2^16 cells, but at max_cells they are 256 kB and the word read here may miss), for
   /// callers' pipelines; no effect on any answer.
-  void prefetch(Vec2 point) const {
+  // Always inlined, as MeshIndex::prefetch: without it GCC (12) takes a function whose only
+  // effect is __builtin_prefetch for one without effects and drops every call to it (even this
+  // header's inline definition compiled to a bare `ret` where io::locate_bounded calls it).
+  [[gnu::always_inline]] void prefetch(Vec2 point) const {
     const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
     if (cell < 0) return;
     const auto c = static_cast<std::size_t>(cell);
