@@ -227,21 +227,19 @@ int line_axis(const Soup& soup, std::int32_t t, std::int32_t u) {
   return axis;
 }
 
-void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u,
-                  std::vector<TriangleWork>& work) {
+void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u, PairWork& work) {
   for (const auto& [to, from] : {std::pair{t, u}, std::pair{u, t}}) {
-    TriangleWork& w = work[static_cast<std::size_t>(to)];
-    w.coplanar.push_back(from);
+    work.add_coplanar(to, from);
     for (int i = 0; i < 3; ++i) {
       const std::int32_t a = vertex_id(soup, from, i), b = vertex_id(soup, from, (i + 1) % 3);
-      w.constraints.push_back({a, b, edge_key(a, b)});
+      work.add_constraint(to, {a, b, edge_key(a, b)});
     }
   }
 }
 
 template <class Points>
 void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& store,
-                    std::vector<TriangleWork>& work) {
+                    PairWork& work) {
   if (soup.degenerate[static_cast<std::size_t>(t)] ||
       soup.degenerate[static_cast<std::size_t>(u)]) {
     return;
@@ -274,8 +272,8 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& st
   if (shares(soup, t, lo) && shares(soup, u, lo) && shares(soup, t, hi) && shares(soup, u, hi)) {
     return;
   }
-  work[static_cast<std::size_t>(t)].constraints.push_back({lo, hi});
-  work[static_cast<std::size_t>(u)].constraints.push_back({lo, hi});
+  work.add_constraint(t, {lo, hi});
+  work.add_constraint(u, {lo, hi});
 }
 
 // Whether t and u share a corner that is a proven vertex of the soup (`corners` from
@@ -318,11 +316,11 @@ std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std:
 }
 
 template <class Points>
-std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
+PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
   // One box per triangle: mesh_boolean frees them after this stage (Soup::boxes).
   assert(soup.boxes.size() == soup.triangles.size());
   const std::vector<Box3>& boxes = soup.boxes;
-  std::vector<TriangleWork> work(soup.triangles.size());
+  PairWork work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.
   const bool patches_pay =
       neighbours == Neighbours::proven && soup.triangles.size() >= patch_proofs_from;
@@ -373,6 +371,7 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
         return bvh::Visit::proceed;
       },
       [&](std::int32_t node) { return !patches || !patches->settled(node); });
+  work.finish();
   return work;
 }
 
@@ -388,13 +387,12 @@ EnclosedPoints enclosed_vertices(const Soup& soup) {
 
 }  // namespace
 
-std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
-                                          Neighbours neighbours) {
+PairWork intersect_pairs(const Soup& soup, PointStore& store, Neighbours neighbours) {
   StoredPoints points(store);
   return pairs_of(soup, points, neighbours);
 }
 
-std::vector<TriangleWork> meeting_pairs(const Soup& soup) {
+PairWork meeting_pairs(const Soup& soup) {
   EnclosedPoints points = enclosed_vertices(soup);
   // Every pair tested: the check of a written mesh stays independent of the proofs, and gets
   // little from them (its soup is the neighbourhood of the rounded triangles, whose stars are
@@ -406,13 +404,36 @@ std::vector<TriangleWork> meeting_pairs(const Soup& soup) {
 bool pair_gives_work(const Soup& soup, std::int32_t t, std::int32_t u) {
   EnclosedPoints points = enclosed_vertices(soup);
   const std::size_t before = points.points.size();
-  std::vector<TriangleWork> work(soup.triangles.size());
+  PairWork work(soup.triangles.size());
   intersect_pair(soup, t, u, points, work);
+  work.finish();
   if (points.points.size() != before) return true;
   return !work[static_cast<std::size_t>(t)].constraints.empty() ||
          !work[static_cast<std::size_t>(t)].coplanar.empty() ||
          !work[static_cast<std::size_t>(u)].constraints.empty() ||
          !work[static_cast<std::size_t>(u)].coplanar.empty();
+}
+
+void PairWork::finish() {
+  if (!found_.empty()) {
+    // A counting sort by triangle, stable: each triangle's constraints in the order found.
+    // Counts, then the end of each triangle's run, then filled from the back, which leaves
+    // first_[t] at the run's start (no second array of positions).
+    first_.assign(triangles_ + 1, 0);
+    for (const Found& f : found_)
+      ++first_[static_cast<std::size_t>(f.t)];
+    for (std::size_t t = 1; t <= triangles_; ++t)
+      first_[t] += first_[t - 1];
+    constraints_.resize(found_.size());
+    for (auto f = found_.rbegin(); f != found_.rend(); ++f)
+      constraints_[--first_[static_cast<std::size_t>(f->t)]] = f->c;
+    std::vector<Found>().swap(found_);
+  }
+  std::stable_sort(partners_.begin(), partners_.end(),
+                   [](const Partner& a, const Partner& b) { return a.t < b.t; });
+  coplanar_.resize(partners_.size());
+  for (std::size_t i = 0; i < partners_.size(); ++i)
+    coplanar_[i] = partners_[i].u;
 }
 
 }  // namespace contain::clip::solid
