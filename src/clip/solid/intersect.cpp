@@ -326,7 +326,7 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
       neighbours == Neighbours::proven && soup.triangles.size() >= patch_proofs_from;
   ProvenStars stars;
   if (patches_pay) {
-    stars = proven_stars(soup);
+    stars = proven_stars(soup, StarOrder::leaf);
   } else if (neighbours == Neighbours::proven) {
     stars.corners = proven_corners(soup);
   } else {
@@ -337,11 +337,10 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
   // points).
   std::optional<PatchProofs> patches;
   if (patches_pay) {
-    patches.emplace(soup, stars);
+    patches.emplace(PatchProofs::from_leaf_order(soup, stars));
     // What the proofs read once, given back before the walk, whose allocations (constraints,
     // the table of crossings, the store's growth) then take it over instead of growing the heap
     // (the process keeps freed memory; each fresh page is a fault).
-    std::vector<std::array<std::int32_t, 3>>().swap(stars.across);
     std::vector<std::uint8_t>().swap(stars.turns);
   }
   const std::vector<std::uint8_t>& corners = stars.corners;
