@@ -93,12 +93,13 @@ class Soup {
   /// normal only where the filter cannot tell (it is made for so many triangles otherwise).
   [[nodiscard]] Projection projection(std::size_t t) const;
   std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
-  /// Of each triangle (empty for a degenerate one), for the pair stage: mesh_boolean
-  /// (engine.cpp) frees them once the pairs are found, so later stages must not read them (they
-  /// use `tree`, whose nodes hold their own boxes). The pair stage and region_soup (snap.cpp)
-  /// require one box per triangle.
+  /// Empty, or one box per triangle for the pair stage and `tree` (a soup that gives some
+  /// triangles empty boxes, region_soup in snap.cpp, or the boxes of a written mesh's check).
+  /// Empty in a soup of make_soup: then a triangle's box is `triangle_box`, computed where
+  /// needed (an array of them, 48 bytes a triangle, was the soup's largest, 12.6 MB of fresh
+  /// pages at two 131k-triangle spheres, live through the pair stage at the process's peak).
   std::vector<Box3> boxes;
-  bvh::Bvh tree;  ///< over `boxes`: the pairs and the rays of the labels
+  bvh::Bvh tree;  ///< over the triangles' boxes: the pairs and the rays of the labels
   std::size_t inputs = 0;
   /// `vertices` numbered by value, as welded (empty for soups not made by make_soup).
   PointTable index;
@@ -107,6 +108,16 @@ class Soup {
   // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
   mutable std::vector<std::unique_ptr<BigVec3>> normals_;
 };
+
+/// The box of triangle t of a soup from its corners (empty for a degenerate one: it meets
+/// nothing), the box `Soup::boxes` would hold.
+[[nodiscard]] inline Box3 triangle_box(const Soup& soup, std::size_t t) {
+  Box3 box;
+  if (soup.degenerate[t]) return box;
+  for (const std::int32_t i : soup.triangles[t])
+    box.expand(soup.vertices[static_cast<std::size_t>(i)]);
+  return box;
+}
 
 /// Hashing and equality of points of doubles by value (+0 and -0 are one key: they are equal).
 struct Vec3Hash {

@@ -297,14 +297,19 @@ bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corn
 // The item pairs of a leaf pair (a and b the same span: one leaf's pairs i < j) whose boxes
 // meet, as bits i * 4 + j, tested without a branch per pair (whether two boxes of neighbouring
 // triangles meet is a coin toss for the branch predictor). Leaves of at most 4 items.
-std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std::int32_t> a,
+template <class BoxOf>
+std::uint32_t meeting_boxes(const BoxOf& box_of, std::span<const std::int32_t> a,
                             std::span<const std::int32_t> b) {
   const bool same = a.data() == b.data();
+  // Each box once (computed from its corners where the soup keeps none).
+  std::array<Box3, 4> qs;
+  for (std::size_t j = 0; j < b.size(); ++j)
+    qs[j] = box_of(b[j]);
   std::uint32_t bits = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const Box3& p = boxes[static_cast<std::size_t>(a[i])];
+    const Box3 p = same ? qs[i] : box_of(a[i]);
     for (std::size_t j = 0; j < b.size(); ++j) {
-      const Box3& q = boxes[static_cast<std::size_t>(b[j])];
+      const Box3& q = qs[j];
       // As Box3::overlaps, with & for && (an empty box still meets nothing).
       const bool meet = (p.min.x <= q.max.x) & (q.min.x <= p.max.x) & (p.min.y <= q.max.y) &
                         (q.min.y <= p.max.y) & (p.min.z <= q.max.z) & (q.min.z <= p.max.z) &
@@ -315,11 +320,8 @@ std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std:
   return bits;
 }
 
-template <class Points>
-PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
-  // One box per triangle: mesh_boolean frees them after this stage (Soup::boxes).
-  assert(soup.boxes.size() == soup.triangles.size());
-  const std::vector<Box3>& boxes = soup.boxes;
+template <class Points, class BoxOf>
+PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours, const BoxOf& box_of) {
   PairWork work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.
   const bool patches_pay =
@@ -355,15 +357,12 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
           const bool same = a.data() == b.data();
           for (std::size_t i = 0; i < a.size(); ++i) {
             for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
-              if (boxes[static_cast<std::size_t>(a[i])].overlaps(
-                      boxes[static_cast<std::size_t>(b[j])])) {
-                pair(a[i], b[j]);
-              }
+              if (box_of(a[i]).overlaps(box_of(b[j]))) pair(a[i], b[j]);
             }
           }
           return bvh::Visit::proceed;
         }
-        for (std::uint32_t bits = meeting_boxes(boxes, a, b); bits != 0; bits &= bits - 1) {
+        for (std::uint32_t bits = meeting_boxes(box_of, a, b); bits != 0; bits &= bits - 1) {
           const auto k = static_cast<std::size_t>(std::countr_zero(bits));
           pair(a[k / 4], b[k % 4]);
         }
@@ -372,6 +371,20 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
       [&](std::int32_t node) { return !patches || !patches->settled(node); });
   work.finish();
   return work;
+}
+
+// pairs_of with the soup's boxes: kept (one per triangle) or, in a soup of make_soup, computed
+// from the corners.
+template <class Points>
+PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
+  if (soup.boxes.empty()) {
+    return pairs_of(soup, store, neighbours, [&soup](std::int32_t t) {
+      return triangle_box(soup, static_cast<std::size_t>(t));
+    });
+  }
+  assert(soup.boxes.size() == soup.triangles.size());
+  return pairs_of(soup, store, neighbours,
+                  [&soup](std::int32_t t) { return soup.boxes[static_cast<std::size_t>(t)]; });
 }
 
 EnclosedPoints enclosed_vertices(const Soup& soup) {

@@ -254,8 +254,7 @@ constexpr std::array<int, 10> round_levels = {-1, -1, -1, 2, 5, 8, 11, 14, 17, 2
 // The soup with a hierarchy over the triangles of `region` only (the others get empty boxes):
 // the pair stage on it tests just their pairs, with the soup's own vertex and triangle numbers.
 Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
-  // One box per triangle: not a soup whose boxes mesh_boolean freed (Soup::boxes).
-  assert(soup.boxes.size() == soup.triangles.size());
+  assert(soup.boxes.empty() || soup.boxes.size() == soup.triangles.size());
   Soup out;
   out.vertices = soup.vertices;
   out.triangles = soup.triangles;
@@ -264,7 +263,9 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
   out.inputs = soup.inputs;
   out.boxes.assign(soup.boxes.size(), Box3{});
   for (const std::int32_t t : region)
-    out.boxes[static_cast<std::size_t>(t)] = soup.boxes[static_cast<std::size_t>(t)];
+    out.boxes[static_cast<std::size_t>(t)] = soup.boxes.empty()
+                                                 ? triangle_box(soup, static_cast<std::size_t>(t))
+                                                 : soup.boxes[static_cast<std::size_t>(t)];
   out.tree = bvh::Bvh(out.boxes);
   return out;
 }
