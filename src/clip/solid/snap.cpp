@@ -261,7 +261,7 @@ Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
   out.input = soup.input;
   out.degenerate = soup.degenerate;
   out.inputs = soup.inputs;
-  out.boxes.assign(soup.boxes.size(), Box3{});
+  out.boxes.assign(soup.triangles.size(), Box3{});
   for (const std::int32_t t : region)
     out.boxes[static_cast<std::size_t>(t)] = soup.boxes.empty()
                                                  ? triangle_box(soup, static_cast<std::size_t>(t))
