@@ -242,7 +242,10 @@ struct Builder {
 Bvh::Bvh(std::span<const Box3> boxes, const BuildOptions& options) {
   if (boxes.empty()) return;
   if (options.method == BuildMethod::morton) {
-    build_morton(boxes, options);
+    build_morton(
+        boxes.size(),
+        [](const void* context, std::size_t i) { return static_cast<const Box3*>(context)[i]; },
+        boxes.data(), options.max_leaf_items);
     return;
   }
   items_.resize(boxes.size());

@@ -55,7 +55,8 @@ Vec3 centroid_of(const Box3& b) {
 }
 
 struct MortonBuilder {
-  std::span<const Box3> boxes;
+  Box3 (*box_of)(const void*, std::size_t);
+  const void* context;
   const std::vector<std::uint64_t>& codes;
   const std::vector<std::int32_t>& items;
   std::vector<Node>& nodes;
@@ -68,7 +69,7 @@ struct MortonBuilder {
     Box3 box;
     if (end - begin <= max_leaf) {
       for (std::size_t k = begin; k < end; ++k)
-        box.expand(boxes[static_cast<std::size_t>(items[k])]);
+        box.expand(box_of(context, static_cast<std::size_t>(items[k])));
       nodes[node].box = box;
       nodes[node].first = static_cast<std::int32_t>(begin);
       nodes[node].count = static_cast<std::int32_t>(end - begin);
@@ -100,27 +101,26 @@ struct MortonBuilder {
 
 }  // namespace
 
-void Bvh::build_morton(std::span<const Box3> boxes, const BuildOptions& options) {
-  const std::size_t n = boxes.size();
+void Bvh::build_morton(std::size_t n, BoxSource box_of, const void* context, int max_leaf_items) {
   // The centroids are computed twice (for their bounds, then for the codes) rather than kept:
   // an array of 24 bytes an item, written once and read once, was a third of the build's fresh
   // pages, and a page fault costs more than the few additions.
   Box3 cbox;
-  for (const Box3& b : boxes)
-    cbox.expand(centroid_of(b));
+  for (std::size_t i = 0; i < n; ++i)
+    cbox.expand(centroid_of(box_of(context, i)));
   const Grid gx(cbox.min.x, cbox.max.x), gy(cbox.min.y, cbox.max.y), gz(cbox.min.z, cbox.max.z);
   std::vector<std::uint64_t> codes(n);
   items_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 c = centroid_of(boxes[i]);
+    const Vec3 c = centroid_of(box_of(context, i));
     codes[i] = spread(gx.cell(c.x)) << 2U | spread(gy.cell(c.y)) << 1U | spread(gz.cell(c.z));
     items_[i] = static_cast<std::int32_t>(i);
   }
   stable_radix_sort(codes, items_, 3 * kBitsPerAxis);
   nodes_.reserve(2 * n);
   nodes_.emplace_back();
-  MortonBuilder builder{boxes, codes, items_, nodes_,
-                        static_cast<std::size_t>(std::max(options.max_leaf_items, 1))};
+  MortonBuilder builder{box_of, context, codes,
+                        items_, nodes_,  static_cast<std::size_t>(std::max(max_leaf_items, 1))};
   (void)builder.build(0, 0, n, 1);
   depth_ = builder.depth;
 }

@@ -440,6 +440,36 @@ TEST(MortonBvh, SelfTraversalFindsEachOverlappingPairOnceAndTheTreeIsDeterminist
   }
 }
 
+// Bvh::morton over boxes given by a callable (the mesh boolean computes a triangle's box from its
+// corners instead of keeping an array) is the tree of those boxes: the same items in the same
+// leaf order, the same nodes and depth, empty boxes and other leaf sizes included.
+TEST(MortonBvh, BoxesGivenByACallableBuildTheTreeOfThoseBoxes) {
+  std::vector<Box3> boxes = random_boxes(3000, 23);
+  boxes[17] = Box3{};
+  boxes[2999] = Box3{};
+  for (const int leaf : {1, 4, 7}) {
+    const Bvh stored(boxes, {.method = BuildMethod::morton, .max_leaf_items = leaf});
+    std::size_t calls = 0;
+    const Bvh computed = Bvh::morton(
+        boxes.size(),
+        [&](std::size_t i) {
+          ++calls;
+          return boxes[i];
+        },
+        leaf);
+    EXPECT_GT(calls, 0U);
+    EXPECT_EQ(computed.depth(), stored.depth()) << leaf;
+    EXPECT_TRUE(std::ranges::equal(computed.items(), stored.items())) << leaf;
+    ASSERT_EQ(computed.nodes().size(), stored.nodes().size()) << leaf;
+    for (std::size_t n = 0; n < stored.nodes().size(); ++n) {
+      EXPECT_EQ(computed.nodes()[n].first, stored.nodes()[n].first) << leaf;
+      EXPECT_EQ(computed.nodes()[n].count, stored.nodes()[n].count) << leaf;
+      EXPECT_EQ(computed.nodes()[n].box, stored.nodes()[n].box) << leaf;
+    }
+  }
+  EXPECT_TRUE(Bvh::morton(0, [](std::size_t) { return Box3{}; }).empty());
+}
+
 TEST(MortonBvh, CoincidentOrExtremeCentroidsStillPlaceEveryItemOnceAtABoundedDepth) {
   const std::vector<Box3> same(4096, Box3{{1, 1, 1}, {2, 2, 2}});
   const Bvh coincident(same, morton);

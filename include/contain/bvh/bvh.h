@@ -81,6 +81,22 @@ class Bvh {
   /// Builds over `boxes` (item i has box boxes[i]); no box may hold NaN.
   explicit Bvh(std::span<const Box3> boxes, const BuildOptions& options = {});
 
+  /// The linear build (BuildMethod::morton, leaves of at most `max_leaf_items`) over n items
+  /// whose boxes `box_of(std::size_t i) -> Box3` gives where they are not kept in an array (a
+  /// triangle's box from its corners: an array of them is 48 bytes an item, each page of it a
+  /// fault). The same tree as `Bvh(boxes, {.method = BuildMethod::morton})` over those boxes;
+  /// `box_of` is called a few times per item and must give the same box each time.
+  template <class BoxOf>
+  [[nodiscard]] static Bvh morton(std::size_t n, const BoxOf& box_of, int max_leaf_items = 4) {
+    Bvh tree;
+    if (n == 0) return tree;
+    tree.build_morton(
+        n,
+        [](const void* context, std::size_t i) { return (*static_cast<const BoxOf*>(context))(i); },
+        &box_of, max_leaf_items);
+    return tree;
+  }
+
   /// The nodes, root first (none for an empty hierarchy).
   [[nodiscard]] std::span<const Node> nodes() const { return nodes_; }
   /// Item numbers in leaf order: a leaf holds items()[first .. first + count).
@@ -99,7 +115,8 @@ class Bvh {
   TraversalStats traverse(Enter&& enter, VisitItem&& visit) const;
 
  private:
-  void build_morton(std::span<const Box3> boxes, const BuildOptions& options);
+  using BoxSource = Box3 (*)(const void* context, std::size_t item);
+  void build_morton(std::size_t n, BoxSource box_of, const void* context, int max_leaf_items);
 
   std::vector<Node> nodes_;
   std::vector<std::int32_t> items_;

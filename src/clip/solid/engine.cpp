@@ -24,12 +24,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
     // The pairs' work, the refinement and the labels are done with once the result's faces are
     // chosen: freed before the write phase, whose sheets and exact check then reuse their
     // memory (the process keeps freed memory) instead of faulting in fresh pages.
-    const std::vector<solid::TriangleWork> work = solid::intersect_pairs(*soup, store);
-    // The triangles' boxes serve the pair stage only (the labels' rays walk the tree, whose
-    // nodes hold their own boxes): their 48 bytes a triangle, the largest of the soup's arrays,
-    // freed now are the pages the refinement, the labels and the written mesh reuse instead of
-    // faulting in fresh ones.
-    std::vector<Box3>().swap(soup->boxes);
+    const solid::PairWork work = solid::intersect_pairs(*soup, store);
     const solid::Refinement refinement = solid::refine(*soup, work, store);
     const solid::FaceLabels labels = solid::label_faces(*soup, refinement, store);
     boundary = solid::boundary_faces(*soup, refinement, work, labels, store, options.op);

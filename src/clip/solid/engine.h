@@ -93,12 +93,13 @@ class Soup {
   /// normal only where the filter cannot tell (it is made for so many triangles otherwise).
   [[nodiscard]] Projection projection(std::size_t t) const;
   std::vector<bool> degenerate;  ///< zero area (normal zero): bounds nothing, skipped
-  /// Of each triangle (empty for a degenerate one), for the pair stage: mesh_boolean
-  /// (engine.cpp) frees them once the pairs are found, so later stages must not read them (they
-  /// use `tree`, whose nodes hold their own boxes). The pair stage and region_soup (snap.cpp)
-  /// require one box per triangle.
+  /// Empty, or one box per triangle for the pair stage and `tree` (a soup that gives some
+  /// triangles empty boxes, region_soup in snap.cpp, or the boxes of a written mesh's check).
+  /// Empty in a soup of make_soup: then a triangle's box is `triangle_box`, computed where
+  /// needed (an array of them, 48 bytes a triangle, was the soup's largest, 12.6 MB of fresh
+  /// pages at two 131k-triangle spheres, live through the pair stage at the process's peak).
   std::vector<Box3> boxes;
-  bvh::Bvh tree;  ///< over `boxes`: the pairs and the rays of the labels
+  bvh::Bvh tree;  ///< over the triangles' boxes: the pairs and the rays of the labels
   std::size_t inputs = 0;
   /// `vertices` numbered by value, as welded (empty for soups not made by make_soup).
   PointTable index;
@@ -107,6 +108,16 @@ class Soup {
   // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
   mutable std::vector<std::unique_ptr<BigVec3>> normals_;
 };
+
+/// The box of triangle t of a soup from its corners (empty for a degenerate one: it meets
+/// nothing), the box `Soup::boxes` would hold.
+[[nodiscard]] inline Box3 triangle_box(const Soup& soup, std::size_t t) {
+  Box3 box;
+  if (soup.degenerate[t]) return box;
+  for (const std::int32_t i : soup.triangles[t])
+    box.expand(soup.vertices[static_cast<std::size_t>(i)]);
+  return box;
+}
 
 /// Hashing and equality of points of doubles by value (+0 and -0 are one key: they are equal).
 struct Vec3Hash {
@@ -195,10 +206,64 @@ struct Constraint {
   std::uint64_t edge = no_edge;  ///< the input edge it lies along (a coplanar partner's edge)
 };
 
-/// What the pair stage found for one triangle.
+/// What the pair stage found for one triangle (views into its `PairWork`).
 struct TriangleWork {
-  std::vector<Constraint> constraints;
-  std::vector<std::int32_t> coplanar;  ///< triangles in its plane whose boxes meet it
+  std::span<const Constraint> constraints;  ///< in the order found
+  std::span<const std::int32_t> coplanar;   ///< triangles in its plane whose boxes meet it
+};
+
+/// What the pair stage found for every triangle of a soup, in flat arrays grouped by triangle
+/// (offsets into one array of constraints, the few coplanar partners by a search): most
+/// triangles get nothing, and a vector of two vectors per triangle (48 bytes, 12.6 MB of fresh
+/// pages at two 131k-triangle spheres) was the pair stage's largest allocation, live at the
+/// process's peak.
+class PairWork {
+ public:
+  PairWork() = default;
+  explicit PairWork(std::size_t triangles) : triangles_(triangles) {}
+  /// While the pairs are found: constraint c of triangle t, after those given before.
+  void add_constraint(std::int32_t t, const Constraint& c) { found_.push_back({t, c}); }
+  /// While the pairs are found: coplanar partner u of triangle t, after those given before.
+  void add_coplanar(std::int32_t t, std::int32_t u) { partners_.push_back({t, u}); }
+  /// Groups what was added by triangle, each triangle's in the order added; called once, after
+  /// the last add and before any read.
+  void finish();
+  [[nodiscard]] std::size_t size() const { return triangles_; }
+  [[nodiscard]] TriangleWork operator[](std::size_t t) const {
+    TriangleWork w;
+    if (!first_.empty()) {
+      w.constraints = std::span<const Constraint>(constraints_)
+                          .subspan(first_[t], static_cast<std::size_t>(first_[t + 1] - first_[t]));
+    }
+    if (!partners_.empty()) {
+      const auto key = static_cast<std::int32_t>(t);
+      const auto lo = std::lower_bound(partners_.begin(), partners_.end(), key,
+                                       [](const Partner& p, std::int32_t x) { return p.t < x; });
+      auto hi = lo;
+      while (hi != partners_.end() && hi->t == key)
+        ++hi;
+      w.coplanar = std::span<const std::int32_t>(coplanar_).subspan(
+          static_cast<std::size_t>(lo - partners_.begin()), static_cast<std::size_t>(hi - lo));
+    }
+    return w;
+  }
+  /// The constraints of all triangles.
+  [[nodiscard]] std::size_t constraints() const { return constraints_.size(); }
+
+ private:
+  struct Found {
+    std::int32_t t;
+    Constraint c;
+  };
+  struct Partner {
+    std::int32_t t, u;
+  };
+  std::size_t triangles_ = 0;
+  std::vector<Found> found_;  // as added; emptied by finish
+  std::vector<Constraint> constraints_;
+  std::vector<std::uint32_t> first_;    // triangle t's constraints from first_[t] to first_[t + 1]
+  std::vector<Partner> partners_;       // by triangle after finish (stable)
+  std::vector<std::int32_t> coplanar_;  // partners_[i].u
 };
 
 /// One triangle of the refined surface, oriented as its input triangle.
@@ -243,16 +308,15 @@ struct FaceLabels {
 /// that share a proven vertex, or tests every pair (the check of a written mesh; the tests that
 /// compare the two).
 enum class Neighbours : std::uint8_t { proven, tested };
-[[nodiscard]] std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
-                                                        Neighbours neighbours = Neighbours::proven);
+[[nodiscard]] PairWork intersect_pairs(const Soup& soup, PointStore& store,
+                                       Neighbours neighbours = Neighbours::proven);
 /// The same decisions (the same constraints of each triangle, the same coplanar partners) with
 /// points numbered apart from any store: the soup's vertices first, then each crossing as made,
 /// enclosed but not rounded (for the check of a written mesh and the bounds of a snap round,
 /// which ask only which pairs meet; the exact rounding of crossings of nearly parallel planes
 /// was most of a failing snap's time).
-[[nodiscard]] std::vector<TriangleWork> meeting_pairs(const Soup& soup);
-[[nodiscard]] Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work,
-                                PointStore& store);
+[[nodiscard]] PairWork meeting_pairs(const Soup& soup);
+[[nodiscard]] Refinement refine(const Soup& soup, const PairWork& work, PointStore& store);
 /// Triangles of the constrained triangulation of triangle `corners` (oriented positively in
 /// the projection dropping `axis` after multiplying orientations by `sense`) with `points`
 /// (inside it or on its edges) and `pieces` (non-crossing, no point in their interiors).

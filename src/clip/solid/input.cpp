@@ -82,7 +82,6 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
   soup.triangles.reserve(triangles);
   soup.input.reserve(triangles);
   soup.degenerate.reserve(triangles);
-  soup.boxes.reserve(triangles);
   std::vector<std::int32_t> remap;  // welded number of each vertex of the input at hand
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const Mesh& mesh = inputs[k];
@@ -102,8 +101,8 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
       remap[i] = id;
     }
     const std::size_t first = soup.triangles.size();
-    // Each triangle's welded corners, whether it is degenerate and its box in one pass over the
-    // input (a second pass over the soup read every corner again).
+    // Each triangle's welded corners and whether it is degenerate in one pass over the input (a
+    // second pass over the soup read every corner again).
     for (const TriangleIndices& t : mesh.triangles) {
       for (const std::int32_t i : t) {
         if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
@@ -125,13 +124,6 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
                               orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::zero &&
                               orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::zero;
       soup.degenerate.push_back(degenerate);
-      Box3 box;  // empty for a degenerate triangle: it meets nothing
-      if (!degenerate) {
-        box.expand(a);
-        box.expand(b);
-        box.expand(c);
-      }
-      soup.boxes.push_back(box);
     }
     if (const Status closed = check_closed(soup, first, k); !closed) return closed.error();
   }
@@ -140,7 +132,9 @@ Result<Soup> make_soup(std::span<const Mesh> inputs) {
   // looser tree costs the pairs and rays less than that. The tree's order numbers the crossing
   // points, which steers how merged coplanar faces are triangulated again: a different build
   // writes different (equally valid, the same solid) triangulations of merged faces.
-  soup.tree = bvh::Bvh(soup.boxes, {.method = bvh::BuildMethod::morton});
+  // The boxes from the corners (triangle_box), not kept.
+  soup.tree = bvh::Bvh::morton(soup.triangles.size(),
+                               [&soup](std::size_t t) { return triangle_box(soup, t); });
   return soup;
 }
 

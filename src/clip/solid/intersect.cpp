@@ -227,21 +227,19 @@ int line_axis(const Soup& soup, std::int32_t t, std::int32_t u) {
   return axis;
 }
 
-void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u,
-                  std::vector<TriangleWork>& work) {
+void add_coplanar(const Soup& soup, std::int32_t t, std::int32_t u, PairWork& work) {
   for (const auto& [to, from] : {std::pair{t, u}, std::pair{u, t}}) {
-    TriangleWork& w = work[static_cast<std::size_t>(to)];
-    w.coplanar.push_back(from);
+    work.add_coplanar(to, from);
     for (int i = 0; i < 3; ++i) {
       const std::int32_t a = vertex_id(soup, from, i), b = vertex_id(soup, from, (i + 1) % 3);
-      w.constraints.push_back({a, b, edge_key(a, b)});
+      work.add_constraint(to, {a, b, edge_key(a, b)});
     }
   }
 }
 
 template <class Points>
 void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& store,
-                    std::vector<TriangleWork>& work) {
+                    PairWork& work) {
   if (soup.degenerate[static_cast<std::size_t>(t)] ||
       soup.degenerate[static_cast<std::size_t>(u)]) {
     return;
@@ -274,8 +272,8 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& st
   if (shares(soup, t, lo) && shares(soup, u, lo) && shares(soup, t, hi) && shares(soup, u, hi)) {
     return;
   }
-  work[static_cast<std::size_t>(t)].constraints.push_back({lo, hi});
-  work[static_cast<std::size_t>(u)].constraints.push_back({lo, hi});
+  work.add_constraint(t, {lo, hi});
+  work.add_constraint(u, {lo, hi});
 }
 
 // Whether t and u share a corner that is a proven vertex of the soup (`corners` from
@@ -299,14 +297,19 @@ bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corn
 // The item pairs of a leaf pair (a and b the same span: one leaf's pairs i < j) whose boxes
 // meet, as bits i * 4 + j, tested without a branch per pair (whether two boxes of neighbouring
 // triangles meet is a coin toss for the branch predictor). Leaves of at most 4 items.
-std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std::int32_t> a,
+template <class BoxOf>
+std::uint32_t meeting_boxes(const BoxOf& box_of, std::span<const std::int32_t> a,
                             std::span<const std::int32_t> b) {
   const bool same = a.data() == b.data();
+  // Each box once (computed from its corners where the soup keeps none).
+  std::array<Box3, 4> qs;
+  for (std::size_t j = 0; j < b.size(); ++j)
+    qs[j] = box_of(b[j]);
   std::uint32_t bits = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const Box3& p = boxes[static_cast<std::size_t>(a[i])];
+    const Box3 p = same ? qs[i] : box_of(a[i]);
     for (std::size_t j = 0; j < b.size(); ++j) {
-      const Box3& q = boxes[static_cast<std::size_t>(b[j])];
+      const Box3& q = qs[j];
       // As Box3::overlaps, with & for && (an empty box still meets nothing).
       const bool meet = (p.min.x <= q.max.x) & (q.min.x <= p.max.x) & (p.min.y <= q.max.y) &
                         (q.min.y <= p.max.y) & (p.min.z <= q.max.z) & (q.min.z <= p.max.z) &
@@ -317,18 +320,15 @@ std::uint32_t meeting_boxes(const std::vector<Box3>& boxes, std::span<const std:
   return bits;
 }
 
-template <class Points>
-std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
-  // One box per triangle: mesh_boolean frees them after this stage (Soup::boxes).
-  assert(soup.boxes.size() == soup.triangles.size());
-  const std::vector<Box3>& boxes = soup.boxes;
-  std::vector<TriangleWork> work(soup.triangles.size());
+template <class Points, class BoxOf>
+PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours, const BoxOf& box_of) {
+  PairWork work(soup.triangles.size());
   // Pairs sharing a proven vertex are settled without their test.
   const bool patches_pay =
       neighbours == Neighbours::proven && soup.triangles.size() >= patch_proofs_from;
   ProvenStars stars;
   if (patches_pay) {
-    stars = proven_stars(soup);
+    stars = proven_stars(soup, StarOrder::leaf);
   } else if (neighbours == Neighbours::proven) {
     stars.corners = proven_corners(soup);
   } else {
@@ -339,11 +339,10 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
   // points).
   std::optional<PatchProofs> patches;
   if (patches_pay) {
-    patches.emplace(soup, stars);
+    patches.emplace(PatchProofs::from_leaf_order(soup, stars));
     // What the proofs read once, given back before the walk, whose allocations (constraints,
     // the table of crossings, the store's growth) then take it over instead of growing the heap
     // (the process keeps freed memory; each fresh page is a fault).
-    std::vector<std::array<std::int32_t, 3>>().swap(stars.across);
     std::vector<std::uint8_t>().swap(stars.turns);
   }
   const std::vector<std::uint8_t>& corners = stars.corners;
@@ -358,22 +357,34 @@ std::vector<TriangleWork> pairs_of(const Soup& soup, Points& store, Neighbours n
           const bool same = a.data() == b.data();
           for (std::size_t i = 0; i < a.size(); ++i) {
             for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
-              if (boxes[static_cast<std::size_t>(a[i])].overlaps(
-                      boxes[static_cast<std::size_t>(b[j])])) {
-                pair(a[i], b[j]);
-              }
+              if (box_of(a[i]).overlaps(box_of(b[j]))) pair(a[i], b[j]);
             }
           }
           return bvh::Visit::proceed;
         }
-        for (std::uint32_t bits = meeting_boxes(boxes, a, b); bits != 0; bits &= bits - 1) {
+        for (std::uint32_t bits = meeting_boxes(box_of, a, b); bits != 0; bits &= bits - 1) {
           const auto k = static_cast<std::size_t>(std::countr_zero(bits));
           pair(a[k / 4], b[k % 4]);
         }
         return bvh::Visit::proceed;
       },
       [&](std::int32_t node) { return !patches || !patches->settled(node); });
+  work.finish();
   return work;
+}
+
+// pairs_of with the soup's boxes: kept (one per triangle) or, in a soup of make_soup, computed
+// from the corners.
+template <class Points>
+PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours) {
+  if (soup.boxes.empty()) {
+    return pairs_of(soup, store, neighbours, [&soup](std::int32_t t) {
+      return triangle_box(soup, static_cast<std::size_t>(t));
+    });
+  }
+  assert(soup.boxes.size() == soup.triangles.size());
+  return pairs_of(soup, store, neighbours,
+                  [&soup](std::int32_t t) { return soup.boxes[static_cast<std::size_t>(t)]; });
 }
 
 EnclosedPoints enclosed_vertices(const Soup& soup) {
@@ -388,13 +399,12 @@ EnclosedPoints enclosed_vertices(const Soup& soup) {
 
 }  // namespace
 
-std::vector<TriangleWork> intersect_pairs(const Soup& soup, PointStore& store,
-                                          Neighbours neighbours) {
+PairWork intersect_pairs(const Soup& soup, PointStore& store, Neighbours neighbours) {
   StoredPoints points(store);
   return pairs_of(soup, points, neighbours);
 }
 
-std::vector<TriangleWork> meeting_pairs(const Soup& soup) {
+PairWork meeting_pairs(const Soup& soup) {
   EnclosedPoints points = enclosed_vertices(soup);
   // Every pair tested: the check of a written mesh stays independent of the proofs, and gets
   // little from them (its soup is the neighbourhood of the rounded triangles, whose stars are
@@ -406,13 +416,36 @@ std::vector<TriangleWork> meeting_pairs(const Soup& soup) {
 bool pair_gives_work(const Soup& soup, std::int32_t t, std::int32_t u) {
   EnclosedPoints points = enclosed_vertices(soup);
   const std::size_t before = points.points.size();
-  std::vector<TriangleWork> work(soup.triangles.size());
+  PairWork work(soup.triangles.size());
   intersect_pair(soup, t, u, points, work);
+  work.finish();
   if (points.points.size() != before) return true;
   return !work[static_cast<std::size_t>(t)].constraints.empty() ||
          !work[static_cast<std::size_t>(t)].coplanar.empty() ||
          !work[static_cast<std::size_t>(u)].constraints.empty() ||
          !work[static_cast<std::size_t>(u)].coplanar.empty();
+}
+
+void PairWork::finish() {
+  if (!found_.empty()) {
+    // A counting sort by triangle, stable: each triangle's constraints in the order found.
+    // Counts, then the end of each triangle's run, then filled from the back, which leaves
+    // first_[t] at the run's start (no second array of positions).
+    first_.assign(triangles_ + 1, 0);
+    for (const Found& f : found_)
+      ++first_[static_cast<std::size_t>(f.t)];
+    for (std::size_t t = 1; t <= triangles_; ++t)
+      first_[t] += first_[t - 1];
+    constraints_.resize(found_.size());
+    for (auto f = found_.rbegin(); f != found_.rend(); ++f)
+      constraints_[--first_[static_cast<std::size_t>(f->t)]] = f->c;
+    std::vector<Found>().swap(found_);
+  }
+  std::stable_sort(partners_.begin(), partners_.end(),
+                   [](const Partner& a, const Partner& b) { return a.t < b.t; });
+  coplanar_.resize(partners_.size());
+  for (std::size_t i = 0; i < partners_.size(); ++i)
+    coplanar_[i] = partners_[i].u;
 }
 
 }  // namespace contain::clip::solid

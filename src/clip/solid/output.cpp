@@ -106,9 +106,8 @@ std::size_t moved_count(const Faces& faces, const PointStore& store,
 
 }  // namespace
 
-BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
-                             const std::vector<TriangleWork>& work, const FaceLabels& labels,
-                             const PointStore& store, Op op) {
+BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement, const PairWork& work,
+                             const FaceLabels& labels, const PointStore& store, Op op) {
   // The answer on each side of each patch once (a face shares its patch's labels): 1 front
   // filled, 2 back filled.
   std::vector<std::uint8_t> sides(labels.of_patch.size());

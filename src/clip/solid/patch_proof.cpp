@@ -238,22 +238,17 @@ bool embedded_patch(const Soup& soup, std::span<const std::int32_t> patch) {
 }
 
 PatchProofs::PatchProofs(const Soup& soup, const ProvenStars& stars) : soup_(soup) {
-  const std::span<const bvh::Node> nodes = soup.tree.nodes();
   const std::span<const std::int32_t> items = soup.tree.items();
   const std::size_t triangles = soup.triangles.size();
-  directions_.assign(nodes.size(), 0);
-  ranges_.assign(nodes.size(), {0, 0});
   std::vector<std::int32_t> position(triangles, -1);
   for (std::size_t k = 0; k < items.size(); ++k)
     position[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
   // What the proofs read of each triangle, in leaf order (a subtree's triangles are then one
   // run of memory, where reading them by triangle number missed the cache at each): its
-  // neighbours' positions, its turns (0 with a corner not proven: such a triangle is never in a
-  // settled subtree) and its input; filled in the triangles' own order, in which `across`,
-  // `corners` and `turns` are read in sequence and the neighbours' positions mostly in cache.
+  // neighbours' positions and its turns; filled in the triangles' own order, in which `across`
+  // and `turns` are read in sequence and the neighbours' positions mostly in cache.
   across_at_.assign(items.size(), {-1, -1, -1});
   std::vector<std::uint8_t> turns(items.size(), 0);
-  std::vector<std::int32_t> input_at(items.size(), 0);
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::int32_t at = position[t];
     if (at < 0) continue;
@@ -262,8 +257,32 @@ PatchProofs::PatchProofs(const Soup& soup, const ProvenStars& stars) : soup_(sou
       const std::int32_t u = stars.across[t][e];
       across_at_[k][e] = u < 0 ? -1 : position[static_cast<std::size_t>(u)];
     }
-    turns[k] = stars.corners[t] == 7 ? stars.turns[t] : std::uint8_t{0};
-    input_at[k] = soup.input[t];
+    turns[k] = stars.turns[t];
+  }
+  summarize(turns, stars.corners);
+}
+
+PatchProofs PatchProofs::from_leaf_order(const Soup& soup, ProvenStars& stars) {
+  PatchProofs proofs(soup);
+  proofs.across_at_ = std::move(stars.across);
+  proofs.summarize(stars.turns, stars.corners);
+  return proofs;
+}
+
+void PatchProofs::summarize(std::span<const std::uint8_t> turns_at,
+                            std::span<const std::uint8_t> corners) {
+  const std::span<const bvh::Node> nodes = soup_.tree.nodes();
+  const std::span<const std::int32_t> items = soup_.tree.items();
+  directions_.assign(nodes.size(), 0);
+  ranges_.assign(nodes.size(), {0, 0});
+  // Each position's turns (0 with a corner not proven: such a triangle is never in a settled
+  // subtree) and input, in leaf order.
+  std::vector<std::uint8_t> turns(items.size(), 0);
+  std::vector<std::int32_t> input_at(items.size(), 0);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const auto t = static_cast<std::size_t>(items[k]);
+    turns[k] = corners[t] == 7 ? turns_at[k] : std::uint8_t{0};
+    input_at[k] = soup_.input[t];
   }
   // The input of each node's triangles (-1: of several). Subtrees of two inputs are not tried:
   // they hold the places where the inputs come near each other, and their proofs failed there

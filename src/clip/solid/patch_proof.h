@@ -91,6 +91,9 @@ class PatchProofs {
   /// stage (intersect.cpp) frees them once the proofs are made. `soup` is kept and must outlive
   /// the proofs.
   PatchProofs(const Soup& soup, const ProvenStars& stars);
+  /// The same from `proven_stars(soup, StarOrder::leaf)`, already in the order the proofs read
+  /// them: its `across` is taken over (left empty), nothing copied into leaf order.
+  [[nodiscard]] static PatchProofs from_leaf_order(const Soup& soup, ProvenStars& stars);
 
   /// Whether the triangles under inner node `node` of `soup.tree` form an embedded patch whose
   /// corners are all proven: then no pair of them gives the pair stage anything. Leaves are
@@ -107,6 +110,11 @@ class PatchProofs {
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;
   mutable PatchScratch scratch_;
+
+  explicit PatchProofs(const Soup& soup) : soup_(soup) {}
+  // directions_ and ranges_, bottom up, from `across_at_` and each position's turns (as
+  // ProvenStars::turns) with `corners` by triangle (turns count only where all three are proven).
+  void summarize(std::span<const std::uint8_t> turns_at, std::span<const std::uint8_t> corners);
 };
 
 }  // namespace contain::clip::solid

@@ -284,8 +284,8 @@ struct OwnArrangements {
 
 // The points each input edge holds, from every triangle that has it as a segment; and each
 // constrained triangle's own arrangement.
-EdgePoints gather_edge_points(const Soup& soup, const std::vector<TriangleWork>& work,
-                              PointStore& store, Scratch& scratch, OwnArrangements& own) {
+EdgePoints gather_edge_points(const Soup& soup, const PairWork& work, PointStore& store,
+                              Scratch& scratch, OwnArrangements& own) {
   EdgePoints found;
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     if (soup.degenerate[t] || work[t].constraints.empty()) continue;
@@ -366,7 +366,7 @@ void complete(const Local& l, const EdgePoints& given, const OwnArrangements& ow
 
 }  // namespace
 
-Refinement refine(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store) {
+Refinement refine(const Soup& soup, const PairWork& work, PointStore& store) {
   Scratch scratch;
   OwnArrangements own;
   const EdgePoints given = gather_edge_points(soup, work, store, scratch, own);

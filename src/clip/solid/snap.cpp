@@ -254,25 +254,25 @@ constexpr std::array<int, 10> round_levels = {-1, -1, -1, 2, 5, 8, 11, 14, 17, 2
 // The soup with a hierarchy over the triangles of `region` only (the others get empty boxes):
 // the pair stage on it tests just their pairs, with the soup's own vertex and triangle numbers.
 Soup region_soup(const Soup& soup, const std::vector<std::int32_t>& region) {
-  // One box per triangle: not a soup whose boxes mesh_boolean freed (Soup::boxes).
-  assert(soup.boxes.size() == soup.triangles.size());
+  assert(soup.boxes.empty() || soup.boxes.size() == soup.triangles.size());
   Soup out;
   out.vertices = soup.vertices;
   out.triangles = soup.triangles;
   out.input = soup.input;
   out.degenerate = soup.degenerate;
   out.inputs = soup.inputs;
-  out.boxes.assign(soup.boxes.size(), Box3{});
+  out.boxes.assign(soup.triangles.size(), Box3{});
   for (const std::int32_t t : region)
-    out.boxes[static_cast<std::size_t>(t)] = soup.boxes[static_cast<std::size_t>(t)];
+    out.boxes[static_cast<std::size_t>(t)] = soup.boxes.empty()
+                                                 ? triangle_box(soup, static_cast<std::size_t>(t))
+                                                 : soup.boxes[static_cast<std::size_t>(t)];
   out.tree = bvh::Bvh(out.boxes);
   return out;
 }
 
 // The faces of `op` on the soup's arrangement, given its pair stage's work: the refined faces on
 // the boundary, merged where coplanar.
-Faces arranged_faces(const Soup& soup, const std::vector<TriangleWork>& work, PointStore& store,
-                     Op op) {
+Faces arranged_faces(const Soup& soup, const PairWork& work, PointStore& store, Op op) {
   const Refinement refinement = refine(soup, work, store);
   const FaceLabels labels = label_faces(soup, refinement, store);
   const BoundaryFaces boundary = boundary_faces(soup, refinement, work, labels, store, op);
@@ -314,13 +314,13 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
   if (!soup) return soup.error();
   PointStore store;
   store.add_vertices(*soup, std::move(soup->index));
-  const std::vector<TriangleWork> work = crossing.size() == soup->triangles.size()
-                                             ? intersect_pairs(*soup, store)
-                                             : intersect_pairs(region_soup(*soup, crossing), store);
+  const PairWork work = crossing.size() == soup->triangles.size()
+                            ? intersect_pairs(*soup, store)
+                            : intersect_pairs(region_soup(*soup, crossing), store);
   std::size_t constraints = 0, most = 0;
-  for (const TriangleWork& w : work) {
-    constraints += w.constraints.size();
-    most = std::max(most, w.constraints.size());
+  for (std::size_t t = 0; t < work.size(); ++t) {
+    constraints += work[t].constraints.size();
+    most = std::max(most, work[t].constraints.size());
   }
   if (most > max_crossings_in_one) {
     return not_converging(most, "found new crossings in one triangle:", max_crossings_in_one);
@@ -439,7 +439,7 @@ Result<Mesh> snap_inputs(const Soup& soup, Op op, double scale, const Faces& exa
     PointStore store;
     for (const Vec3 v : snapped->vertices)
       (void)store.add(v);
-    const std::vector<TriangleWork> work = intersect_pairs(*snapped, store);
+    const PairWork work = intersect_pairs(*snapped, store);
     Result<Mesh> mesh = snap_round(arranged_faces(*snapped, work, store, op), store, scale);
     if (mesh && level > finest_unproven_level &&
         !within_boundary(*mesh, exact_faces, exact_store, proven_distance * scale, scale)) {

@@ -28,9 +28,8 @@ struct BoundaryFaces {
 /// The refined faces where `op` differs on the two sides, one of each set of coinciding faces
 /// (output.cpp).
 [[nodiscard]] BoundaryFaces boundary_faces(const Soup& soup, const Refinement& refinement,
-                                           const std::vector<TriangleWork>& work,
-                                           const FaceLabels& labels, const PointStore& store,
-                                           Op op);
+                                           const PairWork& work, const FaceLabels& labels,
+                                           const PointStore& store, Op op);
 
 /// The result of `op` with the faces `boundary` (boundary_faces): merged where coplanar,
 /// written, checked and repaired (output.cpp).

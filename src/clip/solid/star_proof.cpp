@@ -76,10 +76,21 @@ Sign bend(const RingProducts& c, const std::array<double, 3>& t, Vec3 v, Vec3 wk
   return s ? *s : orient3d(v, wk, wk1, wk2);
 }
 
-// Whether v's star is proven; if so and `out` is given, its triangles' neighbours across the
-// edges at v written to out->across, and the turns of those whose corner 0 is v to out->turns.
+// Where a proof writes its triangles' neighbours and turns: `slot` the position of each
+// triangle in those arrays (empty: its number).
+struct StarOutput {
+  ProvenStars* stars = nullptr;
+  std::span<const std::int32_t> slot;
+  [[nodiscard]] std::size_t at(std::int32_t t) const {
+    return static_cast<std::size_t>(slot.empty() ? t : slot[static_cast<std::size_t>(t)]);
+  }
+};
+
+// Whether v's star is proven; if so and `out.stars` is given, its triangles' neighbours across
+// the edges at v written to its `across`, and the turns of those whose corner 0 is v to its
+// `turns` (both at out.at of the triangle).
 bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t> corners,
-                 ProvenStars* out) {
+                 const StarOutput& out) {
   const std::size_t n = corners.size();
   if (n < 3 || n > max_star) return false;
   std::array<LinkEdge, max_star> star;
@@ -143,14 +154,16 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
       return false;
     }
   }
-  if (out != nullptr) {
+  if (out.stars != nullptr) {
+    std::vector<std::array<std::int32_t, 3>>& across = out.stars->across;
     // Triangle i is v w(i) w(i + 1), its corner k at v: its edge (k + 2) mod 3 runs w(i + 1)
     // -> v, which is edge k' (v -> w(i + 1)) of triangle i + 1.
     for (std::size_t i = 0; i < n; ++i) {
       const std::int32_t from = star[order[i]].corner, to = star[order[(i + 1) % n]].corner;
-      out->across[static_cast<std::size_t>(from / 3)]
-                 [static_cast<std::size_t>((from % 3 + 2) % 3)] = to / 3;
-      out->across[static_cast<std::size_t>(to / 3)][static_cast<std::size_t>(to % 3)] = from / 3;
+      const std::size_t from_at = out.at(from / 3), to_at = out.at(to / 3);
+      across[from_at][static_cast<std::size_t>((from % 3 + 2) % 3)] =
+          static_cast<std::int32_t>(to_at);
+      across[to_at][static_cast<std::size_t>(to % 3)] = static_cast<std::int32_t>(from_at);
       // Its turns in the three projections (the triangle v w(i) w(i + 1) is a rotation of its
       // corners, so each is the sign of strict_turns' orient2d): taken once, at its corner 0.
       if (from % 3 == 0) {
@@ -162,17 +175,17 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
           if (s == Sign::positive) bits |= 1U << (2 * k);
           if (s == Sign::negative) bits |= 1U << (2 * k + 1);
         }
-        out->turns[static_cast<std::size_t>(from / 3)] = static_cast<std::uint8_t>(bits);
+        out.stars->turns[from_at] = static_cast<std::uint8_t>(bits);
       }
     }
   }
   return true;
 }
 
-// Whether each vertex is proven; with `out`, the neighbours and turns of `proven_stars`; with
+// Whether each vertex is proven; with `out.stars`, the neighbours and turns of `proven_stars`; with
 // `corners`, bit k of each triangle whose corner k is proven (made here, after the sort's
 // buffers: below them, it would leave their memory a hole the next allocations may not fit).
-std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
+std::vector<bool> proven_vertices_of(const Soup& soup, const StarOutput& out,
                                      std::vector<std::uint8_t>* corners) {
   const std::size_t vertices = soup.vertices.size();
   // The corners at each vertex (3 t + k: triangle t's corner k), by a counting sort, in
@@ -222,20 +235,27 @@ std::vector<bool> proven_vertices_of(const Soup& soup, ProvenStars* out,
 }  // namespace
 
 std::vector<bool> proven_vertices(const Soup& soup) {
-  return proven_vertices_of(soup, nullptr, nullptr);
+  return proven_vertices_of(soup, {}, nullptr);
 }
 
 std::vector<std::uint8_t> proven_corners(const Soup& soup) {
   std::vector<std::uint8_t> corners;
-  (void)proven_vertices_of(soup, nullptr, &corners);
+  (void)proven_vertices_of(soup, {}, &corners);
   return corners;
 }
 
-ProvenStars proven_stars(const Soup& soup) {
+ProvenStars proven_stars(const Soup& soup, StarOrder order) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
   stars.turns.assign(soup.triangles.size(), 0);
-  (void)proven_vertices_of(soup, &stars, &stars.corners);
+  std::vector<std::int32_t> position;
+  if (order == StarOrder::leaf) {
+    const std::span<const std::int32_t> items = soup.tree.items();
+    position.assign(soup.triangles.size(), -1);
+    for (std::size_t k = 0; k < items.size(); ++k)
+      position[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
+  }
+  (void)proven_vertices_of(soup, {&stars, position}, &stars.corners);
   return stars;
 }
 

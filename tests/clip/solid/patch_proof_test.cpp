@@ -353,7 +353,7 @@ TEST(PatchProof, SubtreesOfSmoothSpheresAreSettledAndSound) {
 
 // The pair stage's work and how many points it stored.
 struct PairWork {
-  std::vector<clip::solid::TriangleWork> work;
+  clip::solid::PairWork work;
   std::size_t points = 0;
 };
 
@@ -375,14 +375,15 @@ std::size_t expect_same_work(const PairWork& x, const PairWork& y, const std::st
   if (x.points != y.points || x.work.size() != y.work.size()) return 0;
   std::size_t constraints = 0;
   for (std::size_t t = 0; t < x.work.size(); ++t) {
-    const std::vector<clip::solid::Constraint>& a = x.work[t].constraints;
-    const std::vector<clip::solid::Constraint>& b = y.work[t].constraints;
+    const std::span<const clip::solid::Constraint> a = x.work[t].constraints;
+    const std::span<const clip::solid::Constraint> b = y.work[t].constraints;
     EXPECT_EQ(a.size(), b.size()) << what << ": triangle " << t;
     for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
       EXPECT_TRUE(a[k].a == b[k].a && a[k].b == b[k].b && a[k].edge == b[k].edge)
           << what << ": triangle " << t << ", constraint " << k;
     }
-    EXPECT_EQ(x.work[t].coplanar, y.work[t].coplanar) << what << ": triangle " << t;
+    EXPECT_TRUE(std::ranges::equal(x.work[t].coplanar, y.work[t].coplanar))
+        << what << ": triangle " << t;
     constraints += a.size();
   }
   return constraints;

@@ -39,7 +39,6 @@ using clip::solid::pair_gives_work;
 using clip::solid::PointStore;
 using clip::solid::proven_vertices;
 using clip::solid::Soup;
-using clip::solid::TriangleWork;
 
 Soup soup_of(const std::vector<Mesh>& inputs) {
   Result<Soup> soup = clip::solid::make_soup(inputs);
@@ -306,9 +305,9 @@ Compared same_with_and_without(const std::vector<Mesh>& inputs, const std::strin
   PointStore proven_store;
   tested_store.add_vertices(soup);
   proven_store.add_vertices(soup);
-  const std::vector<TriangleWork> tested =
+  const clip::solid::PairWork tested =
       clip::solid::intersect_pairs(soup, tested_store, clip::solid::Neighbours::tested);
-  const std::vector<TriangleWork> proven =
+  const clip::solid::PairWork proven =
       clip::solid::intersect_pairs(soup, proven_store, clip::solid::Neighbours::proven);
   const std::vector<bool> proven_flags = proven_vertices(soup);
   compared.proven =
@@ -322,15 +321,16 @@ Compared same_with_and_without(const std::vector<Mesh>& inputs, const std::strin
   EXPECT_EQ(tested.size(), proven.size()) << what;
   if (tested.size() != proven.size()) return compared;
   for (std::size_t t = 0; t < tested.size(); ++t) {
-    const std::vector<Constraint>& x = tested[t].constraints;
-    const std::vector<Constraint>& y = proven[t].constraints;
+    const std::span<const Constraint> x = tested[t].constraints;
+    const std::span<const Constraint> y = proven[t].constraints;
     EXPECT_EQ(x.size(), y.size()) << what << ": triangle " << t;
     if (x.size() != y.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) {
       EXPECT_TRUE(x[k].a == y[k].a && x[k].b == y[k].b && x[k].edge == y[k].edge)
           << what << ": triangle " << t << ", constraint " << k;
     }
-    EXPECT_EQ(tested[t].coplanar, proven[t].coplanar) << what << ": triangle " << t;
+    EXPECT_TRUE(std::ranges::equal(tested[t].coplanar, proven[t].coplanar))
+        << what << ": triangle " << t;
     compared.constraints += x.size();
   }
   return compared;
