@@ -473,8 +473,13 @@ Result<MeshFile> parse_off(std::string_view text, const std::string& source) {
   std::vector<TriangleIndices> triangles;
   vertices.reserve(static_cast<std::size_t>(std::min(nv, cap)));
   triangles.reserve(static_cast<std::size_t>(std::min(nf, cap)));
-  populate_capacity(vertices);
-  populate_capacity(triangles);
+  // Reserving is address space only; populating commits memory: only for a header the text can
+  // hold (a vertex line is 6 bytes at least, a face line 8), so that counts that lie cost no
+  // more than the file before the lines prove them wrong.
+  if (nv * 6 + nf * 8 <= static_cast<std::int64_t>(text.size())) {
+    populate_capacity(vertices);
+    populate_capacity(triangles);
+  }
   if (auto s = read_off_vertices(in, nv, vertices, source); !s) return s.error();
   MeshInfo info{.format = MeshFormat::off};
   std::vector<std::int32_t> corners;
