@@ -53,7 +53,6 @@ using Answers = HugePageVector<Location>;
 // answers (a byte a point): 10^8 points cost their answers and a block of text, not 2.4 GB of
 // points. Nothing is written before the whole file has been read, so a bad line late in the file
 // still gives exit 3 and no output. `locate(items, out)` answers a piece.
-
 template <class Item, class Read, class Locate>
 Result<Answers> locate_streamed(const InsideOptions& o, Read&& read, Locate&& locate) {
   Answers locations;

@@ -260,10 +260,10 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
     }
   }
   std::size_t block = block_bytes(reading);
-  // The 8 MB block of several threads in huge pages (HugePageVector: from 4 MB on), written once
-  // and reused: 2,048 page faults fewer where a fault is dear (a virtual machine: 8,122 -> 7,712
-  // for star100 at --threads 2, the mapped file's own first touches gone too); the one thread's
-  // 256 KB block as before. Elements not zeroed (the allocator's construct).
+  // The block in huge pages (HugePageVector: one 2 MB page for the one thread's 256 KB, four for
+  // the 8 MB of several threads), written once and reused: where a fault is dear (a virtual
+  // machine, docs/benchmarks.md) one fault a 2 MB page instead of 512. Elements not zeroed (the
+  // allocator's construct): only the bytes read into it are scanned.
   HugePageVector<char> buffer(block);
   std::size_t held = 0;  // bytes in the buffer
   ReadPosition at;

@@ -65,12 +65,13 @@ class BlockInput {
 };
 
 /// A regular file's bytes mapped into memory read-only, in place of read() into a buffer: the
-/// kernel's copy of every byte (a fifth of `contain inside` for 10^6 points in a small polygon)
-/// is saved. Pages are made present a window ahead of the reader (`reach`) and dropped from the
-/// mapping behind it (`release`), so a file of gigabytes holds a few windows of memory, as the
-/// read() blocks do (the page cache keeps them either way). A file cut shorter while it is mapped
-/// ends the process by SIGBUS, as for every program that maps its input; bytes appended after
-/// the mapping are not read.
+/// kernel's copy of every byte is saved, but each page's first touch is a fault (dearer than the
+/// copy on the project's virtual machine), so the point reader maps only when asked
+/// (io::ChunkedReading::map). Pages are made present a window ahead of the reader (`reach`) and
+/// dropped from the mapping behind it (`release`), so a file of gigabytes holds a few windows of
+/// memory, as the read() blocks do (the page cache keeps them either way). A file cut shorter while
+/// it is mapped ends the process by SIGBUS, as for every program that maps its input; bytes
+/// appended after the mapping are not read.
 class MappedText {
  public:
   /// The open file `file` (its whole size, `size` bytes, 1 or more) mapped; nothing when it

@@ -210,7 +210,8 @@ class PolygonIndex {
   Fill fill_ = Fill::even_odd;
   Box2 bounds_;
   GridAxis x_, y_;  // the grid's columns and rows
-  // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: slots_[k - 2].
+  // Per cell: 0 = outside, 1 = inside (empty cells), k >= 2: slots_[k - 2]. During the build, the
+  // cells' corner winding numbers first.
   std::vector<std::uint32_t> cells_;
   // The same cells' states 32 to a word (0 outside, 1 inside, 2 an edge cell; cell c in bits
   // 2 (c % 32) and up of word c / 32), read by locate_settled: 16 kB for the 2^16 cells of a

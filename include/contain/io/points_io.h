@@ -53,11 +53,13 @@ struct Points3 {
 /// 0: 256 KB when one thread parses (a block the kernel's copy leaves in the cache for the scan:
 /// 8 MB blocks read 10^6 points 12-14% slower), else 8 MB shared by the threads (1 MB at least
 /// each). `map`: a regular file mapped into memory (detail::MappedText) instead of read() into the
-/// block, the same pieces, points and errors. Not the default: where a page's first touch is dear
-/// (a virtual machine whose hypervisor fills its page tables: 1.3 us a 4 KB page measured on the
-/// project's machine, 12 ms for 40 MB, against 5.5 ms for read() into a reused block and touching
-/// every line), the mapping costs more than the kernel's copy it saves; on a machine where the
-/// copy is the larger cost (docs/benchmarks.md, "Point files mapped, not copied") it pays.
+/// block, the same pieces, points and errors for a file not changed while it is read (a file cut
+/// short then: read() ends at the cut; a mapping is an io error or SIGBUS). Not the default: where
+/// a page's first touch is dear (a virtual machine whose hypervisor fills its page tables: 1.3 us a
+/// 4 KB page measured on the project's machine, 12 ms for 40 MB, against 5.5 ms for read() into a
+/// reused block and touching every line), the mapping costs more than the kernel's copy it saves;
+/// on a machine where the copy is the larger cost (docs/benchmarks.md, "Point files mapped, not
+/// copied") it pays.
 struct ChunkedReading {
   std::size_t chunk = std::size_t{1} << 20;
   int threads = 1;
