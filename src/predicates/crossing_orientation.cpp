@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "contain/predicates/big_float.h"
-#include "contain/predicates/orient3d.h"
 #include "predicates/expansion.h"
 
 namespace contain::predicates {
@@ -83,19 +82,21 @@ Vec2 project(Vec3 p, int u, int v) {
 
 Sign orient2d_of_crossing(Vec2 a, Vec2 b, Vec3 p, Vec3 q, Vec3 t0, Vec3 t1, Vec3 t2, int u, int v) {
   const Vec2 pp = project(p, u, v), pq = project(q, u, v);
-  // The side of p decides the direction of dq - dp: orient3d's own sign, exact.
-  const Sign side_p = orient3d(t0, t1, t2, p);
+  // The side of p decides the direction of dq - dp. dp is orient3d(t0, t1, t2, p) itself, the
+  // same determinant ((t1 - t0) x (t2 - t0)) . (p - t0) exactly (an expansion on exact
+  // differences, or big numbers), so its sign is orient3d's: no third evaluation.
   Expansion<4> fp, fq;
   Expansion<24> dp, dq;
   if (orient2d_expansion(a, b, pp, fp) && orient2d_expansion(a, b, pq, fq) &&
       orient3d_expansion(t0, t1, t2, p, dp) && orient3d_expansion(t0, t1, t2, q, dq)) {
     const Sign s = (dp * fq - dq * fp).sign();
-    return side_p == Sign::negative ? -s : s;
+    return dp.sign() == Sign::negative ? -s : s;
   }
-  const Sign s = (orient3d_big(t0, t1, t2, p) * orient2d_big(a, b, pq) -
-                  orient3d_big(t0, t1, t2, q) * orient2d_big(a, b, pp))
-                     .sign();
-  return side_p == Sign::negative ? -s : s;
+  const BigFloat big_dp = orient3d_big(t0, t1, t2, p);
+  const Sign s =
+      (big_dp * orient2d_big(a, b, pq) - orient3d_big(t0, t1, t2, q) * orient2d_big(a, b, pp))
+          .sign();
+  return big_dp.sign() == Sign::negative ? -s : s;
 }
 
 Sign orient2d_of_centroid(Vec2 a, Vec2 b, Vec2 c0, Vec2 c1, Vec2 c2) {

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -230,6 +231,9 @@ class PairWork {
   void finish();
   [[nodiscard]] std::size_t size() const { return triangles_; }
   [[nodiscard]] TriangleWork operator[](std::size_t t) const {
+    // Before finish the partners are unsorted and coplanar_ empty: the search below would read
+    // out of bounds.
+    assert(found_.empty() && coplanar_.size() == partners_.size());
     TriangleWork w;
     if (!first_.empty()) {
       w.constraints = std::span<const Constraint>(constraints_)

@@ -803,6 +803,12 @@ double third_of_sum_up(double x, double y, double z) {
   return std::isfinite(bound) ? std::min(bound, most) : most;
 }
 
+// Whether the corners of plain points are the same doubles (the centroid is that point).
+bool one_point(const std::array<ExactPoint, 3>& c) {
+  const auto same = [](Vec3 p, Vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; };
+  return same(c[0].v, c[1].v) && same(c[0].v, c[2].v);
+}
+
 }  // namespace
 
 LazyCentroid::LazyCentroid(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
@@ -842,6 +848,12 @@ Sign LazyCentroid::orient2d(Vec3 a, Vec3 b, int axis, const std::array<Vec3, 3>&
     return Sign::zero;
   }
   const bool plain = corners_[0].plain() && corners_[1].plain() && corners_[2].plain();
+  if (plain && one_point(corners_)) {
+    // A point of doubles (a label point inside its patch): the centroid's orientation is three
+    // times its own, one orient2d instead of three expansions.
+    return predicates::orient2d(drop_axis(a, axis), drop_axis(b, axis),
+                                drop_axis(corners_[0].v, axis));
+  }
   if (plain) {
     return predicates::orient2d_of_centroid(
         drop_axis(a, axis), drop_axis(b, axis), drop_axis(corners_[0].v, axis),
@@ -866,6 +878,8 @@ Sign LazyCentroid::plane_side(Vec3 a, Vec3 b, Vec3 c, const BigVec3& n) const {
     return *s;
   }
   if (corners_[0].plain() && corners_[1].plain() && corners_[2].plain()) {
+    // As in orient2d: a point of doubles is one orient3d.
+    if (one_point(corners_)) return predicates::orient3d(a, b, c, corners_[0].v);
     return predicates::orient3d_of_centroid(a, b, c, corners_[0].v, corners_[1].v, corners_[2].v);
   }
   if (hull_size_ != 0) {

@@ -86,13 +86,13 @@ struct PatchScratch {
 /// The proofs of the pair stage, per node of `soup.tree`.
 class PatchProofs {
  public:
-  /// `stars` from `proven_stars`: which corners are proven, the neighbours across the edges at
-  /// proven corners and the triangles' turns. Read during construction only, not kept: the pair
-  /// stage (intersect.cpp) frees them once the proofs are made. `soup` is kept and must outlive
-  /// the proofs.
+  /// `stars` from `proven_stars` in triangle order: which corners are proven, the neighbours
+  /// across the edges at proven corners and the triangles' turns, copied into leaf order (read
+  /// during construction only, not kept). `soup` is kept and must outlive the proofs.
   PatchProofs(const Soup& soup, const ProvenStars& stars);
   /// The same from `proven_stars(soup, StarOrder::leaf)`, already in the order the proofs read
-  /// them: its `across` is taken over (left empty), nothing copied into leaf order.
+  /// them: its `across` is taken over (left empty), nothing copied into leaf order; `corners` and
+  /// `turns` are read during construction only. The pair stage's path (intersect.cpp).
   [[nodiscard]] static PatchProofs from_leaf_order(const Soup& soup, ProvenStars& stars);
 
   /// Whether the triangles under inner node `node` of `soup.tree` form an embedded patch whose

@@ -203,10 +203,12 @@ bool in_plane(const Local& l, const ExactPoint& p) {
 // On inputs in common planes most such crossings are points already stored (a vertex, an edge's
 // crossing with a plane, another triangle's crossing of the same lines), and their construction
 // in big numbers, rounding and exact comparison with the stored point were a third of the
-// refinement. So first the stored points whose nearest doubles are within one step of the
-// crossing's estimate in doubles are asked: one in T's plane (`in_plane`) on both lines is the
-// crossing (the lines meet once, and the projection is one to one on T's plane), the number the
-// store would give it. Otherwise it is constructed and stored as before.
+// refinement. So first, for each of the 27 triples of doubles within one step of the
+// crossing's estimate in doubles, the first stored point with those nearest doubles is asked
+// (only the first: later points of the same doubles are not walked, the store's exact lookup
+// below finds them): one in T's plane (`in_plane`) on both lines is the crossing (the lines meet
+// once, and the projection is one to one on T's plane), the number the store would give it.
+// Otherwise it is constructed and stored as before.
 std::int32_t crossing_of(const Local& l, const Segment& s, const Segment& t, PointStore& store) {
   const Vec3 sa = store.rounded(s.a), sb = store.rounded(s.b), ta = store.rounded(t.a),
              tb = store.rounded(t.b);

@@ -668,12 +668,6 @@ TEST(MeshBoolean, NoInputAndEmptyInputsAreTheEmptySolid) {
   EXPECT_TRUE(checked(in, Op::intersection).mesh.triangles.empty());
 }
 
-}  // namespace
-}  // namespace contain::test
-
-namespace contain::test {
-namespace {
-
 // Unions of many parts in one arrangement (issue 25): cubes on a unit grid overlapping their
 // neighbours, faces in common planes by rows, so that most crossings of the refinement are
 // points already stored and most patches are labelled at a point of doubles inside them (and

@@ -88,8 +88,10 @@ struct SettledTally {
 // one input with every corner proven, and embedded_patch holds for them; a settled node's
 // triangles never meet.
 void expect_settled_agrees(const Soup& soup, const std::string& what, SettledTally& tally) {
-  const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
-  const clip::solid::PatchProofs proofs(soup, stars);
+  // The pair stage's path: the stars in leaf order, `across` taken over by the proofs
+  // (`corners`, by triangle, stays).
+  clip::solid::ProvenStars stars = clip::solid::proven_stars(soup, clip::solid::StarOrder::leaf);
+  const clip::solid::PatchProofs proofs = clip::solid::PatchProofs::from_leaf_order(soup, stars);
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const auto node = static_cast<std::int32_t>(i);

@@ -293,8 +293,9 @@ TEST(PatchProof, PinchedBoundariesAreEmbeddedExactlyWhenTheirLobesAreApart) {
 
 // The subtrees of `soup`'s hierarchy proven by PatchProofs, each checked by brute force.
 std::size_t settled_subtrees(const Soup& soup) {
-  const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
-  const PatchProofs proofs(soup, stars);
+  // The pair stage's path: the stars in leaf order, taken over by the proofs.
+  clip::solid::ProvenStars stars = clip::solid::proven_stars(soup, clip::solid::StarOrder::leaf);
+  const PatchProofs proofs = PatchProofs::from_leaf_order(soup, stars);
   const std::span<const bvh::Node> nodes = soup.tree.nodes();
   std::size_t settled = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -417,10 +418,18 @@ TEST(PatchProof, PairStageOfSelfIntersectingInputsIsTheSameWithAndWithoutTheSkip
     constraints += expect_same_work(pair_work(soup, clip::solid::Neighbours::tested),
                                     pair_work(soup, clip::solid::Neighbours::proven),
                                     "case " + std::to_string(k));
-    const clip::solid::ProvenStars stars = clip::solid::proven_stars(soup);
-    const PatchProofs proofs(soup, stars);
-    for (std::size_t i = 0; i < soup.tree.nodes().size(); ++i)
-      settled += proofs.settled(static_cast<std::int32_t>(i)) ? 1 : 0;
+    // The pair stage's path (leaf order, taken over), and the same proofs from the stars in
+    // triangle order: every node settled alike.
+    clip::solid::ProvenStars leaf = clip::solid::proven_stars(soup, clip::solid::StarOrder::leaf);
+    const PatchProofs proofs = PatchProofs::from_leaf_order(soup, leaf);
+    const clip::solid::ProvenStars by_triangle =
+        clip::solid::proven_stars(soup, clip::solid::StarOrder::triangle);
+    const PatchProofs copied(soup, by_triangle);
+    for (std::size_t i = 0; i < soup.tree.nodes().size(); ++i) {
+      const auto node = static_cast<std::int32_t>(i);
+      EXPECT_EQ(proofs.settled(node), copied.settled(node)) << "case " << k << ": node " << i;
+      settled += proofs.settled(node) ? 1 : 0;
+    }
   }
   // Not vacuous: the inputs cross, and subtrees are skipped.
   EXPECT_GT(constraints, 0U);

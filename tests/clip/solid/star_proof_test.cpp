@@ -545,6 +545,24 @@ std::size_t compare_with_direct(const Soup& soup, const std::string& what) {
       EXPECT_TRUE(reversed_edge) << what << ": triangle " << t;
     }
   }
+  // In leaf order (the pair stage's): the same, at each triangle's position in the tree's
+  // items, with the neighbours as positions.
+  const clip::solid::ProvenStars leaf =
+      clip::solid::proven_stars(soup, clip::solid::StarOrder::leaf);
+  const std::span<const std::int32_t> items = soup.tree.items();
+  std::vector<std::int32_t> position(soup.triangles.size(), -1);
+  for (std::size_t k = 0; k < items.size(); ++k)
+    position[static_cast<std::size_t>(items[k])] = static_cast<std::int32_t>(k);
+  EXPECT_EQ(leaf.corners, stars.corners) << what;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const auto t = static_cast<std::size_t>(items[k]);
+    EXPECT_EQ(leaf.turns[k], stars.turns[t]) << what << ": triangle " << t;
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::int32_t u = stars.across[t][e];
+      EXPECT_EQ(leaf.across[k][e], u < 0 ? -1 : position[static_cast<std::size_t>(u)])
+          << what << ": triangle " << t;
+    }
+  }
   return count;
 }
 
