@@ -23,17 +23,6 @@ const mpq_class& coord(const QVec3& p, int i) {
   return i == 0 ? p.x : (i == 1 ? p.y : p.z);
 }
 
-// The rational point where p q crosses the plane of t0 t1 t2, or nothing where p and q are not
-// strictly on opposite sides.
-std::optional<QVec3> crossing(Vec3 p, Vec3 q, Vec3 t0, Vec3 t1, Vec3 t2) {
-  const QVec3 n = qcross(qsub(exact(t1), exact(t0)), qsub(exact(t2), exact(t0)));
-  const mpq_class dp = qdot(n, qsub(exact(p), exact(t0))), dq = qdot(n, qsub(exact(q), exact(t0)));
-  if (sgn(dp) * sgn(dq) >= 0) return std::nullopt;
-  const mpq_class t = dp / (dp - dq);
-  const QVec3 a = exact(p), b = exact(q);
-  return QVec3{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
-}
-
 Sign oracle_orient2d(const QVec2& a, const QVec2& b, const QVec2& c) {
   return sign_of((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
@@ -43,7 +32,7 @@ int checked = 0;
 // Every projection and every pair (a, b) of the given points against the crossing, and the
 // coordinate comparisons in their (c, 0), (c, 1) form.
 void expect_crossing(Vec3 p, Vec3 q, Vec3 t0, Vec3 t1, Vec3 t2, const std::array<Vec3, 4>& others) {
-  const std::optional<QVec3> x = crossing(p, q, t0, t1, t2);
+  const std::optional<QVec3> x = exact_segment_plane_crossing(p, q, t0, t1, t2);
   if (!x) return;
   for (int u = 0; u < 3; ++u) {
     const int v = (u + 1) % 3;
@@ -102,7 +91,7 @@ TEST(CrossingOrientation, CrossingsOnLinesAndPlanesOfTheGridAreExactZeros) {
     const int k = i % 3;
     const Vec3 e1 = k == 0 ? Vec3{0, 1, 0} : Vec3{1, 0, 0},
                e2 = k == 2 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
-    const std::optional<QVec3> x = crossing(p, q, o, o + e1, o + e2);
+    const std::optional<QVec3> x = exact_segment_plane_crossing(p, q, o, o + e1, o + e2);
     if (!x) continue;
     // Points on the segment's line and on the plane (the crossing is on lines through them),
     // and one ulp off each.

@@ -20,6 +20,15 @@ QVec3 qsub(const QVec3& a, const QVec3& b) {
 QVec3 qcross(const QVec3& a, const QVec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+std::optional<QVec3> exact_segment_plane_crossing(Vec3 p, Vec3 q, Vec3 t0, Vec3 t1, Vec3 t2) {
+  const QVec3 n = qcross(qsub(exact(t1), exact(t0)), qsub(exact(t2), exact(t0)));
+  const mpq_class dp = qdot(n, qsub(exact(p), exact(t0))), dq = qdot(n, qsub(exact(q), exact(t0)));
+  if (sgn(dp) * sgn(dq) >= 0) return std::nullopt;
+  const mpq_class t = dp / (dp - dq);
+  const QVec3 a = exact(p), b = exact(q);
+  return QVec3{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
+}
+
 mpq_class qdot(const QVec3& a, const QVec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }

@@ -5,6 +5,8 @@
 
 #include <gmpxx.h>
 
+#include <optional>
+
 #include "contain/predicates/sign.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/plane.h"
@@ -30,6 +32,10 @@ struct QVec3 {
 [[nodiscard]] mpq_class qdot(const QVec3& a, const QVec3& b);
 [[nodiscard]] bool qzero(const QVec3& a);
 [[nodiscard]] Sign sign_of(const mpq_class& v);
+/// The rational point where segment p q crosses the plane of t0 t1 t2, or nothing where p and q
+/// are not strictly on opposite sides of it.
+[[nodiscard]] std::optional<QVec3> exact_segment_plane_crossing(Vec3 p, Vec3 q, Vec3 t0, Vec3 t1,
+                                                                Vec3 t2);
 
 /// The exact volume a mesh encloses: the sum of its signed tetrahedra from the origin.
 [[nodiscard]] mpq_class exact_volume(const Mesh& mesh);

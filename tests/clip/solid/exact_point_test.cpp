@@ -39,13 +39,9 @@ Known plain(Vec3 v) {
 
 // Where segment p q crosses the plane of a b c, or nothing when it does not cross strictly.
 std::optional<Known> crossing(Vec3 p, Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
-  const QVec3 n = qcross(qsub(exact(b), exact(a)), qsub(exact(c), exact(a)));
-  const mpq_class dp = qdot(n, qsub(exact(p), exact(a))), dq = qdot(n, qsub(exact(q), exact(a)));
-  if (sgn(dp) * sgn(dq) >= 0) return std::nullopt;
-  const mpq_class t = dp / (dp - dq);
-  const QVec3 qp = exact(p), qq = exact(q);
-  const QVec3 x{qp.x + t * (qq.x - qp.x), qp.y + t * (qq.y - qp.y), qp.z + t * (qq.z - qp.z)};
-  return Known{clip::solid::line_plane(p, q, a, b, c), x};
+  const std::optional<QVec3> x = exact_segment_plane_crossing(p, q, a, b, c);
+  if (!x) return std::nullopt;
+  return Known{clip::solid::line_plane(p, q, a, b, c), *x};
 }
 
 Known midpoint(const Known& a, const Known& b) {
