@@ -24,7 +24,12 @@ int main(int argc, char** argv) {
   std::vector<Verb> verbs = verbs_for(app, argc, argv);
   bool show_timings = false;
   for (const Verb& verb : verbs) {
-    if (verb.app->get_name() != "demo") add_timings_option(*verb.app, show_timings);
+    if (verb.app->get_name() == "demo") continue;
+    add_timings_option(*verb.app, show_timings);
+    // Where the flag is written after a verb's own subcommand (`contain index build ...
+    // --timings`), that subcommand parses it: it needs the flag too.
+    for (CLI::App* sub : verb.app->get_subcommands({}))
+      add_timings_option(*sub, show_timings);
   }
   try {
     app.parse(argc, argv);

@@ -110,5 +110,18 @@ TEST(TimingsCli, BoundPrintsWhereTheTimeWentAndTheSameAnswers) {
   expect_timings({"bound", dir.write("cube.off", cube_off(1.0))});
 }
 
+// The index verb's subcommand takes the flag after its own options too (`contain index build
+// ... --timings`): reading the mesh, building the index and saving it are timed.
+TEST(TimingsCli, IndexBuildPrintsWhereTheTimeWentAfterItsSubcommand) {
+  TempDir dir;
+  const std::string cube = dir.write("cube.off", cube_off(1.0));
+  const std::string saved = (dir.path() / "cube.cidx").string();
+  const std::map<std::string, double> spent =
+      expect_timings({"index", "build", "--mesh", cube, "--out", saved});
+  EXPECT_GT(spent.at("prepare"), 0.0);
+  EXPECT_GT(spent.at("write"), 0.0);
+  expect_timings({"inside", "--index", saved}, "0.5 0.5 0.5\n2 0 0\n");
+}
+
 }  // namespace
 }  // namespace contain::test
