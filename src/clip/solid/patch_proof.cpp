@@ -275,15 +275,6 @@ void PatchProofs::summarize(std::span<const std::uint8_t> turns_at,
   const std::span<const std::int32_t> items = soup_.tree.items();
   directions_.assign(nodes.size(), 0);
   ranges_.assign(nodes.size(), {0, 0});
-  // Each position's turns (0 with a corner not proven: such a triangle is never in a settled
-  // subtree) and input, in leaf order.
-  std::vector<std::uint8_t> turns(items.size(), 0);
-  std::vector<std::int32_t> input_at(items.size(), 0);
-  for (std::size_t k = 0; k < items.size(); ++k) {
-    const auto t = static_cast<std::size_t>(items[k]);
-    turns[k] = corners[t] == 7 ? turns_at[k] : std::uint8_t{0};
-    input_at[k] = soup_.input[t];
-  }
   // The input of each node's triangles (-1: of several). Subtrees of two inputs are not tried:
   // they hold the places where the inputs come near each other, and their proofs failed there
   // (at a union of two 131k-triangle spheres, 3,282 tries over 1.1 M triangles, for nothing).
@@ -292,11 +283,16 @@ void PatchProofs::summarize(std::span<const std::uint8_t> turns_at,
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const bvh::Node& n = nodes[i];
     if (n.is_leaf()) {
+      // Each position's turns (none with a corner not proven: such a triangle is never in a
+      // settled subtree) and input read here, where arrays of them in leaf order were 5 bytes a
+      // triangle of fresh pages and a pass more.
       unsigned bits = 0x3f;
       const auto first = static_cast<std::size_t>(n.first);
-      const std::int32_t one = input_at[first];
-      for (std::size_t k = first; k < first + static_cast<std::size_t>(n.count); ++k)
-        bits &= input_at[k] == one ? turns[k] : 0U;
+      const std::int32_t one = soup_.input[static_cast<std::size_t>(items[first])];
+      for (std::size_t k = first; k < first + static_cast<std::size_t>(n.count); ++k) {
+        const auto t = static_cast<std::size_t>(items[k]);
+        bits &= soup_.input[t] == one && corners[t] == 7 ? turns_at[k] : 0U;
+      }
       directions_[i] = static_cast<std::uint8_t>(bits);
       input[i] = one;
       ranges_[i] = {n.first, n.first + n.count};

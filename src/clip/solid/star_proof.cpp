@@ -63,10 +63,10 @@ bool walk_ring(std::span<const LinkEdge> star, std::array<std::int32_t, max_star
 }
 
 // The sign of component `axis` of ck (dropping that axis: orient2d(v, wk, w(k+1)) there), by
-// `filtered_turn` or orient2d itself.
-Sign turn(const RingProducts& c, int axis, Vec2 v, Vec2 wk, Vec2 wk1) {
+// `filtered_turn` or orient2d itself (the projected points made only then).
+Sign turn(const RingProducts& c, int axis, const Vec3& v, const Vec3& wk, const Vec3& wk1) {
   const std::optional<Sign> s = filtered_turn(c, axis);
-  return s ? *s : orient2d(v, wk, wk1);
+  return s ? *s : orient2d(drop_axis(v, axis), drop_axis(wk, axis), drop_axis(wk1, axis));
 }
 
 // orient3d(v, wk, w(k+1), w(k+2)) by `filtered_bend` or orient3d itself.
@@ -98,6 +98,9 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
     const auto c = static_cast<std::size_t>(corners[i]);
     const TriangleIndices& t = soup.triangles[c / 3];
     star[i] = {t[(c + 1) % 3], t[(c + 2) % 3], corners[i]};
+    // The ring's positions are read after the walk below, whose branches depend on these loads:
+    // asked for now, the misses of all n overlap with it.
+    __builtin_prefetch(&soup.vertices[static_cast<std::size_t>(star[i].a)]);
   }
   std::array<std::int32_t, max_star> ids;
   std::array<std::uint8_t, max_star> order;
@@ -111,12 +114,16 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
   std::array<std::array<double, 3>, max_star> d;
   for (std::size_t i = 0; i < n; ++i)
     d[i] = {ring[i]->x - apex.x, ring[i]->y - apex.y, ring[i]->z - apex.z};
+  // The successor of each index around the ring (no division per use).
+  std::array<std::uint8_t, max_star + 1> next;
+  for (std::size_t i = 0; i < n; ++i)
+    next[i] = static_cast<std::uint8_t>(i + 1 == n ? 0 : i + 1);
   std::array<RingProducts, max_star> c;
   // The projection: the dominant axis of the fan's area vector (the sum of the ck) in doubles,
   // the one most likely to pass; any axis keeps the proof exact.
   double nx = 0.0, ny = 0.0, nz = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    c[i] = ring_products(d[i], d[(i + 1) % n]);
+    c[i] = ring_products(d[i], d[next[i]]);
     nx += c[i].yz - c[i].zy;
     ny += c[i].zx - c[i].xz;
     nz += c[i].xy - c[i].yx;
@@ -125,16 +132,18 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
   ny = std::fabs(ny);
   nz = std::fabs(nz);
   const int axis = nx >= ny && nx >= nz ? 0 : (ny >= nz ? 1 : 2);
-  const Vec2 o = drop_axis(apex, axis);
-  std::array<Vec2, max_star> p;  // (zeroed first, 256 bytes: cheap beside the tests)
-  for (std::size_t i = 0; i < n; ++i)
-    p[i] = drop_axis(*ring[i], axis);
   // 1: every sector turns the same strict way (a zero-area triangle fails here).
-  const Sign first_turn = turn(c[0], axis, o, p[0], p[1]);
+  const Sign first_turn = turn(c[0], axis, apex, *ring[0], *ring[1]);
   if (first_turn == Sign::zero) return false;
   for (std::size_t i = 1; i < n; ++i) {
-    if (turn(c[i], axis, o, p[i], p[(i + 1) % n]) != first_turn) return false;
+    if (turn(c[i], axis, apex, *ring[i], *ring[next[i]]) != first_turn) return false;
   }
+  // The projected ring's second coordinates (an array of Vec2 would be zeroed first: 256 bytes,
+  // a `rep stos` per star).
+  const double oy = drop_axis(apex, axis).y;
+  std::array<double, max_star> py;
+  for (std::size_t i = 0; i < n; ++i)
+    py[i] = drop_axis(*ring[i], axis).y;
   // 2: the sectors all below pi and turning one way, the ring winds around v as often as it
   // crosses the ray from v along the first projected axis; a sector from wi to w(i+1) crosses it
   // exactly when it starts below v in the second coordinate and ends level or above (turning
@@ -142,14 +151,14 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
   // upward as often as downward): comparisons of doubles, no predicate.
   int crossings = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    crossings += p[i].y < o.y && p[(i + 1) % n].y >= o.y ? 1 : 0;
+    crossings += py[i] < oy && py[next[i]] >= oy ? 1 : 0;
   }
   if (crossings != 1) return false;
   // 3: every turn of the ring in space the same strict way.
-  const Sign first_bend = bend(c[0], d[2 % n], apex, *ring[0], *ring[1], *ring[2 % n]);
+  const Sign first_bend = bend(c[0], d[next[1]], apex, *ring[0], *ring[1], *ring[next[1]]);
   if (first_bend == Sign::zero) return false;
   for (std::size_t i = 1; i < n; ++i) {
-    if (bend(c[i], d[(i + 2) % n], apex, *ring[i], *ring[(i + 1) % n], *ring[(i + 2) % n]) !=
+    if (bend(c[i], d[next[next[i]]], apex, *ring[i], *ring[next[i]], *ring[next[next[i]]]) !=
         first_bend) {
       return false;
     }
@@ -159,7 +168,7 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
     // Triangle i is v w(i) w(i + 1), its corner k at v: its edge (k + 2) mod 3 runs w(i + 1)
     // -> v, which is edge k' (v -> w(i + 1)) of triangle i + 1.
     for (std::size_t i = 0; i < n; ++i) {
-      const std::int32_t from = star[order[i]].corner, to = star[order[(i + 1) % n]].corner;
+      const std::int32_t from = star[order[i]].corner, to = star[order[next[i]]].corner;
       const std::size_t from_at = out.at(from / 3), to_at = out.at(to / 3);
       across[from_at][static_cast<std::size_t>((from % 3 + 2) % 3)] =
           static_cast<std::int32_t>(to_at);
@@ -169,9 +178,7 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
       if (from % 3 == 0) {
         unsigned bits = 0;
         for (int k = 0; k < 3; ++k) {
-          const Sign s = k == axis ? first_turn
-                                   : turn(c[i], k, drop_axis(apex, k), drop_axis(*ring[i], k),
-                                          drop_axis(*ring[(i + 1) % n], k));
+          const Sign s = k == axis ? first_turn : turn(c[i], k, apex, *ring[i], *ring[next[i]]);
           if (s == Sign::positive) bits |= 1U << (2 * k);
           if (s == Sign::negative) bits |= 1U << (2 * k + 1);
         }
