@@ -176,33 +176,37 @@ TEST(LocatedPoints, PolygonAnswersAsScannedAreTheExactLocateOfEveryPointReadInFu
   }
 }
 
+// Random points around a mesh's bounds, a quarter lattice (vertices, faces and grid planes of the
+// test meshes), the same lattice one ulp off, and the vertices, as doubles x, y, z, ...
+std::vector<double> mesh_probes(const Mesh& mesh, const Box3& b, std::mt19937_64& rng) {
+  std::vector<double> values;
+  const auto add = [&](Vec3 p) { values.insert(values.end(), {p.x, p.y, p.z}); };
+  const auto around = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo - 0.5, hi + 0.5)(rng);
+  };
+  std::uniform_int_distribution<int> lattice(-2, 18);
+  // On the lattice (`towards` 0), or one ulp off it, down (-1e300) or up (1e300).
+  const auto quarter = [&](double towards) {
+    const double v = 0.25 * lattice(rng);
+    return towards == 0.0 ? v : std::nextafter(v, towards);
+  };
+  for (int k = 0; k < 3000; ++k)
+    add({around(b.min.x, b.max.x), around(b.min.y, b.max.y), around(b.min.z, b.max.z)});
+  for (const double towards : {0.0, -1e300, 1e300}) {
+    for (int k = 0; k < 1000; ++k)
+      add({quarter(towards), quarter(towards), quarter(towards)});
+  }
+  for (const Vec3& v : mesh.vertices)
+    add(v);
+  return values;
+}
+
 TEST(LocatedPoints, MeshAnswersAsScannedAreTheExactLocateOfEveryPointReadInFull) {
   std::mt19937_64 rng(3);
-  const std::vector<Mesh> meshes{test::grid_cube(0.0, 4.0, 4), test::octahedron(2.0),
-                                 test::l_prism(), test::scaled(test::l_prism(), 0.25)};
-  for (const Mesh& mesh : meshes) {
+  for (const Mesh& mesh : {test::grid_cube(0.0, 4.0, 3), test::octahedron(1.5), test::l_prism(),
+                           test::scaled(test::grid_cube(0.0, 4.0, 2), 0.5)}) {
     const MeshIndex index(mesh);
-    const Box3 b = index.bounds();
-    std::uniform_real_distribution<double> ux(b.min.x - 0.5, b.max.x + 0.5),
-        uy(b.min.y - 0.5, b.max.y + 0.5), uz(b.min.z - 0.5, b.max.z + 0.5);
-    std::uniform_int_distribution<int> lattice(-2, 18);
-    std::vector<double> values;
-    for (int k = 0; k < 3000; ++k) {
-      for (const double v : {ux(rng), uy(rng), uz(rng)})
-        values.push_back(v);
-    }
-    for (int k = 0; k < 1500; ++k) {  // on vertices, faces and grid planes: a quarter lattice
-      for (int c = 0; c < 3; ++c)
-        values.push_back(0.25 * lattice(rng));
-    }
-    for (int k = 0; k < 1500; ++k) {  // one ulp off the lattice
-      for (int c = 0; c < 3; ++c)
-        values.push_back(std::nextafter(0.25 * lattice(rng), k % 2 == 0 ? -1e300 : 1e300));
-    }
-    for (const Vec3& v : mesh.vertices) {
-      for (const double c : {v.x, v.y, v.z})
-        values.push_back(c);
-    }
+    const std::vector<double> values = mesh_probes(mesh, index.bounds(), rng);
     const test::TempFile file(".txt", points_text(values, 3, rng));
     const auto points = io::read_points3(file.path());
     ASSERT_TRUE(points.ok()) << points.error().what();
