@@ -77,7 +77,8 @@ Result<Answers> locate_streamed(const InsideOptions& o, Read&& read, Locate&& lo
 }
 
 // locate_streamed of a reader that answers the points as it scans them (io::locate_points2_bounded
-// with a box locator): its pieces are the answers.
+// with a box locator): its pieces are the answers. So `--timings` counts the location in `read`
+// (its `query` is the copy of the answers): the two are one pass over the points now.
 template <class ReadLocated, class Locator>
 Result<Answers> located_streamed(const InsideOptions& o, ReadLocated&& read,
                                  const Locator& locator) {
