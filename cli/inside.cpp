@@ -1,5 +1,6 @@
 // contain inside: one line per point, "in", "on" or "out".
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -75,6 +76,22 @@ Result<Answers> locate_streamed(const InsideOptions& o, Read&& read, Locate&& lo
   return locations;
 }
 
+// locate_streamed of a reader that answers the points as it scans them (io::locate_points2_bounded
+// with a box locator): its pieces are the answers. So `--timings` counts the location in `read`
+// (its `query` is the copy of the answers): the two are one pass over the points now.
+template <class ReadLocated, class Locator>
+Result<Answers> located_streamed(const InsideOptions& o, ReadLocated&& read,
+                                 const Locator& locator) {
+  return locate_streamed<Location>(
+      o,
+      [&](const std::string& path, const io::ChunkedReading& reading, const auto& consume) {
+        return read(path, reading, locator, consume);
+      },
+      [](std::span<const Location> answers, std::span<Location> out) {
+        std::ranges::copy(answers, out.begin());
+      });
+}
+
 int answer(const Result<Answers>& locations, const InsideOptions& o) {
   if (!locations) return report(locations.error());
   return emit_locations(*locations, o.boundary, o.out, o.threads);
@@ -98,12 +115,9 @@ int run_polygon(const InsideOptions& o) {
                                         }),
                   o);
   }
-  return answer(locate_streamed<io::BoundedPoint2>(o, io::read_points2_bounded,
-                                                   [&](auto points, std::span<Location> out) {
-                                                     io::locate_bounded(index, points, out,
-                                                                        {.threads = o.threads});
-                                                   }),
-                o);
+  return answer(
+      located_streamed(o, io::locate_points2_bounded, io::box_locator<io::BoundedPoint2>(index)),
+      o);
 }
 
 int run_csg(const InsideOptions& o) {
@@ -141,11 +155,8 @@ int run_mesh(const InsideOptions& o) {
   const bool bounded =
       index.regime() == inside::MeshRegime::closed_exact && 2 * stats.surface_cells < stats.cells;
   auto locations = bounded
-                       ? locate_streamed<io::BoundedPoint3>(
-                             o, io::read_points3_bounded,
-                             [&](auto points, std::span<Location> out) {
-                               io::locate_bounded(index, points, out, {.threads = o.threads});
-                             })
+                       ? located_streamed(o, io::locate_points3_bounded,
+                                          io::box_locator<io::BoundedPoint3>(index))
                        : locate_streamed<Vec3>(o, io::read_points3_chunked,
                                                [&](auto points, std::span<Location> out) {
                                                  index.locate(points, out, {.threads = o.threads});

@@ -1,10 +1,13 @@
 #include "io/masked_lines.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <type_traits>
+#include <vector>
 
 #include "io/number_bound.h"
 
@@ -108,17 +111,47 @@ template <int kCount>
   return bits != 0 && (bits & (bits - 1)) == 0;
 }
 
-// Points taken by the masks, staged in a small array with their tokens' digits, and appended a
+// Where a scan's points go: appended to a vector, or handed to a sink a run at a time. `walk`
+// takes lines the masks left to scan_bounded_lines.
+template <class Point>
+struct VectorOutput {
+  using Bounded = Point;
+  std::vector<Bounded>& points;
+  void append(const Bounded* first, int count) {
+    points.insert(points.end(), first, first + count);
+  }
+  PointLinesScan walk(std::string_view text) { return scan_bounded_lines(text, points); }
+};
+template <class Point>
+struct SinkOutput {
+  using Bounded = Point;
+  const BoundedSink<Bounded>& sink;
+  std::vector<Bounded> walked;  // the walk's points, reused from line to line
+  void append(const Bounded* first, int count) {
+    if (count > 0) sink.take(sink.context, {first, static_cast<std::size_t>(count)});
+  }
+  PointLinesScan walk(std::string_view text) {
+    walked.clear();
+    const PointLinesScan part = scan_bounded_lines(text, walked);
+    const std::span<const Bounded> all(walked);
+    for (std::size_t at = 0; at < all.size(); at += sink.kMaxRun)
+      sink.take(sink.context, all.subspan(at, std::min(sink.kMaxRun, all.size() - at)));
+    return part;
+  }
+};
+
+// Points taken by the masks, staged in a small array with their tokens' digits, and handed over a
 // run at a time with their boxes: a vector's emplace_back in the scan's loop is a call (too large
 // a function for the compiler to inline it), and the boxes are bounded together (TokenDigits).
-template <class Bounded>
+template <class Output>
 struct StagedPoints {
+  using Bounded = typename Output::Bounded;
   static constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
   static constexpr int kRoom = TokenDigits::kRoom / 3;
   Bounded staged[kRoom];
   TokenDigits digits;
   int held = 0;
-  std::vector<Bounded>& points;
+  Output& output;
   BoundDigits bound;
 
   void flush() {
@@ -132,20 +165,21 @@ struct StagedPoints {
         staged[i].box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
       }
     }
-    points.insert(points.end(), staged, staged + held);
+    output.append(staged, held);
     held = 0;
   }
 };
 
-template <class Bounded>
-[[gnu::always_inline]] inline PointLinesScan scan_masked(std::string_view text,
-                                                         std::vector<Bounded>& points, MaskIsa isa,
-                                                         BoundDigits bound, std::int64_t* walked) {
+template <class Output>
+[[gnu::always_inline]] inline PointLinesScan scan_masked(std::string_view text, Output& output,
+                                                         MaskIsa isa, BoundDigits bound,
+                                                         std::int64_t* walked) {
+  using Bounded = typename Output::Bounded;
   constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
   PointLinesScan scan;
   const char* const base = text.data();
   const std::size_t size = text.size();
-  StagedPoints<Bounded> out{.points = points, .bound = bound};
+  StagedPoints<Output> out{.output = output, .bound = bound};
   // Lines taken by the masks and left to the walk: a text of which more than a third goes to the
   // walk (commas, comments, exponents) is walked from there on, whole, as without masks (a line
   // walked alone costs the masks and a call more than in the walk of the whole text).
@@ -153,7 +187,7 @@ template <class Bounded>
   // The lines of [from, to) by the exact walk, taken into the scan; false where it stopped.
   const auto walk = [&](std::size_t from, std::size_t to) {
     out.flush();
-    const PointLinesScan part = scan_bounded_lines(text.substr(from, to - from), points);
+    const PointLinesScan part = output.walk(text.substr(from, to - from));
     if (scan.first_row == 0 && part.first_row != 0) scan.first_row = scan.lines + part.first_row;
     scan.lines += part.lines;
     walked_lines += part.lines;
@@ -251,10 +285,10 @@ template <class Bounded>
 // the bit instructions those CPUs have (tzcnt, blsr, shifts by a register in one micro-op: shlx,
 // shrx; the baseline's shift by cl is three). The same results: only the instructions differ
 // (the tests run both).
-template <class Bounded>
-PointLinesScan scan_baseline(std::string_view text, std::vector<Bounded>& points, MaskIsa isa,
+template <class Output>
+PointLinesScan scan_baseline(std::string_view text, Output& output, MaskIsa isa,
                              std::int64_t* walked) {
-  return scan_masked(text, points, isa, &bound_digits_baseline, walked);
+  return scan_masked(text, output, isa, &bound_digits_baseline, walked);
 }
 
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -269,30 +303,31 @@ bool has_bit_instructions() {
   return has;
 }
 
-template <class Bounded>
-[[gnu::target("bmi,bmi2,popcnt")]] PointLinesScan scan_bit_instructions(
-    std::string_view text, std::vector<Bounded>& points, MaskIsa isa, std::int64_t* walked) {
+template <class Output>
+[[gnu::target("bmi,bmi2,popcnt")]] PointLinesScan scan_bit_instructions(std::string_view text,
+                                                                        Output& output, MaskIsa isa,
+                                                                        std::int64_t* walked) {
   // The boxes eight at a time where the CPU has AVX-512DQ, else four (AVX2: the masks' versions
   // that come here are AVX2's or wider).
   const BoundDigits bound = isa == MaskIsa::avx512 && mask_isa_available(isa) && has_avx512_dq_vl()
                                 ? &bound_digits_avx512
                             : mask_isa_available(MaskIsa::avx2) ? &bound_digits_avx2
                                                                 : &bound_digits_baseline;
-  return scan_masked(text, points, isa, bound, walked);
+  return scan_masked(text, output, isa, bound, walked);
 }
 
 #endif
 
-template <class Bounded>
-PointLinesScan scan_dispatched(std::string_view text, std::vector<Bounded>& points, MaskIsa isa,
+template <class Output>
+PointLinesScan scan_dispatched(std::string_view text, Output&& output, MaskIsa isa,
                                std::int64_t* walked) {
 #if defined(__GNUC__) && defined(__x86_64__)
   if ((isa == MaskIsa::avx2 || isa == MaskIsa::avx512) && mask_isa_available(isa) &&
       has_bit_instructions()) {
-    return scan_bit_instructions(text, points, isa, walked);
+    return scan_bit_instructions(text, output, isa, walked);
   }
 #endif
-  return scan_baseline(text, points, isa, walked);
+  return scan_baseline(text, output, isa, walked);
 }
 
 }  // namespace
@@ -308,11 +343,20 @@ bool masked_scan_pays() {
 
 PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoint2>& points,
                                    MaskIsa isa, std::int64_t* walked) {
-  return scan_dispatched(text, points, isa, walked);
+  return scan_dispatched(text, VectorOutput<BoundedPoint2>{points}, isa, walked);
 }
 PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoint3>& points,
                                    MaskIsa isa, std::int64_t* walked) {
-  return scan_dispatched(text, points, isa, walked);
+  return scan_dispatched(text, VectorOutput<BoundedPoint3>{points}, isa, walked);
+}
+
+PointLinesScan scan_bounded_masked(std::string_view text, const BoundedSink<BoundedPoint2>& sink,
+                                   MaskIsa isa) {
+  return scan_dispatched(text, SinkOutput<BoundedPoint2>{.sink = sink}, isa, nullptr);
+}
+PointLinesScan scan_bounded_masked(std::string_view text, const BoundedSink<BoundedPoint3>& sink,
+                                   MaskIsa isa) {
+  return scan_dispatched(text, SinkOutput<BoundedPoint3>{.sink = sink}, isa, nullptr);
 }
 
 }  // namespace contain::io::detail

@@ -20,7 +20,9 @@
 /// construction; once more than a third of the lines went to the walk, the rest of the text does,
 /// in one walk (a file of commas reads as fast as before).
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +40,26 @@ PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoi
 /// The same for 3D points.
 PointLinesScan scan_bounded_masked(std::string_view text, std::vector<BoundedPoint3>& points,
                                    MaskIsa isa = best_mask_isa(), std::int64_t* walked = nullptr);
+
+/// Where a scan hands its points over a run at a time instead of appending them to a vector:
+/// `take(context, run)` sees the points in text order, runs of at most kMaxRun (32 for a run the
+/// masks took, up to 64 from the walk), each run's [first, last) text valid during the call. What
+/// a caller does with each point while its box is in the cache (locate it: locate_points2_bounded)
+/// costs no array of points, and no second pass over them.
+template <class Bounded>
+struct BoundedSink {
+  static constexpr std::size_t kMaxRun = 64;
+  void* context = nullptr;
+  void (*take)(void* context, std::span<const Bounded> run) = nullptr;
+};
+
+/// scan_bounded_masked(text, points, isa), the points handed to `sink` a run at a time instead:
+/// the same points, in the same order, the same results.
+PointLinesScan scan_bounded_masked(std::string_view text, const BoundedSink<BoundedPoint2>& sink,
+                                   MaskIsa isa = best_mask_isa());
+/// The same for 3D points.
+PointLinesScan scan_bounded_masked(std::string_view text, const BoundedSink<BoundedPoint3>& sink,
+                                   MaskIsa isa = best_mask_isa());
 
 /// Whether this CPU reads faster by masks than by scan_bounded_lines: where it has AVX2 (with
 /// BMI1/2, as every AVX2 CPU) or AVX-512 (the whole `contain inside` of 10^6 points in a

@@ -1,6 +1,7 @@
 #include "contain/io/points_io.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <iostream>
@@ -95,30 +96,117 @@ Result<Points> scan_points(std::string_view text, const std::string& source,
   return to_points<Points>(parse_number_table(text, source, options));
 }
 
-// One slice of a block, parsed on its own thread: its points, lines and the line of its first
-// point (from 1 within the slice; 0: none), or `failed` when the scanner stopped at a line it
-// cannot take, which the table parser then reads again in file order, with the lines before it
-// known, for the error of one pass over the file.
-template <class Point>
+// One slice of a block, parsed on its own thread: its items (its points, or their answers), lines
+// and the line of its first point (from 1 within the slice; 0: none), or `failed` when the scanner
+// stopped at a line it cannot take, which the table parser then reads again in file order, with
+// the lines before it known, for the error of one pass over the file.
+template <class Item>
 struct Slice {
-  std::vector<Point> points;
+  std::vector<Item> items;
   std::int64_t lines = 0;
   std::int64_t first_row = 0;
   bool failed = false;
 };
 
-template <class Point>
-void parse_slice(std::string_view text, Slice<Point>& slice) {
-  slice.points.clear();
-  // Room for a point every 32 bytes at once (a coordinate file's lines are 30 to 60 bytes): the
-  // vector grown by doubling copied itself into fresh pages several times, each page a fault
-  // (dear in a virtual machine); capacity never used is never touched. Shorter lines grow it.
-  slice.points.reserve(text.size() / 32 + 64);
-  const detail::PointLinesScan scan = scan_items(text, slice.points);
+// Room for a point every 32 bytes at once (a coordinate file's lines are 30 to 60 bytes): the
+// vector grown by doubling copied itself into fresh pages several times, each page a fault (dear
+// in a virtual machine); capacity never used is never touched. Shorter lines grow it.
+template <class Item>
+void begin_slice(std::string_view text, Slice<Item>& slice) {
+  slice.items.clear();
+  slice.items.reserve(text.size() / 32 + 64);
+}
+template <class Item>
+void end_slice(const detail::PointLinesScan& scan, Slice<Item>& slice) {
   slice.failed = !scan.complete;
   slice.lines = scan.lines;
   slice.first_row = scan.first_row;
 }
+
+// The slices of the chunked readers: the points themselves (Vec2, Vec3, or boxes).
+template <class Point>
+struct PointSlices {
+  using Item = Point;
+  static constexpr int kColumns = kColumnsOf<Point>;
+  void parse(std::string_view text, Slice<Point>& slice) const {
+    begin_slice(text, slice);
+    end_slice(scan_items(text, slice.items), slice);
+  }
+  void from_table(const NumberTable& table, Slice<Point>& slice) const {
+    slice.items.clear();
+    append_rows(table, slice.items);
+  }
+};
+
+// The slices of the locating readers: each point's answer, given as the scan hands over a run of
+// points (detail::BoundedSink), while their boxes are in the cache, so that no array of points is
+// written and read again; the points whose box has no one answer are read in full, kept with
+// their places, and located together at the slice's end (the index's batch pipeline).
+template <class Bounded, class Point>
+struct LocatingSlices {
+  using Item = Location;
+  static constexpr int kColumns = kColumnsOf<Bounded>;
+  const BoxLocator<Bounded, Point>& locator;
+
+  struct Open {  // a slice being parsed: its answers and the points left to `locate`
+    const BoxLocator<Bounded, Point>& locator;
+    std::vector<Location>& answers;
+    std::vector<Point> exact;
+    std::vector<std::size_t> where;
+
+    void take(std::span<const Bounded> run) {
+      const std::size_t at = answers.size();
+      answers.resize(at + run.size());
+      std::uint64_t left = locator.settle(run, std::span<Location>(answers).subspan(at));
+      for (; left != 0; left &= left - 1) {
+        const auto k = static_cast<std::size_t>(std::countr_zero(left));
+        exact.push_back(exact_point(run[k]));
+        where.push_back(at + k);
+      }
+    }
+    void finish() {
+      if (exact.empty()) return;
+      std::vector<Location> located(exact.size());
+      locator.locate(exact, located);
+      for (std::size_t i = 0; i < where.size(); ++i)
+        answers[where[i]] = located[i];
+    }
+  };
+
+  void parse(std::string_view text, Slice<Location>& slice) const {
+    begin_slice(text, slice);
+    Open open{.locator = locator, .answers = slice.items};
+    const detail::BoundedSink<Bounded> sink{
+        .context = &open, .take = [](void* context, std::span<const Bounded> run) {
+          static_cast<Open*>(context)->take(run);
+        }};
+    // By masks where the CPU makes it pay (the same points either way).
+    static const bool masked = detail::masked_scan_pays();
+    detail::PointLinesScan scan;
+    if (masked) {
+      scan = detail::scan_bounded_masked(text, sink);
+    } else {
+      std::vector<Bounded> points;
+      scan = detail::scan_bounded_lines(text, points);
+      take_runs(points, open);
+    }
+    open.finish();
+    end_slice(scan, slice);
+  }
+  void from_table(const NumberTable& table, Slice<Location>& slice) const {
+    slice.items.clear();
+    std::vector<Bounded> points;
+    append_rows(table, points);
+    Open open{.locator = locator, .answers = slice.items};
+    take_runs(points, open);
+    open.finish();
+  }
+  static void take_runs(std::span<const Bounded> points, Open& open) {
+    constexpr std::size_t run = detail::BoundedSink<Bounded>::kMaxRun;
+    for (std::size_t at = 0; at < points.size(); at += run)
+      open.take(points.subspan(at, std::min(run, points.size() - at)));
+  }
+};
 
 // Where the slices of `text` (whole lines) start: about equal parts, each moved to the next line.
 std::vector<std::size_t> slice_starts(std::string_view text, int parts) {
@@ -153,14 +241,16 @@ std::size_t block_bytes(const ChunkedReading& reading) {
   return one_thread ? std::size_t{256} << 10 : shared;
 }
 
-// Parses the whole lines of `text` (slices on up to `threads` threads) and hands their points to
-// `consume` in file order, at most `chunk` at a time; at a slice with an error, that slice is
-// parsed again with the lines before it, for the error of one pass over the file.
-template <class Point>
+// Parses the whole lines of `text` (slices on up to `threads` threads, by `slicer`: PointSlices or
+// LocatingSlices) and hands their items to `consume` in file order, at most `chunk` at a time; at
+// a slice with an error, that slice is parsed again with the lines before it, for the error of
+// one pass over the file.
+template <class Slicer, class Item = typename Slicer::Item>
 Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
-                   ReadPosition& at, std::uintmax_t file_size, std::vector<Slice<Point>>& slices,
-                   const std::function<void(std::span<const Point>, double)>& consume) {
-  constexpr int kColumns = kColumnsOf<Point>;
+                   ReadPosition& at, std::uintmax_t file_size, const Slicer& slicer,
+                   std::vector<Slice<Item>>& slices,
+                   const std::function<void(std::span<const Item>, double)>& consume) {
+  constexpr int kColumns = Slicer::kColumns;
   const BatchOptions options{.threads = reading.threads};
   const std::vector<std::size_t> starts =
       slice_starts(text, thread_count(options, text.size(), kSliceBytes));
@@ -168,12 +258,12 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   if (slices.size() < parts) slices.resize(parts);
   parallel_for(parts, options, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      parse_slice(text.substr(starts[k], starts[k + 1] - starts[k]), slices[k]);
+      slicer.parse(text.substr(starts[k], starts[k + 1] - starts[k]), slices[k]);
     }
   });
   const std::size_t chunk = std::max<std::size_t>(reading.chunk, 1);
   for (std::size_t k = 0; k < parts; ++k) {
-    Slice<Point>& slice = slices[k];
+    Slice<Item>& slice = slices[k];
     if (slice.failed) {
       const std::string_view lines = text.substr(starts[k], starts[k + 1] - starts[k]);
       auto table = parse_number_table(lines, source,
@@ -182,8 +272,7 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
                                        .first_row_line = at.first_row,
                                        .first_row_columns = at.first_row == 0 ? 0 : kColumns});
       if (!table) return table.error();
-      slice.points.clear();
-      append_rows(*table, slice.points);
+      slicer.from_table(*table, slice);
       slice.first_row = table->rows() == 0 ? 0 : table->lines.front() - at.lines;
       slice.lines = count_lines(lines);
     }
@@ -193,9 +282,9 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
                              ? 0.0
                              : std::min(1.0, static_cast<double>(at.bytes + starts[k + 1]) /
                                                  static_cast<double>(file_size));
-    const std::span<const Point> points(slice.points);
-    for (std::size_t begin = 0; begin < points.size(); begin += chunk) {
-      consume(points.subspan(begin, std::min(chunk, points.size() - begin)), share);
+    const std::span<const Item> items(slice.items);
+    for (std::size_t begin = 0; begin < items.size(); begin += chunk) {
+      consume(items.subspan(begin, std::min(chunk, items.size() - begin)), share);
     }
   }
   at.bytes += text.size();
@@ -206,15 +295,15 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
 // the same pieces and errors), without copying them: each block is the text from the end of the
 // last, `block` bytes cut after their last newline unless the rest is shorter; a line longer than
 // a block grows the block. The byte order mark counts in the first block, as in the stream's.
-template <class Point>
+template <class Slicer, class Item = typename Slicer::Item>
 Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
-                   const std::string& source,
-                   const std::function<void(std::span<const Point>, double)>& consume) {
+                   const std::string& source, const Slicer& slicer,
+                   const std::function<void(std::span<const Item>, double)>& consume) {
   std::size_t block = block_bytes(reading);
   const std::string_view text = mapped.text();
   const std::size_t mark = text.size() - detail::skip_bom(text).size();
   ReadPosition at{.bytes = mark};
-  std::vector<Slice<Point>> slices;
+  std::vector<Slice<Item>> slices;
   const auto unreadable = [&] {
     return detail::make_error(ErrorKind::io,
                               "the file could not be read to its end (shortened while being "
@@ -236,7 +325,7 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
     if (!mapped.reach(to)) return unreadable();
     const std::size_t first = std::max(from, mark);
     if (Status parsed = parse_block(text.substr(first, to - first), reading, source, at,
-                                    text.size(), slices, consume);
+                                    text.size(), slicer, slices, consume);
         !parsed) {
       return parsed;
     }
@@ -249,14 +338,15 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
 // The file a block at a time: each block's whole lines parsed (parse_block), the partial last
 // line carried to the next; a line longer than a block grows the block. A regular file is mapped
 // instead (read_mapped) where `reading.map` asks it.
-template <class Point>
+template <class Slicer, class Item = typename Slicer::Item>
 Status read_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
-                    const std::function<void(std::span<const Point>, double)>& consume) {
+                    const Slicer& slicer,
+                    const std::function<void(std::span<const Item>, double)>& consume) {
   auto input = detail::BlockInput::open(path);
   if (!input) return input.error();
   if (reading.map) {
     if (auto mapped = detail::MappedText::map(input->file(), input->size())) {
-      return read_mapped(*mapped, reading, input->source(), consume);
+      return read_mapped(*mapped, reading, input->source(), slicer, consume);
     }
   }
   std::size_t block = block_bytes(reading);
@@ -267,7 +357,7 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
   HugePageVector<char> buffer(block);
   std::size_t held = 0;  // bytes in the buffer
   ReadPosition at;
-  std::vector<Slice<Point>> slices;
+  std::vector<Slice<Item>> slices;
   bool first = true;
   while (true) {
     auto got = input->read(buffer.data() + held, block - held);
@@ -293,8 +383,8 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
       lines = skipped;
       first = false;
     }
-    if (Status parsed =
-            parse_block(lines, reading, input->source(), at, input->size(), slices, consume);
+    if (Status parsed = parse_block(lines, reading, input->source(), at, input->size(), slicer,
+                                    slices, consume);
         !parsed) {
       return parsed;
     }
@@ -326,21 +416,32 @@ Result<Points3> read_points3(const std::filesystem::path& path) {
 }
 Status read_points2_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                             const std::function<void(std::span<const Vec2>, double)>& consume) {
-  return read_chunked<Vec2>(path, reading, consume);
+  return read_chunked(path, reading, PointSlices<Vec2>{}, consume);
 }
 Status read_points3_chunked(const std::filesystem::path& path, const ChunkedReading& reading,
                             const std::function<void(std::span<const Vec3>, double)>& consume) {
-  return read_chunked<Vec3>(path, reading, consume);
+  return read_chunked(path, reading, PointSlices<Vec3>{}, consume);
 }
 Status read_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const BoundedPoint2>, double)>& consume) {
-  return read_chunked<BoundedPoint2>(path, reading, consume);
+  return read_chunked(path, reading, PointSlices<BoundedPoint2>{}, consume);
 }
 Status read_points3_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const BoundedPoint3>, double)>& consume) {
-  return read_chunked<BoundedPoint3>(path, reading, consume);
+  return read_chunked(path, reading, PointSlices<BoundedPoint3>{}, consume);
+}
+
+Status locate_points2_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
+    const std::function<void(std::span<const Location>, double)>& consume) {
+  return read_chunked(path, reading, LocatingSlices<BoundedPoint2, Vec2>{locator}, consume);
+}
+Status locate_points3_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator3& locator,
+    const std::function<void(std::span<const Location>, double)>& consume) {
+  return read_chunked(path, reading, LocatingSlices<BoundedPoint3, Vec3>{locator}, consume);
 }
 
 // The text of a bounded point was taken by the scanner, so the scan of it succeeds.

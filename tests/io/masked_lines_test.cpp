@@ -7,6 +7,7 @@
 // huge, tiny and negative-zero numbers; leading zeros; errors).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -713,6 +714,58 @@ TEST(MaskedLines, AMalformedLineIsAnErrorWithItsOwnLineNumber) {
         }
       }
     }
+  }
+}
+
+// The scan handing its points to a sink a run at a time gives the vector's scan: the same points,
+// boxes and spans in the same order, the same lines, in runs of at most kMaxRun.
+template <class Bounded>
+void expect_sink_as_vector(const std::string& text) {
+  for (MaskIsa isa : versions_here()) {
+    std::vector<Bounded> expected;
+    const detail::PointLinesScan scan = detail::scan_bounded_masked(text, expected, isa);
+    struct Taken {
+      std::vector<Bounded> points;
+      std::size_t runs = 0, longest = 0;
+    } taken;
+    const detail::BoundedSink<Bounded> sink{
+        .context = &taken, .take = [](void* context, std::span<const Bounded> run) {
+          auto& into = *static_cast<Taken*>(context);
+          into.points.insert(into.points.end(), run.begin(), run.end());
+          into.runs += 1;
+          into.longest = std::max(into.longest, run.size());
+        }};
+    const detail::PointLinesScan sunk = detail::scan_bounded_masked(text, sink, isa);
+    const auto name = "version " + std::to_string(static_cast<int>(isa)) + " on:\n" + text;
+    ASSERT_EQ(sunk.complete, scan.complete) << name;
+    ASSERT_EQ(sunk.lines, scan.lines) << name;
+    ASSERT_EQ(sunk.first_row, scan.first_row) << name;
+    ASSERT_EQ(taken.points.size(), expected.size()) << name;
+    EXPECT_LE(taken.longest, detail::BoundedSink<Bounded>::kMaxRun);
+    EXPECT_EQ(taken.runs > 0, !expected.empty());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      ASSERT_TRUE(same_box(taken.points[i], expected[i])) << "point " << i << ", " << name;
+      ASSERT_EQ(taken.points[i].first, expected[i].first) << "point " << i << ", " << name;
+      ASSERT_EQ(taken.points[i].last, expected[i].last) << "point " << i << ", " << name;
+    }
+  }
+}
+
+TEST(MaskedLines, TheScanIntoASinkGivesTheScanIntoAVectorOnRandomPlainAndBrokenFiles) {
+  std::mt19937_64 rng(2728);
+  for (int round = 0; round < 20; ++round) {
+    const std::string two = random_file(rng, 2, 300, round % 2 == 1);
+    const std::string three = random_file(rng, 3, 300, round % 2 == 1);
+    expect_sink_as_vector<BoundedPoint2>(two);
+    expect_sink_as_vector<BoundedPoint3>(three);
+    expect_sink_as_vector<BoundedPoint2>(plain_file(rng, 2, 300));
+    expect_sink_as_vector<BoundedPoint3>(plain_file(rng, 3, 300));
+    // Stopped at a bad line, the points before it handed over; a file of commas (the walk).
+    expect_sink_as_vector<BoundedPoint2>(two + "0.5 x\n" + two);
+    std::string commas;
+    for (int k = 0; k < 200; ++k)
+      commas += random_number(rng) + ", " + random_number(rng) + "\n";
+    expect_sink_as_vector<BoundedPoint2>(commas);
   }
 }
 

@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "contain/core/location.h"
@@ -151,6 +152,61 @@ void locate_bounded(const Index& index, std::span<const Bounded> points, std::sp
                    out[where[i]] = answers[i];
                });
 }
+
+/// How the locating readers (`locate_points2_bounded`) answer points: `settle(run, out)` answers
+/// the points of `run` (at most 64) whose box has one answer, `out[i]` for `run[i]`, and returns
+/// the bits (bit i) of those it leaves; `locate(points, out)` answers those, read in full
+/// (`exact_point`), a slice of the file's at a time. Called from the reading threads at once (on
+/// separate points): both must be safe to call concurrently.
+template <class Bounded, class Point>
+struct BoxLocator {
+  std::function<std::uint64_t(std::span<const Bounded>, std::span<Location>)> settle;
+  std::function<void(std::span<const Point>, std::span<Location>)> locate;
+};
+using BoxLocator2 = BoxLocator<BoundedPoint2, Vec2>;
+using BoxLocator3 = BoxLocator<BoundedPoint3, Vec3>;
+
+/// The BoxLocator of an index that can answer for a whole box (inside::PolygonIndex,
+/// inside::MeshIndex; alive while the locator is used): `settle` is `index.locate_settled`, and
+/// `locate` the index's batch locate on the calling thread. So the answers are `locate_bounded`'s:
+/// exactly `index.locate` of each point whenever `locate_settled` is right. No `index.prefetch`
+/// ahead, as locate_bounded has: with the boxes handed over 32 at a time it costs a second guess of
+/// each cell and paid nothing (10^6 points in the 100-vertex star: 54 ms with it, 50-54 without;
+/// the torus: the same; docs/benchmarks.md, issue 27).
+template <class Bounded, class Index>
+[[nodiscard]] auto box_locator(const Index& index) {
+  using Point = decltype(exact_point(std::declval<const Bounded&>()));
+  return BoxLocator<Bounded, Point>{
+      .settle =
+          [&index](std::span<const Bounded> run, std::span<Location> out) {
+            std::uint64_t left = 0;
+            for (std::size_t k = 0; k < run.size(); ++k) {
+              const auto settled = index.locate_settled(run[k].box);
+              if (settled) {
+                out[k] = *settled;
+              } else {
+                left |= std::uint64_t{1} << k;
+              }
+            }
+            return left;
+          },
+      .locate = [&index](std::span<const Point> points,
+                         std::span<Location> out) { index.locate(points, out, {.threads = 1}); }};
+}
+
+/// Reads 2D points as `read_points2_bounded` does (the same lines, order and errors) and answers
+/// each by `locator` as it is scanned, while its box is in the cache: `consume(answers, share)`
+/// sees the answers in file order, at most `reading.chunk` at a time, and no array of points is
+/// kept. The answers are those of `locate_bounded` on the points read_points2_bounded gives
+/// (whatever the threads, the block and `map`). At the first error the call returns it, after the
+/// answers before its block's slice were consumed.
+[[nodiscard]] Status locate_points2_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
+    const std::function<void(std::span<const Location>, double)>& consume);
+/// Reads 3D points and answers them as they are scanned (see `locate_points2_bounded`).
+[[nodiscard]] Status locate_points3_bounded(
+    const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator3& locator,
+    const std::function<void(std::span<const Location>, double)>& consume);
 
 /// Reads 2D points from a stream to its end; `source` names it in errors.
 [[nodiscard]] Result<Points2> read_points2(std::istream& in, const std::string& source);
