@@ -199,12 +199,26 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
     const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
     return n.x * n.x + n.y * n.y + n.z * n.z;
   };
+  // The largest area so far of the last root met: faces of a patch mostly follow each other
+  // (the pieces of one input triangle, then its neighbours), so the leader's area is not made
+  // again for every face, nor its corners read again from far away. Any face chosen gives the
+  // same labels; this is the same choice.
+  std::size_t cached_root = labels.patch.size();
+  double cached_area = 0.0;
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root == f) {
       labels.patch[f] = static_cast<std::uint32_t>(f);
-    } else if (area(f) > area(labels.patch[root])) {
+      continue;
+    }
+    if (root != cached_root) {
+      cached_root = root;
+      cached_area = area(labels.patch[root]);
+    }
+    const double own = area(f);
+    if (own > cached_area) {
       labels.patch[root] = static_cast<std::uint32_t>(f);
+      cached_area = own;
     }
   }
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
