@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -341,6 +342,21 @@ struct Sheets {
   bool paired = false;
 };
 [[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                                     const PointStore& store);
+
+/// The sheets when every point's faces form one umbrella: its corners' faces joined across
+/// their edges at the point, each edge there held by one face each way, in one cycle (a
+/// closed 2-manifold's vertices). Then each point is one written vertex (numbered by first use)
+/// and every edge is paired: what separate_sheets' grouping of edge uses gives, found from each
+/// point's few corners without grouping the edges nor a union-find of every corner. nullopt when
+/// some point is not such (an edge held once or by more than two faces, the same way twice, a
+/// repeated corner, a point pinched between umbrellas, more than 64 corners at a point).
+[[nodiscard]] std::optional<Sheets> single_umbrellas(
+    const std::vector<std::array<std::int32_t, 3>>& faces);
+
+/// separate_sheets by the faces' edge uses, every edge's faces paired around it, whatever the
+/// faces: the general way.
+[[nodiscard]] Sheets sheets_by_edges(const std::vector<std::array<std::int32_t, 3>>& faces,
                                      const PointStore& store);
 
 }  // namespace contain::clip::solid
