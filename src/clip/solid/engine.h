@@ -29,6 +29,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
+#include "contain/core/union_find.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 
@@ -307,6 +308,11 @@ struct FaceLabels {
 /// The axis whose normal component is largest in magnitude (and non-zero): the one dropped to
 /// work in a triangle's plane.
 [[nodiscard]] int dropped_axis(const BigVec3& n);
+
+/// The refined faces' patches (label_faces): two faces are joined across an edge held by exactly
+/// these two, one each way, of triangles of the same input, that is not a curve edge; the set
+/// of each face is its smallest face (UnionFind::find).
+[[nodiscard]] UnionFind<std::uint32_t> face_patches(const Soup& soup, const Refinement& r);
 
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
 /// Whether the pair stage first proves the soup's vertices (star_proof.h) and skips the pairs
