@@ -71,6 +71,67 @@ TEST(SolidSheets, AFanOutOfAlternatingOrderIsPairedWithEveryDirectedEdgeOnce) {
   }
 }
 
+// One or two octahedra on 12 random lattice points of [-range, range]^3 (with `share`, the
+// second drawn to share a point or an edge with the first, or neither), then one change drawn
+// from the first `changes` of: corners moved at random onto other points (fans, pinches,
+// repeated corners), two faces' corners swapped, a face dropped, the faces shuffled; none for
+// the other draws.
+std::vector<std::array<std::int32_t, 3>> random_octahedra(std::mt19937& rng, PointStore& store,
+                                                          int range, bool share, unsigned changes) {
+  std::uniform_int_distribution<int> coordinate(-range, range);
+  const std::array<std::array<std::int32_t, 3>, 8> octahedron = {
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+  std::vector<std::int32_t> point;
+  for (int i = 0; i < 12; ++i) {
+    point.push_back(
+        store.add(Vec3{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
+                       static_cast<double>(coordinate(rng))}));
+  }
+  const int shells = 1 + static_cast<int>(rng() % 2);
+  if (share && shells == 2) {
+    switch (rng() % 3) {
+      case 0:  // sharing a point
+        point[6] = point[0];
+        break;
+      case 1:  // sharing an edge
+        point[6] = point[0];
+        point[8] = point[2];
+        break;
+      default:  // apart (or meeting where the lattice repeats a position)
+        break;
+    }
+  }
+  std::vector<std::array<std::int32_t, 3>> faces;
+  for (int shell = 0; shell < shells; ++shell) {
+    for (const auto& t : octahedron) {
+      faces.push_back({point[static_cast<std::size_t>(t[0] + 6 * shell)],
+                       point[static_cast<std::size_t>(t[1] + 6 * shell)],
+                       point[static_cast<std::size_t>(t[2] + 6 * shell)]});
+    }
+  }
+  const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
+  switch (rng() % changes) {
+    case 0:
+      for (auto& f : faces) {
+        for (auto& v : f)
+          v = v == point[pick(12)] ? point[pick(12)] : v;
+      }
+      break;
+    case 1:
+      std::swap(faces[pick(faces.size())][0], faces[pick(faces.size())][1]);
+      break;
+    case 2:
+      faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick(faces.size())));
+      break;
+    case 3:
+      std::shuffle(faces.begin(), faces.end(), rng);
+      break;
+    default:
+      break;
+  }
+  return faces;
+}
+
 // Octahedra on random lattice points, some of their vertices identified (pinches, fans of
 // four faces on an edge, faces losing area or a corner), a face flipped or dropped, a second
 // octahedron sharing points: whenever the sheets report every edge paired (the check of the
@@ -78,44 +139,11 @@ TEST(SolidSheets, AFanOutOfAlternatingOrderIsPairedWithEveryDirectedEdgeOnce) {
 // once and its reverse once, as the edge test would find.
 TEST(SolidSheets, EdgesReportedPairedAreEachMatchedOnceByTheirReverse) {
   std::mt19937 rng(2025);
-  std::uniform_int_distribution<int> coordinate(-2, 2);
-  const std::array<std::array<std::int32_t, 3>, 8> octahedron = {
-      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
   int paired = 0, unpaired = 0;
   for (int c = 0; c < case_budget(3000, 10); ++c) {
     PointStore store;
-    std::vector<std::int32_t> point;
-    for (int i = 0; i < 12; ++i) {
-      point.push_back(
-          store.add(Vec3{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
-                         static_cast<double>(coordinate(rng))}));
-    }
-    std::vector<std::array<std::int32_t, 3>> faces;
-    const int shells = 1 + static_cast<int>(rng() % 2);
-    for (int shell = 0; shell < shells; ++shell) {
-      for (const auto& t : octahedron) {
-        faces.push_back({point[static_cast<std::size_t>(t[0] + 6 * shell)],
-                         point[static_cast<std::size_t>(t[1] + 6 * shell)],
-                         point[static_cast<std::size_t>(t[2] + 6 * shell)]});
-      }
-    }
-    const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
-    switch (rng() % 4) {
-      case 0:  // corners moved at random onto other points (fans, pinches, repeated corners)
-        for (auto& f : faces) {
-          for (auto& v : f)
-            v = v == point[pick(12)] ? point[pick(12)] : v;
-        }
-        break;
-      case 1:
-        std::swap(faces[pick(faces.size())][0], faces[pick(faces.size())][1]);
-        break;
-      case 2:
-        faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick(faces.size())));
-        break;
-      default:
-        break;
-    }
+    const std::vector<std::array<std::int32_t, 3>> faces =
+        random_octahedra(rng, store, 2, false, 4);
     const Sheets sheets = clip::solid::separate_sheets(faces, store);
     (sheets.paired ? paired : unpaired) += 1;
     if (!sheets.paired) continue;
@@ -157,9 +185,6 @@ std::vector<std::array<std::int32_t, 3>> bipyramid(PointStore& store, int sides)
 // than 64 corners at the apexes: the general way).
 TEST(SolidSheets, SingleUmbrellasAreTheGeneralSheetsWheneverEveryPointHasOne) {
   std::mt19937 rng(77);
-  std::uniform_int_distribution<int> coordinate(-3, 3);
-  const std::array<std::array<std::int32_t, 3>, 8> octahedron = {
-      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
   int answered = 0, general = 0;
   const auto compare = [&](const std::vector<std::array<std::int32_t, 3>>& faces,
                            const PointStore& store, const std::string& what) {
@@ -187,54 +212,7 @@ TEST(SolidSheets, SingleUmbrellasAreTheGeneralSheetsWheneverEveryPointHasOne) {
   };
   for (int c = 0; c < case_budget(3000, 10); ++c) {
     PointStore store;
-    std::vector<std::int32_t> point;
-    for (int i = 0; i < 12; ++i) {
-      point.push_back(
-          store.add(Vec3{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
-                         static_cast<double>(coordinate(rng))}));
-    }
-    const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
-    const int shells = 1 + static_cast<int>(rng() % 2);
-    if (shells == 2) {
-      switch (rng() % 3) {
-        case 0:  // sharing a point
-          point[6] = point[0];
-          break;
-        case 1:  // sharing an edge
-          point[6] = point[0];
-          point[8] = point[2];
-          break;
-        default:  // apart (or meeting where the lattice repeats a position)
-          break;
-      }
-    }
-    std::vector<std::array<std::int32_t, 3>> faces;
-    for (int shell = 0; shell < shells; ++shell) {
-      for (const auto& t : octahedron) {
-        faces.push_back({point[static_cast<std::size_t>(t[0] + 6 * shell)],
-                         point[static_cast<std::size_t>(t[1] + 6 * shell)],
-                         point[static_cast<std::size_t>(t[2] + 6 * shell)]});
-      }
-    }
-    switch (rng() % 5) {
-      case 0:  // corners moved at random onto other points
-        for (auto& f : faces) {
-          for (auto& v : f)
-            v = v == point[pick(12)] ? point[pick(12)] : v;
-        }
-        break;
-      case 1:
-        std::swap(faces[pick(faces.size())][0], faces[pick(faces.size())][1]);
-        break;
-      case 2:
-        faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick(faces.size())));
-        break;
-      case 3:
-        std::shuffle(faces.begin(), faces.end(), rng);
-        break;
-      default:
-        break;
-    }
+    const std::vector<std::array<std::int32_t, 3>> faces = random_octahedra(rng, store, 3, true, 5);
     compare(faces, store, "case " + std::to_string(c));
   }
   for (const int sides : {40, 70}) {
