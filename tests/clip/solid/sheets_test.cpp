@@ -72,10 +72,10 @@ TEST(SolidSheets, AFanOutOfAlternatingOrderIsPairedWithEveryDirectedEdgeOnce) {
 }
 
 // One or two octahedra on 12 random lattice points of [-range, range]^3 (with `share`, the
-// second drawn to share a point or an edge with the first, or neither), then one change drawn
-// from the first `changes` of: corners moved at random onto other points (fans, pinches,
-// repeated corners), two faces' corners swapped, a face dropped, the faces shuffled; none for
-// the other draws.
+// second drawn to share a point or an edge with the first, or neither), then a draw of
+// rng() % `changes` picks: 0 corners moved at random onto other points (fans, pinches, repeated
+// corners), 1 two faces' corners swapped, 2 a face dropped, 3 the faces shuffled (only when
+// `changes` > 4), none otherwise.
 std::vector<std::array<std::int32_t, 3>> random_octahedra(std::mt19937& rng, PointStore& store,
                                                           int range, bool share, unsigned changes) {
   std::uniform_int_distribution<int> coordinate(-range, range);
@@ -124,7 +124,7 @@ std::vector<std::array<std::int32_t, 3>> random_octahedra(std::mt19937& rng, Poi
       faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(pick(faces.size())));
       break;
     case 3:
-      std::shuffle(faces.begin(), faces.end(), rng);
+      if (changes > 4) std::shuffle(faces.begin(), faces.end(), rng);
       break;
     default:
       break;
