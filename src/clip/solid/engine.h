@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -28,6 +29,7 @@
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
+#include "contain/core/union_find.h"
 #include "contain/shapes/mesh.h"
 #include "contain/values/box.h"
 
@@ -307,6 +309,11 @@ struct FaceLabels {
 /// work in a triangle's plane.
 [[nodiscard]] int dropped_axis(const BigVec3& n);
 
+/// The refined faces' patches (label_faces): two faces are joined across an edge held by exactly
+/// these two, one each way, of triangles of the same input, that is not a curve edge; the set
+/// of each face is its smallest face (UnionFind::find).
+[[nodiscard]] UnionFind<std::uint32_t> face_patches(const Soup& soup, const Refinement& r);
+
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
 /// Whether the pair stage first proves the soup's vertices (star_proof.h) and skips the pairs
 /// that share a proven vertex, or tests every pair (the check of a written mesh; the tests that
@@ -341,6 +348,21 @@ struct Sheets {
   bool paired = false;
 };
 [[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                                     const PointStore& store);
+
+/// The sheets when every point's faces form one umbrella: its corners' faces joined across
+/// their edges at the point, each edge there held by one face each way, in one cycle (a
+/// closed 2-manifold's vertices). Then each point is one written vertex (numbered by first use)
+/// and every edge is paired: what separate_sheets' grouping of edge uses gives, found from each
+/// point's few corners without grouping the edges nor a union-find of every corner. nullopt when
+/// some point is not such (an edge held once or by more than two faces, the same way twice, a
+/// repeated corner, a point pinched between umbrellas, more than 64 corners at a point).
+[[nodiscard]] std::optional<Sheets> single_umbrellas(
+    const std::vector<std::array<std::int32_t, 3>>& faces);
+
+/// separate_sheets by the faces' edge uses, every edge's faces paired around it, whatever the
+/// faces: the general way.
+[[nodiscard]] Sheets sheets_by_edges(const std::vector<std::array<std::int32_t, 3>>& faces,
                                      const PointStore& store);
 
 }  // namespace contain::clip::solid

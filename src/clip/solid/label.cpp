@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,9 +25,9 @@
 #include <utility>
 #include <vector>
 
-#include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
+#include "contain/core/sort_few.h"
 #include "contain/core/union_find.h"
 #include "contain/predicates/orient3d.h"
 #include "contain/values/box.h"
@@ -116,38 +117,82 @@ SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const LabelPoint& p
   return side;
 }
 
-// The faces' patches: the set of each face's smallest face (UnionFind::find).
-UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
-  const EdgeUses uses =
-      edge_uses(r.faces.size(),
-                [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
-  // Faces are numbered in 32 bits (EdgeUses): sets of half the size of std::size_t ones.
+}  // namespace
+
+// The uses of each edge are found at its lower point from that point's corners (a counting
+// sort of the 3 F corners by point, 4 bytes each): a corner at p whose next point q > p is a use
+// p -> q of edge p q, one whose previous point q > p a use q -> p. The faces joined are those of
+// the edges with exactly one use each way, as a grouping of every edge use would find them
+// (8 bytes a use, sorted per lower point): the sets depend only on which faces are joined.
+UnionFind<std::uint32_t> face_patches(const Soup& soup, const Refinement& r) {
+  std::size_t points = 0;
+  for (const RefinedFace& face : r.faces) {
+    for (const std::int32_t p : face.v)
+      points = std::max(points, static_cast<std::size_t>(p) + 1);
+  }
+  // After the scatter end[p] is the end of p's corners and end[p - 1] their start.
+  std::vector<std::uint32_t> end(points + 1, 0);
+  for (const RefinedFace& face : r.faces) {
+    for (const std::int32_t p : face.v)
+      ++end[static_cast<std::size_t>(p) + 1];
+  }
+  for (std::size_t p = 0; p < points; ++p)
+    end[p + 1] += end[p];
+  std::vector<std::uint32_t> corner(end[points]);
+  for (std::size_t f = 0; f < r.faces.size(); ++f) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      corner[end[static_cast<std::size_t>(r.faces[f].v[k])]++] =
+          static_cast<std::uint32_t>(3 * f + k);
+    }
+  }
+  // Faces are numbered in 31 bits (a use keeps a direction bit beside its face): sets of half
+  // the size of std::size_t ones.
+  assert(r.faces.size() < (std::size_t{1} << 31U));
   UnionFind<std::uint32_t> sets(r.faces.size());
   // The lower points of the curve edges: most edges have none there and skip the search.
-  std::vector<char> starts_curve(uses.start.size(), 0);
+  std::vector<char> starts_curve(points + 1, 0);
   for (const std::uint64_t e : r.curve_edges) {
     const std::size_t lo = e >> 32U;
     if (lo < starts_curve.size()) starts_curve[lo] = 1;
   }
-  for_each_edge(uses, [&](std::int32_t a, std::int32_t b, std::span<const std::uint64_t> group) {
-    if (group.size() != 2) return;
-    const std::uint32_t x = EdgeUses::face(group[0]), y = EdgeUses::face(group[1]);
-    const auto& vx = r.faces[x].v;
-    const auto& vy = r.faces[y].v;
-    // Whether each runs a -> b (a < b); a face holding the edge twice is x and y both.
-    const bool forward_x = vx[static_cast<std::size_t>(corner_of_edge(vx, a, b, 0))] == a;
-    const bool forward_y =
-        vy[static_cast<std::size_t>(corner_of_edge(vy, a, b, x == y ? 1 : 0))] == a;
-    if (forward_x != forward_y &&
-        soup.input[static_cast<std::size_t>(r.faces[x].triangle)] ==
-            soup.input[static_cast<std::size_t>(r.faces[y].triangle)] &&
-        (starts_curve[static_cast<std::size_t>(a)] == 0 ||
-         !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), edge_key(a, b)))) {
-      sets.unite(x, y);
+  // The uses at one point: (higher point << 32) | (face << 1) | (1 for q -> p), ascending.
+  std::vector<std::uint64_t> uses;
+  const auto use = [](std::int32_t q, std::uint32_t face, std::uint64_t back) {
+    return (std::uint64_t{static_cast<std::uint32_t>(q)} << 32U) | (std::uint64_t{face} << 1U) |
+           back;
+  };
+  for (std::size_t p = 0; p < points; ++p) {
+    uses.clear();
+    const auto a = static_cast<std::int32_t>(p);
+    for (std::size_t i = p == 0 ? 0 : end[p - 1]; i < end[p]; ++i) {
+      const std::uint32_t face = corner[i] / 3, k = corner[i] % 3;
+      const auto& v = r.faces[face].v;
+      if (v[(k + 1) % 3] > a) uses.push_back(use(v[(k + 1) % 3], face, 0));
+      if (v[(k + 2) % 3] > a) uses.push_back(use(v[(k + 2) % 3], face, 1));
     }
-  });
+    sort_few(uses.begin(), uses.end(), 16);
+    for (std::size_t i = 0; i < uses.size();) {
+      const auto b = static_cast<std::int32_t>(uses[i] >> 32U);
+      std::size_t j = i + 1;
+      while (j < uses.size() && static_cast<std::int32_t>(uses[j] >> 32U) == b)
+        ++j;
+      if (j - i == 2 && (uses[i] & 1U) != (uses[i + 1] & 1U)) {
+        const auto x = static_cast<std::uint32_t>((uses[i] & 0xffffffffU) >> 1U);
+        const auto y = static_cast<std::uint32_t>((uses[i + 1] & 0xffffffffU) >> 1U);
+        if (soup.input[static_cast<std::size_t>(r.faces[x].triangle)] ==
+                soup.input[static_cast<std::size_t>(r.faces[y].triangle)] &&
+            (starts_curve[p] == 0 ||
+             !std::binary_search(r.curve_edges.begin(), r.curve_edges.end(), edge_key(a, b)))) {
+          sets.unite(x, y);
+        }
+      }
+      i = j;
+    }
+  }
   return sets;
 }
+
+namespace {
 
 // A point of doubles strictly inside the face, where the mean of its corners' nearest doubles
 // (a coordinate they share taken as it is) is one, proven: on the plane of its input triangle
@@ -183,7 +228,7 @@ std::optional<Vec3> inner_double(const Soup& soup, const RefinedFace& face, cons
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
   // Each face's root looked up as the faces are labelled (no array of roots first).
-  UnionFind<std::uint32_t> patch = patches(soup, refinement);
+  UnionFind<std::uint32_t> patch = face_patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   std::vector<std::pair<std::int32_t, int>> crossings;
@@ -199,12 +244,26 @@ FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const Poi
     const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
     return n.x * n.x + n.y * n.y + n.z * n.z;
   };
+  // The largest area so far of the last root met: faces of a patch mostly follow each other
+  // (the pieces of one input triangle, then its neighbours), so the leader's area is not made
+  // again for every face, nor its corners read again from far away. Any face chosen gives the
+  // same labels; this is the same choice.
+  std::size_t cached_root = labels.patch.size();
+  double cached_area = 0.0;
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {
     const std::size_t root = patch.find(static_cast<std::uint32_t>(f));
     if (root == f) {
       labels.patch[f] = static_cast<std::uint32_t>(f);
-    } else if (area(f) > area(labels.patch[root])) {
+      continue;
+    }
+    if (root != cached_root) {
+      cached_root = root;
+      cached_area = area(labels.patch[root]);
+    }
+    const double own = area(f);
+    if (own > cached_area) {
       labels.patch[root] = static_cast<std::uint32_t>(f);
+      cached_area = own;
     }
   }
   for (std::size_t f = 0; f < labels.patch.size(); ++f) {

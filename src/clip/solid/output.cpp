@@ -139,11 +139,13 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const BoundaryFaces& bo
   scale = std::max(scale, std::numeric_limits<double>::min());
   const Faces faces = merge_coplanar(soup, boundary, store);
   std::size_t rounds = 0;
-  Result<Mesh> mesh = snap_round(faces, store, scale, &rounds);
+  bool one_shell = false;  // as the check of the written mesh found it
+  Result<Mesh> mesh = snap_round(faces, store, scale, &rounds, &one_shell);
   bool inputs_snapped = false;
   if (!mesh && mesh.error().kind == ErrorKind::degenerate) {
     mesh = snap_inputs(soup, op, scale, faces, store, mesh.error());
     inputs_snapped = true;
+    one_shell = false;
   }
   if (!mesh) return mesh.error();
   // Written positions that are not the nearest doubles of an exact point of the result. When the
@@ -153,7 +155,8 @@ Result<MeshBooleanResult> write_result(const Soup& soup, const BoundaryFaces& bo
   MeshBooleanResult result;
   result.moved = rounds == 0 && !inputs_snapped ? 0 : moved_count(faces, store, mesh->vertices);
   result.mesh = std::move(*mesh);
-  result.shells = count_shells(result.mesh);
+  // The check's union-find of the same vertex numbers found one shell: count_shells would too.
+  result.shells = one_shell ? 1 : count_shells(result.mesh);
   result.volume = predicates::rounded_signed_volume(result.mesh.vertices, result.mesh.triangles);
   return result;
 }

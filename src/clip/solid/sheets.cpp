@@ -213,6 +213,85 @@ struct Grouping {
 
 }  // namespace
 
+std::optional<Sheets> single_umbrellas(const std::vector<std::array<std::int32_t, 3>>& faces) {
+  std::size_t points = 0;
+  for (const auto& f : faces) {
+    for (const std::int32_t p : f)
+      points = std::max(points, static_cast<std::size_t>(p) + 1);
+  }
+  // The corners (3 face + k) of each point, by a counting sort: after the scatter end[p] is the
+  // end of p's corners and end[p - 1] their start (32-bit: faces are numbered in 32 bits).
+  std::vector<std::uint32_t> end(points + 1, 0);
+  for (const auto& f : faces) {
+    for (const std::int32_t p : f)
+      ++end[static_cast<std::size_t>(p) + 1];
+  }
+  for (std::size_t p = 0; p < points; ++p)
+    end[p + 1] += end[p];
+  std::vector<std::uint32_t> corner(end[points]);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (std::size_t k = 0; k < 3; ++k)
+      corner[end[static_cast<std::size_t>(faces[f][k])]++] = corner_number(f, static_cast<int>(k));
+  }
+  // Around each point: the corners' next and previous points, each corner's successor across
+  // the edge to its next point (the one corner whose previous point that is), and one walk.
+  constexpr std::size_t most = 64;  // a point with more corners takes the general way
+  std::array<std::int32_t, most> next{}, previous{};
+  std::array<std::uint8_t, most> successor{}, hit{};
+  for (std::size_t p = 0; p < points; ++p) {
+    const std::size_t first = p == 0 ? 0 : end[p - 1];
+    const std::size_t count = end[p] - first;
+    if (count == 0) continue;
+    if (count > most) return std::nullopt;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t c = corner[first + i];
+      const auto& v = faces[c / 3];
+      const std::uint32_t k = c % 3;
+      next[i] = v[(k + 1) % 3];
+      previous[i] = v[(k + 2) % 3];
+      hit[i] = 0;
+      if (next[i] == static_cast<std::int32_t>(p) || previous[i] == static_cast<std::int32_t>(p)) {
+        return std::nullopt;  // a repeated corner
+      }
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      std::size_t found = count;
+      for (std::size_t j = 0; j < count; ++j) {
+        if (previous[j] != next[i]) continue;
+        if (found != count) return std::nullopt;  // the edge held twice the other way
+        found = j;
+      }
+      if (found == count || hit[found] != 0) return std::nullopt;  // open, or held twice
+      hit[found] = 1;
+      successor[i] = static_cast<std::uint8_t>(found);
+    }
+    // A permutation (each corner hit once): the walk returns to corner 0 within count steps.
+    std::size_t at = successor[0], steps = 1;
+    for (; at != 0 && steps <= count; ++steps)
+      at = successor[at];
+    if (steps != count) return std::nullopt;  // several umbrellas: a pinched point
+  }
+  // One set per point: written vertices numbered by first use, as the general way numbers the
+  // corner sets.
+  Sheets out;
+  out.paired = true;
+  std::vector<std::int32_t> vertex(points, -1);
+  out.faces.reserve(faces.size());
+  for (const auto& f : faces) {
+    std::array<std::int32_t, 3> t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::int32_t& w = vertex[static_cast<std::size_t>(f[k])];
+      if (w < 0) {
+        w = static_cast<std::int32_t>(out.points.size());
+        out.points.push_back(f[k]);
+      }
+      t[k] = w;
+    }
+    out.faces.push_back(t);
+  }
+  return out;
+}
+
 // A pairing of the faces by angle joins the sheets that bound one wedge of the result; where a
 // sheet touches itself along an edge and is connected around both its ends (a vertex pinched
 // by the edge: boxes stacked in a staircase around a corner), that pairing leaves the two
@@ -220,6 +299,12 @@ struct Grouping {
 // face with a later face running p -> q). Both pairings hold the same triangles: the check of
 // the written mesh judges the result.
 Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+                       const PointStore& store) {
+  if (std::optional<Sheets> simple = single_umbrellas(faces)) return std::move(*simple);
+  return sheets_by_edges(faces, store);
+}
+
+Sheets sheets_by_edges(const std::vector<std::array<std::int32_t, 3>>& faces,
                        const PointStore& store) {
   // Every use grouped by its edge, in face order within an edge (the order the fans start
   // from): EdgeUses, a counting sort of the edges' lower points.

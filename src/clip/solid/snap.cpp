@@ -340,10 +340,10 @@ Result<Written> resolved(const Mesh& mesh, const std::vector<std::int32_t>& cros
 }  // namespace
 
 Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale,
-                        std::size_t* rounds) {
+                        std::size_t* rounds, bool* one_shell) {
   Written written = written_mesh(faces, representatives(faces, store, -1, scale), store);
   std::vector<std::int32_t> crossing;
-  Status valid = check_written(written.mesh, written.kept, &crossing, written.edges);
+  Status valid = check_written(written.mesh, written.kept, &crossing, written.edges, one_shell);
   const std::size_t limit = 2 * written.mesh.triangles.size() + 64;
   for (std::size_t round = 0; !valid && round < round_levels.size(); ++round) {
     if (rounds != nullptr) *rounds = round + 1;
@@ -354,7 +354,7 @@ Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scal
       return not_converging(written.mesh.triangles.size(), "wrote triangles:", limit);
     }
     crossing.clear();
-    valid = check_written(written.mesh, written.kept, &crossing, written.edges);
+    valid = check_written(written.mesh, written.kept, &crossing, written.edges, one_shell);
   }
   if (!valid) {
     return Error{.kind = ErrorKind::degenerate,

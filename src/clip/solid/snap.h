@@ -49,10 +49,11 @@ struct BoundaryFaces {
 /// pairs of the triangles the check named intersected) and rounded, then with points merged on
 /// coarser grids, for a bounded number of rounds. `scale` is the largest input coordinate's
 /// magnitude; `rounds`, when given, receives the number of repair rounds run (0: the faces
-/// written at their nearest doubles passed). Errors: `ErrorKind::degenerate` when no round
-/// passes.
+/// written at their nearest doubles passed); `one_shell`, when given, whether the check that
+/// passed found the mesh one shell (false: several, or not known). Errors:
+/// `ErrorKind::degenerate` when no round passes.
 [[nodiscard]] Result<Mesh> snap_round(const Faces& faces, const PointStore& store, double scale,
-                                      std::size_t* rounds = nullptr);
+                                      std::size_t* rounds = nullptr, bool* one_shell = nullptr);
 
 /// The leader (smallest index) of each point's cluster: points within `h` of each other in every
 /// coordinate joined transitively (the hot cells of a snap round). nullopt when a cluster would

@@ -282,17 +282,15 @@ Soup local_soup(const Mesh& mesh, const std::vector<std::int32_t>& chosen,
   return soup;
 }
 
-// The sign of a shell's volume, exactly: 6 V = sum of a . (b - a) x (c - a) over its triangles,
-// first in doubles with a bound on their error (each term within 8 ulps of the sum of the
-// magnitudes of its products, the sum within F ulps more), then as exact numbers.
-// The triangles are `triangle(0) ... triangle(count - 1)`.
-template <class Triangle>
-Sign volume_sign(const Mesh& mesh, std::size_t count, Triangle&& triangle) {
-  double sum = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t t = triangle(i);
-    const TriangleIndices& v = mesh.triangles[t];
-    const Vec3 a = mesh.vertex(v[0]), u = mesh.vertex(v[1]) - a, w = mesh.vertex(v[2]) - a;
+// The double sum of 6 V = a . (b - a) x (c - a) over some triangles, and the sum of the
+// magnitudes of its products: the filter of volume_sign. Each term within 8 ulps of its
+// magnitude, the sum within F ulps more.
+struct VolumeSum {
+  double sum = 0.0;
+  double magnitude = 0.0;
+
+  void add(Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 u = b - a, w = c - a;
     const Vec3 n{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
     const Vec3 m{std::fabs(u.y * w.z) + std::fabs(u.z * w.y),
                  std::fabs(u.z * w.x) + std::fabs(u.x * w.z),
@@ -300,7 +298,24 @@ Sign volume_sign(const Mesh& mesh, std::size_t count, Triangle&& triangle) {
     sum += a.x * n.x + a.y * n.y + a.z * n.z;
     magnitude += std::fabs(a.x) * m.x + std::fabs(a.y) * m.y + std::fabs(a.z) * m.z;
   }
-  const double bound = static_cast<double>(count + 16) * 0x1p-50 * magnitude;
+};
+
+// The sign of a shell's volume, exactly: 6 V = sum of a . (b - a) x (c - a) over its triangles,
+// first in doubles with a bound on their error (`doubles`: that sum over the same triangles,
+// made here or by the caller's own pass over them), then as exact numbers.
+// The triangles are `triangle(0) ... triangle(count - 1)`.
+template <class Triangle>
+Sign volume_sign(const Mesh& mesh, std::size_t count, Triangle&& triangle,
+                 std::optional<VolumeSum> doubles = std::nullopt) {
+  if (!doubles) {
+    doubles.emplace();
+    for (std::size_t i = 0; i < count; ++i) {
+      const TriangleIndices& v = mesh.triangles[triangle(i)];
+      doubles->add(mesh.vertex(v[0]), mesh.vertex(v[1]), mesh.vertex(v[2]));
+    }
+  }
+  const double sum = doubles->sum;
+  const double bound = static_cast<double>(count + 16) * 0x1p-50 * doubles->magnitude;
   if (std::isfinite(bound) && bound >= std::numeric_limits<double>::min() &&
       std::fabs(sum) > bound) {
     return sum > 0 ? Sign::positive : Sign::negative;
@@ -372,13 +387,15 @@ bool one_shell(const Mesh& mesh) {
 // sum to 0, at odd depth to 1). The other shells' side is asked at a vertex of s whose position
 // no other shell uses: such a vertex is on no other shell (its triangles would meet that shell
 // beyond shared corners), and only shells whose boxes hold it can hold it.
-bool oriented(const Mesh& mesh) {
+bool oriented(const Mesh& mesh, const std::optional<VolumeSum>& whole, bool* one) {
   // One shell (most results): no other shell to ask about (every position is its own, so the
   // loop below would ask no shell at its free vertex and find it outside), so it is oriented
   // exactly when its volume is positive; the shells' lists and the table of positions are built
   // only for several.
   if (one_shell(mesh)) {
-    return volume_sign(mesh, mesh.triangles.size(), [](std::size_t i) { return i; }) ==
+    if (one != nullptr) *one = true;
+    return volume_sign(
+               mesh, mesh.triangles.size(), [](std::size_t i) { return i; }, whole) ==
            Sign::positive;
   }
   const Shells shells = shells_of(mesh);
@@ -456,8 +473,9 @@ namespace {
 
 // The failure of a mesh whose shells do not bound a solid of winding numbers 0 and 1 (a shell
 // turned inside out, shells nested in the same direction); every triangle is the region.
-Status orientation(const Mesh& mesh, std::vector<std::int32_t>* crossing) {
-  if (oriented(mesh)) return Ok{};
+Status orientation(const Mesh& mesh, std::vector<std::int32_t>* crossing,
+                   const std::optional<VolumeSum>& whole, bool* one_shell) {
+  if (oriented(mesh, whole, one_shell)) return Ok{};
   for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
     crossing->push_back(static_cast<std::int32_t>(t));
   return failure("a shell is inside out, or nested in a shell of its own direction");
@@ -470,7 +488,8 @@ Status check_written(const Mesh& mesh) {
 }
 
 Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
-                     std::vector<std::int32_t>* crossing, Edges edges) {
+                     std::vector<std::int32_t>* crossing, Edges edges, bool* one_shell) {
+  if (one_shell != nullptr) *one_shell = false;
   if (edges == Edges::checked && !edges_matched(mesh)) {
     // No pair is known to be the cause: every triangle is the region to repair.
     for (std::size_t t = 0; crossing != nullptr && t < mesh.triangles.size(); ++t)
@@ -480,9 +499,13 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
   Status status = Ok{};
   std::vector<char> flat(mesh.triangles.size(), 0);  // zero area
   std::vector<std::int32_t> rounded;                 // triangles with a corner that is not kept
+  // The orientation's volume filter summed in this pass over every triangle, in order (the
+  // same sum as its own pass: the corners are read once, not twice).
+  std::optional<VolumeSum> whole(std::in_place);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const TriangleIndices& v = mesh.triangles[t];
     const Vec3 a = mesh.vertex(v[0]), b = mesh.vertex(v[1]), c = mesh.vertex(v[2]);
+    whole->add(a, b, c);
     if (zero_area(a, b, c)) {
       if (crossing == nullptr) return failure("a triangle has zero area");
       status = failure("a triangle has zero area");
@@ -494,7 +517,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
       rounded.push_back(static_cast<std::int32_t>(t));
     }
   }
-  if (rounded.empty()) return status ? orientation(mesh, crossing) : status;
+  if (rounded.empty()) return status ? orientation(mesh, crossing, whole, one_shell) : status;
   const TriangleBoxes boxes{mesh, flat};
   const std::vector<std::int32_t> chosen = neighbourhood(boxes, rounded);
   const Soup soup = local_soup(mesh, chosen, boxes);
@@ -537,7 +560,7 @@ Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
   for (std::size_t t = 0; t < bad.size(); ++t) {
     if (bad[t]) crossing->push_back(chosen[t]);
   }
-  return status ? orientation(mesh, crossing) : status;
+  return status ? orientation(mesh, crossing, whole, one_shell) : status;
 }
 
 }  // namespace contain::clip::solid

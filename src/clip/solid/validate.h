@@ -29,10 +29,12 @@ namespace contain::clip::solid {
 /// appended.
 /// `edges`: `known_matched` skips the edge test for a mesh whose directed edges are known to
 /// occur once each with their reverse (Sheets::paired).
+/// With `one_shell`: set to whether the check found the mesh's triangles connected through
+/// shared vertex numbers (one shell); false when it did not get that far.
 enum class Edges : std::uint8_t { checked, known_matched };
 [[nodiscard]] Status check_written(const Mesh& mesh, const std::vector<bool>& kept,
                                    std::vector<std::int32_t>* crossing = nullptr,
-                                   Edges edges = Edges::checked);
+                                   Edges edges = Edges::checked, bool* one_shell = nullptr);
 
 /// Whether triangles a and b (neither of zero area) meet beyond the corners they share (corners
 /// at the same position) and the edge they share, exactly: the pair test of check_written. The

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +17,8 @@
 #include <vector>
 
 #include "clip/solid/edge_uses.h"
+#include "clip/solid/engine.h"
+#include "contain/core/union_find.h"
 #include "support/case_budget.h"
 
 namespace contain::test {
@@ -102,6 +105,73 @@ TEST(EdgeUses, ClosedMeshHasTwoOppositeUsesOfEveryEdge) {
         EXPECT_EQ(x[static_cast<std::size_t>(i)], y[static_cast<std::size_t>((j + 1) % 3)]);
       });
   EXPECT_EQ(edges, 12);
+}
+
+// The labels' patches found from each point's corners (face_patches) join the faces that a
+// plain map of every edge's uses joins by the rule: an edge with exactly two uses, one each
+// way, of faces whose triangles are of the same input, not a curve edge. Random faces over few
+// points (fans, both directions, faces using an edge twice, repeated corners, self-loops), with
+// random inputs per triangle and random curve edges; the sets compared by every face's
+// smallest face (both union-finds lead by the smallest).
+TEST(EdgeUses, PatchesFromCornersJoinWhatAMapOfEdgeUsesJoins) {
+  std::mt19937 rng(31);
+  int joined = 0, kept_apart = 0;
+  for (int c = 0; c < case_budget(400, 10); ++c) {
+    const int points = 2 + static_cast<int>(rng() % 12);
+    const int triangles = 1 + static_cast<int>(rng() % 6);
+    clip::solid::Soup soup;
+    for (int t = 0; t < triangles; ++t)
+      soup.input.push_back(static_cast<std::int32_t>(rng() % 2));
+    clip::solid::Refinement r;
+    const int faces = 1 + static_cast<int>(rng() % 40);
+    for (int f = 0; f < faces; ++f) {
+      Face v{};
+      for (auto& p : v)
+        p = static_cast<std::int32_t>(rng() % static_cast<unsigned>(points));
+      r.faces.push_back({v, static_cast<std::int32_t>(rng() % static_cast<unsigned>(triangles))});
+    }
+    // Some edges of the faces are curve edges.
+    for (const auto& face : r.faces) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::int32_t a = face.v[k], b = face.v[(k + 1) % 3];
+        if (a != b && rng() % 4 == 0) r.curve_edges.push_back(clip::solid::edge_key(a, b));
+      }
+    }
+    std::sort(r.curve_edges.begin(), r.curve_edges.end());
+    r.curve_edges.erase(std::unique(r.curve_edges.begin(), r.curve_edges.end()),
+                        r.curve_edges.end());
+    // The rule on a map of every use: (face, runs from the lower point).
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::pair<std::uint32_t, bool>>>
+        uses;
+    for (std::size_t f = 0; f < r.faces.size(); ++f) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::int32_t a = r.faces[f].v[k], b = r.faces[f].v[(k + 1) % 3];
+        if (a == b) continue;  // a self-loop joins nothing
+        uses[{std::min(a, b), std::max(a, b)}].emplace_back(static_cast<std::uint32_t>(f), a < b);
+      }
+    }
+    UnionFind<std::uint32_t> expected(r.faces.size());
+    for (const auto& [edge, list] : uses) {
+      if (list.size() != 2 || list[0].second == list[1].second) continue;
+      const std::uint32_t x = list[0].first, y = list[1].first;
+      const bool same_input = soup.input[static_cast<std::size_t>(r.faces[x].triangle)] ==
+                              soup.input[static_cast<std::size_t>(r.faces[y].triangle)];
+      const bool curve = std::binary_search(r.curve_edges.begin(), r.curve_edges.end(),
+                                            clip::solid::edge_key(edge.first, edge.second));
+      if (same_input && !curve && x != y) {
+        expected.unite(x, y);
+        ++joined;
+      } else {
+        ++kept_apart;
+      }
+    }
+    UnionFind<std::uint32_t> found = clip::solid::face_patches(soup, r);
+    for (std::uint32_t f = 0; f < r.faces.size(); ++f)
+      ASSERT_EQ(found.find(f), expected.find(f)) << "case " << c << " face " << f;
+  }
+  // Not vacuous: edges of both kinds, many times.
+  EXPECT_GE(joined, 200);
+  EXPECT_GE(kept_apart, 200);
 }
 
 }  // namespace

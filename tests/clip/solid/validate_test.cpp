@@ -296,5 +296,105 @@ TEST(CheckWritten, InsideOutShells) {
     EXPECT_TRUE(agree(mesh, std::vector<bool>(mesh.vertices.size(), true), what)) << what;
 }
 
+// Shells counted independently of the check: triangles joined through shared vertex numbers,
+// by a breadth-first walk over each vertex's triangles.
+std::size_t shells_by_walk(const Mesh& mesh) {
+  std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (const std::int32_t v : mesh.triangles[t])
+      around[static_cast<std::size_t>(v)].push_back(t);
+  }
+  std::vector<bool> seen(mesh.triangles.size(), false);
+  std::size_t shells = 0;
+  for (std::size_t first = 0; first < mesh.triangles.size(); ++first) {
+    if (seen[first]) continue;
+    ++shells;
+    std::vector<std::size_t> stack = {first};
+    seen[first] = true;
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      for (const std::int32_t v : mesh.triangles[t]) {
+        for (const std::size_t u : around[static_cast<std::size_t>(v)]) {
+          if (!seen[u]) {
+            seen[u] = true;
+            stack.push_back(u);
+          }
+        }
+      }
+    }
+  }
+  return shells;
+}
+
+// The check reports one shell exactly when the triangles are connected through shared vertex
+// numbers (the engine then writes 1 for the result's shells without counting them again), on
+// valid and inside-out meshes of one and several shells: boxes apart, touching at a corner by
+// position only (two shells) or sharing the corner's number (one), nested, a sheet's vertex
+// split; and the engine's own results of random boxes (one shell or several), whose shell
+// count must match the walk's (boxes touching along an edge or at a corner are written as
+// sheets apart: several shells). A check that stops before the orientation (here at an
+// unmatched edge) reports false.
+TEST(CheckWritten, ReportsOneShellExactlyWhenTrianglesAreConnected) {
+  const Mesh unit = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh corner = box_mesh({1, 1, 1}, {2, 2, 2});
+  Mesh shared_corner = joined(unit, corner);
+  // The second box's corner (1, 1, 1) given the first box's number for it: one shell.
+  const auto first_at = [&](Vec3 p) {
+    for (std::size_t v = 0; v < shared_corner.vertices.size(); ++v) {
+      if (shared_corner.vertices[v] == p) return static_cast<std::int32_t>(v);
+    }
+    return std::int32_t{-1};
+  };
+  const std::int32_t at_corner = first_at({1, 1, 1});
+  for (std::size_t t = unit.triangles.size(); t < shared_corner.triangles.size(); ++t) {
+    for (std::int32_t& v : shared_corner.triangles[t]) {
+      if (shared_corner.vertices[static_cast<std::size_t>(v)] == Vec3{1, 1, 1}) v = at_corner;
+    }
+  }
+  std::vector<std::pair<Mesh, std::string>> cases = {
+      {unit, "a box"},
+      {reversed(unit), "a reversed box"},
+      {joined(unit, box_mesh({5, 0, 0}, {6, 1, 1})), "two boxes apart"},
+      {joined(unit, corner), "touching at a corner, apart by number"},
+      {shared_corner, "touching at a corner, one number"},
+      {joined(box_mesh({-2, -2, -2}, {3, 3, 3}), reversed(unit)), "hollow"}};
+  std::mt19937_64 rng(25);
+  std::uniform_int_distribution<int> coordinate(0, 3);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Mesh> parts;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 lo{static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng)),
+                    static_cast<double>(coordinate(rng))};
+      parts.push_back(box_mesh(lo, lo + Vec3{1.0 + coordinate(rng) % 3, 1.0 + coordinate(rng) % 3,
+                                             1.0 + coordinate(rng) % 3}));
+    }
+    const Result<clip::MeshBooleanResult> r = clip::mesh_boolean(parts, {.op = Op::union_});
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->shells, shells_by_walk(r->mesh)) << "union " << trial;
+    cases.emplace_back(r->mesh, "union " + std::to_string(trial));
+  }
+  int one = 0, several = 0;
+  for (const auto& [mesh, what] : cases) {
+    bool one_shell = false;
+    const Status status = check_written(mesh, std::vector<bool>(mesh.vertices.size(), true),
+                                        nullptr, clip::solid::Edges::checked, &one_shell);
+    EXPECT_EQ(status.ok(), check_written(mesh).ok()) << what;
+    EXPECT_EQ(one_shell, shells_by_walk(mesh) == 1) << what;
+    ++(one_shell ? one : several);
+  }
+  EXPECT_GE(one, 10);  // both kinds met
+  EXPECT_GE(several, 4);
+  // Stopped before the orientation: not reported.
+  Mesh flat = unit;
+  flat.vertices.push_back({0.5, 0.5, 0.0});
+  flat.triangles.push_back({0, 1, static_cast<std::int32_t>(flat.vertices.size() - 1)});
+  bool one_shell = true;
+  EXPECT_FALSE(check_written(flat, std::vector<bool>(flat.vertices.size(), true), nullptr,
+                             clip::solid::Edges::checked, &one_shell)
+                   .ok());
+  EXPECT_FALSE(one_shell);
+}
+
 }  // namespace
 }  // namespace contain::test
