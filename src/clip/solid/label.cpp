@@ -116,15 +116,17 @@ SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const LabelPoint& p
   return side;
 }
 
+using PatchSets = UnionFind<std::uint32_t, ScratchAllocator<std::uint32_t>>;
+
 // The faces' patches: the set of each face's smallest face (UnionFind::find).
-UnionFind<std::uint32_t> patches(const Soup& soup, const Refinement& r) {
+PatchSets patches(const Soup& soup, const Refinement& r) {
   const EdgeUses uses =
       edge_uses(r.faces.size(),
                 [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
   // Faces are numbered in 32 bits (EdgeUses): sets of half the size of std::size_t ones.
-  UnionFind<std::uint32_t> sets(r.faces.size());
+  PatchSets sets(r.faces.size());
   // The lower points of the curve edges: most edges have none there and skip the search.
-  std::vector<char> starts_curve(uses.start.size(), 0);
+  ScratchVector<char> starts_curve(uses.start.size(), 0);
   for (const std::uint64_t e : r.curve_edges) {
     const std::size_t lo = e >> 32U;
     if (lo < starts_curve.size()) starts_curve[lo] = 1;
@@ -183,7 +185,7 @@ std::optional<Vec3> inner_double(const Soup& soup, const RefinedFace& face, cons
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
   // Each face's root looked up as the faces are labelled (no array of roots first).
-  UnionFind<std::uint32_t> patch = patches(soup, refinement);
+  PatchSets patch = patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   std::vector<std::pair<std::int32_t, int>> crossings;
