@@ -40,9 +40,12 @@ class ScratchPool {
   /// Blocks are whole pages (their header included): a freed block's pages are then all
   /// reusable, and no two blocks share a page.
   static constexpr std::size_t granule = std::size_t{1} << 12;
-  /// The least size of a chunk. Its pages are touched only where blocks are written (the rest
-  /// is address space, not memory), so a large first chunk costs nothing and spares later ones.
-  static constexpr std::size_t min_chunk = std::size_t{1} << 26;
+  /// The least size of a chunk (later ones are as large as all before). Its pages are touched
+  /// only where blocks are written; but where the process keeps freed memory (the CLI's malloc
+  /// settings) a chunk's untouched tail, given back with it, is where the next allocations go:
+  /// 16 MB chunks left 16,412 page faults in the CLI's union of two 131k-triangle spheres where
+  /// 64 MB chunks left 17,142 (the same 17,1xx inside the call).
+  static constexpr std::size_t min_chunk = std::size_t{1} << 24;
 
   ScratchPool() = default;
   ScratchPool(const ScratchPool&) = delete;
