@@ -41,11 +41,12 @@ class ScratchPool {
   /// reusable, and no two blocks share a page.
   static constexpr std::size_t granule = std::size_t{1} << 12;
   /// The least size of a chunk (later ones are as large as all before). Its pages are touched
-  /// only where blocks are written; but where the process keeps freed memory (the CLI's malloc
-  /// settings) a chunk's untouched tail, given back with it, is where the next allocations go:
-  /// 16 MB chunks left 16,412 page faults in the CLI's union of two 131k-triangle spheres where
-  /// 64 MB chunks left 17,142 (the same 17,1xx inside the call).
-  static constexpr std::size_t min_chunk = std::size_t{1} << 24;
+  /// only where blocks are written, but a chunk's end that no block fits is left unused, and
+  /// where the process keeps freed memory (the CLI's malloc settings) the allocations after the
+  /// call land in the chunks given back. Page faults of a union of two 131k-triangle spheres,
+  /// inside the call (kernel bench) and the CLI's whole process: 17,127 and 16,412 with 16 MB
+  /// chunks, 16,936 and 16,944 with 32 MB, 17,147 and 17,142 with 64 MB.
+  static constexpr std::size_t min_chunk = std::size_t{1} << 25;
 
   ScratchPool() = default;
   ScratchPool(const ScratchPool&) = delete;
