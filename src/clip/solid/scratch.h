@@ -20,9 +20,10 @@
 #include <cstdint>
 #include <memory>
 #include <new>
-#include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "contain/core/default_init.h"
 
 namespace contain::clip::solid {
 
@@ -107,12 +108,11 @@ void scratch_deallocate(void* block) noexcept;
 /// scratch_allocate, smaller ones from std::allocator. Stateless: all instances compare equal,
 /// so vectors move, swap and are moved into one another as with std::allocator.
 ///
-/// Elements made without arguments are default-initialized, not value-initialized (as
-/// HugePageAllocator): `resize(n)` of a vector of a trivial type leaves the new elements'
-/// values indeterminate, for a caller that writes each of them next (a reused block holds a
-/// former array's bytes). Where zeros (or any value) are wanted, say so: `assign(n, 0)`.
+/// Elements made without arguments are default-initialized (DefaultInitConstruct): `resize(n)`
+/// leaves new trivial elements indeterminate (a reused block holds a former array's bytes).
+/// Where zeros (or any value) are wanted, say so: `assign(n, 0)`.
 template <class T>
-struct ScratchAllocator {
+struct ScratchAllocator : DefaultInitConstruct {
   using value_type = T;
   static_assert(alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__,
                 "scratch blocks are aligned as operator new's");
@@ -133,14 +133,6 @@ struct ScratchAllocator {
       return;
     }
     scratch_deallocate(p);
-  }
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   [[nodiscard]] static constexpr std::size_t max_size() noexcept {
     return (std::size_t{0} - 2 * ScratchPool::granule) / sizeof(T);
