@@ -91,7 +91,9 @@ Result<Mesh> read_solid(const std::string& path) {
 // was 3% of a large boolean's process).
 Result<clip::MeshBooleanResult> solids_boolean(const std::vector<Mesh>& solids,
                                                const std::vector<std::string>& paths, clip::Op op) {
-  Result<clip::MeshBooleanResult> result = clip::mesh_boolean(solids, {.op = op});
+  // run_clip_solid keeps freed memory in the process's heap: the engine's arrays go there too.
+  Result<clip::MeshBooleanResult> result =
+      clip::mesh_boolean(solids, {.op = op, .scratch_pool = false});
   if (result || result.error().kind != ErrorKind::invalid_value) return result;
   for (std::size_t i = 0; i < solids.size(); ++i) {
     if (auto edge = unmatched_edge(solids[i])) {

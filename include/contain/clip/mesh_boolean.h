@@ -16,6 +16,13 @@ namespace contain::clip {
 /// What is computed.
 struct MeshBooleanOptions {
   Op op = Op::union_;
+  /// Where the engine's large arrays live: in the call's own pool (the default: the pages one
+  /// stage wrote and freed are the next stage's, whatever the process's malloc settings), or in
+  /// the process's heap, for a caller whose malloc already keeps freed memory for reuse (the
+  /// contain CLI's `mallopt`): there a pool only walls its pages off from the allocations
+  /// outside it (the CLI's union of two 131k-triangle spheres: 16,954 page faults with the
+  /// pool, 14,867 without). The result is the same either way.
+  bool scratch_pool = true;
 };
 
 /// The written result and what it took.

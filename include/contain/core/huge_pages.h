@@ -8,9 +8,9 @@
 #include <cstddef>
 #include <memory>
 #include <new>
-#include <type_traits>
-#include <utility>
 #include <vector>
+
+#include "contain/core/default_init.h"
 
 namespace contain {
 
@@ -32,11 +32,9 @@ void free_huge_page_block(void* block) noexcept;
 /// touched (a hint: where it is not granted the block is ordinary memory). Smaller blocks come
 /// from `std::allocator`. Stateless: all instances compare equal.
 ///
-/// Elements made without arguments are default-initialized, not value-initialized: `resize(n)`
-/// of a vector of a trivial type leaves the new elements' values indeterminate, for a caller
-/// that writes every one of them next (a large array is not zeroed only to be overwritten).
+/// Elements made without arguments are default-initialized (DefaultInitConstruct).
 template <class T>
-struct HugePageAllocator {
+struct HugePageAllocator : DefaultInitConstruct {
   using value_type = T;
   static constexpr std::size_t huge_page = detail::huge_page_bytes;
   /// Below this (128 kB), the slack of a 2 MB rounding is not worth it. Measured on the 2-core
@@ -64,14 +62,6 @@ struct HugePageAllocator {
       return;
     }
     detail::free_huge_page_block(p);
-  }
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   [[nodiscard]] static constexpr std::size_t max_size() noexcept {
     return (std::size_t{0} - huge_page) / sizeof(T);

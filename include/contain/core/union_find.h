@@ -5,16 +5,18 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <numeric>
 #include <vector>
 
 namespace contain {
 
-/// Disjoint sets over the indices 0..n-1 of type `Index` (std::uint32_t keeps large sets small).
+/// Disjoint sets over the indices 0..n-1 of type `Index` (std::uint32_t keeps large sets small),
+/// the parents in a vector of `Allocator` (a caller's scratch memory, say).
 /// The representative of a set is its smallest element, so answers do not depend on the order
 /// of joins. find() halves paths; without union by rank a find is O(log n) amortised, which is
 /// enough for the sets here (each join and find is near O(1) in practice).
-template <class Index>
+template <class Index, class Allocator = std::allocator<Index>>
 class UnionFind {
  public:
   /// n singletons.
@@ -46,7 +48,7 @@ class UnionFind {
   }
 
  private:
-  std::vector<Index> parent_;
+  std::vector<Index, Allocator> parent_;
 };
 
 }  // namespace contain

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "clip/solid/scratch.h"
 #include "contain/core/sort_few.h"
 
 namespace contain::clip::solid {
@@ -23,8 +24,8 @@ namespace contain::clip::solid {
 /// Every edge use of some faces: for point p, `entry[start[p] .. start[p + 1])` are the uses of
 /// the edges whose lower point is p, each (higher point << 32) | face, ascending.
 struct EdgeUses {
-  std::vector<std::size_t> start;
-  std::vector<std::uint64_t> entry;
+  ScratchVector<std::size_t> start;
+  ScratchVector<std::uint64_t> entry;
 
   [[nodiscard]] static std::int32_t higher(std::uint64_t e) {
     return static_cast<std::int32_t>(e >> 32U);
@@ -65,7 +66,7 @@ template <class Corners>
   for (std::size_t i = 1; i < out.start.size(); ++i)
     out.start[i] += out.start[i - 1];
   out.entry.resize(out.start.back());
-  std::vector<std::size_t> next(out.start.begin(), out.start.end() - 1);
+  ScratchVector<std::size_t> next(out.start.begin(), out.start.end() - 1);
   for (std::size_t f = 0; f < faces; ++f) {
     const auto& v = corners(f);
     for (std::size_t k = 0; k < 3; ++k) {

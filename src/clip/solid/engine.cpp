@@ -6,12 +6,18 @@
 #include <vector>
 
 #include "clip/solid/engine.h"
+#include "clip/solid/scratch.h"
 #include "clip/solid/snap.h"
 
 namespace contain::clip {
 
 Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
                                        const MeshBooleanOptions& options) {
+  // The call's scratch memory (scratch.h): declared first, so that every stage's arrays are
+  // given back to it before it frees what it holds, whatever the process's malloc settings;
+  // or none, the heap, where the caller asks for it (MeshBooleanOptions::scratch_pool).
+  solid::ScratchPool pool;
+  const solid::ScratchScope scope(options.scratch_pool ? &pool : nullptr);
   Result<solid::Soup> soup = solid::make_soup(inputs);
   if (!soup) return soup.error();
   solid::PointStore store;
@@ -23,7 +29,7 @@ Result<MeshBooleanResult> mesh_boolean(std::span<const Mesh> inputs,
   {
     // The pairs' work, the refinement and the labels are done with once the result's faces are
     // chosen: freed before the write phase, whose sheets and exact check then reuse their
-    // memory (the process keeps freed memory) instead of faulting in fresh pages.
+    // blocks (the call's pool) instead of faulting in fresh pages.
     const solid::PairWork work = solid::intersect_pairs(*soup, store);
     const solid::Refinement refinement = solid::refine(*soup, work, store);
     const solid::FaceLabels labels = solid::label_faces(*soup, refinement, store);

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "clip/solid/exact_point.h"
+#include "clip/solid/scratch.h"
 #include "contain/bvh/bvh.h"
 #include "contain/clip/mesh_boolean.h"
 #include "contain/core/result.h"
@@ -41,7 +42,8 @@ namespace contain::clip::solid {
 struct PointKeys {
   std::span<const Vec3> head, tail;
   explicit(false) PointKeys(std::span<const Vec3> all) : head(all) {}
-  explicit(false) PointKeys(const std::vector<Vec3>& all) : head(all) {}
+  template <class Allocator>
+  explicit(false) PointKeys(const std::vector<Vec3, Allocator>& all) : head(all) {}
   PointKeys(std::span<const Vec3> first, std::span<const Vec3> then) : head(first), tail(then) {}
   [[nodiscard]] Vec3 operator[](std::size_t i) const {
     return i < head.size() ? head[i] : tail[i - head.size()];
@@ -71,7 +73,7 @@ class PointTable {
   [[nodiscard]] static std::uint64_t hash(Vec3 v);
   // The slot holding v, or the empty slot where it goes.
   [[nodiscard]] std::size_t slot_of(Vec3 v, std::uint64_t h, PointKeys keys) const;
-  std::vector<Slot> slots_;
+  ScratchVector<Slot> slots_;
   std::size_t used_ = 0;
 };
 
@@ -86,6 +88,7 @@ class PointTable {
 /// Every input's triangles in one soup, vertices welded by exact position across inputs.
 class Soup {
  public:
+  // Live through the whole call (no stage after reuses their memory): on the heap, as made.
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
   std::vector<std::int32_t> input;  ///< the input of each triangle
@@ -109,7 +112,7 @@ class Soup {
 
  private:
   // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
-  mutable std::vector<std::unique_ptr<BigVec3>> normals_;
+  mutable ScratchVector<std::unique_ptr<BigVec3>> normals_;
 };
 
 /// The box of triangle t of a soup from its corners (empty for a degenerate one: it meets
@@ -184,15 +187,15 @@ class PointStore {
   // The nearest doubles of every point: the soup's vertices, then the points added after.
   [[nodiscard]] PointKeys keys() const { return {vertices_, rounded_}; }
 
-  std::vector<ExactPoint> points_;
-  std::span<const Vec3> vertices_;  // a soup's vertices (add_vertices), points 0 ... n - 1
-  std::vector<Vec3> rounded_;       // the nearest doubles of the points after them
-  PointTable first_;                // the first point of each nearest doubles
-  std::vector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
+  ScratchVector<ExactPoint> points_;
+  std::span<const Vec3> vertices_;    // a soup's vertices (add_vertices), points 0 ... n - 1
+  ScratchVector<Vec3> rounded_;       // the nearest doubles of the points after them
+  PointTable first_;                  // the first point of each nearest doubles
+  ScratchVector<std::int32_t> next_;  // the next point with the same nearest doubles, or -1
   // The first point with the same nearest doubles as each (itself for the first): known when
   // the point is added, where a lookup of its doubles was a probe of the table per point.
-  std::vector<std::int32_t> first_of_;
-  std::vector<std::uint8_t> exact_double_;  // written_exactly of each point
+  ScratchVector<std::int32_t> first_of_;
+  ScratchVector<std::uint8_t> exact_double_;  // written_exactly of each point
 };
 
 /// The key of the undirected input edge between welded vertices a and b.
@@ -265,11 +268,11 @@ class PairWork {
     std::int32_t t, u;
   };
   std::size_t triangles_ = 0;
-  std::vector<Found> found_;  // as added; emptied by finish
-  std::vector<Constraint> constraints_;
-  std::vector<std::uint32_t> first_;    // triangle t's constraints from first_[t] to first_[t + 1]
-  std::vector<Partner> partners_;       // by triangle after finish (stable)
-  std::vector<std::int32_t> coplanar_;  // partners_[i].u
+  ScratchVector<Found> found_;  // as added; emptied by finish
+  ScratchVector<Constraint> constraints_;
+  ScratchVector<std::uint32_t> first_;  // triangle t's constraints from first_[t] to first_[t + 1]
+  ScratchVector<Partner> partners_;     // by triangle after finish (stable)
+  ScratchVector<std::int32_t> coplanar_;  // partners_[i].u
 };
 
 /// One triangle of the refined surface, oriented as its input triangle.
@@ -280,8 +283,8 @@ struct RefinedFace {
 
 /// The refined surface: faces, and the edges that lie on intersection curves (sorted pairs).
 struct Refinement {
-  std::vector<RefinedFace> faces;
-  std::vector<std::uint64_t> curve_edges;  ///< edge_key of each piece of a constraint, sorted
+  ScratchVector<RefinedFace> faces;
+  ScratchVector<std::uint64_t> curve_edges;  ///< edge_key of each piece of a constraint, sorted
 };
 
 /// What the operations ask of the inputs' winding numbers on one side of a face: how many
@@ -301,8 +304,8 @@ struct FaceLabel {
 /// other surface share their labels), each face numbering its patch's (a copy per face was a
 /// tenth of the labels' time, two allocations each).
 struct FaceLabels {
-  std::vector<FaceLabel> of_patch;
-  std::vector<std::uint32_t> patch;  ///< of each face, an index into of_patch
+  ScratchVector<FaceLabel> of_patch;
+  ScratchVector<std::uint32_t> patch;  ///< of each face, an index into of_patch
 };
 
 /// The axis whose normal component is largest in magnitude (and non-zero): the one dropped to
@@ -340,14 +343,14 @@ enum class Neighbours : std::uint8_t { proven, tested };
 /// Faces with their corners renumbered so that sheets meeting along an edge or at a point have
 /// their own vertices there: `points[i]` is the exact point of new vertex i.
 struct Sheets {
-  std::vector<std::array<std::int32_t, 3>> faces;
-  std::vector<std::int32_t> points;
+  ScratchVector<std::array<std::int32_t, 3>> faces;
+  ScratchVector<std::int32_t> points;
   /// Every edge of the given faces is held by exactly two of them, in opposite directions: then
   /// each directed edge of `faces` occurs once and its reverse once (the two faces of an edge
   /// share their renumbered corners at both its ends, and only they map to that edge's points).
   bool paired = false;
 };
-[[nodiscard]] Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+[[nodiscard]] Sheets separate_sheets(std::span<const std::array<std::int32_t, 3>> faces,
                                      const PointStore& store);
 
 /// The sheets when every point's faces form one umbrella: its corners' faces joined across
@@ -358,11 +361,11 @@ struct Sheets {
 /// some point is not such (an edge held once or by more than two faces, the same way twice, a
 /// repeated corner, a point pinched between umbrellas, more than 64 corners at a point).
 [[nodiscard]] std::optional<Sheets> single_umbrellas(
-    const std::vector<std::array<std::int32_t, 3>>& faces);
+    std::span<const std::array<std::int32_t, 3>> faces);
 
 /// separate_sheets by the faces' edge uses, every edge's faces paired around it, whatever the
 /// faces: the general way.
-[[nodiscard]] Sheets sheets_by_edges(const std::vector<std::array<std::int32_t, 3>>& faces,
+[[nodiscard]] Sheets sheets_by_edges(std::span<const std::array<std::int32_t, 3>> faces,
                                      const PointStore& store);
 
 }  // namespace contain::clip::solid

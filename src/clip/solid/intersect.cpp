@@ -279,8 +279,8 @@ void intersect_pair(const Soup& soup, std::int32_t t, std::int32_t u, Points& st
 // Whether t and u share a corner that is a proven vertex of the soup (`corners` from
 // `proven_corners`): then they meet only there or along their common edge, and `intersect_pair`
 // would give nothing (star_proof.h).
-bool share_proven_corner(const Soup& soup, const std::vector<std::uint8_t>& corners, std::int32_t t,
-                         std::int32_t u) {
+bool share_proven_corner(const Soup& soup, const ScratchVector<std::uint8_t>& corners,
+                         std::int32_t t, std::int32_t u) {
   const unsigned bits = corners[static_cast<std::size_t>(t)];
   const TriangleIndices& a = soup.triangles[static_cast<std::size_t>(t)];
   const TriangleIndices& b = soup.triangles[static_cast<std::size_t>(u)];
@@ -343,9 +343,9 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours, const 
     // What the proofs read once, given back before the walk, whose allocations (constraints,
     // the table of crossings, the store's growth) then take it over instead of growing the heap
     // (the process keeps freed memory; each fresh page is a fault).
-    std::vector<std::uint8_t>().swap(stars.turns);
+    ScratchVector<std::uint8_t>().swap(stars.turns);
   }
-  const std::vector<std::uint8_t>& corners = stars.corners;
+  const ScratchVector<std::uint8_t>& corners = stars.corners;
   const auto pair = [&](std::int32_t t, std::int32_t u) {
     const std::int32_t lo = std::min(t, u), hi = std::max(t, u);
     if (!share_proven_corner(soup, corners, lo, hi)) intersect_pair(soup, lo, hi, store, work);
@@ -439,7 +439,7 @@ void PairWork::finish() {
     constraints_.resize(found_.size());
     for (auto f = found_.rbegin(); f != found_.rend(); ++f)
       constraints_[--first_[static_cast<std::size_t>(f->t)]] = f->c;
-    std::vector<Found>().swap(found_);
+    ScratchVector<Found>().swap(found_);
   }
   std::stable_sort(partners_.begin(), partners_.end(),
                    [](const Partner& a, const Partner& b) { return a.t < b.t; });

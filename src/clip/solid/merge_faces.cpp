@@ -30,6 +30,7 @@ namespace contain::clip::solid {
 namespace {
 
 using Face = std::array<std::int32_t, 3>;
+using ScratchUnionFind = UnionFind<std::size_t, ScratchAllocator<std::size_t>>;
 
 std::uint64_t directed_key(std::int32_t a, std::int32_t b) {
   return (std::uint64_t{static_cast<std::uint32_t>(a)} << 32U) | static_cast<std::uint32_t>(b);
@@ -51,13 +52,12 @@ bool same_plane(const Soup& soup, std::int32_t t, std::int32_t u) {
 
 // The faces joined into regions: across edges held by exactly two faces in opposite
 // directions, of one plane, lying on the two sides of the edge.
-UnionFind<std::size_t> regions(const Soup& soup, const BoundaryFaces& boundary,
-                               const PointStore& store) {
+ScratchUnionFind regions(const Soup& soup, const BoundaryFaces& boundary, const PointStore& store) {
   // Every edge use, grouped by edge: flat arrays, not a map of vectors (one allocation per edge
   // was a tenth of the boolean).
   const EdgeUses uses = edge_uses(boundary.faces.size(),
                                   [&](std::size_t f) -> const Face& { return boundary.faces[f]; });
-  UnionFind<std::size_t> sets(boundary.faces.size());
+  ScratchUnionFind sets(boundary.faces.size());
   for_each_edge(uses, [&](std::int32_t lo, std::int32_t hi, std::span<const std::uint64_t> group) {
     if (group.size() != 2) return;
     const std::size_t f = EdgeUses::face(group[0]), g = EdgeUses::face(group[1]);
@@ -183,7 +183,7 @@ std::optional<std::vector<Face>> retriangulated(const Soup& soup, const Boundary
 // appended to `out`: merged when it holds points no other region uses, as they are otherwise.
 void merge_region(const Soup& soup, const BoundaryFaces& boundary,
                   std::span<const std::size_t> region, std::size_t leader,
-                  const std::vector<std::size_t>& owner, PointStore& store, Faces& out) {
+                  const ScratchVector<std::size_t>& owner, PointStore& store, Faces& out) {
   const std::vector<std::size_t> faces(region.begin(), region.end());
   // Sorted arrays, not hash sets (a region holds a few dozen edges).
   std::vector<std::uint64_t> directed;
@@ -231,11 +231,11 @@ void merge_region(const Soup& soup, const BoundaryFaces& boundary,
 
 // The region of each point (by point number), or `shared` when faces of several regions hold
 // it; `shared` too for points no face holds.
-std::vector<std::size_t> point_owners(const BoundaryFaces& boundary,
-                                      const std::vector<std::size_t>& leader, std::size_t points,
-                                      std::size_t shared) {
+ScratchVector<std::size_t> point_owners(const BoundaryFaces& boundary,
+                                        const ScratchVector<std::size_t>& leader,
+                                        std::size_t points, std::size_t shared) {
   const std::size_t none = shared - 1;
-  std::vector<std::size_t> owner(points, none);
+  ScratchVector<std::size_t> owner(points, none);
   for (std::size_t f = 0; f < boundary.faces.size(); ++f) {
     for (const std::int32_t p : boundary.faces[f]) {
       std::size_t& o = owner[static_cast<std::size_t>(p)];
@@ -252,11 +252,11 @@ bool distinct_corners(const Face& v) {
 }  // namespace
 
 Faces merge_coplanar(const Soup& soup, const BoundaryFaces& boundary, PointStore& store) {
-  UnionFind<std::size_t> sets = regions(soup, boundary, store);
+  ScratchUnionFind sets = regions(soup, boundary, store);
   const std::size_t n = boundary.faces.size();
   // Each region's faces in ascending order, the regions by their leaders (their smallest face):
   // flat arrays by counting, as deterministic as the order of the leaders.
-  std::vector<std::size_t> leader(n), start(n + 1, 0);
+  ScratchVector<std::size_t> leader(n), start(n + 1, 0);
   bool merges = false;
   for (std::size_t f = 0; f < n; ++f) {
     leader[f] = sets.find(f);
@@ -265,13 +265,13 @@ Faces merge_coplanar(const Soup& soup, const BoundaryFaces& boundary, PointStore
   }
   for (std::size_t f = 0; f < n; ++f)
     start[f + 1] += start[f];
-  std::vector<std::size_t> members(n), fill(start.begin(), start.end() - 1);
+  ScratchVector<std::size_t> members(n), fill(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < n; ++f)
     members[fill[leader[f]]++] = f;
   constexpr std::size_t shared = std::numeric_limits<std::size_t>::max();
   // Only regions of several faces read the owners: most outputs (no coplanar faces) skip them.
-  const std::vector<std::size_t> owner =
-      merges ? point_owners(boundary, leader, store.size(), shared) : std::vector<std::size_t>{};
+  const ScratchVector<std::size_t> owner =
+      merges ? point_owners(boundary, leader, store.size(), shared) : ScratchVector<std::size_t>{};
   Faces out;
   out.reserve(n);
   for (std::size_t l = 0; l < n; ++l) {

@@ -105,7 +105,7 @@ class PatchProofs {
   // Per node: its items' range in leaf order; per position in leaf order: the positions of the
   // triangles across its triangle's edges (-1 across an edge without a proven end).
   std::vector<std::array<std::int32_t, 2>> ranges_;
-  std::vector<std::array<std::int32_t, 3>> across_at_;
+  ScratchVector<std::array<std::int32_t, 3>> across_at_;
   // Per node: bit 2k (2k + 1) when every triangle below turns strictly positively (negatively)
   // in the projection dropping axis k and every corner below is proven; 0 otherwise.
   std::vector<std::uint8_t> directions_;

@@ -32,7 +32,7 @@ void PointTable::reserve(std::size_t points, PointKeys keys) {
   while (size < 2 * points)
     size *= 2;
   if (size <= slots_.size()) return;
-  std::vector<Slot> old(size);
+  ScratchVector<Slot> old(size);
   old.swap(slots_);
   const std::size_t mask = slots_.size() - 1;
   for (const Slot& s : old) {

@@ -34,7 +34,7 @@ bool near_triangle(const Triangle3& t, Vec3 p, double reach) {
 
 }  // namespace
 
-bool within_boundary(const Mesh& mesh, const std::vector<std::array<std::int32_t, 3>>& faces,
+bool within_boundary(const Mesh& mesh, std::span<const std::array<std::int32_t, 3>> faces,
                      const PointStore& store, double bound, double scale) {
   if (mesh.vertices.empty()) return true;
   // The bound less one ulp of scale (more than sqrt(3)/2 of it), and less a relative 2^-50 for

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "clip/solid/engine.h"
@@ -18,7 +19,7 @@ namespace contain::clip::solid {
 /// the exact closest-feature and distance predicates. False when it can not be proven (a mesh
 /// with vertices and no faces, or a vertex farther).
 [[nodiscard]] bool within_boundary(const Mesh& mesh,
-                                   const std::vector<std::array<std::int32_t, 3>>& faces,
+                                   std::span<const std::array<std::int32_t, 3>> faces,
                                    const PointStore& store, double bound, double scale);
 
 }  // namespace contain::clip::solid

@@ -34,7 +34,7 @@ struct Use {
 };
 
 // The corner of the face that is on neither end of the edge.
-std::int32_t third(const std::vector<std::array<std::int32_t, 3>>& faces, const Use& u) {
+std::int32_t third(std::span<const std::array<std::int32_t, 3>> faces, const Use& u) {
   const auto& v = faces[u.face];
   // corners: p at u.corner; q is the next (forward) or previous corner; the third is the other.
   const int q = u.forward ? (u.corner + 1) % 3 : (u.corner + 2) % 3;
@@ -46,7 +46,7 @@ std::int32_t third(const std::vector<std::array<std::int32_t, 3>>& faces, const 
 // turn is an orientation of four exact points, decided by the filter where it can
 // (filtered_orient3d) and by the spokes' big numbers, made only then, where it cannot.
 void sort_around(std::vector<Use>& uses, std::int32_t p, std::int32_t q,
-                 const std::vector<std::array<std::int32_t, 3>>& faces, const PointStore& store) {
+                 std::span<const std::array<std::int32_t, 3>> faces, const PointStore& store) {
   const ExactPoint& pp = store.point(p);
   const ExactPoint& pq = store.point(q);
   std::vector<const ExactPoint*> far;
@@ -213,7 +213,7 @@ struct Grouping {
 
 }  // namespace
 
-std::optional<Sheets> single_umbrellas(const std::vector<std::array<std::int32_t, 3>>& faces) {
+std::optional<Sheets> single_umbrellas(std::span<const std::array<std::int32_t, 3>> faces) {
   std::size_t points = 0;
   for (const auto& f : faces) {
     for (const std::int32_t p : f)
@@ -298,13 +298,13 @@ std::optional<Sheets> single_umbrellas(const std::vector<std::array<std::int32_t
 // passes with the same vertices at both ends, and the edge is paired the other way (each q -> p
 // face with a later face running p -> q). Both pairings hold the same triangles: the check of
 // the written mesh judges the result.
-Sheets separate_sheets(const std::vector<std::array<std::int32_t, 3>>& faces,
+Sheets separate_sheets(std::span<const std::array<std::int32_t, 3>> faces,
                        const PointStore& store) {
   if (std::optional<Sheets> simple = single_umbrellas(faces)) return std::move(*simple);
   return sheets_by_edges(faces, store);
 }
 
-Sheets sheets_by_edges(const std::vector<std::array<std::int32_t, 3>>& faces,
+Sheets sheets_by_edges(std::span<const std::array<std::int32_t, 3>> faces,
                        const PointStore& store) {
   // Every use grouped by its edge, in face order within an edge (the order the fans start
   // from): EdgeUses, a counting sort of the edges' lower points.

@@ -70,9 +70,8 @@ struct CornerKey {
   bool reversed;  // b > c in (a, b, c)
 };
 
-std::vector<std::array<std::int32_t, 3>> merge_coincident(
-    const std::vector<std::array<std::int32_t, 3>>& faces, const Representative& rep) {
-  std::vector<std::array<std::int32_t, 3>> merged;
+Faces merge_coincident(const Faces& faces, const Representative& rep) {
+  Faces merged;
   merged.reserve(faces.size());
   for (const auto& f : faces) {
     std::array<std::int32_t, 3> t = {rep.at(f[0]), rep.at(f[1]), rep.at(f[2])};
@@ -131,7 +130,7 @@ std::vector<std::array<std::int32_t, 3>> merge_coincident(
     }
   }
   if (!any_gone) return merged;  // most results: no copy
-  std::vector<std::array<std::int32_t, 3>> out;
+  Faces out;
   out.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
     if (!gone[i]) out.push_back(merged[i]);
@@ -185,8 +184,8 @@ namespace {
 // A level whose clusters are too wide (cluster_points) is not used: the rounds together then
 // move a vertex by less than sqrt(3) (2^3 + 2^6 + ... + 2^21) ulps of the largest coordinate
 // (< 9.3e-10 of it, within the spec's 1e-9; the half-ulp roundings add a negligible 5 ulps).
-Representative representatives(const std::vector<std::array<std::int32_t, 3>>& faces,
-                               const PointStore& store, int level, double scale) {
+Representative representatives(const Faces& faces, const PointStore& store, int level,
+                               double scale) {
   // The faces' points ascending, by marks in point order (a sort of every corner was a
   // twentieth of a large boolean).
   Representative rep;
@@ -228,8 +227,7 @@ struct Written {
 };
 
 // The faces' mesh with points merged by `rep`, sheets kept apart.
-Written written_mesh(const std::vector<std::array<std::int32_t, 3>>& kept,
-                     const Representative& rep, const PointStore& store) {
+Written written_mesh(const Faces& kept, const Representative& rep, const PointStore& store) {
   const Sheets sheets = separate_sheets(merge_coincident(kept, rep), store);
   std::vector<int> merged(store.size(), 0);  // points merged into each representative
   for (const std::int32_t point : rep.ids)

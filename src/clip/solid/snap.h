@@ -16,13 +16,13 @@
 
 namespace contain::clip::solid {
 
-using Faces = std::vector<std::array<std::int32_t, 3>>;
+using Faces = ScratchVector<std::array<std::int32_t, 3>>;
 
 /// The faces on the result's boundary, oriented with the result behind them, and the input
 /// triangle each one is a piece of.
 struct BoundaryFaces {
   Faces faces;
-  std::vector<std::int32_t> triangle;
+  ScratchVector<std::int32_t> triangle;
 };
 
 /// The refined faces where `op` differs on the two sides, one of each set of coinciding faces

@@ -164,7 +164,7 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
     }
   }
   if (out.stars != nullptr) {
-    std::vector<std::array<std::int32_t, 3>>& across = out.stars->across;
+    ScratchVector<std::array<std::int32_t, 3>>& across = out.stars->across;
     // Triangle i is v w(i) w(i + 1), its corner k at v: its edge (k + 2) mod 3 runs w(i + 1)
     // -> v, which is edge k' (v -> w(i + 1)) of triangle i + 1.
     for (std::size_t i = 0; i < n; ++i) {
@@ -193,7 +193,7 @@ bool proven_star(const Soup& soup, std::int32_t v, std::span<const std::int32_t>
 // `corners`, bit k of each triangle whose corner k is proven (made here, after the sort's
 // buffers: below them, it would leave their memory a hole the next allocations may not fit).
 std::vector<bool> proven_vertices_of(const Soup& soup, const StarOutput& out,
-                                     std::vector<std::uint8_t>* corners) {
+                                     ScratchVector<std::uint8_t>* corners) {
   const std::size_t vertices = soup.vertices.size();
   // The corners at each vertex (3 t + k: triangle t's corner k), by a counting sort, in
   // ascending order (a triangle naming a vertex twice is listed twice, and fails the turns).
@@ -201,14 +201,14 @@ std::vector<bool> proven_vertices_of(const Soup& soup, const StarOutput& out,
   // 3 to max_star corners, before its proof: a buffer of link edges (12 bytes a corner) was
   // 9.4 MB of fresh pages at a union of two 131k-triangle spheres, more than the proofs' own
   // work in page faults.
-  std::vector<std::int32_t> start(vertices + 1, 0);
+  ScratchVector<std::int32_t> start(vertices + 1, 0);
   for (const TriangleIndices& t : soup.triangles) {
     for (const std::int32_t i : t)
       ++start[static_cast<std::size_t>(i) + 1];
   }
   for (std::size_t i = 1; i <= vertices; ++i)
     start[i] += start[i - 1];
-  std::vector<std::int32_t> star(static_cast<std::size_t>(start[vertices]));
+  ScratchVector<std::int32_t> star(static_cast<std::size_t>(start[vertices]));
   // Filled from the back, each bucket's end moving down to its start (no second array of
   // positions).
   for (std::size_t i = soup.triangles.size(); i-- > 0;) {
@@ -245,8 +245,8 @@ std::vector<bool> proven_vertices(const Soup& soup) {
   return proven_vertices_of(soup, {}, nullptr);
 }
 
-std::vector<std::uint8_t> proven_corners(const Soup& soup) {
-  std::vector<std::uint8_t> corners;
+ScratchVector<std::uint8_t> proven_corners(const Soup& soup) {
+  ScratchVector<std::uint8_t> corners;
   (void)proven_vertices_of(soup, {}, &corners);
   return corners;
 }
@@ -255,7 +255,7 @@ ProvenStars proven_stars(const Soup& soup, StarOrder order) {
   ProvenStars stars;
   stars.across.assign(soup.triangles.size(), {-1, -1, -1});
   stars.turns.assign(soup.triangles.size(), 0);
-  std::vector<std::int32_t> position;
+  ScratchVector<std::int32_t> position;
   if (order == StarOrder::leaf) {
     const std::span<const std::int32_t> items = soup.tree.items();
     position.assign(soup.triangles.size(), -1);

@@ -45,7 +45,7 @@ namespace contain::clip::solid {
 [[nodiscard]] std::vector<bool> proven_vertices(const Soup& soup);
 
 /// For each triangle of the soup: bit k set when its corner k is a proven vertex.
-[[nodiscard]] std::vector<std::uint8_t> proven_corners(const Soup& soup);
+[[nodiscard]] ScratchVector<std::uint8_t> proven_corners(const Soup& soup);
 
 /// `proven_corners`, and each triangle's neighbour across each of its edges that has a proven
 /// end (-1 for the others): across[t][k] is the triangle on the other side of the edge from
@@ -60,9 +60,9 @@ namespace contain::clip::solid {
 /// instead of copied into it afterwards (a scattered pass and 3 MB more at two 131k-triangle
 /// spheres). `corners` is by triangle either way.
 struct ProvenStars {
-  std::vector<std::uint8_t> corners;
-  std::vector<std::array<std::int32_t, 3>> across;
-  std::vector<std::uint8_t> turns;
+  ScratchVector<std::uint8_t> corners;
+  ScratchVector<std::array<std::int32_t, 3>> across;
+  ScratchVector<std::uint8_t> turns;
 };
 enum class StarOrder : std::uint8_t { triangle, leaf };
 [[nodiscard]] ProvenStars proven_stars(const Soup& soup, StarOrder order = StarOrder::triangle);
