@@ -47,6 +47,40 @@ struct EdgeUses {
   return 0;
 }
 
+/// Each point's corners, 3 face + k, by a counting sort of the corners by point: after it,
+/// `corner[end[p - 1] .. end[p])` (from 0 for p = 0) are p's corners in face order. The walks
+/// around points (the labels' patches, the sheets' umbrellas) start from it.
+struct CornersByPoint {
+  std::size_t points = 0;               ///< the highest point + 1
+  ScratchVector<std::uint32_t> end;     ///< points + 1 entries
+  ScratchVector<std::uint32_t> corner;  ///< 3 F entries
+};
+
+/// The corners by point of `faces` faces (`corners(face)` as for edge_uses). Faces are numbered
+/// in 32 bits (fewer than 2^32 / 3).
+template <class Corners>
+[[nodiscard]] CornersByPoint corners_by_point(std::size_t faces, Corners&& corners) {
+  CornersByPoint out;
+  for (std::size_t f = 0; f < faces; ++f) {
+    for (const std::int32_t p : corners(f))
+      out.points = std::max(out.points, static_cast<std::size_t>(p) + 1);
+  }
+  out.end.assign(out.points + 1, 0);
+  for (std::size_t f = 0; f < faces; ++f) {
+    for (const std::int32_t p : corners(f))
+      ++out.end[static_cast<std::size_t>(p) + 1];
+  }
+  for (std::size_t p = 0; p < out.points; ++p)
+    out.end[p + 1] += out.end[p];
+  out.corner.resize(out.end[out.points]);  // each written next
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto& v = corners(f);
+    for (std::size_t k = 0; k < 3; ++k)
+      out.corner[out.end[static_cast<std::size_t>(v[k])]++] = static_cast<std::uint32_t>(3 * f + k);
+  }
+  return out;
+}
+
 /// The edge uses of `faces` faces (indexable: `corners(face)` returns the face's three corner
 /// numbers, non-negative). Faces are numbered in 32 bits.
 template <class Corners>

@@ -111,8 +111,10 @@ class Soup {
   PointTable index;
 
  private:
-  // One pointer per triangle, not the normal itself (120 bytes): most are never computed.
-  mutable ScratchVector<std::unique_ptr<BigVec3>> normals_;
+  // One pointer per triangle, not the normal itself (120 bytes): most are never computed. On
+  // the heap: made at the first normal asked for, mid-call, and live to the end, it would pin a
+  // block amid the stages' blocks in the call's pool.
+  mutable std::vector<std::unique_ptr<BigVec3>> normals_;
 };
 
 /// The box of triangle t of a soup from its corners (empty for a degenerate one: it meets
@@ -315,7 +317,8 @@ struct FaceLabels {
 /// The refined faces' patches (label_faces): two faces are joined across an edge held by exactly
 /// these two, one each way, of triangles of the same input, that is not a curve edge; the set
 /// of each face is its smallest face (UnionFind::find).
-[[nodiscard]] UnionFind<std::uint32_t> face_patches(const Soup& soup, const Refinement& r);
+using PatchSets = UnionFind<std::uint32_t, ScratchAllocator<std::uint32_t>>;
+[[nodiscard]] PatchSets face_patches(const Soup& soup, const Refinement& r);
 
 [[nodiscard]] Result<Soup> make_soup(std::span<const Mesh> inputs);
 /// Whether the pair stage first proves the soup's vertices (star_proof.h) and skips the pairs

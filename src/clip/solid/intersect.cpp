@@ -341,8 +341,8 @@ PairWork pairs_of(const Soup& soup, Points& store, Neighbours neighbours, const 
   if (patches_pay) {
     patches.emplace(PatchProofs::from_leaf_order(soup, stars));
     // What the proofs read once, given back before the walk, whose allocations (constraints,
-    // the table of crossings, the store's growth) then take it over instead of growing the heap
-    // (the process keeps freed memory; each fresh page is a fault).
+    // the table of crossings, the store's growth) then take it over instead of fresh pages (the
+    // call's pool, or the heap where the process keeps freed memory; each fresh page a fault).
     ScratchVector<std::uint8_t>().swap(stars.turns);
   }
   const ScratchVector<std::uint8_t>& corners = stars.corners;

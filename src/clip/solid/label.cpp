@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "clip/solid/edge_uses.h"
 #include "clip/solid/engine.h"
 #include "contain/bvh/bvh.h"
 #include "contain/core/sort_few.h"
@@ -124,33 +125,19 @@ SideLabel side_label(const Soup& soup, const bvh::Bvh& tree, const LabelPoint& p
 // p -> q of edge p q, one whose previous point q > p a use q -> p. The faces joined are those of
 // the edges with exactly one use each way, as a grouping of every edge use would find them
 // (8 bytes a use, sorted per lower point): the sets depend only on which faces are joined.
-UnionFind<std::uint32_t> face_patches(const Soup& soup, const Refinement& r) {
-  std::size_t points = 0;
-  for (const RefinedFace& face : r.faces) {
-    for (const std::int32_t p : face.v)
-      points = std::max(points, static_cast<std::size_t>(p) + 1);
-  }
-  // After the scatter end[p] is the end of p's corners and end[p - 1] their start.
-  std::vector<std::uint32_t> end(points + 1, 0);
-  for (const RefinedFace& face : r.faces) {
-    for (const std::int32_t p : face.v)
-      ++end[static_cast<std::size_t>(p) + 1];
-  }
-  for (std::size_t p = 0; p < points; ++p)
-    end[p + 1] += end[p];
-  std::vector<std::uint32_t> corner(end[points]);
-  for (std::size_t f = 0; f < r.faces.size(); ++f) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      corner[end[static_cast<std::size_t>(r.faces[f].v[k])]++] =
-          static_cast<std::uint32_t>(3 * f + k);
-    }
-  }
+PatchSets face_patches(const Soup& soup, const Refinement& r) {
+  const CornersByPoint by_point = corners_by_point(
+      r.faces.size(),
+      [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return r.faces[f].v; });
+  const std::size_t points = by_point.points;
+  const ScratchVector<std::uint32_t>& end = by_point.end;
+  const ScratchVector<std::uint32_t>& corner = by_point.corner;
   // Faces are numbered in 31 bits (a use keeps a direction bit beside its face): sets of half
   // the size of std::size_t ones.
   assert(r.faces.size() < (std::size_t{1} << 31U));
-  UnionFind<std::uint32_t> sets(r.faces.size());
+  PatchSets sets(r.faces.size());
   // The lower points of the curve edges: most edges have none there and skip the search.
-  std::vector<char> starts_curve(points + 1, 0);
+  ScratchVector<char> starts_curve(points + 1, 0);
   for (const std::uint64_t e : r.curve_edges) {
     const std::size_t lo = e >> 32U;
     if (lo < starts_curve.size()) starts_curve[lo] = 1;
@@ -228,7 +215,7 @@ std::optional<Vec3> inner_double(const Soup& soup, const RefinedFace& face, cons
 FaceLabels label_faces(const Soup& soup, const Refinement& refinement, const PointStore& store) {
   const bvh::Bvh& tree = soup.tree;
   // Each face's root looked up as the faces are labelled (no array of roots first).
-  UnionFind<std::uint32_t> patch = face_patches(soup, refinement);
+  PatchSets patch = face_patches(soup, refinement);
   FaceLabels labels;
   labels.patch.resize(refinement.faces.size());
   std::vector<std::pair<std::int32_t, int>> crossings;

@@ -6,6 +6,7 @@
 #include "clip/solid/scratch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <new>
 #include <utility>
@@ -38,6 +39,7 @@ static_assert(sizeof(Header) <= header_bytes);
 constexpr std::align_val_t chunk_alignment{ScratchPool::granule};
 
 thread_local ScratchPool* installed = nullptr;
+std::atomic<std::size_t> chunks_made{0};
 
 void free_chunk(ScratchChunk* c) noexcept {
   ::operator delete(c->memory, chunk_alignment);
@@ -86,6 +88,7 @@ std::pair<ScratchChunk*, std::size_t> ScratchPool::acquire(std::size_t bytes) {
     auto* memory = static_cast<std::byte*>(::operator new(size, chunk_alignment));
     try {
       chunks_.push_back(new ScratchChunk{memory, size, 0, 0, this});
+      chunks_made.fetch_add(1, std::memory_order_relaxed);
     } catch (...) {
       ::operator delete(memory, chunk_alignment);
       throw;
@@ -153,6 +156,10 @@ ScratchScope::~ScratchScope() {
 
 ScratchPool* installed_pool() {
   return installed;
+}
+
+std::size_t scratch_chunks_made() {
+  return chunks_made.load(std::memory_order_relaxed);
 }
 
 void* scratch_allocate(std::size_t bytes) {

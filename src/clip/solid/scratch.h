@@ -100,6 +100,9 @@ class ScratchScope {
 
 /// The pool installed on this thread, or nullptr.
 [[nodiscard]] ScratchPool* installed_pool();
+/// Chunks made by every pool of the process so far: what shows whether a call took a pool's
+/// blocks (the tests of MeshBooleanOptions::scratch_pool).
+[[nodiscard]] std::size_t scratch_chunks_made();
 
 /// A block of `bytes` (at least ScratchPool::min_bytes), aligned as operator new's: from the
 /// installed pool, or from operator new when none is installed.

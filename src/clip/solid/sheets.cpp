@@ -214,25 +214,13 @@ struct Grouping {
 }  // namespace
 
 std::optional<Sheets> single_umbrellas(std::span<const std::array<std::int32_t, 3>> faces) {
-  std::size_t points = 0;
-  for (const auto& f : faces) {
-    for (const std::int32_t p : f)
-      points = std::max(points, static_cast<std::size_t>(p) + 1);
-  }
-  // The corners (3 face + k) of each point, by a counting sort: after the scatter end[p] is the
-  // end of p's corners and end[p - 1] their start (32-bit: faces are numbered in 32 bits).
-  std::vector<std::uint32_t> end(points + 1, 0);
-  for (const auto& f : faces) {
-    for (const std::int32_t p : f)
-      ++end[static_cast<std::size_t>(p) + 1];
-  }
-  for (std::size_t p = 0; p < points; ++p)
-    end[p + 1] += end[p];
-  std::vector<std::uint32_t> corner(end[points]);
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (std::size_t k = 0; k < 3; ++k)
-      corner[end[static_cast<std::size_t>(faces[f][k])]++] = corner_number(f, static_cast<int>(k));
-  }
+  // The corners (3 face + k, corner_number) of each point (32-bit: faces are numbered in 32
+  // bits).
+  const CornersByPoint by_point = corners_by_point(
+      faces.size(), [&](std::size_t f) -> const std::array<std::int32_t, 3>& { return faces[f]; });
+  const std::size_t points = by_point.points;
+  const ScratchVector<std::uint32_t>& end = by_point.end;
+  const ScratchVector<std::uint32_t>& corner = by_point.corner;
   // Around each point: the corners' next and previous points, each corner's successor across
   // the edge to its next point (the one corner whose previous point that is), and one walk.
   constexpr std::size_t most = 64;  // a point with more corners takes the general way
@@ -275,7 +263,7 @@ std::optional<Sheets> single_umbrellas(std::span<const std::array<std::int32_t, 
   // corner sets.
   Sheets out;
   out.paired = true;
-  std::vector<std::int32_t> vertex(points, -1);
+  ScratchVector<std::int32_t> vertex(points, -1);
   out.faces.reserve(faces.size());
   for (const auto& f : faces) {
     std::array<std::int32_t, 3> t{};

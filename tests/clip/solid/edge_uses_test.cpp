@@ -165,7 +165,7 @@ TEST(EdgeUses, PatchesFromCornersJoinWhatAMapOfEdgeUsesJoins) {
         ++kept_apart;
       }
     }
-    UnionFind<std::uint32_t> found = clip::solid::face_patches(soup, r);
+    clip::solid::PatchSets found = clip::solid::face_patches(soup, r);
     for (std::uint32_t f = 0; f < r.faces.size(); ++f)
       ASSERT_EQ(found.find(f), expected.find(f)) << "case " << c << " face " << f;
   }

@@ -24,6 +24,7 @@ namespace contain::test {
 namespace {
 
 using clip::solid::installed_pool;
+using clip::solid::scratch_chunks_made;
 using clip::solid::ScratchPool;
 using clip::solid::ScratchScope;
 using clip::solid::ScratchVector;
@@ -196,11 +197,15 @@ TEST(ScratchPool, ABlockMayOutliveItsPool) {
   survivor.reset();
 }
 
+// The two spheres' engine arrays of 128 kB and more (the pairs' work, the point store, ...)
+// come from a pool of the call's own: it makes chunks, takes none from a pool installed by the
+// caller, and restores the caller's.
 TEST(ScratchPool, MeshBooleanOwnsItsPool) {
-  // Large enough that the soup's arrays come from a pool (20,480 triangles each).
   const std::vector<Mesh> in = {icosphere(5, 1.0, {0, 0, 0}), icosphere(5, 1.0, {0.5, 0.5, 0.5})};
+  const std::size_t before_alone = scratch_chunks_made();
   const Result<clip::MeshBooleanResult> alone = clip::mesh_boolean(in);
   ASSERT_TRUE(alone);
+  EXPECT_GT(scratch_chunks_made(), before_alone);  // its own pool made chunks
   ScratchPool outer;
   const ScratchScope scope(outer);
   const Result<clip::MeshBooleanResult> nested = clip::mesh_boolean(in);
@@ -210,19 +215,21 @@ TEST(ScratchPool, MeshBooleanOwnsItsPool) {
   EXPECT_TRUE(nested->mesh == alone->mesh);
 }
 
-// Without its pool (the CLI, whose heap keeps freed memory) the call takes no pool's blocks,
-// not even an installed one's, and writes the same mesh.
-TEST(ScratchPool, MeshBooleanWithoutItsPoolTakesNoInstalledPoolsBlocksAndWritesTheSameMesh) {
+// Without its pool (the CLI, whose heap keeps freed memory) the call makes no chunk and takes
+// none of an installed pool's blocks: its arrays are on the heap; the mesh is the same.
+TEST(ScratchPool, MeshBooleanWithoutItsPoolTakesNoPoolsBlocksAndWritesTheSameMesh) {
   const std::vector<Mesh> in = {icosphere(5, 1.0, {0, 0, 0}), icosphere(5, 1.0, {0.5, 0.5, 0.5})};
   const Result<clip::MeshBooleanResult> pooled = clip::mesh_boolean(in);
   ASSERT_TRUE(pooled);
   ScratchPool outer;
   const ScratchScope scope(outer);
+  const std::size_t before = scratch_chunks_made();
   const Result<clip::MeshBooleanResult> heap =
       clip::mesh_boolean(in, {.op = clip::Op::union_, .scratch_pool = false});
   ASSERT_TRUE(heap);
-  EXPECT_EQ(installed_pool(), &outer);  // restored
-  EXPECT_EQ(outer.chunks(), 0U);        // nothing from the installed pool either
+  EXPECT_EQ(scratch_chunks_made(), before);  // no pool made a chunk
+  EXPECT_EQ(installed_pool(), &outer);       // restored
+  EXPECT_EQ(outer.chunks(), 0U);             // nothing from the installed pool either
   EXPECT_TRUE(heap->mesh == pooled->mesh);
   EXPECT_EQ(heap->shells, pooled->shells);
   EXPECT_EQ(heap->volume, pooled->volume);
