@@ -158,6 +158,8 @@ struct LocatingSlices {
       const std::size_t at = answers.size();
       answers.resize(at + run.size());
       std::uint64_t left = locator.settle(run, std::span<Location>(answers).subspan(at));
+      // A caller's settle may set bits past its run: they name no point of it.
+      if (run.size() < 64) left &= (std::uint64_t{1} << run.size()) - 1;
       for (; left != 0; left &= left - 1) {
         const auto k = static_cast<std::size_t>(std::countr_zero(left));
         exact.push_back(exact_point(run[k]));
@@ -433,14 +435,29 @@ Status read_points3_bounded(
   return read_chunked(path, reading, PointSlices<BoundedPoint3>{}, consume);
 }
 
+namespace {
+// An empty settle or locate would throw std::bad_function_call on a reading thread
+// (std::terminate): refused before any thread starts.
+template <class Locator>
+Status check_locator(const Locator& locator, const std::filesystem::path& path) {
+  if (locator.settle && locator.locate) return Ok{};
+  return detail::make_error(ErrorKind::usage,
+                            "the box locator has no settle or no locate function (a "
+                            "default-constructed BoxLocator; io::box_locator makes one)",
+                            detail::source_name(path));
+}
+}  // namespace
+
 Status locate_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
     const std::function<void(std::span<const Location>, double)>& consume) {
+  if (Status checked = check_locator(locator, path); !checked) return checked;
   return read_chunked(path, reading, LocatingSlices<BoundedPoint2, Vec2>{locator}, consume);
 }
 Status locate_points3_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator3& locator,
     const std::function<void(std::span<const Location>, double)>& consume) {
+  if (Status checked = check_locator(locator, path); !checked) return checked;
   return read_chunked(path, reading, LocatingSlices<BoundedPoint3, Vec3>{locator}, consume);
 }
 

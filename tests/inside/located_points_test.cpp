@@ -254,5 +254,58 @@ TEST(LocatedPoints, ABadLineFirstAtABlockEdgeOrLastIsTheChunkedReadersError) {
   }
 }
 
+// A locator missing a function is an Error naming it, not std::bad_function_call on a reading
+// thread (std::terminate).
+TEST(LocatedPoints, AnEmptyLocatorIsAnErrorNotACrash) {
+  const test::TempFile file(".txt", "0.5 0.5\n1.5 2.5\n");
+  for (const io::ChunkedReading& reading : reading_ways()) {
+    const auto got2 = located(file.path(), reading, io::BoxLocator2{}, io::locate_points2_bounded);
+    ASSERT_FALSE(got2.ok());
+    EXPECT_EQ(got2.error().kind, ErrorKind::usage);
+    EXPECT_NE(got2.error().message.find("locator"), std::string::npos) << got2.error().message;
+    const auto got3 = located(file.path(), reading, io::BoxLocator3{}, io::locate_points3_bounded);
+    ASSERT_FALSE(got3.ok());
+    EXPECT_EQ(got3.error().kind, ErrorKind::usage);
+  }
+  // One function alone is as empty.
+  std::mt19937_64 rng(5);
+  const std::vector<Ring> rings{test::random_star(rng, 20, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  io::BoxLocator2 half = io::box_locator<io::BoundedPoint2>(index);
+  half.locate = nullptr;
+  const auto got = located(file.path(), {.threads = 2}, half, io::locate_points2_bounded);
+  ASSERT_FALSE(got.ok());
+  EXPECT_EQ(got.error().kind, ErrorKind::usage);
+}
+
+// A settle that sets bits past its run (which name no point) gives the answers of one that does
+// not: the reader reads no point past the run.
+TEST(LocatedPoints, StrayBitsPastTheRunAreIgnored) {
+  std::mt19937_64 rng(8);
+  const std::vector<Ring> rings{test::random_star(rng, 50, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  const test::TempFile file(".txt", points_text(polygon_probes(index, rings, rng), 2, rng));
+  const auto points = io::read_points2(file.path());
+  ASSERT_TRUE(points.ok()) << points.error().what();
+  std::vector<Location> expected(points->points.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    expected[i] = index.locate(points->points[i]);
+  io::BoxLocator2 stray = io::box_locator<io::BoundedPoint2>(index);
+  std::atomic<std::int64_t> short_runs{0};
+  stray.settle = [settle = stray.settle, &short_runs](std::span<const io::BoundedPoint2> run,
+                                                      std::span<Location> out) {
+    const std::uint64_t left = settle(run, out);
+    if (run.size() >= 64) return left;
+    ++short_runs;
+    return left | ~std::uint64_t{0} << run.size();
+  };
+  for (const io::ChunkedReading& reading : reading_ways()) {
+    const auto got = located(file.path(), reading, stray, io::locate_points2_bounded);
+    ASSERT_TRUE(got.ok()) << got.error().what();
+    ASSERT_EQ(*got, expected) << reading.threads << " " << reading.block;
+  }
+  EXPECT_GT(short_runs.load(), 0);
+}
+
 }  // namespace
 }  // namespace contain::inside

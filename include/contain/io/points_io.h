@@ -199,7 +199,9 @@ template <class Bounded, class Index>
 /// sees the answers in file order, at most `reading.chunk` at a time, and no array of points is
 /// kept. The answers are those of `locate_bounded` on the points read_points2_bounded gives
 /// (whatever the threads, the block and `map`). At the first error the call returns it, after the
-/// answers before its block's slice were consumed.
+/// answers before its block's slice were consumed. A locator without `settle` or `locate` is
+/// ErrorKind::usage, before the file is read; bits `settle` sets at or past its run's size are
+/// ignored.
 [[nodiscard]] Status locate_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
     const std::function<void(std::span<const Location>, double)>& consume);
