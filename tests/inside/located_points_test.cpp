@@ -7,14 +7,19 @@
 // line) of a bad line first, at a block's edge and last are the chunked reader's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <map>
+#include <mutex>
 #include <random>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "contain/inside/mesh_index.h"
@@ -251,6 +256,54 @@ TEST(LocatedPoints, ABadLineFirstAtABlockEdgeOrLastIsTheChunkedReadersError) {
         EXPECT_EQ(got.error().message, expected.error().message) << bad;
       }
     }
+  }
+}
+
+// A file of more than 3 MB read on 3 threads in the default block (8 MB) is cut into 3 slices
+// (kSliceBytes: 1 MB each at least), settled and located at once on 3 threads, each with points
+// left to the exact locate: the answers are still the exact locate of every point, in file order.
+TEST(LocatedPoints, SlicesSettledAtOnceOnThreeThreadsAnswerEveryPointExactly) {
+  std::mt19937_64 rng(31);
+  const std::vector<Ring> rings{test::random_star(rng, 100, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  // The probes (random, near the edges, on and off grid lines) again and again, shuffled so that
+  // every slice has points of each kind.
+  std::vector<Vec2> probes;
+  while (probes.size() < 100000) {
+    const std::vector<double> values = polygon_probes(index, rings, rng);
+    for (std::size_t i = 0; i + 1 < values.size(); i += 2)
+      probes.push_back({values[i], values[i + 1]});
+  }
+  std::shuffle(probes.begin(), probes.end(), rng);
+  std::vector<double> values;
+  for (const Vec2& p : probes)
+    values.insert(values.end(), {p.x, p.y});
+  const test::TempFile file(".txt", points_text(values, 2, rng));
+  ASSERT_GE(std::filesystem::file_size(file.path()), std::uintmax_t{3} << 20);
+  const auto points = io::read_points2(file.path());
+  ASSERT_TRUE(points.ok()) << points.error().what();
+  std::vector<Location> expected(points->points.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    expected[i] = index.locate(points->points[i]);
+  for (const bool map : {false, true}) {
+    // The points each reading thread left to the exact locate (a slice is one thread's).
+    std::mutex mutex;
+    std::map<std::thread::id, std::int64_t> left_by_thread;
+    io::BoxLocator2 locator = io::box_locator<io::BoundedPoint2>(index);
+    locator.settle = [settle = locator.settle, &mutex, &left_by_thread](
+                         std::span<const io::BoundedPoint2> run, std::span<Location> out) {
+      const std::uint64_t left = settle(run, out);
+      const std::lock_guard lock(mutex);
+      left_by_thread[std::this_thread::get_id()] += std::popcount(left);
+      return left;
+    };
+    const auto got =
+        located(file.path(), {.threads = 3, .map = map}, locator, io::locate_points2_bounded);
+    ASSERT_TRUE(got.ok()) << got.error().what();
+    ASSERT_EQ(*got, expected) << map;
+    ASSERT_EQ(left_by_thread.size(), 3U) << map;
+    for (const auto& [thread, left] : left_by_thread)
+      EXPECT_GT(left, 0) << map;
   }
 }
 
