@@ -259,6 +259,58 @@ TEST(LocatedPoints, ABadLineFirstAtABlockEdgeOrLastIsTheChunkedReadersError) {
   }
 }
 
+// A last line without its newline, a UTF-8 byte order mark, and both: the same points, so the
+// exact locate of each, as read_points2 reads them.
+TEST(LocatedPoints, ALastLineWithoutNewlineAndAByteOrderMarkAreReadAsEver) {
+  std::mt19937_64 rng(44);
+  const std::vector<Ring> rings{test::random_star(rng, 60, 0.0, 0.0, 1.0)};
+  const PolygonIndex index{std::span<const Ring>(rings)};
+  std::string body = points_text(polygon_probes(index, rings, rng), 2, rng);
+  body += "0.25 0.5";  // no newline
+  for (const std::string& text :
+       {body, "\xEF\xBB\xBF" + body, "\xEF\xBB\xBF" + std::string("0.125 0.75")}) {
+    const test::TempFile file(".txt", text);
+    const auto points = io::read_points2(file.path());
+    ASSERT_TRUE(points.ok()) << points.error().what();
+    ASSERT_FALSE(points->points.empty());
+    std::vector<Location> expected(points->points.size());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+      expected[i] = index.locate(points->points[i]);
+    const io::BoxLocator2 locator = io::box_locator<io::BoundedPoint2>(index);
+    for (const io::ChunkedReading& reading : reading_ways()) {
+      const auto got = located(file.path(), reading, locator, io::locate_points2_bounded);
+      ASSERT_TRUE(got.ok()) << got.error().what();
+      ASSERT_EQ(*got, expected) << reading.threads << " " << reading.block;
+    }
+  }
+}
+
+// 3D: a bad line first, at a block's edge or last is the chunked reader's error (message, line).
+TEST(LocatedPoints, A3DBadLineIsTheChunkedReadersError) {
+  std::mt19937_64 rng(13);
+  const Mesh mesh = test::grid_cube(0.0, 4.0, 3);
+  const MeshIndex index(mesh);
+  const io::BoxLocator3 locator = io::box_locator<io::BoundedPoint3>(index);
+  const std::string body = points_text(mesh_probes(mesh, index.bounds(), rng), 3, rng);
+  const std::size_t edge = body.find('\n', 4096 - 40) + 1;
+  for (const char* bad : {"1 2\n", "1.5 2.5 3.5 4.5\n", "1 x 2\n", "1e999 0 0\n", "0.5,,2,3\n",
+                          "0.5 2.25x 1\n", "0.125 0.5.5 1\n"}) {
+    for (const std::string& text :
+         {bad + body, body.substr(0, edge) + bad + body.substr(edge), body + bad}) {
+      const test::TempFile file(".txt", text);
+      const auto expected = io::read_points3(file.path());
+      ASSERT_FALSE(expected.ok()) << bad;
+      for (const io::ChunkedReading& reading : reading_ways()) {
+        const auto got = located(file.path(), reading, locator, io::locate_points3_bounded);
+        ASSERT_FALSE(got.ok()) << bad;
+        EXPECT_EQ(got.error().kind, expected.error().kind) << bad;
+        EXPECT_EQ(got.error().line, expected.error().line) << bad << " " << reading.block;
+        EXPECT_EQ(got.error().message, expected.error().message) << bad;
+      }
+    }
+  }
+}
+
 // A file of more than 3 MB read on 3 threads in the default block (8 MB) is cut into 3 slices
 // (kSliceBytes: 1 MB each at least), settled and located at once on 3 threads, each with points
 // left to the exact locate: the answers are still the exact locate of every point, in file order.
