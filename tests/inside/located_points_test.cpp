@@ -1,10 +1,9 @@
 // The locating readers (io::locate_points2_bounded, locate_points3_bounded with io::box_locator):
 // the points answered as the scan hands them over give exactly the answers of the index's exact
-// locate on the points read_points2/3 give, and those of the unfused way (read_points*_bounded,
-// then io::locate_bounded), on random points, points on vertices and edges, points on and within
-// one ulp of grid lines, in every text form (plain, exponents, '+', commas, comments, CR LF), on
-// one thread and several, read or mapped, in small and default blocks; and the errors (message,
-// line) of a bad line first, at a block's edge and last are the chunked reader's.
+// locate on the points read_points2/3 give, on random points, points on vertices and edges, points
+// on and within one ulp of grid lines, in every text form (plain, exponents, '+', commas, comments,
+// CR LF), on one thread and several, read or mapped, in small and default blocks; and the errors
+// (message, line) of a bad line first, at a block's edge and last are the chunked reader's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -163,16 +162,6 @@ TEST(LocatedPoints, PolygonAnswersAsScannedAreTheExactLocateOfEveryPointReadInFu
         const auto got = located(file.path(), reading, locator, io::locate_points2_bounded);
         ASSERT_TRUE(got.ok()) << got.error().what();
         ASSERT_EQ(*got, expected) << round << " " << reading.threads << " " << reading.block;
-        // The unfused way: the boxes first, then locate_bounded.
-        std::vector<Location> unfused;
-        const Status status = io::read_points2_bounded(
-            file.path(), reading, [&](std::span<const io::BoundedPoint2> piece, double) {
-              std::vector<Location> out(piece.size());
-              io::locate_bounded(index, piece, std::span<Location>(out), {.threads = 2});
-              unfused.insert(unfused.end(), out.begin(), out.end());
-            });
-        ASSERT_TRUE(status.ok());
-        EXPECT_EQ(unfused, *got);
       }
       // Both ways of answering ran: boxes settled, and boxes across lines or edges left.
       EXPECT_GT(counts.settled.load(), counts.left.load());
