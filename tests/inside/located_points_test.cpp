@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <mutex>
 #include <random>
@@ -114,6 +115,15 @@ Result<std::vector<Location>> located(const std::filesystem::path& path,
   return all;
 }
 
+// The exact locate of every point read in full: what every locating read must give.
+template <class Index, class Point>
+std::vector<Location> exact_answers(const Index& index, const std::vector<Point>& points) {
+  std::vector<Location> out(points.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = index.locate(points[i]);
+  return out;
+}
+
 // The points of rings, their grid lines and random points around them, as doubles x, y, ...
 std::vector<double> polygon_probes(const PolygonIndex& index, const std::vector<Ring>& rings,
                                    std::mt19937_64& rng) {
@@ -153,9 +163,7 @@ TEST(LocatedPoints, PolygonAnswersAsScannedAreTheExactLocateOfEveryPointReadInFu
       const test::TempFile file(".txt", points_text(polygon_probes(index, rings, rng), 2, rng));
       const auto points = io::read_points2(file.path());
       ASSERT_TRUE(points.ok()) << points.error().what();
-      std::vector<Location> expected(points->points.size());
-      for (std::size_t i = 0; i < expected.size(); ++i)
-        expected[i] = index.locate(points->points[i]);
+      const std::vector<Location> expected = exact_answers(index, points->points);
       Counted counts;
       const io::BoxLocator2 locator = counted(io::box_locator<io::BoundedPoint2>(index), counts);
       for (const io::ChunkedReading& reading : reading_ways()) {
@@ -204,9 +212,7 @@ TEST(LocatedPoints, MeshAnswersAsScannedAreTheExactLocateOfEveryPointReadInFull)
     const test::TempFile file(".txt", points_text(values, 3, rng));
     const auto points = io::read_points3(file.path());
     ASSERT_TRUE(points.ok()) << points.error().what();
-    std::vector<Location> expected(points->points.size());
-    for (std::size_t i = 0; i < expected.size(); ++i)
-      expected[i] = index.locate(points->points[i]);
+    const std::vector<Location> expected = exact_answers(index, points->points);
     Counted counts;
     const io::BoxLocator3 locator = counted(io::box_locator<io::BoundedPoint3>(index), counts);
     for (const io::ChunkedReading& reading : reading_ways()) {
@@ -216,6 +222,29 @@ TEST(LocatedPoints, MeshAnswersAsScannedAreTheExactLocateOfEveryPointReadInFull)
     }
     EXPECT_GT(counts.settled.load(), 0);
     EXPECT_GT(counts.left.load(), 0);
+  }
+}
+
+// Each bad line first, on a line ending near a block's edge (4096) and last in `body`: the
+// locating reader's error (kind, message, line) is the chunked reader's (`read_all`), every way.
+template <class Locator, class Read, class ReadAll>
+void expect_chunked_errors(const std::string& body, std::initializer_list<const char*> bad_lines,
+                           const Locator& locator, Read&& read, ReadAll&& read_all) {
+  const std::size_t edge = body.find('\n', 4096 - 40) + 1;
+  for (const char* bad : bad_lines) {
+    for (const std::string& text :
+         {bad + body, body.substr(0, edge) + bad + body.substr(edge), body + bad}) {
+      const test::TempFile file(".txt", text);
+      const auto expected = read_all(file.path());
+      ASSERT_FALSE(expected.ok()) << bad;
+      for (const io::ChunkedReading& reading : reading_ways()) {
+        const auto got = located(file.path(), reading, locator, read);
+        ASSERT_FALSE(got.ok()) << bad;
+        EXPECT_EQ(got.error().kind, expected.error().kind) << bad;
+        EXPECT_EQ(got.error().line, expected.error().line) << bad << " " << reading.block;
+        EXPECT_EQ(got.error().message, expected.error().message) << bad;
+      }
+    }
   }
 }
 
@@ -229,23 +258,10 @@ TEST(LocatedPoints, ABadLineFirstAtABlockEdgeOrLastIsTheChunkedReadersError) {
   for (int k = 0; k < 4000; ++k)
     values.push_back(u(rng));
   const std::string body = points_text(values, 2, rng);
-  const std::size_t edge = body.find('\n', 4096 - 40) + 1;  // a line ending near a block's edge
-  for (const char* bad : {"1 x\n", "1.5 2.5 3.5\n", "1e999 2\n", "0.5,,2\n", "7\n", "nan 1\n",
-                          "0.5 2.25x\n", "0.5-2.5\n", "0.125 0.5.5\n"}) {
-    for (const std::string& text :
-         {bad + body, body.substr(0, edge) + bad + body.substr(edge), body + bad}) {
-      const test::TempFile file(".txt", text);
-      const auto expected = io::read_points2(file.path());
-      ASSERT_FALSE(expected.ok()) << bad;
-      for (const io::ChunkedReading& reading : reading_ways()) {
-        const auto got = located(file.path(), reading, locator, io::locate_points2_bounded);
-        ASSERT_FALSE(got.ok()) << bad;
-        EXPECT_EQ(got.error().kind, expected.error().kind) << bad;
-        EXPECT_EQ(got.error().line, expected.error().line) << bad << " " << reading.block;
-        EXPECT_EQ(got.error().message, expected.error().message) << bad;
-      }
-    }
-  }
+  const auto bad = {"1 x\n",   "1.5 2.5 3.5\n", "1e999 2\n", "0.5,,2\n",     "7\n",
+                    "nan 1\n", "0.5 2.25x\n",   "0.5-2.5\n", "0.125 0.5.5\n"};
+  const auto read_all = [](const auto& path) { return io::read_points2(path); };
+  expect_chunked_errors(body, bad, locator, io::locate_points2_bounded, read_all);
 }
 
 // A last line without its newline, a UTF-8 byte order mark, and both: the same points, so the
@@ -262,9 +278,7 @@ TEST(LocatedPoints, ALastLineWithoutNewlineAndAByteOrderMarkAreReadAsEver) {
     const auto points = io::read_points2(file.path());
     ASSERT_TRUE(points.ok()) << points.error().what();
     ASSERT_FALSE(points->points.empty());
-    std::vector<Location> expected(points->points.size());
-    for (std::size_t i = 0; i < expected.size(); ++i)
-      expected[i] = index.locate(points->points[i]);
+    const std::vector<Location> expected = exact_answers(index, points->points);
     const io::BoxLocator2 locator = io::box_locator<io::BoundedPoint2>(index);
     for (const io::ChunkedReading& reading : reading_ways()) {
       const auto got = located(file.path(), reading, locator, io::locate_points2_bounded);
@@ -281,23 +295,11 @@ TEST(LocatedPoints, A3DBadLineIsTheChunkedReadersError) {
   const MeshIndex index(mesh);
   const io::BoxLocator3 locator = io::box_locator<io::BoundedPoint3>(index);
   const std::string body = points_text(mesh_probes(mesh, index.bounds(), rng), 3, rng);
-  const std::size_t edge = body.find('\n', 4096 - 40) + 1;
-  for (const char* bad : {"1 2\n", "1.5 2.5 3.5 4.5\n", "1 x 2\n", "1e999 0 0\n", "0.5,,2,3\n",
-                          "0.5 2.25x 1\n", "0.125 0.5.5 1\n"}) {
-    for (const std::string& text :
-         {bad + body, body.substr(0, edge) + bad + body.substr(edge), body + bad}) {
-      const test::TempFile file(".txt", text);
-      const auto expected = io::read_points3(file.path());
-      ASSERT_FALSE(expected.ok()) << bad;
-      for (const io::ChunkedReading& reading : reading_ways()) {
-        const auto got = located(file.path(), reading, locator, io::locate_points3_bounded);
-        ASSERT_FALSE(got.ok()) << bad;
-        EXPECT_EQ(got.error().kind, expected.error().kind) << bad;
-        EXPECT_EQ(got.error().line, expected.error().line) << bad << " " << reading.block;
-        EXPECT_EQ(got.error().message, expected.error().message) << bad;
-      }
-    }
-  }
+  // Too few numbers, too many, a word, out of range, an empty field, a bad token's tail.
+  const auto bad = {"1 2\n",      "1.5 2.5 3.5 4.5\n", "1 x 2\n",        "1e999 0 0\n",
+                    "0.5,,2,3\n", "0.5 2.25x 1\n",     "0.125 0.5.5 1\n"};
+  expect_chunked_errors(body, bad, locator, io::locate_points3_bounded,
+                        [](const auto& path) { return io::read_points3(path); });
 }
 
 // A file of more than 3 MB read on 3 threads in the default block (8 MB) is cut into 3 slices
@@ -323,9 +325,7 @@ TEST(LocatedPoints, SlicesSettledAtOnceOnThreeThreadsAnswerEveryPointExactly) {
   ASSERT_GE(std::filesystem::file_size(file.path()), std::uintmax_t{3} << 20);
   const auto points = io::read_points2(file.path());
   ASSERT_TRUE(points.ok()) << points.error().what();
-  std::vector<Location> expected(points->points.size());
-  for (std::size_t i = 0; i < expected.size(); ++i)
-    expected[i] = index.locate(points->points[i]);
+  const std::vector<Location> expected = exact_answers(index, points->points);
   for (const bool map : {false, true}) {
     // The points each reading thread left to the exact locate (a slice is one thread's).
     std::mutex mutex;
@@ -381,9 +381,7 @@ TEST(LocatedPoints, StrayBitsPastTheRunAreIgnored) {
   const test::TempFile file(".txt", points_text(polygon_probes(index, rings, rng), 2, rng));
   const auto points = io::read_points2(file.path());
   ASSERT_TRUE(points.ok()) << points.error().what();
-  std::vector<Location> expected(points->points.size());
-  for (std::size_t i = 0; i < expected.size(); ++i)
-    expected[i] = index.locate(points->points[i]);
+  const std::vector<Location> expected = exact_answers(index, points->points);
   io::BoxLocator2 stray = io::box_locator<io::BoundedPoint2>(index);
   std::atomic<std::int64_t> short_runs{0};
   stray.settle = [settle = stray.settle, &short_runs](std::span<const io::BoundedPoint2> run,
