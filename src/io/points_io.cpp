@@ -213,9 +213,8 @@ struct LocatingSlices {
     if (masked) {
       scan = detail::scan_bounded_masked(text, sink);
     } else {
-      std::vector<Bounded> points;
-      scan = detail::scan_bounded_lines(text, points);
-      take_runs(points, open);
+      scan = detail::scan_bounded_runs<Bounded>(
+          text, [&open](std::span<const Bounded> run) { open.take(run); });
     }
     open.finish();
     end_slice(scan, slice);
