@@ -126,17 +126,12 @@ template <class Point>
 struct SinkOutput {
   using Bounded = Point;
   const BoundedSink<Bounded>& sink;
-  std::vector<Bounded> walked;  // the walk's points, reused from line to line
   void append(const Bounded* first, int count) {
     if (count > 0) sink.take(sink.context, {first, static_cast<std::size_t>(count)});
   }
   PointLinesScan walk(std::string_view text) {
-    walked.clear();
-    const PointLinesScan part = scan_bounded_lines(text, walked);
-    const std::span<const Bounded> all(walked);
-    for (std::size_t at = 0; at < all.size(); at += sink.kMaxRun)
-      sink.take(sink.context, all.subspan(at, std::min(sink.kMaxRun, all.size() - at)));
-    return part;
+    return scan_bounded_runs<Bounded>(
+        text, [this](std::span<const Bounded> run) { sink.take(sink.context, run); });
   }
 };
 

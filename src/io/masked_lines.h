@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// Private: the bounded point scanner by byte masks, the fast way of read_points*_bounded. It
-/// gives exactly what scan_bounded_lines (io/point_lines.h) gives on every text: the same
-/// points with the same boxes bit for bit, the same [first, last) spans, the same lines, the
-/// same line where it stops. Tested against it on random and hostile texts.
+/// Private: the bounded point scanner by byte masks, the fast way of read_points*_bounded and,
+/// through a BoundedSink, of locate_points*_bounded. It gives exactly what scan_bounded_lines
+/// (io/point_lines.h) gives on every text: the same points with the same boxes bit for bit, the
+/// same [first, last) spans, the same lines, the same line where it stops. Tested against it on
+/// random and hostile texts.
 ///
 /// How. The bytes' classes come 64 at a time as bit masks (io/byte_masks.h: blanks, newlines,
 /// non-digits; SSE2, AVX2 or AVX-512BW). A line is read from a 64-bit window of the masks at its

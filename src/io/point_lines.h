@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string_view>
 #include <system_error>
 #include <type_traits>
@@ -151,11 +152,9 @@ Point scan_one_point(const char* first, const char* last) {
   }
 }
 
-/// Scans `text` as scan_point_lines does (the same lines taken, the same lines refused), each
-/// point as a box from its numbers' first digits (bound_plain_number; a number of another shape
-/// read in full), appended to `points` (BoundedPoint2 or BoundedPoint3).
-template <class Bounded>
-PointLinesScan scan_bounded_lines(std::string_view text, std::vector<Bounded>& points) {
+/// The walk of scan_bounded_lines, each point given to `emit(point)` as its line is taken.
+template <class Bounded, class Emit>
+PointLinesScan walk_bounded_lines(std::string_view text, Emit&& emit) {
   constexpr int kColumns = std::is_same_v<Bounded, BoundedPoint2> ? 2 : 3;
   NumberBound v[kColumns];
   int read_in_full = 0;
@@ -170,7 +169,7 @@ PointLinesScan scan_bounded_lines(std::string_view text, std::vector<Bounded>& p
         return true;
       },
       [&](const char* first, const char* last, std::int64_t) __attribute__((always_inline)) {
-        Bounded& point = points.emplace_back();
+        Bounded point;
         if constexpr (kColumns == 2) {
           point.box = {{v[0].lo, v[1].lo}, {v[0].hi, v[1].hi}};
         } else {
@@ -181,7 +180,37 @@ PointLinesScan scan_bounded_lines(std::string_view text, std::vector<Bounded>& p
           point.last = last;
         }
         read_in_full = 0;
+        emit(point);
       });
+}
+
+/// Scans `text` as scan_point_lines does (the same lines taken, the same lines refused), each
+/// point as a box from its numbers' first digits (bound_plain_number; a number of another shape
+/// read in full), appended to `points` (BoundedPoint2 or BoundedPoint3).
+template <class Bounded>
+PointLinesScan scan_bounded_lines(std::string_view text, std::vector<Bounded>& points) {
+  return walk_bounded_lines<Bounded>(
+      text, [&](const Bounded& point) __attribute__((always_inline)) { points.push_back(point); });
+}
+
+/// scan_bounded_lines(text, points), the points handed to `take(run)` in text order, runs of at
+/// most 64 staged in a small array: no vector of a whole slice's points to write and read again
+/// (the locating readers' walk, where the masks do not pay or leave a line).
+template <class Bounded, class Take>
+PointLinesScan scan_bounded_runs(std::string_view text, Take&& take) {
+  constexpr std::size_t kRun = 64;
+  Bounded run[kRun];
+  std::size_t held = 0;
+  const PointLinesScan scan = walk_bounded_lines<Bounded>(
+      text, [&](const Bounded& point) __attribute__((always_inline)) {
+        run[held++] = point;
+        if (held == kRun) {
+          take(std::span<const Bounded>(run, held));
+          held = 0;
+        }
+      });
+  if (held > 0) take(std::span<const Bounded>(run, held));
+  return scan;
 }
 
 }  // namespace contain::io::detail

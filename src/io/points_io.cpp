@@ -100,24 +100,27 @@ Result<Points> scan_points(std::string_view text, const std::string& source,
 // and the line of its first point (from 1 within the slice; 0: none), or `failed` when the scanner
 // stopped at a line it cannot take, which the table parser then reads again in file order, with
 // the lines before it known, for the error of one pass over the file.
-template <class Item>
+// `scratch`: what the slicer keeps with the slice from block to block (cleared, not freed).
+struct NoScratch {};
+template <class Item, class Scratch = NoScratch>
 struct Slice {
   std::vector<Item> items;
   std::int64_t lines = 0;
   std::int64_t first_row = 0;
   bool failed = false;
+  Scratch scratch;
 };
 
 // Room for a point every 32 bytes at once (a coordinate file's lines are 30 to 60 bytes): the
 // vector grown by doubling copied itself into fresh pages several times, each page a fault (dear
 // in a virtual machine); capacity never used is never touched. Shorter lines grow it.
-template <class Item>
-void begin_slice(std::string_view text, Slice<Item>& slice) {
+template <class Item, class Scratch>
+void begin_slice(std::string_view text, Slice<Item, Scratch>& slice) {
   slice.items.clear();
   slice.items.reserve(text.size() / 32 + 64);
 }
-template <class Item>
-void end_slice(const detail::PointLinesScan& scan, Slice<Item>& slice) {
+template <class Item, class Scratch>
+void end_slice(const detail::PointLinesScan& scan, Slice<Item, Scratch>& slice) {
   slice.failed = !scan.complete;
   slice.lines = scan.lines;
   slice.first_row = scan.first_row;
@@ -127,12 +130,13 @@ void end_slice(const detail::PointLinesScan& scan, Slice<Item>& slice) {
 template <class Point>
 struct PointSlices {
   using Item = Point;
+  using Part = Slice<Point>;
   static constexpr int kColumns = kColumnsOf<Point>;
-  void parse(std::string_view text, Slice<Point>& slice) const {
+  void parse(std::string_view text, Part& slice) const {
     begin_slice(text, slice);
     end_slice(scan_items(text, slice.items), slice);
   }
-  void from_table(const NumberTable& table, Slice<Point>& slice) const {
+  void from_table(const NumberTable& table, Part& slice) const {
     slice.items.clear();
     append_rows(table, slice.items);
   }
@@ -148,16 +152,39 @@ struct LocatingSlices {
   static constexpr int kColumns = kColumnsOf<Bounded>;
   const BoxLocator<Bounded, Point>& locator;
 
+  // The points of a slice left to `locate`, their places (size_t: a slice is as large as the
+  // caller's `block` makes it) and their answers: kept with the slice, so the ~160 blocks of 10^6
+  // points on one thread allocate them once, not once a block.
+  struct Scratch {
+    std::vector<Point> exact;
+    std::vector<std::size_t> where;
+    std::vector<Location> located;
+  };
+  using Part = Slice<Location, Scratch>;
+
   struct Open {  // a slice being parsed: its answers and the points left to `locate`
     const BoxLocator<Bounded, Point>& locator;
     std::vector<Location>& answers;
-    std::vector<Point> exact;
-    std::vector<std::size_t> where;
+    std::vector<Point>& exact;
+    std::vector<std::size_t>& where;
+    std::vector<Location>& located;
 
+    static Open of(const BoxLocator<Bounded, Point>& locator, Part& slice) {
+      Scratch& scratch = slice.scratch;
+      scratch.exact.clear();
+      scratch.where.clear();
+      return {.locator = locator,
+              .answers = slice.items,
+              .exact = scratch.exact,
+              .where = scratch.where,
+              .located = scratch.located};
+    }
     void take(std::span<const Bounded> run) {
       const std::size_t at = answers.size();
       answers.resize(at + run.size());
       std::uint64_t left = locator.settle(run, std::span<Location>(answers).subspan(at));
+      // A caller's settle may set bits past its run: they name no point of it.
+      if (run.size() < 64) left &= (std::uint64_t{1} << run.size()) - 1;
       for (; left != 0; left &= left - 1) {
         const auto k = static_cast<std::size_t>(std::countr_zero(left));
         exact.push_back(exact_point(run[k]));
@@ -166,16 +193,16 @@ struct LocatingSlices {
     }
     void finish() {
       if (exact.empty()) return;
-      std::vector<Location> located(exact.size());
+      located.resize(exact.size());
       locator.locate(exact, located);
       for (std::size_t i = 0; i < where.size(); ++i)
         answers[where[i]] = located[i];
     }
   };
 
-  void parse(std::string_view text, Slice<Location>& slice) const {
+  void parse(std::string_view text, Part& slice) const {
     begin_slice(text, slice);
-    Open open{.locator = locator, .answers = slice.items};
+    Open open = Open::of(locator, slice);
     const detail::BoundedSink<Bounded> sink{
         .context = &open, .take = [](void* context, std::span<const Bounded> run) {
           static_cast<Open*>(context)->take(run);
@@ -186,18 +213,17 @@ struct LocatingSlices {
     if (masked) {
       scan = detail::scan_bounded_masked(text, sink);
     } else {
-      std::vector<Bounded> points;
-      scan = detail::scan_bounded_lines(text, points);
-      take_runs(points, open);
+      scan = detail::scan_bounded_runs<Bounded>(
+          text, [&open](std::span<const Bounded> run) { open.take(run); });
     }
     open.finish();
     end_slice(scan, slice);
   }
-  void from_table(const NumberTable& table, Slice<Location>& slice) const {
+  void from_table(const NumberTable& table, Part& slice) const {
     slice.items.clear();
     std::vector<Bounded> points;
     append_rows(table, points);
-    Open open{.locator = locator, .answers = slice.items};
+    Open open = Open::of(locator, slice);
     take_runs(points, open);
     open.finish();
   }
@@ -248,7 +274,7 @@ std::size_t block_bytes(const ChunkedReading& reading) {
 template <class Slicer, class Item = typename Slicer::Item>
 Status parse_block(std::string_view text, const ChunkedReading& reading, const std::string& source,
                    ReadPosition& at, std::uintmax_t file_size, const Slicer& slicer,
-                   std::vector<Slice<Item>>& slices,
+                   std::vector<typename Slicer::Part>& slices,
                    const std::function<void(std::span<const Item>, double)>& consume) {
   constexpr int kColumns = Slicer::kColumns;
   const BatchOptions options{.threads = reading.threads};
@@ -263,7 +289,7 @@ Status parse_block(std::string_view text, const ChunkedReading& reading, const s
   });
   const std::size_t chunk = std::max<std::size_t>(reading.chunk, 1);
   for (std::size_t k = 0; k < parts; ++k) {
-    Slice<Item>& slice = slices[k];
+    typename Slicer::Part& slice = slices[k];
     if (slice.failed) {
       const std::string_view lines = text.substr(starts[k], starts[k + 1] - starts[k]);
       auto table = parse_number_table(lines, source,
@@ -303,7 +329,7 @@ Status read_mapped(detail::MappedText& mapped, const ChunkedReading& reading,
   const std::string_view text = mapped.text();
   const std::size_t mark = text.size() - detail::skip_bom(text).size();
   ReadPosition at{.bytes = mark};
-  std::vector<Slice<Item>> slices;
+  std::vector<typename Slicer::Part> slices;
   const auto unreadable = [&] {
     return detail::make_error(ErrorKind::io,
                               "the file could not be read to its end (shortened while being "
@@ -357,7 +383,7 @@ Status read_chunked(const std::filesystem::path& path, const ChunkedReading& rea
   HugePageVector<char> buffer(block);
   std::size_t held = 0;  // bytes in the buffer
   ReadPosition at;
-  std::vector<Slice<Item>> slices;
+  std::vector<typename Slicer::Part> slices;
   bool first = true;
   while (true) {
     auto got = input->read(buffer.data() + held, block - held);
@@ -433,14 +459,29 @@ Status read_points3_bounded(
   return read_chunked(path, reading, PointSlices<BoundedPoint3>{}, consume);
 }
 
+namespace {
+// An empty settle or locate would throw std::bad_function_call on a reading thread
+// (std::terminate): refused before any thread starts.
+template <class Locator>
+Status check_locator(const Locator& locator, const std::filesystem::path& path) {
+  if (locator.settle && locator.locate) return Ok{};
+  return detail::make_error(ErrorKind::usage,
+                            "the box locator has no settle or no locate function (a "
+                            "default-constructed BoxLocator; io::box_locator makes one)",
+                            detail::source_name(path));
+}
+}  // namespace
+
 Status locate_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
     const std::function<void(std::span<const Location>, double)>& consume) {
+  if (Status checked = check_locator(locator, path); !checked) return checked;
   return read_chunked(path, reading, LocatingSlices<BoundedPoint2, Vec2>{locator}, consume);
 }
 Status locate_points3_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator3& locator,
     const std::function<void(std::span<const Location>, double)>& consume) {
+  if (Status checked = check_locator(locator, path); !checked) return checked;
   return read_chunked(path, reading, LocatingSlices<BoundedPoint3, Vec3>{locator}, consume);
 }
 

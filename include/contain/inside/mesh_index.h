@@ -127,15 +127,6 @@ class MeshIndex {
   /// several cells, no grid, the winding regime). Exact comparisons only, so an answer given is
   /// `locate(p)` for every p in the box. O(1).
   [[nodiscard]] std::optional<Location> locate_settled(const Box3& box) const;
-  /// Warms the cache for a query at `p` (its guessed cell's state byte), for callers'
-  /// pipelines; no effect on any answer.
-  // Always inlined: out of line, GCC (12) takes a function whose only effect is
-  // __builtin_prefetch for one without effects (pure) and drops every call to it.
-  [[gnu::always_inline]] void prefetch(Vec3 p) const {
-    if (packed_state_.empty()) return;
-    const std::ptrdiff_t cell = guessed_cell(p);
-    if (cell >= 0) __builtin_prefetch(&packed_state_[static_cast<std::size_t>(cell) / 4]);
-  }
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all). Deterministic.
   void locate(std::span<const Vec3> points, std::span<Location> out,

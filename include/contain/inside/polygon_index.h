@@ -112,21 +112,6 @@ class PolygonIndex {
     return settle_in_edge_cell(box, i, slots_[edge_rank(word, c)]);
   }
 
-  /// Warms the cache for `locate_settled` at `point` (the record of its guessed cell where that
-  /// is an edge cell, not the packed states: 2 bits a cell, they stay cached on small grids, 16 kB
-  /// for 2^16 cells, but at max_cells they are 256 kB and the word read here may miss), for
-  /// callers' pipelines; no effect on any answer.
-  // Always inlined, as MeshIndex::prefetch: without it GCC (12) takes a function whose only
-  // effect is __builtin_prefetch for one without effects and drops every call to it (even this
-  // header's inline definition compiled to a bare `ret` where io::locate_bounded calls it).
-  [[gnu::always_inline]] void prefetch(Vec2 point) const {
-    const std::ptrdiff_t cell = guessed_cell(point);  // -1 also without a grid
-    if (cell < 0) return;
-    const auto c = static_cast<std::size_t>(cell);
-    const std::uint64_t word = packed_states_[c / 32];
-    if (state_in(word, c) == 2) __builtin_prefetch(&slots_[edge_rank(word, c)]);
-  }
-
   /// Locates `points[i]` into `out[i]` for every i (`out` has the points' size: `batch_size`), in
   /// parallel on `options.threads` threads (0: all hardware threads). Deterministic.
   void locate(std::span<const Vec2> points, std::span<Location> out,

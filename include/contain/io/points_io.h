@@ -111,8 +111,9 @@ struct BoundedPoint3 {
 
 /// Reads 2D points in pieces as `read_points2_chunked` does (the same lines, order, errors and
 /// chunks), each point as a box from its numbers' first digits, so that a caller whose answer is
-/// the same over the whole box needs no more digits (`locate_bounded`). Every byte is still
-/// checked: a line the chunked reader refuses is the same error here.
+/// the same over the whole box needs no more digits (as `locate_points2_bounded` answers them,
+/// by the same scan, as it hands the boxes over). Every byte is still checked: a line the chunked
+/// reader refuses is the same error here.
 [[nodiscard]] Status read_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const BoundedPoint2>, double)>& consume);
@@ -120,38 +121,6 @@ struct BoundedPoint3 {
 [[nodiscard]] Status read_points3_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading,
     const std::function<void(std::span<const BoundedPoint3>, double)>& consume);
-
-/// Locates bounded points with an index that can answer for a whole box: `out[i]` is
-/// `index.locate_settled(points[i].box)` where it has an answer, else `index.locate` of the
-/// exact point; so exactly `index.locate(exact_point(points[i]))` whenever `locate_settled` is
-/// right (inside::PolygonIndex, inside::MeshIndex). The unsettled points go to the index's batch
-/// locate (its prefetching pipeline), and `index.prefetch(p)` warms the cell of a box a few
-/// points ahead. On `options.threads` threads (0: all).
-template <class Index, class Bounded>
-void locate_bounded(const Index& index, std::span<const Bounded> points, std::span<Location> out,
-                    const BatchOptions& options = {}) {
-  using Point = decltype(exact_point(points[0]));
-  constexpr std::size_t kAhead = 8;
-  parallel_for(batch_size(points.size(), out.size()), options,
-               [&](std::size_t begin, std::size_t end) {
-                 std::vector<Point> exact;
-                 std::vector<std::size_t> where;
-                 for (std::size_t k = begin; k < end; ++k) {
-                   if (k + kAhead < end) index.prefetch(points[k + kAhead].box.min);
-                   const auto settled = index.locate_settled(points[k].box);
-                   if (settled) {
-                     out[k] = *settled;
-                   } else {
-                     exact.push_back(exact_point(points[k]));
-                     where.push_back(k);
-                   }
-                 }
-                 std::vector<Location> answers(exact.size());
-                 index.locate(exact, answers, {.threads = 1});
-                 for (std::size_t i = 0; i < where.size(); ++i)
-                   out[where[i]] = answers[i];
-               });
-}
 
 /// How the locating readers (`locate_points2_bounded`) answer points: `settle(run, out)` answers
 /// the points of `run` (at most 64) whose box has one answer, `out[i]` for `run[i]`, and returns
@@ -168,11 +137,10 @@ using BoxLocator3 = BoxLocator<BoundedPoint3, Vec3>;
 
 /// The BoxLocator of an index that can answer for a whole box (inside::PolygonIndex,
 /// inside::MeshIndex; alive while the locator is used): `settle` is `index.locate_settled`, and
-/// `locate` the index's batch locate on the calling thread. So the answers are `locate_bounded`'s:
-/// exactly `index.locate` of each point whenever `locate_settled` is right. No `index.prefetch`
-/// ahead, as locate_bounded has: with the boxes handed over 32 at a time it costs a second guess of
-/// each cell and paid nothing (10^6 points in the 100-vertex star: 54 ms with it, 50-54 without;
-/// the torus: the same; docs/benchmarks.md, issue 27).
+/// `locate` the index's batch locate on the calling thread. So the answers are exactly
+/// `index.locate` of each point whenever `locate_settled` is right. No prefetch of the cells a few
+/// points ahead: with the boxes handed over 32 at a time it costs a second guess of each cell and
+/// paid nothing (docs/benchmarks.md, "Points answered as they are scanned", issue 27).
 template <class Bounded, class Index>
 [[nodiscard]] auto box_locator(const Index& index) {
   using Point = decltype(exact_point(std::declval<const Bounded&>()));
@@ -197,9 +165,11 @@ template <class Bounded, class Index>
 /// Reads 2D points as `read_points2_bounded` does (the same lines, order and errors) and answers
 /// each by `locator` as it is scanned, while its box is in the cache: `consume(answers, share)`
 /// sees the answers in file order, at most `reading.chunk` at a time, and no array of points is
-/// kept. The answers are those of `locate_bounded` on the points read_points2_bounded gives
-/// (whatever the threads, the block and `map`). At the first error the call returns it, after the
-/// answers before its block's slice were consumed.
+/// kept. The answers are `locator`'s on the points read_points2_bounded gives: with `box_locator`,
+/// exactly `index.locate` of each point read in full (whatever the threads, the block and `map`).
+/// At the first error the call returns it, after the answers before its block's slice were
+/// consumed. A locator without `settle` or `locate` is ErrorKind::usage, before the file is read;
+/// bits `settle` sets at or past its run's size are ignored.
 [[nodiscard]] Status locate_points2_bounded(
     const std::filesystem::path& path, const ChunkedReading& reading, const BoxLocator2& locator,
     const std::function<void(std::span<const Location>, double)>& consume);
