@@ -18,8 +18,8 @@ namespace {
 struct Builder {
   std::span<const Box3> boxes;
   std::vector<Vec3> centroids;
-  std::vector<std::int32_t>& items;
-  std::vector<Node>& nodes;
+  HugePageVector<std::int32_t>& items;
+  HugePageVector<Node>& nodes;
   const BuildOptions& options;
   int bins = 16;
   int depth = 0;
@@ -36,7 +36,7 @@ struct Builder {
   std::vector<double> right_cost;
 
   Builder(std::span<const Box3> boxes_in, std::vector<Vec3> centroids_in,
-          std::vector<std::int32_t>& items_out, std::vector<Node>& nodes_out,
+          HugePageVector<std::int32_t>& items_out, HugePageVector<Node>& nodes_out,
           const BuildOptions& options_in)
       : boxes(boxes_in),
         centroids(std::move(centroids_in)),

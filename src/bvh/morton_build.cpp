@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contain/bvh/bvh.h"
+#include "contain/core/huge_pages.h"
 #include "contain/core/radix_sort.h"
 
 namespace contain::bvh {
@@ -57,9 +58,9 @@ Vec3 centroid_of(const Box3& b) {
 struct MortonBuilder {
   Box3 (*box_of)(const void*, std::size_t);
   const void* context;
-  const std::vector<std::uint64_t>& codes;
-  const std::vector<std::int32_t>& items;
-  std::vector<Node>& nodes;
+  const HugePageVector<std::uint64_t>& codes;
+  const HugePageVector<std::int32_t>& items;
+  HugePageVector<Node>& nodes;
   std::size_t max_leaf = 4;
   int depth = 0;
 
@@ -109,7 +110,9 @@ void Bvh::build_morton(std::size_t n, BoxSource box_of, const void* context, int
   for (std::size_t i = 0; i < n; ++i)
     cbox.expand(centroid_of(box_of(context, i)));
   const Grid gx(cbox.min.x, cbox.max.x), gy(cbox.min.y, cbox.max.y), gz(cbox.min.z, cbox.max.z);
-  std::vector<std::uint64_t> codes(n);
+  // Huge pages where granted, for these and the sort's scratch arrays (which take these
+  // allocators, default-initialized: every element is written before it is read).
+  HugePageVector<std::uint64_t> codes(n);
   items_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 c = centroid_of(box_of(context, i));
