@@ -169,9 +169,10 @@ TEST(EdgeUses, PatchesFromCornersJoinWhatAMapOfEdgeUsesJoins) {
     for (std::uint32_t f = 0; f < r.faces.size(); ++f)
       ASSERT_EQ(found.find(f), expected.find(f)) << "case " << c << " face " << f;
   }
-  // Not vacuous: edges of both kinds, many times.
-  EXPECT_GE(joined, 200);
-  EXPECT_GE(kept_apart, 200);
+  // Not vacuous: edges of both kinds, many times (in proportion to the cases: the sanitized
+  // build runs a tenth of them).
+  EXPECT_GE(joined, case_budget(200, 10));
+  EXPECT_GE(kept_apart, case_budget(200, 10));
 }
 
 }  // namespace

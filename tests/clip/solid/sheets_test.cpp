@@ -222,9 +222,10 @@ TEST(SolidSheets, SingleUmbrellasAreTheGeneralSheetsWheneverEveryPointHasOne) {
     compare(faces, store, "bipyramid " + std::to_string(sides));
     EXPECT_EQ(answered > before, sides <= 64) << sides;
   }
-  // Not vacuous: both ways, many times.
-  EXPECT_GE(answered, 100);
-  EXPECT_GE(general, 100);
+  // Not vacuous: both ways, many times (in proportion to the cases: the sanitized build runs a
+  // tenth of them).
+  EXPECT_GE(answered, case_budget(100, 10));
+  EXPECT_GE(general, case_budget(100, 10));
 }
 
 }  // namespace
